@@ -1,0 +1,19 @@
+"""Construction protocol (replayable steps) and the paper's drawing recipe (§3.3)."""
+
+from .envelope import Arc, Envelope, outer_envelope
+from .protocol import INSTRUMENTS, OPS, Construction, Step, StepSpec, replay
+from .recipe import diagram_specs, internal_force_diagram
+
+__all__ = [
+    "INSTRUMENTS",
+    "OPS",
+    "Arc",
+    "Construction",
+    "Envelope",
+    "Step",
+    "StepSpec",
+    "diagram_specs",
+    "internal_force_diagram",
+    "outer_envelope",
+    "replay",
+]

@@ -1,0 +1,440 @@
+"""The paper's model of a two-point grasp (§2, §3.2), exact and vectorised.
+
+Frame (§2.2.1): the origin O is the object's centre of mass, the y-axis is
+perpendicular to the line through the contacts, ``P1 = (x1, y)`` and
+``P2 = (-x2, y)``.  The normal at P1 makes the angle φ1 clockwise, the normal
+at P2 the angle φ2 counter-clockwise, with the negative y-axis.  Friction is
+given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
+(22).  The external force F_e acts at O along ``e(θ) = (sin θ, -cos θ)`` (26).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from .expr import parse_exact
+from .geometry import Point
+from .geometry.exact import canon, decide_sign, has_float
+
+__all__ = ["PRESETS", "Grasp", "InvalidGraspError"]
+
+
+class InvalidGraspError(ValueError):
+    """The parameters do not describe a grasp the paper's method applies to."""
+
+
+#: The paper's examples: §4.1 (Fig. 6) and Table I of §4.2 (Fig. 7).
+PRESETS: dict[str, dict[str, Any]] = {
+    "fig6": dict(
+        params=dict(x1="sqrt(3)/2", x2="sqrt(3)/2", y="1/2", phi1="pi/3", phi2="pi/3",
+                    xi1="pi/4", xi2="pi/3"),
+        shape=("circle", 1),
+        title="Fig. 6: circular object, P1 = (√3/2, 1/2), φ = π/3, ξ1 = π/4, ξ2 = π/3",
+    ),
+    "table1a": dict(
+        params=dict(x1="2", x2="2", y="1", phi1="pi/2", phi2="pi/2", mu1="1.0", mu2="1.2"),
+        shape=("rectangle", 4, 8),
+        title="Fig. 7(a), Table I(a): rectangle, P1 = (2, 1), μ1 = 1.0, μ2 = 1.2",
+    ),
+    "table1b": dict(
+        params=dict(x1="2", x2="2", y="3", phi1="pi/2", phi2="pi/2", mu1="1.0", mu2="1.2"),
+        shape=("rectangle", 4, 8),
+        title="Fig. 7(b), Table I(b): rectangle, P1 = (2, 3), μ1 = 1.0, μ2 = 1.2",
+    ),
+    "table1c": dict(
+        params=dict(x1="2", x2="2", y="2", phi1="pi/2", phi2="pi/2", mu1="0.5", mu2="1.4"),
+        shape=("rectangle", 4, 8),
+        title="Fig. 7(c), Table I(c): rectangle, P1 = (2, 2), μ1 = 0.5, μ2 = 1.4",
+    ),
+}
+
+
+def _value(v: Any, name: str) -> sp.Expr:
+    """A parameter as a sympy value: text is parsed exactly, floats stay floats."""
+    if isinstance(v, bool):
+        raise InvalidGraspError(f"{name} must be a number, got {v!r}")
+    if isinstance(v, str):
+        return parse_exact(v)
+    if isinstance(v, Fraction):
+        return sp.Rational(v.numerator, v.denominator)
+    if isinstance(v, (int, np.integer)):
+        return sp.Integer(int(v))
+    if isinstance(v, (float, np.floating)):
+        if not np.isfinite(v):
+            raise InvalidGraspError(f"{name} must be finite, got {v!r}")
+        return sp.Float(float(v))
+    if isinstance(v, sp.Expr):
+        if v.has(sp.zoo, sp.oo, -sp.oo, sp.nan) or v.is_real is False:
+            raise InvalidGraspError(f"{name} must be a finite real number, got {v}")
+        return v
+    raise InvalidGraspError(f"{name} must be a number or an expression, got {v!r}")
+
+
+def _fmt_angle(v: sp.Expr) -> str:
+    try:
+        return f"{float(v / sp.pi):.3g}π"
+    except TypeError:
+        return str(v)
+
+
+def _fmt(v: sp.Expr) -> str:
+    try:
+        f = float(v)
+    except TypeError:
+        return str(v)
+    return str(v) if v.is_Rational else f"{v} ≈ {f:.4g}"
+
+
+class Grasp:
+    """A planar object held at two point contacts with friction (§2.2).
+
+    Parameters
+    ----------
+    x1, x2, y : number or str
+        Contacts ``P1 = (x1, y)``, ``P2 = (-x2, y)`` with ``x1, x2 > 0``, ``y >= 0``.
+    phi1, phi2 : number or str
+        Normal directions: φ1 clockwise, φ2 counter-clockwise from the negative
+        y-axis, ``0 < φi <= π``.
+    mu1, mu2, xi1, xi2 : number or str, optional
+        Friction at each contact: the coefficient μi or the cone half angle ξi
+        (tan ξi = μi, eq. (22)); give exactly one of the two per contact.
+
+    Text such as ``"sqrt(3)/2"``, ``"pi/3"`` or ``"1.2"`` (= 6/5) is read
+    exactly; Python floats select the numeric path.  Symbols are accepted;
+    a condition that cannot be decided for them becomes an assumption
+    (:attr:`assumptions`).
+
+    Raises
+    ------
+    InvalidGraspError
+        When a parameter is out of range or the contact point conditions (1)
+        fail, naming the inequality, the contact and the values.
+
+    Examples
+    --------
+    >>> g = Grasp.preset("fig6")
+    >>> g.V[0], g.V[1]
+    (Point(-1 - sqrt(3), -sqrt(3) - 3/2), Point(sqrt(3), -3/2))
+    >>> Grasp(1, 1, 0, "pi/2", "pi/2", mu1="0.5", mu2="-1")
+    Traceback (most recent call last):
+    ...
+    graspcompass.grasp.InvalidGraspError: contact 2: the friction coefficient μ2 = -1 must be positive
+    """
+
+    def __init__(
+        self,
+        x1: Any,
+        x2: Any,
+        y: Any,
+        phi1: Any,
+        phi2: Any,
+        mu1: Any = None,
+        mu2: Any = None,
+        xi1: Any = None,
+        xi2: Any = None,
+        *,
+        shape: tuple | None = None,
+        title: str | None = None,
+    ) -> None:
+        self.x1, self.x2, self.y = _value(x1, "x1"), _value(x2, "x2"), _value(y, "y")
+        self.phi1, self.phi2 = _value(phi1, "phi1"), _value(phi2, "phi2")
+        self.mu1, self.xi1 = self._friction(1, mu1, xi1)
+        self.mu2, self.xi2 = self._friction(2, mu2, xi2)
+        self.shape = shape
+        self.title = title
+        self.numeric = any(has_float(v) for v in self.params.values())
+        self.assumptions: tuple[sp.Basic, ...] = ()
+        self._validate()
+        self.s1, self.c1 = sp.sin(self.phi1), sp.cos(self.phi1)
+        self.s2, self.c2 = sp.sin(self.phi2), sp.cos(self.phi2)
+
+    # -- construction -----------------------------------------------------------
+    def _friction(self, i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
+        if (mu is None) == (xi is None):
+            raise InvalidGraspError(
+                f"contact {i}: give the friction either as mu{i} (coefficient) or as "
+                f"xi{i} (cone half angle), exactly one of them"
+            )
+        if mu is not None:
+            m = _value(mu, f"mu{i}")
+            if decide_sign(m) in (-1, 0):
+                raise InvalidGraspError(
+                    f"contact {i}: the friction coefficient μ{i} = {_fmt(m)} must be positive"
+                )
+            return m, sp.atan(m)
+        x = _value(xi, f"xi{i}")
+        for bound, sign, words in ((x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2")):
+            if decide_sign(bound) in sign:
+                raise InvalidGraspError(
+                    f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
+                    f"must be {words} (0 < ξ < π/2)"
+                )
+        return canon(sp.tan(x)), x
+
+    @classmethod
+    def preset(cls, name: str) -> Grasp:
+        """One of the paper's examples: ``"fig6"``, ``"table1a"``, ``"table1b"``, ``"table1c"``."""
+        try:
+            p = PRESETS[name]
+        except KeyError:
+            raise InvalidGraspError(
+                f"unknown preset {name!r}; choose one of {', '.join(PRESETS)}"
+            ) from None
+        return cls(**p["params"], shape=p["shape"], title=p["title"])
+
+    @classmethod
+    def symbolic(cls, friction: str = "xi") -> Grasp:
+        """The general grasp with every parameter a symbol of :mod:`graspcompass.symbols`.
+
+        ``friction="xi"`` gives the friction by ξ1, ξ2; ``"mu"`` by μ1, μ2.
+        """
+        from . import symbols as s
+
+        if friction not in ("xi", "mu"):
+            raise InvalidGraspError(f"friction must be 'xi' or 'mu', got {friction!r}")
+        fr = dict(xi1=s.xi1, xi2=s.xi2) if friction == "xi" else dict(mu1=s.mu1, mu2=s.mu2)
+        return cls(s.x1, s.x2, s.y, s.phi1, s.phi2, **fr)
+
+    # -- validation -------------------------------------------------------------
+    def _validate(self) -> None:
+        pi = sp.pi
+        checks: list[tuple[sp.Expr, bool, str]] = [
+            (self.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"),
+            (self.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"),
+            (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"),
+        ]
+        for i, phi in ((1, self.phi1), (2, self.phi2)):
+            checks += [
+                (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π)"),
+                (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)"),
+            ]
+        assumed: list[sp.Basic] = []
+        for expr, strict, msg in checks:
+            self._check(expr, strict, msg, assumed)
+        for i in (1, 2):
+            phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
+            up, lo = phi + xi, phi - xi
+            who = f"the friction cone at P{i}"
+            other = f"P{3 - i}"
+            cond = [
+                (lo + pi / 2, f"φ{i} − ξ{i} = {{a}} must exceed −π/2 — {who} turns past the "
+                 "contact's tangent line (condition (1))", lo),
+                (pi / 2 - lo, f"φ{i} − ξ{i} = {{a}} must be below π/2 — {who} does not "
+                 f"contain {other} (its lower side passes above {other}; condition (1))", lo),
+                (up - pi / 2, f"φ{i} + ξ{i} = {{a}} must exceed π/2 — {who} does not contain "
+                 f"{other} (its upper side passes below {other}; condition (1))", up),
+                (3 * pi / 2 - up, f"φ{i} + ξ{i} = {{a}} must be below 3π/2 — {who} turns past "
+                 "the contact's tangent line (condition (1))", up),
+            ]
+            for expr, msg, shown in cond:
+                self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
+        self.assumptions = tuple(assumed)
+
+    @staticmethod
+    def _check(expr: sp.Expr, strict: bool, msg: str, assumed: list, shown: Any = None) -> None:
+        sign = decide_sign(expr)
+        bad = sign == -1 or (strict and sign == 0)
+        if bad:
+            v = expr if shown is None else shown
+            raise InvalidGraspError(msg.format(v=_fmt(v), a=_fmt_angle(v)))
+        if sign is None:
+            assumed.append(expr > 0 if strict else expr >= 0)
+
+    # -- parameters -------------------------------------------------------------
+    @property
+    def params(self) -> dict[str, sp.Expr]:
+        """The seven parameters ``x1, x2, y, phi1, phi2, mu1, mu2`` (plus ``xi1, xi2``)."""
+        return dict(x1=self.x1, x2=self.x2, y=self.y, phi1=self.phi1, phi2=self.phi2,
+                    mu1=self.mu1, mu2=self.mu2, xi1=self.xi1, xi2=self.xi2)
+
+    def _key(self) -> tuple:
+        return tuple(self.params.values())
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Grasp) and self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __repr__(self) -> str:
+        p = self.params
+        return ("Grasp(" + ", ".join(f"{k}={p[k]}" for k in
+                ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")) + ")")
+
+    @property
+    def P1(self) -> Point:
+        """Contact point 1, ``(x1, y)``."""
+        return Point(self.x1, self.y)
+
+    @property
+    def P2(self) -> Point:
+        """Contact point 2, ``(-x2, y)``."""
+        return Point(-self.x2, self.y)
+
+    @property
+    def D(self) -> sp.Expr:
+        """``x1 + x2``, the distance between the contacts."""
+        return self.x1 + self.x2
+
+    # -- friction cone sides ----------------------------------------------------
+    def _side(self, n: int) -> tuple[sp.Expr, sp.Expr]:
+        """``(sin(φ ± ξ), cos(φ ± ξ)) / cos ξ`` of side n, free of ``cos ξ``."""
+        s, c, mu = (self.s1, self.c1, self.mu1) if n in (1, 3) else (self.s2, self.c2, self.mu2)
+        sg = 1 if n in (1, 2) else -1
+        return s + sg * c * mu, c - sg * s * mu
+
+    def side_direction(self, n: int) -> Point:
+        """Direction of friction-cone side n (n = 1, 3 at P1; 2, 4 at P2).
+
+        n = 1, 2 are the upper sides (angle φ + ξ), n = 3, 4 the lower sides
+        (φ − ξ).  The vector is the unit direction ``(∓sin(φ ± ξ), -cos(φ ± ξ))``
+        divided by ``cos ξ > 0``, which keeps it free of ``cos ξ``.
+        """
+        sx, cx = self._side(n)
+        return Point.canonical(-sx if n in (1, 3) else sx, -cx)
+
+    def tan_side(self, n: int) -> sp.Expr:
+        """``tan(φ ± ξ)`` of side n in the μ form of (18)-(21) and (23).
+
+        Exact even at φ = π/2, where ``tan φ`` is undefined.
+        """
+        sx, cx = self._side(n)
+        return canon(sx / cx)
+
+    # -- the closed form, eqs. (27)-(39) ---------------------------------------
+    @property
+    def S(self) -> tuple[sp.Expr, ...]:
+        """``(S1, S2, S3, S4)``, eqs. (28), (34), (36), (38)."""
+        h = self.D / 2
+        return tuple(
+            canon(-h + self.y * self.tan_side(n)) if n in (1, 3)
+            else canon(h - self.y * self.tan_side(n))
+            for n in (1, 2, 3, 4)
+        )
+
+    @property
+    def C(self) -> tuple[sp.Expr, ...]:
+        """``(C1, C2, C3, C4)``, eqs. (29), (35), (37), (39)."""
+        return tuple(
+            canon((self.x2 if n in (1, 3) else self.x1) * self.tan_side(n)) for n in (1, 2, 3, 4)
+        )
+
+    @property
+    def V(self) -> tuple[Point, Point, Point, Point]:
+        """The four points ``V_n = (S_n, C_n)``, eqs. (30), (33)."""
+        return tuple(Point(s, c) for s, c in zip(self.S, self.C))  # type: ignore[return-value]
+
+    def _floats(self) -> tuple[np.ndarray, np.ndarray]:
+        if not hasattr(self, "_SC"):
+            try:
+                S = np.array([float(v) for v in self.S])
+                C = np.array([float(v) for v in self.C])
+            except TypeError as exc:
+                raise TypeError("a symbolic grasp cannot be evaluated on numeric θ") from exc
+            object.__setattr__(self, "_SC", (S, C))
+        return self._SC
+
+    # -- k_n and k_grasp --------------------------------------------------------
+    def k(self, theta: Any) -> Any:
+        """The four lower limits ``k_n(θ) = V_n · e(θ)``, eqs. (18)-(21), (27), (32).
+
+        A sympy θ (or int) gives a tuple of four exact expressions; a float or a
+        numpy array gives an array of shape ``(4,) + shape(θ)``.
+        """
+        if _is_numeric(theta):
+            S, C = self._floats()
+            t = np.asarray(theta, dtype=float)
+            s, c = np.sin(t), np.cos(t)
+            return np.multiply.outer(S, s) - np.multiply.outer(C, c)
+        t = sp.sympify(theta)
+        s, c = sp.sin(t), sp.cos(t)
+        return tuple(canon(S * s - C * c) for S, C in zip(self.S, self.C))
+
+    def k_grasp(self, theta: Any) -> Any:
+        """Least internal-force parameter ``max(k1, k2, k3, k4, 0)``, eq. (25).
+
+        Exact for a sympy θ (a ``Max`` when θ is a symbol); vectorised for numpy.
+
+        Examples
+        --------
+        >>> g = Grasp.preset("fig6")
+        >>> g.k_grasp(0)
+        sqrt(3) + 3/2
+        >>> float(g.k_grasp(0.0))
+        3.232050807568877
+        """
+        if _is_numeric(theta):
+            S, C = self._floats()
+            t = np.asarray(theta, dtype=float)
+            s, c = np.sin(t), np.cos(t)
+            out = np.zeros(t.shape)
+            for Sn, Cn in zip(S, C):
+                np.maximum(out, Sn * s - Cn * c, out=out)
+            return out if t.ndim else float(out)
+        ks = self.k(theta)
+        if any(k.free_symbols for k in ks):
+            return sp.Max(*ks, sp.Integer(0))
+        best = sp.Integer(0)
+        for k in ks:
+            if decide_sign(k - best) == 1:
+                best = k
+        return best
+
+    def internal_force(self, theta: Any, external_force: Any = 1) -> Any:
+        """Magnitude of the least internal force ``F_int = k/(x1 + x2) · F_e``, eq. (17)."""
+        kg = self.k_grasp(theta)
+        if _is_numeric(theta):
+            return kg * float(external_force) / float(self.D)
+        out = kg * sp.sympify(external_force) / self.D
+        return out if isinstance(kg, sp.Max) else canon(out)
+
+    # -- the matrices of §2.3 --------------------------------------------------
+    def grasp_matrix(self) -> sp.Matrix:
+        """The grasp matrix L of eq. (5) (3 × 4)."""
+        s1, c1, s2, c2, x1, x2, y = self.s1, self.c1, self.s2, self.c2, self.x1, self.x2, self.y
+        return sp.Matrix([
+            [-s1, -c1, s2, c2],
+            [-c1, s1, -c2, s2],
+            [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
+        ])
+
+    def external_wrench(self, theta: Any, external_force: Any = 1) -> sp.Matrix:
+        """``M = [-F_e sin θ, F_e cos θ, 0]^T`` of eq. (4)."""
+        t, fe = sp.sympify(theta), sp.sympify(external_force)
+        return sp.Matrix([-fe * sp.sin(t), fe * sp.cos(t), 0])
+
+    def F_T(self, theta: Any, external_force: Any = 1) -> sp.Matrix:
+        """Particular solution ``F_T = L^† M`` as printed in eq. (13)."""
+        t, fe = sp.sympify(theta), sp.sympify(external_force)
+        s, c = sp.sin(t), sp.cos(t)
+        D, x1, x2, y = self.D, self.x1, self.x2, self.y
+        s1, c1, s2, c2 = self.s1, self.c1, self.s2, self.c2
+        a, b = y * s - x2 * c, y * s + x1 * c
+        v = [D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
+             -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]
+        return sp.Matrix([fe / (2 * D) * e for e in v])
+
+    def F_N(self, external_force: Any = 1) -> sp.Matrix:
+        """Internal-force direction ``F_N`` of eq. (15), a null vector of L."""
+        fe = sp.sympify(external_force)
+        return sp.Matrix([fe / self.D * e for e in (self.s1, self.c1, self.s2, self.c2)])
+
+    def contact_forces(self, theta: Any, k: Any, external_force: Any = 1) -> sp.Matrix:
+        """``F = [N1, F1, N2, F2]^T = F_T + k F_N``, eq. (16)."""
+        return self.F_T(theta, external_force) + sp.sympify(k) * self.F_N(external_force)
+
+    def subs(self, values: Mapping) -> Grasp:
+        """The grasp with symbols replaced by ``values`` (validated again)."""
+        p = {k: v.subs(values) for k, v in self.params.items()}
+        fr = dict(mu1=p["mu1"], mu2=p["mu2"])
+        return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], **fr,
+                     shape=self.shape, title=self.title)
+
+
+def _is_numeric(theta: Any) -> bool:
+    return isinstance(theta, (float, np.floating, np.ndarray, list, tuple))

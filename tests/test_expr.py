@@ -1,0 +1,386 @@
+"""Tests of graspcompass.expr: safe, exact parsing of user text.
+
+Every expected value is written by hand or computed with :mod:`fractions`,
+never copied from the output of the code under test.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import pytest
+import sympy
+from hypothesis import given
+from hypothesis import strategies as st
+
+from graspcompass.expr import (
+    MAX_ANGLES,
+    MAX_EXPONENT,
+    MAX_LENGTH,
+    ExpressionError,
+    parse_angles,
+    parse_exact,
+    to_exact,
+)
+
+pi = sympy.pi
+R = sympy.Rational
+
+
+def same(value: sympy.Expr, expected: sympy.Expr) -> bool:
+    """Exact equality, checked both structurally and by simplification to zero."""
+    return value == expected or sympy.simplify(value - expected) == 0
+
+
+# --------------------------------------------------------------------------- exactness
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("1.2", R(6, 5)),
+        ("0.5", R(1, 2)),
+        ("1e-3", R(1, 1000)),
+        ("2.5e2", sympy.Integer(250)),
+        ("-1.25", R(-5, 4)),
+        (".5", R(1, 2)),
+        ("5.", sympy.Integer(5)),
+        ("1_000.5", R(2001, 2)),
+        ("0.1 + 0.2", R(3, 10)),  # the classic float trap: exactly 3/10 here
+        ("sqrt(3)/2", sympy.sqrt(3) / 2),
+        ("pi/3", pi / 3),
+        ("2**-1", R(1, 2)),
+        ("-(1+2)", sympy.Integer(-3)),
+        ("+7", sympy.Integer(7)),
+        ("2**10", sympy.Integer(1024)),
+        ("1/3 + 1/6", R(1, 2)),
+        ("(1 +\n 2)", sympy.Integer(3)),
+        ("  4  ", sympy.Integer(4)),
+        ("sin(pi/6)", R(1, 2)),
+        ("cos(pi/3)", R(1, 2)),
+        ("tan(pi/4)", sympy.Integer(1)),
+        ("asin(1)", pi / 2),
+        ("acos(0)", pi / 2),
+        ("atan(1)", pi / 4),
+        ("atan2(1, 1)", pi / 4),
+        ("sqrt(2)**2", sympy.Integer(2)),
+        (f"2**{MAX_EXPONENT}", sympy.Integer(2**64)),
+    ],
+)
+def test_exact_values(text: str, expected: sympy.Expr) -> None:
+    value = parse_exact(text)
+    assert isinstance(value, sympy.Expr)
+    assert not value.has(sympy.Float)
+    assert same(value, expected)
+
+
+def test_decimal_is_a_rational_not_a_float() -> None:
+    value = parse_exact("1.2")
+    assert isinstance(value, sympy.Rational)
+    assert (value.p, value.q) == (6, 5)
+
+
+@pytest.mark.parametrize(
+    ("text", "degrees"),
+    [
+        ("60deg", Fraction(60)),
+        ("60 deg", Fraction(60)),
+        ("60°", Fraction(60)),
+        ("60 ° ", Fraction(60)),
+        ("30*deg", Fraction(30)),
+        ("deg", Fraction(1)),
+        ("-45deg", Fraction(-45)),
+        ("(1+2)deg", Fraction(3)),
+        ("1.5deg", Fraction(3, 2)),
+        ("180deg", Fraction(180)),
+        ("90deg  ", Fraction(90)),
+    ],
+)
+def test_degrees(text: str, degrees: Fraction) -> None:
+    expected = R(degrees.numerator, degrees.denominator) * pi / 180
+    assert same(parse_exact(text), expected)
+
+
+def test_degree_values_by_hand() -> None:
+    assert parse_exact("60deg") == pi / 3
+    assert parse_exact("30deg") == pi / 6
+    assert parse_exact("180°") == pi
+
+
+def test_caller_symbols() -> None:
+    theta = sympy.Symbol("theta")
+    assert parse_exact("2*theta + 1", symbols={"theta": theta}) == 2 * theta + 1
+    assert parse_exact("sin(theta)**2", symbols={"theta": theta}) == sympy.sin(theta) ** 2
+    with pytest.raises(ExpressionError, match="theta"):
+        parse_exact("theta")  # not allowed without the mapping
+    with pytest.raises(ExpressionError):
+        parse_exact("__x", symbols={"__x": sympy.Symbol("x")})
+    with pytest.raises(TypeError):
+        parse_exact("a", symbols={"a": 1})  # type: ignore[dict-item]
+
+
+# --------------------------------------------------------------------------- refusals
+
+REFUSED = [
+    "os",
+    "x",
+    "e",
+    "E",
+    "__import__('os')",
+    '2*__import__("os")',
+    "().__class__",
+    "a.b",
+    "[1]",
+    "(1, 2)",
+    "{1}",
+    "{}",
+    "lambda: 1",
+    "(lambda: 1)()",
+    "'s'",
+    "b's'",
+    "f'{1}'",
+    "1 if 1 else 2",
+    "f(x=1)",
+    "sin(x=1)",
+    "sin(*[1])",
+    "sin",
+    "sin(1, 2)",
+    "atan2(1)",
+    "exp(1)",
+    "1//2",
+    "1 % 2",
+    "1 @ 2",
+    "1 & 2",
+    "1 | 2",
+    "1 ^ 2",
+    "1 << 2",
+    "~1",
+    "not 1",
+    "1 < 2",
+    "1 == 1",
+    "1 and 2",
+    "(y := 1)",
+    "1j",
+    "True",
+    "None",
+    "...",
+    "10**10**10",
+    "2**65",
+    "2**-65",
+    "2**(64*pi)",
+    "((10**64)**64)**64",
+    "1e99999",
+    "1/0",
+    "0**-1",
+    "1/(1/0)",
+    "0*(1/0)",
+    "tan(pi/2)",
+    "atan2(0, 0)",
+    "1+",
+    "(1",
+    "1 2",
+    "60degg",
+    "pideg",
+    "1deg deg",
+    "°",
+    "\x00",
+    "import os",
+]
+
+
+@pytest.mark.parametrize("text", REFUSED)
+def test_refused(text: str) -> None:
+    with pytest.raises(ExpressionError) as info:
+        parse_exact(text)
+    assert isinstance(info.value, ValueError)
+    assert text in str(info.value) or repr(text) in str(info.value)
+
+
+def test_exception_is_a_value_error() -> None:
+    assert issubclass(ExpressionError, ValueError)
+
+
+def test_empty_text() -> None:
+    for text in ("", "   "):
+        with pytest.raises(ExpressionError, match="empty"):
+            parse_exact(text)
+
+
+def test_messages() -> None:
+    with pytest.raises(ExpressionError) as info:
+        parse_exact("1+")
+    assert str(info.value) == "cannot read '1+': incomplete or malformed expression"
+    with pytest.raises(ExpressionError) as info:
+        parse_exact('2*__import__("os")')
+    message = str(info.value)
+    assert message.startswith("""cannot read '2*__import__("os")': only numbers, + - * / **""")
+    assert "parentheses are allowed" in message
+    with pytest.raises(ExpressionError, match="attribute access"):
+        parse_exact("().__class__")
+    with pytest.raises(ExpressionError, match="exponent"):
+        parse_exact("10**10**10")
+    with pytest.raises(ExpressionError, match="not finite"):
+        parse_exact("1/0")
+    with pytest.raises(ExpressionError, match="keyword"):
+        parse_exact("sin(x=1)")
+    with pytest.raises(ExpressionError, match="2 arguments"):
+        parse_exact("atan2(1)")
+
+
+def test_too_long() -> None:
+    text = "1+" * (MAX_LENGTH // 2) + "1"
+    assert len(text) == MAX_LENGTH + 1
+    with pytest.raises(ExpressionError) as info:
+        parse_exact(text)
+    assert str(MAX_LENGTH) in str(info.value)
+    assert text[:40] in str(info.value)
+    assert parse_exact(text[2:]) == MAX_LENGTH // 2  # 200 characters: 100 ones
+
+
+def test_deep_nesting_is_an_error_or_a_value_never_a_crash() -> None:
+    assert parse_exact("(" * 99 + "1" + ")" * 99) == 1
+    assert parse_exact("-" * 199 + "1") == -1
+
+
+def test_not_a_string() -> None:
+    with pytest.raises(TypeError):
+        parse_exact(3)  # type: ignore[arg-type]
+
+
+# --------------------------------------------------------------------------- to_exact
+
+
+def test_to_exact() -> None:
+    expr = sympy.sqrt(2) / 3
+    assert to_exact(expr) is expr
+    assert to_exact(7) == 7 and isinstance(to_exact(7), sympy.Integer)
+    assert to_exact(Fraction(3, 6)) == R(1, 2)
+    assert to_exact("1.2") == R(6, 5)
+    assert to_exact("30deg") == pi / 6
+
+
+def test_to_exact_refuses_floats_bools_and_others() -> None:
+    with pytest.raises(ExpressionError) as info:
+        to_exact(1.2)
+    assert "'1.2'" in str(info.value)
+    for flag in (True, False):
+        with pytest.raises(ExpressionError):
+            to_exact(flag)
+    with pytest.raises(TypeError):
+        to_exact(None)
+    with pytest.raises(ExpressionError):
+        to_exact("os")
+
+
+# --------------------------------------------------------------------------- angles
+
+
+def test_angle_ranges() -> None:
+    assert parse_angles("0:360:90deg") == [0, pi / 2, pi, 3 * pi / 2]
+    assert parse_angles("0:360:90°") == [0, pi / 2, pi, 3 * pi / 2]
+    assert parse_angles("0 : 360 : 90 deg") == [0, pi / 2, pi, 3 * pi / 2]
+    assert parse_angles("0:pi:pi/4") == [0, pi / 4, pi / 2, 3 * pi / 4]
+    assert parse_angles("0:1:0.25") == [0, R(1, 4), R(1, 2), R(3, 4)]
+    assert parse_angles("0:10:3") == [0, 3, 6, 9]
+    five = parse_angles("0:360:5deg")
+    assert len(five) == 72
+    assert five == [R(5 * i, 180) * pi for i in range(72)]
+
+
+def test_single_angles_and_lists() -> None:
+    assert parse_angles("pi/6") == [pi / 6]
+    assert parse_angles("30deg") == [pi / 6]
+    assert parse_angles("0, 30deg, pi/4") == [0, pi / 6, pi / 4]
+    assert parse_angles("atan2(1, 1), 0:180:90deg") == [pi / 4, 0, pi / 2]
+
+
+@pytest.mark.parametrize(
+    ("text", "needle"),
+    [
+        ("0:1:0", "positive"),
+        ("0:1:-1", "positive"),
+        ("1:0:1", "empty"),
+        ("0:0:1", "empty"),
+        (f"0:{MAX_ANGLES + 1}:1", str(MAX_ANGLES)),
+        ("0:1:1e-7", str(MAX_ANGLES)),
+        ("0:1", "start:stop:step"),
+        ("0:1:2:3", "start:stop:step"),
+        ("0::1", "start:stop:step"),
+        ("0deg:90:30deg", "unit once"),
+        ("0:sqrt(-1):1", "real"),
+        ("", "empty"),
+        ("1,,2", "empty"),
+        ("0:os:1", "os"),
+    ],
+)
+def test_angle_errors(text: str, needle: str) -> None:
+    with pytest.raises(ExpressionError) as info:
+        parse_angles(text)
+    assert needle in str(info.value)
+
+
+# --------------------------------------------------------------------------- hypothesis
+
+small = st.integers(min_value=-50, max_value=50)
+
+
+@given(st.integers(-(10**12), 10**12), st.integers(1, 10**12))
+def test_fraction_text_is_exact(p: int, q: int) -> None:
+    expected = Fraction(p, q)
+    assert parse_exact(f"{p}/{q}") == R(expected.numerator, expected.denominator)
+
+
+@given(st.integers(-(10**15), 10**15), st.integers(1, 15))
+def test_decimal_text_is_exact(m: int, k: int) -> None:
+    digits = str(abs(m)).rjust(k + 1, "0")
+    text = ("-" if m < 0 else "") + digits[:-k] + "." + digits[-k:]
+    expected = Fraction(m, 10**k)
+    assert parse_exact(text) == R(expected.numerator, expected.denominator)
+    assert parse_exact(f"{m}e-{k}") == R(expected.numerator, expected.denominator)
+    assert parse_exact(f"{m}E{k}") == m * 10**k
+
+
+@given(small, small)
+def test_integer_arithmetic(a: int, b: int) -> None:
+    assert parse_exact(f"{a}+{b}") == a + b
+    assert parse_exact(f"{a}-{b}") == a - b
+    assert parse_exact(f"{a}*{b}") == a * b
+    assert parse_exact(f"({a}) * ({b}) - {a}") == a * b - a
+    if b != 0:
+        quotient = Fraction(a, b)
+        assert parse_exact(f"{a}/{b}") == R(quotient.numerator, quotient.denominator)
+    else:
+        with pytest.raises(ExpressionError):
+            parse_exact(f"{a}/{b}")
+
+
+@given(small, st.integers(-8, 8))
+def test_integer_powers(a: int, n: int) -> None:
+    text = f"({a})**({n})"
+    if a == 0 and n < 0:
+        with pytest.raises(ExpressionError):
+            parse_exact(text)
+    else:
+        power = Fraction(a) ** n
+        assert parse_exact(text) == R(power.numerator, power.denominator)
+
+
+@given(st.integers(-720, 720))
+def test_integer_degrees(d: int) -> None:
+    ratio = Fraction(d, 180)
+    expected = R(ratio.numerator, ratio.denominator) * pi
+    assert parse_exact(f"{d}deg") == expected
+    assert parse_exact(f"{d}°") == expected
+    assert parse_exact(f"{d}*deg") == expected
+
+
+@given(st.integers(-30, 30), st.integers(-30, 30), st.integers(1, 7))
+def test_ranges_match_python_range(start: int, stop: int, step: int) -> None:
+    expected = list(range(start, stop, step))
+    text = f"{start}:{stop}:{step}"
+    if expected:
+        assert parse_angles(text) == expected
+        assert parse_angles(text + "deg") == [R(v, 180) * pi for v in expected]
+    else:
+        with pytest.raises(ExpressionError, match="empty"):
+            parse_angles(text)
