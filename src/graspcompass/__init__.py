@@ -1,3 +1,42 @@
-"""graspcompass: the internal force diagram of two-point grasps, by ruler and compass."""
+"""graspcompass: the internal force diagram of two-point grasps, by ruler and compass.
+
+A ruler-and-compass construction engine for the diagram of Ito, Tanaka and
+Sasaki, "A diagram of the minimum necessary internal force required to resist
+external forces on two-point-grasped objects in two-dimensional space",
+Robotica 30(5), 2012.
+
+Layers, lowest first: :mod:`graspcompass.geometry` (exact kernel),
+:mod:`graspcompass.grasp` (the model, eqs. (1)-(39)),
+:mod:`graspcompass.construction` (the drawing recipe of §3.3),
+:mod:`graspcompass.render` (matplotlib) and :mod:`graspcompass.cli`.
+
+Examples
+--------
+>>> import graspcompass as gc
+>>> c = gc.internal_force_diagram(gc.Grasp.preset("fig6"))
+>>> c["V2"] == gc.Point("sqrt(3)", "-3/2")
+True
+"""
+
+from .construction import Construction, Step, internal_force_diagram
+from .expr import ExpressionError, parse_exact
+from .geometry import Circle, GeometryError, Line, Point
+from .grasp import PRESETS, Grasp, InvalidGraspError
 
 __version__ = "0.1.0"
+
+__all__ = [
+    "PRESETS",
+    "Circle",
+    "Construction",
+    "ExpressionError",
+    "GeometryError",
+    "Grasp",
+    "InvalidGraspError",
+    "Line",
+    "Point",
+    "Step",
+    "__version__",
+    "internal_force_diagram",
+    "parse_exact",
+]

@@ -61,7 +61,7 @@ def line_through(p: Point, q: Point) -> Line:
     >>> line_through(Point(1, 1), Point(1, 1))
     Traceback (most recent call last):
     ...
-    graspcompass.geometry.errors.CoincidentPointsError: a line through two points needs two distinct points, got Point(1, 1) twice
+    graspcompass.geometry.errors.CoincidentPointsError: a line through two points needs ...
     """
     if decide_zero(p.x - q.x) and decide_zero(p.y - q.y):
         raise CoincidentPointsError(
@@ -108,7 +108,7 @@ def meet(a: Line, b: Line) -> Point:
     >>> meet(Line(Point(0, 1), Point(1, 0)), Line(Point(0, 0), Point(2, 0)))
     Traceback (most recent call last):
     ...
-    graspcompass.geometry.errors.ParallelLinesError: lines are parallel, they do not meet in one point: Line(Point(0, 1), direction=Point(1, 0)) and Line(Point(0, 0), direction=Point(2, 0))
+    graspcompass.geometry.errors.ParallelLinesError: lines are parallel, they do not meet ...
     """
     den = a.direction.cross(b.direction)
     conds = _nonzero(

@@ -18,6 +18,8 @@ from functools import lru_cache
 
 import sympy as sp
 
+from ..expr import parse_exact
+
 __all__ = ["Expr", "canon", "decide_sign", "decide_zero", "has_float", "sym"]
 
 Expr = sp.Expr
@@ -30,17 +32,19 @@ def sym(value: object) -> sp.Expr:
     """Return ``value`` as a sympy expression without any parsing of text.
 
     Python ints become :class:`sympy.Integer`, floats :class:`sympy.Float`;
-    sympy expressions pass through.  Strings are refused: parse them with
-    :func:`graspcompass.expr.parse_exact` first.
+    sympy expressions pass through; text is read exactly and safely by
+    :func:`graspcompass.expr.parse_exact` (``"1.2"`` is 6/5).
 
     Examples
     --------
-    >>> sym(3), sym(0.5)
-    (3, 0.500000000000000)
+    >>> sym(3), sym(0.5), sym("1.2")
+    (3, 0.500000000000000, 6/5)
     """
     if isinstance(value, sp.Basic):
         return value  # type: ignore[return-value]
-    if isinstance(value, bool) or isinstance(value, str):
+    if isinstance(value, str):
+        return parse_exact(value)
+    if isinstance(value, bool):
         raise TypeError(f"expected a number or a sympy expression, got {value!r}")
     if isinstance(value, int):
         return sp.Integer(value)

@@ -28,8 +28,10 @@ def is_on(p: Point, obj: Line | Circle) -> bool | None:
 
     Examples
     --------
-    >>> is_on(Point(1, 1), Line(Point(0, 0), Point(2, 2))), is_on(Point(0, 1), Circle(Point(0, 0), 1))
-    (True, True)
+    >>> is_on(Point(1, 1), Line(Point(0, 0), Point(2, 2)))
+    True
+    >>> is_on(Point(0, 1), Circle(Point(0, 0), 1))
+    True
     """
     if isinstance(obj, Line):
         z = decide_zero((p - obj.point).cross(obj.direction))

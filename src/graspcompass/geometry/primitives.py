@@ -116,7 +116,7 @@ class Line:
     >>> Line(Point(0, 0), Point(0, 0))
     Traceback (most recent call last):
     ...
-    graspcompass.geometry.errors.ZeroDirectionError: a line needs a non-zero direction, got Point(0, 0) at Point(0, 0)
+    graspcompass.geometry.errors.ZeroDirectionError: a line needs a non-zero direction, ...
     """
 
     point: Point
