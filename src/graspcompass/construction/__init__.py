@@ -1,5 +1,6 @@
 """Construction protocol (replayable steps) and the paper's drawing recipe (§3.3)."""
 
+from .describe import describe, step_record, to_records
 from .envelope import Arc, Envelope, outer_envelope
 from .protocol import INSTRUMENTS, OPS, Construction, Step, StepSpec, replay
 from .recipe import diagram_specs, internal_force_diagram
@@ -12,8 +13,11 @@ __all__ = [
     "Envelope",
     "Step",
     "StepSpec",
+    "describe",
     "diagram_specs",
     "internal_force_diagram",
     "outer_envelope",
     "replay",
+    "step_record",
+    "to_records",
 ]

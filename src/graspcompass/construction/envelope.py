@@ -94,7 +94,7 @@ class Envelope:
 def _angle(vector: Point) -> sp.Expr:
     """Exact θ in [0, 2π) with e(θ) along ``vector``."""
     a = angle_of(vector)
-    return a + 2 * sp.pi if decide_sign(a) == -1 else a
+    return canon(a + 2 * sp.pi) if decide_sign(a) == -1 else canon(a)
 
 
 def _f(expr: sp.Expr) -> float:

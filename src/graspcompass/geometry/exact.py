@@ -235,7 +235,13 @@ def decide_zero(expr: sp.Expr) -> bool | None:
             return abs(float(expr)) <= 1e-12
         return bool(expr == 0)
     if expr.free_symbols:
-        return True if canon(expr) == 0 else None
+        reduced = canon(expr)
+        if reduced == 0:
+            return True
+        # the symbols' own assumptions may settle it, e.g. (x + 1)**2 for x > 0
+        if len(reduced.args) < 40 and reduced.is_zero is False:
+            return False
+        return None
     if has_float(expr):
         return abs(float(expr.evalf(17))) <= 1e-12
     value = expr.evalf(_PREC)

@@ -1,0 +1,47 @@
+"""Matplotlib drawings of the internal force diagram (Ito, Tanaka, Sasaki, Robotica 2012).
+
+The only part of :mod:`graspcompass` that imports matplotlib, and it never uses
+pyplot: figures are :class:`matplotlib.figure.Figure` objects, which work
+without a display.
+
+- :func:`draw_construction`: the state of the ruler-and-compass construction
+  after any step (§3.3, Figs. 3-5);
+- :func:`figure_diagram`: the complete diagram with the computer plot of
+  Fig. 6(b) on top (eq. (25));
+- :func:`draw_k_polar`, :func:`figure_k_plot`: the computer plots of k_grasp;
+- :func:`save_figure`: PNG, SVG or PDF;
+- :class:`Theme`, :data:`DEFAULT_THEME`, :data:`PAPER_THEME`: the styles.
+
+Examples
+--------
+>>> from graspcompass import Grasp, internal_force_diagram
+>>> from graspcompass.render import figure_diagram
+>>> fig = figure_diagram(internal_force_diagram(Grasp.preset("fig6")))
+>>> fig.axes[0].get_title()[:6]
+'Fig. 6'
+"""
+
+from .figure import (
+    EXTRA_KEYS,
+    FORMATS,
+    draw_construction,
+    draw_k_polar,
+    figure_diagram,
+    figure_k_plot,
+    save_figure,
+)
+from .theme import DEFAULT_THEME, PAPER_THEME, THEMES, Theme
+
+__all__ = [
+    "DEFAULT_THEME",
+    "EXTRA_KEYS",
+    "FORMATS",
+    "PAPER_THEME",
+    "THEMES",
+    "Theme",
+    "draw_construction",
+    "draw_k_polar",
+    "figure_diagram",
+    "figure_k_plot",
+    "save_figure",
+]

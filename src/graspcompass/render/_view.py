@@ -1,0 +1,188 @@
+"""Numbers for drawing: float values of the objects, the view box, clipping, labels text.
+
+Nothing here imports matplotlib; :mod:`graspcompass.render.labels` places the
+labels once the view box is known.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from ..geometry import evaluate
+
+__all__ = [
+    "Box",
+    "clip_line",
+    "clip_segment",
+    "numeric_objects",
+    "shape_extent",
+    "tex",
+    "view_box",
+]
+
+#: ``(xmin, xmax, ymin, ymax)``.
+Box = tuple[float, float, float, float]
+XY = tuple[float, float]
+
+_NAME = re.compile(r"([A-Za-z])_?([A-Za-z0-9]*)")
+
+
+def tex(name: str, math: bool = True) -> str:
+    """The paper's label of a point name in mathtext: ``"P1x"`` -> ``"$P_{1x}$"``.
+
+    Examples
+    --------
+    >>> tex("P1x"), tex("O_M"), tex("X3"), tex("O")
+    ('$P_{1x}$', '$O_M$', '$X_3$', '$O$')
+    >>> tex("B12", math=False)
+    'B_{12}'
+    """
+    m = _NAME.fullmatch(name)
+    if m is None:
+        body = name
+    else:
+        head, rest = m.groups()
+        body = head if not rest else (f"{head}_{rest}" if len(rest) == 1 else f"{head}_{{{rest}}}")
+    return f"${body}$" if math else body
+
+
+def numeric_objects(construction: Any) -> dict[str, Any]:
+    """Float values of every object of ``construction`` (the envelope is kept as is).
+
+    Points become ``(x, y)``, lines ``((px, py), (dx, dy))``, circles
+    ``((cx, cy), r)``, lengths a float.
+
+    Raises
+    ------
+    ValueError
+        For a symbolic construction, which has no picture until numbers are
+        substituted (:meth:`graspcompass.Grasp.subs`).
+    """
+    out: dict[str, Any] = {}
+    for s in construction.steps:
+        if s.kind == "envelope":
+            out[s.name] = s.obj
+            continue
+        try:
+            out[s.name] = evaluate(s.obj)
+        except (ValueError, TypeError) as exc:
+            raise ValueError(
+                f"cannot draw {s.name!r}: the construction is symbolic ({exc}); substitute "
+                "numbers for the symbols first (Grasp.subs)"
+            ) from exc
+    return out
+
+
+def shape_extent(shape: Any) -> Box | None:
+    """The bounding box of the object outline ``grasp.shape`` (centred at O), or None."""
+    if not shape:
+        return None
+    kind = shape[0]
+    if kind == "circle" and len(shape) >= 2:
+        r = float(shape[1])
+        return (-r, r, -r, r)
+    if kind == "rectangle" and len(shape) >= 3:
+        w, h = float(shape[1]) / 2, float(shape[2]) / 2
+        return (-w, w, -h, h)
+    return None
+
+
+def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
+             factor: float = 3.0, square: bool = True) -> Box:
+    """An automatic view box of the diagram.
+
+    It holds O, the contacts, P1x, P2x, O_M, every X_n, Y_n, V_n, the circles
+    on O V_n and the object outline, plus ``margin`` of the size on each side.
+    A point far away (X_n when a cone side is nearly horizontal) is cut off:
+    the box stays within ``factor`` times the largest of |V_n|, the object
+    size and the contact spread from O.
+    """
+    pts: list[XY] = [(0.0, 0.0)]
+    scale = 0.0
+    if grasp is not None:
+        for p in (grasp.P1, grasp.P2):
+            xy = evaluate(p)
+            pts.append(xy)
+            scale = max(scale, math.hypot(*xy))
+    ext = shape_extent(getattr(grasp, "shape", None))
+    if ext is not None:
+        pts += [(ext[0], ext[2]), (ext[1], ext[3])]
+        scale = max(scale, max(abs(v) for v in ext))
+    for name, v in objects.items():
+        if name[:1] in "VXYP" or name == "O_M":
+            if isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], float):
+                pts.append(v)
+                if name[:1] == "V":
+                    scale = max(scale, math.hypot(*v))
+        elif name.startswith("circle"):
+            (cx, cy), r = v
+            pts += [(cx - r, cy - r), (cx + r, cy + r)]
+    arr = np.array(pts, dtype=float)
+    limit = factor * (scale if scale > 0 else 1.0)
+    arr = np.clip(arr, -limit, limit)
+    xmin, ymin = arr.min(axis=0)
+    xmax, ymax = arr.max(axis=0)
+    span = max(xmax - xmin, ymax - ymin, 1e-9)
+    if square:
+        cx, cy = (xmin + xmax) / 2, (ymin + ymax) / 2
+        xmin, xmax, ymin, ymax = cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2
+    m = margin * span
+    return (float(xmin - m), float(xmax + m), float(ymin - m), float(ymax + m))
+
+
+def clip_line(point: XY, direction: XY, box: Box) -> tuple[XY, XY] | None:
+    """The part of the infinite line ``point + t·direction`` inside ``box`` (Liang-Barsky)."""
+    return _clip(point, direction, box, -math.inf, math.inf)
+
+
+def clip_segment(a: XY, b: XY, box: Box) -> tuple[XY, XY] | None:
+    """The part of the segment ``a b`` inside ``box``, or None."""
+    return _clip(a, (b[0] - a[0], b[1] - a[1]), box, 0.0, 1.0)
+
+
+def _clip(p: XY, d: XY, box: Box, t0: float, t1: float) -> tuple[XY, XY] | None:
+    xmin, xmax, ymin, ymax = box
+    for pi, di, lo, hi in ((p[0], d[0], xmin, xmax), (p[1], d[1], ymin, ymax)):
+        if abs(di) < 1e-300:
+            if pi < lo or pi > hi:
+                return None
+            continue
+        ta, tb = (lo - pi) / di, (hi - pi) / di
+        if ta > tb:
+            ta, tb = tb, ta
+        t0, t1 = max(t0, ta), min(t1, tb)
+        if t0 > t1:
+            return None
+    if not (math.isfinite(t0) and math.isfinite(t1)):
+        return None
+    return ((p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1]))
+
+
+def wedge(apex: XY, u: XY, v: XY, length: float, samples: int = 24) -> np.ndarray:
+    """Polygon of the convex angular sector at ``apex`` from direction ``u`` to ``v``.
+
+    The sector is the one of opening below π (a friction cone, 2ξ < π).
+    """
+    a, b = math.atan2(u[1], u[0]), math.atan2(v[1], v[0])
+    delta = (b - a + math.pi) % (2 * math.pi) - math.pi
+    t = a + np.linspace(0.0, delta, samples)
+    arc = np.column_stack([apex[0] + length * np.cos(t), apex[1] + length * np.sin(t)])
+    return np.vstack([[apex], arc, [apex]])
+
+
+def group_points(items: Sequence[tuple[str, XY]], tol: float) -> list[list[str]]:
+    """Names of points closer than ``tol`` to each other, in the order given."""
+    groups: list[tuple[XY, list[str]]] = []
+    for name, xy in items:
+        for where, names in groups:
+            if math.hypot(xy[0] - where[0], xy[1] - where[1]) <= tol:
+                names.append(name)
+                break
+        else:
+            groups.append((xy, [name]))
+    return [names for _, names in groups]

@@ -1,0 +1,284 @@
+"""Drawing the ruler-and-compass construction of the internal force diagram.
+
+:func:`draw_construction` draws the state of a
+:class:`~graspcompass.construction.Construction` after any step: the object,
+its friction cones (Fig. 2), the cone sides and perpendiculars of §3.3
+(Fig. 4), the points V_n, the circles on O V_n (eq. (31), Fig. 3) and their
+outer envelope k_grasp (eq. (25), Fig. 5).  :func:`figure_diagram` makes the
+complete Fig. 6 style figure, with the computer plot of Fig. 6(b) on top.
+Only :class:`matplotlib.figure.Figure` is used, never pyplot.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from matplotlib.artist import Artist
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.patches import Circle as CirclePatch
+from matplotlib.patches import Polygon, Rectangle
+from matplotlib.text import Annotation, Text
+
+from ._view import (
+    clip_line,
+    clip_segment,
+    group_points,
+    numeric_objects,
+    shape_extent,
+    tex,
+    view_box,
+    wedge,
+)
+from .labels import place_labels
+from .output import FORMATS, save_figure
+from .polar import draw_k_polar, figure_k_plot
+from .theme import DEFAULT_THEME, Theme
+
+__all__ = [
+    "EXTRA_KEYS",
+    "FORMATS",
+    "draw_construction",
+    "draw_k_polar",
+    "figure_diagram",
+    "figure_k_plot",
+    "save_figure",
+]
+
+#: Keys of :func:`draw_construction`'s result that are not construction objects.
+EXTRA_KEYS = ("object", "cone1", "cone2", "computer plot")
+
+_LABEL_ORDER = "VPOXY"
+
+
+def _n(name: str) -> int:
+    digits = "".join(ch for ch in name if ch.isdigit())
+    return int(digits[-1]) if digits else 1
+
+
+def _draw_givens(ax: Axes, grasp: Any, num: dict[str, Any], theme: Theme,
+                 out: dict[str, list[Artist]]) -> None:
+    """The object outline and the friction cones, shaded towards the object (Fig. 2)."""
+    ext = shape_extent(getattr(grasp, "shape", None))
+    style = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
+                 lw=theme.line_width, zorder=0.5)
+    if ext is not None:
+        kind = grasp.shape[0]
+        patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
+                 Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
+        out["object"] = [ax.add_patch(patch)]
+    p1, p2 = np.array(num["P1"] if "P1" in num else (0, 0)), np.array(num.get("P2", (0, 0)))
+    length = 0.6 * float(np.linalg.norm(p1 - p2))
+    for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
+        apex = num.get(f"P{i}")
+        da, db = num.get(f"side{a}"), num.get(f"side{b}")
+        if apex is None or da is None or db is None:
+            continue
+        poly = Polygon(wedge(apex, da[1], db[1], length), closed=True, facecolor=theme.cone_face,
+                       alpha=theme.cone_alpha, edgecolor="none", zorder=1,
+                       label="friction cones" if i == 1 else "_nolegend_")
+        out[f"cone{i}"] = [ax.add_patch(poly)]
+
+
+def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme,
+               hl: dict[str, Any]) -> list[Artist]:
+    seg = clip_line(line[0], line[1], box)
+    if seg is None:
+        return [ax.plot([], [])[0]]
+    (x0, y0), (x1, y1) = seg
+    if name in ("x-axis", "y-axis"):
+        kw: dict[str, Any] = dict(color=theme.axis_color, lw=theme.line_width * 0.8, zorder=2)
+    elif step.op == "perpendicular":
+        kw = dict(color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2)), zorder=2.5)
+    else:
+        kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
+                  label="cone sides, extended (§3.3)" if name == "side1" else "_nolegend_")
+    arts: list[Artist] = ax.plot([x0, x1], [y0, y1], **{**kw, **hl})
+    if name in ("x-axis", "y-axis"):
+        end = (x1, y1) if (x1 - x0) + (y1 - y0) > 0 else (x0, y0)
+        arts.append(ax.annotate(name[0], end, xytext=(-4, -4), textcoords="offset points",
+                                color=theme.axis_color, fontsize=theme.font_size,
+                                style="italic", ha="right", va="top"))
+    return arts
+
+
+def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float,
+                 theme: Theme, hl: dict[str, Any]) -> list[Artist]:
+    """A signed length as a thin double arrow along its axis, offset per n (§3.3)."""
+    a, b, axis = (num[k] for k in step.inputs[:3])
+    d = np.asarray(axis[1], dtype=float)
+    d /= np.linalg.norm(d)
+    side = np.array([d[1], -d[0]])  # below the x-axis, right of the y-axis
+    off = side * (0.012 * span * (_n(step.name) + 0.5))
+    color = hl.get("color", theme.circle_color(_n(step.name)))
+    a, b = tuple(np.asarray(a) + off), tuple(np.asarray(b) + off)
+    seg = clip_segment(a, b, box)
+    if seg is None or math.dist(a, b) < 1e-9 * span:
+        return ax.plot([a[0]], [a[1]], marker="|", color=color, ms=4, lw=0)
+    tail = "<" if math.dist(seg[0], a) < 1e-12 * span else "-"
+    head = ">" if math.dist(seg[1], b) < 1e-12 * span else "-"
+    arrow = ax.annotate("", seg[1], xytext=seg[0], annotation_clip=False, zorder=2.4,
+                        arrowprops=dict(arrowstyle=f"{tail}-{head}", color=color,
+                                        lw=hl.get("lw", theme.thin_width), shrinkA=0,
+                                        shrinkB=0, mutation_scale=7))
+    return [arrow]
+
+
+def draw_construction(construction: Any, step: int | None = None, ax: Axes | None = None,
+                      theme: Theme = DEFAULT_THEME, labels: bool = True,
+                      show_computer_plot: bool = False,
+                      highlight_last: bool = False) -> dict[str, list[Artist]]:
+    """Draw the construction of the internal force diagram after step ``step``.
+
+    Parameters
+    ----------
+    construction : Construction
+        From :func:`graspcompass.internal_force_diagram`, numeric parameters.
+    step : int, optional
+        Draw the state ``construction.upto(step)``; None draws every step.
+        The view box is that of the whole construction, the same for every
+        step, and the given data (the object outline from ``grasp.shape`` and
+        the friction cones) are drawn at every step.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new :class:`~matplotlib.figure.Figure` is made if None.
+    theme : Theme
+        Colours, widths and font size.
+    labels : bool
+        Label the points as in the paper (P_1, P_{1x}, O_M, X_n, Y_n, V_n).
+    show_computer_plot : bool
+        Also draw the numeric polar plot of k_grasp (Fig. 6(b), eq. (25)).
+    highlight_last : bool
+        Draw the object of the last step drawn in ``theme.highlight_color``.
+
+    Returns
+    -------
+    dict of str to list of Artist
+        For every object name of the state, its artists (a point's marker and
+        label, a line clipped to the view, a dashed circle, a length's double
+        arrow, the envelope's bold line and filling); and the
+        :data:`EXTRA_KEYS` ``"object"``, ``"cone1"``, ``"cone2"``,
+        ``"computer plot"`` when drawn.  The geometry is only read.
+
+    Examples
+    --------
+    >>> from graspcompass import Grasp, internal_force_diagram
+    >>> c = internal_force_diagram(Grasp.preset("fig6"))
+    >>> arts = draw_construction(c, step=17)
+    >>> sorted(set(arts) - set(EXTRA_KEYS)) == sorted(c.upto(17).names)
+    True
+    """
+    state = construction if step is None else construction.upto(step)
+    if ax is None:
+        ax = Figure(figsize=(7, 7)).add_subplot()
+    num_all = numeric_objects(construction)
+    num = {k: num_all[k] for k in state.names}
+    box = view_box(construction.grasp, num_all)
+    span = box[1] - box[0]
+    ax.set_xlim(box[0], box[1])
+    ax.set_ylim(box[2], box[3])
+    ax.set_aspect("equal", adjustable="box")
+    out: dict[str, list[Artist]] = {}
+    _draw_givens(ax, construction.grasp, num_all, theme, out)
+    last = state.steps[-1].name if highlight_last else None
+    points: list[tuple[str, tuple[float, float]]] = []
+    curves: list[np.ndarray] = []
+    for s in state.steps:
+        v = num[s.name]
+        hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
+        if s.kind == "point":
+            small = s.name.startswith("B")
+            out[s.name] = ax.plot(
+                [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
+                mfc="white" if small else hl.get("color", theme.point_color),
+                mec=hl.get("color", theme.point_color), mew=0.8)
+            if not small:
+                points.append((s.name, v))
+        elif s.kind == "line":
+            out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
+            seg = clip_line(v[0], v[1], box)
+            if seg is not None:
+                curves.append(np.array(seg))
+        elif s.kind == "circle":
+            n = _n(s.name)
+            (cx, cy), r = v
+            patch = CirclePatch((cx, cy), r, fill=False, zorder=3,
+                                edgecolor=hl.get("color", theme.circle_color(n)),
+                                ls=theme.circle_style(n), lw=hl.get("lw", theme.line_width),
+                                label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)")
+            out[s.name] = [ax.add_patch(patch)]
+            t = np.linspace(0, 2 * np.pi, 100)
+            curves.append(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
+        elif s.kind == "length":
+            out[s.name] = _draw_length(ax, s, num, box, span, theme, hl)
+            curves += [np.array([a.xyann, a.xy]) for a in out[s.name]
+                       if isinstance(a, Annotation)]
+        else:  # the envelope, eq. (25)
+            xy = v.polyline()
+            fill = Polygon(xy, closed=True, facecolor=theme.envelope_fill, edgecolor="none",
+                           alpha=theme.envelope_alpha, zorder=1.5)
+            line = ax.plot(xy[:, 0], xy[:, 1], color=hl.get("color", theme.envelope_color),
+                           lw=theme.envelope_width, zorder=4, solid_joinstyle="round",
+                           label=r"envelope: $k_{grasp}(\theta)$, eq. (25)")
+            out[s.name] = [*line, ax.add_patch(fill)]
+            curves.append(xy)
+    if show_computer_plot and construction.grasp is not None:
+        out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
+    if labels and points:
+        axis_texts = [a for k in ("x-axis", "y-axis") for a in out.get(k, [])
+                      if isinstance(a, Text)]
+        _label_points(ax, points, curves, axis_texts, theme, out)
+    return out
+
+
+def _label_points(ax: Axes, points: list[tuple[str, tuple[float, float]]],
+                  curves: list[np.ndarray], avoid: list[Text], theme: Theme,
+                  out: dict[str, list[Artist]]) -> None:
+    """One label per group of coincident points, ``O = O_M = Y_4`` (§3.3)."""
+    where = dict(points)
+    xs = [abs(v) for _, xy in points for v in xy]
+    groups = group_points(points, 1e-9 * max(1.0, *xs))
+    groups.sort(key=lambda g: min(_LABEL_ORDER.find(n[0]) % 9 for n in g))
+    items = [(where[g[0]], "$" + " = ".join(tex(n, math=False) for n in g) + "$")
+             for g in groups]
+    texts = place_labels(ax, items, curves, avoid, font_size=theme.font_size,
+                         marker_size=theme.point_size, color=theme.label_color, zorder=6,
+                         bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
+    for g, text in zip(groups, texts):
+        for n in g:
+            out[n].append(text)
+
+
+def figure_diagram(construction: Any, step: int | None = None, overlay: bool = True,
+                   title: str | None = None, figsize: tuple[float, float] = (7.0, 7.0),
+                   theme: Theme = DEFAULT_THEME, labels: bool = True) -> Figure:
+    """A complete figure of the internal force diagram, as in Fig. 6 and Fig. 7.
+
+    The construction (:func:`draw_construction`) in an equal-aspect frame
+    without grid, titled ``title`` or the grasp's title, with a legend; when
+    ``overlay`` is true the computer plot of Fig. 6(b) (eq. (25), evaluated
+    numerically) is drawn over the envelope as a thin contrasting curve, so
+    that the two coincide as §4.1 reports.
+
+    Examples
+    --------
+    >>> from graspcompass import Grasp, internal_force_diagram
+    >>> fig = figure_diagram(internal_force_diagram(Grasp.preset("table1b")))
+    >>> fig.axes[0].get_aspect()
+    1.0
+    """
+    fig = Figure(figsize=figsize)
+    ax = fig.add_axes((0.08, 0.2, 0.88, 0.72))
+    draw_construction(construction, step=step, ax=ax, theme=theme, labels=labels,
+                      show_computer_plot=overlay)
+    ax.grid(False)
+    ax.tick_params(labelsize=theme.font_size * 0.8)
+    grasp = construction.grasp
+    text = title if title is not None else (getattr(grasp, "title", None) or "")
+    ax.set_title(text, fontsize=theme.font_size * 1.05)
+    handles, names = ax.get_legend_handles_labels()
+    if handles:
+        fig.legend(handles, names, loc="lower center", ncol=2, frameon=False,
+                   fontsize=theme.font_size * 0.85)
+    return fig

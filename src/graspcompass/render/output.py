@@ -1,0 +1,55 @@
+"""Writing figures to PNG, SVG or PDF files."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from matplotlib.figure import Figure
+
+__all__ = ["FORMATS", "save_figure"]
+
+#: File formats :func:`save_figure` writes.
+FORMATS = ("png", "svg", "pdf")
+
+
+def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = None,
+                dpi: float = 150) -> Path:
+    """Write ``fig`` as PNG, SVG or PDF, creating the parent directories.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+    path : str or path-like
+        Target file; its extension gives the format unless ``format`` is given.
+    format : {"png", "svg", "pdf"}, optional
+    dpi : float
+        Resolution of a PNG.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+
+    Raises
+    ------
+    ValueError
+        For an extension or format other than png, svg or pdf.
+
+    Examples
+    --------
+    >>> save_figure(Figure(), "diagram.gif")
+    Traceback (most recent call last):
+    ...
+    ValueError: cannot save a figure to 'diagram.gif': extension '.gif' is not supported; ...
+    """
+    p = Path(path)
+    fmt = (format or p.suffix.lstrip(".")).lower()
+    if fmt not in FORMATS:
+        what = (f"format {format!r}" if format else
+                f"extension {p.suffix!r}" if p.suffix else "a path without extension")
+        raise ValueError(f"cannot save a figure to {str(p)!r}: {what} is not supported; "
+                         f"use one of {', '.join('.' + f for f in FORMATS)}")
+    p.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(p, format=fmt, dpi=dpi)
+    return p
