@@ -1,0 +1,1 @@
+"""Symbolic proof checker for the paper's claims (polynomial reduction, never "close enough")."""

@@ -1,0 +1,139 @@
+"""Trigonometric identities reduced to polynomial ones.
+
+Every angle symbol ``a`` (φ1, φ2, ξ1, ξ2, θ, ...) gets two polynomial variables
+``s_a = sin a`` and ``c_a = cos a`` tied by ``s_a**2 + c_a**2 = 1``; sums of
+angles are expanded by the addition formulas, ``tan = sin/cos`` and a friction
+coefficient ``mu_i`` is ``tan xi_i``.  An expression then becomes a rational
+function; it vanishes identically (on the real parameter domain, where the
+circles ``s**2 + c**2 = 1`` are Zariski dense) exactly when its numerator
+reduces to zero modulo the ideal of those relations.  Their leading terms
+``s_a**2`` are pairwise coprime, so they already form a Groebner basis and the
+reduction is a plain multivariate division: no ``simplify``, no guessing.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import sympy as sp
+
+from .. import symbols as S
+
+__all__ = ["ANGLES", "Reduction", "is_identically_zero", "reduce_expr", "trig_to_poly"]
+
+#: Angle symbols of the model; any other symbol inside sin/cos/tan is added on the fly.
+ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
+_MU = {S.mu1: S.xi1, S.mu2: S.xi2}
+
+
+#: s-variable -> (s, c) pair, for every angle met so far.
+_PAIRS: dict[sp.Symbol, tuple[sp.Symbol, sp.Symbol]] = {}
+
+
+@lru_cache(maxsize=None)
+def _sc(angle: sp.Symbol) -> tuple[sp.Symbol, sp.Symbol]:
+    pair = sp.Symbol(f"s_{angle}", real=True), sp.Symbol(f"c_{angle}", real=True)
+    _PAIRS[pair[0]] = pair
+    return pair
+
+
+def _linear_angle(arg: sp.Expr) -> tuple[sp.Expr, dict[sp.Symbol, int]] | None:
+    """``arg`` as ``k*pi + sum(n_a * a)`` with rational k and integer n_a."""
+    k: sp.Expr = sp.Integer(0)
+    coeffs: dict[sp.Symbol, int] = {}
+    for term in sp.Add.make_args(sp.expand(arg)):
+        c, rest = term.as_coeff_Mul()
+        if rest == sp.pi:
+            k += c
+        elif rest.is_Symbol and c.is_Integer:
+            coeffs[rest] = coeffs.get(rest, 0) + int(c)
+        else:
+            return None
+    return k, coeffs
+
+
+def _sin_cos(arg: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
+    """(sin arg, cos arg) as polynomials in the s_a, c_a of its angles."""
+    lin = _linear_angle(arg)
+    if lin is None:
+        return None
+    k, coeffs = lin
+    s, c = sp.sin(k * sp.pi), sp.cos(k * sp.pi)
+    for a, n in coeffs.items():
+        sa, ca = _sc(a)
+        sb = sa if n > 0 else -sa
+        for _ in range(abs(n)):
+            s, c = s * ca + c * sb, c * ca - s * sb
+    return sp.expand(s), sp.expand(c)
+
+
+def trig_to_poly(expr: sp.Expr) -> sp.Expr:
+    """Replace sin, cos, tan of angle combinations and ``mu_i`` by s_a, c_a variables.
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1, xi1
+    >>> trig_to_poly(sp.sin(phi1 + xi1))
+    c_phi1*s_xi1 + c_xi1*s_phi1
+    """
+    expr = sp.sympify(expr)
+    repl: dict[sp.Expr, sp.Expr] = {}
+    for f in expr.atoms(sp.sin, sp.cos, sp.tan):
+        sc = _sin_cos(f.args[0])
+        if sc is None:
+            raise ValueError(f"cannot reduce {f}: its argument is not a sum of angle symbols")
+        s, c = sc
+        repl[f] = s if isinstance(f, sp.sin) else c if isinstance(f, sp.cos) else s / c
+    for mu, xi in _MU.items():
+        if expr.has(mu):
+            s, c = _sc(xi)
+            repl[mu] = s / c
+    return expr.xreplace(repl) if repl else expr
+
+
+@dataclass(frozen=True)
+class Reduction:
+    """The normal form of an expression's numerator, and its denominator."""
+
+    remainder: sp.Expr
+    denominator: sp.Expr
+
+    @property
+    def is_zero(self) -> bool:
+        """True when the expression vanishes identically."""
+        return self.remainder == 0
+
+
+def reduce_expr(expr: sp.Expr) -> Reduction:
+    """Reduce ``expr`` modulo ``s_a**2 + c_a**2 - 1`` for every angle in it.
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1
+    >>> reduce_expr(sp.sin(phi1)**2 + sp.cos(phi1)**2 - 1).is_zero
+    True
+    >>> reduce_expr(sp.sin(phi1)**2 - sp.cos(phi1)**2).is_zero
+    False
+    """
+    poly = sp.together(trig_to_poly(expr))
+    num, den = sp.fraction(poly)
+    num = sp.expand(num)
+    if num == 0:
+        return Reduction(sp.Integer(0), den)
+    pairs = sorted((_PAIRS[v] for v in num.free_symbols if v in _PAIRS), key=str)
+    if not pairs:
+        return Reduction(num, den)
+    sines = [p[0] for p in pairs]
+    others = sorted((num.free_symbols | {p[1] for p in pairs}) - set(sines), key=str)
+    gens = [*sines, *others]
+    R, *_ = sp.ring(gens, sp.QQ, sp.lex)
+    p = R(num)
+    basis = [R(s**2 + c**2 - 1) for s, c in pairs]
+    rem = p.rem(basis)
+    return Reduction(rem.as_expr(), den)
+
+
+def is_identically_zero(expr: sp.Expr) -> bool:
+    """True when ``expr`` vanishes for every value of its symbols (where defined)."""
+    return reduce_expr(expr).is_zero
