@@ -83,6 +83,20 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--json", action="store_true", help="print JSON")
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
+
+    v = sub.add_parser("verify", help="machine-check every claim of the paper (symbolic)")
+    v.add_argument("--json", action="store_true", help="print the results as JSON")
+    v.add_argument("--markdown", metavar="FILE", help="write the report as a Markdown page")
+    v.add_argument("--certify", action="store_true",
+                   help="instead, prove every step of one construction (see grasp options)")
+    _add_grasp_options(v)
+    v.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+
+    x = sub.add_parser("crosscheck", help="closed form vs scipy linprog on random grasps")
+    x.add_argument("--grasps", type=int, default=20, metavar="N", help="random grasps (20)")
+    x.add_argument("--thetas", type=int, default=36, metavar="M", help="θ grid size (36)")
+    x.add_argument("--seed", type=int, default=0, help="random seed (0)")
+    x.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     return p
 
 
@@ -205,8 +219,40 @@ def _cmd_presets(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_verify(args: argparse.Namespace) -> int:
+    from . import proof
+
+    if args.certify:
+        c = internal_force_diagram(grasp_from_args(args))
+        certs = proof.certify(c)
+        for cert in certs:
+            print(f"{cert.step:9} {cert.result.status.value:9} {'; '.join(cert.facts)}")
+        return 0 if all(x.result.proved for x in certs) else 1
+    reports = proof.run_catalogue(quiet=args.quiet or args.json)
+    if args.markdown:
+        Path(args.markdown).parent.mkdir(parents=True, exist_ok=True)
+        Path(args.markdown).write_text(proof.to_markdown(reports))
+    if args.json:
+        print(proof.to_json(reports))
+    elif not args.markdown or not args.quiet:
+        print(proof.to_table(reports))
+    return proof.exit_status(reports)
+
+
+def _cmd_crosscheck(args: argparse.Namespace) -> int:
+    from .proof.crosscheck import run_crosscheck
+
+    if args.grasps < 1 or args.thetas < 1:
+        raise ValueError(f"--grasps and --thetas must be positive, got {args.grasps}, "
+                         f"{args.thetas}")
+    r = run_crosscheck(args.grasps, args.thetas, args.seed, quiet=args.quiet)
+    print(f"{r.grasps} random grasps × {r.thetas} directions: largest |k_grasp − linprog| = "
+          f"{r.max_abs_diff:.3e}")
+    return 0 if r.max_abs_diff < 1e-7 else 1
+
+
 _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
-             "presets": _cmd_presets}
+             "presets": _cmd_presets, "verify": _cmd_verify, "crosscheck": _cmd_crosscheck}
 
 
 def main(argv: Sequence[str] | None = None) -> int:

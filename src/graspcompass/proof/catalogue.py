@@ -17,7 +17,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from ..symbols import F_e, mu1, mu2, phi1, phi2, theta, x1, x2, xi1, xi2, y
+from ..symbols import F_e, mu1, mu2, phi1, phi2, x1, x2, xi1, xi2, y
 from . import paper as P
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign, sign_of
 
@@ -49,8 +49,8 @@ class Claim:
 @lru_cache(maxsize=1)
 def symbolic_construction():
     """The recipe of §3.3 replayed with every parameter a symbol (μ form)."""
-    from ..construction.recipe import diagram_specs
     from ..construction.protocol import Construction, run_step
+    from ..construction.recipe import diagram_specs
     from ..grasp import Grasp
 
     g = Grasp.symbolic("mu")

@@ -19,15 +19,15 @@ __all__ = [
     "L_printed",
     "M_printed",
     "S_printed",
+    "c",
+    "c1",
+    "c2",
     "k_mu_printed",
     "k_symbol",
     "k_tan_printed",
     "s",
-    "c",
     "s1",
-    "c1",
     "s2",
-    "c2",
 ]
 
 s, c = sp.sin(theta), sp.cos(theta)

@@ -346,7 +346,7 @@ def _wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
 def _condition_1_relations(e: sp.Expr) -> list[Any]:
     fs = e.free_symbols
     rels: list[Any] = []
-    for i, (phi, xi, mu) in enumerate(((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2)), 1):
+    for phi, xi, mu in ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2)):
         if mu in fs:  # express (1) through mu = tan xi
             rels += [sp.atan(mu) + phi > sp.pi / 2, phi - sp.atan(mu) < sp.pi / 2,
                      phi <= sp.pi]

@@ -14,11 +14,12 @@ reduction is a plain multivariate division: no ``simplify``, no guessing.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache
 
 import sympy as sp
 
 from .. import symbols as S
+from ..geometry.exact import _nd
 
 __all__ = ["ANGLES", "Reduction", "is_identically_zero", "reduce_expr", "trig_to_poly"]
 
@@ -31,7 +32,7 @@ _MU = {S.mu1: S.xi1, S.mu2: S.xi2}
 _PAIRS: dict[sp.Symbol, tuple[sp.Symbol, sp.Symbol]] = {}
 
 
-@lru_cache(maxsize=None)
+@cache
 def _sc(angle: sp.Symbol) -> tuple[sp.Symbol, sp.Symbol]:
     pair = sp.Symbol(f"s_{angle}", real=True), sp.Symbol(f"c_{angle}", real=True)
     _PAIRS[pair[0]] = pair
@@ -85,8 +86,8 @@ def trig_to_poly(expr: sp.Expr) -> sp.Expr:
             raise ValueError(f"cannot reduce {f}: its argument is not a sum of angle symbols")
         s, c = sc
         repl[f] = s if isinstance(f, sp.sin) else c if isinstance(f, sp.cos) else s / c
-    for mu, xi in _MU.items():
-        if expr.has(mu):
+    for mu, xi in _MU.items():  # mu = tan xi, needed only where xi appears too
+        if expr.has(mu) and expr.has(xi):
             s, c = _sc(xi)
             repl[mu] = s / c
     return expr.xreplace(repl) if repl else expr
@@ -116,22 +117,21 @@ def reduce_expr(expr: sp.Expr) -> Reduction:
     >>> reduce_expr(sp.sin(phi1)**2 - sp.cos(phi1)**2).is_zero
     False
     """
-    poly = sp.together(trig_to_poly(expr))
-    num, den = sp.fraction(poly)
-    num = sp.expand(num)
-    if num == 0:
-        return Reduction(sp.Integer(0), den)
-    pairs = sorted((_PAIRS[v] for v in num.free_symbols if v in _PAIRS), key=str)
-    if not pairs:
-        return Reduction(num, den)
+    poly = trig_to_poly(expr)
+    syms = sorted(poly.free_symbols, key=str)
+    pairs = sorted({_PAIRS[v] for v in syms if v in _PAIRS}
+                   | {_PAIRS[v] for v in _PAIRS if _PAIRS[v][1] in poly.free_symbols}, key=str)
     sines = [p[0] for p in pairs]
-    others = sorted((num.free_symbols | {p[1] for p in pairs}) - set(sines), key=str)
-    gens = [*sines, *others]
-    R, *_ = sp.ring(gens, sp.QQ, sp.lex)
-    p = R(num)
-    basis = [R(s**2 + c**2 - 1) for s, c in pairs]
-    rem = p.rem(basis)
-    return Reduction(rem.as_expr(), den)
+    gens = [*sines, *sorted((set(syms) | {p[1] for p in pairs}) - set(sines), key=str)]
+    if not gens:
+        return Reduction(sp.Integer(0) if poly == 0 else poly, sp.Integer(1))
+    R = sp.ring(gens, sp.QQ, sp.lex)[0]
+    # numerator and denominator as sparse polynomials, without any gcd on the way
+    num, den = _nd(poly, R, {g: i for i, g in enumerate(gens)})
+    if not num or not pairs:
+        return Reduction(num.as_expr(), den.as_expr())
+    rem = num.rem([R(s**2 + c**2 - 1) for s, c in pairs])
+    return Reduction(rem.as_expr(), den.as_expr())
 
 
 def is_identically_zero(expr: sp.Expr) -> bool:

@@ -1,0 +1,116 @@
+"""Run the catalogue and write its report: a table, JSON records or a Markdown page."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from ..progress import Progress
+from .catalogue import CLAIMS, Claim, check
+from .prove import ProofResult, Status
+
+__all__ = ["ClaimReport", "exit_status", "run_catalogue", "to_json", "to_markdown", "to_table"]
+
+
+@dataclass(frozen=True)
+class ClaimReport:
+    """A claim together with its result (plain data for writers)."""
+
+    claim: Claim
+    result: ProofResult
+
+    def record(self) -> dict[str, Any]:
+        """JSON-ready dict: id, ref, status, seconds, statement, method, ..."""
+        c, r = self.claim, self.result
+        rec: dict[str, Any] = {
+            "id": c.id, "ref": c.ref, "status": r.status.value,
+            "seconds": round(r.seconds, 4), "statement": c.statement, "method": r.method,
+            "printed": c.printed,
+        }
+        if r.counterexample is not None:
+            rec["counterexample"] = r.counterexample
+        if c.corrected_by:
+            rec["corrected_by"] = c.corrected_by
+        if c.note:
+            rec["note"] = c.note
+        if r.detail:
+            rec["detail"] = r.detail
+        return rec
+
+
+def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False) -> list[ClaimReport]:
+    """Check every claim, with a progress bar on a terminal unless ``quiet``."""
+    out = []
+    with Progress(len(claims), "verify", quiet=quiet) as bar:
+        for c in claims:
+            out.append(ClaimReport(c, check(c)))
+            bar.update(note=c.id)
+    return out
+
+
+def exit_status(reports: Sequence[ClaimReport]) -> int:
+    """0 when nothing is UNDECIDED and every refuted claim has a proved correction."""
+    by_id = {r.claim.id: r for r in reports}
+    for r in reports:
+        if r.result.status is Status.UNDECIDED:
+            return 1
+        if r.result.status is Status.REFUTED:
+            fix = by_id.get(r.claim.corrected_by or "")
+            if fix is None or not fix.result.proved:
+                return 1
+    return 0
+
+
+def to_json(reports: Sequence[ClaimReport]) -> str:
+    """The reports as a JSON list of records."""
+    return json.dumps([r.record() for r in reports], indent=1, ensure_ascii=False)
+
+
+def to_table(reports: Sequence[ClaimReport]) -> str:
+    """A text table: id, reference, status, method, seconds."""
+    rows = [(r.claim.id, r.claim.ref, r.result.status.value, r.result.method,
+             f"{r.result.seconds:.2f}") for r in reports]
+    head = ("id", "paper", "status", "method", "s")
+    w = [max(len(str(x[i])) for x in [head, *rows]) for i in range(4)]
+    lines = ["  ".join(h.ljust(w[i]) if i < 4 else h for i, h in enumerate(head))]
+    for row in rows:
+        lines.append("  ".join(x.ljust(w[i]) if i < 4 else x for i, x in enumerate(row)))
+    n = {s: sum(r.result.status is s for r in reports) for s in Status}
+    lines.append(f"\n{n[Status.PROVED]} proved, {n[Status.REFUTED]} refuted, "
+                 f"{n[Status.UNDECIDED]} undecided; "
+                 f"{sum(r.result.seconds for r in reports):.1f} s in the checker")
+    for r in reports:
+        if r.result.status is Status.REFUTED:
+            cx = ", ".join(f"{k} = {v}" for k, v in (r.result.counterexample or {}).items())
+            lines.append(f"  {r.claim.id}: REFUTED at {cx}; corrected by {r.claim.corrected_by}")
+    return "\n".join(lines)
+
+
+def to_markdown(reports: Sequence[ClaimReport]) -> str:
+    """A Markdown page for the docs: errata first, then every claim."""
+    out = ["# Proof report", "",
+           "Every claim of Ito, Tanaka and Sasaki (Robotica 30(5), 2012) checked by "
+           "`graspcompass verify` for general symbolic parameters under the contact point "
+           "conditions (1). PROVED means a symbolic proof (polynomial reduction modulo "
+           "sin² + cos² = 1, or a sign witness); REFUTED comes with exact parameter values "
+           "where the printed statement fails.", "", "## Errata: where the paper as printed "
+           "is wrong", ""]
+    by_id = {r.claim.id: r for r in reports}
+    for r in reports:
+        if r.result.status is Status.REFUTED:
+            fix = by_id.get(r.claim.corrected_by or "")
+            cx = ", ".join(f"{k} = {v}" for k, v in (r.result.counterexample or {}).items())
+            out.append(f"- **{r.claim.ref}** — {r.claim.statement}: REFUTED "
+                       f"(counterexample {cx}). {r.claim.note}")
+            if fix is not None:
+                out.append(f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
+                           f"{fix.claim.statement}")
+    out += ["", "## All claims", "", "| id | paper | statement | status | method | s |",
+            "| --- | --- | --- | --- | --- | --- |"]
+    for r in reports:
+        st = r.claim.statement.replace("|", "\\|")
+        out.append(f"| `{r.claim.id}` | {r.claim.ref} | {st} | {r.result.status.value} | "
+                   f"{r.result.method} | {r.result.seconds:.2f} |")
+    return "\n".join(out) + "\n"
