@@ -19,6 +19,8 @@ import numpy as np
 import sympy as sp
 
 from . import __version__
+from ._cli_animate import register as _register_animate
+from ._cli_animate import write_main_animation
 from .construction import Construction, describe, internal_force_diagram, to_records
 from .expr import parse_angles, parse_exact
 from .grasp import PRESETS, Grasp
@@ -83,6 +85,7 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--json", action="store_true", help="print JSON")
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
+    _register_animate(sub, _add_grasp_options)
 
     v = sub.add_parser("verify", help="machine-check every claim of the paper (symbolic)")
     v.add_argument("--json", action="store_true", help="print the results as JSON")
@@ -148,7 +151,9 @@ def _cmd_main(args: argparse.Namespace) -> int:
     if not args.quiet:
         print(f"{c.grasp.title}\n")
         print(protocol_table(c))
-        print(f"\nwrote {png}, {out / 'fig6-diagram.svg'} and {out / 'fig6-steps.json'}")
+    gif = write_main_animation(c, out, args.quiet)
+    if not args.quiet:
+        print(f"\nwrote {png}, {out / 'fig6-diagram.svg'}, {out / 'fig6-steps.json'} and {gif}")
     return 0
 
 
@@ -219,6 +224,12 @@ def _cmd_presets(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_animate(args: argparse.Namespace) -> int:
+    from ._cli_animate import run
+
+    return run(args, grasp_from_args(args))
+
+
 def _cmd_verify(args: argparse.Namespace) -> int:
     from . import proof
 
@@ -252,7 +263,8 @@ def _cmd_crosscheck(args: argparse.Namespace) -> int:
 
 
 _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
-             "presets": _cmd_presets, "verify": _cmd_verify, "crosscheck": _cmd_crosscheck}
+             "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
+             "crosscheck": _cmd_crosscheck}
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .expr import parse_exact
+from .expr import ExpressionError, parse_exact
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
 
@@ -59,7 +59,10 @@ def _value(v: Any, name: str) -> sp.Expr:
     if isinstance(v, bool):
         raise InvalidGraspError(f"{name} must be a number, got {v!r}")
     if isinstance(v, str):
-        return parse_exact(v)
+        try:
+            return parse_exact(v)
+        except ExpressionError as exc:
+            raise ExpressionError(f"{name}: {exc}") from None
     if isinstance(v, Fraction):
         return sp.Rational(v.numerator, v.denominator)
     if isinstance(v, (int, np.integer)):
@@ -204,7 +207,7 @@ class Grasp:
     # -- validation -------------------------------------------------------------
     def _validate(self) -> None:
         pi = sp.pi
-        checks: list[tuple[sp.Expr, bool, str]] = [
+        checks: list[tuple[Any, ...]] = [
             (self.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"),
             (self.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"),
             (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"),
@@ -212,11 +215,12 @@ class Grasp:
         for i, phi in ((1, self.phi1), (2, self.phi2)):
             checks += [
                 (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π)"),
-                (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)"),
+                (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)",
+                 phi),
             ]
         assumed: list[sp.Basic] = []
-        for expr, strict, msg in checks:
-            self._check(expr, strict, msg, assumed)
+        for expr, strict, msg, *shown in checks:
+            self._check(expr, strict, msg, assumed, *shown)
         for i in (1, 2):
             phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
             up, lo = phi + xi, phi - xi
@@ -244,7 +248,9 @@ class Grasp:
             v = expr if shown is None else shown
             raise InvalidGraspError(msg.format(v=_fmt(v), a=_fmt_angle(v)))
         if sign is None:
-            assumed.append(expr > 0 if strict else expr >= 0)
+            rel = expr > 0 if strict else expr >= 0
+            if rel is not sp.true:
+                assumed.append(rel)
 
     # -- parameters -------------------------------------------------------------
     @property

@@ -43,9 +43,21 @@ __all__ = [
 ]
 
 
-def _nonzero(value: sp.Expr, error: type[GeometryError], message: str, *objs: object) -> frozenset:
+def _size(*vectors: Point) -> float:
+    """Product of the vectors' lengths when they are floats (a scale for zero tests)."""
+    out = 1.0
+    for v in vectors:
+        try:
+            out *= float(sp.sqrt(v.x**2 + v.y**2))
+        except TypeError:
+            return 0.0
+    return out
+
+
+def _nonzero(value: sp.Expr, error: type[GeometryError], message: str, *objs: object,
+             scale: float = 0.0) -> frozenset:
     """Raise ``error`` if ``value`` is zero; return ``{value}`` if undecidable."""
-    z = decide_zero(value)
+    z = decide_zero(value, scale)
     if z:
         raise error(message, *objs)
     return frozenset({canon(value)}) if z is None else frozenset()
@@ -117,6 +129,7 @@ def meet(a: Line, b: Line) -> Point:
         f"lines are parallel, they do not meet in one point: {a} and {b}",
         a,
         b,
+        scale=_size(a.direction, b.direction),
     )
     t = (b.point - a.point).cross(b.direction) / den
     p = a.point
@@ -262,6 +275,7 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
         f"circles {c1} and {c2} are tangent at {known}: there is no second common point",
         c1,
         c2,
+        scale=_size(w, k),
     )
     # mirror image of `known` in the line of centres: known - 2 (side / |w|^2) perp(w),
     # reduced piece by piece (small gcds beat one large one)

@@ -90,6 +90,9 @@ def canon(expr: sp.Expr) -> sp.Expr:
         if _square_roots(den):
             out = sp.radsimp(out)
         return out
+    fast = _canon_radicals(expr)
+    if fast is not None:
+        return fast
     num, den = sp.fraction(sp.together(expr))
     if den.is_Rational:
         return sp.expand(num) / den
@@ -185,6 +188,51 @@ def _canon_field(expr: sp.Expr) -> sp.Expr | None:
     return out
 
 
+def _canon_radicals(expr: sp.Expr) -> sp.Expr | None:
+    """Exact number in Q(√a, √b, ..., π, ...): sparse polynomials, conjugates, no radsimp.
+
+    Square roots of rationals become ring generators tied by ``r**2 = a``;
+    the denominator is cleared by multiplying with conjugates (``r -> -r``).
+    Returns None for other algebraic numbers (cube roots, nested radicals).
+    """
+    gens: set[sp.Expr] = set()
+    roots: dict[sp.Expr, sp.Expr] = {}
+    for a in sp.preorder_traversal(expr):
+        if a.is_Pow and not a.exp.is_Integer:
+            if a.exp == sp.S.Half and a.base.is_Rational:
+                gens.add(a)
+                roots[a] = a.base
+            else:
+                return None
+        elif a.is_Function or a in (sp.pi, sp.E):
+            if a.is_Function and a.args and not a.args[0].is_Rational and not (
+                    a.args[0].is_Mul and a.args[0].has(sp.pi)):
+                return None
+            gens.add(a)
+    if not gens:
+        return None
+    order = tuple(sorted(gens, key=sp.default_sort_key))
+    R = _ring(order)
+    index = {g: i for i, g in enumerate(order)}
+    try:
+        n, d = _nd(expr, R, index)
+    except ValueError:
+        return None
+    rels = [R.gens[index[r]] ** 2 - R(roots[r]) for r in roots]
+    n, d = (n.rem(rels), d.rem(rels)) if rels else (n, d)
+    if not d:
+        return None
+    for r in roots:
+        g = R.gens[index[r]]
+        if d.degree(g) > 0:
+            conj = d.compose(g, -g)
+            n, d = (n * conj).rem(rels), (d * conj).rem(rels)
+    if d.is_ground:
+        return (n.quo_ground(d.LC)).as_expr()
+    n, d = n.cancel(d)
+    return n.as_expr() / d.as_expr()
+
+
 def _square_roots(expr: sp.Expr) -> list[sp.Pow]:
     return sorted(
         (p for p in expr.atoms(sp.Pow) if p.exp == sp.S.Half and p.base.is_Rational),
@@ -213,13 +261,15 @@ def _rationalize(num: sp.Expr, den: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     return num, den
 
 
-def decide_zero(expr: sp.Expr) -> bool | None:
+def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
     """Decide whether ``expr`` is zero: True, False, or None when undecidable.
 
     Exact numbers are decided for certain (a high-precision evaluation proves
-    non-zero, the canonical form or :meth:`sympy.Expr.equals` proves zero);
-    floats are compared with a relative tolerance of ``1e-12``; expressions with
-    free symbols that do not reduce to 0 are undecidable (None).
+    non-zero, the canonical form or :meth:`sympy.Expr.equals` proves zero).
+    Floats count as zero when ``|expr| <= 1e-12 * scale``: pass the magnitude of
+    the quantities that ``expr`` was computed from; the default ``scale=0``
+    asks for an exact zero.  Expressions with free symbols that do not reduce
+    to 0, and whose sign assumptions do not settle it, are undecidable (None).
 
     Examples
     --------
@@ -232,7 +282,7 @@ def decide_zero(expr: sp.Expr) -> bool | None:
     expr = sym(expr)
     if expr.is_Number:
         if has_float(expr):
-            return abs(float(expr)) <= 1e-12
+            return abs(float(expr)) <= 1e-12 * scale
         return bool(expr == 0)
     if expr.free_symbols:
         reduced = canon(expr)
@@ -243,7 +293,7 @@ def decide_zero(expr: sp.Expr) -> bool | None:
             return False
         return None
     if has_float(expr):
-        return abs(float(expr.evalf(17))) <= 1e-12
+        return abs(float(expr.evalf(17))) <= 1e-12 * scale
     value = expr.evalf(_PREC)
     if value.is_Number and abs(value) > sp.Float(10) ** (-_PREC // 2):
         return False
@@ -266,7 +316,7 @@ def decide_sign(expr: sp.Expr) -> int | None:
     zero = decide_zero(expr)
     if zero:
         return 0
-    if zero is None:
+    if expr.free_symbols:
         if expr.is_positive:
             return 1
         if expr.is_negative:

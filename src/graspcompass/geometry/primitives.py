@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .errors import CoincidentPointsError, ZeroDirectionError
-from .exact import canon, decide_zero, sym
+from .errors import CoincidentPointsError, DegenerateCircleError, ZeroDirectionError
+from .exact import canon, decide_sign, decide_zero, sym
 
 __all__ = ["ORIGIN", "Circle", "Conditions", "Line", "Point", "Ray", "Segment"]
 
@@ -131,7 +131,7 @@ class Line:
                 f"a line needs a non-zero direction, got {d} at {self.point}", self.point, d
             )
         conds = _merge(self.point, d) | self.conditions
-        if zx is None and zy is not False:
+        if None in (zx, zy) and False not in (zx, zy):  # |d| != 0 only assumed
             conds |= {canon(d.x**2 + d.y**2)}
         object.__setattr__(self, "conditions", conds)
 
@@ -170,6 +170,10 @@ class Circle:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius2", sym(self.radius2))
+        if decide_sign(self.radius2) in (-1, 0):
+            raise DegenerateCircleError(
+                f"a circle needs a positive squared radius, got {self.radius2} "
+                f"at centre {self.center}", self.center)
         object.__setattr__(self, "conditions", _merge(self.center) | self.conditions)
 
     def __repr__(self) -> str:

@@ -76,7 +76,15 @@ def step_facts(step: Step, env: dict[str, Any]) -> list[tuple[str, sp.Expr]]:
     if step.op == "circle_on_diameter":
         return [(f"{n} on {step.name}", _on_circle(p, o)) for n, p in zip(names, ins)]
     if step.op == "second_intersection":
-        c1, c2, _ = ins
+        c1, c2, k = ins
+        if o.x.free_symbols or o.y.free_symbols:
+            # symbolic: the mirror image of the common point K in the line of centres is
+            # the other common point; two linear facts instead of two quadratic ones
+            w = c2.center - c1.center
+            return [(f"{step.name}K ⟂ line of centres",
+                     (o.x - k.x) * w.x + (o.y - k.y) * w.y),
+                    (f"midpoint of {step.name}K on the line of centres",
+                     ((o.x + k.x) / 2 - c1.center.x) * w.y - ((o.y + k.y) / 2 - c1.center.y) * w.x)]
         return [(f"{step.name} on {names[0]}", _on_circle(o, c1)),
                 (f"{step.name} on {names[1]}", _on_circle(o, c2))]
     if step.op == "envelope":

@@ -145,6 +145,9 @@ def _cx(values: Mapping | None) -> dict[str, str] | None:
 def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = ()) -> ProofResult:
     """Check ``lhs == rhs`` for every admissible value of the symbols.
 
+    Counterexamples satisfy ``assumptions`` (default: the domains of the
+    symbols and the contact point conditions (1) for the angles present).
+
     Examples
     --------
     >>> from graspcompass.symbols import phi1, mu1, xi1
@@ -170,8 +173,9 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = ()) -> P
     if not bad:
         return ProofResult(Status.PROVED, "polynomial reduction", time.perf_counter() - t0)
     syms = set().union(*(e.free_symbols for e in bad))
+    conds = list(assumptions) or _condition_1_relations(sp.Add(*bad))
     found = find_counterexample(lambda v: any(_nonzero_at(e, v) for e in bad), list(syms),
-                                assumptions)
+                                conds)
     if found is not None:
         vals = {"lhs - rhs": float(sp.N(bad[0].subs(found), 17))} if not isinstance(
             diff, sp.MatrixBase) else {}
@@ -347,10 +351,12 @@ def _condition_1_relations(e: sp.Expr) -> list[Any]:
     fs = e.free_symbols
     rels: list[Any] = []
     for phi, xi, mu in ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2)):
-        if mu in fs:  # express (1) through mu = tan xi
-            rels += [sp.atan(mu) + phi > sp.pi / 2, phi - sp.atan(mu) < sp.pi / 2,
-                     phi <= sp.pi]
-        elif phi in fs or xi in fs:
-            rels += [phi + xi > sp.pi / 2, phi + xi < 3 * sp.pi / 2, phi - xi < sp.pi / 2,
-                     phi - xi > -sp.pi / 2]
+        fric = xi if xi in fs else sp.atan(mu) if mu in fs else None
+        if fric is not None and phi in fs:
+            rels += [phi + fric > sp.pi / 2, phi + fric < 3 * sp.pi / 2,
+                     phi - fric < sp.pi / 2, phi - fric > -sp.pi / 2]
+        if phi in fs:
+            rels.append(phi <= sp.pi)
+        if xi in fs:
+            rels.append(xi < sp.pi / 2)
     return rels

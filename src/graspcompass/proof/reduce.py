@@ -1,7 +1,7 @@
 """Trigonometric identities reduced to polynomial ones.
 
-Every angle symbol ``a`` (φ1, φ2, ξ1, ξ2, θ, ...) gets two polynomial variables
-``s_a = sin a`` and ``c_a = cos a`` tied by ``s_a**2 + c_a**2 = 1``; sums of
+Every angle symbol ``a`` (φ1, φ2, ξ1, ξ2, θ, ...) gets two polynomial variables,
+``sin a`` and ``cos a`` themselves, tied by ``sin(a)**2 + cos(a)**2 = 1``; sums of
 angles are expanded by the addition formulas, ``tan = sin/cos`` and a friction
 coefficient ``mu_i`` is ``tan xi_i``.  An expression then becomes a rational
 function; it vanishes identically (on the real parameter domain, where the
@@ -28,13 +28,18 @@ ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
 _MU = {S.mu1: S.xi1, S.mu2: S.xi2}
 
 
-#: s-variable -> (s, c) pair, for every angle met so far.
-_PAIRS: dict[sp.Symbol, tuple[sp.Symbol, sp.Symbol]] = {}
+#: sin(a) -> (sin(a), cos(a)) for every angle met so far.
+_PAIRS: dict[sp.Expr, tuple[sp.Expr, sp.Expr]] = {}
 
 
 @cache
-def _sc(angle: sp.Symbol) -> tuple[sp.Symbol, sp.Symbol]:
-    pair = sp.Symbol(f"s_{angle}", real=True), sp.Symbol(f"c_{angle}", real=True)
+def _sc(angle: sp.Symbol) -> tuple[sp.Expr, sp.Expr]:
+    """The polynomial variables of an angle: ``sin(a)`` and ``cos(a)`` themselves.
+
+    Keeping the function atoms as variables lets the construction's own
+    (memoised) expressions enter the reduction without being rewritten.
+    """
+    pair = sp.sin(angle), sp.cos(angle)
     _PAIRS[pair[0]] = pair
     return pair
 
@@ -75,12 +80,15 @@ def trig_to_poly(expr: sp.Expr) -> sp.Expr:
     Examples
     --------
     >>> from graspcompass.symbols import phi1, xi1
-    >>> trig_to_poly(sp.sin(phi1 + xi1))
-    c_phi1*s_xi1 + c_xi1*s_phi1
+    >>> trig_to_poly(sp.sin(phi1 + xi1)) == sp.sin(phi1)*sp.cos(xi1) + sp.sin(xi1)*sp.cos(phi1)
+    True
     """
     expr = sp.sympify(expr)
     repl: dict[sp.Expr, sp.Expr] = {}
     for f in expr.atoms(sp.sin, sp.cos, sp.tan):
+        if f.args[0].is_Symbol and not isinstance(f, sp.tan):
+            _sc(f.args[0])
+            continue
         sc = _sin_cos(f.args[0])
         if sc is None:
             raise ValueError(f"cannot reduce {f}: its argument is not a sum of angle symbols")
@@ -118,11 +126,15 @@ def reduce_expr(expr: sp.Expr) -> Reduction:
     False
     """
     poly = trig_to_poly(expr)
-    syms = sorted(poly.free_symbols, key=str)
-    pairs = sorted({_PAIRS[v] for v in syms if v in _PAIRS}
-                   | {_PAIRS[v] for v in _PAIRS if _PAIRS[v][1] in poly.free_symbols}, key=str)
+    trig = poly.atoms(sp.sin, sp.cos)
+    pairs = sorted({_PAIRS[sp.sin(f.args[0])] for f in trig}, key=str)
+    inner = set().union(*(f.free_symbols for f in trig)) if trig else set()
+    outer = poly.xreplace({f: sp.Dummy() for f in trig}).free_symbols - {
+        d for d in poly.xreplace({f: sp.Dummy() for f in trig}).free_symbols if d.is_Dummy}
+    if outer & inner:
+        raise ValueError(f"an angle appears outside sin/cos: {sorted(map(str, outer & inner))}")
     sines = [p[0] for p in pairs]
-    gens = [*sines, *sorted((set(syms) | {p[1] for p in pairs}) - set(sines), key=str)]
+    gens = [*sines, *sorted((outer | {p[1] for p in pairs}), key=str)]
     if not gens:
         return Reduction(sp.Integer(0) if poly == 0 else poly, sp.Integer(1))
     R = sp.ring(gens, sp.QQ, sp.lex)[0]

@@ -10,7 +10,9 @@ without a display.
   Fig. 6(b) on top (eq. (25));
 - :func:`draw_k_polar`, :func:`figure_k_plot`: the computer plots of k_grasp;
 - :func:`save_figure`: PNG, SVG or PDF;
-- :class:`Theme`, :data:`DEFAULT_THEME`, :data:`PAPER_THEME`: the styles.
+- :class:`Theme`, :data:`DEFAULT_THEME`, :data:`PAPER_THEME`: the styles;
+- :func:`animate_construction`, :func:`animate_sweep`, :func:`animate_orientation`:
+  step-by-step and sweeping animations (GIF, MP4, HTML, PNG frames).
 
 Examples
 --------
@@ -21,6 +23,15 @@ Examples
 'Fig. 6'
 """
 
+from .anim_physics import (
+    SLIP,
+    OrientationAnimation,
+    SweepAnimation,
+    animate_orientation,
+    animate_sweep,
+    theta_of_orientation,
+)
+from .animate import ConstructionAnimation, FrameAnimation, animate_construction, save_frames
 from .figure import (
     EXTRA_KEYS,
     FORMATS,
@@ -31,17 +42,32 @@ from .figure import (
     save_figure,
 )
 from .theme import DEFAULT_THEME, PAPER_THEME, THEMES, Theme
+from .timeline import AnimationError, FFmpegNotFoundError, Timeline, UnsupportedFormatError
 
 __all__ = [
     "DEFAULT_THEME",
     "EXTRA_KEYS",
     "FORMATS",
     "PAPER_THEME",
+    "SLIP",
     "THEMES",
+    "AnimationError",
+    "ConstructionAnimation",
+    "FFmpegNotFoundError",
+    "FrameAnimation",
+    "OrientationAnimation",
+    "SweepAnimation",
     "Theme",
+    "Timeline",
+    "UnsupportedFormatError",
+    "animate_construction",
+    "animate_orientation",
+    "animate_sweep",
     "draw_construction",
     "draw_k_polar",
     "figure_diagram",
     "figure_k_plot",
     "save_figure",
+    "save_frames",
+    "theta_of_orientation",
 ]

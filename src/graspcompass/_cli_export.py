@@ -1,0 +1,107 @@
+"""The ``export`` and ``explore`` sub-commands of the command line.
+
+``graspcompass export --format ggb|tikz|svg|json|png|pdf -o FILE`` writes the
+construction of the grasp in one of :data:`graspcompass.export.FORMATS`;
+``graspcompass explore`` opens the interactive explorer window.  The module
+only adds sub-parsers and runs them; :mod:`graspcompass.cli` builds the grasp
+from the common options and reports errors (a ``ValueError`` is one line on
+stderr, exit status 2).
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+__all__ = ["register", "run_explore", "run_export"]
+
+_FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf")
+_EXT = {"ggb": "ggb", "tikz": "tex", "svg": "svg", "json": "json", "png": "png", "pdf": "pdf"}
+
+
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
+             ) -> None:
+    """Add the ``export`` and ``explore`` sub-commands to ``subparsers``.
+
+    ``add_grasp_options`` adds the common ``--preset`` and parameter options.
+    """
+    e = subparsers.add_parser(
+        "export", help="export the construction: GeoGebra, TikZ, SVG, JSON, PNG or PDF",
+        description="Write the construction of the grasp to a file: a live GeoGebra .ggb "
+                    "(sliders x1, x2, y, φ1, φ2, μ1, μ2, draggable P1), TikZ for pdflatex, a "
+                    "standalone SVG, the protocol as JSON (schema graspcompass.construction/1),"
+                    " or PNG/PDF through the renderer.")
+    add_grasp_options(e)
+    e.add_argument("--format", choices=_FORMATS,
+                   help="file format (default: from the extension of -o)")
+    e.add_argument("-o", "--output", metavar="FILE",
+                   help="output file (default: PRESET.EXT in the current folder)")
+    e.add_argument("--step", type=int, metavar="N",
+                   help="export the state after protocol step N (default: every step)")
+    e.add_argument("--title", metavar="TEXT", help="title of the picture (default: the grasp's)")
+    e.add_argument("--fragment", action="store_true",
+                   help="TikZ only: write the tikzpicture alone, for \\input in a document")
+    e.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+
+    x = subparsers.add_parser(
+        "explore", help="open the interactive explorer (sliders, draggable contacts)",
+        description="A window with sliders for x1, x2, y, φ1, φ2, μ1, μ2 and draggable P1 and "
+                    "P2; the construction, circles, envelope and worst/best case follow live.")
+    add_grasp_options(x)
+
+
+def _format_and_path(args: argparse.Namespace) -> tuple[str, Path]:
+    from .export import guess_format
+
+    if args.output is None:
+        fmt = args.format or "svg"
+        return fmt, Path(f"{args.preset}.{_EXT[fmt]}")
+    path = Path(args.output)
+    return (args.format or guess_format(path)), path
+
+
+def run_export(args: argparse.Namespace, grasp: Any) -> int:
+    """Run ``graspcompass export`` for ``grasp``; returns the exit status (0).
+
+    Raises
+    ------
+    ValueError
+        For a bad ``--step``, an unknown extension, or a format the
+        construction cannot be written in (a symbolic grasp in a drawing format).
+    """
+    from .construction import internal_force_diagram
+    from .export import export
+    from .export.tikz import write_tikz
+
+    fmt, path = _format_and_path(args)
+    c = internal_force_diagram(grasp)
+    if args.step is not None:
+        if not -len(c) <= args.step < len(c):
+            raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
+                             f"steps, 0 to {len(c) - 1}")
+        c = c.upto(args.step)
+    if args.fragment and fmt != "tikz":
+        raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
+    if fmt == "tikz" and args.fragment:
+        write_tikz(c, path, standalone=False, title=args.title)
+    else:
+        export(c, path, fmt, title=args.title)
+    if not args.quiet:
+        print(f"wrote {path} ({fmt}, {len(c)} steps)")
+    return 0
+
+
+def run_explore(args: argparse.Namespace, grasp: Any) -> int:
+    """Run ``graspcompass explore`` for ``grasp``: the window until it is closed.
+
+    Raises
+    ------
+    ValueError
+        Without a display (matplotlib has no interactive backend), in one line.
+    """
+    from .render.explorer import explore
+
+    explore(grasp)
+    return 0

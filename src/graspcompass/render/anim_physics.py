@@ -1,0 +1,369 @@
+"""Animations of the finished diagram: the external force sweeping round, the object turning.
+
+:func:`animate_sweep` turns the direction θ of the external force F_e at the
+centre of mass O, e(θ) = (sin θ, −cos θ) (eq. (26)): the foot H_n of the
+perpendicular from V_n to the line along e(θ) runs on the circle on the
+diameter O V_n (Thales, Fig. 3, eq. (31)), the envelope point traces
+k_grasp(θ)·e(θ) (eq. (25)), and a side panel shows k_1..k_4(θ) and k_grasp(θ)
+against θ with a moving cursor and names the contact about to slip.
+
+:func:`animate_orientation` is Fig. 1: gravity stays downward while the
+object, its two contacts and the diagram turn by α; a gauge shows the
+gripping force F_int = k_grasp(θ)/(x1 + x2)·W of eq. (17).
+
+Direction of gravity in the object frame: the object turned counter-clockwise
+by α carries its frame along, so a world vector v has the object coordinates
+R(−α)v.  Gravity (0, −1) has the object coordinates (−sin α, −cos α) =
+(sin θ, −cos θ) = e(θ) with **θ = −α** (mod 2π).
+"""
+
+from __future__ import annotations
+
+import math
+from itertools import pairwise
+from typing import Any
+
+import numpy as np
+from matplotlib.artist import Artist
+from matplotlib.figure import Figure
+from matplotlib.patches import Circle as CirclePatch
+from matplotlib.patches import FancyArrowPatch, Rectangle
+from matplotlib.text import Text
+from matplotlib.transforms import Affine2D
+
+from ._view import numeric_objects
+from .animate import FrameAnimation
+from .figure import draw_construction
+from .labels import place_labels
+from .theme import DEFAULT_THEME, Theme
+from .timeline import Segment, Timeline
+
+__all__ = ["SLIP", "OrientationAnimation", "SweepAnimation", "animate_orientation",
+           "animate_sweep", "binding", "theta_of_orientation"]
+
+#: What the largest k_n means (§2.2.4): which friction inequality (8)-(11) becomes an
+#: equality, i.e. which contact's force reaches which side of its friction cone.
+SLIP = {
+    0: "k_grasp = 0: no internal force is needed,\nevery k_n(θ) ≤ 0 (25)",
+    **{n: f"k_{n} binds: contact {i} is about to slip, its force on\nthe {side} side of its "
+          f"friction cone: μ{i}N{i} {sign} F{i} = 0 ({eq})"
+       for n, i, side, sign, eq in ((1, 1, "upper", "−", 8), (2, 2, "upper", "−", 9),
+                                    (3, 1, "lower", "+", 10), (4, 2, "lower", "+", 11))},
+}
+
+_KEEP = ("object", "cone1", "cone2", "O", "P1", "P2", "V1", "V2", "V3", "V4", "circle1",
+         "circle2", "circle3", "circle4", "envelope")
+
+
+def theta_of_orientation(alpha: Any) -> Any:
+    """Direction θ of gravity in the object frame, the object turned counter-clockwise by α.
+
+    θ = −α mod 2π (module docstring; eq. (26)).
+
+    >>> float(theta_of_orientation(np.pi / 2) / np.pi)
+    1.5
+    """
+    return np.mod(-np.asarray(alpha, dtype=float), 2 * np.pi)
+
+
+def binding(ks: np.ndarray) -> np.ndarray:
+    """Index n of the largest k_n (1-4), 0 where every k_n ≤ 0 (eq. (25)); ``ks`` is (4, N).
+
+    >>> binding(np.array([[1.0, -1.0], [2.0, -2.0], [0.0, -1.0], [0.5, -0.5]])).tolist()
+    [2, 0]
+    """
+    ks = np.asarray(ks, dtype=float)
+    return np.where(ks.max(axis=0) > 0, np.argmax(ks, axis=0) + 1, 0)
+
+
+class _Turning(FrameAnimation):
+    """Common part: one turn in ``frames`` frames, the diagram without construction lines."""
+
+    _blit_live = True
+
+    def __init__(self, construction: Any, frames: int, fps: float, theme: Theme,
+                 figsize: tuple[float, float], dpi: float) -> None:
+        if not hasattr(construction, "steps"):
+            from ..construction import internal_force_diagram
+
+            construction = internal_force_diagram(construction)
+        self.construction, self.grasp, self.theme = construction, construction.grasp, theme
+        n = Timeline.uniform(frames).frame_count
+        self.angle = 2 * np.pi * np.arange(n) / n
+        super().__init__(Figure(figsize=figsize, dpi=dpi), self._timeline(), fps)
+        self.figure.text(0.5, 0.985, getattr(self.grasp, "title", None) or "", ha="center",
+                         va="top", fontsize=theme.font_size * 0.85)
+        self.axes = self.figure.add_axes((0.04, 0.07, 0.44, 0.84))
+        self.num = numeric_objects(construction)
+        self.V = [self.num[f"V{i}"] for i in (1, 2, 3, 4)]
+        arts = draw_construction(construction, ax=self.axes, theme=theme, labels=False)
+        self.kept: dict[str, list[Artist]] = {}
+        for name, lst in arts.items():
+            for a in lst:
+                if name in _KEEP and not isinstance(a, Text):
+                    self.kept.setdefault(name, []).append(a)
+                else:
+                    a.remove()
+        self.artists: dict[str, Any] = {}
+
+    def _timeline(self) -> Timeline:
+        return Timeline.uniform(len(self.angle))
+
+    def _text(self, y: float, **kw: Any) -> Text:
+        return self.figure.text(0.58, y, "", fontsize=self.theme.font_size * 0.85, va="top",
+                                linespacing=1.45, **kw)
+
+    def key_frames(self) -> list[tuple[int, str]]:
+        """One frame every 30° of the turn."""
+        n, name = self.frame_count, type(self).__name__[:5].lower()
+        picks = sorted({round(k * n / 12) % n for k in range(12)})
+        return [(f, f"{name}-{round(math.degrees(self.angle[f])):03d}") for f in picks]
+
+
+class SweepAnimation(_Turning):
+    """The external force sweeping round (Fig. 3); see :func:`animate_sweep`."""
+
+    def __init__(self, construction: Any, frames: int = 120, fps: float = 20,
+                 theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
+                 dpi: float = 80, samples: int = 720) -> None:
+        super().__init__(construction, frames, fps, theme, figsize, dpi)
+        g, th, ax, a, hl = self.grasp, theme, self.axes, self.artists, theme.highlight_color
+        env = self.construction["envelope"]
+        self._tt = np.linspace(0.0, 2 * np.pi, samples + 1)
+        self._rr, self._env_k = env.k(self._tt), env.k(self.theta)
+        self.kept["envelope"][0].set_alpha(0.35)
+        self._len = 0.15 * (ax.get_xlim()[1] - ax.get_xlim()[0])
+        circles = []
+        for v in self.V:  # the circle on O V_n, to keep the labels off it
+            t = np.linspace(0, 2 * np.pi, 90)
+            circles.append(np.column_stack([v[0] / 2 + math.hypot(*v) / 2 * np.cos(t),
+                                            v[1] / 2 + math.hypot(*v) / 2 * np.sin(t)]))
+        pts = [(v, f"$V_{i}$") for i, v in enumerate(self.V, 1)]
+        place_labels(ax, [*pts, (self.num["P1"], "$P_1$"), (self.num["P2"], "$P_2$"),
+                          ((0.0, 0.0), "$O$")], circles, font_size=th.font_size * 0.9,
+                     marker_size=th.point_size, color=th.label_color, zorder=6,
+                     bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
+        a["ray"] = ax.plot([], [], color=th.axis_color, lw=th.thin_width, ls=":", zorder=4.6)[0]
+        a["trace"] = ax.plot([], [], color=hl, lw=th.envelope_width * 0.8, zorder=4.7)[0]
+        for i in (1, 2, 3, 4):
+            col = th.circle_color(i)
+            a[f"VH{i}"] = ax.plot([], [], color=col, lw=th.thin_width, ls="--", zorder=4.8)[0]
+            a[f"H{i}"] = ax.plot([], [], "o", color=col, ms=th.point_size * 1.2, zorder=5.5)[0]
+        a["radius"] = ax.plot([], [], color=hl, lw=2.2, zorder=4.9)[0]
+        a["point"] = ax.plot([], [], "o", color=hl, mec="white", ms=2 * th.point_size,
+                             zorder=6.5)[0]
+        a["force"] = ax.add_patch(FancyArrowPatch((0, 0), (0, -1), arrowstyle="-|>", lw=1.8,
+                                                  mutation_scale=14, color="black", zorder=7))
+        a["force_label"] = ax.text(0, 0, "$F_e$", fontsize=th.font_size, zorder=7,
+                                   ha="center", va="center")
+        kax = self.k_axes = self.figure.add_axes((0.58, 0.4, 0.39, 0.48))
+        deg = np.degrees(self._tt)
+        for i, k in enumerate(g.k(self._tt), 1):
+            kax.plot(deg, k, color=th.circle_color(i), lw=th.line_width, ls=th.circle_style(i),
+                     label=f"$k_{i}$")
+            a[f"k{i}"] = kax.plot([], [], "o", color=th.circle_color(i), ms=th.point_size,
+                                  zorder=5)[0]
+        kax.plot(deg, g.k_grasp(self._tt), color=th.envelope_color, lw=2.4,
+                 label=r"$k_{grasp}$ (25)")
+        kax.axhline(0.0, color=th.axis_color, lw=th.thin_width)
+        kax.set(xlim=(0, 360), xticks=np.arange(0, 361, 90))
+        kax.tick_params(labelsize=th.font_size * 0.75)
+        kax.set_xlabel(r"direction of the external force $\theta$ [deg]",
+                       fontsize=th.font_size * 0.8)
+        kax.legend(fontsize=th.font_size * 0.85, ncol=5, loc="lower center",
+                   bbox_to_anchor=(0.5, 1.0), frameon=False, handlelength=1.5)
+        a["cursor"] = kax.axvline(0.0, color=hl, lw=1.2, zorder=4)
+        a["kpoint"] = kax.plot([], [], "o", color=hl, mec="white", ms=th.point_size * 1.8,
+                               zorder=6)[0]
+        a["status"], a["slip"] = self._text(0.25), self._text(0.13, color=hl)
+        self._dynamic = list(a.values())
+
+    def _timeline(self) -> Timeline:
+        """One segment per run of frames with the same binding k_n (an arc of the envelope)."""
+        n = len(self.angle)
+        self.theta = self.angle
+        self.k = np.asarray(self.grasp.k(self.theta), dtype=float)
+        self.k_grasp = np.asarray(self.grasp.k_grasp(self.theta), dtype=float)
+        self.binding = binding(self.k)
+        cuts = [0, *(np.flatnonzero(np.diff(self.binding)) + 1), n]
+        return Timeline(tuple(Segment(int(self.binding[a]), int(b - a))
+                              for a, b in pairwise(cuts)), "linear")
+
+    def _movers(self, segment: int) -> list[Artist]:
+        return [a for a in self._dynamic if a is not self.artists["slip"]]
+
+    def status_at(self, frame: int) -> str:
+        """θ, k_grasp(θ), F_int per unit F_e (eq. (17)) and the binding inequality (8)-(11)."""
+        f = self.timeline.check(frame)
+        d = float(self.grasp.x1 + self.grasp.x2)
+        return (f"θ = {math.degrees(self.theta[f]):5.1f}°    k_grasp(θ) = {self.k_grasp[f]:.3f}\n"
+                f"F_int = k_grasp/(x1 + x2)·F_e = {self.k_grasp[f] / d:.3f}·F_e (17)\n"
+                f"{SLIP[int(self.binding[f])]}")
+
+    def _apply(self, frame: int) -> None:
+        f = self.timeline.check(frame)
+        a, t, th = self.artists, float(self.theta[f]), self.theme
+        e = np.array([math.sin(t), -math.cos(t)])
+        a["ray"].set_data([-10 * self._len * e[0], 10 * self._len * e[0]],
+                          [-10 * self._len * e[1], 10 * self._len * e[1]])
+        a["force"].set_positions((0.0, 0.0), tuple(self._len * e))
+        a["force_label"].set_position(tuple(1.3 * self._len * e))
+        r = float(self._env_k[f])
+        m = int(np.searchsorted(self._tt, t, side="right"))
+        rr, tt = np.append(self._rr[:m], r), np.append(self._tt[:m], t)
+        a["trace"].set_data(rr * np.sin(tt), -rr * np.cos(tt))
+        a["radius"].set_data([0.0, r * e[0]], [0.0, r * e[1]])
+        a["point"].set_data([r * e[0]], [r * e[1]])
+        win = int(self.binding[f])
+        for i, v in enumerate(self.V, 1):
+            k = float(self.k[i - 1, f])
+            h = k * e  # the foot H_n of the perpendicular from V_n: O H_n = k_n (Fig. 3)
+            a[f"H{i}"].set(data=([h[0]], [h[1]]), mfc=th.circle_color(i) if k > 0 else "white")
+            a[f"VH{i}"].set(data=([v[0], h[0]], [v[1], h[1]]), ls="-" if i == win else "--",
+                            lw=1.6 if i == win else th.thin_width)
+            a[f"k{i}"].set_data([math.degrees(t)], [k])
+        a["cursor"].set_xdata([math.degrees(t)] * 2)
+        a["kpoint"].set_data([math.degrees(t)], [self.k_grasp[f]])
+        lines = self.status_at(f).split("\n")
+        a["status"].set_text("\n".join(lines[:2]))
+        a["slip"].set_text("\n".join(lines[2:]))
+
+
+def animate_sweep(grasp_or_construction: Any, frames: int = 120, fps: float = 20,
+                  theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
+                  dpi: float = 80) -> SweepAnimation:
+    """Animate the external force direction θ going once round (Fig. 3, eqs. (25)-(32)).
+
+    The force arrow at the centre of mass O turns along e(θ) (26); the foot
+    H_n of the perpendicular from V_n to the line along e(θ) moves on the
+    circle on the diameter O V_n (Thales, eq. (31)), filled where
+    k_n(θ) = O H_n > 0; the envelope point k_grasp(θ)·e(θ) traces the outer
+    envelope (25); the side panel draws k_1..k_4 and k_grasp against θ with a
+    cursor and names the binding friction inequality (8)-(11) (:data:`SLIP`).
+    Frame ``f`` shows θ = 2π·f/frames; the timeline has one segment per arc.
+
+    Returns
+    -------
+    SweepAnimation
+        With ``.theta``, ``.k`` (4, frames), ``.k_grasp``, ``.binding`` and the
+        moving ``.artists`` (``"trace"``: the traced envelope).
+    """
+    return SweepAnimation(grasp_or_construction, frames=frames, fps=fps, theme=theme,
+                          figsize=figsize, dpi=dpi)
+
+
+class OrientationAnimation(_Turning):
+    """The object turning under gravity (Fig. 1); see :func:`animate_orientation`."""
+
+    def __init__(self, construction: Any, weight: float = 1.0, frames: int = 120,
+                 fps: float = 20, theme: Theme = DEFAULT_THEME,
+                 figsize: tuple[float, float] = (9.6, 5.0), dpi: float = 80) -> None:
+        super().__init__(construction, frames, fps, theme, figsize, dpi)
+        g, th, ax, a, hl = self.grasp, theme, self.axes, self.artists, theme.highlight_color
+        self.weight, self.alpha = float(weight), self.angle
+        self.theta = theta_of_orientation(self.alpha)
+        self.k_grasp = np.asarray(g.k_grasp(self.theta), dtype=float)
+        self.force = np.asarray(g.internal_force(self.theta, self.weight), dtype=float)
+        d, vmax = float(g.x1 + g.x2), max(math.hypot(*v) for v in self.V)
+        self.force_max = vmax / d * self.weight  # max over θ of k_grasp is max|V_n| (§5)
+        shape = getattr(g, "shape", None) or ("",)
+        size = (float(shape[1]) if shape[0] == "circle" else
+                math.hypot(float(shape[1]), float(shape[2])) / 2 if shape[0] == "rectangle"
+                else 0.0)
+        R = 1.1 * max(vmax, size, *(math.hypot(*self.num[p]) for p in ("P1", "P2")))
+        ax.set(xlim=(-R, R), ylim=(-R, R), xticks=[], yticks=[])
+        self._rot = Affine2D()
+        turning: list[Artist] = [x for lst in self.kept.values() for x in lst]
+        r = 0.06 * d
+        for p, phi, sgn in ((self.num["P1"], float(g.phi1), -1),
+                            (self.num["P2"], float(g.phi2), 1)):
+            inward = np.array([sgn * math.sin(phi), -math.cos(phi)])  # the normal n_i
+            tip = np.asarray(p) - r * inward  # a fingertip pressing along the normal
+            turning += ax.plot(*np.array([tip, tip - 5 * r * inward]).T, color="#8d8d8d",
+                               lw=6, solid_capstyle="round", zorder=3.9)
+            turning.append(ax.add_patch(CirclePatch(tuple(tip), r, fc="#8d8d8d", ec="black",
+                                                    lw=0.6, zorder=4)))
+        for x, y, lab in ((0.35 * R, 0.0, "x"), (0.0, 0.35 * R, "y")):
+            turning += ax.plot([0, x], [0, y], color=th.axis_color, lw=th.thin_width)
+            turning.append(ax.text(1.12 * x, 1.12 * y, lab, style="italic", ha="center",
+                                   va="center", fontsize=th.font_size * 0.9))
+        for art in turning:
+            art.set_transform(self._rot + ax.transData)
+        a["gravity"] = ax.add_patch(FancyArrowPatch((0, 0), (0, -0.3 * R), arrowstyle="-|>",
+                                                    mutation_scale=14, color="black", lw=1.8,
+                                                    zorder=7))
+        ax.text(0.04 * R, -0.3 * R, "W", fontsize=th.font_size, va="top", zorder=7)
+        a["radius"] = ax.plot([], [], color=hl, lw=2.4, zorder=6)[0]
+        a["point"] = ax.plot([], [], "o", color=hl, mec="white", ms=2 * th.point_size,
+                             zorder=6.5)[0]
+        top = 1.15 * self.force_max if self.force_max > 0 else 1.0
+        gax = self.figure.add_axes((0.58, 0.74, 0.38, 0.07))
+        gax.set(xlim=(0, top), ylim=(0, 1), yticks=[])
+        gax.tick_params(labelsize=th.font_size * 0.75)
+        gax.axvline(self.force_max, color=th.envelope_color, ls="--", lw=1.2)
+        gax.set_title(r"gripping force $F_{int}$ for the weight $W$, eq. (17)",
+                      fontsize=th.font_size * 0.9)
+        a["gauge"] = gax.add_patch(Rectangle((0, 0.15), 0, 0.7, color=hl, zorder=3))
+        fax = self.force_axes = self.figure.add_axes((0.58, 0.32, 0.38, 0.3))
+        fine = np.linspace(0, 2 * np.pi, 721)
+        fax.plot(np.degrees(fine), g.internal_force(theta_of_orientation(fine), self.weight),
+                 color=th.envelope_color, lw=1.6)
+        fax.axhline(self.force_max, color=th.envelope_color, ls="--", lw=1.0,
+                    label="max |V_n|/(x1 + x2)·W: any orientation (§5)")
+        fax.set(xlim=(0, 360), xticks=np.arange(0, 361, 90), ylim=(0, top))
+        fax.tick_params(labelsize=th.font_size * 0.75)
+        fax.set_xlabel(r"object turned by $\alpha$ [deg]", fontsize=th.font_size * 0.8)
+        fax.set_ylabel(r"$F_{int}$", fontsize=th.font_size * 0.8)
+        fax.legend(fontsize=th.font_size * 0.7, loc="upper right", frameon=False)
+        a["cursor"] = fax.axvline(0.0, color=hl, lw=1.2)
+        a["fpoint"] = fax.plot([], [], "o", color=hl, mec="white", ms=th.point_size * 1.8)[0]
+        a["status"] = self._text(0.2)
+        self._dynamic = turning + list(a.values())
+
+    def status_at(self, frame: int) -> str:
+        """α, θ = −α, k_grasp(θ) and F_int = k_grasp/(x1 + x2)·W (eq. (17))."""
+        f = self.timeline.check(frame)
+        return (f"object turned by α = {math.degrees(self.alpha[f]):5.1f}°\n"
+                f"gravity in the object frame: θ = −α = {math.degrees(self.theta[f]):5.1f}°\n"
+                f"k_grasp(θ) = {self.k_grasp[f]:.3f}\n"
+                f"F_int = k_grasp/(x1 + x2)·W = {self.force[f]:.3f}   (W = {self.weight:g})")
+
+    def world_point(self, frame: int) -> tuple[float, float]:
+        """Where the downward ray from O meets the turned envelope: (0, −k_grasp(θ))."""
+        return (0.0, -float(self.k_grasp[self.timeline.check(frame)]))
+
+    def _apply(self, frame: int) -> None:
+        f, a = self.timeline.check(frame), self.artists
+        self._rot.clear().rotate(float(self.alpha[f]))
+        x, y = self.world_point(f)
+        a["radius"].set_data([0.0, x], [0.0, y])
+        a["point"].set_data([x], [y])
+        a["gauge"].set_width(float(self.force[f]))
+        deg = math.degrees(self.alpha[f])
+        a["cursor"].set_xdata([deg, deg])
+        a["fpoint"].set_data([deg], [self.force[f]])
+        a["status"].set_text(self.status_at(f))
+
+
+def animate_orientation(grasp_or_construction: Any, weight: float = 1.0, frames: int = 120,
+                        fps: float = 20, theme: Theme = DEFAULT_THEME,
+                        figsize: tuple[float, float] = (9.6, 5.0),
+                        dpi: float = 80) -> OrientationAnimation:
+    """Animate the grasped object turning under gravity, as in Fig. 1.
+
+    Gravity (the weight ``W``) stays downward while the object, its contacts
+    (fingertips pressing along the normals) and the internal force diagram
+    turn counter-clockwise by α = 2π·frame/frames.  In the object frame
+    gravity points along e(θ) with θ = −α (module docstring), so the downward
+    ray from O meets the turned envelope at the distance k_grasp(θ) (eq. (25));
+    the gauge and the side plot show F_int = k_grasp(θ)/(x1 + x2)·W (eq. (17))
+    and max|V_n|/(x1 + x2)·W, enough for every orientation (§5).
+
+    Returns
+    -------
+    OrientationAnimation
+        With ``.alpha``, ``.theta``, ``.k_grasp``, ``.force`` (F_int per frame),
+        ``.force_max``, ``.world_point(frame)`` and the moving ``.artists``.
+    """
+    return OrientationAnimation(grasp_or_construction, weight=weight, frames=frames, fps=fps,
+                                theme=theme, figsize=figsize, dpi=dpi)

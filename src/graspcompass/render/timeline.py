@@ -1,0 +1,416 @@
+"""Time base of the animations (a :class:`Timeline` of segments) and writing frames to files.
+
+A :class:`Timeline` is plain data: consecutive :class:`Segment` s
+``(step, frames, kind)``, ``kind`` being ``"draw"`` (a step's object is being
+drawn), ``"pause"`` (resting on a key result: V_n, a circle on O V_n of
+eq. (31), the envelope of eq. (25)) or ``"hold"`` (the finished diagram).
+:meth:`Timeline.at` maps a frame to a :class:`FrameState` (step, kind,
+progress in [0, 1], eased by a rate function of :data:`RATES` while drawing).
+It knows nothing of matplotlib or of the geometry, so the same timeline gives
+the same frames.
+
+The writers take frames as ``(height, width, 3)`` uint8 arrays: GIF with
+Pillow (:func:`write_gif`), MP4 by piping raw frames to ``ffmpeg``
+(:func:`write_mp4`), PNG (:func:`write_png`).
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+import os
+import shutil
+import subprocess
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from dataclasses import dataclass, field
+from itertools import chain
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..progress import Progress
+
+__all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",
+           "FrameState", "Segment", "Timeline", "UnsupportedFormatError", "blend",
+           "check_fps", "check_output", "find_ffmpeg", "jshtml", "palette_sample",
+           "save_frames", "smoothstep", "write_animation", "write_gif", "write_mp4", "write_png"]
+
+#: Kinds of segment.
+KINDS = ("draw", "pause", "hold")
+#: File extensions an animation is written to.
+OUTPUT_FORMATS = (".gif", ".mp4", ".html")
+
+
+class AnimationError(ValueError):
+    """A user error while making or writing an animation (one-line message)."""
+
+
+class UnsupportedFormatError(AnimationError):
+    """The output file's extension is not one an animation can be written to."""
+
+
+class FFmpegNotFoundError(AnimationError):
+    """MP4 output needs the ``ffmpeg`` program, which is not installed."""
+
+
+def smoothstep(t: float) -> float:
+    """``3t² − 2t³`` on [0, 1]: starts and ends at rest.
+
+    >>> smoothstep(0.0), smoothstep(0.5), smoothstep(1.0)
+    (0.0, 0.5, 1.0)
+    """
+    t = min(max(t, 0.0), 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+#: Rate functions ``[0, 1] -> [0, 1]`` by name, as in Manim.
+RATES: dict[str, Callable[[float], float]] = {
+    "linear": lambda t: min(max(t, 0.0), 1.0),
+    "smoothstep": smoothstep,
+    "smootherstep": lambda t: (lambda u: u ** 3 * (u * (6 * u - 15) + 10))(min(max(t, 0.0), 1.0)),
+}
+
+
+def check_fps(fps: float) -> float:
+    """``fps`` as a float; :class:`AnimationError` unless it is positive and finite."""
+    try:
+        value = float(fps)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise AnimationError(f"fps must be a positive number, got {fps!r}")
+    return value
+
+
+@dataclass(frozen=True)
+class Segment:
+    """``frames`` consecutive frames of one step, of kind draw, pause or hold."""
+
+    step: int
+    frames: int
+    kind: str = "draw"
+
+
+@dataclass(frozen=True)
+class FrameState:
+    """Where a frame is: segment, step, kind and progress.
+
+    ``raw`` goes linearly from ``1/n`` to 1 over the ``n`` frames of the
+    segment (the last frame of a draw segment shows the finished object);
+    ``progress`` is ``raw`` eased by the timeline's rate in draw segments.
+    """
+
+    frame: int
+    segment: int
+    step: int
+    kind: str
+    progress: float
+    raw: float
+
+
+@dataclass(frozen=True)
+class Timeline:
+    """The frames of an animation as consecutive segments (pure data).
+
+    Examples
+    --------
+    >>> tl = Timeline.from_keys([False, True], frames_per_step=4, pause_frames=2,
+    ...                         hold_frames=3)
+    >>> tl.frame_count, [s.kind for s in tl.segments]
+    (13, ['draw', 'draw', 'pause', 'hold'])
+    >>> tl.at(3).step, tl.at(3).progress, tl.at(4).step
+    (0, 1.0, 1)
+    >>> len(tl.frames_of_step(1)), tl.last_frame_of_step(1)
+    (9, 9)
+    """
+
+    segments: tuple[Segment, ...]
+    rate: str = "smoothstep"
+    starts: tuple[int, ...] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if self.rate not in RATES:
+            raise AnimationError(f"unknown rate {self.rate!r}; use one of {', '.join(RATES)}")
+        if not self.segments:
+            raise AnimationError("a timeline needs at least one segment")
+        for s in self.segments:
+            if s.kind not in KINDS or s.frames < 1:
+                raise AnimationError(f"bad segment {s}: kind one of {KINDS}, frames >= 1")
+        sizes = [s.frames for s in self.segments]
+        object.__setattr__(self, "starts", tuple(int(v) for v in np.cumsum([0, *sizes[:-1]])))
+
+    @classmethod
+    def from_keys(cls, keys: Sequence[bool], frames_per_step: int = 8, pause_frames: int = 12,
+                  hold_frames: int = 20, rate: str = "smoothstep") -> Timeline:
+        """A draw segment per step, a pause after each key step, a hold at the end."""
+        if frames_per_step < 1 or pause_frames < 0 or hold_frames < 0:
+            raise AnimationError("frames_per_step must be >= 1, pause_frames and hold_frames "
+                                 ">= 0")
+        segs = []
+        for i, key in enumerate(keys):
+            segs.append(Segment(i, frames_per_step, "draw"))
+            if key and pause_frames:
+                segs.append(Segment(i, pause_frames, "pause"))
+        if hold_frames and keys:
+            segs.append(Segment(len(keys) - 1, hold_frames, "hold"))
+        return cls(tuple(segs), rate)
+
+    @classmethod
+    def uniform(cls, frames: int, rate: str = "linear") -> Timeline:
+        """One draw segment of ``frames`` frames."""
+        if int(frames) < 1:
+            raise AnimationError(f"frames must be at least 1, got {frames}")
+        return cls((Segment(0, int(frames)),), rate)
+
+    @property
+    def frame_count(self) -> int:
+        """Total number of frames."""
+        return self.starts[-1] + self.segments[-1].frames
+
+    def check(self, frame: int) -> int:
+        """``frame`` in ``range(frame_count)`` (negative counts from the end), or IndexError."""
+        n = self.frame_count
+        if not -n <= frame < n:
+            raise IndexError(f"frame {frame} out of range for a timeline of {n} frames")
+        return int(frame) % n
+
+    def segment_of(self, frame: int) -> int:
+        """Index of the segment holding ``frame``."""
+        return bisect.bisect_right(self.starts, self.check(frame)) - 1
+
+    def segment_range(self, i: int) -> range:
+        """The frames of segment ``i``."""
+        return range(self.starts[i], self.starts[i] + self.segments[i].frames)
+
+    def at(self, frame: int) -> FrameState:
+        """The :class:`FrameState` of ``frame``."""
+        f = self.check(frame)
+        i = self.segment_of(f)
+        seg = self.segments[i]
+        raw = (f - self.starts[i] + 1) / seg.frames
+        return FrameState(f, i, seg.step, seg.kind,
+                          RATES[self.rate](raw) if seg.kind == "draw" else raw, raw)
+
+    def frames_of_step(self, step: int) -> range:
+        """Every frame of ``step``: its draw, pause and (last step) hold segments."""
+        idx = [i for i, s in enumerate(self.segments) if s.step == step]
+        if not idx:
+            raise AnimationError(f"step {step} is not on this timeline")
+        return range(self.starts[idx[0]], self.segment_range(idx[-1]).stop)
+
+    def last_frame_of_step(self, step: int) -> int:
+        """The last frame of the step's draw and pause segments (before a hold)."""
+        idx = [i for i, s in enumerate(self.segments) if s.step == step and s.kind != "hold"]
+        return self.segment_range(idx[-1]).stop - 1 if idx else self.frames_of_step(step)[-1]
+
+
+def find_ffmpeg() -> str:
+    """The ``ffmpeg`` program (rcParams ``animation.ffmpeg_path``) or FFmpegNotFoundError."""
+    import matplotlib as mpl
+
+    exe = shutil.which(str(mpl.rcParams["animation.ffmpeg_path"]))
+    if exe is None:
+        raise FFmpegNotFoundError("cannot write MP4: ffmpeg is not installed (install it, e.g. "
+                                  "apt-get install ffmpeg, or write .gif or .html)")
+    return exe
+
+
+def check_output(path: str | os.PathLike[str]) -> str:
+    """The extension of ``path`` if an animation can be written there (ffmpeg for .mp4).
+
+    >>> check_output("construction.GIF")
+    '.gif'
+    >>> check_output("construction.avi")
+    Traceback (most recent call last):
+    ...
+    graspcompass.render.timeline.UnsupportedFormatError: cannot write an animation to ...
+    """
+    p = Path(path)
+    ext = p.suffix.lower()
+    if ext not in OUTPUT_FORMATS:
+        what = f"extension {p.suffix!r}" if p.suffix else "a path without extension"
+        raise UnsupportedFormatError(
+            f"cannot write an animation to {str(p)!r}: {what} is not supported; use "
+            f"{', '.join(OUTPUT_FORMATS)} (save_frames() writes PNG frames)")
+    if ext == ".mp4":
+        find_ffmpeg()
+    return ext
+
+
+def blend(a: np.ndarray, b: np.ndarray, w: float, rows: slice = slice(None)) -> np.ndarray:
+    """The cross-fade ``(1 − w)·a + w·b`` on ``rows`` (``b`` elsewhere), as uint8."""
+    if w >= 1.0:
+        return b
+    out = b.copy()
+    mixed = a[rows].astype(np.float32) * (1.0 - w) + b[rows].astype(np.float32) * w
+    out[rows] = np.rint(mixed).astype(np.uint8)
+    return out
+
+
+def write_gif(frames: Iterable[np.ndarray], path: str | os.PathLike[str], fps: float,
+              palette_sample: np.ndarray | None = None) -> int:
+    """Write RGB frames as a looping GIF with Pillow; returns the number of GIF frames.
+
+    One 256-colour palette, from ``palette_sample`` (default: the first frame),
+    serves every frame, without dithering, so the file is deterministic.
+    Pillow merges a frame identical to the one before into it (adding the
+    durations), so the GIF may hold fewer frames, playing for the same time.
+    """
+    from PIL import Image
+
+    it = iter(frames)
+    first = next(it)
+    palette = _palette(first if palette_sample is None else palette_sample)
+    images: list[Image.Image] = []
+    distinct, previous = 0, b""
+    for rgb in chain([first], it):
+        im = Image.fromarray(rgb).quantize(palette=palette, dither=Image.Dither.NONE)
+        data = im.tobytes()
+        distinct += data != previous
+        previous = data
+        images.append(im)
+    images[0].save(path, save_all=True, append_images=images[1:], loop=0, optimize=False,
+                   duration=1000.0 / check_fps(fps), disposal=1)
+    return distinct
+
+
+def write_mp4(frames: Iterator[np.ndarray], path: str | os.PathLike[str], fps: float,
+              ffmpeg: str | None = None) -> int:
+    """Pipe RGB frames to ``ffmpeg`` (H.264, yuv420p); returns the number of frames."""
+    exe = ffmpeg or find_ffmpeg()
+    first = next(frames)
+    h, w = first.shape[:2]
+    cmd = [exe, "-y", "-loglevel", "error", "-f", "rawvideo", "-vcodec", "rawvideo",
+           "-s", f"{w}x{h}", "-pix_fmt", "rgb24", "-r", f"{check_fps(fps):g}", "-i", "-",
+           "-an", "-vcodec", "libx264", "-pix_fmt", "yuv420p",
+           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", str(path)]
+    proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdin is not None
+    count = 0
+    try:
+        for rgb in chain([first], frames):
+            proc.stdin.write(np.ascontiguousarray(rgb, dtype=np.uint8).tobytes())
+            count += 1
+    except BrokenPipeError:
+        pass
+    _, err = proc.communicate()
+    if proc.returncode:
+        lines = (err or b"").decode(errors="replace").strip().splitlines()
+        raise AnimationError(f"ffmpeg failed writing {str(path)!r}: "
+                             f"{lines[-1] if lines else f'exit status {proc.returncode}'}")
+    return count
+
+
+def palette_sample(anim: Any) -> np.ndarray:
+    """Three frames of ``anim`` (a third in, two thirds in, the last) stacked: the colours."""
+    n = anim.frame_count
+    return np.concatenate([anim.render(f) for f in sorted({n // 3, 2 * n // 3, n - 1})])
+
+
+def _palette(sample: np.ndarray) -> Any:
+    from PIL import Image
+
+    return Image.fromarray(sample).quantize(256, method=Image.Quantize.MEDIANCUT)
+
+
+class _Frames:
+    """Stands in for the figure in matplotlib's HTMLWriter: savefig writes the current frame."""
+
+    def __init__(self, size: Any, dpi: float, palette: Any) -> None:
+        self.size, self.dpi, self.palette = size, dpi, palette
+        self.rgb = np.zeros((1, 1, 3), np.uint8)
+
+    def get_size_inches(self) -> Any:
+        return self.size
+
+    def set_size_inches(self, *args: Any, **kwargs: Any) -> None:
+        """The frames are already drawn: their size does not change."""
+
+    def savefig(self, fname: Any, format: str = "png", **kwargs: Any) -> None:
+        from PIL import Image
+
+        im = Image.fromarray(self.rgb)
+        if self.palette is not None and format.lower() == "png":
+            im = im.quantize(palette=self.palette, dither=Image.Dither.NONE)
+        im.save(fname, format=format.upper())
+
+
+def jshtml(frames: Iterable[np.ndarray], size: Any, dpi: float, fps: float,
+           palette_sample: np.ndarray | None = None) -> str:
+    """Self-contained interactive HTML of RGB frames, as ``to_jshtml`` makes it.
+
+    matplotlib's :class:`~matplotlib.animation.HTMLWriter` embeds the frames
+    (at most ``rcParams["animation.embed_limit"]`` MB); ``size`` and ``dpi``
+    are the figure's.  With ``palette_sample`` the PNG frames have 256
+    colours, like the GIF, and take about a third of the room.
+    """
+    from tempfile import TemporaryDirectory
+
+    from matplotlib.animation import HTMLWriter
+
+    source = _Frames(size, dpi, None if palette_sample is None else _palette(palette_sample))
+    writer = HTMLWriter(fps=check_fps(fps), embed_frames=True, default_mode="loop")
+    with TemporaryDirectory() as tmp:
+        out = Path(tmp, "animation.html")
+        with writer.saving(source, out, dpi):
+            for rgb in frames:
+                source.rgb = rgb
+                writer.grab_frame()
+        return out.read_text(encoding="utf-8")
+
+
+def write_png(rgb: np.ndarray, path: str | os.PathLike[str]) -> Path:
+    """Write one RGB frame as a PNG file."""
+    from PIL import Image
+
+    Image.fromarray(rgb).save(path, format="PNG")
+    return Path(path)
+
+
+def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None = None,
+                    quiet: bool = False) -> Path:
+    """Write ``anim`` (a :class:`~graspcompass.render.animate.FrameAnimation`) to ``path``.
+
+    ``.gif`` with Pillow, ``.mp4`` with ffmpeg, ``.html`` self-contained
+    (``anim.to_html``).  A progress bar goes to stderr when it is a terminal
+    and ``quiet`` is false.  Errors (:class:`UnsupportedFormatError`,
+    :class:`FFmpegNotFoundError`, :class:`AnimationError` for fps <= 0) are
+    ValueErrors with one-line messages.
+    """
+    p = Path(path)
+    ext = check_output(p)
+    rate = anim.fps if fps is None else check_fps(fps)
+    p.parent.mkdir(parents=True, exist_ok=True)
+    sample = palette_sample(anim) if ext != ".mp4" else None
+    bar = Progress(anim.frame_count, f"writing {p.name}", quiet)
+
+    def frames() -> Iterator[np.ndarray]:
+        for rgb in anim.iter_frames():
+            bar.update()
+            yield rgb
+
+    try:
+        if ext == ".gif":
+            write_gif(frames(), p, rate, palette_sample=sample)
+        elif ext == ".html":
+            size = anim.figure.get_size_inches()
+            p.write_text(jshtml(frames(), size, anim.figure.dpi, rate, sample), encoding="utf-8")
+        else:
+            write_mp4(frames(), p, rate)
+    finally:
+        bar.close()
+    return p
+
+
+def save_frames(anim: Any, folder: str | os.PathLike[str], frames: Iterable[int] | None = None,
+                prefix: str = "") -> list[Path]:
+    """Write PNG frames of ``anim`` into ``folder``; by default ``anim.key_frames()``.
+
+    For the construction: one PNG per protocol step, the frame at the end of
+    the step (after its pause); for the sweep and orientation: one every 30°.
+    """
+    out = Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    picks = anim.key_frames() if frames is None else [(f, f"frame-{f:04d}") for f in frames]
+    return [write_png(anim.render(f), out / f"{prefix}{name}.png") for f, name in picks]
