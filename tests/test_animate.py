@@ -274,7 +274,7 @@ def test_progress_bar_only_on_a_terminal():
         for _ in range(4):
             bar.update()
         bar.close()
-        assert ("4/4 frames" in stream.getvalue()) is shown
+        assert ("4/4" in stream.getvalue()) is shown
 
 
 # -- the sweep of the external force (Fig. 3) -----------------------------------------------

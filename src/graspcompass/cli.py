@@ -18,7 +18,7 @@ from typing import Any, NoReturn
 import numpy as np
 import sympy as sp
 
-from . import __version__
+from . import __version__, _cli_export
 from ._cli_animate import register as _register_animate
 from ._cli_animate import write_main_animation
 from .construction import Construction, describe, internal_force_diagram, to_records
@@ -86,6 +86,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
     _register_animate(sub, _add_grasp_options)
+    _cli_export.register(sub, _add_grasp_options)
 
     v = sub.add_parser("verify", help="machine-check every claim of the paper (symbolic)")
     v.add_argument("--json", action="store_true", help="print the results as JSON")
@@ -230,6 +231,14 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     return run(args, grasp_from_args(args))
 
 
+def _cmd_export(args: argparse.Namespace) -> int:
+    return _cli_export.run_export(args, grasp_from_args(args))
+
+
+def _cmd_explore(args: argparse.Namespace) -> int:
+    return _cli_export.run_explore(args, grasp_from_args(args))
+
+
 def _cmd_verify(args: argparse.Namespace) -> int:
     from . import proof
 
@@ -264,7 +273,7 @@ def _cmd_crosscheck(args: argparse.Namespace) -> int:
 
 _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
              "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
-             "crosscheck": _cmd_crosscheck}
+             "crosscheck": _cmd_crosscheck, "export": _cmd_export, "explore": _cmd_explore}
 
 
 def main(argv: Sequence[str] | None = None) -> int:

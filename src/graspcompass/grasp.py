@@ -380,9 +380,12 @@ class Grasp:
             S, C = self._floats()
             t = np.asarray(theta, dtype=float)
             s, c = np.sin(t), np.cos(t)
-            out = np.zeros(t.shape)
-            for Sn, Cn in zip(S, C):
-                np.maximum(out, Sn * s - Cn * c, out=out)
+            out, a, b = np.zeros(t.shape), np.empty(t.shape), np.empty(t.shape)
+            for Sn, Cn in zip(S, C):  # k_n = S_n sin θ - C_n cos θ, without temporaries
+                np.multiply(s, Sn, out=a)
+                np.multiply(c, Cn, out=b)
+                np.subtract(a, b, out=a)
+                np.maximum(out, a, out=out)
             return out if t.ndim else float(out)
         ks = self.k(theta)
         if any(k.free_symbols for k in ks):

@@ -32,6 +32,7 @@ from .anim_physics import (
     theta_of_orientation,
 )
 from .animate import ConstructionAnimation, FrameAnimation, animate_construction, save_frames
+from .explorer import Explorer, explore, explore_notebook
 from .figure import (
     EXTRA_KEYS,
     FORMATS,
@@ -53,6 +54,7 @@ __all__ = [
     "THEMES",
     "AnimationError",
     "ConstructionAnimation",
+    "Explorer",
     "FFmpegNotFoundError",
     "FrameAnimation",
     "OrientationAnimation",
@@ -65,6 +67,8 @@ __all__ = [
     "animate_sweep",
     "draw_construction",
     "draw_k_polar",
+    "explore",
+    "explore_notebook",
     "figure_diagram",
     "figure_k_plot",
     "save_figure",

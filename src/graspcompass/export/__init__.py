@@ -1,0 +1,112 @@
+"""Exports of a construction to files that other tools open.
+
+- :mod:`~graspcompass.export.geogebra`: GeoGebra ``.ggb``, a live construction
+  on sliders x1, x2, y, φ1, φ2, μ1, μ2 with draggable P1, in protocol order;
+- :mod:`~graspcompass.export.tikz`: plain TikZ (standalone ``article`` or a
+  ``tikzpicture`` to ``\\input``), exact values in comments;
+- :mod:`~graspcompass.export.svg`: a standalone, labelled, scalable SVG;
+- :mod:`~graspcompass.export.json`: the protocol as JSON (schema
+  ``graspcompass.construction/1``), which :func:`~graspcompass.export.json.loads`
+  reads back into the same construction;
+- PNG and PDF through :mod:`graspcompass.render` (matplotlib, imported only then).
+
+Nothing here imports matplotlib except :func:`export` for ``png``/``pdf``.
+
+Examples
+--------
+>>> from graspcompass import Grasp, internal_force_diagram
+>>> from graspcompass.export import export, guess_format
+>>> guess_format("diagram.tex"), guess_format("a.GGB")
+('tikz', 'ggb')
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from . import json
+from .geogebra import read_ggb_xml, to_ggb, write_ggb
+from .json import SCHEMA, dumps, loads
+from .svg import to_svg, write_svg
+from .tikz import to_tikz, write_tikz
+
+__all__ = [
+    "FORMATS",
+    "SCHEMA",
+    "dumps",
+    "export",
+    "guess_format",
+    "json",
+    "loads",
+    "read_ggb_xml",
+    "to_ggb",
+    "to_svg",
+    "to_tikz",
+    "write_ggb",
+    "write_svg",
+    "write_tikz",
+]
+
+#: The formats :func:`export` writes.
+FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf")
+_EXTENSIONS = {".ggb": "ggb", ".tex": "tikz", ".tikz": "tikz", ".svg": "svg", ".json": "json",
+               ".png": "png", ".pdf": "pdf"}
+
+
+def guess_format(path: Any) -> str:
+    """The format of ``path`` from its extension.
+
+    Raises
+    ------
+    ValueError
+        For an unknown extension.
+    """
+    suffix = Path(path).suffix.lower()
+    if suffix not in _EXTENSIONS:
+        raise ValueError(f"cannot tell the format of {str(path)!r}: use one of "
+                         f"{', '.join(_EXTENSIONS)} or give the format ({', '.join(FORMATS)})")
+    return _EXTENSIONS[suffix]
+
+
+def export(construction: Any, path: Any, format: str | None = None,
+           title: str | None = None) -> Path:
+    """Write ``construction`` to ``path`` as ``format`` (default: from the extension).
+
+    Parameters
+    ----------
+    construction : Construction
+        Numeric parameters for every format but ``json``, which also takes a
+        symbolic construction.
+    path : str or path-like
+    format : {"ggb", "tikz", "svg", "json", "png", "pdf"}, optional
+    title : str, optional
+        Title of the picture (default: the grasp's title).
+
+    Returns
+    -------
+    pathlib.Path
+        The file written (parent folders are made).
+
+    Raises
+    ------
+    ValueError
+        For an unknown format, or a symbolic construction in a drawing format.
+    """
+    fmt = (format or guess_format(path)).lower()
+    p = Path(path)
+    if fmt == "ggb":
+        return write_ggb(construction, p, title)
+    if fmt == "tikz":
+        return write_tikz(construction, p, title=title)
+    if fmt == "svg":
+        return write_svg(construction, p, title)
+    if fmt == "json":
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(dumps(construction) + "\n", encoding="utf-8")
+        return p
+    if fmt in ("png", "pdf"):
+        from ..render import figure_diagram, save_figure  # matplotlib, only here
+
+        return save_figure(figure_diagram(construction, title=title), p, format=fmt)
+    raise ValueError(f"unknown export format {format!r}: choose one of {', '.join(FORMATS)}")

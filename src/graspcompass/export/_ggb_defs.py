@@ -1,0 +1,146 @@
+"""GeoGebra definitions of the kernel operations: commands on sliders, not coordinates.
+
+Each construction step becomes a GeoGebra ``<command>`` (internal English
+command names, as in ``geogebra.xml``: ``OrthogonalLine`` is the user's
+``PerpendicularLine``, ``Mirror`` is ``Reflect``, ``CurveCartesian`` is
+``Curve``) or a dependent ``<expression>`` in the sliders and the earlier
+objects.  Nested commands use square brackets, which every GeoGebra version
+since 3 reads.
+
+The given data are the seven sliders ``x_1, x_2, y_P, φ_1, φ_2, μ_1, μ_2``
+(radians for φ); ``P1 = (x_1, y_P)`` and ``P2 = (-x_2, y_P)``.  GeoGebra drags a
+point whose coordinates are free numbers by moving those numbers, so dragging
+P1 moves the sliders x_1 and y_P and the whole construction follows; P2
+follows the sliders x_2 and y_P.  The cone sides are lines through P_i along
+``(∓sin(φ ± ξ), −cos(φ ± ξ)) / cos ξ`` written with μ = tan ξ, as
+:meth:`graspcompass.Grasp.side_direction`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+__all__ = ["SLIDERS", "Definition", "definition", "ggb_label", "ggb_number"]
+
+#: Slider label in GeoGebra, parameter of :class:`graspcompass.Grasp`, caption.
+SLIDERS = (
+    ("x_1", "x1", "x1: P1 = (x1, y), §2.2.1"),
+    ("x_2", "x2", "x2: P2 = (−x2, y), §2.2.1"),
+    ("y_P", "y", "y: height of the contacts, §2.2.1"),
+    ("φ_1", "phi1", "φ1 (rad): normal at P1, clockwise from −y"),
+    ("φ_2", "phi2", "φ2 (rad): normal at P2, counter-clockwise from −y"),
+    ("μ_1", "mu1", "μ1 = tan ξ1: friction at P1, eq. (22)"),
+    ("μ_2", "mu2", "μ2 = tan ξ2: friction at P2, eq. (22)"),
+)
+
+_LABELS = {"x-axis": "axisX", "y-axis": "axisY", "envelope": "kGrasp"}
+
+_SIDE = {  # (x, y) of side n's direction, in the sliders
+    1: "(-(sin(φ_1) + cos(φ_1) * μ_1), -(cos(φ_1) - sin(φ_1) * μ_1))",
+    3: "(-(sin(φ_1) - cos(φ_1) * μ_1), -(cos(φ_1) + sin(φ_1) * μ_1))",
+    2: "(sin(φ_2) + cos(φ_2) * μ_2, -(cos(φ_2) - sin(φ_2) * μ_2))",
+    4: "(sin(φ_2) - cos(φ_2) * μ_2, -(cos(φ_2) + sin(φ_2) * μ_2))",
+}
+
+
+@dataclass(frozen=True)
+class Definition:
+    """How GeoGebra makes one object.
+
+    ``command`` is a command name with ``inputs`` (GeoGebra text), or None for
+    an ``<expression>`` ``exp``; ``element`` is the GeoGebra element type.
+    """
+
+    element: str
+    command: str | None = None
+    inputs: tuple[str, ...] = ()
+    exp: str = ""
+    var: str | None = None
+
+
+def ggb_label(name: str) -> str:
+    """A valid GeoGebra label for a step name (``x-axis`` -> ``axisX``)."""
+    return _LABELS.get(name, name)
+
+
+def ggb_number(value: Any) -> str:
+    """GeoGebra text of an exact or float number (``sqrt(3)/2``, ``pi``, ``0.5``)."""
+    v = sp.sympify(value)
+    if isinstance(v, sp.Float):
+        return repr(float(v))
+    if v.free_symbols:
+        raise ValueError(f"cannot write the symbolic value {v} to GeoGebra: substitute numbers")
+    return f"({str(v).replace('**', '^')})" if not v.is_Atom else str(v)
+
+
+def _pair(a: Any, b: Any) -> str:
+    return f"({ggb_number(a)}, {ggb_number(b)})"
+
+
+def _signed_length(inputs: tuple[str, ...], steps: dict[str, Any]) -> str:
+    a, b, axis = (ggb_label(n) for n in inputs[:3])
+    d = steps[inputs[2]].params if steps[inputs[2]].op == "line_with_direction" else ()
+    if tuple(map(sp.sympify, d)) == (1, 0):
+        return f"x({b}) - x({a})"
+    if tuple(map(sp.sympify, d)) == (0, 1):
+        return f"y({b}) - y({a})"
+    return f"Vector[{a}, {b}] * UnitVector[{axis}]"
+
+
+def _envelope() -> str:
+    """k_grasp(t) = max(k1, ..., k4, 0), max written with abs (every version has abs)."""
+    k = [f"(x(V{n}) sin(t) - y(V{n}) cos(t))" for n in (1, 2, 3, 4)]
+
+    def mx(a: str, b: str) -> str:
+        return f"(({a}) + ({b}) + abs(({a}) - ({b}))) / 2"
+
+    m = mx(mx(k[0], k[1]), mx(k[2], k[3]))
+    return f"(({m}) + abs({m})) / 2"
+
+
+def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition:
+    """The GeoGebra definition of ``step`` (``steps``: name -> Step, for the inputs).
+
+    Raises
+    ------
+    ValueError
+        For an operation GeoGebra cannot replay here.
+    """
+    ins = tuple(ggb_label(n) for n in step.inputs)
+    op, name = step.op, step.name
+    if op == "point":
+        if with_grasp and name in ("P1", "P2"):
+            return Definition("point", exp="(x_1, y_P)" if name == "P1" else "(-x_2, y_P)")
+        if all(sp.sympify(p) == 0 for p in step.params):
+            return Definition("point", "Intersect", ("xAxis", "yAxis"))
+        return Definition("point", exp=_pair(*step.params))
+    if op == "line_with_direction":
+        n = name[-1]
+        if with_grasp and name.startswith("side") and n.isdigit():
+            return Definition("line", "Line", (ins[0], f"{ins[0]} + {_SIDE[int(n)]}"))
+        return Definition("line", "Line", (ins[0], f"{ins[0]} + {_pair(*step.params)}"))
+    simple = {"line_through": ("line", "Line", ins), "meet": ("point", "Intersect", ins),
+              "foot": ("point", "ClosestPoint", (ins[1], ins[0]) if len(ins) == 2 else ins),
+              "perpendicular": ("line", "OrthogonalLine", ins[::-1]),
+              "midpoint": ("point", "Midpoint", ins),
+              "circle_on_diameter": ("conic", "Circle", (f"Midpoint[{', '.join(ins)}]",
+                                                          ins[0]))}
+    if op in simple:
+        kind, cmd, args = simple[op]
+        return Definition(kind, cmd, tuple(args))
+    if op == "signed_length":
+        return Definition("numeric", exp=_signed_length(step.inputs, steps))
+    if op == "point_from_lengths":
+        sx, sy = (ggb_number(p) for p in step.params[:2])
+        return Definition("point", exp=f"({sx} * {ins[0]}, {sy} * {ins[1]})")
+    if op == "second_intersection":
+        c1, c2, known = ins
+        return Definition("point", "Mirror", (known, f"Line[Center[{c1}], Center[{c2}]]"))
+    if op == "envelope":
+        k = _envelope()
+        return Definition("curvecartesian", "CurveCartesian",
+                          (f"({k}) sin(t)", f"-({k}) cos(t)", "t", "0", "2 pi"), var="t")
+    raise ValueError(f"no GeoGebra definition for the operation {op!r} of step {name!r}")

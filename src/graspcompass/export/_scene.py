@@ -1,0 +1,257 @@
+"""A neutral 2D picture of a construction, shared by the SVG and TikZ writers.
+
+No matplotlib here: the numbers of every object (:func:`graspcompass.geometry.evaluate`),
+a view box, lines clipped to it, the signed lengths as offset arrows, the circles
+on O V_n, the points grouped where they coincide (``O = O_M``), the friction
+cones and object outline (the given data of Fig. 2), and the envelope k_grasp
+(eq. (25)) as exact circular arcs: on the circle on the diameter O V_n the point
+k_n(θ) e(θ) sits at the angle ``2θ − π − arg V_n`` about the centre V_n / 2, so
+an arc of the envelope for θ in [θ0, θ1] turns by ``2(θ1 − θ0)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import sympy as sp
+
+from ..geometry import Circle, Line, Point, evaluate
+
+__all__ = ["COLORS", "Scene", "build_scene", "group_points", "label_tex"]
+
+XY = tuple[float, float]
+Box = tuple[float, float, float, float]
+
+#: Colours of the pictures (those of the default matplotlib theme).
+COLORS = {
+    "axis": "#404040", "side": "#b5651d", "perp": "#6c757d", "length": "#6c757d",
+    "circle1": "#1f77b4", "circle2": "#2ca02c", "circle3": "#9467bd", "circle4": "#d62728",
+    "envelope": "#0b1f4b", "fill": "#9db4d8", "cone": "#f4a261", "object": "#7f7f7f",
+    "objectfill": "#f2f2f2", "point": "#111111",
+}
+
+
+@dataclass(frozen=True)
+class Arc:
+    """One piece of the envelope: from ``start`` about ``center``, radius ``radius``.
+
+    Angles in degrees, counter-clockwise; ``delta == 0`` marks the zero region (O).
+    """
+
+    n: int
+    start: XY
+    end: XY
+    center: XY
+    radius: float
+    start_angle: float
+    delta: float
+
+
+@dataclass(frozen=True)
+class Scene:
+    """What to draw, in the frame of the paper (y up)."""
+
+    box: Box
+    lines: tuple[tuple[str, str, XY, XY], ...]  # name, role (axis/side/perp), ends
+    lengths: tuple[tuple[str, XY, XY], ...]  # name, offset start and end
+    circles: tuple[tuple[str, int, XY, float], ...]
+    points: tuple[tuple[tuple[str, ...], XY], ...]
+    envelope: tuple[Arc, ...]
+    cones: tuple[tuple[XY, ...], ...]
+    outline: tuple[str, tuple[float, ...]] | None
+    title: str
+
+
+def _f(v: sp.Expr) -> float:
+    return float(sp.N(v, 20))
+
+
+def label_tex(name: str) -> str:
+    """The paper's label of a point name, TeX math body: ``"P1x"`` -> ``"P_{1x}"``.
+
+    Examples
+    --------
+    >>> label_tex("P1x"), label_tex("O_M"), label_tex("X3"), label_tex("B12")
+    ('P_{1x}', 'O_M', 'X_3', 'B_{12}')
+    """
+    if "_" in name:
+        return name
+    head, rest = name[:1], name[1:]
+    if not rest:
+        return head
+    return f"{head}_{rest}" if len(rest) == 1 else f"{head}_{{{rest}}}"
+
+
+def group_points(items: list[tuple[str, XY]], tol: float) -> list[tuple[tuple[str, ...], XY]]:
+    """Names of points closer than ``tol`` to each other, in the order given."""
+    groups: list[tuple[XY, list[str]]] = []
+    for name, xy in items:
+        for where, names in groups:
+            if math.hypot(xy[0] - where[0], xy[1] - where[1]) <= tol:
+                names.append(name)
+                break
+        else:
+            groups.append((xy, [name]))
+    return [(tuple(names), xy) for xy, names in groups]
+
+
+def _numbers(construction: Any) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for s in construction.steps:
+        if s.kind == "envelope":
+            out[s.name] = s.obj
+            continue
+        try:
+            out[s.name] = evaluate(s.obj)
+        except (ValueError, TypeError) as exc:
+            raise ValueError(f"cannot draw {s.name!r}: the construction is symbolic ({exc}); "
+                             "substitute numbers first (Grasp.subs)") from exc
+    return out
+
+
+def _shape(grasp: Any) -> tuple[str, tuple[float, ...]] | None:
+    shape = getattr(grasp, "shape", None)
+    if not shape:
+        return None
+    if shape[0] == "circle" and len(shape) >= 2:
+        return "circle", (float(shape[1]),)
+    if shape[0] == "rectangle" and len(shape) >= 3:
+        return "rectangle", (float(shape[1]), float(shape[2]))
+    return None
+
+
+def _view_box(grasp: Any, num: dict[str, Any], outline: Any) -> Box:
+    pts: list[XY] = [(0.0, 0.0)]
+    scale = 0.0
+    for name, v in num.items():
+        if isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], float):
+            if name[:1] in "VXYP" or name in ("O", "O_M"):
+                pts.append(v)
+                if name[:1] in "VP":
+                    scale = max(scale, math.hypot(*v))
+        elif name.startswith("circle"):
+            (cx, cy), r = v
+            pts += [(cx - r, cy - r), (cx + r, cy + r)]
+    if outline is not None:
+        w, h = (2 * outline[1][0],) * 2 if outline[0] == "circle" else outline[1]
+        pts += [(-w / 2, -h / 2), (w / 2, h / 2)]
+        scale = max(scale, w / 2, h / 2)
+    limit = 3.0 * (scale or 1.0)
+    xs = [min(max(p[0], -limit), limit) for p in pts]
+    ys = [min(max(p[1], -limit), limit) for p in pts]
+    span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    half = span / 2 * 1.08
+    return (cx - half, cx + half, cy - half, cy + half)
+
+
+def clip(p: XY, d: XY, box: Box, t0: float = -math.inf,
+         t1: float = math.inf) -> tuple[XY, XY] | None:
+    """The part of ``p + t d`` (``t0 <= t <= t1``) inside ``box`` (Liang-Barsky)."""
+    for pi, di, lo, hi in ((p[0], d[0], box[0], box[1]), (p[1], d[1], box[2], box[3])):
+        if abs(di) < 1e-300:
+            if pi < lo or pi > hi:
+                return None
+            continue
+        ta, tb = sorted(((lo - pi) / di, (hi - pi) / di))
+        t0, t1 = max(t0, ta), min(t1, tb)
+        if t0 > t1:
+            return None
+    if not (math.isfinite(t0) and math.isfinite(t1)):
+        return None
+    return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
+
+
+def _wedge(apex: XY, u: XY, v: XY, length: float, samples: int = 16) -> tuple[XY, ...]:
+    a, b = math.atan2(u[1], u[0]), math.atan2(v[1], v[0])
+    delta = (b - a + math.pi) % (2 * math.pi) - math.pi
+    arc = [(apex[0] + length * math.cos(a + delta * i / samples),
+            apex[1] + length * math.sin(a + delta * i / samples)) for i in range(samples + 1)]
+    return (apex, *arc, apex)
+
+
+def _envelope(env: Any) -> tuple[Arc, ...]:
+    arcs = []
+    V = {n: (_f(v.x), _f(v.y)) for n, v in enumerate(env.V, start=1)}
+    for a in env.arcs:
+        s, e = (_f(a.start.x), _f(a.start.y)), (_f(a.end.x), _f(a.end.y))
+        t0, t1 = _f(a.theta_start), _f(a.theta_end)
+        if a.is_zero:
+            arcs.append(Arc(0, s, e, (0.0, 0.0), 0.0, 0.0, 0.0))
+            continue
+        vx, vy = V[a.n]
+        start = math.degrees(2 * t0 - math.pi - math.atan2(vy, vx))
+        arcs.append(Arc(a.n, s, e, (vx / 2, vy / 2), math.hypot(vx, vy) / 2,
+                        (start + 180.0) % 360.0 - 180.0, math.degrees(2 * (t1 - t0))))
+    return tuple(arcs)
+
+
+def build_scene(construction: Any, title: str | None = None) -> Scene:
+    """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
+
+    Raises
+    ------
+    ValueError
+        For a symbolic construction, which has no picture.
+    """
+    num = _numbers(construction)
+    grasp = construction.grasp
+    outline = _shape(grasp)
+    box = _view_box(grasp, num, outline)
+    span = box[1] - box[0]
+    lines, lengths, circles, pts = [], [], [], []
+    envelope: tuple[Arc, ...] = ()
+    for s in construction.steps:
+        v = num[s.name]
+        kind = s.kind
+        if kind == "point":
+            pts.append((s.name, v))
+        elif kind == "line":
+            role = ("axis" if s.name in ("x-axis", "y-axis") else
+                    "perp" if s.op == "perpendicular" else "side")
+            seg = clip(v[0], v[1], box)
+            if seg is not None:
+                lines.append((s.name, role, *seg))
+        elif kind == "circle":
+            circles.append((s.name, int(s.name[-1]) if s.name[-1].isdigit() else 1, *v))
+        elif kind == "length" and len(s.inputs) >= 3:
+            a, b, axis = (num[k] for k in s.inputs[:3])
+            d = axis[1]
+            norm = math.hypot(*d)
+            n = int(s.name[-1]) if s.name[-1].isdigit() else 1
+            off = (d[1] / norm * 0.012 * span * (n + 0.5), -d[0] / norm * 0.012 * span * (n + 0.5))
+            a2, b2 = (a[0] + off[0], a[1] + off[1]), (b[0] + off[0], b[1] + off[1])
+            seg = clip(a2, (b2[0] - a2[0], b2[1] - a2[1]), box, 0.0, 1.0)
+            if seg is not None and math.dist(a2, b2) > 1e-9 * span:
+                lengths.append((s.name, *seg))
+        elif kind == "envelope":
+            envelope = _envelope(v)
+    cones = []
+    if all(k in num for k in ("P1", "P2")):
+        reach = 0.6 * math.dist(num["P1"], num["P2"])
+        for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
+            if f"side{a}" in num and f"side{b}" in num:
+                cones.append(_wedge(num[f"P{i}"], num[f"side{a}"][1], num[f"side{b}"][1], reach))
+    inside = [(n, xy) for n, xy in pts
+              if box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]]
+    grouped = group_points([p for p in inside if not p[0].startswith("B")], 1e-9 * span)
+    grouped += [((n,), xy) for n, xy in inside if n.startswith("B")]
+    text = title if title is not None else (getattr(grasp, "title", None) or "")
+    return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
+                 tuple(cones), outline, text)
+
+
+def exact_text(obj: Any) -> str:
+    """One line with the exact value of an object (for comments)."""
+    if isinstance(obj, Point):
+        return f"({obj.x}, {obj.y})"
+    if isinstance(obj, Line):
+        return f"through {exact_text(obj.point)} along {exact_text(obj.direction)}"
+    if isinstance(obj, Circle):
+        return f"centre {exact_text(obj.center)}, radius^2 = {obj.radius2}"
+    if isinstance(obj, sp.Basic):
+        return str(obj)
+    return "; ".join(f"circle {a.n} for theta in [{a.theta_start}, {a.theta_end}]"
+                     for a in getattr(obj, "arcs", ()))

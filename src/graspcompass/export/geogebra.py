@@ -1,0 +1,208 @@
+"""GeoGebra ``.ggb`` of a construction: a live construction on sliders, in protocol order.
+
+A ``.ggb`` file is a zip archive holding ``geogebra.xml``.  The construction
+written here starts with seven free number sliders ``x_1, x_2, y_P, φ_1, φ_2,
+μ_1, μ_2`` (φ in radians, μ = tan ξ), holding the grasp's values; then every
+step of the protocol, in order, as a GeoGebra command (``Intersect``,
+``OrthogonalLine``, ``ClosestPoint``, ``Midpoint``, ``Circle``, ``Mirror``,
+``CurveCartesian``) or a dependent expression (``P1 = (x_1, y_P)``,
+``OMX1 = x(X1) - x(O_M)``, ``V1 = (-1 * OMX1, -1 * OY1)``), never as fixed
+coordinates.  Moving a slider, or dragging P1 (which moves x_1 and y_P),
+updates the whole construction, the four circles and the envelope
+``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25)).  Each object carries its
+step's caption (``<caption>``), shown in GeoGebra's construction protocol; the
+key steps (V_n, the circles, the envelope) are breakpoints of the protocol's
+navigation.  Labels are the step names, except ``x-axis`` -> ``axisX``,
+``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.
+
+The XML follows the tags documented for ``geogebra.xml`` (``<geogebra
+format="5.0">``, ``<euclidianView>``, ``<kernel>``, ``<construction>`` with
+``<element>``, ``<command>`` with ``<input a0=...>``/``<output a0=...>`` and
+``<expression label= exp=>``); GeoGebra's published schema (``ggb.xsd``) could not
+be obtained here, so the tests check the structure against those documented tags.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+import zipfile
+from pathlib import Path
+from typing import Any
+from xml.sax.saxutils import quoteattr
+
+import sympy as sp
+
+from ..geometry import Circle, Line, Point
+from ._ggb_defs import SLIDERS, definition, ggb_label
+
+__all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
+
+_W, _H = 960, 720  # graphics view, pixels
+_LEFT = 230  # room for the sliders at the left of the view
+_RGB = {"axis": (64, 64, 64), "side": (181, 101, 29), "perp": (108, 117, 125),
+        "point": (17, 17, 17), "envelope": (11, 31, 75), "circle1": (31, 119, 180),
+        "circle2": (44, 160, 44), "circle3": (148, 103, 189), "circle4": (214, 39, 40)}
+
+
+def _f(v: Any) -> float:
+    return float(sp.N(v, 17))
+
+
+def _a(**attrs: Any) -> str:
+    return " ".join(f"{k}={quoteattr(str(v))}" for k, v in attrs.items())
+
+
+def _slider_range(param: str, value: float) -> tuple[float, float]:
+    if param.startswith("phi"):
+        return 0.01, round(math.pi, 6)
+    low = 0.0 if param == "y" else 0.01
+    return low, float(max(3.0 if param.startswith("mu") else 4.0, math.ceil(2 * value)))
+
+
+def _sliders(grasp: Any) -> list[str]:
+    out = []
+    for i, (label, param, caption) in enumerate(SLIDERS):
+        value = _f(grasp.params[param])
+        lo, hi = _slider_range(param, value)
+        out += [f"<element {_a(type='numeric', label=label)}>",
+                f"\t<caption {_a(val=caption)}/>",
+                f"\t<value {_a(val=repr(value))}/>",
+                f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
+                f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
+                f"{_a(absoluteScreenLocation='true')}/>",
+                f"\t<show {_a(object='true', label='true')}/>",
+                f"\t<labelMode {_a(val=1)}/>",
+                f"\t<animation {_a(step='0.01', speed=1, type=0, playing='false')}/>",
+                "</element>"]
+    return out
+
+
+def _style(step: Any) -> list[str]:
+    kind, name = step.kind, step.name
+    role = ("axis" if name in ("x-axis", "y-axis") else "perp" if step.op == "perpendicular"
+            else "side" if kind == "line" else name if kind == "circle" else
+            "envelope" if kind == "envelope" else "point")
+    r, g, b = _RGB.get(role, (17, 17, 17))
+    shown = kind != "length"
+    label = kind == "point" and not name.startswith("B")
+    out = [f"<show {_a(object=str(shown).lower(), label=str(label).lower())}/>",
+           f"<objColor {_a(r=r, g=g, b=b, alpha=0.12 if kind == 'envelope' else 0)}/>",
+           f"<labelMode {_a(val=0)}/>"]
+    if kind in ("line", "circle", "envelope"):
+        thick = {"perp": 2, "axis": 3, "envelope": 7}.get(role, 4)
+        dashed = role == "perp" or kind == "circle"
+        out.append(f"<lineStyle {_a(thickness=thick, type=15 if dashed else 0)}/>")
+    if kind == "point":
+        out.append(f"<pointSize {_a(val=2 if name.startswith('B') else 4)}/>")
+    obj = step.obj
+    if isinstance(obj, Point):
+        out.append(f"<coords {_a(x=repr(_f(obj.x)), y=repr(_f(obj.y)), z='1.0')}/>")
+    elif isinstance(obj, Line):
+        a, b_, c = (repr(_f(v)) for v in obj.coefficients())
+        out.append(f"<coords {_a(x=a, y=b_, z=c)}/>")
+    elif kind == "length":
+        out.append(f"<value {_a(val=repr(_f(obj)))}/>")
+    return out
+
+
+def _view(construction: Any) -> list[str]:
+    pts = [(0.0, 0.0)]
+    for s in construction.steps:
+        if isinstance(s.obj, Point) and (s.name[:1] in "VP" or s.name == "O_M"):
+            pts.append((_f(s.obj.x), _f(s.obj.y)))
+        elif isinstance(s.obj, Circle):
+            c, r = s.obj.center, math.sqrt(_f(s.obj.radius2))
+            pts += [(_f(c.x) - r, _f(c.y) - r), (_f(c.x) + r, _f(c.y) + r)]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    scale = min((_W - _LEFT) / (max(xs) - min(xs) + 1e-6), _H / (max(ys) - min(ys) + 1e-6)) / 1.1
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    x0, y0 = _LEFT + (_W - _LEFT) / 2 - cx * scale, _H / 2 + cy * scale
+    return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>", "</gui>",
+            "<euclidianView>", f"\t<size {_a(width=_W, height=_H)}/>",
+            f"\t<coordSystem {_a(xZero=repr(x0), yZero=repr(y0))}"
+            f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
+            f"\t<evSettings {_a(axes='false', grid='false', gridIsBold='false')} "
+            f"{_a(pointCapturing=3, rightAngleStyle=1, checkboxSize=13, gridType=0)}/>",
+            "</euclidianView>"]
+
+
+def ggb_xml(construction: Any, title: str | None = None) -> str:
+    """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
+
+    Raises
+    ------
+    ValueError
+        For a symbolic construction (sliders need numbers) or an unknown operation.
+    """
+    grasp = construction.grasp
+    steps = {s.name: s for s in construction.steps}
+    if grasp is not None and any(_has_symbols(v) for v in grasp.params.values()):
+        raise ValueError("cannot write a symbolic construction to GeoGebra: its sliders need "
+                         "numbers; substitute values first (Grasp.subs)")
+    text = title if title is not None else (getattr(grasp, "title", None) or "")
+    out = ['<?xml version="1.0" encoding="utf-8"?>',
+           f'<geogebra {_a(format="5.0", version="5.0.0.0", app="classic", platform="d")} '
+           'xsi:noNamespaceSchemaLocation="http://www.geogebra.org/apps/xsd/ggb.xsd" '
+           'xmlns="" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
+           *_view(construction),
+           "<kernel>", f"\t<continuous {_a(val='false')}/>", f"\t<decimals {_a(val=4)}/>",
+           f"\t<angleUnit {_a(val='radiant')}/>", f"\t<coordStyle {_a(val=0)}/>", "</kernel>",
+           f"<construction {_a(title=text, author='graspcompass', date='')}>"]
+    if grasp is not None:
+        out += _sliders(grasp)
+    for s in construction.steps:
+        d = definition(s, steps, grasp is not None)
+        label = ggb_label(s.name)
+        if d.command is None:
+            out.append(f"<expression {_a(label=label, exp=d.exp)}"
+                       + (f" {_a(type='point')}" if d.element == "point" else "") + "/>")
+        else:
+            args = _a(**{f"a{i}": v for i, v in enumerate(d.inputs)})
+            var = f" {_a(var=d.var)}" if d.var else ""
+            out += [f"<command {_a(name=d.command)}{var}>", f"\t<input {args}/>",
+                    f"\t<output {_a(a0=label)}/>", "</command>"]
+        out.append(f"<element {_a(type=d.element, label=label)}>")
+        out += ["\t" + line for line in _style(s)]
+        out.append(f"\t<caption {_a(val=s.caption)}/>")
+        if s.key:
+            out.append(f"\t<breakpoint {_a(val='true')}/>")
+        out.append("</element>")
+    out += ["</construction>", "</geogebra>"]
+    return "\n".join(out) + "\n"
+
+
+def _has_symbols(v: Any) -> bool:
+    return bool(getattr(v, "free_symbols", ()))
+
+
+def to_ggb(construction: Any, title: str | None = None) -> bytes:
+    """The ``.ggb`` archive (zip bytes) of ``construction``.
+
+    Examples
+    --------
+    >>> from graspcompass import Grasp, internal_force_diagram
+    >>> data = to_ggb(internal_force_diagram(Grasp.preset("fig6")))
+    >>> "<command name=\\"OrthogonalLine\\">" in read_ggb_xml(data)
+    True
+    """
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("geogebra_javascript.js", "function ggbOnInit() {}\n")
+        z.writestr("geogebra.xml", ggb_xml(construction, title).encode("utf-8"))
+    return buf.getvalue()
+
+
+def write_ggb(construction: Any, path: Any, title: str | None = None) -> Path:
+    """Write :func:`to_ggb` to ``path``; returns the path."""
+    p = Path(path)
+    p.parent.mkdir(parents=True, exist_ok=True)
+    p.write_bytes(to_ggb(construction, title))
+    return p
+
+
+def read_ggb_xml(source: Any) -> str:
+    """The ``geogebra.xml`` text of a ``.ggb`` file (path or bytes)."""
+    data = source if isinstance(source, (bytes, bytearray)) else Path(source).read_bytes()
+    with zipfile.ZipFile(io.BytesIO(data)) as z:
+        return z.read("geogebra.xml").decode("utf-8")

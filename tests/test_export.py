@@ -1,0 +1,393 @@
+"""Tests of graspcompass.export: GeoGebra, TikZ (real pdflatex), SVG, JSON round trip, CLI.
+
+Expected values come from the paper (§4.1: V2 = (√3, −3/2) for Fig. 6; the
+closed form (28)-(39) re-typed in ``conftest.py``) or from the geometry of the
+friction cones written out here, never from the code under test.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import HealthCheck, given, settings
+
+from conftest import PRESET_NAMES, closed_form_SC, exact_params, float_params
+from graspcompass import Grasp, internal_force_diagram, parse_exact
+from graspcompass._cli_export import register, run_explore, run_export
+from graspcompass.cli import _add_grasp_options
+from graspcompass.construction import diagram_specs, replay
+from graspcompass.export import FORMATS, SCHEMA, dumps, export, guess_format, loads
+from graspcompass.export.geogebra import ggb_xml, read_ggb_xml, to_ggb
+from graspcompass.export.json import to_document
+from graspcompass.export.svg import to_svg
+from graspcompass.export.tikz import to_tikz
+
+SRC = Path(__file__).resolve().parents[1] / "src"
+LABEL = {"x-axis": "axisX", "y-axis": "axisY", "envelope": "kGrasp"}
+SLIDERS = ["x_1", "x_2", "y_P", "φ_1", "φ_2", "μ_1", "μ_2"]
+# child tags documented for geogebra.xml ("Common XML tags and types", GeoGebra manual)
+CONSTRUCTION_TAGS = {"command", "element", "expression", "cascell"}
+COMMAND_TAGS = {"input", "output", "outputSizes", "casMap"}
+ELEMENT_TAGS = {"show", "objColor", "labelMode", "lineStyle", "pointSize", "coords", "caption",
+                "breakpoint", "value", "slider", "animation", "layer", "fixed", "auxiliary"}
+ROOT_TAGS = {"gui", "euclidianView", "kernel", "construction", "algebraView", "scripting"}
+
+
+@pytest.fixture(scope="module")
+def fig6():
+    return internal_force_diagram(Grasp.preset("fig6"))
+
+
+# ---------------------------------------------------------------------------
+# GeoGebra
+# ---------------------------------------------------------------------------
+def _ggb_root(data: bytes) -> ET.Element:
+    with zipfile.ZipFile(__import__("io").BytesIO(data)) as z:
+        assert "geogebra.xml" in z.namelist()
+        return ET.fromstring(z.read("geogebra.xml"))
+
+
+def _protocol(root: ET.Element) -> list[tuple[str, str, str, tuple[str, ...], ET.Element]]:
+    """(label, how, command name or exp, inputs, element) in document order."""
+    out, pending = [], None
+    for child in root.find("construction"):
+        assert child.tag in CONSTRUCTION_TAGS
+        if child.tag == "command":
+            assert {c.tag for c in child} <= COMMAND_TAGS
+            (inp,), (outp,) = child.findall("input"), child.findall("output")
+            args = tuple(inp.attrib[f"a{i}"] for i in range(len(inp.attrib)))
+            pending = (outp.attrib["a0"], "command", child.attrib["name"], args)
+        elif child.tag == "expression":
+            pending = (child.attrib["label"], "expression", child.attrib["exp"], ())
+        else:
+            assert {c.tag for c in child} <= ELEMENT_TAGS, {c.tag for c in child}
+            label = child.attrib["label"]
+            if pending is not None:
+                assert pending[0] == label, "a definition is followed by its element"
+                out.append((*pending, child))
+            else:
+                out.append((label, "free", child.attrib["type"], (), child))
+            pending = None
+    return out
+
+
+def test_ggb_every_object_is_defined_by_a_command_in_protocol_order(fig6):
+    root = _ggb_root(to_ggb(fig6))
+    assert root.tag == "geogebra" and root.attrib["format"] == "5.0"
+    assert {c.tag for c in root} <= ROOT_TAGS
+    proto = _protocol(root)
+    free = [p for p in proto if p[1] == "free"]
+    # the only free objects are the seven number sliders, first
+    assert [p[0] for p in free] == SLIDERS == [p[0] for p in proto[:7]]
+    for _, _, kind, _, el in free:
+        assert kind == "numeric" and el.find("slider") is not None
+    defined = proto[7:]
+    assert [p[0] for p in defined] == [LABEL.get(n, n) for n in fig6.names]
+    captions = [p[4].find("caption").attrib["val"] for p in defined]
+    assert captions == [s.caption for s in fig6.steps]
+    breakpoints = [p[0] for p in defined if p[4].find("breakpoint") is not None]
+    assert breakpoints == [LABEL.get(s.name, s.name) for s in fig6.steps if s.key]
+    # no object is a fixed coordinate pair, and each uses only earlier objects
+    known = set(SLIDERS) | {"xAxis", "yAxis"}
+    words = re.compile(r"[^\W\d]\w*")
+    builtins = {"sin", "cos", "abs", "x", "y", "t", "pi", "Midpoint", "Line", "Center"}
+    for label, how, what, args, _ in defined:
+        text = " ".join(args) if how == "command" else what
+        assert not re.fullmatch(r"\(\s*-?[\d.]+\s*,\s*-?[\d.]+\s*\)", text)
+        assert set(words.findall(text)) - builtins <= known, (label, text)
+        known.add(label)
+
+
+def test_ggb_commands_follow_the_paper_recipe(fig6):
+    d = {p[0]: p for p in _protocol(_ggb_root(to_ggb(fig6)))}
+    assert d["O"][2:4] == ("Intersect", ("xAxis", "yAxis"))
+    assert d["P1"][1:3] == ("expression", "(x_1, y_P)")  # dragging P1 moves x_1, y_P
+    assert d["P2"][1:3] == ("expression", "(-x_2, y_P)")
+    assert d["P1x"][2:4] == ("ClosestPoint", ("axisX", "P1"))
+    assert d["O_M"][2:4] == ("Midpoint", ("P1x", "P2x"))
+    for n in (1, 2, 3, 4):  # §3.3: the foot of the *other* contact
+        foot = "P2x" if n in (1, 3) else "P1x"
+        assert d[f"X{n}"][2:4] == ("Intersect", (f"side{n}", "axisX"))
+        assert d[f"perp{n}"][2:4] == ("OrthogonalLine", (foot, f"side{n}"))  # PerpendicularLine
+        assert d[f"Y{n}"][2:4] == ("Intersect", (f"perp{n}", "axisY"))
+        assert d[f"OMX{n}"][2] == f"x(X{n}) - x(O_M)"
+        assert d[f"OY{n}"][2] == f"y(Y{n}) - y(O)"
+        assert d[f"V{n}"][2] == f"(-1 * OMX{n}, -1 * OY{n})"  # V_n = (−O_M X_n, −O Y_n)
+        assert d[f"circle{n}"][2:4] == ("Circle", (f"Midpoint[O, V{n}]", "O"))
+    assert d["B12"][2:4] == ("Mirror", ("O", "Line[Center[circle1], Center[circle2]]"))
+    assert d["kGrasp"][2] == "CurveCartesian"
+
+
+def _split_pair(text: str) -> tuple[str, str]:
+    depth = 0
+    for i, ch in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if ch == "," and depth == 1:
+            return text[1:i], text[i + 1:-1]
+    raise AssertionError(text)
+
+
+def test_ggb_cone_sides_point_along_phi_plus_minus_xi():
+    """side n through P_i along the cone side at φ ± ξ from −y (Fig. 2), in the sliders."""
+    phi1, phi2, mu1, mu2 = 1.2, 1.9, 0.7, 1.3
+    g = Grasp(1.0, 1.5, 0.5, phi1, phi2, mu1=mu1, mu2=mu2)
+    d = {p[0]: p for p in _protocol(_ggb_root(to_ggb(internal_force_diagram(g))))}
+    vals = {"φ_1": phi1, "φ_2": phi2, "μ_1": mu1, "μ_2": mu2}
+    syms = {k: sp.Float(v) for k, v in vals.items()}
+    xi1, xi2 = math.atan(mu1), math.atan(mu2)
+    expected = {1: (-math.sin(phi1 + xi1), -math.cos(phi1 + xi1)),  # clockwise at P1
+                3: (-math.sin(phi1 - xi1), -math.cos(phi1 - xi1)),
+                2: (math.sin(phi2 + xi2), -math.cos(phi2 + xi2)),  # counter-clockwise at P2
+                4: (math.sin(phi2 - xi2), -math.cos(phi2 - xi2))}
+    for n, (ex, ey) in expected.items():
+        through, direction = d[f"side{n}"][3]
+        assert through == ("P1" if n in (1, 3) else "P2")
+        assert direction.startswith(through + " + ")
+        dx, dy = (float(parse_exact(t, symbols=syms))
+                  for t in _split_pair(direction[len(through) + 3:]))
+        assert abs(dx * ey - dy * ex) < 1e-12 and dx * ex + dy * ey > 0
+
+
+def test_ggb_refuses_symbolic_constructions():
+    c = replay(diagram_specs(Grasp.symbolic("mu"))[:6], Grasp.symbolic("mu"))
+    with pytest.raises(ValueError, match="symbolic"):
+        ggb_xml(c)
+
+
+GEOGEBRA = shutil.which("geogebra")
+XVFB = shutil.which("xvfb-run")
+
+
+@pytest.mark.skipif(GEOGEBRA is None or XVFB is None,
+                    reason="GeoGebra or xvfb-run not installed (Debian packages geogebra, xvfb, "
+                           "xauth: .ci/apt-packages.txt); the .ggb is then checked structurally")
+def test_real_geogebra_recomputes_the_construction_from_moved_sliders(fig6, tmp_path):
+    """GeoGebra opens the fig6 file with its sliders moved to another grasp and
+    recomputes every object; its values match the closed form (28)-(39)."""
+    new = {"x_1": 1.1, "x_2": 0.7, "y_P": 0.4, "φ_1": 1.2, "φ_2": 1.4, "μ_1": 0.9, "μ_2": 1.1}
+    xml = read_ggb_xml(to_ggb(fig6))
+    for label, v in new.items():
+        xml, count = re.subn(rf'(<element type="numeric" label="{label}">\s*<caption[^>]*/>\s*'
+                             r'<value val=")[^"]*"', rf'\g<1>{v!r}"', xml)
+        assert count == 1
+    src = tmp_path / "moved.ggb"
+    with zipfile.ZipFile(src, "w") as z:
+        z.writestr("geogebra.xml", xml.encode("utf-8"))
+    out = tmp_path / "values.txt"
+    run = subprocess.run([XVFB, "-a", GEOGEBRA, "--showSplash=false",
+                          f"--regressionFile={out}", str(src)], check=False, timeout=240,
+                         capture_output=True, text=True,
+                         env={"HOME": str(tmp_path), "PATH": "/usr/bin:/bin"})
+    assert out.exists(), f"GeoGebra wrote no values:\n{run.stdout[-2000:]}\n{run.stderr[-2000:]}"
+    text = out.read_text(encoding="utf-8")
+    pts = {m[1]: (float(m[2]), float(m[3])) for m in
+           re.finditer(r"^Point (\S+) = .* == (\S+) (\S+)$", text, re.M)}
+    S, C = closed_form_SC(1.1, 0.7, 0.4, 1.2, 1.4, 0.9, 1.1, lib=np)
+    for n in (1, 2, 3, 4):
+        assert pts[f"V{n}"] == pytest.approx((S[n - 1], C[n - 1]), abs=2e-6, rel=2e-6)
+    mine = internal_force_diagram(Grasp(1.1, 0.7, 0.4, 1.2, 1.4, mu1=0.9, mu2=1.1))
+    for s in mine.steps:
+        if s.kind == "point":
+            assert pts[s.name] == pytest.approx((float(s.obj.x), float(s.obj.y)),
+                                                abs=2e-6, rel=2e-6), s.name
+    assert "Curve kGrasp" in text
+
+
+# ---------------------------------------------------------------------------
+# TikZ through a real pdflatex
+# ---------------------------------------------------------------------------
+PDFLATEX = shutil.which("pdflatex")
+NEEDS_TEX = pytest.mark.skipif(
+    PDFLATEX is None, reason="pdflatex not found: CI installs Debian's texlive-latex-base and "
+                             "texlive-pictures from .ci/apt-packages.txt")
+
+
+def _pdflatex(tex: Path) -> Path:
+    r = subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", tex.name],
+                       cwd=tex.parent, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout[-3000:]
+    pdf = tex.with_suffix(".pdf")
+    assert pdf.read_bytes()[:5] == b"%PDF-"
+    return pdf
+
+
+@NEEDS_TEX
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_tikz_of_the_presets_compiles_with_pdflatex(preset, tmp_path):
+    tex = tmp_path / f"{preset}.tex"
+    export(internal_force_diagram(Grasp.preset(preset)), tex)
+    _pdflatex(tex)
+
+
+@NEEDS_TEX
+def test_tikz_fragment_compiles_inside_a_document(fig6, tmp_path):
+    (tmp_path / "pic.tex").write_text(to_tikz(fig6, standalone=False), encoding="utf-8")
+    doc = tmp_path / "doc.tex"
+    doc.write_text("\\documentclass{article}\\usepackage{tikz}\\begin{document}\n"
+                   "\\input{pic.tex}\n\\end{document}\n", encoding="utf-8")
+    _pdflatex(doc)
+
+
+def test_tikz_writes_decimals_and_the_exact_form(fig6):
+    text = to_tikz(fig6)
+    # §4.1: V2 = (√3, −3/2) and V1 = (−1 − √3, −3/2 − √3)
+    m = re.search(r"\\coordinate \(V2\) at \((\S+), (\S+)\);", text)
+    assert abs(float(m[1]) - math.sqrt(3)) < 1e-10 and float(m[2]) == -1.5
+    assert "% exact: (sqrt(3), -3/2)" in text
+    assert "% exact: (-sqrt(3) - 1, -sqrt(3) - 3/2)" in text
+    assert "e-" not in re.sub(r"%.*", "", text)  # no exponent notation for TeX
+    assert text.count("arc[start angle=") >= 2  # the envelope as exact arcs
+
+
+# ---------------------------------------------------------------------------
+# SVG, PNG, PDF
+# ---------------------------------------------------------------------------
+def test_svg_is_standalone_labelled_and_flipped(fig6):
+    root = ET.fromstring(to_svg(fig6).encode("utf-8"))
+    ns = {"s": "http://www.w3.org/2000/svg"}
+    assert root.tag == "{http://www.w3.org/2000/svg}svg"
+    assert root.attrib["viewBox"].startswith("0 0 ") and root.attrib["width"].endswith("mm")
+    groups = {g.attrib["id"]: g for g in root.iter("{http://www.w3.org/2000/svg}g")}
+    for name in ("P1", "P2", "V1", "V2", "X1", "circle1", "side1", "perp1", "envelope"):
+        assert name in groups
+    texts = ["".join(t.itertext()) for t in root.iterfind(".//s:text", ns)]
+    assert "V2" in texts and "P1" in texts
+    assert "Circle on the diameter O V1" in groups["circle1"].find("s:title", ns).text
+
+    def cy(name: str) -> float:
+        return float(groups[name].find("s:circle", ns).attrib["cy"])
+    # V1 = (−1 − √3, −3/2 − √3) lies below O and V2 = (√3, −3/2) too: larger screen y
+    assert cy("V1") > cy("V2") > cy("O")
+    assert cy("P1") < cy("O")  # the contacts are above O (y = 1/2)
+
+
+def test_png_and_pdf_go_through_the_renderer(fig6, tmp_path):
+    assert export(fig6, tmp_path / "d.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert export(fig6, tmp_path / "d.pdf").read_bytes()[:5] == b"%PDF-"
+
+
+def test_export_does_not_import_matplotlib():
+    code = ("import sys, graspcompass.export as e; from graspcompass import Grasp, "
+            "internal_force_diagram as d; c = d(Grasp.preset('table1a')); e.to_svg(c); "
+            "e.to_tikz(c); e.to_ggb(c); e.dumps(c); assert 'matplotlib' not in sys.modules")
+    r = subprocess.run([sys.executable, "-c", code], env={"PYTHONPATH": str(SRC)},
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+
+
+def test_formats_and_extensions(tmp_path):
+    assert FORMATS == ("ggb", "tikz", "svg", "json", "png", "pdf")
+    assert [guess_format(f"a.{e}") for e in ("ggb", "tex", "svg", "json", "png", "pdf")] == \
+        ["ggb", "tikz", "svg", "json", "png", "pdf"]
+    with pytest.raises(ValueError, match="cannot tell the format"):
+        guess_format("a.docx")
+
+
+# ---------------------------------------------------------------------------
+# JSON
+# ---------------------------------------------------------------------------
+def assert_same(a, b) -> None:
+    assert b.grasp == a.grasp and b.skipped == a.skipped
+    assert [s.spec for s in b.steps] == [s.spec for s in a.steps]
+    for s, t in zip(a.steps, b.steps):
+        assert (t.index, t.obj, t.conditions, t.kind) == (s.index, s.obj, s.conditions, s.kind)
+
+
+def test_json_schema_and_exact_strings(fig6):
+    doc = to_document(fig6)
+    assert doc["schema"] == SCHEMA == "graspcompass.construction/1"
+    assert doc["grasp"]["friction"] == {"1": "mu", "2": "mu"}
+    v2 = next(s for s in doc["steps"] if s["name"] == "V2")
+    # §4.1 by hand: V2 = (√3, −3/2)
+    assert parse_exact(v2["value"]["x"]) == sp.sqrt(3)
+    assert parse_exact(v2["value"]["y"]) == sp.Rational(-3, 2)
+    assert v2["inputs"] == ["OMX2", "OY2"] and v2["ref"].startswith("§3.3")
+    assert_same(fig6, loads(dumps(fig6)))
+
+
+@settings(max_examples=6, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(exact_params())
+def test_json_round_trip_exact_grasps(p):
+    c = internal_force_diagram(p.grasp())
+    assert_same(c, loads(dumps(c)))
+
+
+@settings(max_examples=10, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(float_params())
+def test_json_round_trip_float_grasps(p):
+    c = internal_force_diagram(p.grasp())
+    assert_same(c, loads(dumps(c)))
+
+
+def test_json_round_trip_symbolic_and_partial():
+    g = Grasp.symbolic("xi")
+    c = replay(diagram_specs(g)[:12], g)
+    back = loads(dumps(c))
+    assert_same(c, back) and back.conditions == c.conditions
+    assert "tan(xi1)" in dumps(c)
+
+
+def test_json_refuses_bad_documents(fig6):
+    with pytest.raises(ValueError, match=r"not a graspcompass\.construction/1"):
+        loads('{"schema": "other"}')
+    with pytest.raises(ValueError, match="not JSON"):
+        loads("{")
+    doc = to_document(fig6)
+    doc["steps"][17]["value"]["x"] = "0"
+    with pytest.raises(ValueError, match="does not match its replay"):
+        loads(__import__("json").dumps(doc))
+    doc = to_document(fig6)
+    doc["steps"][5]["op"] = "eval"
+    with pytest.raises(ValueError, match="unknown operation"):
+        loads(__import__("json").dumps(doc))
+
+
+# ---------------------------------------------------------------------------
+# the command line sub-commands
+# ---------------------------------------------------------------------------
+def _parse(*argv: str) -> argparse.Namespace:
+    p = argparse.ArgumentParser()
+    register(p.add_subparsers(dest="command"), _add_grasp_options)
+    return p.parse_args(list(argv))
+
+
+@pytest.mark.parametrize("fmt", ["ggb", "tikz", "svg", "json"])
+def test_cli_export_writes_each_format(fmt, tmp_path, capsys):
+    out = tmp_path / f"t.{ {'tikz': 'tex'}.get(fmt, fmt) }"
+    args = _parse("export", "--preset", "table1b", "--format", fmt, "-o", str(out))
+    assert run_export(args, Grasp.preset("table1b")) == 0
+    assert f"wrote {out}" in capsys.readouterr().out and out.stat().st_size > 1000
+
+
+def test_cli_export_step_and_errors(tmp_path):
+    args = _parse("export", "-o", str(tmp_path / "s.json"), "--step", "8", "-q")
+    run_export(args, Grasp.preset("fig6"))
+    assert len(loads((tmp_path / "s.json").read_text())) == 9
+    with pytest.raises(ValueError, match="out of range"):
+        run_export(_parse("export", "-o", str(tmp_path / "s.json"), "--step", "999"),
+                   Grasp.preset("fig6"))
+    with pytest.raises(ValueError, match="TikZ only"):
+        run_export(_parse("export", "-o", str(tmp_path / "s.svg"), "--fragment"),
+                   Grasp.preset("fig6"))
+
+
+def test_cli_explore_without_display_is_a_one_line_error():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    with pytest.raises(ValueError) as err:
+        run_explore(_parse("explore"), Grasp.preset("fig6"))
+    assert "\n" not in str(err.value) and "cannot open the explorer window" in str(err.value)
