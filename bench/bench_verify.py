@@ -1,0 +1,96 @@
+"""Benchmark: the whole proof catalogue, cold, against sympy's ``simplify``.
+
+Target (issue 3): ``graspcompass verify`` checks the whole catalogue in under
+10 s on this 2-core machine, cold, import included.  The baseline, measured in
+the same run, checks the same identity claims the usual way,
+``sympy.simplify(lhs - rhs) == 0``, in a fresh interpreter with a time limit.
+
+Run: ``PYTHONPATH=src python bench/bench_verify.py [--quick] [--timeout 300]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import time
+
+COLD = """
+import time
+t0 = time.perf_counter()
+from graspcompass.proof import run_catalogue, exit_status
+reports = run_catalogue(quiet=True)
+print(time.perf_counter() - t0, len(reports), exit_status(reports))
+"""
+
+BASELINE = """
+import time
+t0 = time.perf_counter()
+import sympy as sp
+import graspcompass.proof.catalogue as cat
+from graspcompass.proof.prove import ProofResult, Status
+
+def naive(lhs, rhs=0, assumptions=()):
+    t = time.perf_counter()
+    d = sp.sympify(lhs) - (sp.sympify(rhs) if not isinstance(lhs, sp.MatrixBase) or rhs != 0
+                           else sp.zeros(*lhs.shape))
+    ok = all(sp.simplify(e) == 0 for e in (d if isinstance(d, sp.MatrixBase) else [d]))
+    return ProofResult(Status.PROVED if ok else Status.UNDECIDED, "simplify",
+                       time.perf_counter() - t)
+
+cat.prove_identity = naive
+n = proved = 0
+for c in cat.CLAIMS:
+    if "sign" in c.id or c.id.startswith("fig8") or c.id == "eq24-25":
+        continue  # sign claims: simplify has no counterpart
+    n += 1
+    proved += cat.check(c).status is Status.PROVED
+    print(f"{c.id} {time.perf_counter() - t0:.1f}", flush=True)
+print("DONE", time.perf_counter() - t0, n, proved, flush=True)
+"""
+
+
+def run(code: str, timeout: float) -> tuple[float, str, bool]:
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")])}
+    t0 = time.perf_counter()
+    try:
+        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                             timeout=timeout, env=env, check=True).stdout
+        return time.perf_counter() - t0, out, True
+    except subprocess.TimeoutExpired as exc:
+        out = exc.stdout.decode() if isinstance(exc.stdout, bytes) else (exc.stdout or "")
+        return time.perf_counter() - t0, out, False
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="one cold run instead of three")
+    ap.add_argument("--timeout", type=float, default=300.0, help="baseline time limit (s)")
+    args = ap.parse_args()
+    runs = []
+    for _ in range(1 if args.quick else 3):
+        wall, out, _ = run(COLD, 120)
+        inner, n, status = out.split()
+        runs.append((wall, float(inner)))
+    wall = sorted(r[0] for r in runs)[len(runs) // 2]
+    inner = sorted(r[1] for r in runs)[len(runs) // 2]
+    print(f"graspcompass verify, cold ({n} claims, exit status {status}): {wall:.2f} s wall "
+          f"(interpreter start and import included), {inner:.2f} s from import to report")
+    bwall, bout, finished = run(BASELINE, args.timeout)
+    lines = [ln for ln in bout.splitlines() if ln.strip()]
+    if finished and lines and lines[-1].startswith("DONE"):
+        _, _, nb, proved = lines[-1].split()
+        print(f"baseline, sympy.simplify on the {nb} identity claims: {bwall:.1f} s, "
+              f"{proved} proved")
+        print(f"ratio: {bwall / wall:.1f}x faster (and graspcompass also checks the sign claims)")
+    else:
+        done = len(lines)
+        print(f"baseline, sympy.simplify: did not finish in {args.timeout:.0f} s "
+              f"({done} claims done); ratio > {bwall / wall:.1f}x")
+    print("target (< 10 s cold):", "met" if wall < 10 else "NOT met")
+
+
+if __name__ == "__main__":
+    main()
