@@ -25,8 +25,8 @@ def _num(expr: sp.Expr) -> float | None:
         return None
 
 
-def describe(obj: Any) -> str:
-    """A short exact text for a construction object.
+def describe(obj: Any, ascii: bool = False) -> str:
+    """A short exact text for a construction object (``ascii`` for TeX comments).
 
     Examples
     --------
@@ -38,11 +38,12 @@ def describe(obj: Any) -> str:
     if isinstance(obj, Line):
         return f"through {describe(obj.point)} along {describe(obj.direction)}"
     if isinstance(obj, Circle):
-        return f"centre {describe(obj.center)}, r² = {obj.radius2}"
+        return f"centre {describe(obj.center)}, {'radius^2' if ascii else 'r²'} = {obj.radius2}"
     if isinstance(obj, Envelope):
+        theta = "theta" if ascii else "θ"
         parts = [
-            ("O" if a.is_zero else f"circle {a.n}") + f" for θ in [{a.theta_start}, {a.theta_end}]"
-            for a in obj.arcs
+            ("O" if a.is_zero else f"circle {a.n}") + f" for {theta} in [{a.theta_start}, "
+            f"{a.theta_end}]" for a in obj.arcs
         ]
         return "; ".join(parts)
     return str(obj)

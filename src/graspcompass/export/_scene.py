@@ -17,7 +17,10 @@ from typing import Any
 
 import sympy as sp
 
-from ..geometry import Circle, Line, Point, evaluate
+from .. import layout
+from ..construction.describe import describe
+from ..geometry import evaluate
+from ..layout import tex
 
 __all__ = ["COLORS", "Scene", "build_scene", "group_points", "label_tex"]
 
@@ -76,25 +79,13 @@ def label_tex(name: str) -> str:
     >>> label_tex("P1x"), label_tex("O_M"), label_tex("X3"), label_tex("B12")
     ('P_{1x}', 'O_M', 'X_3', 'B_{12}')
     """
-    if "_" in name:
-        return name
-    head, rest = name[:1], name[1:]
-    if not rest:
-        return head
-    return f"{head}_{rest}" if len(rest) == 1 else f"{head}_{{{rest}}}"
+    return tex(name, math=False)
 
 
 def group_points(items: list[tuple[str, XY]], tol: float) -> list[tuple[tuple[str, ...], XY]]:
-    """Names of points closer than ``tol`` to each other, in the order given."""
-    groups: list[tuple[XY, list[str]]] = []
-    for name, xy in items:
-        for where, names in groups:
-            if math.hypot(xy[0] - where[0], xy[1] - where[1]) <= tol:
-                names.append(name)
-                break
-        else:
-            groups.append((xy, [name]))
-    return [(tuple(names), xy) for xy, names in groups]
+    """Names of points closer than ``tol`` to each other, with the first one's place."""
+    where = dict(items)
+    return [(tuple(names), where[names[0]]) for names in layout.group_points(items, tol)]
 
 
 def _numbers(construction: Any) -> dict[str, Any]:
@@ -147,29 +138,9 @@ def _view_box(grasp: Any, num: dict[str, Any], outline: Any) -> Box:
     return (cx - half, cx + half, cy - half, cy + half)
 
 
-def clip(p: XY, d: XY, box: Box, t0: float = -math.inf,
-         t1: float = math.inf) -> tuple[XY, XY] | None:
-    """The part of ``p + t d`` (``t0 <= t <= t1``) inside ``box`` (Liang-Barsky)."""
-    for pi, di, lo, hi in ((p[0], d[0], box[0], box[1]), (p[1], d[1], box[2], box[3])):
-        if abs(di) < 1e-300:
-            if pi < lo or pi > hi:
-                return None
-            continue
-        ta, tb = sorted(((lo - pi) / di, (hi - pi) / di))
-        t0, t1 = max(t0, ta), min(t1, tb)
-        if t0 > t1:
-            return None
-    if not (math.isfinite(t0) and math.isfinite(t1)):
-        return None
-    return (p[0] + t0 * d[0], p[1] + t0 * d[1]), (p[0] + t1 * d[0], p[1] + t1 * d[1])
-
-
 def _wedge(apex: XY, u: XY, v: XY, length: float, samples: int = 16) -> tuple[XY, ...]:
-    a, b = math.atan2(u[1], u[0]), math.atan2(v[1], v[0])
-    delta = (b - a + math.pi) % (2 * math.pi) - math.pi
-    arc = [(apex[0] + length * math.cos(a + delta * i / samples),
-            apex[1] + length * math.sin(a + delta * i / samples)) for i in range(samples + 1)]
-    return (apex, *arc, apex)
+    poly = layout.wedge(apex, u, v, length, samples=samples + 1)
+    return tuple((float(x), float(y)) for x, y in poly)
 
 
 def _envelope(env: Any) -> tuple[Arc, ...]:
@@ -211,7 +182,7 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
         elif kind == "line":
             role = ("axis" if s.name in ("x-axis", "y-axis") else
                     "perp" if s.op == "perpendicular" else "side")
-            seg = clip(v[0], v[1], box)
+            seg = layout.clip(v[0], v[1], box)
             if seg is not None:
                 lines.append((s.name, role, *seg))
         elif kind == "circle":
@@ -223,7 +194,7 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
             n = int(s.name[-1]) if s.name[-1].isdigit() else 1
             off = (d[1] / norm * 0.012 * span * (n + 0.5), -d[0] / norm * 0.012 * span * (n + 0.5))
             a2, b2 = (a[0] + off[0], a[1] + off[1]), (b[0] + off[0], b[1] + off[1])
-            seg = clip(a2, (b2[0] - a2[0], b2[1] - a2[1]), box, 0.0, 1.0)
+            seg = layout.clip_segment(a2, b2, box)
             if seg is not None and math.dist(a2, b2) > 1e-9 * span:
                 lengths.append((s.name, *seg))
         elif kind == "envelope":
@@ -244,14 +215,5 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
 
 
 def exact_text(obj: Any) -> str:
-    """One line with the exact value of an object (for comments)."""
-    if isinstance(obj, Point):
-        return f"({obj.x}, {obj.y})"
-    if isinstance(obj, Line):
-        return f"through {exact_text(obj.point)} along {exact_text(obj.direction)}"
-    if isinstance(obj, Circle):
-        return f"centre {exact_text(obj.center)}, radius^2 = {obj.radius2}"
-    if isinstance(obj, sp.Basic):
-        return str(obj)
-    return "; ".join(f"circle {a.n} for theta in [{a.theta_start}, {a.theta_end}]"
-                     for a in getattr(obj, "arcs", ()))
+    """One line with the exact value of an object (ASCII, for comments)."""
+    return describe(obj, ascii=True)

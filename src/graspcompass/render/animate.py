@@ -44,7 +44,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 from matplotlib.text import Annotation, Text
 
-from ._view import numeric_objects
+from ..layout import numeric_objects
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, Theme
 from .timeline import (

@@ -32,7 +32,7 @@ from matplotlib.widgets import Slider
 from ..construction import internal_force_diagram
 from ..geometry import GeometryError, evaluate
 from ..grasp import Grasp, InvalidGraspError
-from ._view import wedge
+from ..layout import wedge
 from .theme import DEFAULT_THEME
 
 __all__ = ["PARAMS", "Explorer", "explore", "explore_notebook"]

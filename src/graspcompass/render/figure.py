@@ -22,7 +22,7 @@ from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import Polygon, Rectangle
 from matplotlib.text import Annotation, Text
 
-from ._view import (
+from ..layout import (
     clip_line,
     clip_segment,
     group_points,

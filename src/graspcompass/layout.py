@@ -1,7 +1,7 @@
 """Numbers for drawing: float values of the objects, the view box, clipping, labels text.
 
-Nothing here imports matplotlib; :mod:`graspcompass.render.labels` places the
-labels once the view box is known.
+Shared by :mod:`graspcompass.render` (matplotlib) and :mod:`graspcompass.export`
+(SVG, TikZ); nothing here imports matplotlib.
 """
 
 from __future__ import annotations
@@ -13,16 +13,19 @@ from typing import Any
 
 import numpy as np
 
-from ..geometry import evaluate
+from .geometry import evaluate
 
 __all__ = [
     "Box",
+    "clip",
     "clip_line",
     "clip_segment",
+    "group_points",
     "numeric_objects",
     "shape_extent",
     "tex",
     "view_box",
+    "wedge",
 ]
 
 #: ``(xmin, xmax, ymin, ymax)``.
@@ -137,15 +140,17 @@ def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
 
 def clip_line(point: XY, direction: XY, box: Box) -> tuple[XY, XY] | None:
     """The part of the infinite line ``point + t·direction`` inside ``box`` (Liang-Barsky)."""
-    return _clip(point, direction, box, -math.inf, math.inf)
+    return clip(point, direction, box)
 
 
 def clip_segment(a: XY, b: XY, box: Box) -> tuple[XY, XY] | None:
     """The part of the segment ``a b`` inside ``box``, or None."""
-    return _clip(a, (b[0] - a[0], b[1] - a[1]), box, 0.0, 1.0)
+    return clip(a, (b[0] - a[0], b[1] - a[1]), box, 0.0, 1.0)
 
 
-def _clip(p: XY, d: XY, box: Box, t0: float, t1: float) -> tuple[XY, XY] | None:
+def clip(p: XY, d: XY, box: Box, t0: float = -math.inf,
+         t1: float = math.inf) -> tuple[XY, XY] | None:
+    """The part of ``p + t·d`` (``t0 <= t <= t1``) inside ``box`` (Liang-Barsky), or None."""
     xmin, xmax, ymin, ymax = box
     for pi, di, lo, hi in ((p[0], d[0], xmin, xmax), (p[1], d[1], ymin, ymax)):
         if abs(di) < 1e-300:
