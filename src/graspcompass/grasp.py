@@ -10,6 +10,7 @@ given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from fractions import Fraction
 from typing import Any
@@ -376,6 +377,10 @@ class Grasp:
         >>> float(g.k_grasp(0.0))
         3.232050807568877
         """
+        if isinstance(theta, (float, np.floating)):  # one angle: no array machinery
+            S, C = self._floats()
+            s, c = math.sin(theta), math.cos(theta)
+            return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
         if _is_numeric(theta):
             S, C = self._floats()
             t = np.asarray(theta, dtype=float)

@@ -108,17 +108,21 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     """
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
     Vf = [(_f(v.x), _f(v.y)) for v in V]
-    # candidate angles: where two k's are equal, or where one k is zero
-    cands: list[tuple[float, Point]] = []
-    for w in [*(v for v in V), *(V[a] - V[b] for a, b in combinations(range(4), 2))]:
-        for e in (w.perp(), -w.perp()):
-            if e.x != 0 or e.y != 0:
-                cands.append((float(np.mod(np.arctan2(_f(e.x), -_f(e.y)), _TWO_PI)), e))
+    # candidate angles (floats): where two k's are equal, or where one k is zero; each
+    # remembers the vector w it is perpendicular to (index n, or the pair a, b)
+    cands: list[tuple[float, tuple[int, ...], int]] = []
+    for key in [(n,) for n in range(4)] + list(combinations(range(4), 2)):
+        wx = Vf[key[0]][0] - (Vf[key[1]][0] if len(key) == 2 else 0.0)
+        wy = Vf[key[0]][1] - (Vf[key[1]][1] if len(key) == 2 else 0.0)
+        if wx or wy:
+            for sign in (1, -1):  # e = ±perp(w) = ±(-wy, wx), θ = atan2(e.x, -e.y)
+                cands.append((float(np.mod(np.arctan2(-sign * wy, -sign * wx), _TWO_PI)),
+                              key, sign))
     cands.sort(key=lambda c: c[0])
-    cuts: list[tuple[float, Point]] = []
-    for t, e in cands:
-        if not cuts or t - cuts[-1][0] > 1e-12:
-            cuts.append((t, e))
+    cuts: list[tuple[float, tuple[int, ...], int]] = []
+    for cand in cands:
+        if not cuts or cand[0] - cuts[-1][0] > 1e-12:
+            cuts.append(cand)
 
     def best(t: float) -> int:
         s, c = np.sin(t), np.cos(t)
@@ -134,13 +138,16 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     bounds = [i for i in range(m) if winners[i - 1] != winners[i]]
     origin = Point(0, 0)
 
+    def exact_direction(i: int) -> Point:
+        _, key, sign = cuts[i]
+        w = V[key[0]] if len(key) == 1 else V[key[0]] - V[key[1]]
+        return w.perp() if sign == 1 else -w.perp()
+
     def point_at(i: int) -> tuple[sp.Expr, Point]:
         a, b = sorted((winners[i - 1], winners[i]))
-        if a == 0:
-            return _angle(cuts[i][1]), origin
-        p = objects.get(f"B{a}{b}")
-        if p is None:  # tangent circles: the break is at O
-            return _angle(cuts[i][1]), origin
+        p = objects.get(f"B{a}{b}") if a else None
+        if p is None:  # the largest k falls to 0 here (or tangent circles): the break is O
+            return _angle(exact_direction(i)), origin
         return _angle(p), p
 
     exact = {i: point_at(i) for i in bounds}
@@ -149,7 +156,7 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
         nxt = bounds[(j + 1) % len(bounds)]
         t0, p0 = exact[i]
         t1, p1 = exact[nxt]
-        if decide_sign(t1 - t0) != 1:
+        if cuts[nxt][0] <= cuts[i][0]:  # the arc wraps past θ = 2π
             t1 = canon(t1 + 2 * sp.pi)
         arcs.append(Arc(winners[i], t0, t1, p0, p1))
     return Envelope(tuple(arcs), V)

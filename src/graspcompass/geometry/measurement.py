@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .exact import canon
+from .exact import canon, decide_sign
 from .primitives import Line, Point
 
 __all__ = ["angle_of", "distance", "distance2", "signed_length"]
@@ -52,5 +52,16 @@ def angle_of(vector: Point) -> sp.Expr:
     >>> angle_of(Point(1, 0)), angle_of(Point(0, -1))
     (pi/2, 0)
     """
-    angle = sp.atan2(vector.x, -vector.y)
-    return angle.replace(sp.atan, lambda z: sp.atan(canon(z)))
+    x, y = vector.x, -vector.y  # θ = atan2(x, y), with the branch decided exactly
+    sy, sx = decide_sign(y), decide_sign(x)
+    if sy is None or sx is None:  # symbolic: leave the branch to sympy
+        angle = sp.atan2(x, y)
+        return angle.replace(sp.atan, lambda z: sp.atan(canon(z)))
+    if sy == 0:
+        if sx == 0:
+            raise ValueError("the zero vector has no direction")
+        return sx * sp.pi / 2
+    base = sp.atan(canon(x / y))
+    if sy > 0:
+        return base
+    return base + sp.pi if sx >= 0 else base - sp.pi
