@@ -184,24 +184,28 @@ _FIGURE_PAGES = {
 
 
 def link_reference(ref: str) -> str:
-    """The paper reference of a protocol step as MyST with links.
+    """The paper reference of a protocol step as MyST, with links.
 
-    ``eq. (28)-(29)`` links to the equations in ``paper.md``, ``Fig. 4(a)``
-    to the gallery page of that figure; section numbers stay text.
+    Each equation number after ``eq.``/``eqs.`` links to its target in
+    ``paper.md`` (``eq. (28)-(29)`` gives two links), ``Fig. 4(a)`` links to
+    the gallery page of that figure; section numbers stay text.
+
+    >>> link_reference("§3.3 V1 step (1), eq. (28)-(29)")
+    '§3.3 V1 step (1), eq. {ref}`(28) <eq-28>`-{ref}`(29) <eq-29>`'
     """
-    def eq(m: re.Match[str]) -> str:
-        n = int(m.group(2))
-        label = m.group(0)
-        return f"{{ref}}`{label} <eq-{n}>`" if n in _EQUATIONS else label
+    def number(m: re.Match[str]) -> str:
+        n = int(m.group(1))
+        return f"{{ref}}`({n}) <eq-{n}>`" if n in _EQUATIONS else m.group(0)
 
-    def fig(m: re.Match[str]) -> str:
+    def equations(m: re.Match[str]) -> str:
+        return m.group(1) + re.sub(r"\((\d+)\)", number, m.group(2))
+
+    def figure(m: re.Match[str]) -> str:
         page = _FIGURE_PAGES.get(m.group(1))
         return f"{{doc}}`{m.group(0)} </{page}>`" if page else m.group(0)
 
-    out = re.sub(r"(eqs?\. )?\((\d+)\)(?:[-–/]\((\d+)\))?", lambda m: eq(m) if m.group(1) or
-                 m.group(0).startswith("(") and int(m.group(2)) > 1 and "step" not in ref[
-                     max(0, m.start() - 6):m.start()] else m.group(0), ref)
-    return re.sub(r"Fig\. (\d)(\([a-d]\))?", fig, out)
+    out = re.sub(r"(eqs?\. )(\(\d+\)(?:[-–/, ]+\(\d+\))*)", equations, ref)
+    return re.sub(r"Fig\. (\d)(\([a-d]\))?", figure, out)
 
 
 def _steps_table() -> None:
@@ -211,36 +215,41 @@ def _steps_table() -> None:
 
     c = internal_force_diagram(Grasp.preset("fig6"))
     rows = ["| # | object | instrument | what is drawn | paper | exact value |",
-            "| --- | --- | --- | --- | --- | --- |"]
+            "| --: | --- | --- | --- | --- | --- |"]
     for s in c.steps:
-        value = describe(s.obj).replace("|", "\\|").replace("*", r"\*")
-        if len(value) > 90:
-            value = value[:87] + "…"
-        caption = s.caption.replace("|", "\\|").replace("*", r"\*")
-        rows.append(f"| {s.index} | `{s.name}` | {s.instrument} | {caption} | "
-                    f"{link_reference(s.ref)} | {value} |")
+        value = describe(s.obj)
+        if len(value) > 80:
+            value = value[:77] + "…"
+        cells = [str(s.index), f"`{s.name}`", s.instrument, _md(s.caption),
+                 link_reference(s.ref), _md(value)]
+        rows.append("| " + " | ".join(cells) + " |")
     _write(GENERATED / "fig6-steps.md", "\n".join(rows) + "\n")
 
 
+def _md(text: str) -> str:
+    """Plain text safe in a Markdown table cell."""
+    return re.sub(r"([|*_`\\[\]<>])", r"\\\1", text)
+
+
 def _main_job() -> None:
-    """Run ``graspcompass --out _generated/main-job`` and keep what it printed."""
+    """Run ``graspcompass`` in ``_generated/``; keep its files and an excerpt of its output."""
     from graspcompass.cli import main
 
-    out = GENERATED / "main-job"
     buf = io.StringIO()
-    with contextlib.redirect_stdout(buf):
-        status = main(["--out", str(out), "--quiet"])
+    here = os.getcwd()
+    os.chdir(GENERATED)
+    try:
+        with contextlib.redirect_stdout(buf):
+            status = main([])
+    finally:
+        os.chdir(here)
     if status != 0:
         raise RuntimeError("the main job `graspcompass` failed")
-    buf = io.StringIO()
-    from graspcompass.cli import protocol_table
-    from graspcompass import Grasp, internal_force_diagram
-
-    c = internal_force_diagram(Grasp.preset("fig6"))
-    lines = protocol_table(c).splitlines()
-    shown = lines[:2] + [ln for ln in lines[2:] if re.match(r"(3|9|11|12|14|17|23|29|35|36|46) ",
-                                                          ln)]
-    _write(GENERATED / "main-job.txt", f"{c.grasp.title}\n\n" + "\n".join(shown) + "\n")
+    lines = buf.getvalue().rstrip().splitlines()
+    keep = [ln for ln in lines if not re.match(r"\d+ ", ln)
+            or re.match(r"(0|3|12|14|17|23|29|35|36|46) ", ln)]
+    text = "\n".join(ln if len(ln) < 150 else ln[:147] + "..." for ln in keep)
+    _write(GENERATED / "main-job.txt", text.replace("\n\nwrote", "...\n\nwrote") + "\n")
 
 
 def _generate(app: object) -> None:
