@@ -661,3 +661,23 @@ def test_random_exact_V_and_k(p):
     # k_n(θ + π) = −k_n(θ), exactly
     for a, b in zip(g.k(theta), g.k(theta + pi)):
         assert is_zero(a + b)
+
+
+def test_vectorised_contact_forces_balance_and_bind():
+    """F(θ, k_grasp) on an array of θ: L F = M (L from the moments, built here) and the
+    tightest friction inequality of (8)-(11) is exactly met, the others hold."""
+    g = Grasp.preset("table1c")
+    t = np.linspace(0.0, 2 * np.pi, 181)
+    k = g.k_grasp(t)
+    F = g.contact_forces(t, k)
+    assert F.shape == (4, t.size)
+    x1, x2, y, mu1, mu2 = 2.0, 2.0, 2.0, 0.5, 1.4  # Table I(c), φ = π/2: n1 = (-1, 0), n2 = (1, 0)
+    forces = [((x1, y), (-1.0, 0.0)), ((x1, y), (0.0, 1.0)),
+              ((-x2, y), (1.0, 0.0)), ((-x2, y), (0.0, 1.0))]
+    L = np.array([[f[0] for _, f in forces], [f[1] for _, f in forces],
+                  [p[0] * f[1] - p[1] * f[0] for p, f in forces]])
+    assert np.abs(L @ F - np.vstack([-np.sin(t), np.cos(t), 0 * t])).max() < 1e-12
+    ineq = np.vstack([mu1 * F[0] - F[1], mu2 * F[2] - F[3], mu1 * F[0] + F[1], mu2 * F[2] + F[3]])
+    assert ineq.min() > -1e-12
+    binding = k > 1e-9
+    assert np.abs(ineq.min(axis=0)[binding]).max() < 1e-12

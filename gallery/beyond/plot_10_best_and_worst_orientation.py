@@ -63,10 +63,9 @@ for name in gc.PRESETS:
 grasp = gc.Grasp.preset("fig6")
 construction = gc.internal_force_diagram(grasp)
 (theta_w, k_w, at_w), (theta_b, k_b, at_b) = extremes(construction)
-print("worst: θ =", theta_w, "  k =", sp.radsimp(k_w), "  F_int/W =",
-      sp.radsimp(k_w / grasp.D))
-print("best:  θ =", theta_b, "  k =", sp.radsimp(k_b), "  F_int/W =",
-      sp.radsimp(k_b / grasp.D))
+for word, t, kk in (("worst", theta_w, k_w), ("best ", theta_b, k_b)):
+    kk = sp.sqrtdenest(kk)
+    print(f"{word}: θ = {t},  k_grasp = {kk},  F_int/W = {sp.radsimp(kk / grasp.D)}")
 # a numeric check against eq. (25) on a fine grid
 theta = np.linspace(0, 2 * np.pi, 200_001)
 k = grasp.k_grasp(theta)
@@ -78,17 +77,18 @@ print(f"grid: max k_grasp = {k.max():.6f} (exact {float(k_w):.6f}), "
 # --------------
 fig, ax = plt.subplots(figsize=(6.5, 6.5), layout="constrained")
 draw_construction(construction, ax=ax, labels=False)
-for t, kk, color, word in ((theta_w, k_w, "#e63946", "worst"), (theta_b, k_b, "#2a9d8f", "best")):
+for t, kk, color, word, off in ((theta_w, k_w, "#e63946", "worst", (10, -12)),
+                                (theta_b, k_b, "#2a9d8f", "best", (40, 50))):
     t, kk = float(t), float(kk)
     e = np.array([np.sin(t), -np.cos(t)])
     ax.annotate("", xy=tuple(kk * e), xytext=(0, 0),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=2.5), zorder=8)
     ax.plot(*(kk * e), "o", color=color, ms=8, zorder=9)
-    ax.annotate(f"{word}: θ = {np.degrees(t):.1f}°\nk = {kk:.3f}", kk * e, xytext=(10, -12),
-                textcoords="offset points", color=color, fontsize=10, fontweight="bold",
+    ax.annotate(f"{word}: θ = {np.degrees(t):.1f}°\nk = {kk:.3f}", kk * e, xytext=off,
+                textcoords="offset points", arrowprops=dict(arrowstyle="-", color=color), color=color, fontsize=10, fontweight="bold",
                 bbox=dict(fc="white", ec="none", alpha=0.8))
-ax.set_title("Fig. 6 grasp: the weight along the red arrow needs the most force, "
-             "along the green one the least", fontsize=10)
+ax.set_title("Fig. 6 grasp: the worst (red) and the best (green) direction of the weight",
+             fontsize=10)
 plt.show()
 
 # %%

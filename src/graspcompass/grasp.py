@@ -424,24 +424,60 @@ class Grasp:
         t, fe = sp.sympify(theta), sp.sympify(external_force)
         return sp.Matrix([-fe * sp.sin(t), fe * sp.cos(t), 0])
 
-    def F_T(self, theta: Any, external_force: Any = 1) -> sp.Matrix:
-        """Particular solution ``F_T = L^† M`` as printed in eq. (13)."""
-        t, fe = sp.sympify(theta), sp.sympify(external_force)
-        s, c = sp.sin(t), sp.cos(t)
-        D, x1, x2, y = self.D, self.x1, self.x2, self.y
-        s1, c1, s2, c2 = self.s1, self.c1, self.s2, self.c2
+    def F_T(self, theta: Any, external_force: Any = 1) -> Any:
+        """Particular solution ``F_T = L^† M`` as printed in eq. (13).
+
+        A sympy Matrix (4 × 1) for a sympy θ; for a float or numpy θ an array of
+        shape ``(4,) + shape(θ)``.
+        """
+        numeric = _is_numeric(theta)
+        if numeric:
+            t = np.asarray(theta, dtype=float)
+            s, c, fe = np.sin(t), np.cos(t), float(external_force)
+            D, x1, x2, y, s1, c1, s2, c2 = (float(v) for v in (
+                self.D, self.x1, self.x2, self.y, self.s1, self.c1, self.s2, self.c2))
+        else:
+            t, fe = sp.sympify(theta), sp.sympify(external_force)
+            s, c = sp.sin(t), sp.cos(t)
+            D, x1, x2, y = self.D, self.x1, self.x2, self.y
+            s1, c1, s2, c2 = self.s1, self.c1, self.s2, self.c2
         a, b = y * s - x2 * c, y * s + x1 * c
         v = [D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
              -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]
+        if numeric:
+            return fe / (2 * D) * np.array(v)
         return sp.Matrix([fe / (2 * D) * e for e in v])
 
-    def F_N(self, external_force: Any = 1) -> sp.Matrix:
-        """Internal-force direction ``F_N`` of eq. (15), a null vector of L."""
+    def F_N(self, external_force: Any = 1) -> Any:
+        """Internal-force direction ``F_N`` of eq. (15), a null vector of L.
+
+        A sympy Matrix; a numpy array of shape (4,) for a float ``external_force``.
+        """
+        if isinstance(external_force, (float, np.floating)):
+            return external_force / float(self.D) * np.array(
+                [float(v) for v in (self.s1, self.c1, self.s2, self.c2)])
         fe = sp.sympify(external_force)
         return sp.Matrix([fe / self.D * e for e in (self.s1, self.c1, self.s2, self.c2)])
 
-    def contact_forces(self, theta: Any, k: Any, external_force: Any = 1) -> sp.Matrix:
-        """``F = [N1, F1, N2, F2]^T = F_T + k F_N``, eq. (16)."""
+    def contact_forces(self, theta: Any, k: Any, external_force: Any = 1) -> Any:
+        """``F = [N1, F1, N2, F2]^T = F_T + k F_N``, eq. (16).
+
+        Exact for a sympy θ; for a float or numpy θ (and ``k`` a number or an array
+        broadcasting with θ) an array of shape ``(4,) + shape(θ)``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> g = Grasp.preset("table1a")
+        >>> F = g.contact_forces(np.array([0.0, 1.0]), g.k_grasp(np.array([0.0, 1.0])))
+        >>> F.shape
+        (4, 2)
+        """
+        if _is_numeric(theta):
+            fn = self.F_N(float(external_force))
+            ft = self.F_T(theta, float(external_force))
+            kk = np.asarray(k, dtype=float)
+            return ft + np.multiply.outer(fn, np.ones(ft.shape[1:])) * kk
         return self.F_T(theta, external_force) + sp.sympify(k) * self.F_N(external_force)
 
     def subs(self, values: Mapping) -> Grasp:
