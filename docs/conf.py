@@ -171,9 +171,9 @@ def _proof_report() -> None:
     _write(out, text)
 
 
-# The paper's equations that docs/paper.md gives a target ``eq-N`` to.
-_EQUATIONS = {1, 2, 5, 13, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30,
-              31, 32, 33, 34, 35, 36, 37, 38, 39}
+# The paper's equations that paper.md gives a target ``(eq-N)=`` to.
+_EQUATIONS = {int(n) for n in re.findall(r"^\(eq-(\d+)\)=$",
+                                         (DOCS / "paper.md").read_text(encoding="utf-8"), re.M)}
 _FIGURE_PAGES = {
     "2": "auto_examples/plot_01_fig2_grasp_and_friction_cones",
     "3": "auto_examples/plot_02_fig3_thales_circle",

@@ -81,9 +81,10 @@ def _value(v: Any, name: str) -> sp.Expr:
 
 def _fmt_angle(v: sp.Expr) -> str:
     try:
-        return f"{float(v / sp.pi):.3g}π"
+        f = float(v / sp.pi)
     except TypeError:
         return str(v)
+    return f"{f:.3g}π" if math.isfinite(f) and abs(f) < 1e6 else f"{sp.N(v, 4)} rad"
 
 
 def _fmt(v: sp.Expr) -> str:
