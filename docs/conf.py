@@ -74,6 +74,7 @@ html_title = f"graspcompass {release}"
 html_static_path = ["_static"]
 html_css_files = ["graspcompass.css"]
 html_show_sourcelink = False
+html_favicon = "_static/favicon.svg"
 html_theme_options = {
     "sidebar_hide_name": False,
     "navigation_with_keys": True,
@@ -109,8 +110,10 @@ if _local_mathjax():
     html_static_path.append("_generated/mathjax-static")
     mathjax_path = "mathjax/MathJax.js?config=TeX-AMS_SVG"
     mathjax2_config = {
+        # MyST marks its pages ``tex2jax_ignore`` and its math ``math``: process that
         "tex2jax": {"inlineMath": [["\\(", "\\)"]], "displayMath": [["\\[", "\\]"]],
-                    "processRefs": False, "processEnvironments": False},
+                    "processRefs": False, "processEnvironments": False,
+                    "processClass": "tex2jax_process|mathjax_process|math|output_area"},
         "SVG": {"font": "TeX"},
         "showMathMenu": False,
         "messageStyle": "none",
@@ -120,7 +123,7 @@ if _local_mathjax():
 autodoc_typehints = "description"
 autodoc_typehints_description_target = "documented_params"
 autodoc_member_order = "bysource"
-autodoc_default_options = {"members": True, "show-inheritance": True}
+autodoc_default_options = {"members": True, "show-inheritance": True, "no-value": True}
 autodoc_preserve_defaults = True
 autoclass_content = "class"
 napoleon_google_docstring = False
@@ -128,6 +131,7 @@ napoleon_numpy_docstring = True
 napoleon_use_rtype = False
 napoleon_use_param = True
 napoleon_attr_annotations = True
+napoleon_use_ivar = True  # "Attributes" as fields: no second description of dataclass fields
 
 # -- the gallery -------------------------------------------------------------------------------
 sphinx_gallery_conf = {
@@ -232,7 +236,8 @@ def _md(text: str) -> str:
 
 
 def _main_job() -> None:
-    """Run ``graspcompass`` in ``_generated/``; keep its files and an excerpt of its output."""
+    """Run ``graspcompass`` in ``_generated/``; keep its files and an excerpt of its output
+    (the givens, the drawing of V1 and the envelope)."""
     from graspcompass.cli import main
 
     buf = io.StringIO()
@@ -245,11 +250,39 @@ def _main_job() -> None:
         os.chdir(here)
     if status != 0:
         raise RuntimeError("the main job `graspcompass` failed")
-    lines = buf.getvalue().rstrip().splitlines()
-    keep = [ln for ln in lines if not re.match(r"\d+ ", ln)
-            or re.match(r"(0|3|12|14|17|23|29|35|36|46) ", ln)]
-    text = "\n".join(ln if len(ln) < 150 else ln[:147] + "..." for ln in keep)
-    _write(GENERATED / "main-job.txt", text.replace("\n\nwrote", "...\n\nwrote") + "\n")
+    keep, gap = [], False
+    for line in buf.getvalue().rstrip().splitlines():
+        row = re.match(r"(\d+) ", line)
+        if row and int(row.group(1)) not in (0, 1, 2, 3, 4, 12, 13, 14, 15, 16, 17, 46):
+            if not gap:
+                keep.append("...")
+            gap = True
+            continue
+        gap = False
+        keep.append(line if len(line) < 150 else line[:147] + "...")
+    _write(GENERATED / "main-job.txt", "\n".join(keep) + "\n")
+
+
+# numpydoc allows no free text inside a "Parameters" section: a paragraph after the last
+# parameter is read by napoleon as more parameters (a docutils warning, fatal with -W).
+# Until such a docstring is fixed in the source, give that paragraph a "Notes" heading.
+_SECTION = re.compile(r"^(Parameters|Other Parameters|Attributes)$")
+_PARAM = re.compile(r"^\*{0,2}\w+(, \*{0,2}\w+)*( : .*)?$")
+
+
+def _notes_after_parameters(app, what, name, obj, options, lines: list[str]) -> None:
+    if not str(name).startswith("graspcompass"):
+        return
+    section = False
+    for i, line in enumerate(lines):
+        if _SECTION.match(line) and i + 1 < len(lines) and set(lines[i + 1]) == {"-"}:
+            section = True
+        elif section and line and not line[0].isspace() and not set(line) <= {"-"}:
+            if i + 1 < len(lines) and lines[i + 1] and set(lines[i + 1]) == {"-"}:
+                section = False  # the next section heading
+            elif not _PARAM.match(line) and i > 0 and not lines[i - 1]:
+                lines[i:i] = ["Notes", "-----"]
+                return
 
 
 def _generate(app: object) -> None:
@@ -260,7 +293,9 @@ def _generate(app: object) -> None:
 
 
 def setup(app: object) -> dict[str, object]:
-    # before sphinx-gallery's own builder-inited handler (priority 500) does not matter:
     # the generated files are read later, with the other sources
     app.connect("builder-inited", _generate, priority=400)  # type: ignore[attr-defined]
+    # before napoleon (priority 500) turns the numpydoc sections into fields
+    app.connect("autodoc-process-docstring", _notes_after_parameters,  # type: ignore[attr-defined]
+                priority=400)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -63,7 +63,7 @@ for p, n, name in ((p1, n1, "n_1"), (p2, n2, "n_2")):
     ax.add_patch(FancyArrowPatch(tuple(p), tuple(p + 0.55 * n), arrowstyle="-|>",
                                  mutation_scale=12, color=ink, lw=1.2, zorder=6))
     ax.annotate(f"${name}$", p + 0.6 * n, ha="center", va="center", fontsize=11)
-    ax.plot(*np.array([p, p + [0, -0.45]]).T, color=ink, lw=0.7, ls=":")
+    ax.plot(*np.array([p, p + np.array([0, -0.45])]).T, color=ink, lw=0.7, ls=":")
 
 # the angles φ (from the negative y-axis to the normal) and ξ (normal to cone side)
 deg1, deg2 = np.degrees([phi1, xi1]), np.degrees([phi2, xi2])

@@ -40,8 +40,9 @@ envelope = construction["envelope"]
 # starts.  An arc of "circle 0" would be a direction range where no internal force is
 # needed at all (k_grasp = 0).
 for arc in envelope.arcs:
-    print(f"circle {arc.n}:  θ from {arc.theta_start}  (≈ {np.degrees(float(arc.theta_start)):6.1f}°)"
-          f"  to {np.degrees(float(arc.theta_end)):6.1f}°,  starting at {arc.start}")
+    start, end = np.degrees(float(arc.theta_start)), np.degrees(float(arc.theta_end))
+    print(f"circle {arc.n}:  θ from {arc.theta_start}  (≈ {start:6.1f}°)  to {end:6.1f}°,"
+          f"  starting at {arc.start}")
 
 # %%
 # The drawing

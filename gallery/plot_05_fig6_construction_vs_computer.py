@@ -83,3 +83,4 @@ plt.show()
 # plot on top (the thin yellow curve inside the bold envelope).
 plt.figure(figure_diagram(construction))
 plt.show()
+# sphinx_gallery_thumbnail_number = 2

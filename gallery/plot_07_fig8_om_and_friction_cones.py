@@ -20,10 +20,11 @@ contact; the upper side of cone :math:`i` always passes above it (condition (1))
 
 The four grasps below show every case:
 
-- (a) **inside both** cones: Table I(a) (Fig. 7(a)); also Fig. 6;
-- (b) **outside both** cones: Table I(b) (Fig. 7(b));
-- (c) **inside the cone at** :math:`P_2` **only**: Table I(c) (Fig. 7(c)), both points right;
-- (c′) **inside the cone at** :math:`P_1` **only**: the generic grasp of Figs. 4 and 5,
+- case (a), **inside both** cones: Table I(a) (Fig. 7(a)); also Fig. 6;
+- case (b), **outside both** cones: Table I(b) (Fig. 7(b));
+- case (c), **inside the cone at** :math:`P_2` **only**: Table I(c) (Fig. 7(c)), both points
+  right;
+- case (c′), **inside the cone at** :math:`P_1` **only**: the generic grasp of Figs. 4 and 5,
   both points left.
 
 ``graspcompass verify`` proves the rule for all admissible parameters (claims ``fig8-V3``,

@@ -85,7 +85,8 @@ for t, kk, color, word, off in ((theta_w, k_w, "#e63946", "worst", (10, -12)),
                 arrowprops=dict(arrowstyle="-|>", color=color, lw=2.5), zorder=8)
     ax.plot(*(kk * e), "o", color=color, ms=8, zorder=9)
     ax.annotate(f"{word}: θ = {np.degrees(t):.1f}°\nk = {kk:.3f}", kk * e, xytext=off,
-                textcoords="offset points", arrowprops=dict(arrowstyle="-", color=color), color=color, fontsize=10, fontweight="bold",
+                textcoords="offset points", arrowprops=dict(arrowstyle="-", color=color),
+                color=color, fontsize=10, fontweight="bold",
                 bbox=dict(fc="white", ec="none", alpha=0.8))
 ax.set_title("Fig. 6 grasp: the worst (red) and the best (green) direction of the weight",
              fontsize=10)
@@ -101,7 +102,8 @@ force = grasp.internal_force(theta_of_orientation(alpha), 1.0)
 fig, ax = plt.subplots(figsize=(8, 3.6), layout="constrained")
 ax.plot(np.degrees(alpha), force, color="#0b1f4b", lw=2)
 d = float(grasp.D)
-ax.axhline(float(k_w) / d, color="#e63946", ls="--", lw=1, label="max |V_n| / (x1 + x2): any orientation")
+ax.axhline(float(k_w) / d, color="#e63946", ls="--", lw=1,
+           label="max |V_n| / (x1 + x2): any orientation")
 for t, kk, color in ((theta_w, k_w, "#e63946"), (theta_b, k_b, "#2a9d8f")):
     a = np.degrees(float(theta_of_orientation(float(t))))
     ax.plot([a], [float(kk) / d], "o", color=color, ms=8)

@@ -155,6 +155,7 @@ class Grasp:
         self.title = title
         self.numeric = any(has_float(v) for v in self.params.values())
         self.assumptions: tuple[sp.Basic, ...] = ()
+        self._SC: tuple[np.ndarray, np.ndarray] | None = None  # float S_n, C_n, on demand
         self._validate()
         self.s1, self.c1 = sp.sin(self.phi1), sp.cos(self.phi1)
         self.s2, self.c2 = sp.sin(self.phi2), sp.cos(self.phi2)
@@ -339,13 +340,13 @@ class Grasp:
         return tuple(Point(s, c) for s, c in zip(self.S, self.C))  # type: ignore[return-value]
 
     def _floats(self) -> tuple[np.ndarray, np.ndarray]:
-        if not hasattr(self, "_SC"):
+        if self._SC is None:
             try:
                 S = np.array([float(v) for v in self.S])
                 C = np.array([float(v) for v in self.C])
             except TypeError as exc:
                 raise TypeError("a symbolic grasp cannot be evaluated on numeric θ") from exc
-            object.__setattr__(self, "_SC", (S, C))
+            self._SC = (S, C)
         return self._SC
 
     # -- k_n and k_grasp --------------------------------------------------------
