@@ -266,23 +266,6 @@ def _main_job() -> None:
 # numpydoc allows no free text inside a "Parameters" section: a paragraph after the last
 # parameter is read by napoleon as more parameters (a docutils warning, fatal with -W).
 # Until such a docstring is fixed in the source, give that paragraph a "Notes" heading.
-_SECTION = re.compile(r"^(Parameters|Other Parameters|Attributes)$")
-_PARAM = re.compile(r"^\*{0,2}\w+(, \*{0,2}\w+)*( : .*)?$")
-
-
-def _notes_after_parameters(app, what, name, obj, options, lines: list[str]) -> None:
-    if not str(name).startswith("graspcompass"):
-        return
-    section = False
-    for i, line in enumerate(lines):
-        if _SECTION.match(line) and i + 1 < len(lines) and set(lines[i + 1]) == {"-"}:
-            section = True
-        elif section and line and not line[0].isspace() and not set(line) <= {"-"}:
-            if i + 1 < len(lines) and lines[i + 1] and set(lines[i + 1]) == {"-"}:
-                section = False  # the next section heading
-            elif not _PARAM.match(line) and i > 0 and not lines[i - 1]:
-                lines[i:i] = ["Notes", "-----"]
-                return
 
 
 def _generate(app: object) -> None:
@@ -296,6 +279,4 @@ def setup(app: object) -> dict[str, object]:
     # the generated files are read later, with the other sources
     app.connect("builder-inited", _generate, priority=400)  # type: ignore[attr-defined]
     # before napoleon (priority 500) turns the numpydoc sections into fields
-    app.connect("autodoc-process-docstring", _notes_after_parameters,  # type: ignore[attr-defined]
-                priority=400)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -98,6 +98,11 @@ def _fmt(v: sp.Expr) -> str:
 class Grasp:
     """A planar object held at two point contacts with friction (§2.2).
 
+    Text such as ``"sqrt(3)/2"``, ``"pi/3"`` or ``"1.2"`` (= 6/5) is read
+    exactly; Python floats select the numeric path.  Symbols are accepted;
+    a condition that cannot be decided for them becomes an assumption
+    (:attr:`assumptions`).
+
     Parameters
     ----------
     x1, x2, y : number or str
@@ -108,11 +113,6 @@ class Grasp:
     mu1, mu2, xi1, xi2 : number or str, optional
         Friction at each contact: the coefficient μi or the cone half angle ξi
         (tan ξi = μi, eq. (22)); give exactly one of the two per contact.
-
-    Text such as ``"sqrt(3)/2"``, ``"pi/3"`` or ``"1.2"`` (= 6/5) is read
-    exactly; Python floats select the numeric path.  Symbols are accepted;
-    a condition that cannot be decided for them becomes an assumption
-    (:attr:`assumptions`).
 
     Raises
     ------

@@ -105,8 +105,8 @@ def to_markdown(reports: Sequence[ClaimReport]) -> str:
             out.append(f"- **{r.claim.ref}** — {r.claim.statement}: REFUTED "
                        f"(counterexample {cx}). {r.claim.note}")
             if fix is not None:
-                out.append(f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
-                           f"{fix.claim.statement}")
+                out += ["", f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
+                        f"{fix.claim.statement}", ""]
     out += ["", "## All claims", "", "| id | paper | statement | status | method | s |",
             "| --- | --- | --- | --- | --- | --- |"]
     for r in reports:

@@ -1,0 +1,302 @@
+"""Checks of the documentation (docs/) and the gallery (gallery/).
+
+- every Python session shown in a page (```` ```pycon ```` blocks) runs as a doctest;
+- every ``graspcompass`` command shown in a page parses, with valid grasp parameters;
+- the gallery has a script for each figure of the paper, the animations and the pages
+  beyond the paper;
+- the built site (``docs/_build/html``, made by ``.ci/build-docs.sh``) opens in headless
+  Chromium: every image of the gallery index, the Fig. 6 page, the front page and the
+  tutorial loads, no request gets a 404, the console reports no failed resource, and a
+  screenshot of each page is saved in ``docs/_build/screenshots/``.  These tests are
+  skipped, saying why, when the site is not built or Chromium is not installed.
+"""
+
+from __future__ import annotations
+
+import doctest
+import functools
+import http.server
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import tempfile
+import textwrap
+import threading
+import urllib.parse
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
+GALLERY = ROOT / "gallery"
+HTML = DOCS / "_build" / "html"
+SCREENSHOTS = DOCS / "_build" / "screenshots"
+SKIP_DIRS = ("_build", "_generated", "auto_examples")
+
+PAGES = sorted(p for p in DOCS.rglob("*.md") if not set(p.relative_to(DOCS).parts) &
+               set(SKIP_DIRS))
+
+
+def _blocks(page: Path, language: str) -> list[tuple[int, str]]:
+    """``(line, text)`` of the fenced code blocks of ``language`` in a Markdown page."""
+    text = page.read_text(encoding="utf-8")
+    out = []
+    for m in re.finditer(rf"^([ \t]*)```{language}\n(.*?)^\1```", text, re.S | re.M):
+        out.append((text.count("\n", 0, m.start()) + 2, textwrap.dedent(m.group(2))))
+    return out
+
+
+# -- the Python sessions ------------------------------------------------------------------------
+@pytest.mark.parametrize("page", [p for p in PAGES if _blocks(p, "pycon")],
+                         ids=lambda p: str(p.relative_to(DOCS)))
+def test_python_sessions_run(page: Path, monkeypatch: pytest.MonkeyPatch,
+                             tmp_path: Path) -> None:
+    pytest.importorskip("matplotlib")
+    monkeypatch.setenv("MPLBACKEND", "agg")
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # files the sessions write
+    parser = doctest.DocTestParser()
+    runner = doctest.DocTestRunner(
+        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE, verbose=False)
+    globs: dict = {}
+    report: list[str] = []
+    for line, block in _blocks(page, "pycon"):
+        test = parser.get_doctest(block, globs, f"{page.name}:{line}", str(page), line - 1)
+        runner.run(test, out=report.append, clear_globs=False)
+        globs = test.globs  # the blocks of a page are one session
+    results = runner.summarize(verbose=False)
+    assert results.failed == 0, "".join(report)
+    assert results.attempted > 0
+
+
+# -- the commands ------------------------------------------------------------------------------
+def _commands() -> list[tuple[str, str, bool]]:
+    """``(where, command, fails)`` for each ``$ graspcompass ...`` line of a console block;
+    ``fails`` when the next line shows an error message."""
+    out = []
+    for page in PAGES:
+        for line, block in _blocks(page, "console"):
+            rows = block.splitlines()
+            for i, row in enumerate(rows):
+                if row.startswith("$ graspcompass"):
+                    nxt = rows[i + 1] if i + 1 < len(rows) else ""
+                    cmd = re.split(r"\s(?:\||>|&&)\s", row[2:])[0]
+                    out.append((f"{page.relative_to(DOCS)}:{line + i}", cmd,
+                                "error:" in nxt))
+    return out
+
+
+COMMANDS = _commands()
+
+
+def test_pages_show_commands() -> None:
+    assert len(COMMANDS) >= 20
+    assert {c.split()[1] for _, c, _ in COMMANDS if len(c.split()) > 1} >= {
+        "draw", "steps", "k", "presets", "animate", "export", "verify"}
+
+
+@pytest.mark.parametrize(("where", "command", "fails"), COMMANDS,
+                         ids=[w for w, _, _ in COMMANDS])
+def test_commands_parse(where: str, command: str, fails: bool) -> None:
+    from graspcompass.cli import build_parser, grasp_from_args
+
+    args = build_parser().parse_args(shlex.split(command)[1:])
+    if not hasattr(args, "preset"):
+        return
+    if fails:
+        with pytest.raises(ValueError):
+            grasp_from_args(args)
+    else:
+        grasp_from_args(args)  # the grasp parameters are valid
+
+
+def test_getting_started_shows_the_readme_commands() -> None:
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Two commands", 1)[-1].split("\n## ", 1)[0]
+    commands = re.findall(r"```(?:bash|sh|console)\n(.*?)```", section, re.S)
+    assert commands, "README.md has no '## Two commands' section with code blocks"
+    page = (DOCS / "getting-started.md").read_text(encoding="utf-8")
+    for block in commands:
+        for line in block.strip().splitlines():
+            assert f"$ {line.removeprefix('$ ')}" in page, (
+                f"docs/getting-started.md does not show the README's command {line!r}")
+
+
+# -- the gallery -------------------------------------------------------------------------------
+def _scripts(folder: Path) -> list[Path]:
+    return sorted(folder.glob("plot_*.py"))
+
+
+def test_gallery_has_every_figure() -> None:
+    names = " ".join(p.name for p in _scripts(GALLERY))
+    for fig in ("fig2", "fig3", "fig4", "fig5", "fig6", "fig7", "fig8"):
+        assert f"_{fig}_" in names, f"no gallery script for {fig}"
+    animations = " ".join(p.name for p in _scripts(GALLERY / "animations"))
+    assert "construction" in animations and "sweep" in animations
+    beyond = " ".join(p.name for p in _scripts(GALLERY / "beyond"))
+    for topic in ("worst", "friction", "slips"):
+        assert topic in beyond
+    for folder in (GALLERY, GALLERY / "animations", GALLERY / "beyond"):
+        assert (folder / "GALLERY_HEADER.rst").is_file()
+
+
+@pytest.mark.parametrize("script", _scripts(GALLERY) + _scripts(GALLERY / "animations") +
+                         _scripts(GALLERY / "beyond"), ids=lambda p: p.name)
+def test_gallery_script_has_a_titled_docstring(script: Path) -> None:
+    import ast
+
+    doc = ast.get_docstring(ast.parse(script.read_text(encoding="utf-8")), clean=False)
+    assert doc, f"{script.name}: sphinx-gallery needs a docstring"
+    lines = doc.strip("\n").splitlines()
+    assert len(lines) > 3 and set(lines[1]) == {"="} and len(lines[1]) >= len(lines[0]), (
+        f"{script.name}: the docstring must start with a title underlined with '='")
+
+
+# -- the built site in a browser ---------------------------------------------------------------
+BROWSER_PAGES = {
+    "gallery-index": "auto_examples/index.html",
+    "fig6": "auto_examples/plot_05_fig6_construction_vs_computer.html",
+    "front-page": "index.html",
+    "tutorial": "tutorial.html",
+}
+CHECKER = "/__graspcompass_image_check__.html"
+
+# a same-origin page that loads one page in a frame and reports its images as JSON
+CHECKER_HTML = """<!doctype html><meta charset="utf-8"><title>image check</title>
+<link rel="icon" href="data:,">
+<pre id="result">pending</pre>
+<iframe id="page" src="{page}" style="width:1280px;height:4000px"></iframe>
+<script>
+const frame = document.getElementById("page");
+frame.addEventListener("load", () => {{
+  const images = Array.from(frame.contentDocument.images);
+  images.forEach(img => {{ img.loading = "eager"; }});
+  const report = () => {{
+    if (images.some(img => !img.complete)) {{ setTimeout(report, 50); return; }}
+    const broken = images.filter(img => img.naturalWidth === 0)
+                         .map(img => img.getAttribute("src"));
+    document.getElementById("result").textContent =
+      JSON.stringify({{count: images.length, broken: broken}});
+  }};
+  report();
+}});
+</script>"""
+
+
+def _chromium() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+class _Server:
+    """The built site on 127.0.0.1 (a free port), recording the status of every request."""
+
+    def __init__(self, root: Path) -> None:
+        self.requests: list[tuple[str, int]] = []
+        server = self
+
+        class Handler(http.server.SimpleHTTPRequestHandler):
+            def do_GET(self) -> None:
+                url = urllib.parse.urlsplit(self.path)
+                if url.path == CHECKER:
+                    page = urllib.parse.parse_qs(url.query)["page"][0]
+                    body = CHECKER_HTML.format(page="/" + page).encode()
+                    self.send_response(200)
+                    self.send_header("Content-Type", "text/html; charset=utf-8")
+                    self.send_header("Content-Length", str(len(body)))
+                    self.end_headers()
+                    self.wfile.write(body)
+                    return
+                super().do_GET()
+
+            def log_request(self, code: object = "-", size: object = "-") -> None:
+                server.requests.append((self.path, int(getattr(code, "value", code))))
+
+            def log_message(self, format: str, *args: object) -> None:
+                pass
+
+        handler = functools.partial(Handler, directory=str(root))
+        self.httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+        self.url = f"http://127.0.0.1:{self.httpd.server_address[1]}/"
+        self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
+
+    def __enter__(self) -> _Server:
+        self.thread.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+
+@pytest.fixture(scope="module")
+def browser() -> tuple[str, Path]:
+    if not (HTML / "index.html").is_file() or not (HTML / "auto_examples").is_dir():
+        pytest.skip("the documentation is not built (docs/_build/html is missing): "
+                    "run .ci/build-docs.sh, or sphinx-build -b html docs docs/_build/html, "
+                    "before this test")
+    chromium = _chromium()
+    if chromium is None:
+        pytest.skip("Chromium is not installed (Debian: apt-get install chromium), so the "
+                    "built documentation cannot be checked in a browser")
+    with tempfile.TemporaryDirectory(prefix="graspcompass-chromium-") as profile:
+        yield chromium, Path(profile)
+
+
+def _run_chromium(chromium: str, profile: Path, *args: str) -> subprocess.CompletedProcess:
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+             "--disable-background-networking", "--disable-component-update", "--disable-sync",
+             "--disable-default-apps", "--disable-extensions", "--mute-audio",
+             "--hide-scrollbars", f"--user-data-dir={profile}", "--enable-logging=stderr",
+             "--v=0", "--virtual-time-budget=15000"]
+    return subprocess.run([chromium, *flags, *args], capture_output=True, text=True,
+                          timeout=120, env={**os.environ, "LANG": "C.UTF-8"})
+
+
+def _console_failures(stderr: str) -> list[str]:
+    """Console lines about a resource that failed with a 4xx/5xx status."""
+    return [ln for ln in stderr.splitlines() if "CONSOLE" in ln and
+            re.search(r"status of [45]\d\d|\b404\b", ln)]
+
+
+@pytest.mark.parametrize("name", list(BROWSER_PAGES))
+def test_built_page_renders_in_chromium(browser: tuple[str, Path], name: str) -> None:
+    chromium, profile = browser
+    page = BROWSER_PAGES[name]
+    if not (HTML / page).is_file():
+        pytest.fail(f"{page} is not in the built site")
+    SCREENSHOTS.mkdir(parents=True, exist_ok=True)
+    shot = SCREENSHOTS / f"{name}.png"
+    shot.unlink(missing_ok=True)
+    with _Server(HTML) as server:
+        # 1. every <img> of the page loads (checked by the browser itself)
+        run = _run_chromium(chromium, profile, "--dump-dom",
+                            f"{server.url}{CHECKER[1:]}?page={urllib.parse.quote(page)}")
+        m = re.search(r'<pre id="result">(.*?)</pre>', run.stdout, re.S)
+        assert m and m.group(1) != "pending", (
+            f"the image check of {page} did not finish:\n{run.stdout[-2000:]}\n"
+            f"{run.stderr[-2000:]}")
+        result = json.loads(m.group(1).replace("&quot;", '"'))
+        assert result["count"] > 0, f"{page} shows no image"
+        assert result["broken"] == [], f"broken images on {page}: {result['broken']}"
+        console = _console_failures(run.stderr)
+        # 2. a screenshot of the page on its own
+        run = _run_chromium(chromium, profile, f"--screenshot={shot}",
+                            "--window-size=1280,3200", f"{server.url}{page}")
+        console += _console_failures(run.stderr)
+        failed = [(path, code) for path, code in server.requests if code >= 400]
+    assert not failed, f"requests that failed while loading {page}: {failed}"
+    assert not console, "console errors:\n" + "\n".join(console)
+    assert shot.is_file(), f"no screenshot of {page}:\n{run.stderr[-2000:]}"
+    from PIL import Image
+
+    with Image.open(shot) as im:
+        assert im.size[0] >= 1000
+        lo, hi = im.convert("L").getextrema()
+        assert hi - lo > 100, f"the screenshot of {page} is blank"
