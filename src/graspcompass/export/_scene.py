@@ -19,7 +19,6 @@ import sympy as sp
 
 from .. import layout
 from ..construction.describe import describe
-from ..geometry import evaluate
 from ..layout import tex
 
 __all__ = ["COLORS", "Scene", "build_scene", "group_points", "label_tex"]
@@ -88,20 +87,6 @@ def group_points(items: list[tuple[str, XY]], tol: float) -> list[tuple[tuple[st
     return [(tuple(names), where[names[0]]) for names in layout.group_points(items, tol)]
 
 
-def _numbers(construction: Any) -> dict[str, Any]:
-    out: dict[str, Any] = {}
-    for s in construction.steps:
-        if s.kind == "envelope":
-            out[s.name] = s.obj
-            continue
-        try:
-            out[s.name] = evaluate(s.obj)
-        except (ValueError, TypeError) as exc:
-            raise ValueError(f"cannot draw {s.name!r}: the construction is symbolic ({exc}); "
-                             "substitute numbers first (Grasp.subs)") from exc
-    return out
-
-
 def _shape(grasp: Any) -> tuple[str, tuple[float, ...]] | None:
     shape = getattr(grasp, "shape", None)
     if not shape:
@@ -167,7 +152,7 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
     ValueError
         For a symbolic construction, which has no picture.
     """
-    num = _numbers(construction)
+    num = layout.numeric_objects(construction)
     grasp = construction.grasp
     outline = _shape(grasp)
     box = _view_box(grasp, num, outline)
