@@ -120,10 +120,10 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
 
 
 def _table(rows: list[list[str]], head: list[str]) -> str:
-    widths = [max(len(r[i]) for r in [head, *rows]) for i in range(len(head))]
-    widths[-1] = 0
-    fmt = "  ".join(f"{{:<{w}}}" for w in widths)
-    lines = [fmt.format(*head).rstrip(), fmt.format(*("-" * max(w, 3) for w in widths)).rstrip()]
+    widths = [max(3, *(len(r[i]) for r in [head, *rows])) for i in range(len(head))]
+    widths[-1] = max(3, len(head[-1]))  # the last column is not padded
+    fmt = "  ".join(f"{{:<{w}}}" for w in widths[:-1]) + "  {}"
+    lines = [fmt.format(*head).rstrip(), fmt.format(*("-" * w for w in widths)).rstrip()]
     lines += [fmt.format(*r).rstrip() for r in rows]
     return "\n".join(lines)
 
