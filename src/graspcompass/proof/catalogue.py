@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from functools import lru_cache
 
 import sympy as sp
@@ -61,10 +61,6 @@ def symbolic_construction():
         env[spec.name] = st.obj
         steps.append(st)
     return Construction(tuple(steps), g)
-
-
-def _xi_form(e: sp.Expr) -> sp.Expr:
-    return e  # μ stays μ: the reduction reads μ_i as tan ξ_i
 
 
 def _contact_forces():
@@ -329,8 +325,3 @@ def claim(claim_id: str) -> Claim:
         if c.id == claim_id:
             return c
     raise KeyError(f"no claim {claim_id!r}")
-
-
-def with_run(c: Claim, run: Callable[[], ProofResult]) -> Claim:
-    """A copy of ``c`` checked by ``run`` (for mutation tests)."""
-    return replace(c, run=run)
