@@ -70,24 +70,24 @@ def k_paper(theta, x1, x2, y, phi1, phi2, mu1, mu2, *, lib: Any = sp):
     )
 
 
-def grasp_matrix_sympy(x1, x2, y, phi1, phi2) -> sp.Matrix:
-    """L of eq. (5), written out from the paper."""
-    s1, c1, s2, c2 = sp.sin(phi1), sp.cos(phi1), sp.sin(phi2), sp.cos(phi2)
-    return sp.Matrix([
+def _grasp_matrix_rows(x1, x2, y, phi1, phi2, sin, cos) -> list[list]:
+    """The rows of L, eq. (5), written out from the paper, for any sin/cos."""
+    s1, c1, s2, c2 = sin(phi1), cos(phi1), sin(phi2), cos(phi2)
+    return [
         [-s1, -c1, s2, c2],
         [-c1, s1, -c2, s2],
         [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
-    ])
+    ]
+
+
+def grasp_matrix_sympy(x1, x2, y, phi1, phi2) -> sp.Matrix:
+    """L of eq. (5), exact."""
+    return sp.Matrix(_grasp_matrix_rows(x1, x2, y, phi1, phi2, sp.sin, sp.cos))
 
 
 def grasp_matrix_numpy(x1, x2, y, phi1, phi2) -> np.ndarray:
     """L of eq. (5) with numpy floats."""
-    s1, c1, s2, c2 = math.sin(phi1), math.cos(phi1), math.sin(phi2), math.cos(phi2)
-    return np.array([
-        [-s1, -c1, s2, c2],
-        [-c1, s1, -c2, s2],
-        [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
-    ])
+    return np.array(_grasp_matrix_rows(x1, x2, y, phi1, phi2, math.sin, math.cos))
 
 
 def is_zero(expr: Any) -> bool:
