@@ -50,16 +50,48 @@ CONDITION_1: dict[sp.Expr, tuple[sp.Expr, sp.Expr]] = {
 
 
 class Status(str, enum.Enum):
-    """Outcome of a check."""
+    """Outcome of a check.
+
+    ``PROVED``: an exact argument for every admissible parameter (its hypotheses and
+    non-degeneracy conditions are in the result); ``REFUTED``: a re-checked point of
+    the model where the statement fails; ``UNDECIDED``: neither; ``GIVEN``: data of
+    the problem, checked to match the grasp but not a consequence of anything;
+    ``NUMERIC``: holds to rounding on a float construction (not a proof).
+    """
 
     PROVED = "PROVED"
     REFUTED = "REFUTED"
     UNDECIDED = "UNDECIDED"
+    GIVEN = "GIVEN"
+    NUMERIC = "NUMERIC"
 
 
 @dataclass(frozen=True)
 class ProofResult:
-    """Plain data: the outcome, how it was reached, and a counterexample if refuted."""
+    """Plain data: the outcome, how it was reached, and a counterexample if refuted.
+
+    Attributes
+    ----------
+    status : Status
+    method : str
+        How the verdict was reached.
+    seconds : float
+    counterexample : dict of str to str, optional
+        Exact parameter values (a point of the model, re-checked) where the claim fails.
+    detail : str
+    values : dict of str to float
+    hypotheses : tuple of str
+        Everything the verdict assumes beyond the symbols' domains: condition (1),
+        interval hypotheses given by the caller, change-of-variable domains.
+    conditions : tuple of str
+        Non-degeneracy conditions (``expr != 0``) that the proof needs and that
+        could not be shown to follow from the hypotheses: extra hypotheses.
+    implied : tuple of str
+        Non-degeneracy conditions shown to follow from the hypotheses.
+    certificate : dict, optional
+        JSON-ready data that an independent checker re-verifies by polynomial
+        expansion (cofactors of the relations; sign witnesses with their intervals).
+    """
 
     status: Status
     method: str
@@ -67,11 +99,20 @@ class ProofResult:
     counterexample: dict[str, str] | None = None
     detail: str = ""
     values: dict[str, float] = field(default_factory=dict)
+    hypotheses: tuple[str, ...] = ()
+    conditions: tuple[str, ...] = ()
+    implied: tuple[str, ...] = ()
+    certificate: dict[str, Any] | None = None
 
     @property
     def proved(self) -> bool:
         """True for PROVED."""
         return self.status is Status.PROVED
+
+    @property
+    def holds(self) -> bool:
+        """True for PROVED, GIVEN (matching the grasp) and NUMERIC (float, to rounding)."""
+        return self.status in (Status.PROVED, Status.GIVEN, Status.NUMERIC)
 
 
 # -- admissible samples --------------------------------------------------------
