@@ -13,6 +13,8 @@ the same point.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import sympy as sp
 
 from .errors import (
@@ -22,7 +24,7 @@ from .errors import (
     NoIntersectionError,
     ParallelLinesError,
 )
-from .exact import canon, decide_sign, decide_zero
+from .exact import canon, decide_sign, decide_zero, has_float
 from .primitives import Circle, Line, Point, _merge
 
 __all__ = [
@@ -46,6 +48,8 @@ __all__ = [
 def _size(*vectors: Point) -> float:
     """Product of the vectors' lengths when they are floats (a scale for zero tests)."""
     out = 1.0
+    if not any(has_float(c) for v in vectors for c in (v.x, v.y)):
+        return 0.0  # exact data: zero means zero
     for v in vectors:
         try:
             out *= float(sp.sqrt(v.x**2 + v.y**2))
@@ -54,12 +58,15 @@ def _size(*vectors: Point) -> float:
     return out
 
 
-def _nonzero(value: sp.Expr, error: type[GeometryError], message: str, *objs: object,
-             scale: float = 0.0) -> frozenset:
-    """Raise ``error`` if ``value`` is zero; return ``{value}`` if undecidable."""
+def _nonzero(value: sp.Expr, error: type[GeometryError], message: Callable[[], str],
+             *objs: object, scale: float = 0.0) -> frozenset:
+    """Raise ``error`` if ``value`` is zero; return ``{value}`` if undecidable.
+
+    ``message`` makes the text only when it is raised (printing exact objects is slow).
+    """
     z = decide_zero(value, scale)
     if z:
-        raise error(message, *objs)
+        raise error(message(), *objs)
     return frozenset({canon(value)}) if z is None else frozenset()
 
 
@@ -126,7 +133,7 @@ def meet(a: Line, b: Line) -> Point:
     conds = _nonzero(
         den,
         ParallelLinesError,
-        f"lines are parallel, they do not meet in one point: {a} and {b}",
+        lambda: f"lines are parallel, they do not meet in one point: {a} and {b}",
         a,
         b,
         scale=_size(a.direction, b.direction),
@@ -272,7 +279,7 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     conds = _nonzero(
         side,
         NoIntersectionError,
-        f"circles {c1} and {c2} are tangent at {known}: there is no second common point",
+        lambda: f"circles {c1} and {c2} are tangent at {known}: there is no second common point",
         c1,
         c2,
         scale=_size(w, k),

@@ -20,7 +20,7 @@ import sympy as sp
 
 from ..expr import parse_exact
 
-__all__ = ["Expr", "canon", "decide_sign", "decide_zero", "has_float", "sym"]
+__all__ = ["Expr", "canon", "clear_caches", "decide_sign", "decide_zero", "has_float", "sym"]
 
 Expr = sp.Expr
 
@@ -64,83 +64,150 @@ def has_float(expr: sp.Expr) -> bool:
 def canon(expr: sp.Expr) -> sp.Expr:
     """Canonical, small form of an exact expression (no ``simplify``).
 
+    Numbers and symbolic expressions alike become one reduced fraction of
+    sparse polynomials in their generators (symbols, ``sqrt(p)`` for primes p,
+    ``sin(a)`` and ``cos(a)`` of each angle, other atoms), with the numerator
+    and denominator reduced modulo ``sqrt(p)**2 = p`` and
+    ``sin(a)**2 + cos(a)**2 = 1`` and square roots cleared from the denominator
+    by conjugates.
+
     Examples
     --------
-    >>> from sympy import sqrt, pi, tan
+    >>> from sympy import sqrt, pi, tan, sin, cos, symbols
     >>> canon((sqrt(3) + 1) / (1 - sqrt(3)))
     -2 - sqrt(3)
     >>> canon(tan(7*pi/12) * sqrt(3)/2)
     -sqrt(3) - 3/2
-    >>> from sympy import symbols
     >>> a, b = symbols("a b")
     >>> canon((a**2 - b**2) / (a - b))
     a + b
+    >>> canon(sin(a)**2 + cos(a)**2 - 1), canon(sqrt(6) - sqrt(2)*sqrt(3))
+    (0, 0)
     """
     expr = sym(expr)
     if expr.is_Rational or expr.is_Symbol:
         return expr
     if has_float(expr):
         return sp.Float(expr.evalf(17)) if not expr.free_symbols else sp.expand(expr)
-    if expr.free_symbols:
-        fast = _canon_field(expr)
-        if fast is not None:
-            return fast
-        out = sp.cancel(sp.together(expr))
-        num, den = sp.fraction(out)
-        if _square_roots(den):
-            out = sp.radsimp(out)
-        return out
-    fast = _canon_radicals(expr)
+    fast = _canon_ring(expr)
     if fast is not None:
         return fast
+    if expr.free_symbols:
+        return sp.cancel(sp.together(expr))
     num, den = sp.fraction(sp.together(expr))
     if den.is_Rational:
         return sp.expand(num) / den
     num, den = _rationalize(sp.expand(num), sp.expand(den))
-    if not den.is_Rational:  # not only square roots: fall back to sympy's radsimp
-        num, den = sp.fraction(sp.radsimp(num / den))
     return sp.expand(num) / sp.expand(den)
 
 
 @lru_cache(maxsize=64)
 def _ring(gens: tuple[sp.Expr, ...]):
-    return sp.ring(gens, sp.QQ)[0]
+    return sp.ring(gens, sp.QQ, sp.lex)[0]
 
 
 #: Generators met so far: one growing ring keeps the memo below reusable.
 _GENS: set[sp.Expr] = set()
 #: Canonical expression -> (ring, numerator, denominator) of sparse polynomials.
 _MEMO: dict[sp.Expr, tuple] = {}
+_MAX_GENS = 80
 
 
-def _generators(expr: sp.Expr) -> set[sp.Expr] | None:
-    """Generators of ``expr`` as a rational function, or None if it is not one."""
-    funcs = expr.atoms(sp.Function)
-    if any(a.atoms(sp.Function) for f in funcs for a in f.args):
-        return None
-    if any(not p.exp.is_Integer for p in expr.atoms(sp.Pow)):
-        return None
-    inner = set().union(*(f.free_symbols for f in funcs)) if funcs else set()
-    if expr.free_symbols & inner - set().union(*(f.free_symbols for f in funcs)):
-        return None
-    outer = {s for s in expr.free_symbols if not any(s in f.free_symbols for f in funcs)}
-    if (expr.free_symbols - outer) - inner:
-        return None
-    return funcs | outer
+def clear_caches() -> None:
+    """Forget the generators and memoised canonical forms (for benchmarks and tests)."""
+    _GENS.clear()
+    _MEMO.clear()
+    _ring.cache_clear()
+    _atom_plan.cache_clear()
 
 
-def _nd(e: sp.Expr, R, index: dict) -> tuple:
-    """``e`` as (numerator, denominator) in the ring R, with no gcd on the way."""
+def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
+    """``sqrt(r) = coefficient * prod(sqrt(p))`` over distinct primes p."""
+    n = int(r.p) * int(r.q)
+    k, primes = 1, []
+    for p, e in sorted(sp.factorint(n).items()):
+        k *= p ** (e // 2)
+        if e % 2:
+            primes.append(p)
+    return sp.Rational(k, int(r.q)), tuple(primes)
+
+
+_TRIG = (sp.sin, sp.cos, sp.tan)
+
+
+@lru_cache(maxsize=8192)
+def _atom_plan(atom: sp.Expr) -> tuple | None:
+    """How an atom enters the ring: ("root", coefficient, primes), ("trig", kind, s, c, value)
+    or ("gen",); None when it cannot (a negative radicand, ``I``)."""
+    if atom.is_Pow:
+        if atom.exp == sp.S.Half and atom.base.is_Rational:
+            if atom.base < 0:
+                return None
+            coefficient, primes = _square_free(atom.base)
+            return ("root", coefficient, primes)
+        return ("gen",)  # cube roots, nested radicals: opaque generators
+    if isinstance(atom, _TRIG):
+        arg = atom.args[0]
+        if arg.is_number and not arg.free_symbols:
+            from .trig import OpaqueCos, OpaqueSin, sincos
+
+            s, c = sincos(arg)
+            if isinstance(s, OpaqueSin) and isinstance(c, OpaqueCos) and s.args == c.args:
+                pair = (s, c)
+            else:  # a reference angle, or radicals: the value stands for the atom
+                value = s if isinstance(atom, sp.sin) else c if isinstance(atom, sp.cos) else s / c
+                if value == atom:
+                    return ("gen",)
+                return ("value", value)
+        else:
+            pair = (sp.sin(arg), sp.cos(arg))
+        kind = "sin" if isinstance(atom, sp.sin) else "cos" if isinstance(atom, sp.cos) else "tan"
+        return ("trig", kind, *pair)
+    if atom is sp.I or atom.is_Float:
+        return None
+    return ("gen",)
+
+
+def _collect(expr: sp.Expr, atoms: dict, roots: set, pairs: set) -> bool:
+    """Walk ``expr``; record its atoms' plans, the primes under roots, the trig pairs."""
+    stack = [expr]
+    while stack:
+        a = stack.pop()
+        if a.is_Rational or a in atoms:
+            continue
+        if a.is_Add or a.is_Mul or (a.is_Pow and a.exp.is_Integer):
+            stack.extend(a.args)
+            continue
+        plan = _atom_plan(a)
+        if plan is None:
+            return False
+        atoms[a] = plan
+        if plan[0] == "root":
+            roots.update(plan[2])
+        elif plan[0] == "trig":
+            pairs.add(plan[2:4])
+        elif plan[0] == "value":
+            stack.append(plan[1])
+    return True
+
+
+def _gen_key(g: sp.Expr, roots: set, sines: set) -> tuple:
+    return (0 if g in roots else 1 if g in sines else 2, sp.default_sort_key(g))
+
+
+def _convert(e: sp.Expr, R, amap: dict) -> tuple:
+    """``e`` as (numerator, denominator) in R, atoms mapped by ``amap``, no gcd."""
     hit = _MEMO.get(e)
     if hit is not None:
         r, n, d = hit
         return (n, d) if r is R else (n.set_ring(R), d.set_ring(R))
     if e.is_Rational:
         return R(e.p), R(e.q)
-    if e in index:
-        return R.gens[index[e]], R.one
+    m = amap.get(e)
+    if m is not None:
+        return m
     if e.is_Add or e.is_Mul:
-        parts = [_nd(a, R, index) for a in e.args]
+        parts = [_convert(a, R, amap) for a in e.args]
         n, d = parts[0]
         for n2, d2 in parts[1:]:
             if e.is_Mul:
@@ -151,86 +218,94 @@ def _nd(e: sp.Expr, R, index: dict) -> tuple:
                 n, d = n * d2 + n2 * d, d * d2
         return n, d
     if e.is_Pow and e.exp.is_Integer:
-        n, d = _nd(e.base, R, index)
+        n, d = _convert(e.base, R, amap)
         k = int(e.exp)
         if k < 0:
             n, d, k = d, n, -k
         return n**k, d**k
-    raise ValueError(f"not a rational function: {e}")
+    raise ValueError(f"not a rational function of its atoms: {e}")
 
 
-def _canon_field(expr: sp.Expr) -> sp.Expr | None:
-    """Reduced fraction through sympy's sparse polynomials (one gcd at the end).
-
-    Applies to rational functions of symbols and of function atoms such as
-    ``sin(phi1)``; returns None for anything else (radicals, nested functions).
-    Each result is remembered, so building on earlier results stays cheap.
-    """
-    gens = _generators(expr)
+def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
+    """One reduced fraction in the growing ring of generators (see :func:`canon`)."""
+    atoms: dict = {}
+    primes: set[int] = set()
+    pairs: set = set()
+    if not _collect(expr, atoms, primes, pairs):
+        return None
+    roots = {sp.sqrt(p) for p in primes}
+    sines = {s for s, _ in pairs}
+    gens = roots | sines | {c for _, c in pairs}
+    gens |= {a for a, plan in atoms.items() if plan[0] == "gen"}
     if not gens:
         return None
-    _GENS.update(gens)
-    order = tuple(sorted(_GENS, key=sp.default_sort_key))
+    if len(_GENS | gens) > _MAX_GENS:
+        clear_caches()
+    if not gens <= _GENS:
+        _GENS.update(gens)
+    all_roots = {g for g in _GENS if g.is_Pow}
+    all_sines = {g for g in _GENS if isinstance(g, sp.sin)}
+    order = tuple(sorted(_GENS, key=lambda g: _gen_key(g, all_roots, all_sines)))
     R = _ring(order)
+    index = {g: R.gens[i] for i, g in enumerate(order)}
+    amap: dict = {g: (index[g], R.one) for g in gens}
+    for a, plan in atoms.items():
+        if plan[0] == "root":
+            coefficient, ps = plan[1], plan[2]
+            n = R(coefficient.p)
+            for p in ps:
+                n *= index[sp.sqrt(p)]
+            amap[a] = (n, R(coefficient.q))
+    for a, plan in atoms.items():  # after the roots: values may hold roots
+        if plan[0] == "trig":
+            s, c = index[plan[2]], index[plan[3]]
+            amap[a] = {"sin": (s, R.one), "cos": (c, R.one), "tan": (s, c)}[plan[1]]
+        elif plan[0] == "value":
+            amap[a] = _convert(plan[1], R, amap)
     try:
-        n, d = _nd(expr, R, {g: i for i, g in enumerate(order)})
+        n, d = _convert(expr, R, amap)
     except ValueError:
         return None
+    rels = [index[sp.sqrt(p)] ** 2 - p for p in primes]
+    rels += [index[s] ** 2 + index[c] ** 2 - 1 for s, c in pairs]
+    if rels:
+        n, d = n.rem(rels), d.rem(rels)
     if not d:
-        return None
-    n, d = n.cancel(d)
-    if d.LC < 0:
-        n, d = -n, -d
-    out = n.as_expr() / d.as_expr()
+        raise ZeroDivisionError(f"division by zero in {expr}")
+    n, d = _clear_roots(n, d, [index[r] for r in roots], rels, expr, atoms)
+    if d.is_ground:
+        n, d = n.quo_ground(d.LC), R.one
+    else:
+        n, d = n.cancel(d)
+        if d.LC < 0:
+            n, d = -n, -d
+    out = n.as_expr() / d.as_expr() if d != R.one else n.as_expr()
     if len(_MEMO) > 100_000:
         _MEMO.clear()
     _MEMO[out] = (R, n, d)
     return out
 
 
-def _canon_radicals(expr: sp.Expr) -> sp.Expr | None:
-    """Exact number in Q(√a, √b, ..., π, ...): sparse polynomials, conjugates, no radsimp.
+def _clear_roots(n, d, roots: list, rels: list, expr: sp.Expr, atoms: dict) -> tuple:
+    """Multiply by conjugates (sqrt(p) -> -sqrt(p)) until ``d`` is free of roots.
 
-    Square roots of rationals become ring generators tied by ``r**2 = a``;
-    the denominator is cleared by multiplying with conjugates (``r -> -r``).
-    Returns None for other algebraic numbers (cube roots, nested radicals).
+    The conjugation is a field automorphism of Q(sqrt(p1), ..., sqrt(pk)); when the
+    number also holds opaque algebraic atoms it need not respect them, so the new
+    denominator is then checked to be non-zero numerically (and the step skipped
+    if it is not clearly so).
     """
-    gens: set[sp.Expr] = set()
-    roots: dict[sp.Expr, sp.Expr] = {}
-    for a in sp.preorder_traversal(expr):
-        if a.is_Pow and not a.exp.is_Integer:
-            if a.exp == sp.S.Half and a.base.is_Rational:
-                gens.add(a)
-                roots[a] = a.base
-            else:
-                return None
-        elif a.is_Function or a in (sp.pi, sp.E):
-            if a.is_Function and a.args and not a.args[0].is_Rational and not (
-                    a.args[0].is_Mul and a.args[0].has(sp.pi)):
-                return None
-            gens.add(a)
-    if not gens:
-        return None
-    order = tuple(sorted(gens, key=sp.default_sort_key))
-    R = _ring(order)
-    index = {g: i for i, g in enumerate(order)}
-    try:
-        n, d = _nd(expr, R, index)
-    except ValueError:
-        return None
-    rels = [R.gens[index[r]] ** 2 - R(roots[r]) for r in roots]
-    n, d = (n.rem(rels), d.rem(rels)) if rels else (n, d)
-    if not d:
-        return None
-    for r in roots:
-        g = R.gens[index[r]]
-        if d.degree(g) > 0:
-            conj = d.compose(g, -g)
-            n, d = (n * conj).rem(rels), (d * conj).rem(rels)
-    if d.is_ground:
-        return (n.quo_ground(d.LC)).as_expr()
-    n, d = n.cancel(d)
-    return n.as_expr() / d.as_expr()
+    opaque = not expr.free_symbols and any(p[0] in ("gen", "trig") for p in atoms.values())
+    for g in roots:
+        if d.degree(g) <= 0:
+            continue
+        conj = d.compose(g, -g)
+        n2, d2 = (n * conj).rem(rels), (d * conj).rem(rels)
+        if not d2:
+            continue
+        if opaque and abs(sp.N(conj.as_expr(), 30)) < sp.Float(10) ** -20:
+            continue
+        n, d = n2, d2
+    return n, d
 
 
 def _square_roots(expr: sp.Expr) -> list[sp.Pow]:
@@ -264,19 +339,26 @@ def _rationalize(num: sp.Expr, den: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
     """Decide whether ``expr`` is zero: True, False, or None when undecidable.
 
-    Exact numbers are decided for certain (a high-precision evaluation proves
-    non-zero, the canonical form or :meth:`sympy.Expr.equals` proves zero).
-    Floats count as zero when ``|expr| <= 1e-12 * scale``: pass the magnitude of
-    the quantities that ``expr`` was computed from; the default ``scale=0``
-    asks for an exact zero.  Expressions with free symbols that do not reduce
-    to 0, and whose sign assumptions do not settle it, are undecidable (None).
+    Exact numbers are decided for certain: a 40-digit evaluation proves a
+    non-zero value; a zero canonical form (:func:`canon`) proves zero; the rare
+    tiny number whose canonical form is not 0 is settled exactly in a
+    cyclotomic field (:func:`~graspcompass.geometry.cyclotomic.is_zero_cyclotomic`)
+    or by a 200-digit evaluation, else None.  Floats count as zero when
+    ``|expr| <= 1e-12 * scale``: pass the magnitude of the quantities that
+    ``expr`` was computed from; the default ``scale=0`` asks for an exact zero.
+    Expressions with free symbols that do not reduce to 0, and whose sign
+    assumptions do not settle it, are undecidable (None).
 
     Examples
     --------
-    >>> from sympy import sqrt, Symbol
+    >>> from sympy import sqrt, Symbol, sin, cos, pi
     >>> decide_zero(sqrt(6) - sqrt(2)*sqrt(3)), decide_zero(sqrt(2) - 1)
     (True, False)
     >>> decide_zero(Symbol("a")) is None
+    True
+    >>> from graspcompass.geometry.trig import sincos
+    >>> s, c = sincos(3*pi/5)
+    >>> decide_zero(4*c + sqrt(5) - 1)    # cos 108° = (1 − √5)/4
     True
     """
     expr = sym(expr)
@@ -294,17 +376,29 @@ def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
         return None
     if has_float(expr):
         return abs(float(expr.evalf(17))) <= 1e-12 * scale
-    value = expr.evalf(_PREC)
-    if value.is_Number and abs(value) > sp.Float(10) ** (-_PREC // 2):
-        return False
-    if canon(expr) == 0:
+    reduced = canon(expr)
+    if reduced == 0:
         return True
-    eq = expr.equals(0)
-    return None if eq is None else bool(eq)
+    if _strict_sign(reduced) is not None:
+        return False
+    from .cyclotomic import is_zero_cyclotomic
+
+    exact = is_zero_cyclotomic(reduced)
+    if exact is not None:
+        return exact
+    value = reduced.evalf(200)
+    if value.is_Number and abs(value) > sp.Float(10) ** -150:
+        return False
+    return None
 
 
 def decide_sign(expr: sp.Expr) -> int | None:
     """Sign of ``expr`` as -1, 0 or +1, or None when it cannot be decided.
+
+    Exact numbers: the canonical form's numerator and denominator are evaluated
+    in interval arithmetic (200 bits); an interval that excludes 0 proves the
+    sign, and a value that cannot be separated from 0 goes to the exact zero
+    test of :func:`decide_zero`.
 
     Examples
     --------
@@ -313,9 +407,17 @@ def decide_sign(expr: sp.Expr) -> int | None:
     (-1, 0, 1)
     """
     expr = sym(expr)
+    if expr.is_Number and not has_float(expr):
+        return 0 if expr == 0 else (1 if expr > 0 else -1)
+    if not expr.free_symbols and not has_float(expr):
+        sign = _strict_sign(canon(expr))
+        if sign is not None:
+            return sign
     zero = decide_zero(expr)
     if zero:
         return 0
+    if zero is None:
+        return None
     if expr.free_symbols:
         if expr.is_positive:
             return 1
@@ -326,3 +428,110 @@ def decide_sign(expr: sp.Expr) -> int | None:
     if not value.is_Number:
         return None
     return 1 if value > 0 else -1
+
+
+_IV_PREC = 200  # bits of the interval evaluation
+
+
+@lru_cache(maxsize=4096)
+def _gen_interval(g: sp.Expr):
+    """An interval (mpmath.iv) holding the value of a numeric generator."""
+    from mpmath import iv
+
+    if g.is_Pow and g.exp == sp.S.Half and g.base.is_Integer:
+        return iv.sqrt(int(g.base))
+    if isinstance(g, (sp.sin, sp.cos)):
+        q = g.args[0] / sp.pi
+        if q.is_Rational:
+            a = iv.pi * int(q.p) / int(q.q)
+        elif g.args[0].is_Rational:
+            a = iv.mpf(int(g.args[0].p)) / int(g.args[0].q)
+        else:
+            a = None
+        if a is not None:
+            return iv.sin(a) if isinstance(g, sp.sin) else iv.cos(a)
+    if g is sp.pi:
+        return iv.pi
+    if isinstance(g, sp.atan) and not g.args[0].free_symbols:
+        inner = _interval(g.args[0])
+        if inner is not None:
+            return iv.atan2(inner, 1)
+    value = g.evalf(70)  # other atoms: sympy's own error control, widened
+    if not value.is_Number or value.has(sp.I):
+        raise TypeError(f"not a real number: {g}")
+    v = iv.mpf(str(value))
+    return v + iv.mpf([-1, 1]) * (abs(v.a) + 1) * iv.mpf(10) ** -55
+
+
+def _poly_interval(poly, values: list):
+    from mpmath import iv
+
+    total = iv.mpf(0)
+    for monom, coeff in poly.terms():
+        term = iv.mpf(int(coeff.numerator)) / int(coeff.denominator)
+        for v, e in zip(values, monom):
+            if e:
+                term *= v**e
+        total += term
+    return total
+
+
+def _interval(expr: sp.Expr):
+    """An interval holding the exact number ``expr``, or None (at the current iv.prec)."""
+    from mpmath import iv
+
+    reduced = canon(expr)
+    if reduced.is_Rational:
+        return iv.mpf(int(reduced.p)) / int(reduced.q)
+    hit = _MEMO.get(reduced)
+    if hit is None:
+        return None
+    R, n, d = hit
+    used = set()
+    for p in (n, d):
+        for monom in p.monoms():
+            used.update(i for i, e in enumerate(monom) if e)
+    values = [_gen_interval(g) if i in used else None for i, g in enumerate(R.symbols)]
+    return _poly_interval(n, values) / _poly_interval(d, values)
+
+
+def _strict_sign(reduced: sp.Expr) -> int | None:
+    """The sign of a canonical number proved by interval arithmetic, or None."""
+    from mpmath import iv
+
+    if reduced.is_Rational:
+        return None if reduced == 0 else (1 if reduced > 0 else -1)
+    hit = _MEMO.get(reduced)
+    prec = iv.prec
+    iv.prec = _IV_PREC
+    try:
+        if hit is None:
+            value = reduced.evalf(_PREC)
+            if value.is_Number and abs(value) > sp.Float(10) ** (-_PREC // 2):
+                return 1 if value > 0 else -1
+            return None
+        R, n, d = hit
+        used = set()
+        for p in (n, d):
+            for monom in p.monoms():
+                used.update(i for i, e in enumerate(monom) if e)
+        values = [_gen_interval(g) if i in used else None for i, g in enumerate(R.symbols)]
+        nv, dv = _poly_interval(n, values), _poly_interval(d, values)
+    except TypeError:
+        return None
+    finally:
+        iv.prec = prec
+    signs = []
+    for v in (nv, dv):
+        if v.a > 0:
+            signs.append(1)
+        elif v.b < 0:
+            signs.append(-1)
+        else:
+            return None
+    return signs[0] * signs[1]
+
+
+def _nd(e: sp.Expr, R, index: dict) -> tuple:
+    """``e`` as (numerator, denominator) in the ring R whose generators are ``index``."""
+    return _convert(e, R, {g: (R.gens[i], R.one) for g, i in index.items()})

@@ -6,6 +6,7 @@ import sympy as sp
 
 from .exact import canon, decide_sign
 from .primitives import Line, Point
+from .trig import is_radical
 
 __all__ = ["angle_of", "distance", "distance2", "signed_length"]
 
@@ -61,7 +62,9 @@ def angle_of(vector: Point) -> sp.Expr:
         if sx == 0:
             raise ValueError("the zero vector has no direction")
         return sx * sp.pi / 2
-    base = sp.atan(canon(x / y))
+    ratio = canon(x / y)
+    # sympy's atan evaluates radical arguments (atan(1) = pi/4); others stay unevaluated
+    base = sp.atan(ratio, evaluate=is_radical(ratio))
     if sy > 0:
         return base
     return base + sp.pi if sx >= 0 else base - sp.pi
