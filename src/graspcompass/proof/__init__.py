@@ -10,8 +10,10 @@
 
 from .catalogue import CLAIMS, Claim, check, claim
 from .certify import StepCertificate, certify
+from .model import sample, violations
 from .prove import CONDITION_1, ProofResult, Status, find_counterexample, prove_identity, prove_sign
-from .reduce import is_identically_zero, reduce_expr, trig_to_poly
+from .recheck import RecheckError, recheck
+from .reduce import DegenerateClaimError, is_identically_zero, reduce_expr, trig_to_poly
 from .report import ClaimReport, exit_status, run_catalogue, to_json, to_markdown, to_table
 
 __all__ = [
@@ -19,7 +21,9 @@ __all__ = [
     "CONDITION_1",
     "Claim",
     "ClaimReport",
+    "DegenerateClaimError",
     "ProofResult",
+    "RecheckError",
     "Status",
     "StepCertificate",
     "certify",
@@ -30,10 +34,13 @@ __all__ = [
     "is_identically_zero",
     "prove_identity",
     "prove_sign",
+    "recheck",
     "reduce_expr",
     "run_catalogue",
+    "sample",
     "to_json",
     "to_markdown",
     "to_table",
     "trig_to_poly",
+    "violations",
 ]

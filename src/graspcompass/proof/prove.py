@@ -1,11 +1,16 @@
 """The checker: identities and sign claims, PROVED, REFUTED (with a counterexample) or UNDECIDED.
 
 * Identities are reduced to polynomial form (:mod:`graspcompass.proof.reduce`);
-  a zero normal form is a proof for every admissible parameter.
+  a zero normal form is a proof wherever the expression is defined.  Every
+  denominator met is either shown non-zero under the hypotheses (``implied``)
+  or listed as a non-degeneracy condition of the result (``conditions``); a
+  denominator that is 0 modulo the relations raises
+  :class:`~graspcompass.proof.reduce.DegenerateClaimError`.
 * A non-zero normal form is not yet a refutation: the checker then looks for
-  admissible exact parameter values (satisfying the assumptions) where the two
-  sides differ, checks them by exact substitution evaluated to 50 digits, and
-  reports them.  If it finds none, the claim is UNDECIDED.
+  points of the model (:mod:`graspcompass.proof.model`: domains, condition (1),
+  eq. (22), the caller's relations) where the two sides differ, checks them by
+  exact substitution evaluated to 50 digits, and reports them.  If it finds
+  none, the claim is UNDECIDED.
 * A sign claim ``expr > 0`` (or ``< 0``) is PROVED from a *witness*: factors
   whose product is ``expr`` (an identity, checked as above) and whose signs
   follow from interval bounds on angles (``cos u < 0`` for ``u`` in
@@ -16,19 +21,21 @@
 from __future__ import annotations
 
 import enum
-import random
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
 
-from .. import symbols as S
-from .reduce import reduce_expr
+from .model import find_counterexample
+from .reduce import DegenerateClaimError, reduce_expr
+from .signs import CONDITION_1, Intervals, _interval, discharge, form_json, sign_of, sign_reason
 
 __all__ = [
     "CONDITION_1",
+    "CONDITION_1_NAME",
+    "DegenerateClaimError",
     "Intervals",
     "ProofResult",
     "Status",
@@ -38,15 +45,10 @@ __all__ = [
     "sign_of",
 ]
 
-Intervals = Mapping[sp.Expr, tuple[sp.Expr, sp.Expr]]
+_ = _interval  # re-exported for callers that sum angle intervals
 
-#: Open intervals of the angle forms under the domain and condition (1).
-CONDITION_1: dict[sp.Expr, tuple[sp.Expr, sp.Expr]] = {
-    S.xi1: (0, sp.pi / 2), S.xi2: (0, sp.pi / 2),
-    S.phi1: (0, sp.pi), S.phi2: (0, sp.pi),  # φ ≤ π, and φ = π is excluded by (1)
-    S.phi1 + S.xi1: (sp.pi / 2, 3 * sp.pi / 2), S.phi2 + S.xi2: (sp.pi / 2, 3 * sp.pi / 2),
-    S.phi1 - S.xi1: (-sp.pi / 2, sp.pi / 2), S.phi2 - S.xi2: (-sp.pi / 2, sp.pi / 2),
-}
+#: How condition (1) (with the domains of §2.2) is named in ``hypotheses``.
+CONDITION_1_NAME = "condition (1)"
 
 
 class Status(str, enum.Enum):
@@ -115,65 +117,40 @@ class ProofResult:
         return self.status in (Status.PROVED, Status.GIVEN, Status.NUMERIC)
 
 
-# -- admissible samples --------------------------------------------------------
-_LENGTHS = [sp.Rational(n, d) for n, d in ((1, 3), (1, 2), (2, 3), (1, 1), (3, 2), (2, 1),
-                                           (5, 2), (3, 1), (7, 5), (4, 5))]
+# -- hypotheses ----------------------------------------------------------------
+def _iv_text(form: sp.Expr, iv: tuple[Any, Any]) -> str:
+    return f"{form} in ({iv[0]}, {iv[1]})"
 
 
-def _sample(sym: sp.Symbol, rng: random.Random) -> sp.Expr:
-    name = sym.name
-    if name.startswith("phi"):
-        return sp.pi * sp.Rational(rng.randint(1, 23), 24)
-    if name.startswith("xi"):
-        return sp.pi * sp.Rational(rng.randint(1, 11), 24)
-    if name in ("theta",) or name.startswith("alpha"):
-        return sp.pi * sp.Rational(rng.randint(-23, 23), 24) + sp.Rational(1, 7)
-    if name == "y" and rng.random() < 0.15:
-        return sp.Integer(0)
-    value = rng.choice(_LENGTHS)
-    if sym.is_positive or sym.is_nonnegative or name.startswith(("x", "mu", "F", "r")):
-        return value
-    return value * rng.choice([-1, 1])
+def _interval_hypotheses(intervals: Intervals) -> tuple[list[str], list[Any]]:
+    """Names of the interval hypotheses, and the extra relations they add to the model."""
+    names, rels = [], []
+    if any(CONDITION_1.get(k) == tuple(v) for k, v in intervals.items()):
+        names.append(CONDITION_1_NAME)
+    for k, v in intervals.items():
+        if CONDITION_1.get(k) != tuple(v):
+            names.append(_iv_text(k, v))
+            rels += [sp.StrictGreaterThan(k, v[0], evaluate=False),
+                     sp.StrictLessThan(k, v[1], evaluate=False)]
+    return names, rels
 
 
-def _holds(rel: Any, values: Mapping) -> bool:
-    try:
-        return bool(sp.sympify(rel).subs(values))
-    except TypeError:
-        return bool(sp.N(sp.sympify(rel).subs(values), 30))
-
-
-def find_counterexample(
-    test: Callable[[Mapping[sp.Symbol, sp.Expr]], bool],
-    symbols: Sequence[sp.Symbol],
-    assumptions: Sequence[Any] = (),
-    tries: int = 60,
-    seed: int = 2012,
-) -> dict[sp.Symbol, sp.Expr] | None:
-    """Admissible exact values where ``test(values)`` is True, or None.
-
-    ``test`` must decide exactly (e.g. by a 50-digit evaluation of an exact
-    expression); candidates violating an assumption are skipped.
-    """
-    rng = random.Random(seed)
-    syms = sorted(set(symbols), key=str)
-    for _ in range(tries * 4):
-        values = {s: _sample(s, rng) for s in syms}
-        if not all(_holds(a, values) for a in assumptions):
-            continue
-        try:
-            if test(values):
-                return values
-        except (ZeroDivisionError, TypeError, ValueError):
-            continue
-        tries -= 1
-        if tries <= 0:
-            break
-    return None
+def _context(assumptions: Sequence[Any], domains: Mapping | None,
+             subs: Mapping | None) -> tuple[list[str], list[Any]]:
+    names = [f"{a}" for a in assumptions]
+    rels = list(assumptions)
+    for s, (lo, hi) in (domains or {}).items():
+        names.append(_iv_text(s, (lo, hi)) if hi is not None else f"{s} > {lo}")
+        rels.append(sp.StrictGreaterThan(s, lo, evaluate=False))
+        if hi is not None:
+            rels.append(sp.StrictLessThan(s, hi, evaluate=False))
+    if subs:
+        names.append("change of variables " + ", ".join(f"{k} = {v}" for k, v in subs.items()))
+    return names, rels
 
 
 def _nonzero_at(expr: sp.Expr, values: Mapping) -> bool:
-    v = sp.N(expr.subs(values), 50)
+    v = sp.N(expr.xreplace(values), 50)
     if v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not v.is_number:
         raise ValueError("undefined at this point")
     return abs(v) > sp.Float(10) ** -30
@@ -183,17 +160,72 @@ def _cx(values: Mapping | None) -> dict[str, str] | None:
     return None if values is None else {str(k): str(v) for k, v in values.items()}
 
 
-def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = ()) -> ProofResult:
-    """Check ``lhs == rhs`` for every admissible value of the symbols.
+def _intervals_json(intervals: Intervals) -> list[dict[str, Any]]:
+    out = []
+    for k, (lo, hi) in intervals.items():
+        f, a, b = form_json(k), sp.expand(sp.sympify(lo) / sp.pi), sp.expand(sp.sympify(hi) / sp.pi)
+        if f is not None and a.is_Rational and b.is_Rational:
+            out.append({"form": f, "interval": [f"{a.p}/{a.q}", f"{b.p}/{b.q}"],
+                        "source": "(1)" if CONDITION_1.get(k) == (lo, hi) else "hypothesis"})
+    return out
 
-    Counterexamples satisfy ``assumptions`` (default: the domains of the
-    symbols and the contact point conditions (1) for the angles present).
+
+def _denominators(factors: Sequence[sp.Expr], intervals: Intervals, iv_names: list[str],
+                  syms: set, extra: list[Any], domains: Mapping | None, subs: Mapping | None):
+    """Split denominator factors into implied (shown non-zero) and conditions."""
+    implied, conditions, rows = [], [], []
+    src = ", ".join(n for n in iv_names if n == CONDITION_1_NAME) or "the hypotheses"
+    src = "(1)" if src == CONDITION_1_NAME else src
+    for f in factors:
+        why = discharge(f, intervals)
+        if why is not None:
+            implied.append(f"{f} != 0 (from {src})")
+            rows.append({"factor": str(f), "status": "implied", "reason": why})
+        else:
+            _not_always_zero(f, syms | f.free_symbols, extra, domains, subs)
+            conditions.append(f"{f} != 0")
+            rows.append({"factor": str(f), "status": "condition", "reason": ""})
+    return implied, conditions, rows
+
+
+def _not_always_zero(f: sp.Expr, syms: set, extra: list[Any], domains: Mapping | None,
+                     subs: Mapping | None) -> None:
+    """Guard against a condition that fails at every point of the model (vacuous result)."""
+    syms = {s for s in syms if s.is_Symbol}
+    zero = find_counterexample(lambda v: not _nonzero_at(f, v), syms, extra, tries=3, seed=7,
+                               domains=domains, derived=subs)
+    if zero is None:
+        return
+    nonzero = find_counterexample(lambda v: _nonzero_at(f, v), syms, extra, tries=8, seed=11,
+                                  domains=domains, derived=subs)
+    if nonzero is None:
+        raise DegenerateClaimError(f"the non-degeneracy condition {f} != 0 fails at every "
+                                   "point of the model tried: the claim is undefined there")
+
+
+def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
+                   intervals: Intervals = CONDITION_1, domains: Mapping | None = None,
+                   subs: Mapping | None = None) -> ProofResult:
+    """Check ``lhs == rhs`` at every point of the model where both sides are defined.
+
+    The denominators met are shown non-zero from ``intervals`` (condition (1) by
+    default; listed in ``implied``) or listed in ``conditions``.  ``assumptions``
+    are relations on top of the model (domains, (1), (22)) that counterexamples
+    must satisfy; ``domains`` gives intervals of change-of-variable symbols and
+    ``subs`` a change of variables applied to both sides (recorded in ``hypotheses``).
+    A PROVED result carries a certificate (:mod:`graspcompass.proof.recheck`).
+
+    Raises
+    ------
+    DegenerateClaimError
+        If a side is 0/0 or undefined for every value of its symbols.
 
     Examples
     --------
     >>> from graspcompass.symbols import phi1, mu1, xi1
-    >>> prove_identity(sp.tan(phi1 + xi1), (sp.tan(phi1) + mu1) / (1 - sp.tan(phi1) * mu1)).status
-    <Status.PROVED: 'PROVED'>
+    >>> r = prove_identity(sp.tan(phi1 + xi1), (sp.tan(phi1) + mu1) / (1 - sp.tan(phi1) * mu1))
+    >>> r.status, r.conditions  # tan(phi1) is undefined at phi1 = pi/2, which (1) admits
+    (<Status.PROVED: 'PROVED'>, ('cos(phi1) != 0',))
     >>> r = prove_identity(sp.sin(2 * phi1), 2 * sp.sin(phi1))
     >>> r.status, sorted(r.counterexample)
     (<Status.REFUTED: 'REFUTED'>, ['phi1'])
@@ -203,135 +235,44 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = ()) -> P
     if isinstance(lhs, sp.MatrixBase) and not isinstance(rhs, sp.MatrixBase) and rhs == 0:
         rhs = sp.zeros(*lhs.shape)
     diff = lhs - rhs
-    if isinstance(diff, sp.MatrixBase):
-        entries = list(diff)
-    else:
-        entries = [diff]
-    bad = []
-    for e in entries:
-        if not reduce_expr(e).is_zero:
-            bad.append(e)
+    entries = list(diff) if isinstance(diff, sp.MatrixBase) else [diff]
+    if subs:
+        entries = [e.subs(subs) for e in entries]
+    reds = [reduce_expr(e) for e in entries]
+    factors = sorted({f for r in reds for f in r.factors}, key=sp.default_sort_key)
+    iv_names, iv_rels = _interval_hypotheses(intervals)
+    ctx_names, extra = _context(assumptions, domains, subs)
+    extra += iv_rels
+    syms = set().union(*(e.free_symbols for e in entries))
+    implied, conditions, rows = _denominators(factors, intervals, iv_names, syms, extra,
+                                              domains, subs)
+    hyps = tuple((iv_names if implied else []) + ctx_names)
+    bad = [e for e, r in zip(entries, reds) if not r.is_zero]
+    common = dict(hypotheses=hyps, conditions=tuple(conditions), implied=tuple(implied))
     if not bad:
-        return ProofResult(Status.PROVED, "polynomial reduction", time.perf_counter() - t0)
-    syms = set().union(*(e.free_symbols for e in bad))
-    conds = list(assumptions) or _condition_1_relations(sp.Add(*bad))
-    found = find_counterexample(lambda v: any(_nonzero_at(e, v) for e in bad), list(syms),
-                                conds)
+        cert = {"kind": "identity", "entries": [r.certificate for r in reds],
+                "denominators": rows}
+        return ProofResult(Status.PROVED, "polynomial reduction", time.perf_counter() - t0,
+                           certificate=cert, **common)
+    found = find_counterexample(lambda v: any(_nonzero_at(e, v) for e in bad),
+                                list(set().union(*(e.free_symbols for e in bad))), extra,
+                                domains=domains, derived=subs)
     if found is not None:
-        vals = {"lhs - rhs": float(sp.N(bad[0].subs(found), 17))} if not isinstance(
+        vals = {"lhs - rhs": float(sp.N(bad[0].xreplace(found), 17))} if not isinstance(
             diff, sp.MatrixBase) else {}
         return ProofResult(Status.REFUTED, "polynomial reduction + exact substitution",
-                           time.perf_counter() - t0, _cx(found), values=vals)
+                           time.perf_counter() - t0, _cx(found), values=vals, **common)
     return ProofResult(Status.UNDECIDED, "polynomial reduction (non-zero normal form, "
-                       "no admissible counterexample found)", time.perf_counter() - t0)
+                       "no counterexample found among points of the model)",
+                       time.perf_counter() - t0, **common)
 
 
 # -- signs ---------------------------------------------------------------------
-def _coeffs(form: sp.Expr) -> dict[sp.Expr, sp.Expr]:
-    return sp.expand(form).as_coefficients_dict()
-
-
-def _interval(form: sp.Expr, intervals: Intervals) -> tuple[sp.Expr, sp.Expr] | None:
-    """Open interval of a linear angle form: looked up, or summed from known parts.
-
-    Parts are taken greedily, longest first, and only when every term of the
-    part occurs in what is left with the same sign (so nothing is overshot).
-    """
-    form = sp.expand(form)
-    if form in intervals:
-        return intervals[form]
-    lo, hi = sp.Integer(0), sp.Integer(0)
-    rest = _coeffs(form)
-    for key, (a, b) in sorted(intervals.items(), key=lambda kv: -len(sp.Add.make_args(kv[0]))):
-        kc = _coeffs(key)
-        for sign in (1, -1):
-            if all(t in rest and rest[t] * sign * v > 0 and abs(rest[t]) >= abs(v)
-                   for t, v in kc.items()):
-                for t, v in kc.items():
-                    rest[t] -= sign * v
-                lo, hi = (lo + a, hi + b) if sign == 1 else (lo - b, hi - a)
-                break
-    left = sp.Add(*(v * t for t, v in rest.items()))
-    if left.free_symbols:
-        return None
-    return lo + left, hi + left
-
-
-Sign = tuple[int, int]  # the range [lo, hi] of the sign, within {-1, 0, 1}
-_POS, _NEG, _NONNEG, _NONPOS = (1, 1), (-1, -1), (0, 1), (-1, 0)
-
-
-def _trig_sign(f: sp.Expr, intervals: Intervals) -> Sign | None:
-    iv = _interval(f.args[0], intervals)
-    if iv is None:
-        return None
-    lo, hi = (float(v / sp.pi) for v in iv)  # in units of π
-    shift = 0.5 if isinstance(f, sp.cos) else 0.0  # cos u = sin(u + π/2)
-    lo, hi = lo + shift, hi + shift
-    k = int(lo // 1)
-    if hi <= k + 1 + 1e-15:  # (lo, hi) inside one half-turn (k, k + 1)
-        return _POS if k % 2 == 0 else _NEG
-    return None
-
-
-def _mul(a: Sign, b: Sign) -> Sign:
-    prods = [p * q for p in a for q in b]
-    return min(prods), max(prods)
-
-
-def _add(a: Sign, b: Sign) -> Sign | None:
-    if a[0] >= 0 and b[0] >= 0:  # both >= 0: positive if either is
-        return (1 if max(a[0], b[0]) > 0 else 0), 1
-    if a[1] <= 0 and b[1] <= 0:
-        return -1, (-1 if min(a[1], b[1]) < 0 else 0)
-    return None
-
-
-def sign_of(f: sp.Expr, intervals: Intervals = CONDITION_1) -> Sign | None:
-    """Range of the sign of ``f`` from its structure, or None if unknown.
-
-    Numbers, symbols with sign assumptions, sin/cos of angle forms with known
-    intervals, and products, powers and sums of those.
-
-    Examples
-    --------
-    >>> from graspcompass.symbols import phi1, xi1, y, x1
-    >>> sign_of(-x1 / 2 + y * sp.sin(phi1 + xi1) / sp.cos(phi1 + xi1),
-    ...         {phi1 + xi1: (sp.pi / 2, sp.pi)})
-    (-1, -1)
-    """
-    f = sp.sympify(f)
-    if f.is_Number:
-        return (0, 0) if f == 0 else (_POS if f > 0 else _NEG)
-    if isinstance(f, (sp.sin, sp.cos)):
-        return _trig_sign(f, intervals)
-    if f.is_Pow and f.exp.is_Integer:
-        b = sign_of(f.base, intervals)
-        if b is None:
-            return None
-        out: Sign = (1, 1)
-        for _ in range(abs(int(f.exp))):
-            out = _mul(out, b)
-        return out
-    if f.is_Mul or f.is_Add:
-        parts = [sign_of(a, intervals) for a in f.args]
-        if any(p is None for p in parts):
-            return None
-        acc = parts[0]
-        for p in parts[1:]:
-            acc = _mul(acc, p) if f.is_Mul else _add(acc, p)  # type: ignore[arg-type]
-            if acc is None:
-                return None
-        return acc
-    if f.is_positive:
-        return _POS
-    if f.is_negative:
-        return _NEG
-    if f.is_nonnegative:
-        return _NONNEG
-    if f.is_nonpositive:
-        return _NONPOS
-    return None
+def _wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
+    v = sp.N(e.xreplace(values), 50)
+    if not v.is_number or v.has(sp.zoo, sp.nan) or not v.is_real:
+        raise ValueError("undefined")
+    return bool(v * sign <= 0)
 
 
 def prove_sign(
@@ -341,63 +282,70 @@ def prove_sign(
     assumptions: Sequence[Any] = (),
     intervals: Intervals = CONDITION_1,
     subs: Mapping | None = None,
+    *,
+    domains: Mapping | None = None,
 ) -> ProofResult:
-    """Check ``sign(expr) == sign`` (+1 or -1) for every admissible parameter.
+    """Check ``sign(expr) == sign`` (+1 or -1) at every point of the model.
 
-    ``witness`` lists factors whose product equals ``expr`` (after ``subs``,
-    a change of variables such as ``x1 + x2 = 2 r sin α``); each factor's sign
-    must follow from ``intervals`` or from the symbols' signs.
+    ``witness`` lists factors whose product equals ``expr`` (after ``subs``, a
+    change of variables such as ``x1 + x2 = 2 r sin α``); each factor's sign must
+    follow from ``intervals`` (condition (1) by default) or from the symbols'
+    signs.  Every hypothesis used is recorded in ``hypotheses``: condition (1) by
+    name, each interval the caller adds or changes, the change of variables, the
+    ``domains`` of new symbols and the ``assumptions``; counterexamples are
+    sought among the points of the model that satisfy all of them.
 
     Examples
     --------
     >>> from graspcompass.symbols import phi1, xi1, mu1
     >>> c1, s1 = sp.cos(phi1), sp.sin(phi1)
-    >>> prove_sign(mu1 * s1 - c1, +1, witness=[-1, sp.cos(phi1 + xi1), 1 / sp.cos(xi1)]).status
-    <Status.PROVED: 'PROVED'>
+    >>> r = prove_sign(mu1 * s1 - c1, +1, witness=[-1, sp.cos(phi1 + xi1), 1 / sp.cos(xi1)])
+    >>> r.status, r.hypotheses
+    (<Status.PROVED: 'PROVED'>, ('condition (1)',))
     >>> prove_sign(mu1 * s1 - c1, -1, witness=[-1, sp.cos(phi1 + xi1), 1 / sp.cos(xi1)]).status
     <Status.REFUTED: 'REFUTED'>
     """
     t0 = time.perf_counter()
     e = sp.sympify(expr)
-    conds = list(assumptions) or _condition_1_relations(e)
-    found = find_counterexample(lambda v: _wrong_sign(e, sign, v), list(e.free_symbols), conds)
+    iv_names, iv_rels = _interval_hypotheses(intervals)
+    ctx_names, extra = _context(assumptions, domains, subs)
+    hyps = tuple(iv_names + ctx_names)
+    extra = extra + iv_rels
+    target = e.subs(subs) if subs else e
+    sample_syms = set(target.free_symbols) | {s for r in iv_rels for s in r.free_symbols}
+    if subs:
+        sample_syms -= set(subs)
+    found = find_counterexample(lambda v: _wrong_sign(e, sign, v), list(sample_syms), extra,
+                                domains=domains, derived=subs)
     if found is not None:
         return ProofResult(Status.REFUTED, "exact substitution", time.perf_counter() - t0,
-                           _cx(found), values={"expr": float(sp.N(e.subs(found), 17))})
+                           _cx(found), values={"expr": float(sp.N(e.xreplace(found), 17))},
+                           hypotheses=hyps)
     if witness is None:
         return ProofResult(Status.UNDECIDED, "no witness; no counterexample found",
-                           time.perf_counter() - t0)
-    target = e.subs(subs) if subs else e
-    ident = prove_identity(target, sp.Mul(*witness))
+                           time.perf_counter() - t0, hypotheses=hyps)
+    ident = prove_identity(target, sp.Mul(*witness), intervals=intervals, domains=domains)
+    common = dict(hypotheses=hyps, conditions=ident.conditions, implied=ident.implied)
     if not ident.proved:
         return ProofResult(Status.UNDECIDED, "the witness factorisation did not check",
-                           time.perf_counter() - t0, detail=ident.status.value)
-    found_sign = sign_of(sp.Mul(*witness, evaluate=False), intervals)
-    if found_sign is None or found_sign[0] != found_sign[1]:
+                           time.perf_counter() - t0, detail=ident.status.value, **common)
+    reasons = [sign_reason(w, intervals) for w in witness]
+    if any(r is None or r[0][0] != r[0][1] or r[0][0] == 0 for r in reasons):
         return ProofResult(Status.UNDECIDED, "a witness factor has no known strict sign",
-                           time.perf_counter() - t0)
-    status = Status.PROVED if found_sign[0] == sign else Status.REFUTED
-    return ProofResult(status, "witness factorisation + interval signs",
-                       time.perf_counter() - t0)
-
-
-def _wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
-    v = sp.N(e.subs(values), 50)
-    if not v.is_number or v.has(sp.zoo, sp.nan):
-        raise ValueError("undefined")
-    return bool(v * sign <= 0)
-
-
-def _condition_1_relations(e: sp.Expr) -> list[Any]:
-    fs = e.free_symbols
-    rels: list[Any] = []
-    for phi, xi, mu in ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2)):
-        fric = xi if xi in fs else sp.atan(mu) if mu in fs else None
-        if fric is not None and phi in fs:
-            rels += [phi + fric > sp.pi / 2, phi + fric < 3 * sp.pi / 2,
-                     phi - fric < sp.pi / 2, phi - fric > -sp.pi / 2]
-        if phi in fs:
-            rels.append(phi <= sp.pi)
-        if xi in fs:
-            rels.append(xi < sp.pi / 2)
-    return rels
+                           time.perf_counter() - t0, **common)
+    total = 1
+    for r in reasons:
+        total *= r[0][0]  # type: ignore[index]
+    if total != sign:
+        return ProofResult(Status.UNDECIDED, "the witness proves the opposite sign, but no "
+                           "point of the model was found to show it", time.perf_counter() - t0,
+                           **common)
+    declared = {s.name: [1, 1] if s.is_positive else [0, 1] for s in
+                set().union(*(sp.sympify(w).free_symbols for w in witness))
+                if s.is_positive or s.is_nonnegative}
+    cert = {"kind": "sign", "sign": sign, "identity": ident.certificate,
+            "factors": [{"factor": str(w), "reason": r[1]} for w, r in zip(witness, reasons)],
+            "intervals": _intervals_json(intervals), "symbols": declared,
+            "hypotheses": list(hyps)}
+    return ProofResult(Status.PROVED, "witness factorisation + interval signs",
+                       time.perf_counter() - t0, certificate=cert, **common)

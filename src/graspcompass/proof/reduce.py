@@ -1,81 +1,58 @@
-"""Trigonometric identities reduced to polynomial ones.
+"""Trigonometric identities, square roots and quotients reduced to polynomial ones.
 
 Every angle symbol ``a`` (φ1, φ2, ξ1, ξ2, θ, ...) gets two polynomial variables,
 ``sin a`` and ``cos a`` themselves, tied by ``sin(a)**2 + cos(a)**2 = 1``; sums of
-angles are expanded by the addition formulas, ``tan = sin/cos`` and a friction
-coefficient ``mu_i`` is ``tan xi_i``.  An expression then becomes a rational
-function; it vanishes identically (on the real parameter domain, where the
-circles ``s**2 + c**2 = 1`` are Zariski dense) exactly when its numerator
-reduces to zero modulo the ideal of those relations.  Their leading terms
-``s_a**2`` are pairwise coprime, so they already form a Groebner basis and the
-reduction is a plain multivariate division: no ``simplify``, no guessing.
+angles are expanded by the addition formulas in the polynomial ring (linear in
+``n`` for ``sin(n a)``), ``tan = sin/cos`` and a friction coefficient ``mu_i``
+is ``tan xi_i`` where ``xi_i`` occurs too (eq. (22)).  A square root ``sqrt(P)``
+becomes a variable ``w`` tied by ``w**2 = P``.  An expression then becomes a
+rational function; its numerator is divided by the relations.
+
+Why the division decides: in the lexicographic order with the roots first (outer
+roots before inner ones) and each sine before its cosine, the leading monomials
+``w**2`` and ``s_a**2`` of the relations are pairwise coprime, so the relations
+are a Groebner basis (Buchberger's first criterion) and the remainder is a normal
+form.  A zero remainder proves the identity wherever the expression is defined,
+for every sign of every root, so for the principal roots too.  Without roots a
+non-zero remainder means the identity fails somewhere (the circles
+``s**2 + c**2 = 1`` are Zariski dense); **with roots a non-zero remainder is not
+a refutation** (``sqrt(2)*sqrt(3) - sqrt(6)``): the counterexample search decides.
+
+Every denominator met in the expression tree is recorded; one that vanishes
+modulo the relations makes the expression undefined everywhere
+(:class:`DegenerateClaimError`); the others are returned as irreducible
+factors (:attr:`Reduction.factors`) for the prover to discharge or to list as
+non-degeneracy conditions.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from functools import cache
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Any
 
 import sympy as sp
 
 from .. import symbols as S
-from ..geometry.exact import _nd
+from ._ring import RingForm, to_ring
 
-__all__ = ["ANGLES", "Reduction", "is_identically_zero", "reduce_expr", "trig_to_poly"]
+__all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero", "reduce_expr",
+           "trig_to_poly"]
 
 #: Angle symbols of the model; any other symbol inside sin/cos/tan is added on the fly.
 ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
-_MU = {S.mu1: S.xi1, S.mu2: S.xi2}
 
 
-#: sin(a) -> (sin(a), cos(a)) for every angle met so far.
-_PAIRS: dict[sp.Expr, tuple[sp.Expr, sp.Expr]] = {}
-
-
-@cache
-def _sc(angle: sp.Symbol) -> tuple[sp.Expr, sp.Expr]:
-    """The polynomial variables of an angle: ``sin(a)`` and ``cos(a)`` themselves.
-
-    Keeping the function atoms as variables lets the construction's own
-    (memoised) expressions enter the reduction without being rewritten.
-    """
-    pair = sp.sin(angle), sp.cos(angle)
-    _PAIRS[pair[0]] = pair
-    return pair
-
-
-def _linear_angle(arg: sp.Expr) -> tuple[sp.Expr, dict[sp.Symbol, int]] | None:
-    """``arg`` as ``k*pi + sum(n_a * a)`` with rational k and integer n_a."""
-    k: sp.Expr = sp.Integer(0)
-    coeffs: dict[sp.Symbol, int] = {}
-    for term in sp.Add.make_args(sp.expand(arg)):
-        c, rest = term.as_coeff_Mul()
-        if rest == sp.pi:
-            k += c
-        elif rest.is_Symbol and c.is_Integer:
-            coeffs[rest] = coeffs.get(rest, 0) + int(c)
-        else:
-            return None
-    return k, coeffs
-
-
-def _sin_cos(arg: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
-    """(sin arg, cos arg) as polynomials in the s_a, c_a of its angles."""
-    lin = _linear_angle(arg)
-    if lin is None:
-        return None
-    k, coeffs = lin
-    s, c = sp.sin(k * sp.pi), sp.cos(k * sp.pi)
-    for a, n in coeffs.items():
-        sa, ca = _sc(a)
-        sb = sa if n > 0 else -sa
-        for _ in range(abs(n)):
-            s, c = s * ca + c * sb, c * ca - s * sb
-    return sp.expand(s), sp.expand(c)
+class DegenerateClaimError(ValueError):
+    """An expression with a denominator that vanishes identically: 0/0 or undefined everywhere."""
 
 
 def trig_to_poly(expr: sp.Expr) -> sp.Expr:
     """Replace sin, cos, tan of angle combinations and ``mu_i`` by s_a, c_a variables.
+
+    The result is a rational function of ``sin(a)``, ``cos(a)``, the other symbols
+    and the square roots; ``mu_i`` becomes ``sin(xi_i)/cos(xi_i)`` where ``xi_i``
+    occurs too (eq. (22)).
 
     Examples
     --------
@@ -83,69 +60,112 @@ def trig_to_poly(expr: sp.Expr) -> sp.Expr:
     >>> trig_to_poly(sp.sin(phi1 + xi1)) == sp.sin(phi1)*sp.cos(xi1) + sp.sin(xi1)*sp.cos(phi1)
     True
     """
-    expr = sp.sympify(expr)
-    repl: dict[sp.Expr, sp.Expr] = {}
-    for f in expr.atoms(sp.sin, sp.cos, sp.tan):
-        if f.args[0].is_Symbol and not isinstance(f, sp.tan):
-            _sc(f.args[0])
-            continue
-        sc = _sin_cos(f.args[0])
-        if sc is None:
-            raise ValueError(f"cannot reduce {f}: its argument is not a sum of angle symbols")
-        s, c = sc
-        repl[f] = s if isinstance(f, sp.sin) else c if isinstance(f, sp.cos) else s / c
-    for mu, xi in _MU.items():  # mu = tan xi, needed only where xi appears too
-        if expr.has(mu) and expr.has(xi):
-            s, c = _sc(xi)
-            repl[mu] = s / c
-    return expr.xreplace(repl) if repl else expr
+    form = to_ring([sp.sympify(expr)])
+    n, d = form.values[0]
+    return form.as_expr(n) / form.as_expr(d)
+
+
+def poly_json(p: Any) -> list[list[Any]]:
+    """A sparse polynomial as JSON: ``[["p/q", [exponents...]], ...]`` (sorted)."""
+    return sorted(([f"{int(c.numerator)}/{int(c.denominator)}", list(m)] for m, c in p.terms()),
+                  key=lambda t: t[1])
 
 
 @dataclass(frozen=True)
 class Reduction:
-    """The normal form of an expression's numerator, and its denominator."""
+    """The normal form of an expression's numerator, its denominator, and the data of a proof.
+
+    Attributes
+    ----------
+    remainder : sympy.Expr
+        Normal form of the numerator modulo the relations (0 proves the identity).
+    denominator : sympy.Expr
+        The product of every denominator met (no cancellation).
+    factors : tuple of sympy.Expr
+        The distinct irreducible (non-constant) factors of the denominators met,
+        none of them zero modulo the relations.
+    certificate : dict, optional
+        When the remainder is 0: the numerator, the relations and the cofactors
+        (``N = sum q_i rel_i``) as JSON-ready sparse polynomials.
+    """
 
     remainder: sp.Expr
     denominator: sp.Expr
+    factors: tuple[sp.Expr, ...] = ()
+    certificate: dict[str, Any] | None = field(default=None, compare=False)
 
     @property
     def is_zero(self) -> bool:
-        """True when the expression vanishes identically."""
+        """True when the expression vanishes identically (where defined)."""
         return self.remainder == 0
 
 
+def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
+    out: dict[Any, sp.Expr] = {}
+    for d in dens:
+        if d.is_ground:
+            continue
+        _, rem = d.div(form.relations) if form.relations else ([], d)
+        if not rem:
+            raise DegenerateClaimError(
+                f"{expr} is undefined for every value of its symbols: its denominator "
+                f"{form.as_expr(d)} is 0 modulo {form.describe_relations()} (0/0)")
+        parts = [(d, 1)] if len(d) > 80 else d.sqf_list()[1] if len(d) > 30 else \
+            d.factor_list()[1]
+        for f, _k in parts:
+            if f.is_ground:
+                continue
+            f = f.quo_ground(f.LC)
+            out.setdefault(f, form.as_expr(f))
+    return tuple(sorted(out.values(), key=sp.default_sort_key))
+
+
+@lru_cache(maxsize=4096)
 def reduce_expr(expr: sp.Expr) -> Reduction:
-    """Reduce ``expr`` modulo ``s_a**2 + c_a**2 - 1`` for every angle in it.
+    """Reduce ``expr`` modulo ``s_a**2 + c_a**2 - 1`` (each angle) and ``w**2 - P`` (each root).
+
+    Cached by content (the expression itself), never by a name.
+
+    Raises
+    ------
+    DegenerateClaimError
+        If a denominator met is 0 modulo the relations (the expression is 0/0 or
+        undefined everywhere).
+    ValueError
+        For what is not a rational function of sines, cosines and square roots
+        (floats, ``sin(phi1/2)``, cube roots).
 
     Examples
     --------
-    >>> from graspcompass.symbols import phi1
+    >>> from graspcompass.symbols import phi1, x1
     >>> reduce_expr(sp.sin(phi1)**2 + sp.cos(phi1)**2 - 1).is_zero
     True
     >>> reduce_expr(sp.sin(phi1)**2 - sp.cos(phi1)**2).is_zero
     False
+    >>> reduce_expr((x1**2 - 1) / (x1 - 1) - x1 - 1).factors
+    (x1 - 1,)
     """
-    poly = trig_to_poly(expr)
-    trig = poly.atoms(sp.sin, sp.cos)
-    pairs = sorted({_PAIRS[sp.sin(f.args[0])] for f in trig}, key=str)
-    inner = set().union(*(f.free_symbols for f in trig)) if trig else set()
-    outer = poly.xreplace({f: sp.Dummy() for f in trig}).free_symbols - {
-        d for d in poly.xreplace({f: sp.Dummy() for f in trig}).free_symbols if d.is_Dummy}
-    if outer & inner:
-        raise ValueError(f"an angle appears outside sin/cos: {sorted(map(str, outer & inner))}")
-    sines = [p[0] for p in pairs]
-    gens = [*sines, *sorted((outer | {p[1] for p in pairs}), key=str)]
-    if not gens:
-        return Reduction(sp.Integer(0) if poly == 0 else poly, sp.Integer(1))
-    R = sp.ring(gens, sp.QQ, sp.lex)[0]
-    # numerator and denominator as sparse polynomials, without any gcd on the way
-    num, den = _nd(poly, R, {g: i for i, g in enumerate(gens)})
-    if not num or not pairs:
-        return Reduction(num.as_expr(), den.as_expr())
-    rem = num.rem([R(s**2 + c**2 - 1) for s, c in pairs])
-    return Reduction(rem.as_expr(), den.as_expr())
+    expr = sp.sympify(expr)
+    form = to_ring([expr])
+    (num, den), dens = form.values[0], form.denominators[0]
+    factors = _factors(form, dens, expr)
+    if not num:
+        return Reduction(sp.Integer(0), form.as_expr(den), factors,
+                         form.certificate(num, [R0 * 0 for R0 in form.relations]))
+    if not form.relations:
+        return Reduction(form.as_expr(num), form.as_expr(den), factors)
+    quotients, rem = num.div(form.relations)
+    cert = form.certificate(num, quotients) if not rem else None
+    return Reduction(form.as_expr(rem), form.as_expr(den), factors, cert)
 
 
 def is_identically_zero(expr: sp.Expr) -> bool:
-    """True when ``expr`` vanishes for every value of its symbols (where defined)."""
+    """True when ``expr`` vanishes for every value of its symbols (where defined).
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1
+    >>> is_identically_zero(sp.sin(2 * phi1) - 2 * sp.sin(phi1) * sp.cos(phi1))
+    True
+    """
     return reduce_expr(expr).is_zero

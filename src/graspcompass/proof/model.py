@@ -1,0 +1,299 @@
+"""Points of the model: the admissibility check and exact admissible sampling.
+
+A point of the model gives exact values to (some of) the symbols of §2.2 such
+that
+
+* each value lies in its domain (:data:`graspcompass.symbols.DOMAINS`:
+  ``x1, x2 > 0``, ``y >= 0``, ``0 < phi <= pi``, ``0 < xi < pi/2``, ``mu > 0``);
+* condition (1) holds at each contact: ``pi/2 < phi_i + xi_i < 3pi/2`` and
+  ``-pi/2 < phi_i - xi_i < pi/2``, with ``xi_i = atan(mu_i)`` when only ``mu_i`` is
+  given; when ``phi_i`` is given without a friction value the point must still
+  admit one, i.e. ``phi_i < pi``;
+* ``mu_i = tan(xi_i)`` (eq. (22)) when both are given;
+* the extra relations of the claim (change-of-variable domains, caller hypotheses).
+
+Every decision is exact: a 50-digit evaluation separated from zero by a margin
+of 1e-40, or an exact zero test; what neither decides is reported as a violation.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from functools import lru_cache
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as S
+from ..expr import parse_exact
+
+__all__ = ["CONTACTS", "find_counterexample", "sample", "violations"]
+
+#: (phi_i, xi_i, mu_i) of the two contacts.
+CONTACTS = ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2))
+_BY_NAME = {str(s): s for s in S.DOMAINS}
+_MARGIN = sp.Float(10) ** -40
+_LENGTHS = [sp.Rational(n, d) for n, d in ((1, 3), (1, 2), (2, 3), (1, 1), (3, 2), (2, 1),
+                                           (5, 2), (3, 1), (7, 5), (4, 5))]
+_MUS = [sp.Rational(n, d) for n, d in ((1, 5), (1, 3), (1, 2), (3, 4), (1, 1), (6, 5), (7, 5),
+                                       (2, 1), (3, 1), (5, 1))]
+
+
+def _normalise(values: Mapping[Any, Any], known: Iterable[sp.Symbol] = ()
+               ) -> dict[sp.Symbol, sp.Expr]:
+    """Symbols for names (those of the model, else of ``known``), exact values for text."""
+    names = {**{str(s): s for s in known}, **_BY_NAME}
+    out: dict[sp.Symbol, sp.Expr] = {}
+    for k, v in values.items():
+        sym = k if isinstance(k, sp.Symbol) else names.get(str(k), sp.Symbol(str(k)))
+        out[sym] = parse_exact(v) if isinstance(v, str) else sp.sympify(v)
+    return out
+
+
+#: (lower bound, open?, upper bound, open?) of each symbol of the model (§2.2).
+_DOMAIN: dict[sp.Symbol, tuple[Any, bool, Any, bool]] = {
+    S.x1: (0, True, None, False), S.x2: (0, True, None, False), S.y: (0, False, None, False),
+    S.phi1: (0, True, sp.pi, False), S.phi2: (0, True, sp.pi, False),
+    S.xi1: (0, True, sp.pi / 2, True), S.xi2: (0, True, sp.pi / 2, True),
+    S.mu1: (0, True, None, False), S.mu2: (0, True, None, False),
+    S.F_e: (0, True, None, False), S.theta: (None, False, None, False),
+}
+
+
+@lru_cache(maxsize=65536)
+def _sign(d: sp.Expr) -> int | None:
+    """Exact sign of the number ``d``: 50 digits with a margin, else an exact zero test."""
+    d = sp.sympify(d)
+    if d.free_symbols:
+        return None
+    if d.is_Rational:
+        return int(sp.sign(d))
+    q = d / sp.pi
+    if q.is_Add:
+        q = sp.expand(q)
+    if q.is_Rational:
+        return int(sp.sign(q))
+    v = sp.N(d, 50)
+    if not v.is_number or v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not v.is_real:
+        return None
+    if abs(v) > _MARGIN:
+        return 1 if v > 0 else -1
+    if sp.expand(d) == 0 or sp.radsimp(sp.expand(d)) == 0:
+        return 0
+    return None
+
+
+_OPS = {sp.StrictGreaterThan: lambda s: s > 0, sp.GreaterThan: lambda s: s >= 0,
+        sp.StrictLessThan: lambda s: s < 0, sp.LessThan: lambda s: s <= 0,
+        sp.Equality: lambda s: s == 0, sp.Unequality: lambda s: s != 0}
+
+
+def _check(rel: Any, values: Mapping[sp.Symbol, sp.Expr]) -> str | None:
+    """None if ``rel`` holds at ``values``, else why not."""
+    if not isinstance(rel, sp.Basic):
+        rel = sp.sympify(rel)
+    if rel is sp.true:
+        return None
+    if rel is sp.false:
+        return "False"
+    if isinstance(rel, sp.And):
+        for a in rel.args:
+            bad = _check(a, values)
+            if bad:
+                return bad
+        return None
+    if type(rel) not in _OPS:
+        return f"{rel}: not a relation"
+    d = (rel.lhs - rel.rhs).xreplace(values)
+    s = _sign(d)
+    if s is None:
+        return f"{rel}: undecided at {d}"
+    return None if _OPS[type(rel)](s) else f"{rel} fails ({rel.lhs - rel.rhs} = {sp.N(d, 8)})"
+
+
+def _condition_1(phi: sp.Expr, fric: sp.Expr) -> list[Any]:
+    return [sp.StrictGreaterThan(phi + fric, sp.pi / 2, evaluate=False),
+            sp.StrictLessThan(phi + fric, 3 * sp.pi / 2, evaluate=False),
+            sp.StrictLessThan(phi - fric, sp.pi / 2, evaluate=False),
+            sp.StrictGreaterThan(phi - fric, -sp.pi / 2, evaluate=False)]
+
+
+def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str]:
+    """What keeps ``values`` from being a point of the model (empty list: none).
+
+    Parameters
+    ----------
+    values : mapping of symbol (or its name) to exact value (or its text)
+    extra : relations that must hold too (the claim's own hypotheses)
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1, xi1, mu1
+    >>> violations({phi1: sp.pi / 2, xi1: sp.pi / 4, mu1: 1})
+    []
+    >>> violations({phi1: sp.pi / 2, xi1: sp.pi / 4, mu1: 2})
+    ['mu1 = tan(xi1) (eq. (22)) fails']
+    >>> violations({phi1: sp.pi / 6, mu1: sp.Rational(1, 3)})
+    ['condition (1) at contact 1: phi1 + atan(mu1) > pi/2 fails']
+    """
+    extra = list(extra)
+    v = _normalise(values, set().union(*(sp.sympify(r).free_symbols for r in extra)))
+    out: list[str] = []
+    for sym, val in v.items():
+        if val.is_real is False or val.has(sp.zoo, sp.nan, sp.I):
+            out.append(f"{sym} = {val} is not real")
+            continue
+        lo, lo_open, hi, hi_open = _DOMAIN.get(sym) or (
+            (0, True, None, False) if sym.is_positive else
+            (0, False, None, False) if sym.is_nonnegative else (None, False, None, False))
+        for bound, is_open, side in ((lo, lo_open, 1), (hi, hi_open, -1)):
+            if bound is None:
+                continue
+            s = _sign(side * (val - bound))
+            if s is None or s < 0 or (s == 0 and is_open):
+                op = (">" if side == 1 else "<") + ("" if is_open else "=")
+                out.append(f"domain of {sym}: {sym} {op} {bound} fails at {sym} = {val}")
+    for i, (phi, xi, mu) in enumerate(CONTACTS, 1):
+        if xi in v and mu in v and _equal_tan(v[mu], v[xi]) is not True:
+            out.append(f"{mu} = tan({xi}) (eq. (22)) fails")
+        fric, name = (xi, str(xi)) if xi in v else (sp.atan(mu), f"atan({mu})") if mu in v \
+            else (None, "")
+        if phi in v and fric is not None:
+            fv = fric.xreplace(v)
+            for n, rel in enumerate(_condition_1(v[phi], fv)):
+                if _check(rel, v):
+                    text = (f"{phi} + {name} > pi/2", f"{phi} + {name} < 3*pi/2",
+                            f"{phi} - {name} < pi/2", f"{phi} - {name} > -pi/2")[n]
+                    out.append(f"condition (1) at contact {i}: {text} fails")
+        elif phi in v and _check(sp.StrictLessThan(v[phi], sp.pi, evaluate=False), v):
+            out.append(f"condition (1) at contact {i}: {phi} < pi fails (no friction "
+                       "value admits this angle)")
+    for rel in extra:
+        bad = _check(rel, v)
+        if bad:
+            out.append(f"hypothesis {bad}")
+    return out
+
+
+def _equal_tan(mu: sp.Expr, xi: sp.Expr) -> bool | None:
+    if isinstance(mu, sp.tan) and sp.expand(mu.args[0] - xi) == 0:
+        return True
+    s = _sign(sp.tan(xi) - mu)
+    return None if s is None else s == 0
+
+
+def _angle(rng: random.Random, lo: int, hi: int) -> sp.Expr:
+    return sp.pi * sp.Rational(rng.randint(lo, hi), 24)
+
+
+def sample(symbols: Sequence[sp.Symbol], rng: random.Random,
+           domains: Mapping[sp.Symbol, tuple[Any, Any]] | None = None) -> dict[sp.Symbol, sp.Expr]:
+    """An exact admissible point for ``symbols`` (condition (1), (22), the domains).
+
+    ``xi_i`` is drawn first and ``mu_i = tan(xi_i)`` exactly when both occur; ``phi_i``
+    is drawn so that (1) holds; a symbol outside the model takes a value strictly
+    inside ``domains[sym] = (lo, hi)`` (``hi`` may be None), else one that respects
+    its sympy sign assumptions.
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1, xi1, mu1
+    >>> p = sample([phi1, xi1, mu1], random.Random(1))
+    >>> violations(p)
+    []
+    """
+    want = set(symbols)
+    out: dict[sp.Symbol, sp.Expr] = {}
+    for phi, xi, mu in CONTACTS:
+        if xi in want or (mu in want and rng.random() < 0.7):
+            while True:
+                j, k = rng.randint(1, 23), rng.randint(1, 11)
+                if abs(j - k) < 12 < j + k or phi not in want:
+                    break
+            if xi in want:
+                out[xi] = sp.pi * sp.Rational(k, 24)
+            if mu in want:
+                out[mu] = sp.tan(sp.pi * sp.Rational(k, 24), evaluate=False)
+            if phi in want:
+                out[phi] = sp.pi * sp.Rational(j, 24)
+        elif mu in want:
+            out[mu] = rng.choice(_MUS)
+            if phi in want:  # (1) with xi = atan(mu): phi in (pi/2 - xi, pi/2 + xi)
+                out[phi] = sp.pi * sp.Rational(rng.choice(_phis_for(out[mu])), 24)
+        elif phi in want:
+            out[phi] = _angle(rng, 1, 23)
+    for sym in sorted(want - set(out), key=str):
+        out[sym] = _value(sym, rng, (domains or {}).get(sym))
+    return out
+
+
+@lru_cache(maxsize=64)
+def _phis_for(mu: sp.Expr) -> tuple[int, ...]:
+    """The j with phi = j*pi/24 satisfying (1) for this mu."""
+    a = sp.N(24 * sp.atan(mu) / sp.pi, 50)  # (1): 12 - a < j < 12 + a; re-checked later
+    return tuple(j for j in range(1, 24) if abs(j - 12) < a - _MARGIN)
+
+
+def _value(sym: sp.Symbol, rng: random.Random, dom: tuple[Any, Any] | None) -> sp.Expr:
+    if dom is not None:
+        lo, hi = (sp.sympify(d) if d is not None else None for d in dom)
+        if hi is None:
+            return lo + rng.choice(_LENGTHS)
+        return lo + (hi - lo) * sp.Rational(rng.randint(1, 23), 24)
+    if sym == S.theta:
+        return _angle(rng, -23, 23) + sp.Rational(1, 7)
+    if sym == S.y and rng.random() < 0.15:
+        return sp.Integer(0)
+    value = rng.choice(_LENGTHS)
+    if sym.is_positive or sym.is_nonnegative:
+        return value
+    return value * rng.choice([-1, 1])
+
+
+def find_counterexample(
+    test: Callable[[Mapping[sp.Symbol, sp.Expr]], bool],
+    symbols: Sequence[sp.Symbol],
+    assumptions: Sequence[Any] = (),
+    tries: int = 60,
+    seed: int = 2012,
+    *,
+    domains: Mapping[sp.Symbol, tuple[Any, Any]] | None = None,
+    derived: Mapping[sp.Symbol, sp.Expr] | None = None,
+) -> dict[sp.Symbol, sp.Expr] | None:
+    """A point of the model where ``test(values)`` is True, or None.
+
+    ``test`` must decide exactly (e.g. by a 50-digit evaluation of an exact
+    expression); it receives the whole point (sampled and derived values).
+    ``assumptions`` are relations on top of the model (never a replacement
+    for it); ``domains`` gives intervals of change-of-variable symbols;
+    ``derived`` gives symbols of the model as functions of the sampled ones
+    (``x1 = 2*r*sin(alpha) - x2``): their values join the point, and the whole
+    point is re-checked with :func:`violations` before it is returned.
+
+    Examples
+    --------
+    >>> from graspcompass.symbols import phi1, mu1
+    >>> d = mu1 * sp.sin(phi1) - sp.cos(phi1)  # > 0 under (1): no counterexample
+    >>> p = find_counterexample(lambda v: sp.N(d.xreplace(v), 50) <= 0, [phi1, mu1])
+    >>> p is None
+    True
+    """
+    rng = random.Random(seed)
+    syms = sorted(set(symbols), key=str)
+    for _ in range(tries * 4):
+        values = sample(syms, rng, domains)
+        full = dict(values)
+        for s, e in (derived or {}).items():
+            full[s] = e.xreplace(values)
+        if violations(full, assumptions):
+            continue
+        try:
+            if test(full):
+                return full
+        except (ZeroDivisionError, TypeError, ValueError):
+            continue
+        tries -= 1
+        if tries <= 0:
+            break
+    return None
