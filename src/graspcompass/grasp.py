@@ -21,6 +21,7 @@ import sympy as sp
 from .expr import ExpressionError, parse_exact
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
+from .geometry.trig import sincos, tan_exact
 
 __all__ = ["PRESETS", "Grasp", "InvalidGraspError"]
 
@@ -157,8 +158,9 @@ class Grasp:
         self.assumptions: tuple[sp.Basic, ...] = ()
         self._SC: tuple[np.ndarray, np.ndarray] | None = None  # float S_n, C_n, on demand
         self._validate()
-        self.s1, self.c1 = sp.sin(self.phi1), sp.cos(self.phi1)
-        self.s2, self.c2 = sp.sin(self.phi2), sp.cos(self.phi2)
+        # exact sines and cosines without nested radicals (generators where needed)
+        self.s1, self.c1 = sincos(self.phi1)
+        self.s2, self.c2 = sincos(self.phi2)
 
     # -- construction -----------------------------------------------------------
     def _friction(self, i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
@@ -181,7 +183,7 @@ class Grasp:
                     f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
                     f"must be {words} (0 < ξ < π/2)"
                 )
-        return canon(sp.tan(x)), x
+        return (canon(tan_exact(x)) if not has_float(x) else sp.tan(x)), x
 
     @classmethod
     def preset(cls, name: str) -> Grasp:
