@@ -159,7 +159,12 @@ def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str
             out.append(f"{mu} = tan({xi}) (eq. (22)) fails")
         fric, name = (xi, str(xi)) if xi in v else (sp.atan(mu), f"atan({mu})") if mu in v \
             else (None, "")
-        if phi in v and fric is not None:
+        qp, qf = _pi_q(v.get(phi)), _fric_q(v, xi, mu)
+        if qp is not None and qf is not None:  # rational multiples of pi: exact at once
+            if not (abs(qp + qf - 1) < sp.Rational(1, 2) and abs(qp - qf) < sp.Rational(1, 2)):
+                out.append(f"condition (1) at contact {i}: {phi} = {v[phi]}, {name} = "
+                           f"{qf * sp.pi} break pi/2 < phi + xi < 3pi/2, |phi - xi| < pi/2")
+        elif phi in v and fric is not None:
             fv = fric.xreplace(v)
             for n, rel in enumerate(_condition_1(v[phi], fv)):
                 if _check(rel, v):
@@ -174,6 +179,27 @@ def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str
         if bad:
             out.append(f"hypothesis {bad}")
     return out
+
+
+def _pi_q(val: sp.Expr | None) -> sp.Rational | None:
+    """q when ``val`` is literally q*pi with rational q, else None."""
+    if val is None:
+        return None
+    if val == 0:
+        return sp.Integer(0)
+    c, rest = val.as_coeff_Mul()
+    return c if rest is sp.pi and c.is_Rational else None
+
+
+def _fric_q(v: Mapping[sp.Symbol, sp.Expr], xi: sp.Symbol, mu: sp.Symbol) -> sp.Rational | None:
+    if xi in v:
+        return _pi_q(v[xi])
+    m = v.get(mu)
+    if isinstance(m, sp.tan):
+        q = _pi_q(m.args[0])
+        if q is not None and 0 < q < sp.Rational(1, 2):
+            return q  # atan(tan(q*pi)) = q*pi on (0, pi/2)
+    return None
 
 
 def _equal_tan(mu: sp.Expr, xi: sp.Expr) -> bool | None:
@@ -286,13 +312,12 @@ def find_counterexample(
         full = dict(values)
         for s, e in (derived or {}).items():
             full[s] = e.xreplace(values)
-        if violations(full, assumptions):
-            continue
         try:
-            if test(full):
-                return full
+            hit = test(full)
         except (ZeroDivisionError, TypeError, ValueError):
             continue
+        if hit and not violations(full, assumptions):  # the exact re-check of the point
+            return full
         tries -= 1
         if tries <= 0:
             break

@@ -21,11 +21,13 @@
 from __future__ import annotations
 
 import enum
+import functools
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import mpmath
 import sympy as sp
 
 from .model import find_counterexample
@@ -268,7 +270,22 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
 
 
 # -- signs ---------------------------------------------------------------------
+@functools.lru_cache(maxsize=512)
+def _mp(e: sp.Expr) -> tuple[Callable[..., Any], tuple[sp.Symbol, ...]]:
+    syms = tuple(sorted(e.free_symbols, key=str))
+    return sp.lambdify(syms, e, modules="mpmath"), syms
+
+
 def _wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
+    """``sign * e <= 0`` at ``values``: a 60-digit mpmath screen, confirmed by ``evalf``."""
+    f, syms = _mp(e)
+    try:
+        with mpmath.workdps(60):
+            fast = f(*(mpmath.mpf(str(sp.N(values[s], 70))) for s in syms))
+        if not isinstance(fast, mpmath.mpf) or fast * sign > mpmath.mpf(10) ** -20:
+            return False  # clearly of the claimed sign (or not real): no candidate here
+    except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
+        pass
     v = sp.N(e.xreplace(values), 50)
     if not v.is_number or v.has(sp.zoo, sp.nan) or not v.is_real:
         raise ValueError("undefined")

@@ -100,9 +100,13 @@ class Reduction:
         return self.remainder == 0
 
 
+#: Normal form of a denominator (as an expression) -> its irreducible factors: by content.
+_FACTORS: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
+
+
 def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
-    out: dict[Any, sp.Expr] = {}
-    for d in dens:
+    out: dict[sp.Expr, None] = {}
+    for d in dict.fromkeys(dens):
         if d.is_ground:
             continue
         _, rem = d.div(form.relations) if form.relations else ([], d)
@@ -110,14 +114,16 @@ def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
             raise DegenerateClaimError(
                 f"{expr} is undefined for every value of its symbols: its denominator "
                 f"{form.as_expr(d)} is 0 modulo {form.describe_relations()} (0/0)")
-        parts = [(d, 1)] if len(d) > 80 else d.sqf_list()[1] if len(d) > 30 else \
-            d.factor_list()[1]
-        for f, _k in parts:
-            if f.is_ground:
-                continue
-            f = f.quo_ground(f.LC)
-            out.setdefault(f, form.as_expr(f))
-    return tuple(sorted(out.values(), key=sp.default_sort_key))
+        if rem.is_ground:  # a non-zero constant on the variety: no condition
+            continue
+        key = form.as_expr(rem)  # equal to d wherever the relations hold
+        if key not in _FACTORS:
+            parts = [(rem, 1)] if len(rem) > 80 else rem.sqf_list()[1] if len(rem) > 30 \
+                else rem.factor_list()[1]
+            _FACTORS[key] = tuple(form.as_expr(f.quo_ground(f.LC)) for f, _k in parts
+                                  if not f.is_ground)
+        out.update(dict.fromkeys(_FACTORS[key]))
+    return tuple(sorted(out, key=sp.default_sort_key))
 
 
 @lru_cache(maxsize=4096)
