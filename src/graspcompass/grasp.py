@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins
 from .expr import ExpressionError, parse_exact
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
@@ -244,6 +245,31 @@ class Grasp:
             for expr, msg, shown in cond:
                 self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
         self.assumptions = tuple(assumed)
+        self._check_float_margins()
+
+    def _check_float_margins(self) -> None:
+        """Refuse a float grasp within rounding of a bound of condition (1).
+
+        The float construction's X_n, Y_n, V_n scale like 1/cos(φ ± ξ) (eqs.
+        (28)-(39)) and carry a relative error of about ε/|cos(φ ± ξ)|; below a
+        margin of :data:`~graspcompass._floatpath.FLOAT_MARGIN` (1e-12) of the
+        bound, double precision cannot resolve them (see :mod:`._floatpath`).
+        """
+        if not self.numeric or any(v.free_symbols for v in self.params.values()):
+            return
+        for m in condition_1_margins(self.params):
+            if m.relative >= FLOAT_MARGIN:
+                continue
+            where = ("within" if m.margin > 0 else "on the wrong side of, and within")
+            raise InvalidGraspError(
+                f"contact {m.contact}: {m.text} of condition (1) is within rounding of its "
+                f"bound: φ{m.contact} {m.text[3]} ξ{m.contact} = {m.value!r} rad is {where} "
+                f"{abs(m.margin):.2g} rad of {m.bound}, below the {FLOAT_MARGIN:g}·|{m.bound}| "
+                "that double precision resolves here (the cone side is nearly horizontal and "
+                f"X_n, Y_n, V_n scale like 1/cos(φ{m.contact} {m.text[3]} ξ{m.contact})). "
+                "Give the parameters exactly, as text such as 'pi/2', '3*pi/4' or '1/3', "
+                "to use the exact path"
+            )
 
     @staticmethod
     def _check(expr: sp.Expr, strict: bool, msg: str, assumed: list, shown: Any = None) -> None:
@@ -342,13 +368,19 @@ class Grasp:
         return tuple(Point(s, c) for s, c in zip(self.S, self.C))  # type: ignore[return-value]
 
     def _floats(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(S1..S4), (C1..C4)`` of eqs. (28)-(39) as doubles, for numeric θ.
+
+        Evaluated from the parameters (floats taken as their exact binary values)
+        at 40 digits or more and rounded once, so they are correct to about one
+        unit in the last place even where a cone side is nearly horizontal and
+        S_n, C_n ~ 1/cos(φ ± ξ) are ill-conditioned in double precision.
+        """
         if self._SC is None:
             try:
-                S = np.array([float(v) for v in self.S])
-                C = np.array([float(v) for v in self.C])
+                S, C = closed_form_floats(self.params)
             except TypeError as exc:
                 raise TypeError("a symbolic grasp cannot be evaluated on numeric θ") from exc
-            self._SC = (S, C)
+            self._SC = (np.array(S), np.array(C))
         return self._SC
 
     # -- k_n and k_grasp --------------------------------------------------------

@@ -1,12 +1,29 @@
-"""The outer envelope of the four circles: k_grasp(θ) as exact arcs (eq. (25), Fig. 5).
+"""The outer envelope of the four circles: k_grasp(θ) as arcs (eq. (25), Fig. 5).
 
 In the direction e(θ) the polar graph of k_n is the circle on the diameter
 O V_n (Thales, eq. (31)); k_grasp(θ) = max(k_1, ..., k_4, 0) is the outermost
 circle, and the origin O where every k_n(θ) ≤ 0.  The arcs' break points are
 the second intersections of two circles (where k_n = k_m > 0) or O (where the
-largest k_n falls to 0).  Which circle wins on which interval is decided by
-evaluation at interval midpoints (to 30 significant digits); the break points
-and their angles are exact.
+largest k_n falls to 0).
+
+Which circle wins where is decided in high precision (mpmath, ``_DPS`` digits)
+from the values of V_n: every angle where two k's are equal (e(θ) ⊥ V_n − V_m)
+or one k is zero (e(θ) ⊥ V_n) is a candidate break angle, and the winner of
+each interval between candidates is the largest k at its midpoint.  A float
+V_n is taken as the exact binary number it is, so circles that nearly (or
+exactly) coincide are ordered correctly and no arc runs backwards.
+
+*Exact V_n* (exact grasps): the break points are the construction's exact
+second intersections ``Bnm`` (or O), and the angles are exact.
+
+*Float V_n* (float grasps): the break points are computed, not taken from the
+construction (the intersection of two nearly coincident circles is
+ill-conditioned in double precision): at the break angle θ the point is
+k(θ) e(θ), on both circles to rounding.  Arcs shorter than ``_FLOAT_MERGE``
+(1e-13 rad) are merged into their neighbours, which changes k_grasp by at most
+2e-13 max|V_n|; so the float arcs partition [θ0, θ0 + 2π) in strictly
+increasing double angles, and :meth:`Envelope.k` equals max(k_1..k_4, 0) of the
+envelope's own V_n to about 1e-13 max|V_n| (measured: a few 1e-16).
 """
 
 from __future__ import annotations
@@ -16,26 +33,37 @@ from dataclasses import dataclass
 from itertools import combinations
 from typing import Any
 
+import mpmath
 import numpy as np
 import sympy as sp
 
+from .._floatpath import mpf
 from ..geometry import Point, angle_of
-from ..geometry.exact import canon, decide_sign
+from ..geometry.exact import canon, decide_sign, has_float
 
-__all__ = ["Arc", "Envelope", "outer_envelope"]
+__all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
 
 _TWO_PI = 2 * np.pi
-_PREC = 30
+#: Working digits of the winner decisions.
+_DPS = 40
+#: Candidate angles closer than this (rad) are one break angle (exact V_n).
+_EXACT_MERGE = 1e-25
+#: Float arcs shorter than this (rad) are merged into their neighbours.
+_FLOAT_MERGE = 1e-13
 
+
+class EnvelopeError(ValueError):
+    """The construction's break point does not lie at the computed break angle."""
 
 @dataclass(frozen=True)
 class Arc:
     """One piece of the envelope, for θ from ``theta_start`` to ``theta_end``.
 
     ``n`` is the index of the circle (1-4) that is outermost there, or 0 for
-    the zero region where every k_n(θ) ≤ 0 and the envelope stays at O.  Angles
-    are exact, ``0 <= theta_start < 2π`` and ``theta_start < theta_end <=
-    theta_start + 2π``; ``start`` and ``end`` are the exact envelope points.
+    the zero region where every k_n(θ) ≤ 0 and the envelope stays at O.
+    ``0 <= theta_start < 2π`` and ``theta_start < theta_end <= theta_start + 2π``;
+    ``start`` and ``end`` are the envelope points there.  Angles and points are
+    exact for exact V_n, sympy Floats (double precision) for float V_n.
     """
 
     n: int
@@ -52,14 +80,14 @@ class Arc:
 
 @dataclass(frozen=True)
 class Envelope:
-    """The polar graph of k_grasp(θ) as a cyclic list of exact arcs."""
+    """The polar graph of k_grasp(θ) as a cyclic list of arcs, in increasing θ."""
 
     arcs: tuple[Arc, ...]
     V: tuple[Point, ...]
 
     @property
     def breakpoints(self) -> tuple[Point, ...]:
-        """The exact points where the outermost circle changes (O included)."""
+        """The points where the outermost circle changes (O included)."""
         return tuple(a.start for a in self.arcs)
 
     @property
@@ -97,66 +125,144 @@ def _angle(vector: Point) -> sp.Expr:
     return canon(a + 2 * sp.pi) if decide_sign(a) == -1 else canon(a)
 
 
-def _f(expr: sp.Expr) -> float:
-    return float(sp.N(expr, _PREC))
+def _theta(wx: mpmath.mpf, wy: mpmath.mpf) -> mpmath.mpf:
+    """θ in [0, 2π) with e(θ) = (sin θ, −cos θ) along ``(wx, wy)``."""
+    return mpmath.atan2(wx, -wy) % (2 * mpmath.pi)
+
+
+def _ks(Vm: list[tuple[mpmath.mpf, mpmath.mpf]], t: mpmath.mpf) -> list[mpmath.mpf]:
+    """``[0, k_1(θ), .., k_4(θ)]`` with k_n = S_n sin θ − C_n cos θ (32)."""
+    s, c = mpmath.sin(t), mpmath.cos(t)
+    return [mpmath.mpf(0)] + [x * s - y * c for x, y in Vm]
+
+
+def _breaks(Vm: list[tuple[mpmath.mpf, mpmath.mpf]], merge: float) -> list[tuple[Any, int, int]]:
+    """The break angles in increasing order: ``(θ, winner before, winner after)``.
+
+    Candidates are the angles with e(θ) ⊥ V_n (k_n = 0) and e(θ) ⊥ V_n − V_m
+    (k_n = k_m); between two neighbouring candidates the order of the k's does
+    not change, so the midpoint decides the winner (ties: the lowest index).
+    """
+    cands = []
+    for key in [(n,) for n in range(4)] + list(combinations(range(4), 2)):
+        wx = Vm[key[0]][0] - (Vm[key[1]][0] if len(key) == 2 else 0)
+        wy = Vm[key[0]][1] - (Vm[key[1]][1] if len(key) == 2 else 0)
+        if wx or wy:
+            t = _theta(-wy, wx)  # e ⊥ w: e = ±(−wy, wx)
+            cands += [t, (t + mpmath.pi) % (2 * mpmath.pi)]
+    cands.sort()
+    cuts: list[Any] = []
+    for t in cands:
+        if not cuts or t - cuts[-1] > merge:
+            cuts.append(t)
+    if len(cuts) > 1 and cuts[0] + 2 * mpmath.pi - cuts[-1] <= merge:
+        cuts.pop()
+    if not cuts:  # every V_n = O: k_grasp = 0 everywhere
+        return []
+    m = len(cuts)
+    win = []
+    for i in range(m):
+        b = cuts[i + 1] if i + 1 < m else cuts[0] + 2 * mpmath.pi
+        ks = _ks(Vm, (cuts[i] + b) / 2)
+        win.append(max(range(5), key=lambda n: (ks[n], -n)))
+    return [(cuts[i], win[i - 1], win[i]) for i in range(m) if win[i - 1] != win[i]]
+
+
+def _merge_short(breaks: list[tuple[Any, int, int]], tol: float) -> list[tuple[Any, int, int]]:
+    """Drop arcs shorter than ``tol`` (rad): the neighbours meet at the first break."""
+    out = list(breaks)
+    while len(out) > 2:
+        m = len(out)
+        lengths = [(out[(j + 1) % m][0] - out[j][0]) % (2 * mpmath.pi) for j in range(m)]
+        j = min(range(m), key=lambda j: lengths[j])
+        if lengths[j] >= tol:
+            break
+        t, before, _ = out[j]
+        after = out[(j + 1) % m][2]
+        drop = {j, (j + 1) % m}
+        rest = [b for i, b in enumerate(out) if i not in drop]
+        if before != after:
+            rest.append((t, before, after))
+        out = sorted(rest, key=lambda b: b[0])
+    return out
+
+
+def _float_arcs(Vm: list[tuple[mpmath.mpf, mpmath.mpf]],
+                breaks: list[tuple[Any, int, int]]) -> list[Arc]:
+    points = []
+    for t, a, b in breaks:
+        if a == 0 or b == 0:
+            points.append(Point(0, 0))
+            continue
+        ks = _ks(Vm, t)
+        k = max((ks[a] + ks[b]) / 2, 0)
+        points.append(Point(sp.Float(float(k * mpmath.sin(t))),
+                            sp.Float(float(-k * mpmath.cos(t)))))
+    thetas = [sp.Float(float(t)) for t, _, _ in breaks]
+    m = len(breaks)
+    return [Arc(breaks[j][2], thetas[j],
+                thetas[j + 1] if j + 1 < m else sp.Float(float(breaks[0][0] + 2 * mpmath.pi)),
+                points[j], points[(j + 1) % m]) for j in range(m)]
+
+
+def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
+                breaks: list[tuple[Any, int, int]]) -> list[Arc]:
+    found = []
+    for t, a, b in breaks:
+        lo, hi = sorted((a, b))
+        p = objects.get(f"B{lo}{hi}") if lo else None
+        if p is not None and not (p.x == 0 and p.y == 0):
+            theta = _angle(p)
+            with mpmath.workdps(_DPS):
+                gap = abs((mpf(theta) - t + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
+            if gap > 1e-20:
+                raise EnvelopeError(
+                    f"B{lo}{hi} = {p} lies at θ = {theta}, not at the break angle "
+                    f"{mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
+            found.append((theta, p))
+            continue
+        # the largest k falls to 0 (or the circles touch at O): the break is O
+        w = V[hi - 1] if not lo else V[lo - 1] - V[hi - 1]
+        best = None
+        for e in (w.perp(), -w.perp()):
+            theta = _angle(e)
+            with mpmath.workdps(_DPS):
+                gap = abs((mpf(theta) - t + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
+            if best is None or gap < best[0]:
+                best = (gap, theta)
+        found.append((best[1], Point(0, 0)))
+    # exact angles in [0, 2π): sorting them puts a break just below 2π last
+    order = sorted(range(len(found)), key=lambda j: mpf(found[j][0]))
+    m = len(order)
+    arcs = []
+    for j, i in enumerate(order):
+        nxt = order[(j + 1) % m]
+        t1 = found[nxt][0] if j + 1 < m else canon(found[nxt][0] + 2 * sp.pi)
+        arcs.append(Arc(breaks[i][2], found[i][0], t1, found[i][1], found[nxt][1]))
+    return arcs
 
 
 def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     """The envelope of the circles on O V_n, from the named construction objects.
 
-    Uses ``V1``..``V4`` and the second intersections ``Bnm`` of the construction.
+    Uses ``V1``..``V4`` and, for exact V_n, the second intersections ``Bnm`` of
+    the construction as the exact break points.
+
+    Raises
+    ------
+    EnvelopeError
+        If an exact ``Bnm`` is not at the break angle computed from the V_n (a
+        construction that does not match its own V_n).
     """
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
-    Vf = [(_f(v.x), _f(v.y)) for v in V]
-    # candidate angles (floats): where two k's are equal, or where one k is zero; each
-    # remembers the vector w it is perpendicular to (index n, or the pair a, b)
-    cands: list[tuple[float, tuple[int, ...], int]] = []
-    for key in [(n,) for n in range(4)] + list(combinations(range(4), 2)):
-        wx = Vf[key[0]][0] - (Vf[key[1]][0] if len(key) == 2 else 0.0)
-        wy = Vf[key[0]][1] - (Vf[key[1]][1] if len(key) == 2 else 0.0)
-        if wx or wy:
-            for sign in (1, -1):  # e = ±perp(w) = ±(-wy, wx), θ = atan2(e.x, -e.y)
-                cands.append((float(np.mod(np.arctan2(-sign * wy, -sign * wx), _TWO_PI)),
-                              key, sign))
-    cands.sort(key=lambda c: c[0])
-    cuts: list[tuple[float, tuple[int, ...], int]] = []
-    for cand in cands:
-        if not cuts or cand[0] - cuts[-1][0] > 1e-12:
-            cuts.append(cand)
-
-    def best(t: float) -> int:
-        s, c = np.sin(t), np.cos(t)
-        ks = [0.0] + [x * s - y * c for x, y in Vf]
-        return int(np.argmax(ks))  # ties go to the lowest index
-
-    m = len(cuts)
-    winners = []
-    for i in range(m):
-        a, b = cuts[i][0], cuts[(i + 1) % m][0] + (_TWO_PI if i + 1 == m else 0.0)
-        winners.append(best((a + b) / 2))
-    # boundaries between different winners: cut i separates interval i-1 and i
-    bounds = [i for i in range(m) if winners[i - 1] != winners[i]]
-    origin = Point(0, 0)
-
-    def exact_direction(i: int) -> Point:
-        _, key, sign = cuts[i]
-        w = V[key[0]] if len(key) == 1 else V[key[0]] - V[key[1]]
-        return w.perp() if sign == 1 else -w.perp()
-
-    def point_at(i: int) -> tuple[sp.Expr, Point]:
-        a, b = sorted((winners[i - 1], winners[i]))
-        p = objects.get(f"B{a}{b}") if a else None
-        if p is None:  # the largest k falls to 0 here (or tangent circles): the break is O
-            return _angle(exact_direction(i)), origin
-        return _angle(p), p
-
-    exact = {i: point_at(i) for i in bounds}
-    arcs = []
-    for j, i in enumerate(bounds):
-        nxt = bounds[(j + 1) % len(bounds)]
-        t0, p0 = exact[i]
-        t1, p1 = exact[nxt]
-        if cuts[nxt][0] <= cuts[i][0]:  # the arc wraps past θ = 2π
-            t1 = canon(t1 + 2 * sp.pi)
-        arcs.append(Arc(winners[i], t0, t1, p0, p1))
+    numeric = any(has_float(c) for v in V for c in (v.x, v.y))
+    with mpmath.workdps(_DPS):
+        Vm = [(mpf(v.x), mpf(v.y)) for v in V]
+        breaks = _breaks(Vm, _EXACT_MERGE)
+        if numeric:
+            breaks = _merge_short(breaks, _FLOAT_MERGE)
+        if not breaks:  # k_grasp = 0 everywhere (or one circle: impossible for V ≠ O)
+            o = Point(0, 0)
+            return Envelope((Arc(0, sp.Integer(0), 2 * sp.pi, o, o),), V)
+        arcs = _float_arcs(Vm, breaks) if numeric else _exact_arcs(objects, V, breaks)
     return Envelope(tuple(arcs), V)
