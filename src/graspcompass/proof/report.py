@@ -8,7 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..progress import Progress
-from .catalogue import CLAIMS, Claim, check
+from .catalogue import CLAIMS, Claim, check, session
 from .prove import ProofResult, Status
 
 __all__ = ["ClaimReport", "exit_status", "run_catalogue", "to_json", "to_markdown", "to_table"]
@@ -27,8 +27,12 @@ class ClaimReport:
         rec: dict[str, Any] = {
             "id": c.id, "ref": c.ref, "status": r.status.value,
             "seconds": round(r.seconds, 4), "statement": c.statement, "method": r.method,
-            "printed": c.printed,
+            "printed": c.printed, "hypotheses": list(r.hypotheses),
+            "conditions": list(r.conditions), "implied": list(r.implied),
+            "depends": [d.id for d in c.depends],
         }
+        if r.certificate is not None:
+            rec["certificate"] = r.certificate
         if r.counterexample is not None:
             rec["counterexample"] = r.counterexample
         if c.corrected_by:
@@ -43,7 +47,7 @@ class ClaimReport:
 def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False) -> list[ClaimReport]:
     """Check every claim, with a progress bar on a terminal unless ``quiet``."""
     out = []
-    with Progress(len(claims), "verify", quiet=quiet) as bar:
+    with session(), Progress(len(claims), "verify", quiet=quiet) as bar:
         for c in claims:
             out.append(ClaimReport(c, check(c)))
             bar.update(note=c.id)
@@ -51,7 +55,7 @@ def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False) -> list
 
 
 def exit_status(reports: Sequence[ClaimReport]) -> int:
-    """0 when nothing is UNDECIDED and every refuted claim has a proved correction."""
+    """0 when nothing is UNDECIDED and every refuted claim has a proved correction, else 1."""
     by_id = {r.claim.id: r for r in reports}
     for r in reports:
         if r.result.status is Status.UNDECIDED:
@@ -65,7 +69,15 @@ def exit_status(reports: Sequence[ClaimReport]) -> int:
 
 def to_json(reports: Sequence[ClaimReport]) -> str:
     """The reports as a JSON list of records."""
-    return json.dumps([r.record() for r in reports], indent=1, ensure_ascii=False)
+    return json.dumps([r.record() for r in reports], indent=1, ensure_ascii=False, default=str)
+
+
+def _assumes(r: ClaimReport) -> str:
+    """Hypotheses, then extra non-degeneracy conditions, for one line of a report."""
+    parts = list(r.result.hypotheses)
+    if r.result.conditions:
+        parts.append("extra: " + "; ".join(r.result.conditions))
+    return "; ".join(parts) or "none"
 
 
 def to_table(reports: Sequence[ClaimReport]) -> str:
@@ -85,6 +97,9 @@ def to_table(reports: Sequence[ClaimReport]) -> str:
         if r.result.status is Status.REFUTED:
             cx = ", ".join(f"{k} = {v}" for k, v in (r.result.counterexample or {}).items())
             lines.append(f"  {r.claim.id}: REFUTED at {cx}; corrected by {r.claim.corrected_by}")
+    lines.append("\nhypotheses (extra: non-degeneracy conditions not shown implied by them)")
+    for r in reports:
+        lines.append(f"  {r.claim.id}: {_assumes(r)}")
     return "\n".join(lines)
 
 
@@ -107,10 +122,13 @@ def to_markdown(reports: Sequence[ClaimReport]) -> str:
             if fix is not None:
                 out += ["", f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
                         f"{fix.claim.statement}", ""]
-    out += ["", "## All claims", "", "| id | paper | statement | status | method | s |",
-            "| --- | --- | --- | --- | --- | --- |"]
+    out += ["", "## All claims", "", "| id | paper | statement | status | hypotheses | "
+            "conditions | method | s |", "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in reports:
         st = r.claim.statement.replace("|", "\\|")
+        hyp = "; ".join(r.result.hypotheses).replace("|", "\\|") or "none"
+        cond = "; ".join([*(f"extra: {x}" for x in r.result.conditions),
+                          *(f"implied: {x}" for x in r.result.implied)]).replace("|", "\\|")
         out.append(f"| `{r.claim.id}` | {r.claim.ref} | {st} | {r.result.status.value} | "
-                   f"{r.result.method} | {r.result.seconds:.2f} |")
+                   f"{hyp} | {cond or 'none'} | {r.result.method} | {r.result.seconds:.2f} |")
     return "\n".join(out) + "\n"
