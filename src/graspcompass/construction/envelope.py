@@ -28,6 +28,7 @@ envelope's own V_n to about 1e-13 max|V_n| (measured: a few 1e-16).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from itertools import combinations
@@ -160,10 +161,20 @@ def _breaks(Vm: list[tuple[mpmath.mpf, mpmath.mpf]], merge: float) -> list[tuple
     if not cuts:  # every V_n = O: k_grasp = 0 everywhere
         return []
     m = len(cuts)
+    Vf = [(float(x), float(y)) for x, y in Vm]
+    clear = 1e-12 * max(1.0, *(abs(x) + abs(y) for x, y in Vf))
     win = []
     for i in range(m):
         b = cuts[i + 1] if i + 1 < m else cuts[0] + 2 * mpmath.pi
-        ks = _ks(Vm, (cuts[i] + b) / 2)
+        mid = (cuts[i] + b) / 2
+        # in double precision when the largest k leads by far more than rounding
+        s, c = math.sin(float(mid)), math.cos(float(mid))
+        kf = sorted([(0.0, 0), *((x * s - y * c, -n) for n, (x, y) in enumerate(Vf, 1))],
+                    reverse=True)
+        if kf[0][0] - kf[1][0] > clear:
+            win.append(-kf[0][1])
+            continue
+        ks = _ks(Vm, mid)
         win.append(max(range(5), key=lambda n: (ks[n], -n)))
     return [(cuts[i], win[i - 1], win[i]) for i in range(m) if win[i - 1] != win[i]]
 
@@ -205,40 +216,41 @@ def _float_arcs(Vm: list[tuple[mpmath.mpf, mpmath.mpf]],
                 points[j], points[(j + 1) % m]) for j in range(m)]
 
 
+def _gap(a: Any, b: Any) -> Any:
+    """Distance of two angles on the circle (mpmath)."""
+    return abs((a - b + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
+
+
 def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
                 breaks: list[tuple[Any, int, int]]) -> list[Arc]:
-    found = []
+    found = []  # (θ numeric, θ exact, point)
     for t, a, b in breaks:
         lo, hi = sorted((a, b))
         p = objects.get(f"B{lo}{hi}") if lo else None
         if p is not None and not (p.x == 0 and p.y == 0):
-            theta = _angle(p)
-            with mpmath.workdps(_DPS):
-                gap = abs((mpf(theta) - t + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
-            if gap > 1e-20:
+            tp = _theta(mpf(p.x), mpf(p.y))
+            if _gap(tp, t) > 1e-20:
                 raise EnvelopeError(
-                    f"B{lo}{hi} = {p} lies at θ = {theta}, not at the break angle "
-                    f"{mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
-            found.append((theta, p))
+                    f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
+                    f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
+            found.append((tp, _angle(p), p))
             continue
-        # the largest k falls to 0 (or the circles touch at O): the break is O
+        # the largest k falls to 0 (or the circles touch at O): the break is O, at the
+        # angle with e(θ) ⊥ w, of the two the one the numeric break angle found
         w = V[hi - 1] if not lo else V[lo - 1] - V[hi - 1]
-        best = None
-        for e in (w.perp(), -w.perp()):
-            theta = _angle(e)
-            with mpmath.workdps(_DPS):
-                gap = abs((mpf(theta) - t + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
-            if best is None or gap < best[0]:
-                best = (gap, theta)
-        found.append((best[1], Point(0, 0)))
-    # exact angles in [0, 2π): sorting them puts a break just below 2π last
-    order = sorted(range(len(found)), key=lambda j: mpf(found[j][0]))
+        e = w.perp()
+        te = _theta(mpf(e.x), mpf(e.y))
+        if _gap(te, t) > mpmath.pi / 2:
+            e, te = -e, (te + mpmath.pi) % (2 * mpmath.pi)
+        found.append((te, _angle(e), Point(0, 0)))
+    # sorted by the angles themselves: a break just below 2π comes last
+    order = sorted(range(len(found)), key=lambda j: found[j][0])
     m = len(order)
     arcs = []
     for j, i in enumerate(order):
         nxt = order[(j + 1) % m]
-        t1 = found[nxt][0] if j + 1 < m else canon(found[nxt][0] + 2 * sp.pi)
-        arcs.append(Arc(breaks[i][2], found[i][0], t1, found[i][1], found[nxt][1]))
+        t1 = found[nxt][1] if j + 1 < m else canon(found[nxt][1] + 2 * sp.pi)
+        arcs.append(Arc(breaks[i][2], found[i][1], t1, found[i][2], found[nxt][2]))
     return arcs
 
 
