@@ -210,3 +210,23 @@ def test_cli_verify_json_and_help(capsys):
     with pytest.raises(SystemExit):
         main(["verify", "--help"])
     assert "exit status" in capsys.readouterr().out
+
+
+def _leaves(cert):
+    if cert is None:
+        return []
+    if "parts" in cert and "kind" not in cert:
+        return [x for p in cert["parts"] for x in _leaves(p)]
+    return [cert]
+
+
+def test_every_certificate_of_verify_rechecks(reports):
+    from graspcompass.proof.recheck import problems
+
+    n = 0
+    for r in reports:
+        if r.result.proved:
+            for cert in _leaves(r.result.certificate):
+                n += 1
+                assert not problems(cert), (r.claim.id, problems(cert)[:3])
+    assert n >= 60
