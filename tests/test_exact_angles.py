@@ -81,7 +81,7 @@ def test_typed_angle_gives_the_exact_construction(preset, angle, which):
         return  # refused by condition (1): tested elsewhere
     try:
         g = Grasp(**params)
-    except Exception as exc:  # noqa: BLE001 - only condition (1) at its exact bounds
+    except ValueError as exc:  # only condition (1) at its exact bounds
         assert "condition (1)" in str(exc), exc
         return
     c = internal_force_diagram(g)

@@ -12,6 +12,7 @@ from typing import Any
 import sympy as sp
 
 from ..geometry import Circle, Line, Point
+from ..geometry.exact import text
 from .envelope import Envelope
 from .protocol import Construction, Step
 
@@ -34,35 +35,36 @@ def describe(obj: Any, ascii: bool = False) -> str:
     '(1, sqrt(3)/2)'
     """
     if isinstance(obj, Point):
-        return f"({obj.x}, {obj.y})"
+        return f"({text(obj.x)}, {text(obj.y)})"
     if isinstance(obj, Line):
         return f"through {describe(obj.point)} along {describe(obj.direction)}"
     if isinstance(obj, Circle):
-        return f"centre {describe(obj.center)}, {'radius^2' if ascii else 'r²'} = {obj.radius2}"
+        r2 = "radius^2" if ascii else "r²"
+        return f"centre {describe(obj.center)}, {r2} = {text(obj.radius2)}"
     if isinstance(obj, Envelope):
         theta = "theta" if ascii else "θ"
         parts = [
-            ("O" if a.is_zero else f"circle {a.n}") + f" for {theta} in [{a.theta_start}, "
-            f"{a.theta_end}]" for a in obj.arcs
+            ("O" if a.is_zero else f"circle {a.n}") + f" for {theta} in [{text(a.theta_start)}, "
+            f"{text(a.theta_end)}]" for a in obj.arcs
         ]
         return "; ".join(parts)
-    return str(obj)
+    return text(obj)
 
 
 def _value(obj: Any) -> dict[str, Any]:
     if isinstance(obj, Point):
-        return {"x": str(obj.x), "y": str(obj.y), "float": [_num(obj.x), _num(obj.y)]}
+        return {"x": text(obj.x), "y": text(obj.y), "float": [_num(obj.x), _num(obj.y)]}
     if isinstance(obj, Line):
         return {"point": _value(obj.point), "direction": _value(obj.direction)}
     if isinstance(obj, Circle):
-        return {"center": _value(obj.center), "radius2": str(obj.radius2),
+        return {"center": _value(obj.center), "radius2": text(obj.radius2),
                 "radius": _num(sp.sqrt(obj.radius2))}
     if isinstance(obj, Envelope):
         return {"arcs": [
-            {"circle": a.n, "theta_start": str(a.theta_start), "theta_end": str(a.theta_end),
+            {"circle": a.n, "theta_start": text(a.theta_start), "theta_end": text(a.theta_end),
              "theta_start_deg": _deg(a.theta_start), "theta_end_deg": _deg(a.theta_end),
              "start": _value(a.start), "end": _value(a.end)} for a in obj.arcs]}
-    return {"exact": str(obj), "float": _num(obj)}
+    return {"exact": text(obj), "float": _num(obj)}
 
 
 def _deg(theta: sp.Expr) -> float | None:

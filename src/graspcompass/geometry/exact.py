@@ -20,7 +20,8 @@ import sympy as sp
 
 from ..expr import parse_exact
 
-__all__ = ["Expr", "canon", "clear_caches", "decide_sign", "decide_zero", "has_float", "sym"]
+__all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zero", "has_float",
+           "sym", "text"]
 
 Expr = sp.Expr
 
@@ -54,6 +55,25 @@ def sym(value: object) -> sp.Expr:
         return sp.sympify(value, strict=True)  # numpy scalars, Fraction
     except (sp.SympifyError, TypeError) as exc:
         raise TypeError(f"expected a number or a sympy expression, got {value!r}") from exc
+
+
+def text(expr: object) -> str:
+    """``str(expr)`` in sympy's own term order, without its numeric sorting of terms.
+
+    The default printer sorts the terms of a sum of numbers by evaluating each one,
+    which is slow for long exact sums; this text is the same for equal canonical
+    forms.
+
+    Examples
+    --------
+    >>> text(sp.sqrt(3) / 2 + 1)
+    'sqrt(3)/2 + 1'
+    """
+    if not isinstance(expr, sp.Basic):
+        return str(expr)
+    if expr.free_symbols or not expr.has(sp.sin, sp.cos, sp.atan):
+        return str(expr)  # small radicals and symbols: sympy's usual order
+    return sp.sstr(expr, order="none")
 
 
 def has_float(expr: sp.Expr) -> bool:
@@ -101,7 +121,7 @@ def canon(expr: sp.Expr) -> sp.Expr:
     return sp.expand(num) / sp.expand(den)
 
 
-@lru_cache(maxsize=64)
+@lru_cache(maxsize=4096)
 def _ring(gens: tuple[sp.Expr, ...]):
     return sp.ring(gens, sp.QQ, sp.lex)[0]
 
@@ -119,6 +139,7 @@ def clear_caches() -> None:
     _MEMO.clear()
     _ring.cache_clear()
     _atom_plan.cache_clear()
+    _positions.cache_clear()
 
 
 def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
@@ -191,16 +212,12 @@ def _collect(expr: sp.Expr, atoms: dict, roots: set, pairs: set) -> bool:
     return True
 
 
-def _gen_key(g: sp.Expr, roots: set, sines: set) -> tuple:
-    return (0 if g in roots else 1 if g in sines else 2, sp.default_sort_key(g))
-
-
 def _convert(e: sp.Expr, R, amap: dict) -> tuple:
     """``e`` as (numerator, denominator) in R, atoms mapped by ``amap``, no gcd."""
     hit = _MEMO.get(e)
     if hit is not None:
         r, n, d = hit
-        return (n, d) if r is R else (n.set_ring(R), d.set_ring(R))
+        return (n, d) if r is R else (_lift(n, r, R), _lift(d, r, R))
     if e.is_Rational:
         return R(e.p), R(e.q)
     m = amap.get(e)
@@ -226,6 +243,43 @@ def _convert(e: sp.Expr, R, amap: dict) -> tuple:
     raise ValueError(f"not a rational function of its atoms: {e}")
 
 
+@lru_cache(maxsize=1024)
+def _positions(r, R) -> tuple[int, ...] | None:
+    """Where each generator of ring r sits in ring R (None if one is missing)."""
+    index = {g: i for i, g in enumerate(R.symbols)}
+    try:
+        return tuple(index[g] for g in r.symbols)
+    except KeyError:
+        return None
+
+
+def _lift(p, r, R):
+    """The polynomial p of ring r as an element of R, whose generators include r's."""
+    pos = _positions(r, R)
+    if pos is None:
+        return p.set_ring(R)
+    k = R.ngens
+    out = {}
+    for monom, coeff in p.items():
+        m = [0] * k
+        for i, e in zip(pos, monom):
+            m[i] = e
+        out[tuple(m)] = coeff
+    return R.dtype(out)
+
+
+@lru_cache(maxsize=4096)
+def _gen_key(g: sp.Expr) -> tuple:
+    """Order of generators: prime square roots, then sines (their relations lead), then rest."""
+    if g.is_Pow and g.exp == sp.S.Half and g.base.is_Integer:
+        rank = 0
+    elif isinstance(g, sp.sin):
+        rank = 1
+    else:
+        rank = 2
+    return (rank, sp.default_sort_key(g))
+
+
 def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
     """One reduced fraction in the growing ring of generators (see :func:`canon`)."""
     atoms: dict = {}
@@ -239,13 +293,8 @@ def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
     gens |= {a for a, plan in atoms.items() if plan[0] == "gen"}
     if not gens:
         return None
-    if len(_GENS | gens) > _MAX_GENS:
-        clear_caches()
-    if not gens <= _GENS:
-        _GENS.update(gens)
-    all_roots = {g for g in _GENS if g.is_Pow}
-    all_sines = {g for g in _GENS if isinstance(g, sp.sin)}
-    order = tuple(sorted(_GENS, key=lambda g: _gen_key(g, all_roots, all_sines)))
+    _GENS.update(gens)
+    order = tuple(sorted(gens, key=_gen_key))  # this expression's own generators
     R = _ring(order)
     index = {g: R.gens[i] for i, g in enumerate(order)}
     amap: dict = {g: (index[g], R.one) for g in gens}
@@ -410,6 +459,9 @@ def decide_sign(expr: sp.Expr) -> int | None:
     if expr.is_Number and not has_float(expr):
         return 0 if expr == 0 else (1 if expr > 0 else -1)
     if not expr.free_symbols and not has_float(expr):
+        q = expr / sp.pi  # angles: a rational multiple of pi is decided at once
+        if q.is_Rational:
+            return 0 if q == 0 else (1 if q > 0 else -1)
         sign = _strict_sign(canon(expr))
         if sign is not None:
             return sign
@@ -493,6 +545,39 @@ def _interval(expr: sp.Expr):
             used.update(i for i, e in enumerate(monom) if e)
     values = [_gen_interval(g) if i in used else None for i, g in enumerate(R.symbols)]
     return _poly_interval(n, values) / _poly_interval(d, values)
+
+
+def approx(expr: sp.Expr, dps: int = 30):
+    """``expr`` as an :class:`mpmath.mpf` with about ``dps`` correct digits (fast).
+
+    Exact numbers are evaluated from their canonical form by interval
+    arithmetic (each generator once), much faster than ``sympy.N`` on long
+    expressions; anything else goes through ``sympy.N``.
+
+    Examples
+    --------
+    >>> float(approx(sp.sqrt(2) + sp.sin(3 * sp.pi / 5)))
+    2.36527007866...
+    """
+    import mpmath
+    from mpmath import iv
+
+    expr = sym(expr)
+    if not expr.free_symbols and not has_float(expr) and not expr.is_Rational:
+        prec = iv.prec
+        iv.prec = max(_IV_PREC, int(dps * 3.33) + 64)
+        try:
+            value = _interval(expr)
+        except (TypeError, ZeroDivisionError):
+            value = None
+        finally:
+            iv.prec = prec
+        if value is not None:
+            lo, hi = mpmath.mpf(value.a), mpmath.mpf(value.b)
+            if hi - lo < mpmath.mpf(10) ** -(dps + 2) * (1 + abs(lo)):
+                return (lo + hi) / 2
+    with mpmath.workdps(dps):
+        return mpmath.mpf(sp.N(expr, dps))
 
 
 def _strict_sign(reduced: sp.Expr) -> int | None:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .errors import CoincidentPointsError, DegenerateCircleError, ZeroDirectionError
-from .exact import canon, decide_sign, decide_zero, sym
+from .exact import canon, decide_sign, decide_zero, sym, text
 
 __all__ = ["ORIGIN", "Circle", "Conditions", "Line", "Point", "Ray", "Segment"]
 
@@ -57,7 +57,7 @@ class Point:
         return cls(canon(sym(x)), canon(sym(y)), conditions)
 
     def __repr__(self) -> str:
-        return f"Point({self.x}, {self.y})"
+        return f"Point({text(self.x)}, {text(self.y)})"
 
     def __iter__(self):  # allows ``x, y = p``
         yield self.x
@@ -177,7 +177,7 @@ class Circle:
         object.__setattr__(self, "conditions", _merge(self.center) | self.conditions)
 
     def __repr__(self) -> str:
-        return f"Circle({self.center}, radius2={self.radius2})"
+        return f"Circle({self.center}, radius2={text(self.radius2)})"
 
     @property
     def radius(self) -> sp.Expr:
