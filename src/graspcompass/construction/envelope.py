@@ -120,10 +120,18 @@ class Envelope:
         return np.column_stack([r * np.sin(t), -r * np.cos(t)])
 
 
-def _angle(vector: Point) -> sp.Expr:
-    """Exact θ in [0, 2π) with e(θ) along ``vector``."""
-    a = angle_of(vector)
-    return canon(a + 2 * sp.pi) if decide_sign(a) == -1 else canon(a)
+def _angle(vector: Point, approx: Any = None) -> sp.Expr:
+    """Exact θ in [0, 2π) with e(θ) along ``vector``.
+
+    ``approx`` (θ in [0, 2π) from mpmath) decides the branch without evaluating
+    the exact arctangent, unless θ is within 1e-20 of π.
+    """
+    a = angle_of(vector)  # in (−π, π]
+    if approx is not None and abs(approx - mpmath.pi) > 1e-20:
+        negative = approx > mpmath.pi
+    else:
+        negative = decide_sign(a) == -1
+    return canon(a + 2 * sp.pi) if negative else canon(a)
 
 
 def _theta(wx: mpmath.mpf, wy: mpmath.mpf) -> mpmath.mpf:
@@ -233,7 +241,7 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
                 raise EnvelopeError(
                     f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
                     f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
-            found.append((tp, _angle(p), p))
+            found.append((tp, _angle(p, tp), p))
             continue
         # the largest k falls to 0 (or the circles touch at O): the break is O, at the
         # angle with e(θ) ⊥ w, of the two the one the numeric break angle found
@@ -242,7 +250,7 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
         te = _theta(mpf(e.x), mpf(e.y))
         if _gap(te, t) > mpmath.pi / 2:
             e, te = -e, (te + mpmath.pi) % (2 * mpmath.pi)
-        found.append((te, _angle(e), Point(0, 0)))
+        found.append((te, _angle(e, te), Point(0, 0)))
     # sorted by the angles themselves: a break just below 2π comes last
     order = sorted(range(len(found)), key=lambda j: found[j][0])
     m = len(order)
