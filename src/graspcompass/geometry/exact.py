@@ -137,9 +137,14 @@ def clear_caches() -> None:
     """Forget the generators and memoised canonical forms (for benchmarks and tests)."""
     _GENS.clear()
     _MEMO.clear()
+    from . import trig
+
     _ring.cache_clear()
     _atom_plan.cache_clear()
     _positions.cache_clear()
+    _gen_interval.cache_clear()
+    trig.sincos.cache_clear()
+    trig._reference.cache_clear()
 
 
 def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
