@@ -17,12 +17,12 @@ intervals) or listed as extra hypotheses.
 from __future__ import annotations
 
 from functools import cache
+from itertools import combinations_with_replacement
 from typing import Any
 
 import sympy as sp
 
 from .. import symbols as S
-from ..geometry.exact import _nd
 from .prove import CONDITION_1, sign_of
 from .reduce import reduce_expr, trig_to_poly
 
@@ -51,11 +51,43 @@ class Ring:
         expr = sp.sympify(expr)
         hit = self._cache.get(expr)
         if hit is None:
-            hit = _nd(trig_to_poly(expr), self.R, self.index)
+            hit = self._nd(trig_to_poly(expr))
             if not hit[1]:
                 raise ValueError(f"zero denominator in {expr}")
             self._cache[expr] = hit
         return hit
+
+    def _nd(self, e: sp.Expr) -> tuple[Any, Any]:
+        """Numerator and denominator of ``e``, no gcd on the way; every node cached."""
+        hit = self._cache.get(e)
+        if hit is not None:
+            return hit
+        R = self.R
+        if e.is_Rational:
+            out = R(e.p), R(e.q)
+        elif e in self.index:
+            out = R.gens[self.index[e]], R.one
+        elif e.is_Add or e.is_Mul:
+            n, d = self._nd(e.args[0])
+            for a in e.args[1:]:
+                n2, d2 = self._nd(a)
+                if e.is_Mul:
+                    n, d = n * n2, d * d2
+                elif d == d2:
+                    n = n + n2
+                else:
+                    n, d = n * d2 + n2 * d, d * d2
+            out = n, d
+        elif e.is_Pow and e.exp.is_Integer:
+            n, d = self._nd(e.base)
+            k = int(e.exp)
+            if k < 0:
+                n, d, k = d, n, -k
+            out = n**k, d**k
+        else:
+            raise ValueError(f"not a rational function of the model's generators: {e}")
+        self._cache[e] = out
+        return out
 
     def reduce(self, p: Any) -> Any:
         """The normal form of ``p`` modulo sin² + cos² − 1."""
@@ -119,6 +151,29 @@ def _positive(p: Any, R: Ring) -> bool:
     return any(mon[iy] == 0 for mon in p.monoms())
 
 
+def _gens_of(p: Any) -> frozenset[int]:
+    return frozenset(i for mon in p.monoms() for i, e in enumerate(mon) if e)
+
+
+@cache
+def _powers(gq: frozenset[int], limit: int = 4) -> tuple[tuple[Any, str], ...]:
+    """Reduced products of at most ``limit`` sign-table entries whose generators are ``gq``."""
+    R = ring()
+    table = [(t, why) for t, why in _sign_table() if _gens_of(t) <= gq]
+    out = []
+    for size in range(1, limit + 1):
+        for combo in combinations_with_replacement(range(len(table)), size):
+            polys = [table[i][0] for i in combo]
+            if frozenset().union(*(_gens_of(q) for q in polys)) != gq:
+                continue
+            prod = R.R.one
+            for q in polys:
+                prod = prod * q
+            why = " · ".join(dict.fromkeys(table[i][1] for i in combo))
+            out.append((R.reduce(prod), why))
+    return tuple(out)
+
+
 @cache
 def _classify_factor(p: Any) -> str | None:
     R = ring()
@@ -129,30 +184,41 @@ def _classify_factor(p: Any) -> str | None:
         return "a non-zero constant"
     if _positive(q, R):
         return "a positive polynomial of x1, x2, μ (y ≥ 0)"
-    for t, why in _sign_table():
-        if q * t.LC == t * q.LC:
-            return why
+    gq = _gens_of(q)
+    if len(q.terms()) <= 80:
+        for t, why in _powers(gq):
+            if len(t.terms()) == len(q.terms()) and q * t.LC == t * q.LC:
+                return why
     return None
+
+
+def _primitive(p: Any) -> Any:
+    p = p.primitive()[1]
+    return -p if p.LC < 0 else p
 
 
 def classify(poly: Any) -> tuple[list[tuple[str, str]], list[str]]:
     """Split ``poly ≠ 0`` into (implied factors with reasons, extra conditions).
 
-    Raises ValueError if a factor vanishes identically (a degenerate construction).
+    Small polynomials are factored first; each factor (reduced modulo the
+    relations) is compared with products of at most four sign-table entries.
+    Raises ValueError if ``poly`` vanishes identically (a degenerate construction).
     """
     R = ring()
     implied: list[tuple[str, str]] = []
     extra: list[str] = []
     whole = _classify_factor(poly)
-    if whole is not None and whole != "identically zero":
-        return [(f"{R.expr(poly)} ≠ 0", whole)], []
-    _, factors = poly.factor_list()
-    for f, _ in factors:
+    if whole == "identically zero":
+        raise ValueError(f"the condition {R.expr(poly)} ≠ 0 is false for every parameter")
+    if whole is not None:
+        return [(f"{R.expr(_primitive(poly))} ≠ 0", whole)], []
+    factors = [f for f, _ in poly.factor_list()[1]] if len(poly.terms()) <= 40 else [poly]
+    for f in factors:
         why = _classify_factor(f)
-        if why == "identically zero":
+        if why == "identically zero":  # pragma: no cover - the product would reduce to 0
             raise ValueError(f"the condition {R.expr(f)} ≠ 0 is false for every parameter")
         if why is None:
-            extra.append(f"{R.expr(R.reduce(f))} ≠ 0")
+            extra.append(f"{R.expr(_primitive(R.reduce(f)))} ≠ 0")
         else:
-            implied.append((f"{R.expr(f)} ≠ 0", why))
+            implied.append((f"{R.expr(_primitive(f))} ≠ 0", why))
     return implied, extra
