@@ -25,6 +25,11 @@ float path therefore refuses a margin below ``FLOAT_MARGIN`` = 1e-12 relative to
 its bound (1.6e-12 rad at π/2, 4.7e-12 rad at 3π/2): there the construction
 would be wrong in the fourth digit or fail, and the exact path (parameters given
 as text such as ``"pi/2"``) is the way to go.
+
+:func:`side_floats` gives the cone sides' directions correctly rounded; a
+construction started from them has V_n accurate to a few ε max|V_n| at any
+margin above the threshold (measured 1.5e-16 at 2e-12 rad, against 2e-5 when
+cos φ ∓ μ sin φ is evaluated in double precision).
 """
 
 from __future__ import annotations
@@ -34,7 +39,14 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-__all__ = ["FLOAT_MARGIN", "MarginReport", "closed_form_floats", "condition_1_margins", "mpf"]
+__all__ = [
+    "FLOAT_MARGIN",
+    "MarginReport",
+    "closed_form_floats",
+    "condition_1_margins",
+    "mpf",
+    "side_floats",
+]
 
 #: Smallest margin of condition (1), relative to its bound, the float path accepts.
 FLOAT_MARGIN = 1e-12
@@ -107,6 +119,18 @@ def closed_form_floats(p: dict[str, Any]) -> tuple[list[float], list[float]]:
             S.append(float(-h + y * t if n in (1, 3) else h - y * t))
             C.append(float((x2 if n in (1, 3) else x1) * t))
     return S, C
+
+
+def side_floats(p: dict[str, Any], n: int) -> tuple[float, float]:
+    """``(sin(φ ± ξ), cos(φ ± ξ)) / cos ξ`` of cone side n (1-4), correctly rounded.
+
+    In double precision the second component, ``cos φ ∓ μ sin φ``, cancels when
+    the side is nearly horizontal; evaluated here at ``_DPS`` digits it keeps its
+    full relative accuracy, and so do X_n, Y_n and V_n constructed from it.
+    """
+    with mpmath.workdps(_DPS):
+        sx, cx = _sides(p, _DPS)[n - 1]
+        return float(sx), float(cx)
 
 
 class MarginReport:

@@ -273,6 +273,21 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     EnvelopeError
         If an exact ``Bnm`` is not at the break angle computed from the V_n (a
         construction that does not match its own V_n).
+
+    Examples
+    --------
+    Two cone sides through O make V3 = V4 to rounding (x1 ≠ x2): the arcs still
+    run forwards and cover the circle once.
+
+    >>> import math
+    >>> from graspcompass import Grasp, internal_force_diagram
+    >>> g = Grasp(1.0, 2.0, 1.0, 1.4, 1.5, mu1=math.tan(1.4 - math.atan(1.0)),
+    ...           mu2=math.tan(1.5 - math.atan(2.0)))
+    >>> env = internal_force_diagram(g)["envelope"]
+    >>> all(float(a.theta_end) > float(a.theta_start) for a in env.arcs)
+    True
+    >>> round(sum(float(a.theta_end - a.theta_start) for a in env.arcs) / math.pi, 12)
+    2.0
     """
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
     numeric = any(has_float(c) for v in V for c in (v.x, v.y))
