@@ -295,10 +295,6 @@ def test_within_rounding_of_condition_1_is_refused(case):
     assert any(s in msg for s in ("φ1 + ξ1", "φ1 − ξ1"))
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "Grasp._validate runs the exact checks of condition (1) on the double-rounded sums "
-    "φ ± ξ before _check_float_margins: a margin below half an ulp (~5e-17) gets "
-    "'φ1 + ξ1 = 0.5π must exceed π/2' without the advice; needs the call moved first"))
 @pytest.mark.parametrize("case", [
     dict(phi1=1.0, xi1=HALF_PI - 1.0),              # π/2 typed as a float sum
     dict(phi1=HALF_PI, xi1=1e-17),
@@ -333,10 +329,6 @@ def test_just_outside_threshold_agrees_with_exact(margin, which):
         assert math.hypot(float(vf.x) - float(ve.x), float(vf.y) - float(ve.y)) <= rel * Vmax
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "Grasp._side computes cos φ ∓ μ sin φ in double precision, which cancels for a nearly "
-    "horizontal side (relative error ε/|cos(φ ± ξ)|); graspcompass._floatpath.side_floats "
-    "gives it correctly rounded; needs Grasp._side to use it for float grasps"))
 @pytest.mark.parametrize("margin", [2e-12, 1e-9])
 def test_float_construction_full_accuracy_near_condition_1(margin):
     kw = dict(x1=1.0, x2=1.5, y=0.7, phi1=1.0, phi2=1.3, mu1=math.tan(HALF_PI - 1.0 + margin),

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins
+from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins, side_floats
 from .expr import ExpressionError, parse_exact
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
@@ -227,6 +227,7 @@ class Grasp:
         assumed: list[sp.Basic] = []
         for expr, strict, msg, *shown in checks:
             self._check(expr, strict, msg, assumed, *shown)
+        self._check_float_margins()  # floats within rounding of (1): refuse, with advice
         for i in (1, 2):
             phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
             up, lo = phi + xi, phi - xi
@@ -245,7 +246,6 @@ class Grasp:
             for expr, msg, shown in cond:
                 self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
         self.assumptions = tuple(assumed)
-        self._check_float_margins()
 
     def _check_float_margins(self) -> None:
         """Refuse a float grasp within rounding of a bound of condition (1).
@@ -258,7 +258,7 @@ class Grasp:
         if not self.numeric or any(v.free_symbols for v in self.params.values()):
             return
         for m in condition_1_margins(self.params):
-            if m.relative >= FLOAT_MARGIN:
+            if abs(m.relative) >= FLOAT_MARGIN:  # clearly inside, or clearly outside
                 continue
             where = ("within" if m.margin > 0 else "on the wrong side of, and within")
             raise InvalidGraspError(
@@ -322,6 +322,8 @@ class Grasp:
     # -- friction cone sides ----------------------------------------------------
     def _side(self, n: int) -> tuple[sp.Expr, sp.Expr]:
         """``(sin(φ ± ξ), cos(φ ± ξ)) / cos ξ`` of side n, free of ``cos ξ``."""
+        if self.numeric:  # correctly rounded: cos φ ∓ μ sin φ cancels in double precision
+            return tuple(sp.Float(v) for v in side_floats(self.params, n))  # type: ignore
         s, c, mu = (self.s1, self.c1, self.mu1) if n in (1, 3) else (self.s2, self.c2, self.mu2)
         sg = 1 if n in (1, 2) else -1
         return s + sg * c * mu, c - sg * s * mu
