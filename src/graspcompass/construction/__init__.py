@@ -1,7 +1,7 @@
 """Construction protocol (replayable steps) and the paper's drawing recipe (§3.3)."""
 
 from .describe import describe, step_record, to_records
-from .envelope import Arc, Envelope, outer_envelope
+from .envelope import Arc, Envelope, EnvelopeError, outer_envelope
 from .protocol import INSTRUMENTS, OPS, Construction, Step, StepSpec, replay
 from .recipe import diagram_specs, internal_force_diagram
 
@@ -11,6 +11,7 @@ __all__ = [
     "Arc",
     "Construction",
     "Envelope",
+    "EnvelopeError",
     "Step",
     "StepSpec",
     "describe",
