@@ -24,7 +24,7 @@ from .errors import (
     NoIntersectionError,
     ParallelLinesError,
 )
-from .exact import canon, decide_sign, decide_zero, has_float
+from .exact import Frac, NotAFraction, canon, decide_sign, decide_zero, has_float
 from .primitives import Circle, Line, Point, _merge
 
 __all__ = [
@@ -68,6 +68,11 @@ def _nonzero(value: sp.Expr, error: type[GeometryError], message: Callable[[], s
     if z:
         raise error(message(), *objs)
     return frozenset({canon(value)}) if z is None else frozenset()
+
+
+def _fracs(*points: Point) -> list[tuple[Frac, Frac]]:
+    """The coordinates as exact fractions (raises NotAFraction for floats)."""
+    return [(Frac.of(p.x), Frac.of(p.y)) for p in points]
 
 
 def line_through(p: Point, q: Point) -> Line:
@@ -129,7 +134,13 @@ def meet(a: Line, b: Line) -> Point:
     ...
     graspcompass.geometry.errors.ParallelLinesError: lines are parallel, they do not meet ...
     """
-    den = a.direction.cross(b.direction)
+    try:  # fast path: fractions of polynomials, no sympy expression trees
+        (ax, ay), (adx, ady), (bx, by), (bdx, bdy) = _fracs(
+            a.point, a.direction, b.point, b.direction)
+        den_f = adx * bdy - ady * bdx
+        den = den_f.expr()
+    except NotAFraction:
+        den_f, den = None, a.direction.cross(b.direction)
     conds = _nonzero(
         den,
         ParallelLinesError,
@@ -138,6 +149,9 @@ def meet(a: Line, b: Line) -> Point:
         b,
         scale=_size(a.direction, b.direction),
     )
+    if den_f is not None:
+        t = ((bx - ax) * bdy - (by - ay) * bdx) / den_f
+        return Point((ax + t * adx).expr(), (ay + t * ady).expr(), _merge(a, b) | conds)
     t = (b.point - a.point).cross(b.direction) / den
     p = a.point
     d = a.direction
@@ -153,6 +167,12 @@ def foot(point: Point, line: Line) -> Point:
     >>> foot(Point(sqrt(3)/2, 5), Line(Point(0, 0), Point(1, 0)))
     Point(sqrt(3)/2, 0)
     """
+    try:
+        (qx, qy), (px, py), (dx, dy) = _fracs(point, line.point, line.direction)
+        t = ((qx - px) * dx + (qy - py) * dy) / (dx * dx + dy * dy)
+        return Point((px + t * dx).expr(), (py + t * dy).expr(), _merge(point, line))
+    except NotAFraction:
+        pass
     d = line.direction
     t = (point - line.point).dot(d) / d.dot(d)
     p = line.point
@@ -174,7 +194,12 @@ def midpoint(p: Point, q: Point) -> Point:
     >>> midpoint(Point(sqrt(3)/2, 0), Point(-sqrt(3)/2, 0))
     Point(0, 0)
     """
-    return Point.canonical((p.x + q.x) / 2, (p.y + q.y) / 2, _merge(p, q))
+    try:
+        (px, py), (qx, qy) = _fracs(p, q)
+        half = Frac.of(sp.S.Half)
+        return Point(((px + qx) * half).expr(), ((py + qy) * half).expr(), _merge(p, q))
+    except NotAFraction:
+        return Point.canonical((p.x + q.x) / 2, (p.y + q.y) / 2, _merge(p, q))
 
 
 def circle_on_diameter(a: Point, b: Point) -> Circle:
@@ -190,7 +215,13 @@ def circle_on_diameter(a: Point, b: Point) -> Circle:
             f"a circle on a diameter needs two distinct end points, got {a} twice", a, b
         )
     c = midpoint(a, b)
-    return Circle(c, canon(((b.x - a.x) ** 2 + (b.y - a.y) ** 2) / 4), _merge(a, b))
+    try:
+        (ax, ay), (bx, by) = _fracs(a, b)
+        dx, dy = bx - ax, by - ay
+        r2 = ((dx * dx + dy * dy) * Frac.of(sp.Rational(1, 4))).expr()
+    except NotAFraction:
+        r2 = canon(((b.x - a.x) ** 2 + (b.y - a.y) ** 2) / 4)
+    return Circle(c, r2, _merge(a, b))
 
 
 def circle_through(center: Point, point: Point) -> Circle:
@@ -274,18 +305,30 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
         raise DegenerateCircleError(
             f"concentric circles through one point coincide: {c1} and {c2}", c1, c2
         )
-    k = Point(known.x - c.x, known.y - c.y)
-    side = canon(w.x * k.y - w.y * k.x)
+    try:
+        (cx, cy), (wx, wy), (kx0, ky0) = _fracs(c, w, known)
+        kx, ky = kx0 - cx, ky0 - cy
+        side_f = wx * ky - wy * kx
+        side, scale = side_f.expr(), 0.0
+    except NotAFraction:
+        side_f = None
+        k = Point(known.x - c.x, known.y - c.y)
+        side, scale = canon(w.x * k.y - w.y * k.x), _size(w, k)
     conds = _nonzero(
         side,
         NoIntersectionError,
         lambda: f"circles {c1} and {c2} are tangent at {known}: there is no second common point",
         c1,
         c2,
-        scale=_size(w, k),
+        scale=scale,
     )
     # mirror image of `known` in the line of centres: known - 2 (side / |w|^2) perp(w),
     # reduced piece by piece (small gcds beat one large one)
+    if side_f is not None:
+        tf = Frac.of((Frac.of(sp.Integer(2)) * side_f / (wx * wx + wy * wy)).expr())
+        return Point((kx0 + tf * wy).expr(), (ky0 - tf * wx).expr(),
+                     _merge(c1, c2, known) | conds)
+    k = Point(known.x - c.x, known.y - c.y)
     t = canon(2 * side / canon(w.x**2 + w.y**2))
     return Point.canonical(known.x + t * w.y, known.y - t * w.x, _merge(c1, c2, known) | conds)
 

@@ -320,13 +320,34 @@ def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
         n, d = _convert(expr, R, amap)
     except ValueError:
         return None
-    rels = [index[sp.sqrt(p)] ** 2 - p for p in primes]
-    rels += [index[s] ** 2 + index[c] ** 2 - 1 for s, c in pairs]
+    return _finish(R, n, d)
+
+
+def _relations(R) -> tuple[list, list]:
+    """The relations of ring R's generators (r**2 - p; s**2 + c**2 - 1) and its roots."""
+    from .trig import OpaqueCos, OpaqueSin
+
+    index = {g: R.gens[i] for i, g in enumerate(R.symbols)}
+    prime_roots = [g for g in R.symbols if _gen_key(g)[0] == 0]
+    roots = [index[g] for g in prime_roots]
+    rels = [index[g] ** 2 - int(g.base) for g in prime_roots]
+    for g in R.symbols:
+        if isinstance(g, sp.sin):
+            c = OpaqueCos(g.args[0]) if isinstance(g, OpaqueSin) else sp.cos(g.args[0])
+            if c in index:
+                rels.append(index[g] ** 2 + index[c] ** 2 - 1)
+    return rels, roots
+
+
+def _finish(R, n, d) -> sp.Expr:
+    """Reduce n/d modulo the relations, clear roots from d, cancel; remember the result."""
+    rels, roots = _relations(R)
     if rels:
         n, d = n.rem(rels), d.rem(rels)
     if not d:
-        raise ZeroDivisionError(f"division by zero in {expr}")
-    n, d = _clear_roots(n, d, [index[r] for r in roots], rels, expr, atoms)
+        raise ZeroDivisionError("division by zero")
+    opaque = any(g.is_number and _gen_key(g)[0] != 0 for g in R.symbols)
+    n, d = _clear_roots(n, d, roots, rels, opaque)
     if d.is_ground:
         n, d = n.quo_ground(d.LC), R.one
     else:
@@ -340,7 +361,7 @@ def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
     return out
 
 
-def _clear_roots(n, d, roots: list, rels: list, expr: sp.Expr, atoms: dict) -> tuple:
+def _clear_roots(n, d, roots: list, rels: list, opaque: bool) -> tuple:
     """Multiply by conjugates (sqrt(p) -> -sqrt(p)) until ``d`` is free of roots.
 
     The conjugation is a field automorphism of Q(sqrt(p1), ..., sqrt(pk)); when the
@@ -348,7 +369,6 @@ def _clear_roots(n, d, roots: list, rels: list, expr: sp.Expr, atoms: dict) -> t
     denominator is then checked to be non-zero numerically (and the step skipped
     if it is not clearly so).
     """
-    opaque = not expr.free_symbols and any(p[0] in ("gen", "trig") for p in atoms.values())
     for g in roots:
         if d.degree(g) <= 0:
             continue
@@ -625,3 +645,87 @@ def _strict_sign(reduced: sp.Expr) -> int | None:
 def _nd(e: sp.Expr, R, index: dict) -> tuple:
     """``e`` as (numerator, denominator) in the ring R whose generators are ``index``."""
     return _convert(e, R, {g: (R.gens[i], R.one) for g, i in index.items()})
+
+
+class NotAFraction(Exception):
+    """An expression the fast path cannot hold (floats, ``I``): use sympy arithmetic."""
+
+
+class Frac:
+    """An exact value as a fraction ``n/d`` of sparse polynomials in its generators.
+
+    The kernel's constructions compute with these instead of building sympy
+    expression trees; :meth:`expr` gives the canonical sympy expression (the same
+    as :func:`canon`), reduced modulo the relations of the generators.
+
+    Examples
+    --------
+    >>> a = Frac.of(sp.sqrt(3) / 2)
+    >>> (a * a + Frac.of(sp.Rational(1, 4))).expr()
+    1
+    """
+
+    __slots__ = ("R", "d", "n")
+
+    def __init__(self, R, n, d) -> None:
+        self.R, self.n, self.d = R, n, d
+
+    @classmethod
+    def of(cls, e: sp.Expr) -> Frac:
+        """The fraction of an exact expression (a memo hit for the kernel's own values)."""
+        if e.is_Rational:
+            return cls(None, e, sp.Integer(1))
+        hit = _MEMO.get(e)
+        if hit is None:
+            if e.has(sp.Float) or _canon_ring(e) is None:
+                raise NotAFraction(e)
+            hit = _MEMO.get(canon(e))
+            if hit is None:
+                raise NotAFraction(e)
+        return cls(*hit)
+
+    def _pair(self, other: Frac) -> tuple:
+        if self.R is other.R:
+            return self.R, self.n, self.d, other.n, other.d
+        if self.R is None:
+            R = other.R
+            return R, R(self.n), R(self.d), other.n, other.d
+        if other.R is None:
+            R = self.R
+            return R, self.n, self.d, R(other.n), R(other.d)
+        gens = set(self.R.symbols) | set(other.R.symbols)
+        R = _ring(tuple(sorted(gens, key=_gen_key)))
+        return (R, _lift(self.n, self.R, R), _lift(self.d, self.R, R),
+                _lift(other.n, other.R, R), _lift(other.d, other.R, R))
+
+    def __add__(self, other: Frac) -> Frac:
+        if self.R is None and other.R is None:
+            return Frac(None, self.n + other.n, sp.Integer(1))
+        R, a, b, c, d = self._pair(other)
+        if b == d:
+            return Frac(R, a + c, b)
+        return Frac(R, a * d + c * b, b * d)
+
+    def __neg__(self) -> Frac:
+        return Frac(self.R, -self.n, self.d)
+
+    def __sub__(self, other: Frac) -> Frac:
+        return self + (-other)
+
+    def __mul__(self, other: Frac) -> Frac:
+        if self.R is None and other.R is None:
+            return Frac(None, self.n * other.n, sp.Integer(1))
+        R, a, b, c, d = self._pair(other)
+        return Frac(R, a * c, b * d)
+
+    def __truediv__(self, other: Frac) -> Frac:
+        if not other.n:
+            raise ZeroDivisionError("division by zero")
+        return self * Frac(other.R, other.d, other.n) if other.R is not None else \
+            self * Frac(None, 1 / other.n, sp.Integer(1))
+
+    def expr(self) -> sp.Expr:
+        """The canonical sympy expression of this value (as :func:`canon` gives it)."""
+        if self.R is None:
+            return self.n
+        return _finish(self.R, self.n, self.d)

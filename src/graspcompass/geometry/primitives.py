@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from .errors import CoincidentPointsError, DegenerateCircleError, ZeroDirectionError
-from .exact import canon, decide_sign, decide_zero, sym, text
+from .exact import Frac, NotAFraction, canon, decide_sign, decide_zero, sym, text
 
 __all__ = ["ORIGIN", "Circle", "Conditions", "Line", "Point", "Ray", "Segment"]
 
@@ -64,10 +64,20 @@ class Point:
         yield self.y
 
     def __add__(self, other: Point) -> Point:
-        return Point.canonical(self.x + other.x, self.y + other.y, _merge(self, other))
+        try:
+            x = (Frac.of(self.x) + Frac.of(other.x)).expr()
+            y = (Frac.of(self.y) + Frac.of(other.y)).expr()
+            return Point(x, y, _merge(self, other))
+        except NotAFraction:
+            return Point.canonical(self.x + other.x, self.y + other.y, _merge(self, other))
 
     def __sub__(self, other: Point) -> Point:
-        return Point.canonical(self.x - other.x, self.y - other.y, _merge(self, other))
+        try:
+            x = (Frac.of(self.x) - Frac.of(other.x)).expr()
+            y = (Frac.of(self.y) - Frac.of(other.y)).expr()
+            return Point(x, y, _merge(self, other))
+        except NotAFraction:
+            return Point.canonical(self.x - other.x, self.y - other.y, _merge(self, other))
 
     def __neg__(self) -> Point:
         return Point(-self.x, -self.y, self.conditions)
@@ -79,11 +89,19 @@ class Point:
 
     def dot(self, other: Point) -> sp.Expr:
         """Exact dot product."""
-        return canon(self.x * other.x + self.y * other.y)
+        try:
+            a, b, c, d = (Frac.of(v) for v in (self.x, self.y, other.x, other.y))
+            return (a * c + b * d).expr()
+        except NotAFraction:
+            return canon(self.x * other.x + self.y * other.y)
 
     def cross(self, other: Point) -> sp.Expr:
         """Exact 2D cross product ``self.x*other.y - self.y*other.x``."""
-        return canon(self.x * other.y - self.y * other.x)
+        try:
+            a, b, c, d = (Frac.of(v) for v in (self.x, self.y, other.x, other.y))
+            return (a * d - b * c).expr()
+        except NotAFraction:
+            return canon(self.x * other.y - self.y * other.x)
 
     def perp(self) -> Point:
         """The vector turned a quarter turn counter-clockwise, ``(-y, x)``."""
