@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import subprocess
 import sys
 import time
@@ -20,8 +21,16 @@ COLD = """
 import time
 t0 = time.perf_counter()
 from graspcompass.proof import run_catalogue, exit_status
+t1 = time.perf_counter()
 reports = run_catalogue(quiet=True)
-print(time.perf_counter() - t0, len(reports), exit_status(reports))
+print(time.perf_counter() - t0, t1 - t0, len(reports), exit_status(reports))
+"""
+
+#: the command itself, table printed (to a pipe), exactly as a user runs it
+CLI = """
+import sys
+from graspcompass.cli import main
+sys.exit(main(["verify", "--quiet"]))
 """
 
 BASELINE = """
@@ -56,17 +65,27 @@ print("DONE", time.perf_counter() - t0, n, proved, flush=True)
 """
 
 
-def run(code: str, timeout: float) -> tuple[float, str, bool]:
+def _cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def run(code: str, timeout: float) -> tuple[float, str, bool, float]:
+    """Wall time, stdout, finished?, and CPU time (user + system) of a fresh interpreter."""
     env = {**os.environ, "PYTHONPATH": os.pathsep.join(
         [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")])}
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), _cpu()
     try:
         out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                              timeout=timeout, env=env, check=True).stdout
-        return time.perf_counter() - t0, out, True
+        return time.perf_counter() - t0, out, True, _cpu() - c0
     except subprocess.TimeoutExpired as exc:
         out = exc.stdout.decode() if isinstance(exc.stdout, bytes) else (exc.stdout or "")
-        return time.perf_counter() - t0, out, False
+        return time.perf_counter() - t0, out, False, _cpu() - c0
+
+
+def _median(xs: list[float]) -> float:
+    return sorted(xs)[len(xs) // 2]
 
 
 def main() -> None:
@@ -74,16 +93,23 @@ def main() -> None:
     ap.add_argument("--quick", action="store_true", help="one cold run instead of three")
     ap.add_argument("--timeout", type=float, default=300.0, help="baseline time limit (s)")
     args = ap.parse_args()
-    runs = []
+    runs, cli = [], []
     for _ in range(1 if args.quick else 3):
-        wall, out, _ = run(COLD, 120)
-        inner, n, status = out.split()
-        runs.append((wall, float(inner)))
-    wall = sorted(r[0] for r in runs)[len(runs) // 2]
-    inner = sorted(r[1] for r in runs)[len(runs) // 2]
-    print(f"graspcompass verify, cold ({n} claims, exit status {status}): {wall:.2f} s wall "
-          f"(interpreter start and import included), {inner:.2f} s from import to report")
-    bwall, bout, finished = run(BASELINE, args.timeout)
+        wall, out, _, cpu = run(COLD, 120)
+        inner, imp, n, status = out.split()
+        runs.append((wall, float(inner), float(imp), cpu))
+        cwall, _, _, ccpu = run(CLI, 120)
+        cli.append((cwall, ccpu))
+    wall, inner, imp, cpu = (_median([r[i] for r in runs]) for i in range(4))
+    cwall, ccpu = _median([c[0] for c in cli]), _median([c[1] for c in cli])
+    print(f"graspcompass verify (the command, table printed), cold: {cwall:.2f} s wall, "
+          f"{ccpu:.2f} s CPU")
+    print(f"run_catalogue, cold ({n} claims, exit status {status}): {wall:.2f} s wall "
+          f"(interpreter start and import included; import {imp:.2f} s), {inner - imp:.2f} s "
+          f"checking; {cpu:.2f} s CPU")
+    print(f"load average now: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (wall times "
+          "stretch when it exceeds the cores; CPU times do not)")
+    bwall, bout, finished, _ = run(BASELINE, args.timeout)
     lines = [ln for ln in bout.splitlines() if ln.strip()]
     if finished and lines and lines[-1].startswith("DONE"):
         _, _, nb, proved = lines[-1].split()
@@ -94,7 +120,8 @@ def main() -> None:
         done = len(lines)
         print(f"baseline, sympy.simplify: did not finish in {args.timeout:.0f} s "
               f"({done} claims done); ratio > {bwall / wall:.1f}x")
-    print("target (< 3 s cold):", "met" if wall < 3 else "NOT met")
+    print("target (< 3 s cold, the command):", "met" if cwall < 3 else
+          f"NOT met on the wall clock (CPU {ccpu:.2f} s)")
 
 
 if __name__ == "__main__":

@@ -122,7 +122,7 @@ def check(c: Claim) -> ProofResult:
 # -- combinators ------------------------------------------------------------------
 def with_xi(expr: Any) -> Any:
     """``expr`` with μ_i replaced by tan ξ_i (eq. (22)): one friction variable per contact."""
-    return sp.sympify(expr).subs({mu1: sp.tan(xi1), mu2: sp.tan(xi2)})
+    return sp.sympify(expr).xreplace({mu1: sp.tan(xi1), mu2: sp.tan(xi2)})
 
 
 def conjunction(parts: Sequence[ProofResult | Claim], method: str, t0: float,

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import time
+from fractions import Fraction
 
 import sympy as sp
 
@@ -91,25 +92,41 @@ def _least_k() -> ProofResult:
     """inf{k ≥ 0 : k > k_n, n = 1..4} = max(k1, k2, k3, k4, 0), on every order type.
 
     Both sides depend on the order type of (k1, k2, k3, k4, 0) only; each order type
-    (ties included) is realised by integer values in [-4, 4], and the infimum is
-    computed with sympy's interval arithmetic.
+    (ties included) is realised by integer values in [-4, 4].  For each, the set is
+    computed exactly by cells: the breakpoints {0, k_n} cut the line into points and
+    open gaps on each of which every constraint has one truth value, decided at the
+    cell's representative (the point, a midpoint, or a point beyond the ends); the
+    infimum is the left end of the first cell in the set.
     """
     t0 = time.perf_counter()
-    vals = range(-4, 5)
     seen: set[tuple[int, ...]] = set()
-    for ks in itertools.product(vals, repeat=4):
+    for ks in itertools.product(range(-4, 5), repeat=4):
         order = tuple(sorted(set(ks) | {0}))
         key = tuple(order.index(v) for v in (*ks, 0))
         if key in seen:
             continue
         seen.add(key)
-        feasible = sp.Intersection(sp.Interval(0, sp.oo), *(sp.Interval.open(v, sp.oo)
-                                                            for v in ks))
-        if feasible.inf != max(*ks, 0):
+        inf = _least_in_set(ks, order)
+        if inf != max(*ks, 0):
             return ProofResult(Status.UNDECIDED, "order types", time.perf_counter() - t0,
-                               detail=f"fails at {ks}")
-    return ProofResult(Status.PROVED, f"all {len(seen)} order types of (k1..k4, 0)",
-                       time.perf_counter() - t0)
+                               detail=f"fails at {ks}: infimum {inf}")
+    return ProofResult(Status.PROVED, f"all {len(seen)} order types of (k1..k4, 0), each set "
+                       "decided cell by cell", time.perf_counter() - t0)
+
+
+def _least_in_set(ks: tuple[int, ...], cuts: tuple[int, ...]) -> Fraction | None:
+    """inf{k : k ≥ 0, k > k_n ∀n} from the cells of the sorted breakpoints ``cuts``;
+    None when the set is empty or unbounded below."""
+    def member(k: Fraction) -> bool:
+        return k >= 0 and all(k > v for v in ks)
+
+    if member(Fraction(cuts[0] - 1)):  # the cell (-oo, cuts[0])
+        return None
+    for i, b in enumerate(cuts):  # the point {b}, then the gap (b, next cut) or (b, oo)
+        nxt = cuts[i + 1] if i + 1 < len(cuts) else b + 2
+        if member(Fraction(b)) or member(Fraction(b + nxt, 2)):
+            return Fraction(b)
+    return None
 
 
 def _abs_decomposition(i: int) -> ProofResult:

@@ -23,12 +23,13 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from functools import lru_cache
 from typing import Any
 
+import mpmath
 import sympy as sp
 
 from .. import symbols as S
 from ..expr import parse_exact
 
-__all__ = ["CONTACTS", "find_counterexample", "sample", "violations"]
+__all__ = ["CONTACTS", "find_counterexample", "nonzero_at", "sample", "violations", "wrong_sign"]
 
 #: (phi_i, xi_i, mu_i) of the two contacts.
 CONTACTS = ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2))
@@ -322,3 +323,57 @@ def find_counterexample(
         if tries <= 0:
             break
     return None
+
+
+# -- evaluation at a point -------------------------------------------------------
+@lru_cache(maxsize=512)
+def _mp(e: sp.Expr) -> tuple[Callable[..., Any], tuple[sp.Symbol, ...]]:
+    syms = tuple(sorted(e.free_symbols, key=str))
+    return sp.lambdify(syms, e, modules="mpmath"), syms
+
+
+@lru_cache(maxsize=4096)
+def _mpf(v: sp.Expr) -> Any:
+    """An exact value as a 70-digit mpmath number (values of samples recur: cached)."""
+    return mpmath.mpf(str(sp.N(v, 70)))
+
+
+_SCREEN = mpmath.mpf(10) ** -20
+
+
+def _fast(e: sp.Expr, values: Mapping) -> Any:
+    """``e`` at ``values`` by mpmath at 60 digits (a screen), or None if not a real number."""
+    f, syms = _mp(e)
+    try:
+        with mpmath.workdps(60):
+            v = f(*(_mpf(values[s]) for s in syms))
+    except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
+        return None
+    return v if isinstance(v, mpmath.mpf) else None
+
+
+def wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
+    """``sign * e <= 0`` at ``values``: a 60-digit mpmath screen, confirmed by ``evalf``."""
+    fast = _fast(e, values)
+    if fast is not None and fast * sign > _SCREEN:
+        return False  # clearly of the claimed sign: no candidate here
+    v = sp.N(e.xreplace(values), 50)
+    if not v.is_number or v.has(sp.zoo, sp.nan) or not v.is_real:
+        raise ValueError("undefined")
+    return bool(v * sign <= 0)
+
+
+def nonzero_at(expr: sp.Expr, values: Mapping, screen: bool = False) -> bool:
+    """``expr != 0`` at ``values``: a 50-digit evaluation separated from 0 by 1e-30.
+
+    With ``screen``, a 60-digit mpmath value of modulus above 1e-20 settles
+    "non-zero" first (used only where "non-zero" ends a search, never for a verdict).
+    """
+    if screen:
+        fast = _fast(expr, values)
+        if fast is not None and abs(fast) > _SCREEN:
+            return True
+    v = sp.N(expr.xreplace(values), 50)
+    if v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not v.is_number:
+        raise ValueError("undefined at this point")
+    return abs(v) > sp.Float(10) ** -30

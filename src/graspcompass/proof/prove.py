@@ -15,22 +15,24 @@
   whose product is ``expr`` (an identity, checked as above) and whose signs
   follow from interval bounds on angles (``cos u < 0`` for ``u`` in
   ``(π/2, 3π/2)``), from the symbols' signs, or from signs of numbers.
-  Random admissible points that violate the claim REFUTE it.
+  The witness is tried first: a claim it proves at every point of the model
+  (no non-degeneracy condition left) has no counterexample to look for.
+  Otherwise random admissible points that violate the claim REFUTE it.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import enum
 import functools
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-import mpmath
 import sympy as sp
 
-from .model import find_counterexample
+from .model import find_counterexample, nonzero_at, wrong_sign
 from .reduce import DegenerateClaimError, reduce_expr
 from .signs import CONDITION_1, Intervals, _interval, discharge, form_json, sign_of, sign_reason
 
@@ -151,13 +153,6 @@ def _context(assumptions: Sequence[Any], domains: Mapping | None,
     return names, rels
 
 
-def _nonzero_at(expr: sp.Expr, values: Mapping) -> bool:
-    v = sp.N(expr.xreplace(values), 50)
-    if v.has(sp.zoo, sp.nan, sp.oo, -sp.oo) or not v.is_number:
-        raise ValueError("undefined at this point")
-    return abs(v) > sp.Float(10) ** -30
-
-
 def _cx(values: Mapping | None) -> dict[str, str] | None:
     return None if values is None else {str(k): str(v) for k, v in values.items()}
 
@@ -172,6 +167,10 @@ def _intervals_json(intervals: Intervals) -> list[dict[str, Any]]:
     return out
 
 
+#: The text of an expression (factors recur from claim to claim: printed once).
+_text = functools.lru_cache(maxsize=4096)(str)
+
+
 def _denominators(factors: Sequence[sp.Expr], intervals: Intervals, iv_names: list[str],
                   syms: set, extra: list[Any], domains: Mapping | None, subs: Mapping | None):
     """Split denominator factors into implied (shown non-zero) and conditions."""
@@ -180,13 +179,14 @@ def _denominators(factors: Sequence[sp.Expr], intervals: Intervals, iv_names: li
     src = "(1)" if src == CONDITION_1_NAME else src
     for f in factors:
         why = discharge(f, intervals)
+        text = _text(f)
         if why is not None:
-            implied.append(f"{f} != 0 (from {src})")
-            rows.append({"factor": str(f), "status": "implied", "reason": why})
+            implied.append(f"{text} != 0 (from {src})")
+            rows.append({"factor": text, "status": "implied", "reason": why})
         else:
             _not_always_zero(f, syms | f.free_symbols, extra, domains, subs)
-            conditions.append(f"{f} != 0")
-            rows.append({"factor": str(f), "status": "condition", "reason": ""})
+            conditions.append(f"{text} != 0")
+            rows.append({"factor": text, "status": "condition", "reason": ""})
     return implied, conditions, rows
 
 
@@ -194,11 +194,12 @@ def _not_always_zero(f: sp.Expr, syms: set, extra: list[Any], domains: Mapping |
                      subs: Mapping | None) -> None:
     """Guard against a condition that fails at every point of the model (vacuous result)."""
     syms = {s for s in syms if s.is_Symbol}
-    zero = find_counterexample(lambda v: not _nonzero_at(f, v), syms, extra, tries=3, seed=7,
+    zero = find_counterexample(lambda v: not nonzero_at(f, v, screen=True), syms, extra,
+                               tries=3, seed=7,
                                domains=domains, derived=subs)
     if zero is None:
         return
-    nonzero = find_counterexample(lambda v: _nonzero_at(f, v), syms, extra, tries=8, seed=11,
+    nonzero = find_counterexample(lambda v: nonzero_at(f, v), syms, extra, tries=8, seed=11,
                                   domains=domains, derived=subs)
     if nonzero is None:
         raise DegenerateClaimError(f"the non-degeneracy condition {f} != 0 fails at every "
@@ -236,6 +237,35 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
     lhs, rhs = sp.sympify(lhs), sp.sympify(rhs)
     if isinstance(lhs, sp.MatrixBase) and not isinstance(rhs, sp.MatrixBase) and rhs == 0:
         rhs = sp.zeros(*lhs.shape)
+    try:
+        key = (_frozen(lhs), _frozen(rhs), tuple(assumptions), _content(intervals),
+               _content(domains), _content(subs))
+        hash(key)
+    except TypeError:  # something unhashable: no reuse
+        return _prove_identity(lhs, rhs, assumptions, intervals, domains, subs, t0)
+    r = _IDENTITIES.get(key)
+    if r is None:
+        r = _IDENTITIES[key] = _prove_identity(lhs, rhs, assumptions, intervals, domains,
+                                                subs, t0)
+    return dataclasses.replace(r, seconds=time.perf_counter() - t0)
+
+
+#: Results of :func:`prove_identity` by content: the two sides, the assumptions, the
+#: intervals, domains and change of variables themselves (never by a claim's id).
+_IDENTITIES: dict[tuple, ProofResult] = {}
+
+
+def _frozen(x: Any) -> Any:
+    return sp.ImmutableMatrix(x) if isinstance(x, sp.MatrixBase) else x
+
+
+def _content(m: Mapping | None) -> frozenset | None:
+    return None if m is None else frozenset((k, tuple(v) if isinstance(v, list) else v)
+                                            for k, v in m.items())
+
+
+def _prove_identity(lhs: Any, rhs: Any, assumptions: Sequence[Any], intervals: Intervals,
+                    domains: Mapping | None, subs: Mapping | None, t0: float) -> ProofResult:
     diff = lhs - rhs
     entries = list(diff) if isinstance(diff, sp.MatrixBase) else [diff]
     if subs:
@@ -256,7 +286,7 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
                 "denominators": rows}
         return ProofResult(Status.PROVED, "polynomial reduction", time.perf_counter() - t0,
                            certificate=cert, **common)
-    found = find_counterexample(lambda v: any(_nonzero_at(e, v) for e in bad),
+    found = find_counterexample(lambda v: any(nonzero_at(e, v) for e in bad),
                                 list(set().union(*(e.free_symbols for e in bad))), extra,
                                 domains=domains, derived=subs)
     if found is not None:
@@ -270,28 +300,6 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
 
 
 # -- signs ---------------------------------------------------------------------
-@functools.lru_cache(maxsize=512)
-def _mp(e: sp.Expr) -> tuple[Callable[..., Any], tuple[sp.Symbol, ...]]:
-    syms = tuple(sorted(e.free_symbols, key=str))
-    return sp.lambdify(syms, e, modules="mpmath"), syms
-
-
-def _wrong_sign(e: sp.Expr, sign: int, values: Mapping) -> bool:
-    """``sign * e <= 0`` at ``values``: a 60-digit mpmath screen, confirmed by ``evalf``."""
-    f, syms = _mp(e)
-    try:
-        with mpmath.workdps(60):
-            fast = f(*(mpmath.mpf(str(sp.N(values[s], 70))) for s in syms))
-        if not isinstance(fast, mpmath.mpf) or fast * sign > mpmath.mpf(10) ** -20:
-            return False  # clearly of the claimed sign (or not real): no candidate here
-    except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
-        pass
-    v = sp.N(e.xreplace(values), 50)
-    if not v.is_number or v.has(sp.zoo, sp.nan) or not v.is_real:
-        raise ValueError("undefined")
-    return bool(v * sign <= 0)
-
-
 def prove_sign(
     expr: Any,
     sign: int,
@@ -310,7 +318,8 @@ def prove_sign(
     signs.  Every hypothesis used is recorded in ``hypotheses``: condition (1) by
     name, each interval the caller adds or changes, the change of variables, the
     ``domains`` of new symbols and the ``assumptions``; counterexamples are
-    sought among the points of the model that satisfy all of them.
+    sought among the points of the model that satisfy all of them, unless the
+    witness already proves the claim with no extra non-degeneracy condition.
 
     Examples
     --------
@@ -329,40 +338,58 @@ def prove_sign(
     hyps = tuple(iv_names + ctx_names)
     extra = extra + iv_rels
     target = e.subs(subs) if subs else e
+    proof: Any = None
+    if witness is not None:
+        try:
+            proof = _witness_proof(target, sign, witness, intervals, domains, hyps)
+        except (DegenerateClaimError, ValueError) as exc:  # raised below unless refuted
+            proof = exc
+    if isinstance(proof, tuple) and proof[0] is Status.PROVED and not proof[2]["conditions"]:
+        # proved at every point of the model: no point can violate it, nothing to search
+        return ProofResult(Status.PROVED, proof[1], time.perf_counter() - t0, **proof[2])
     sample_syms = set(target.free_symbols) | {s for r in iv_rels for s in r.free_symbols}
     if subs:
         sample_syms -= set(subs)
-    found = find_counterexample(lambda v: _wrong_sign(e, sign, v), list(sample_syms), extra,
+    found = find_counterexample(lambda v: wrong_sign(e, sign, v), list(sample_syms), extra,
                                 domains=domains, derived=subs)
     if found is not None:
         return ProofResult(Status.REFUTED, "exact substitution", time.perf_counter() - t0,
                            _cx(found), values={"expr": float(sp.N(e.xreplace(found), 17))},
                            hypotheses=hyps)
-    if witness is None:
+    if proof is None:
         return ProofResult(Status.UNDECIDED, "no witness; no counterexample found",
                            time.perf_counter() - t0, hypotheses=hyps)
+    if isinstance(proof, Exception):
+        raise proof
+    return ProofResult(proof[0], proof[1], time.perf_counter() - t0, **proof[2])
+
+
+def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals: Intervals,
+                   domains: Mapping | None, hyps: tuple[str, ...]
+                   ) -> tuple[Status, str, dict[str, Any]]:
+    """The verdict of the witness alone: PROVED (with its certificate) or UNDECIDED."""
     ident = prove_identity(target, sp.Mul(*witness), intervals=intervals, domains=domains)
-    common = dict(hypotheses=hyps, conditions=ident.conditions, implied=ident.implied)
+    common: dict[str, Any] = dict(hypotheses=hyps, conditions=ident.conditions,
+                                  implied=ident.implied)
     if not ident.proved:
-        return ProofResult(Status.UNDECIDED, "the witness factorisation did not check",
-                           time.perf_counter() - t0, detail=ident.status.value, **common)
+        return (Status.UNDECIDED, "the witness factorisation did not check",
+                {**common, "detail": ident.status.value})
     reasons = [sign_reason(w, intervals) for w in witness]
     if any(r is None or r[0][0] != r[0][1] or r[0][0] == 0 for r in reasons):
-        return ProofResult(Status.UNDECIDED, "a witness factor has no known strict sign",
-                           time.perf_counter() - t0, **common)
+        return Status.UNDECIDED, "a witness factor has no known strict sign", common
     total = 1
     for r in reasons:
         total *= r[0][0]  # type: ignore[index]
     if total != sign:
-        return ProofResult(Status.UNDECIDED, "the witness proves the opposite sign, but no "
-                           "point of the model was found to show it", time.perf_counter() - t0,
-                           **common)
+        return (Status.UNDECIDED, "the witness proves the opposite sign, but no point of the "
+                "model was found to show it", common)
     declared = {s.name: [1, 1] if s.is_positive else [0, 1] for s in
                 set().union(*(sp.sympify(w).free_symbols for w in witness))
                 if s.is_positive or s.is_nonnegative}
     cert = {"kind": "sign", "sign": sign, "identity": ident.certificate,
-            "factors": [{"factor": str(w), "reason": r[1]} for w, r in zip(witness, reasons)],
+            "factors": [{"factor": _text(sp.sympify(w)), "reason": r[1]}
+                        for w, r in zip(witness, reasons)],
             "intervals": _intervals_json(intervals), "symbols": declared,
             "hypotheses": list(hyps)}
-    return ProofResult(Status.PROVED, "witness factorisation + interval signs",
-                       time.perf_counter() - t0, certificate=cert, **common)
+    return Status.PROVED, "witness factorisation + interval signs", {**common,
+                                                                      "certificate": cert}

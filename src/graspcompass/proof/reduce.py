@@ -28,7 +28,7 @@ non-degeneracy conditions.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import Any
 
 import sympy as sp
@@ -79,20 +79,30 @@ class Reduction:
     ----------
     remainder : sympy.Expr
         Normal form of the numerator modulo the relations (0 proves the identity).
-    denominator : sympy.Expr
-        The product of every denominator met (no cancellation).
+    denominator_poly : PolyElement
+        The product of every denominator met (no cancellation), in the ring of ``form``;
+        :attr:`denominator` is the same as an expression.
     factors : tuple of sympy.Expr
         The distinct irreducible (non-constant) factors of the denominators met,
         none of them zero modulo the relations.
     certificate : dict, optional
         When the remainder is 0: the numerator, the relations and the cofactors
         (``N = sum q_i rel_i``) as JSON-ready sparse polynomials.
+    form : RingForm, optional
+        The ring of the reduction.
     """
 
     remainder: sp.Expr
-    denominator: sp.Expr
+    denominator_poly: Any = field(repr=False)
     factors: tuple[sp.Expr, ...] = ()
     certificate: dict[str, Any] | None = field(default=None, compare=False)
+    form: RingForm | None = field(default=None, repr=False, compare=False)
+
+    @cached_property
+    def denominator(self) -> sp.Expr:
+        """The product of every denominator met, as an expression (built on demand)."""
+        p = self.denominator_poly
+        return self.form.as_expr(p) if self.form is not None else sp.sympify(p)
 
     @property
     def is_zero(self) -> bool:
@@ -100,8 +110,29 @@ class Reduction:
         return self.remainder == 0
 
 
-#: Normal form of a denominator (as an expression) -> its irreducible factors: by content.
-_FACTORS: dict[sp.Expr, tuple[sp.Expr, ...]] = {}
+#: Normal form of a denominator -> its irreducible factors: by content (the ring's
+#: generators as expressions and the polynomial's terms), never by a name.
+_FACTORS: dict[tuple, tuple[sp.Expr, ...]] = {}
+
+
+def _irreducible(p: Any) -> list[Any]:
+    """The irreducible factors of the polynomial ``p`` (multiplicities dropped).
+
+    Fast path, exact: if ``p = A x + B`` with ``A != 0`` and ``A, B`` free of ``x``,
+    every factorisation puts the whole of ``x`` in one factor, so the other divides
+    ``h = gcd(A, B)``: ``p / h`` is irreducible, and ``h`` is factored the same way.
+    Only a polynomial of degree >= 2 in every variable goes to ``factor_list``.
+    """
+    if p.is_ground:
+        return []
+    for i in range(p.ring.ngens):
+        if p.degree(i) == 1:
+            a = p.ring({(*m[:i], 0, *m[i + 1:]): c for m, c in p.terms() if m[i] == 1})
+            h = a.gcd(p - a * p.ring.gens[i])
+            if h.is_ground:
+                return [p]
+            return [p.exquo(h), *_irreducible(h)]
+    return [f for f, _ in p.factor_list()[1]]
 
 
 def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
@@ -116,11 +147,11 @@ def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
                 f"{form.as_expr(d)} is 0 modulo {form.describe_relations()} (0/0)")
         if rem.is_ground:  # a non-zero constant on the variety: no condition
             continue
-        key = form.as_expr(rem)  # equal to d wherever the relations hold
+        key = (tuple(form.gens), frozenset(rem.terms()))  # = d wherever the relations hold
         if key not in _FACTORS:
-            parts = [(rem, 1)] if len(rem) > 80 else rem.sqf_list()[1] if len(rem) > 30 \
-                else rem.factor_list()[1]
-            _FACTORS[key] = tuple(form.as_expr(f.quo_ground(f.LC)) for f, _k in parts
+            parts = [rem] if len(rem) > 80 else [f for f, _ in rem.sqf_list()[1]] \
+                if len(rem) > 30 else _irreducible(rem)
+            _FACTORS[key] = tuple(form.as_expr(f.quo_ground(f.LC)) for f in parts
                                   if not f.is_ground)
         out.update(dict.fromkeys(_FACTORS[key]))
     return tuple(sorted(out, key=sp.default_sort_key))
@@ -156,13 +187,13 @@ def reduce_expr(expr: sp.Expr) -> Reduction:
     (num, den), dens = form.values[0], form.denominators[0]
     factors = _factors(form, dens, expr)
     if not num:
-        return Reduction(sp.Integer(0), form.as_expr(den), factors,
-                         form.certificate(num, [R0 * 0 for R0 in form.relations]))
+        return Reduction(sp.Integer(0), den, factors,
+                         form.certificate(num, [R0 * 0 for R0 in form.relations]), form)
     if not form.relations:
-        return Reduction(form.as_expr(num), form.as_expr(den), factors)
+        return Reduction(form.as_expr(num), den, factors, None, form)
     quotients, rem = num.div(form.relations)
     cert = form.certificate(num, quotients) if not rem else None
-    return Reduction(form.as_expr(rem), form.as_expr(den), factors, cert)
+    return Reduction(form.as_expr(rem) if rem else sp.Integer(0), den, factors, cert, form)
 
 
 def is_identically_zero(expr: sp.Expr) -> bool:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from functools import lru_cache
-from itertools import combinations, product
 from typing import Any
 
 import sympy as sp
@@ -202,8 +201,9 @@ def sign_of(f: Any, intervals: Intervals = CONDITION_1) -> Sign | None:
     return None if got is None else got[0]
 
 
-def _key(intervals: Intervals) -> tuple:
-    return tuple(sorted(((k, tuple(v)) for k, v in intervals.items()), key=str))
+def _key(intervals: Intervals) -> frozenset:
+    """The intervals by content (hashable; no printing, no sorting)."""
+    return frozenset((k, tuple(v)) for k, v in intervals.items())
 
 
 def discharge(factor: sp.Expr, intervals: Intervals = CONDITION_1) -> str | None:
@@ -223,7 +223,7 @@ def discharge(factor: sp.Expr, intervals: Intervals = CONDITION_1) -> str | None
 
 
 @lru_cache(maxsize=4096)
-def _discharge(factor: sp.Expr, ikey: tuple) -> str | None:
+def _discharge(factor: sp.Expr, ikey: frozenset) -> str | None:
     from ._ring import to_ring
 
     intervals = {k: v for k, v in ikey}
@@ -240,13 +240,11 @@ def _discharge(factor: sp.Expr, ikey: tuple) -> str | None:
     for t in factor.atoms(sp.sin, sp.cos):
         angles |= t.args[0].free_symbols
     angles_l = sorted(angles, key=sp.default_sort_key)
-    if not angles_l or len(angles_l) > 4:
+    # t = sin or cos of u depends on every angle of u and only on those, as g must:
+    # the forms are a, or a ± b when g involves two angles (no more are tried)
+    if not angles_l or len(angles_l) > 2:
         return None
-    forms = []
-    for r in (1, 2):
-        for sub in combinations(angles_l, r):
-            for signs in product((1, -1), repeat=r - 1):
-                forms.append(sub[0] + sum(s * a for s, a in zip(signs, sub[1:])))
+    forms = [angles_l[0] + sg * a for sg in (1, -1) for a in angles_l[1:]] or angles_l
     for u in forms:
         for fn in (sp.sin, sp.cos):
             cand = fn(u)
