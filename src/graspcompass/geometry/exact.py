@@ -323,37 +323,63 @@ def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
     return _finish(R, n, d)
 
 
-def _relations(R) -> tuple[list, list]:
-    """The relations of ring R's generators (r**2 - p; s**2 + c**2 - 1) and its roots."""
+@lru_cache(maxsize=4096)
+def _relations(R) -> tuple[list, list, list]:
+    """Ring R's relations: ``r**2 - p`` for prime roots, ``s**2 + c**2 - 1`` for
+    sine-cosine pairs, and the root generators."""
     from .trig import OpaqueCos, OpaqueSin
 
     index = {g: R.gens[i] for i, g in enumerate(R.symbols)}
     prime_roots = [g for g in R.symbols if _gen_key(g)[0] == 0]
     roots = [index[g] for g in prime_roots]
-    rels = [index[g] ** 2 - int(g.base) for g in prime_roots]
+    root_rels = [index[g] ** 2 - int(g.base) for g in prime_roots]
+    trig_rels = []
     for g in R.symbols:
         if isinstance(g, sp.sin):
             c = OpaqueCos(g.args[0]) if isinstance(g, OpaqueSin) else sp.cos(g.args[0])
             if c in index:
-                rels.append(index[g] ** 2 + index[c] ** 2 - 1)
-    return rels, roots
+                trig_rels.append(index[g] ** 2 + index[c] ** 2 - 1)
+    return root_rels, trig_rels, roots
 
 
 def _finish(R, n, d) -> sp.Expr:
-    """Reduce n/d modulo the relations, clear roots from d, cancel; remember the result."""
-    rels, roots = _relations(R)
-    if rels:
-        n, d = n.rem(rels), d.rem(rels)
+    """Reduce n/d modulo the relations, clear roots from d, cancel; remember the result.
+
+    Square roots are always reduced (``sqrt(p)**2 = p``) and cleared from the
+    denominator.  The trigonometric relations ``s**2 + c**2 = 1`` form a Groebner
+    basis, so the numerator reduces to 0 exactly when the value is 0; the reduced
+    numerator and denominator are kept only when they are smaller than the
+    cancelled ones (reducing first would hide common factors from the gcd and blow
+    up long symbolic fractions).
+    """
+    root_rels, trig_rels, roots = _relations(R)
+    if root_rels:
+        n, d = n.rem(root_rels), d.rem(root_rels)
     if not d:
         raise ZeroDivisionError("division by zero")
     opaque = any(g.is_number and _gen_key(g)[0] != 0 for g in R.symbols)
-    n, d = _clear_roots(n, d, roots, rels, opaque)
+    n, d = _clear_roots(n, d, roots, root_rels, opaque)
     if d.is_ground:
         n, d = n.quo_ground(d.LC), R.one
     else:
         n, d = n.cancel(d)
-        if d.LC < 0:
-            n, d = -n, -d
+    if trig_rels and n:
+        nr = n.rem(trig_rels)
+        if not nr:
+            n, d = nr, R.one
+        else:
+            if len(nr) < len(n):
+                n = nr
+            if not d.is_ground:
+                dr = d.rem(trig_rels)
+                if not dr:
+                    raise ZeroDivisionError("division by zero")
+                if len(dr) < len(d):
+                    d = dr
+    if d.is_ground and d != R.one:
+        n, d = n.quo_ground(d.LC), R.one
+    if d.LC < 0:
+        n, d = -n, -d
     out = n.as_expr() / d.as_expr() if d != R.one else n.as_expr()
     if len(_MEMO) > 100_000:
         _MEMO.clear()
