@@ -108,7 +108,7 @@ def _decide_symbolic(f: Fact) -> _Sym:
         if f.kind == "eq":
             ok, dens = R.equal(f.lhs, f.rhs)
             return _Sym(ok, dens)
-        n, d = R.nd(sp.sympify(f.lhs - f.rhs))
+        n, dens = R.frac(sp.sympify(f.lhs - f.rhs))
     except ValueError:  # not a rational function of the model's generators
         if f.kind != "eq":
             return _Sym(None, [])
@@ -116,7 +116,7 @@ def _decide_symbolic(f: Fact) -> _Sym:
         return _Sym(True if r.proved else (False if r.status is Status.REFUTED else None),
                     [], "prove_identity")
     if f.kind == "nonzero":  # an assumption: listed, unless identically false
-        return _Sym(bool(R.reduce(n)), [n, *([d] if not d.is_ground else [])])
+        return _Sym(bool(R.reduce(n)), [n, *dens])
     return _Sym(None, [])
 
 
@@ -218,7 +218,7 @@ def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: Paper
     R = ring()
     for e in step.conditions:
         try:
-            conds.append(R.nd(e)[0])
+            conds.append(R.frac(e)[0])
         except ValueError:
             conds.append(None)
     implied: dict[str, str] = {}

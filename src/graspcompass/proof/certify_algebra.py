@@ -18,19 +18,32 @@ from __future__ import annotations
 
 from functools import cache
 from itertools import combinations_with_replacement
+from math import comb
 from typing import Any
 
 import sympy as sp
 
 from .. import symbols as S
 from .prove import CONDITION_1, sign_of
-from .reduce import reduce_expr, trig_to_poly
+from .reduce import reduce_expr
 
 __all__ = ["Ring", "classify", "ring"]
 
 _ANGLES = (S.phi1, S.phi2, S.xi1, S.xi2)
 _POSITIVE = {S.x1, S.x2, S.mu1, S.mu2}
 _NONNEG = _POSITIVE | {S.y}
+
+
+def _expand_trig(expr: sp.Expr) -> sp.Expr:
+    """sin, cos, tan of sums and multiples of angles as polynomials in sin a, cos a."""
+    repl = {}
+    for f in expr.atoms(sp.sin, sp.cos, sp.tan):
+        if isinstance(f, sp.tan):
+            a = f.args[0]
+            repl[f] = sp.expand_trig(sp.sin(a)) / sp.expand_trig(sp.cos(a))
+        elif not f.args[0].is_Symbol:
+            repl[f] = sp.expand_trig(f)
+    return expr.xreplace(repl) if repl else expr
 
 
 class Ring:
@@ -44,61 +57,151 @@ class Ring:
         self.index = {g: i for i, g in enumerate(self.gens)}
         g = self.R.gens
         self.relations = [g[i] ** 2 + g[i + 4] ** 2 - 1 for i in range(4)]
-        self._cache: dict[Any, tuple[Any, Any]] = {}
+        self._cache: dict[Any, tuple[Any, dict[Any, int]]] = {}
 
     def nd(self, expr: Any) -> tuple[Any, Any]:
         """``expr`` as (numerator, denominator) in the ring; ValueError if it is not one."""
+        n, dens = self.frac(expr)
+        d = self.R.one
+        for f, k in dens.items():
+            d = d * f**k
+        return n, d
+
+    def frac(self, expr: Any) -> tuple[Any, dict[Any, int]]:
+        """``expr`` as (numerator, {denominator factor: multiplicity}).
+
+        Denominators stay factored (each factor primitive with a positive leading
+        coefficient), so adding fractions multiplies only by the missing factors.
+        """
         expr = sp.sympify(expr)
         hit = self._cache.get(expr)
         if hit is None:
-            hit = self._nd(trig_to_poly(expr))
-            if not hit[1]:
-                raise ValueError(f"zero denominator in {expr}")
+            hit = self._frac(expr)
             self._cache[expr] = hit
         return hit
 
-    def _nd(self, e: sp.Expr) -> tuple[Any, Any]:
-        """Numerator and denominator of ``e``, no gcd on the way; every node cached."""
+    def _factor(self, p: Any) -> tuple[Any, Any]:
+        """``p = c·q`` with q primitive, leading coefficient > 0: (c, q)."""
+        c, q = p.primitive()
+        if q.LC < 0:
+            c, q = -c, -q
+        return c, q
+
+    def _frac(self, e: sp.Expr) -> tuple[Any, dict[Any, int]]:
         hit = self._cache.get(e)
         if hit is not None:
             return hit
         R = self.R
+        out: tuple[Any, dict[Any, int]]
         if e.is_Rational:
-            out = R(e.p), R(e.q)
+            out = R(e), {}
         elif e in self.index:
-            out = R.gens[self.index[e]], R.one
-        elif e.is_Add or e.is_Mul:
-            n, d = self._nd(e.args[0])
-            for a in e.args[1:]:
-                n2, d2 = self._nd(a)
-                if e.is_Mul:
-                    n, d = n * n2, d * d2
-                elif d == d2:
-                    n = n + n2
-                else:
-                    n, d = n * d2 + n2 * d, d * d2
-            out = n, d
+            out = R.gens[self.index[e]], {}
+        elif e.is_Add and (flat := self._flat_sum(e)) is not None:
+            out = flat, {}
+        elif e.is_Mul:
+            n, dens = R.one, {}
+            for a in e.args:
+                n2, d2 = self._frac(a)
+                n = n * n2
+                for f, k in d2.items():
+                    dens[f] = dens.get(f, 0) + k
+            out = n, dens
+        elif e.is_Add:
+            parts = [self._frac(a) for a in e.args]
+            dens = {}
+            for _, d2 in parts:
+                for f, k in d2.items():
+                    dens[f] = max(dens.get(f, 0), k)
+            n = R.zero
+            for n2, d2 in parts:
+                for f, k in dens.items():
+                    if k > d2.get(f, 0):
+                        n2 = n2 * f ** (k - d2.get(f, 0))
+                n = n + n2
+            out = n, dens
         elif e.is_Pow and e.exp.is_Integer:
-            n, d = self._nd(e.base)
+            n, dens = self._frac(e.base)
             k = int(e.exp)
-            if k < 0:
-                n, d, k = d, n, -k
-            out = n**k, d**k
+            if k >= 0:
+                out = n**k, {f: m * k for f, m in dens.items()}
+            else:
+                if not n:
+                    raise ValueError(f"division by zero in {e}")
+                c, q = self._factor(n)
+                num = R.one
+                for f, m in dens.items():
+                    num = num * f ** (m * -k)
+                num = num * R.domain.quo(R.domain.one, c) ** (-k)
+                out = num, ({q: -k} if not q.is_ground else {})
+                if q.is_ground:
+                    out = num * R.domain.quo(R.domain.one, q.LC) ** (-k), {}
+        elif isinstance(e, (sp.sin, sp.cos, sp.tan)) and (t := _expand_trig(e)) != e:
+            out = self._frac(t)
         else:
             raise ValueError(f"not a rational function of the model's generators: {e}")
         self._cache[e] = out
         return out
 
+    def _flat_sum(self, e: sp.Expr) -> Any:
+        """An expanded polynomial in one pass (None if a term is not a monomial)."""
+        index, acc = self.index, {}
+        dom = self.R.domain
+        zero = [0] * len(self.gens)
+        for term in e.args:
+            c, factors = term.as_coeff_mul()
+            if not c.is_Rational:
+                return None
+            mon = zero.copy()
+            for f in factors:
+                base, k = (f.base, f.exp) if f.is_Pow else (f, 1)
+                i = index.get(base)
+                if i is None or not (k == 1 or (k.is_Integer and k > 0)):
+                    return None
+                mon[i] += int(k)
+            key = tuple(mon)
+            acc[key] = acc.get(key, dom.zero) + dom.convert(c)
+        return self.R.from_dict({m: c for m, c in acc.items() if c})
+
     def reduce(self, p: Any) -> Any:
-        """The normal form of ``p`` modulo sin² + cos² − 1."""
-        return p.rem(self.relations) if p else p
+        """The normal form of ``p`` modulo sin² + cos² − 1 (sin^2k → (1 − cos²)^k).
+
+        The relations are a Gröbner basis with leading terms sin², so this
+        normal form (every sin of degree ≤ 1) is the remainder of the division.
+        """
+        if not p:
+            return p
+        acc: dict[tuple[int, ...], Any] = {}
+        for mon, co in p.items():
+            terms = [(list(mon), co)]
+            for si in range(4):
+                e = mon[si]
+                if e < 2:
+                    continue
+                j, r = divmod(e, 2)
+                new = []
+                for m, cc in terms:
+                    for k in range(j + 1):
+                        m2 = m.copy()
+                        m2[si], m2[si + 4] = r, m[si + 4] + 2 * k
+                        new.append((m2, cc * (-1) ** k * comb(j, k)))
+                terms = new
+            for m, cc in terms:
+                key = tuple(m)
+                acc[key] = acc.get(key, 0) + cc
+        return self.R.from_dict({m: c for m, c in acc.items() if c})
 
     def equal(self, lhs: Any, rhs: Any) -> tuple[bool, list[Any]]:
-        """(lhs − rhs reduces to 0, the denominators assumed non-zero)."""
-        n1, d1 = self.nd(lhs)
-        n2, d2 = self.nd(rhs)
-        num = n1 - n2 if d1 == d2 else n1 * d2 - n2 * d1
-        return not self.reduce(num), [d for d in (d1, d2) if not d.is_ground]
+        """(lhs − rhs reduces to 0, the denominator factors assumed non-zero)."""
+        n1, d1 = self.frac(lhs)
+        n2, d2 = self.frac(rhs)
+        dens = {f: max(d1.get(f, 0), d2.get(f, 0)) for f in {*d1, *d2}}
+        for f, k in dens.items():
+            if k > d1.get(f, 0):
+                n1 = n1 * f ** (k - d1.get(f, 0))
+            if k > d2.get(f, 0):
+                n2 = n2 * f ** (k - d2.get(f, 0))
+        return not self.reduce(n1 - n2), list(dens)
 
     def expr(self, p: Any) -> sp.Expr:
         """``p`` back as a sympy expression."""
@@ -192,6 +295,15 @@ def _classify_factor(p: Any) -> str | None:
     return None
 
 
+def _text(p: Any) -> str:
+    """``p`` as text; a long polynomial by its first terms and its size."""
+    R = ring()
+    if len(p.terms()) <= 60:
+        return str(R.expr(p))
+    head = R.R.from_dict(dict(p.terms()[:3]))
+    return f"{R.expr(head)} + … ({len(p.terms())} terms, degree {sum(p.LM)})"
+
+
 def _primitive(p: Any) -> Any:
     p = p.primitive()[1]
     return -p if p.LC < 0 else p
@@ -209,16 +321,16 @@ def classify(poly: Any) -> tuple[list[tuple[str, str]], list[str]]:
     extra: list[str] = []
     whole = _classify_factor(poly)
     if whole == "identically zero":
-        raise ValueError(f"the condition {R.expr(poly)} ≠ 0 is false for every parameter")
+        raise ValueError(f"the condition {_text(poly)} ≠ 0 is false for every parameter")
     if whole is not None:
-        return [(f"{R.expr(_primitive(poly))} ≠ 0", whole)], []
+        return [(f"{_text(_primitive(poly))} ≠ 0", whole)], []
     factors = [f for f, _ in poly.factor_list()[1]] if len(poly.terms()) <= 40 else [poly]
     for f in factors:
         why = _classify_factor(f)
         if why == "identically zero":  # pragma: no cover - the product would reduce to 0
             raise ValueError(f"the condition {R.expr(f)} ≠ 0 is false for every parameter")
         if why is None:
-            extra.append(f"{R.expr(_primitive(R.reduce(f)))} ≠ 0")
+            extra.append(f"{_text(_primitive(R.reduce(f)))} ≠ 0")
         else:
-            implied.append((f"{R.expr(_primitive(f))} ≠ 0", why))
+            implied.append((f"{_text(_primitive(f))} ≠ 0", why))
     return implied, extra
