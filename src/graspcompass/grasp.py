@@ -184,7 +184,9 @@ class Grasp:
                     f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
                     f"must be {words} (0 < ξ < π/2)"
                 )
-        return (canon(tan_exact(x)) if not has_float(x) else sp.tan(x)), x
+        if has_float(x) or x.free_symbols:
+            return sp.tan(x), x  # floats; or a symbol: tan(xi) is one generator
+        return canon(tan_exact(x)), x
 
     @classmethod
     def preset(cls, name: str) -> Grasp:

@@ -185,6 +185,8 @@ def _atom_plan(atom: sp.Expr) -> tuple | None:
                 if value == atom:
                     return ("gen",)
                 return ("value", value)
+        elif isinstance(atom, sp.tan):
+            return ("gen",)  # tan of a symbol (mu = tan xi): one generator, fewer variables
         else:
             pair = (sp.sin(arg), sp.cos(arg))
         kind = "sin" if isinstance(atom, sp.sin) else "cos" if isinstance(atom, sp.cos) else "tan"

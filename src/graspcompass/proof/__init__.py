@@ -9,7 +9,7 @@
 """
 
 from .catalogue import CLAIMS, Claim, check, claim
-from .certify import StepCertificate, certify
+from .certify import StepCertificate, certify, certify_records
 from .model import sample, violations
 from .prove import CONDITION_1, ProofResult, Status, find_counterexample, prove_identity, prove_sign
 from .recheck import RecheckError, recheck
@@ -27,6 +27,7 @@ __all__ = [
     "Status",
     "StepCertificate",
     "certify",
+    "certify_records",
     "check",
     "claim",
     "exit_status",
