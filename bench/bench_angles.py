@@ -62,11 +62,15 @@ def angles_for(preset: str, count: int) -> list[tuple[str, str]]:
 
 def run_one(job: tuple[str, str, str]) -> tuple[str, str, str, float, bool, str]:
     """Time one exact ``steps`` run; check V_n against the closed form exactly."""
+    from sympy.core.cache import clear_cache
+
     from graspcompass import Grasp, InvalidGraspError, internal_force_diagram
     from graspcompass.construction import describe
-    from graspcompass.geometry.exact import decide_zero
+    from graspcompass.geometry.exact import clear_caches, decide_zero
 
     preset, name, angle = job
+    clear_cache()  # each run cold, as a fresh `graspcompass steps` process would be
+    clear_caches()
     g0 = Grasp.preset(preset)
     params = dict(x1=g0.x1, x2=g0.x2, y=g0.y, phi1=g0.phi1, phi2=g0.phi2)
     fr = dict(xi1=g0.xi1, xi2=g0.xi2) if preset == "fig6" else dict(mu1=g0.mu1, mu2=g0.mu2)

@@ -39,6 +39,8 @@ from typing import Any
 import mpmath
 import sympy as sp
 
+from .geometry.exact import approx
+
 __all__ = [
     "FLOAT_MARGIN",
     "MarginReport",
@@ -72,6 +74,11 @@ def mpf(value: sp.Expr, dps: int = _DPS) -> mpmath.mpf:
         return mpmath.mpf(int(value.p)) / int(value.q)
     if getattr(value, "free_symbols", None):
         raise TypeError(f"{value} has free symbols and no numeric value")
+    if not value.has(sp.Float):  # exact: interval arithmetic on the canonical form (fast)
+        try:
+            return mpmath.mpf(approx(value, dps + 10))
+        except (TypeError, ValueError):
+            pass
     v = sp.N(value, dps + 10)
     if not isinstance(v, sp.Float):
         raise TypeError(f"{value} has no real numeric value")
