@@ -389,6 +389,24 @@ def _finish(R, n, d) -> sp.Expr:
     return out
 
 
+def _clearly_nonzero(poly) -> bool:
+    """True when interval arithmetic (200 bits) shows the number ``poly`` is not 0."""
+    from mpmath import iv
+
+    prec = iv.prec
+    iv.prec = _IV_PREC
+    try:
+        used = {i for monom in poly.monoms() for i, e in enumerate(monom) if e}
+        values = [_gen_interval(g) if i in used else None
+                  for i, g in enumerate(poly.ring.symbols)]
+        value = _poly_interval(poly, values)
+    except TypeError:
+        return False
+    finally:
+        iv.prec = prec
+    return bool(value.a > 0 or value.b < 0)
+
+
 def _clear_roots(n, d, roots: list, rels: list, opaque: bool) -> tuple:
     """Multiply by conjugates (sqrt(p) -> -sqrt(p)) until ``d`` is free of roots.
 
@@ -404,7 +422,7 @@ def _clear_roots(n, d, roots: list, rels: list, opaque: bool) -> tuple:
         n2, d2 = (n * conj).rem(rels), (d * conj).rem(rels)
         if not d2:
             continue
-        if opaque and abs(sp.N(conj.as_expr(), 30)) < sp.Float(10) ** -20:
+        if opaque and not _clearly_nonzero(conj):
             continue
         n, d = n2, d2
     return n, d
