@@ -396,10 +396,7 @@ def _clearly_nonzero(poly) -> bool:
     prec = iv.prec
     iv.prec = _IV_PREC
     try:
-        used = {i for monom in poly.monoms() for i, e in enumerate(monom) if e}
-        values = [_gen_interval(g) if i in used else None
-                  for i, g in enumerate(poly.ring.symbols)]
-        value = _poly_interval(poly, values)
+        (value,) = _intervals(poly)
     except TypeError:
         return False
     finally:
@@ -599,6 +596,14 @@ def _poly_interval(poly, values: list):
     return total
 
 
+def _intervals(*polys) -> list:
+    """Intervals of the numbers ``polys`` (of one ring), each generator evaluated once."""
+    symbols = polys[0].ring.symbols
+    used = {i for p in polys for monom in p.monoms() for i, e in enumerate(monom) if e}
+    values = [_gen_interval(g) if i in used else None for i, g in enumerate(symbols)]
+    return [_poly_interval(p, values) for p in polys]
+
+
 def _interval(expr: sp.Expr):
     """An interval holding the exact number ``expr``, or None (at the current iv.prec)."""
     from mpmath import iv
@@ -609,13 +614,9 @@ def _interval(expr: sp.Expr):
     hit = _MEMO.get(reduced)
     if hit is None:
         return None
-    R, n, d = hit
-    used = set()
-    for p in (n, d):
-        for monom in p.monoms():
-            used.update(i for i, e in enumerate(monom) if e)
-    values = [_gen_interval(g) if i in used else None for i, g in enumerate(R.symbols)]
-    return _poly_interval(n, values) / _poly_interval(d, values)
+    _, n, d = hit
+    nv, dv = _intervals(n, d)
+    return nv / dv
 
 
 def approx(expr: sp.Expr, dps: int = 30):
@@ -666,13 +667,8 @@ def _strict_sign(reduced: sp.Expr) -> int | None:
             if value.is_Number and abs(value) > sp.Float(10) ** (-_PREC // 2):
                 return 1 if value > 0 else -1
             return None
-        R, n, d = hit
-        used = set()
-        for p in (n, d):
-            for monom in p.monoms():
-                used.update(i for i, e in enumerate(monom) if e)
-        values = [_gen_interval(g) if i in used else None for i, g in enumerate(R.symbols)]
-        nv, dv = _poly_interval(n, values), _poly_interval(d, values)
+        _, n, d = hit
+        nv, dv = _intervals(n, d)
     except TypeError:
         return None
     finally:
