@@ -20,8 +20,8 @@ import sympy as sp
 
 from ..expr import parse_exact
 
-__all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zero", "has_float",
-           "sym", "text"]
+__all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zero",
+           "fold_fractions", "has_float", "sym", "text"]
 
 Expr = sp.Expr
 
@@ -219,6 +219,31 @@ def _collect(expr: sp.Expr, atoms: dict, roots: set, pairs: set) -> bool:
     return True
 
 
+def fold_fractions(parts: list[tuple], multiply: bool) -> tuple:
+    """The sum or product of fractions ``(n, d)`` of ring elements, with no gcd taken.
+
+    Equal denominators are added without multiplying them; the kernel's canonical
+    form and the proof checker's reduction both build their fractions with it.
+
+    Examples
+    --------
+    >>> R, a = sp.ring("a", sp.QQ)
+    >>> fold_fractions([(a, R(2)), (R(1), R(2))], multiply=False)
+    (a + 1, 2)
+    >>> fold_fractions([(a, R(2)), (R(1), a)], multiply=True)
+    (a, 2*a)
+    """
+    n, d = parts[0]
+    for n2, d2 in parts[1:]:
+        if multiply:
+            n, d = n * n2, d * d2
+        elif d == d2:
+            n = n + n2
+        else:
+            n, d = n * d2 + n2 * d, d * d2
+    return n, d
+
+
 def _convert(e: sp.Expr, R, amap: dict) -> tuple:
     """``e`` as (numerator, denominator) in R, atoms mapped by ``amap``, no gcd."""
     hit = _MEMO.get(e)
@@ -231,16 +256,7 @@ def _convert(e: sp.Expr, R, amap: dict) -> tuple:
     if m is not None:
         return m
     if e.is_Add or e.is_Mul:
-        parts = [_convert(a, R, amap) for a in e.args]
-        n, d = parts[0]
-        for n2, d2 in parts[1:]:
-            if e.is_Mul:
-                n, d = n * n2, d * d2
-            elif d == d2:
-                n = n + n2
-            else:
-                n, d = n * d2 + n2 * d, d * d2
-        return n, d
+        return fold_fractions([_convert(a, R, amap) for a in e.args], multiply=e.is_Mul)
     if e.is_Pow and e.exp.is_Integer:
         n, d = _convert(e.base, R, amap)
         k = int(e.exp)

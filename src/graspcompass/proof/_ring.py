@@ -16,6 +16,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..geometry.exact import fold_fractions
 
 __all__ = ["RingForm", "to_ring"]
 
@@ -237,16 +238,7 @@ class _Converter:
             self._den(d, e)
             return n, d
         if e.is_Add or e.is_Mul:
-            parts = [self.nd(a) for a in e.args]
-            n, d = parts[0]
-            for n2, d2 in parts[1:]:
-                if e.is_Mul:
-                    n, d = n * n2, d * d2
-                elif d == d2:
-                    n = n + n2
-                else:
-                    n, d = n * d2 + n2 * d, d * d2
-            return n, d
+            return fold_fractions([self.nd(a) for a in e.args], multiply=e.is_Mul)
         if e.is_Pow and e.exp.is_Integer:
             n, d = self.nd(e.base)
             k = int(e.exp)
