@@ -192,3 +192,14 @@ def test_decide_sign_agrees_with_50_digits(num, den, q):
         - mpmath.cos(mpmath.pi * num / q) * mpmath.sqrt(3) + mpmath.mpf(1) / 7
     want = 0 if abs(v) < 1e-40 else (1 if v > 0 else -1)
     assert decide_sign(e) == want
+
+
+def test_twelfths_table_is_sympys_radical_form():
+    """trig's written-out sin/cos of π/12, π/6, π/4 are sympy's own, structurally."""
+    import sympy as sp
+
+    from graspcompass.geometry.trig import _TWELFTH_VALUES
+
+    for v, (s, c) in _TWELFTH_VALUES.items():
+        assert sp.srepr(s) == sp.srepr(sp.sin(v * sp.pi))
+        assert sp.srepr(c) == sp.srepr(sp.cos(v * sp.pi))

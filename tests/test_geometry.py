@@ -811,3 +811,33 @@ def test_symbolic_circle_intersection_records_the_centre_distance():
 def test_small_float_perpendicular_lines_meet():
     m = meet(Line(Point(0.0, 0.0), Point(1e-7, 0.0)), Line(Point(1.0, 1.0), Point(0.0, 1e-7)))
     assert evaluate(m) == pytest.approx((1.0, 0.0))
+
+
+# --------------------------------------------------------------------------- atan shortcut
+_RADICALS = [sympy.Integer(1), sympy.Integer(2), sympy.Rational(1, 2), sympy.sqrt(2), sympy.sqrt(3),
+             sympy.sqrt(6), sympy.sqrt(5)]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3))
+def test_atan_shortcut_agrees_with_sympy(terms):
+    """measurement._atan skips sympy's eval; on canonical radicals it must give the same."""
+    from graspcompass.geometry.exact import canon
+    from graspcompass.geometry.measurement import _atan
+
+    r = canon(sum((k * v for k, v in terms), sympy.Integer(0)))
+    assume(r != 0)
+    assert _atan(r) == sympy.atan(r)
+
+
+@pytest.mark.parametrize("k", range(-11, 12))
+def test_atan_shortcut_on_tangents_of_twelfths_and_eighths(k):
+    from graspcompass.geometry.exact import canon
+    from graspcompass.geometry.measurement import _atan
+
+    for den in (12, 8):
+        a = sympy.pi * k / den
+        if abs(a) >= sympy.pi / 2 or a == 0:
+            continue
+        r = canon(sympy.tan(a))
+        assert _atan(r) == sympy.atan(r) == a

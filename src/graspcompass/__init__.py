@@ -19,6 +19,7 @@ True
 """
 
 from .construction import Construction, Step, internal_force_diagram
+from .errors import GraspCompassError, InputError
 from .expr import ExpressionError, parse_exact
 from .geometry import Circle, GeometryError, Line, Point
 from .grasp import PRESETS, Grasp, InvalidGraspError
@@ -32,6 +33,8 @@ __all__ = [
     "ExpressionError",
     "GeometryError",
     "Grasp",
+    "GraspCompassError",
+    "InputError",
     "InvalidGraspError",
     "Line",
     "Point",

@@ -18,6 +18,8 @@ from fractions import Fraction
 
 import sympy
 
+from .errors import InputError
+
 __all__ = ["MAX_ANGLES", "MAX_EXPONENT", "MAX_LENGTH", "ExpressionError", "parse_angles",
            "parse_exact", "to_exact"]
 
@@ -57,7 +59,7 @@ _DECIMAL_EXPONENT = re.compile(r"[eE]([-+]?\d+)$")
 _NAME_TAIL = re.compile(r"[\w.]*$")
 
 
-class ExpressionError(ValueError):
+class ExpressionError(InputError):
     """User text that is not an allowed exact expression; the message says why.
 
     Examples

@@ -19,6 +19,7 @@ import numpy as np
 import sympy as sp
 
 from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins, side_floats
+from .errors import GraspCompassError
 from .expr import ExpressionError, parse_exact
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
@@ -27,7 +28,7 @@ from .geometry.trig import sincos, tan_exact
 __all__ = ["PRESETS", "Grasp", "InvalidGraspError"]
 
 
-class InvalidGraspError(ValueError):
+class InvalidGraspError(GraspCompassError):
     """The parameters do not describe a grasp the paper's method applies to."""
 
 

@@ -39,6 +39,7 @@ import numpy as np
 import sympy as sp
 
 from .._floatpath import mpf
+from ..errors import GraspCompassError
 from ..geometry import Point, angle_of
 from ..geometry.exact import canon, decide_sign, has_float
 
@@ -53,7 +54,7 @@ _EXACT_MERGE = 1e-25
 _FLOAT_MERGE = 1e-13
 
 
-class EnvelopeError(ValueError):
+class EnvelopeError(GraspCompassError):
     """The construction's break point does not lie at the computed break angle."""
 
 @dataclass(frozen=True)
@@ -131,7 +132,14 @@ def _angle(vector: Point, approx: Any = None) -> sp.Expr:
         negative = approx > mpmath.pi
     else:
         negative = decide_sign(a) == -1
-    return canon(a + 2 * sp.pi) if negative else canon(a)
+    # angle_of returns atan(canonical) + kπ, already in canonical form; only a
+    # symbolic angle (atan2 of expressions) needs the canonical form again
+    exact = canon if a.free_symbols else (lambda e: e)
+    return exact(a + 2 * sp.pi) if negative else exact(a)
+
+
+def _plus_2pi(angle: sp.Expr) -> sp.Expr:
+    return canon(angle + 2 * sp.pi) if angle.free_symbols else angle + 2 * sp.pi
 
 
 def _theta(wx: mpmath.mpf, wy: mpmath.mpf) -> mpmath.mpf:
@@ -257,7 +265,7 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
     arcs = []
     for j, i in enumerate(order):
         nxt = order[(j + 1) % m]
-        t1 = found[nxt][1] if j + 1 < m else canon(found[nxt][1] + 2 * sp.pi)
+        t1 = found[nxt][1] if j + 1 < m else _plus_2pi(found[nxt][1])
         arcs.append(Arc(breaks[i][2], found[i][1], t1, found[i][2], found[nxt][2]))
     return arcs
 

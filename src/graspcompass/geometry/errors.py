@@ -7,6 +7,8 @@ caller can say *which* inputs were degenerate, not only that something was.
 
 from __future__ import annotations
 
+from ..errors import GraspCompassError
+
 __all__ = [
     "CoincidentPointsError",
     "DegenerateCircleError",
@@ -17,7 +19,7 @@ __all__ = [
 ]
 
 
-class GeometryError(ValueError):
+class GeometryError(GraspCompassError):
     """A construction step is impossible for the given objects."""
 
     def __init__(self, message: str, *objects: object) -> None:

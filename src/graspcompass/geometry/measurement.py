@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from .exact import canon, decide_sign
@@ -43,6 +45,32 @@ def signed_length(start: Point, end: Point, line: Line) -> sp.Expr:
     return canon((end - start).dot(d) / sp.sqrt(d.dot(d)))
 
 
+@lru_cache(maxsize=1)
+def _atan_values() -> dict[sp.Expr, sp.Expr]:
+    """The arguments at which sympy's ``atan`` returns a multiple of π, and those values."""
+    table: dict[sp.Expr, sp.Expr] = {sp.Integer(0): sp.Integer(0), sp.Integer(1): sp.pi / 4}
+    table.update(sp.atan._atan_table())
+    table.update({-k: -v for k, v in list(table.items())})
+    return table
+
+
+def _atan(ratio: sp.Expr) -> sp.Expr:
+    """``sympy.atan(ratio)`` for a canonical number, without sympy's costly ``eval``.
+
+    Gives what sympy's evaluation gives on such arguments (a multiple of π from its
+    table, else ``atan`` of the positive-looking argument with the sign outside),
+    which ``test_geometry`` checks against ``sympy.atan``.
+    """
+    if not is_radical(ratio):
+        return sp.atan(ratio, evaluate=False)
+    known = _atan_values().get(ratio)
+    if known is not None:
+        return known
+    if ratio.could_extract_minus_sign():
+        return -sp.atan(-ratio, evaluate=False)
+    return sp.atan(ratio, evaluate=False)
+
+
 def angle_of(vector: Point) -> sp.Expr:
     """Angle θ from the negative y-axis, counter-clockwise, with ``e(θ) ∥ vector``.
 
@@ -63,8 +91,7 @@ def angle_of(vector: Point) -> sp.Expr:
             raise ValueError("the zero vector has no direction")
         return sx * sp.pi / 2
     ratio = canon(x / y)
-    # sympy's atan evaluates radical arguments (atan(1) = pi/4); others stay unevaluated
-    base = sp.atan(ratio, evaluate=is_radical(ratio))
+    base = _atan(ratio)
     if sy > 0:
         return base
     return base + sp.pi if sx >= 0 else base - sp.pi

@@ -37,12 +37,14 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
+from ..errors import GraspCompassError
+
 __all__ = ["RecheckError", "problems", "recheck"]
 
 Poly = dict[tuple[int, ...], Fraction]
 
 
-class RecheckError(ValueError):
+class RecheckError(GraspCompassError):
     """A certificate that does not re-check; the message lists what is wrong."""
 
 

@@ -34,6 +34,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..errors import GraspCompassError
 from ._ring import RingForm, to_ring
 
 __all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero", "reduce_expr",
@@ -43,7 +44,7 @@ __all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero",
 ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
 
 
-class DegenerateClaimError(ValueError):
+class DegenerateClaimError(GraspCompassError):
     """An expression with a denominator that vanishes identically: 0/0 or undefined everywhere."""
 
 

@@ -29,6 +29,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import GraspCompassError
 from ..progress import Progress
 
 __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",
@@ -42,7 +43,7 @@ KINDS = ("draw", "pause", "hold")
 OUTPUT_FORMATS = (".gif", ".mp4", ".html")
 
 
-class AnimationError(ValueError):
+class AnimationError(GraspCompassError):
     """A user error while making or writing an animation (one-line message)."""
 
 
