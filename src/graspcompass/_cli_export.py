@@ -17,8 +17,9 @@ from typing import Any
 
 __all__ = ["register", "run_explore", "run_export"]
 
-_FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf")
-_EXT = {"ggb": "ggb", "tikz": "tex", "svg": "svg", "json": "json", "png": "png", "pdf": "pdf"}
+_FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
+_EXT = {"ggb": "ggb", "tikz": "tex", "svg": "svg", "json": "json", "png": "png", "pdf": "pdf",
+        "html": "html"}
 
 
 def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]

@@ -49,9 +49,9 @@ __all__ = [
 ]
 
 #: The formats :func:`export` writes.
-FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf")
+FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
 _EXTENSIONS = {".ggb": "ggb", ".tex": "tikz", ".tikz": "tikz", ".svg": "svg", ".json": "json",
-               ".png": "png", ".pdf": "pdf"}
+               ".png": "png", ".pdf": "pdf", ".html": "html", ".htm": "html"}
 
 
 def guess_format(path: Any) -> str:
@@ -79,7 +79,7 @@ def export(construction: Any, path: Any, format: str | None = None,
         Numeric parameters for every format but ``json``, which also takes a
         symbolic construction.
     path : str or path-like
-    format : {"ggb", "tikz", "svg", "json", "png", "pdf"}, optional
+    format : {"ggb", "tikz", "svg", "json", "png", "pdf", "html"}, optional
     title : str, optional
         Title of the picture (default: the grasp's title).
 
@@ -105,6 +105,10 @@ def export(construction: Any, path: Any, format: str | None = None,
         p.parent.mkdir(parents=True, exist_ok=True)
         p.write_text(dumps(construction) + "\n", encoding="utf-8")
         return p
+    if fmt == "html":
+        from .html import write_html  # the self-contained web explorer (JSXGraph)
+
+        return write_html(construction, p, title=title)
     if fmt in ("png", "pdf"):
         from ..render import figure_diagram, save_figure  # matplotlib, only here
 
