@@ -105,7 +105,7 @@ def canon(expr: sp.Expr) -> sp.Expr:
     (0, 0)
     """
     expr = sym(expr)
-    if expr.is_Rational or expr.is_Symbol:
+    if expr.is_Rational or expr.is_Symbol or expr in _MEMO:  # memo keys are canonical
         return expr
     if has_float(expr):
         return sp.Float(expr.evalf(17)) if not expr.free_symbols else sp.expand(expr)
@@ -705,6 +705,11 @@ def _nd(e: sp.Expr, R, index: dict) -> tuple:
     return _convert(e, R, {g: (R.gens[i], R.one) for g, i in index.items()})
 
 
+def _ground(R, q: sp.Rational):
+    """The rational ``q`` as a constant of ring R (``R(q)`` goes through ``from_expr``)."""
+    return R.ground_new(R.domain.from_sympy(q))
+
+
 class NotAFraction(Exception):
     """An expression the fast path cannot hold (floats, ``I``): use sympy arithmetic."""
 
@@ -747,10 +752,10 @@ class Frac:
             return self.R, self.n, self.d, other.n, other.d
         if self.R is None:
             R = other.R
-            return R, R(self.n), R(self.d), other.n, other.d
+            return R, _ground(R, self.n), R.one, other.n, other.d
         if other.R is None:
             R = self.R
-            return R, self.n, self.d, R(other.n), R(other.d)
+            return R, self.n, self.d, _ground(R, other.n), R.one
         gens = set(self.R.symbols) | set(other.R.symbols)
         R = _ring(tuple(sorted(gens, key=_gen_key)))
         return (R, _lift(self.n, self.R, R), _lift(self.d, self.R, R),
