@@ -1,0 +1,971 @@
+/* graspcompass web explorer: the internal force diagram of a two-point grasp
+ * (Ito, Tanaka, Sasaki, Robotica 30(5), 2012), live in the browser with JSXGraph.
+ *
+ * The page embeds its data as JSON (#gc-data): the start parameters, the steps of the
+ * construction protocol (numbered as `graspcompass steps` prints them), the palette and
+ * the paper's presets.  Everything is computed here from the closed form of the paper,
+ * eqs. (27)-(39), ported from graspcompass.grasp / graspcompass._floatpath:
+ *
+ *   tan(φ ± ξ) = (sin φ ± μ cos φ) / (cos φ ∓ μ sin φ)                       (23)
+ *   S_n = ∓(x1 + x2)/2 ± y tan(φ ± ξ),  C_n = x_{2|1} tan(φ ± ξ)       (28)-(39)
+ *   V_n = (S_n, C_n),  k_n(θ) = S_n sin θ − C_n cos θ                  (30)-(33)
+ *   k_grasp(θ) = max(0, k_1, .., k_4),  F_int = k / (x1 + x2) · F_e       (25), (17)
+ *
+ * The drawing follows §3.3: X_n where the extended cone side meets the x-axis, the
+ * perpendicular from P2x (n = 1, 3) or P1x (n = 2, 4) to that side meets the y-axis at
+ * Y_n, V_n = (−O_M X_n, −O Y_n); the circle on the diameter O V_n is the polar graph of
+ * k_n (Thales, eq. (31)); the outer envelope of the circles is k_grasp (Fig. 5).
+ *
+ * window.graspcompass: set({x1: .., mu2: ..}), get(name), step(i), toScreen(name),
+ * lastUpdateMs, timings(), envelope(), kGrasp(θ), error() (see the docs page "Explore").
+ */
+(function () {
+  "use strict";
+
+  const DATA = JSON.parse(document.getElementById("gc-data").textContent);
+  const PI = Math.PI;
+  const TWO_PI = 2 * Math.PI;
+  const NAMES = ["x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "theta"];
+  const FLOAT_MARGIN = 1e-12; // graspcompass._floatpath.FLOAT_MARGIN
+  const MERGE = 1e-13; // break angles closer than this are one (envelope._FLOAT_MERGE)
+
+  // ------------------------------------------------------------------------------------
+  // Number formatting as Python prints it (the error messages of graspcompass.grasp)
+  // ------------------------------------------------------------------------------------
+  function stripZeros(s) {
+    return s.indexOf(".") < 0 ? s : s.replace(/0+$/, "").replace(/\.$/, "");
+  }
+
+  /** Python's format(x, ".{p}g"). */
+  function fmtG(x, p) {
+    if (Number.isNaN(x)) return "nan";
+    if (!Number.isFinite(x)) return x > 0 ? "inf" : "-inf";
+    if (x === 0) return Object.is(x, -0) ? "-0" : "0";
+    const [m, ex] = x.toExponential(p - 1).split("e");
+    const e = parseInt(ex, 10);
+    if (e < -4 || e >= p) {
+      const a = Math.abs(e);
+      return stripZeros(m) + "e" + (e < 0 ? "-" : "+") + (a < 10 ? "0" + a : String(a));
+    }
+    return stripZeros(x.toFixed(Math.max(0, p - 1 - e)));
+  }
+
+  /** str(sympy.Float(x)): 15 significant digits, fixed for 1e-5 < |x| < 1e15. */
+  function sympyFloat(x) {
+    if (x === 0) return "0.0";
+    const e = parseInt(x.toExponential(14).split("e")[1], 10);
+    if (e > -5 && e < 15) return x.toPrecision(15);
+    return x.toExponential(14);
+  }
+
+  /** str(decimal.Decimal(s)) of a number's text (as sympy's Float.__format__ prints). */
+  function decimalStr(s) {
+    const m = s.match(/^(-?)(\d*)\.?(\d*)(?:e([+-]?\d+))?$/i);
+    if (!m) return s;
+    let digits = (m[2] + m[3]).replace(/^0+(?=\d)/, "");
+    const exp = (m[4] ? parseInt(m[4], 10) : 0) - m[3].length;
+    if (digits === "") digits = "0";
+    const adjusted = exp + digits.length - 1;
+    let body;
+    if (exp <= 0 && adjusted >= -6) {
+      if (exp === 0) body = digits;
+      else if (digits.length > -exp) {
+        body = digits.slice(0, digits.length + exp) + "." + digits.slice(digits.length + exp);
+      } else body = "0." + "0".repeat(-exp - digits.length) + digits;
+    } else {
+      body = digits[0] + (digits.length > 1 ? "." + digits.slice(1) : "") + "E" +
+        (adjusted >= 0 ? "+" : "-") + Math.abs(adjusted);
+    }
+    return m[1] + body;
+  }
+
+  /** graspcompass.grasp._fmt of a float parameter: f"{Float(x)} ≈ {x:.4g}". */
+  function fmtValue(x) {
+    return decimalStr(sympyFloat(x)) + " ≈ " + fmtG(x, 4);
+  }
+
+  /** graspcompass.grasp._fmt_angle: the angle as a multiple of π. */
+  function fmtAngle(v) {
+    const f = v / PI;
+    return Number.isFinite(f) && Math.abs(f) < 1e6 ? fmtG(f, 3) + "π" : v + " rad";
+  }
+
+  /** Python's repr of a float (shortest round trip). */
+  function pyRepr(x) {
+    if (Number.isInteger(x) && Math.abs(x) < 1e16) return x.toFixed(1);
+    let s = String(x);
+    const m = s.match(/^(-?[\d.]+)e([+-])(\d+)$/);
+    if (m) s = m[1] + "e" + m[2] + (m[3].length < 2 ? "0" + m[3] : m[3]);
+    return s;
+  }
+
+  // ------------------------------------------------------------------------------------
+  // The model: condition (1) and the closed form (27)-(39)
+  // ------------------------------------------------------------------------------------
+  /** The first check of graspcompass.Grasp that ``p`` fails, as its message; else null. */
+  function validate(p) {
+    for (const k of NAMES) {
+      if (typeof p[k] !== "number" || !Number.isFinite(p[k])) {
+        const shown = typeof p[k] === "number" ? pyRepr(p[k]).toLowerCase() : String(p[k]);
+        return `${k === "theta" ? "θ" : k} must be finite, got ${shown}`;
+      }
+    }
+    for (const i of [1, 2]) {
+      const mu = p["mu" + i];
+      if (mu <= 0) {
+        return `contact ${i}: the friction coefficient μ${i} = ${fmtValue(mu)} must be positive`;
+      }
+    }
+    if (!(p.x1 > 0)) {
+      return `x1 = ${fmtValue(p.x1)} must be positive: P1 = (x1, y) lies right of the y-axis`;
+    }
+    if (!(p.x2 > 0)) {
+      return `x2 = ${fmtValue(p.x2)} must be positive: P2 = (-x2, y) lies left of the y-axis`;
+    }
+    if (p.y < 0) {
+      return `y = ${fmtValue(p.y)} must be non-negative (the frame of §2.2.1 puts y >= 0)`;
+    }
+    for (const i of [1, 2]) {
+      const phi = p["phi" + i];
+      if (!(phi > 0)) {
+        return `contact ${i}: φ${i} = ${fmtAngle(phi)} must be positive (0 < φ ≤ π)`;
+      }
+      if (phi > PI) {
+        return `contact ${i}: φ${i} = ${fmtAngle(phi)} must not exceed π (0 < φ ≤ π)`;
+      }
+    }
+    // floats within rounding of a bound of condition (1) (Grasp._check_float_margins)
+    for (const i of [1, 2]) {
+      const phi = p["phi" + i], xi = Math.atan(p["mu" + i]);
+      const lo = phi - xi, up = phi + xi;
+      const rows = [
+        [lo, "−", -PI / 2, "−π/2", ">"], [lo, "−", PI / 2, "π/2", "<"],
+        [up, "+", PI / 2, "π/2", ">"], [up, "+", 3 * PI / 2, "3π/2", "<"],
+      ];
+      for (const [value, sign, bound, b, rel] of rows) {
+        const margin = rel === ">" ? value - bound : bound - value;
+        if (Math.abs(margin / Math.abs(bound)) >= FLOAT_MARGIN) continue;
+        const where = margin > 0 ? "within" : "on the wrong side of, and within";
+        return `contact ${i}: φ${i} ${sign} ξ${i} ${rel} ${b} of condition (1) is within ` +
+          `rounding of its bound: φ${i} ${sign} ξ${i} = ${pyRepr(value)} rad is ${where} ` +
+          `${fmtG(Math.abs(margin), 2)} rad of ${b}, below the 1e-12·|${b}| that double ` +
+          "precision resolves here (the cone side is nearly horizontal and X_n, Y_n, V_n " +
+          `scale like 1/cos(φ${i} ${sign} ξ${i})). Give the parameters exactly, as text such ` +
+          "as 'pi/2', '3*pi/4' or '1/3', to use the exact path";
+      }
+    }
+    for (const i of [1, 2]) {
+      const phi = p["phi" + i], xi = Math.atan(p["mu" + i]);
+      const lo = phi - xi, up = phi + xi;
+      const who = `the friction cone at P${i}`, other = `P${3 - i}`;
+      const pre = `contact ${i}: `;
+      if (!(lo + PI / 2 > 0)) {
+        return pre + `φ${i} − ξ${i} = ${fmtAngle(lo)} must exceed −π/2 — ${who} turns past ` +
+          "the contact's tangent line (condition (1))";
+      }
+      if (!(PI / 2 - lo > 0)) {
+        return pre + `φ${i} − ξ${i} = ${fmtAngle(lo)} must be below π/2 — ${who} does not ` +
+          `contain ${other} (its lower side passes above ${other}; condition (1))`;
+      }
+      if (!(up - PI / 2 > 0)) {
+        return pre + `φ${i} + ξ${i} = ${fmtAngle(up)} must exceed π/2 — ${who} does not ` +
+          `contain ${other} (its upper side passes below ${other}; condition (1))`;
+      }
+      if (!(3 * PI / 2 - up > 0)) {
+        return pre + `φ${i} + ξ${i} = ${fmtAngle(up)} must be below 3π/2 — ${who} turns past ` +
+          "the contact's tangent line (condition (1))";
+      }
+    }
+    return null;
+  }
+
+  /** ``[sin(φ ± ξ), cos(φ ± ξ)] / cos ξ`` of cone side n = 1..4 (μ form of (23)). */
+  function sideOf(p, n) {
+    const i = n === 1 || n === 3 ? 1 : 2;
+    const phi = p["phi" + i], mu = p["mu" + i];
+    const s = Math.sin(phi), c = Math.cos(phi), sg = n <= 2 ? 1 : -1;
+    return [s + sg * c * mu, c - sg * s * mu];
+  }
+
+  /** k_n(θ) = S_n sin θ − C_n cos θ, eq. (32). */
+  function kOf(V, theta) {
+    const s = Math.sin(theta), c = Math.cos(theta);
+    return V.map((v) => v[0] * s - v[1] * c);
+  }
+
+  /** θ in [0, 2π) with e(θ) = (sin θ, −cos θ) along (wx, wy). */
+  function thetaOf(wx, wy) {
+    const t = Math.atan2(wx, -wy);
+    return t < 0 ? t + TWO_PI : t;
+  }
+
+  function mod2pi(t) {
+    const r = t % TWO_PI;
+    return r < 0 ? r + TWO_PI : r;
+  }
+
+  /** The outer envelope of the circles on O V_n (eq. (25), Fig. 5), as arcs in θ.
+   *
+   * A port of graspcompass.construction.envelope: candidate break angles where
+   * e(θ) ⊥ V_n (k_n = 0) or e(θ) ⊥ V_n − V_m (k_n = k_m); between two neighbours the
+   * winner is the largest k at the midpoint (ties: the lowest index, 0 for k_grasp = 0).
+   */
+  function envelopeOf(V) {
+    const cands = [];
+    const keys = [[0], [1], [2], [3], [0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+    for (const key of keys) {
+      const wx = V[key[0]][0] - (key.length === 2 ? V[key[1]][0] : 0);
+      const wy = V[key[0]][1] - (key.length === 2 ? V[key[1]][1] : 0);
+      if (wx || wy) {
+        const t = thetaOf(-wy, wx);
+        cands.push(t, mod2pi(t + PI));
+      }
+    }
+    cands.sort((a, b) => a - b);
+    const cuts = [];
+    for (const t of cands) {
+      if (!cuts.length || t - cuts[cuts.length - 1] > MERGE) cuts.push(t);
+    }
+    if (cuts.length > 1 && cuts[0] + TWO_PI - cuts[cuts.length - 1] <= MERGE) cuts.pop();
+    const arcs = [];
+    if (!cuts.length) {
+      arcs.push({ n: 0, theta0: 0, theta1: TWO_PI });
+    } else {
+      const win = cuts.map((t, i) => {
+        const b = i + 1 < cuts.length ? cuts[i + 1] : cuts[0] + TWO_PI;
+        const ks = [0, ...kOf(V, (t + b) / 2)];
+        let best = 0;
+        for (let n = 1; n <= 4; n++) if (ks[n] > ks[best]) best = n;
+        return best;
+      });
+      const m = cuts.length;
+      const breaks = [];
+      for (let i = 0; i < m; i++) {
+        const before = win[(i - 1 + m) % m];
+        if (before !== win[i]) breaks.push([cuts[i], win[i]]);
+      }
+      if (!breaks.length) {
+        arcs.push({ n: win[0], theta0: 0, theta1: TWO_PI });
+      } else {
+        for (let j = 0; j < breaks.length; j++) {
+          const t1 = j + 1 < breaks.length ? breaks[j + 1][0] : breaks[0][0] + TWO_PI;
+          arcs.push({ n: breaks[j][1], theta0: breaks[j][0], theta1: t1 });
+        }
+      }
+    }
+    return arcs;
+  }
+
+  /** k_grasp(θ) = max(0, k_1, .., k_4), eq. (25). */
+  function kGraspOf(V, theta) {
+    return Math.max(0, ...kOf(V, theta));
+  }
+
+  /** Every number of the construction for the parameters ``p`` (valid by condition (1)). */
+  function compute(p) {
+    const P1 = [p.x1, p.y], P2 = [-p.x2, p.y];
+    const P1x = [p.x1, 0], P2x = [-p.x2, 0], OM = [(p.x1 - p.x2) / 2, 0];
+    const h = (p.x1 + p.x2) / 2;
+    const out = {
+      O: [0, 0], P1, P2, P1x, P2x, O_M: OM, sides: {}, perps: {}, S: [], C: [], V: [],
+    };
+    for (let n = 1; n <= 4; n++) {
+      const [sx, cx] = sideOf(p, n);
+      const odd = n === 1 || n === 3;
+      const P = odd ? P1 : P2, F = odd ? P2x : P1x;
+      const d = [odd ? -sx : sx, -cx]; // the side's direction (graspcompass side_direction)
+      const t = sx / cx; // tan(φ ± ξ), eq. (23)
+      const S = odd ? -h + p.y * t : h - p.y * t; // eqs. (28), (34), (36), (38)
+      const C = (odd ? p.x2 : p.x1) * t; // eqs. (29), (35), (37), (39)
+      out.S.push(S);
+      out.C.push(C);
+      out.V.push([S, C]); // eq. (30)/(33)
+      out.sides[n] = { P, d };
+      out.perps[n] = { P: F, d: [-d[1], d[0]] };
+      out["X" + n] = [P[0] - P[1] * d[0] / d[1], 0]; // the side meets the x-axis
+      out["Y" + n] = [0, F[0] * d[0] / d[1]]; // the perpendicular meets the y-axis
+      out["OMX" + n] = out["X" + n][0] - OM[0]; // signed length O_M X_n = −S_n
+      out["OY" + n] = out["Y" + n][1]; // signed length O Y_n = −C_n
+      out["V" + n] = [S, C];
+      out["circle" + n] = [S / 2, C / 2, Math.hypot(S, C) / 2]; // eq. (31)
+    }
+    const scale = Math.max(1e-300, ...out.V.map((v) => Math.abs(v[0]) + Math.abs(v[1])));
+    for (let n = 1; n <= 4; n++) {
+      for (let m = n + 1; m <= 4; m++) {
+        // second intersection of the circles on O V_n and O V_m: B · (V_n − V_m) = 0
+        const [vn, vm] = [out.V[n - 1], out.V[m - 1]];
+        const u = [-(vn[1] - vm[1]), vn[0] - vm[0]];
+        const uu = u[0] * u[0] + u[1] * u[1];
+        let B = null;
+        if (uu > 1e-24 * scale * scale) {
+          const lam = (u[0] * vn[0] + u[1] * vn[1]) / uu;
+          B = [lam * u[0], lam * u[1]];
+          if (Math.hypot(B[0], B[1]) < 1e-12 * scale) B = null;
+        }
+        out[`B${n}${m}`] = B;
+      }
+    }
+    out.arcs = envelopeOf(out.V);
+    // the worst case: the largest |V_n|, at the θ of V_n; the local maxima of k_grasp
+    let worst = null;
+    out.maxima = [];
+    for (const a of out.arcs) {
+      if (!a.n) continue;
+      const v = out.V[a.n - 1], tv = thetaOf(v[0], v[1]);
+      if (mod2pi(tv - a.theta0) <= a.theta1 - a.theta0) {
+        const mx = { n: a.n, theta: tv, k: Math.hypot(v[0], v[1]), point: [v[0], v[1]] };
+        out.maxima.push(mx);
+        if (!worst || mx.k > worst.k) worst = mx;
+      }
+    }
+    if (!worst) worst = { n: 0, theta: 0, k: 0, point: [0, 0] };
+    // the best case: 0 in the middle of the longest zero region, else the lowest break
+    let best = null;
+    for (const a of out.arcs) {
+      if (a.n === 0) {
+        if (!best || best.k > 0 || a.theta1 - a.theta0 > best.span) {
+          best = { n: 0, theta: mod2pi((a.theta0 + a.theta1) / 2), k: 0, point: [0, 0],
+            span: a.theta1 - a.theta0 };
+        }
+      } else if (!best || best.k > 0) {
+        const k = kOf(out.V, a.theta0)[a.n - 1];
+        if (!best || k < best.k) {
+          best = { n: a.n, theta: a.theta0, k, point: [k * Math.sin(a.theta0),
+            -k * Math.cos(a.theta0)] };
+        }
+      }
+    }
+    delete best.span;
+    out.worst = worst;
+    out.best = best;
+    const D = p.x1 + p.x2;
+    out.worst.Fint = worst.k / D; // eq. (17), per unit F_e
+    out.best.Fint = best.k / D;
+    out.k = kOf(out.V, p.theta);
+    out.kgrasp = Math.max(0, ...out.k);
+    out.Fint = out.kgrasp / D;
+    out.H = [out.kgrasp * Math.sin(p.theta), -out.kgrasp * Math.cos(p.theta)];
+    // the envelope as a polyline: each arc sampled at least every half degree
+    const xs = [], ys = [];
+    for (const a of out.arcs) {
+      if (!a.n) {
+        xs.push(0, 0);
+        ys.push(0, 0);
+        continue;
+      }
+      const v = out.V[a.n - 1];
+      const steps = Math.max(2, Math.ceil((a.theta1 - a.theta0) / (PI / 360)));
+      for (let j = 0; j <= steps; j++) {
+        const t = a.theta0 + (a.theta1 - a.theta0) * j / steps;
+        const s = Math.sin(t), c = Math.cos(t), k = v[0] * s - v[1] * c;
+        xs.push(k * s);
+        ys.push(-k * c);
+      }
+    }
+    out.envX = xs;
+    out.envY = ys;
+    return out;
+  }
+
+  // ------------------------------------------------------------------------------------
+  // State
+  // ------------------------------------------------------------------------------------
+  const state = {
+    p: Object.assign({}, DATA.params),
+    error: null,
+    num: null,
+    step: DATA.initial_step,
+    timings: [],
+    last: NaN,
+    pendingT0: null,
+    playing: null,
+  };
+  const stepIndex = {};
+  DATA.steps.forEach((s) => { stepIndex[s.name] = s.index; });
+  const lastStep = DATA.steps.length - 1;
+
+  function recompute() {
+    state.error = validate(state.p);
+    state.num = state.error ? null : compute(state.p);
+  }
+
+  // ------------------------------------------------------------------------------------
+  // The board (JSXGraph)
+  // ------------------------------------------------------------------------------------
+  const COL = DATA.colors;
+  JXG.Options.text.display = "internal";
+  const board = JXG.JSXGraph.initBoard("gc-board", {
+    boundingbox: [-4, 4, 4, -4], keepaspectratio: true, axis: false, grid: false,
+    showCopyright: false, showNavigation: true, showFullscreen: false, showScreenshot: false,
+    pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
+    renderer: "svg", resize: { enabled: true, throttle: 100 },
+  });
+
+  const entries = []; // {el, step, always, exists}
+  function reg(el, step, opts) {
+    const e = Object.assign({ el, step, always: false, exists: null, shown: true, hl: null },
+      opts || {});
+    entries.push(e);
+    return el;
+  }
+  const num = (name, i) => () => (state.num && state.num[name] ? state.num[name][i] : NaN);
+
+  const LABEL = (s) => s.replace(/(\d)/g, (d) => "₀₁₂₃₄₅₆₇₈₉"[+d])
+    .replace("_M", "ₘ").replace(/x$/, "ₓ");
+
+  function point(name, step, attrs) {
+    return reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
+      name: LABEL(name), size: 2, strokeColor: COL.point, fillColor: COL.point,
+      fixed: true, showInfobox: false, label: { offset: [5, 7], fontSize: 13 },
+      highlight: false,
+    }, attrs || {})), step, {
+      exists: () => !!(state.num && state.num[name]),
+      hl: { size: 5, strokeColor: COL.highlight, fillColor: COL.highlight },
+    });
+  }
+
+  /** A line c + a x + b y = 0 through P along d, from a function giving {P, d}. */
+  function lineFrom(get, step, attrs, hl) {
+    return reg(board.create("line", [
+      () => { const g = get(); return g ? -(-g.d[1] * g.P[0] + g.d[0] * g.P[1]) : 0; },
+      () => { const g = get(); return g ? -g.d[1] : 0; },
+      () => { const g = get(); return g ? g.d[0] : 1; },
+    ], Object.assign({ fixed: true, highlight: false, strokeWidth: 1.2 }, attrs)), step,
+    { hl: hl || { strokeWidth: 3, strokeColor: COL.highlight } });
+  }
+
+  const outline = reg(board.create("curve", [[0], [0]], {
+    strokeColor: COL.object, fillColor: COL.objectfill, fillOpacity: 0.6, strokeWidth: 1.2,
+    highlight: false, fixed: true,
+  }), "O", { always: true, exists: () => !!state.shape });
+  outline.updateDataArray = function () {
+    const sh = state.shape;
+    this.dataX = [];
+    this.dataY = [];
+    if (!sh) return;
+    if (sh[0] === "circle") {
+      for (let j = 0; j <= 128; j++) {
+        this.dataX.push(sh[1] * Math.cos(TWO_PI * j / 128));
+        this.dataY.push(sh[1] * Math.sin(TWO_PI * j / 128));
+      }
+    } else if (sh[0] === "rectangle") {
+      const w = sh[1] / 2, hh = sh[2] / 2;
+      this.dataX = [-w, w, w, -w, -w];
+      this.dataY = [-hh, -hh, hh, hh, -hh];
+    }
+  };
+
+  reg(board.create("axis", [[0, 0], [1, 0]], {
+    strokeColor: COL.axis, highlight: false, ticks: { strokeColor: "#c8c8c8", label: {
+      fontSize: 10, strokeColor: "#707070" } },
+  }), "x-axis", { always: true });
+  reg(board.create("axis", [[0, 0], [0, 1]], {
+    strokeColor: COL.axis, highlight: false, ticks: { strokeColor: "#c8c8c8", label: {
+      fontSize: 10, strokeColor: "#707070" } },
+  }), "y-axis", { always: true });
+
+  // friction cones (the given data of Fig. 2): wedges of half angle ξ about the normals
+  for (const i of [1, 2]) {
+    const cone = reg(board.create("curve", [[0], [0]], {
+      strokeColor: "none", fillColor: COL.cone, fillOpacity: 0.35, highlight: false,
+      fixed: true,
+    }), i === 1 ? "side3" : "side4", {});
+    cone.updateDataArray = function () {
+      const q = state.num;
+      this.dataX = [];
+      this.dataY = [];
+      if (!q) return;
+      const P = q["P" + i], phi = state.p["phi" + i], xi = Math.atan(state.p["mu" + i]);
+      const reach = 0.6 * Math.hypot(q.P1[0] - q.P2[0], q.P1[1] - q.P2[1]);
+      const sgn = i === 1 ? -1 : 1;
+      this.dataX.push(P[0]);
+      this.dataY.push(P[1]);
+      for (let j = 0; j <= 24; j++) {
+        const a = phi - xi + 2 * xi * j / 24;
+        this.dataX.push(P[0] + reach * sgn * Math.sin(a));
+        this.dataY.push(P[1] - reach * Math.cos(a));
+      }
+      this.dataX.push(P[0]);
+      this.dataY.push(P[1]);
+    };
+  }
+
+  for (const n of [1, 3, 2, 4]) {
+    lineFrom(() => state.num && state.num.sides[n], "side" + n,
+      { strokeColor: COL.side, strokeWidth: 1.3 });
+  }
+
+  // feet of the contacts and O_M (§3.3)
+  for (const i of [1, 2]) {
+    reg(board.create("segment", [
+      [() => state.p["x" + i] * (i === 1 ? 1 : -1), () => state.p.y],
+      [() => state.p["x" + i] * (i === 1 ? 1 : -1), 0],
+    ], { strokeColor: COL.perp, dash: 2, strokeWidth: 1, highlight: false, fixed: true,
+      point1: { visible: false }, point2: { visible: false } }),
+    `P${i}x`, { exists: () => !!state.num });
+    point(`P${i}x`, `P${i}x`);
+  }
+  point("O_M", "O_M", { face: "x", size: 4 });
+
+  // one offset for the signed lengths drawn beside the axes (screen pixels → user units)
+  const off = () => 14 / board.unitX;
+  for (const n of [1, 2, 3, 4]) {
+    point("X" + n, "X" + n, { label: { offset: [4, -12], fontSize: 13 } });
+    lineFrom(() => state.num && state.num.perps[n], "perp" + n,
+      { strokeColor: COL.perp, dash: 2, strokeWidth: 1 });
+    point("Y" + n, "Y" + n, { label: { offset: [6, 4], fontSize: 13 } });
+    const lengthAttrs = { strokeColor: COL.length, strokeWidth: 1.6, lastArrow: { type: 2,
+      size: 6 }, highlight: false, fixed: true, point1: { visible: false },
+    point2: { visible: false } };
+    // O_M X_n along the x-axis, drawn just below it; O Y_n along the y-axis, just left of it
+    reg(board.create("arrow", [
+      [() => (state.num ? state.num.O_M[0] : NaN), () => -off() * n / 2],
+      [() => (state.num ? state.num["X" + n][0] : NaN), () => -off() * n / 2],
+    ], lengthAttrs), "OMX" + n, { exists: () => !!state.num,
+      hl: { strokeWidth: 3.5, strokeColor: COL.highlight } });
+    reg(board.create("arrow", [
+      [() => -off() * n / 2, 0],
+      [() => -off() * n / 2, () => (state.num ? state.num["Y" + n][1] : NaN)],
+    ], lengthAttrs), "OY" + n, { exists: () => !!state.num,
+      hl: { strokeWidth: 3.5, strokeColor: COL.highlight } });
+    // V_n = (−O_M X_n, −O Y_n): the lengths carried to O and reversed
+    for (const axis of [0, 1]) {
+      reg(board.create("segment", [
+        [() => (state.num ? (axis ? 0 : state.num.V[n - 1][0]) : NaN),
+          () => (state.num ? (axis ? state.num.V[n - 1][1] : 0) : NaN)],
+        [num("V" + n, 0), num("V" + n, 1)],
+      ], { strokeColor: COL["circle" + n], dash: 1, strokeWidth: 1, highlight: false,
+        fixed: true, point1: { visible: false }, point2: { visible: false } }),
+      "V" + n, { exists: () => !!state.num });
+    }
+    point("V" + n, "V" + n, { size: 3.5, strokeColor: COL["circle" + n],
+      fillColor: COL["circle" + n], label: { offset: [6, 6], fontSize: 15,
+        strokeColor: COL["circle" + n] } });
+  }
+
+  // the circles on the diameters O V_n: the polar graphs of k_n (eq. (31), Fig. 3)
+  for (const n of [1, 2, 3, 4]) {
+    const c = board.create("point", [num("circle" + n, 0), num("circle" + n, 1)],
+      { visible: false, withLabel: false, fixed: true });
+    reg(board.create("circle", [c, () => (state.num ? state.num["circle" + n][2] : 0)], {
+      strokeColor: COL["circle" + n], strokeWidth: 1.4, dash: 2, fillColor: "none",
+      highlight: false, fixed: true,
+    }), "circle" + n, { exists: () => !!state.num,
+      hl: { strokeWidth: 3.5, dash: 0 } });
+  }
+  for (const [n, m] of [[1, 2], [1, 3], [1, 4], [2, 3], [2, 4], [3, 4]]) {
+    point(`B${n}${m}`, `B${n}${m}`, { size: 2, strokeColor: "#555555", fillColor: "#ffffff",
+      label: { offset: [5, -10], fontSize: 11, strokeColor: "#555555" } });
+  }
+
+  // the outer envelope k_grasp (eq. (25), Fig. 5), worst and best orientation, F_e at θ
+  const env = reg(board.create("curve", [[0], [0]], {
+    strokeColor: COL.envelope, strokeWidth: 3, fillColor: COL.fill, fillOpacity: 0.3,
+    highlight: false, fixed: true,
+  }), "envelope", { exists: () => !!state.num, hl: { strokeWidth: 4.5 } });
+  env.updateDataArray = function () {
+    this.dataX = state.num ? state.num.envX : [];
+    this.dataY = state.num ? state.num.envY : [];
+  };
+  const reachFe = () => {
+    const q = state.num;
+    return q ? 1.15 * Math.max(q.worst.k, 0.25 * Math.hypot(q.P1[0] - q.P2[0], 0)) : 1;
+  };
+  reg(board.create("arrow", [[0, 0], [
+    () => reachFe() * Math.sin(state.p.theta), () => -reachFe() * Math.cos(state.p.theta)]], {
+    strokeColor: "#333333", strokeWidth: 1.5, dash: 3, lastArrow: { type: 1, size: 5 },
+    highlight: false, fixed: true, point1: { visible: false }, point2: { visible: false },
+    name: "F_e", withLabel: false,
+  }), "envelope", { exists: () => !!state.num });
+  point("H", "envelope", { name: "H", size: 4, face: "o", strokeColor: "#111111",
+    fillColor: "#ffd166", label: { offset: [8, -6], fontSize: 12 } });
+  const specialPoint = (which, attrs) => reg(board.create("point", [
+    () => (state.num ? state.num[which].point[0] : NaN),
+    () => (state.num ? state.num[which].point[1] : NaN)], Object.assign({
+    fixed: true, highlight: false, showInfobox: false, label: { fontSize: 12 },
+  }, attrs)), "envelope", { exists: () => !!state.num });
+  specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: "#d62728",
+    fillColor: "#d62728", label: { offset: [8, -10], strokeColor: "#d62728" } });
+  specialPoint("best", { name: "best", face: "<>", size: 6, strokeColor: "#2ca02c",
+    fillColor: "#2ca02c", label: { offset: [8, 10], strokeColor: "#2ca02c" } });
+
+  // O and the draggable contacts
+  reg(board.create("point", [0, 0], { name: "O", size: 2, fixed: true, strokeColor: COL.point,
+    fillColor: COL.point, highlight: false, showInfobox: false,
+    label: { offset: [-14, -12], fontSize: 13 } }), "O", { always: true });
+  const dragAttrs = { size: 6, strokeColor: "#0b1f4b", fillColor: "#ffb703", showInfobox: false,
+    label: { offset: [8, 10], fontSize: 15 }, highlight: true, highlightFillColor: "#fb8500" };
+  const P1 = reg(board.create("point", [state.p.x1, state.p.y],
+    Object.assign({ name: "P₁" }, dragAttrs)), "P1", { always: true });
+  const P2 = reg(board.create("point", [-state.p.x2, state.p.y],
+    Object.assign({ name: "P₂" }, dragAttrs)), "P2", { always: true });
+
+  // ------------------------------------------------------------------------------------
+  // Visibility by step and validity; highlight of the current step's objects
+  // ------------------------------------------------------------------------------------
+  function applyVisibility() {
+    const cur = state.step;
+    const curName = DATA.steps[cur] ? DATA.steps[cur].name : null;
+    for (const e of entries) {
+      const idx = stepIndex[e.step];
+      let show = idx !== undefined && idx <= cur;
+      if (show && !e.always && state.error) show = false;
+      if (show && e.exists && !e.exists()) show = false;
+      if (show !== e.shown) {
+        e.el.setAttribute({ visible: show });
+        e.shown = show;
+      }
+      const hl = !!(show && e.hl && e.step === curName && cur < lastStep);
+      if (e.hl && hl !== !!e.lit) {
+        if (hl) {
+          e.base = {};
+          for (const k of Object.keys(e.hl)) e.base[k] = e.el.visProp[k.toLowerCase()];
+          e.el.setAttribute(e.hl);
+        } else if (e.base) {
+          e.el.setAttribute(e.base);
+        }
+        e.lit = hl;
+      }
+    }
+  }
+
+  // ------------------------------------------------------------------------------------
+  // Controls: sliders, step navigator, readouts
+  // ------------------------------------------------------------------------------------
+  const $ = (id) => document.getElementById(id);
+  const DEG = PI / 180;
+  const rangeMax = (v) => Math.max(4, Math.ceil(2 * v));
+  const SLIDERS = [
+    { name: "x1", label: "x₁", unit: 1, min: 0.05, max: rangeMax(state.p.x1), step: 0.001 },
+    { name: "x2", label: "x₂", unit: 1, min: 0.05, max: rangeMax(state.p.x2), step: 0.001 },
+    { name: "y", label: "y", unit: 1, min: 0, max: rangeMax(state.p.y), step: 0.001 },
+    { name: "phi1", label: "φ₁ (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
+    { name: "phi2", label: "φ₂ (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
+    { name: "mu1", label: "μ₁", unit: 1, min: 0.02, max: rangeMax(state.p.mu1), step: 0.001 },
+    { name: "mu2", label: "μ₂", unit: 1, min: 0.02, max: rangeMax(state.p.mu2), step: 0.001 },
+    { name: "theta", label: "θ (°)", unit: DEG, min: 0, max: 360, step: 0.5 },
+  ];
+  const sliderBox = $("gc-sliders");
+  for (const s of SLIDERS) {
+    const row = document.createElement("div");
+    row.className = "gc-slider";
+    row.innerHTML = `<label for="gc-slider-${s.name}">${s.label}</label>` +
+      `<input type="range" id="gc-slider-${s.name}" data-param="${s.name}" min="${s.min}" ` +
+      `max="${s.max}" step="${s.step}">` +
+      `<input type="number" id="gc-num-${s.name}" data-param="${s.name}" step="any" ` +
+      `aria-label="${s.label}">`;
+    sliderBox.appendChild(row);
+    const range = row.querySelector("input[type=range]");
+    const box = row.querySelector("input[type=number]");
+    range.addEventListener("input", () => {
+      const t0 = performance.now();
+      state.p[s.name] = parseFloat(range.value) * s.unit;
+      refresh(t0, s.name);
+    });
+    box.addEventListener("change", () => {
+      const v = parseFloat(box.value);
+      if (Number.isFinite(v)) {
+        const t0 = performance.now();
+        state.p[s.name] = v * s.unit;
+        refresh(t0, null);
+      }
+    });
+    s.range = range;
+    s.box = box;
+  }
+
+  function syncControls(except) {
+    for (const s of SLIDERS) {
+      const v = state.p[s.name] / s.unit;
+      if (s.name !== except) s.range.value = String(Math.min(Math.max(v, s.min), s.max));
+      if (document.activeElement !== s.box) s.box.value = String(+v.toPrecision(6));
+    }
+  }
+
+  const f4 = (x) => (Number.isFinite(x) ? (+x.toPrecision(4)).toString() : "–");
+  const deg = (t) => f4(t / DEG) + "°";
+  function renderInfo() {
+    const q = state.num, box = $("gc-error");
+    if (state.error) {
+      box.hidden = false;
+      $("gc-error-text").textContent = state.error;
+      $("gc-info").innerHTML = "<p>(no diagram: the parameters violate the conditions of " +
+        "§2.2; see the message)</p>";
+      return;
+    }
+    box.hidden = true;
+    const p = state.p;
+    $("gc-info").innerHTML =
+      `<p>θ = ${deg(p.theta)}: k<sub>grasp</sub> = <span id="gc-kgrasp">${f4(q.kgrasp)}</span>,` +
+      ` F<sub>int</sub>/F<sub>e</sub> = <span id="gc-fint">${f4(q.Fint)}</span> ` +
+      "<small>(eqs. (25), (17))</small></p>" +
+      `<p class="gc-worst">worst: θ = ${deg(q.worst.theta)}, k = ${f4(q.worst.k)}, ` +
+      `F<sub>int</sub>/F<sub>e</sub> = ${f4(q.worst.Fint)}` +
+      (q.worst.n ? ` (V${"₀₁₂₃₄"[q.worst.n]}, k = |V${"₀₁₂₃₄"[q.worst.n]}|)` : "") + "</p>" +
+      `<p class="gc-best">best: θ = ${deg(q.best.theta)}, k = ${f4(q.best.k)}, ` +
+      `F<sub>int</sub>/F<sub>e</sub> = ${f4(q.best.Fint)}</p>` +
+      "<table class=\"gc-v\"><tr><th></th><th>S<sub>n</sub></th><th>C<sub>n</sub></th>" +
+      "<th>k<sub>n</sub>(θ)</th></tr>" +
+      [0, 1, 2, 3].map((i) => `<tr style="color:${COL["circle" + (i + 1)]}"><td>V` +
+        `${"₁₂₃₄"[i]}</td><td>${f4(q.S[i])}</td><td>${f4(q.C[i])}</td>` +
+        `<td>${f4(q.k[i])}</td></tr>`).join("") + "</table>";
+  }
+
+  function renderStep() {
+    const s = DATA.steps[state.step];
+    $("gc-stepno").textContent = `Step ${s.index} / ${lastStep}`;
+    $("gc-caption-text").textContent = s.caption;
+    $("gc-ref").textContent = s.ref;
+    $("gc-instrument").textContent = s.instrument;
+    $("gc-first").disabled = $("gc-prev").disabled = state.step === 0;
+    $("gc-next").disabled = $("gc-last").disabled = state.step === lastStep;
+    $("gc-play").textContent = state.playing ? "❚❚ pause" : "▶ play";
+  }
+
+  /** Finish an update that began at ``t0``: record how long it took (ms). */
+  function record(t0) {
+    const dt = performance.now() - t0;
+    state.last = dt;
+    state.timings.push(dt);
+    if (state.timings.length > 5000) state.timings.shift();
+    const el = $("gc-timing");
+    if (el) el.textContent = `update ${dt.toFixed(2)} ms`;
+  }
+
+  /** Recompute after a parameter change and redraw; ``t0`` from performance.now(). */
+  function refresh(t0, fromSlider) {
+    recompute();
+    P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
+    P2.setPositionDirectly(JXG.COORDS_BY_USER, [-state.p.x2, state.p.y]);
+    syncControls(fromSlider);
+    applyVisibility();
+    renderInfo();
+    board.update();
+    record(t0);
+  }
+
+  // dragging P1 moves x1 and y, P2 moves x2 and y (JSXGraph redraws after the handler)
+  function onDrag(which) {
+    state.pendingT0 = performance.now();
+    if (which === 1) {
+      state.p.x1 = P1.X();
+      state.p.y = P1.Y();
+      P2.setPositionDirectly(JXG.COORDS_BY_USER, [-state.p.x2, state.p.y]);
+    } else {
+      state.p.x2 = -P2.X();
+      state.p.y = P2.Y();
+      P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
+    }
+    recompute();
+    syncControls(null);
+    applyVisibility();
+    renderInfo();
+  }
+  P1.on("drag", () => onDrag(1));
+  P2.on("drag", () => onDrag(2));
+  board.on("update", () => {
+    if (state.pendingT0 !== null) {
+      const t0 = state.pendingT0;
+      state.pendingT0 = null;
+      record(t0);
+    }
+  });
+
+  function setStep(i) {
+    const n = DATA.steps.length;
+    if (!Number.isInteger(i) || i < -n || i >= n) {
+      throw new RangeError(`step ${i} out of range: the protocol has ${n} steps, 0 to ${n - 1}`);
+    }
+    state.step = ((i % n) + n) % n;
+    applyVisibility();
+    renderStep();
+    board.update();
+    return state.step;
+  }
+
+  function stopPlay() {
+    if (state.playing) clearTimeout(state.playing);
+    state.playing = null;
+    renderStep();
+  }
+  function playNext() {
+    if (state.step >= lastStep) {
+      stopPlay();
+      return;
+    }
+    setStep(state.step + 1);
+    const s = DATA.steps[state.step];
+    // long enough to read the caption: 2.5 s, more for a long one or a key result
+    const ms = Math.max(2500, 45 * (s.caption.length + s.ref.length)) + (s.key ? 1000 : 0);
+    state.playing = setTimeout(playNext, ms);
+    renderStep();
+  }
+  function play() {
+    if (state.playing) {
+      stopPlay();
+      return;
+    }
+    if (state.step >= lastStep) setStep(0);
+    state.playing = setTimeout(playNext, 800);
+    renderStep();
+  }
+  $("gc-first").addEventListener("click", () => { stopPlay(); setStep(0); });
+  $("gc-prev").addEventListener("click", () => { stopPlay(); setStep(Math.max(0, state.step - 1)); });
+  $("gc-next").addEventListener("click", () => {
+    stopPlay();
+    setStep(Math.min(lastStep, state.step + 1));
+  });
+  $("gc-last").addEventListener("click", () => { stopPlay(); setStep(lastStep); });
+  $("gc-play").addEventListener("click", play);
+  document.addEventListener("keydown", (ev) => {
+    if (ev.target && /^(INPUT|SELECT|TEXTAREA)$/.test(ev.target.tagName)) return;
+    if (ev.key === "ArrowRight") setStep(Math.min(lastStep, state.step + 1));
+    else if (ev.key === "ArrowLeft") setStep(Math.max(0, state.step - 1));
+    else if (ev.key === "Home") setStep(0);
+    else if (ev.key === "End") setStep(lastStep);
+  });
+
+  /** Fit the view to the contacts, the object, X_n, Y_n and the circles (cf. the SVG). */
+  function fit() {
+    const q = state.num || compute(Object.assign({}, state.p));
+    const pts = [[0, 0], q.P1, q.P2];
+    let scale = Math.max(Math.hypot(...q.P1), Math.hypot(...q.P2));
+    for (let n = 1; n <= 4; n++) {
+      const [cx, cy, r] = q["circle" + n];
+      if (Number.isFinite(r)) pts.push([cx - r, cy - r], [cx + r, cy + r]);
+      scale = Math.max(scale, 2 * r);
+      pts.push(q["X" + n], q["Y" + n]);
+    }
+    const sh = state.shape;
+    if (sh) {
+      const w = sh[0] === "circle" ? sh[1] : sh[1] / 2, hh = sh[0] === "circle" ? sh[1] : sh[2] / 2;
+      pts.push([-w, -hh], [w, hh]);
+      scale = Math.max(scale, w, hh);
+    }
+    const lim = 3 * (scale || 1);
+    const clip = (v) => Math.min(Math.max(Number.isFinite(v) ? v : 0, -lim), lim);
+    const xs = pts.map((p) => clip(p[0])), ys = pts.map((p) => clip(p[1]));
+    const span = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys),
+      1e-9);
+    const cx = (Math.max(...xs) + Math.min(...xs)) / 2, cy = (Math.max(...ys) + Math.min(...ys)) / 2;
+    const half = span / 2 * 1.08;
+    board.setBoundingBox([cx - half, cy + half, cx + half, cy - half], true);
+    board.fullUpdate();
+  }
+  $("gc-fit").addEventListener("click", fit);
+
+  // presets of the paper (floats of graspcompass.grasp.PRESETS)
+  const presetBox = $("gc-preset");
+  for (const [key, pr] of Object.entries(DATA.presets)) {
+    const o = document.createElement("option");
+    o.value = key;
+    o.textContent = pr.title;
+    presetBox.appendChild(o);
+  }
+  presetBox.addEventListener("change", () => {
+    const pr = DATA.presets[presetBox.value];
+    if (!pr) return;
+    const t0 = performance.now();
+    Object.assign(state.p, pr.params);
+    state.shape = pr.shape;
+    refresh(t0, null);
+    fit();
+  });
+
+  // ------------------------------------------------------------------------------------
+  // The API for tests and embedding
+  // ------------------------------------------------------------------------------------
+  const PARAM_ALIASES = { θ: "theta", φ1: "phi1", φ2: "phi2", μ1: "mu1", μ2: "mu2" };
+  function getValue(name) {
+    const key = PARAM_ALIASES[name] || name;
+    if (NAMES.indexOf(key) >= 0) return state.p[key];
+    if (key === "xi1" || key === "xi2") return Math.atan(state.p["mu" + key[2]]);
+    if (key === "step") return state.step;
+    if (key === "error") return state.error;
+    if (key === "P1") return [state.p.x1, state.p.y];
+    if (key === "P2") return [-state.p.x2, state.p.y];
+    if (key === "O") return [0, 0];
+    const q = state.num;
+    const known = /^(P[12]x|O_M|[XYVB]\d+|circle[1-4]|[SCk][1-4]|OMX[1-4]|OY[1-4]|H|worst|best|kgrasp|Fint)$/;
+    if (!known.test(key)) throw new Error(`unknown name ${JSON.stringify(name)}`);
+    if (!q) return null;
+    if (key === "worst" || key === "best") return q[key].point.slice();
+    if (/^[SCk][1-4]$/.test(key)) return q[key[0]][+key[1] - 1];
+    const v = q[key];
+    if (v === undefined) throw new Error(`unknown name ${JSON.stringify(name)}`);
+    return Array.isArray(v) ? v.slice() : v;
+  }
+
+  const api = {
+    /** The protocol's steps: [{index, name, caption, ref, instrument, key}]. */
+    steps: DATA.steps.map((s) => Object.assign({}, s)),
+    version: DATA.version,
+    board,
+    /** Set parameters (x1, x2, y, phi1, phi2 in radians, mu1, mu2, theta) and redraw. */
+    set(values) {
+      const t0 = performance.now();
+      for (const k of Object.keys(values)) {
+        const key = PARAM_ALIASES[k] || k;
+        if (NAMES.indexOf(key) < 0) {
+          throw new Error(`unknown parameter ${JSON.stringify(k)}; use ${NAMES.join(", ")}`);
+        }
+      }
+      for (const [k, v] of Object.entries(values)) state.p[PARAM_ALIASES[k] || k] = Number(v);
+      refresh(t0, null);
+      return state.error;
+    },
+    /** A parameter's value, or the coordinates [x, y] of a named point (null if invalid). */
+    get: getValue,
+    /** Show the construction up to step i (negative counts from the end). */
+    step: (i) => {
+      stopPlay();
+      return setStep(i);
+    },
+    /** Viewport coordinates [px, py] of a named point (as page.mouse expects). */
+    toScreen(name) {
+      const xy = getValue(name);
+      if (!Array.isArray(xy)) throw new Error(`${name} is not a point here`);
+      const c = new JXG.Coords(JXG.COORDS_BY_USER, xy, board).scrCoords;
+      const r = board.containerObj.getBoundingClientRect();
+      return [r.left + c[1], r.top + c[2]];
+    },
+    /** The failing inequality when the parameters are not a valid grasp, else null. */
+    error: () => state.error,
+    /** k_grasp(θ) (eq. (25)) and the four k_n(θ) (eq. (32)) for the current grasp. */
+    kGrasp: (theta) => (state.num ? kGraspOf(state.num.V, theta) : null),
+    k: (theta) => (state.num ? kOf(state.num.V, theta) : null),
+    /** The envelope: arcs, local maxima (the V_n on it, k = |V_n|), worst and best case. */
+    envelope() {
+      const q = state.num;
+      if (!q) return null;
+      return JSON.parse(JSON.stringify({ arcs: q.arcs, maxima: q.maxima, worst: q.worst,
+        best: q.best }));
+    },
+    /** Time of the last update (ms, performance.now() in the page). */
+    get lastUpdateMs() {
+      return state.last;
+    },
+    timings: () => state.timings.slice(),
+    resetTimings() {
+      state.timings = [];
+    },
+    play,
+    pause: stopPlay,
+    fit,
+    /** The model alone (no drawing), for checks: validate(p), compute(p). */
+    model: { validate, compute, envelopeOf, fmtG, sympyFloat },
+  };
+  window.graspcompass = api;
+
+  // first drawing
+  state.shape = DATA.shape;
+  const t0 = performance.now();
+  recompute();
+  syncControls(null);
+  applyVisibility();
+  renderInfo();
+  renderStep();
+  fit();
+  record(t0);
+  document.body.setAttribute("data-ready", "1");
+})();
