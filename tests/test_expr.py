@@ -13,13 +13,21 @@ import sympy
 from hypothesis import given
 from hypothesis import strategies as st
 
+from graspcompass.errors import ComplexValueError
 from graspcompass.expr import (
     MAX_ANGLES,
+    MAX_ARGUMENT_BITS,
+    MAX_BITS,
+    MAX_DEPTH,
     MAX_EXPONENT,
     MAX_LENGTH,
+    MAX_NODES,
+    MAX_WORK_BITS,
+    ComplexExpressionError,
     ExpressionError,
     parse_angles,
     parse_exact,
+    real_sign,
     to_exact,
 )
 
@@ -384,3 +392,144 @@ def test_ranges_match_python_range(start: int, stop: int, step: int) -> None:
     else:
         with pytest.raises(ExpressionError, match="empty"):
             parse_angles(text)
+
+
+# --------------------------------------------------------------------------- hostile text
+# Issue 10, item 3: each input below escaped parse_exact as another exception, hung, or
+# printed a warning, before the parser was hardened.  Each must now be refused with one
+# ExpressionError (or read exactly), quietly and quickly.
+
+ESCAPED = [
+    "acos(cos(1e1000))",  # AttributeError (sympy's cache wrapper on a lazy message)
+    "asin(sin(1e1000))",  # AttributeError
+    "atan(tan(1e1000))",  # AttributeError
+    "tan(-asin(1e-1000))",  # hung: sqrt(1 - 10**-2000) factors a 6600-bit integer
+    "(" + "9" * 60 + ")**(asin(-(sin(1e-1000))))",  # hung: evalf of a tiny exponent
+    "tan((cos(atan2(1e-1000,64)))**(1/3))",  # hung
+    "asin(" * 17 + "(1e-5)**(1e-300)" + ")" * 17,  # hung: the exponent 10**-300
+    "pi**pi**pi",  # a transcendental exponent: evalf decides its size
+    "2**pi",
+    "2**sqrt(2)",
+    "(-1)**(-1)**(-1)**0.5",
+]
+
+
+def _quick(text: str) -> BaseException | None:
+    """parse_exact(text) under a 5 s alarm (hang detection, not a speed test)."""
+    import signal
+
+    def _hang(*_: object) -> None:
+        raise TimeoutError(f"parse_exact({text!r}) still running after 5 s")
+
+    previous = signal.signal(signal.SIGALRM, _hang)
+    signal.setitimer(signal.ITIMER_REAL, 5.0)
+    try:
+        parse_exact(text)
+    except ExpressionError:
+        return None
+    except BaseException as exc:  # reported by the caller
+        return exc
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    return None
+
+
+@pytest.mark.parametrize("text", ESCAPED)
+def test_hostile_text_is_refused_not_crashed_or_hung(text: str) -> None:
+    assert _quick(text) is None
+
+
+@pytest.mark.parametrize("text", ["1if 1else 2", "0in 1", "1or 2", r"'\d'", "1else"])
+def test_no_warning_escapes(text: str) -> None:
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with pytest.raises(ExpressionError):
+            parse_exact(text)
+    assert [str(w.message) for w in caught] == []
+
+
+@pytest.mark.parametrize(
+    ("text", "needle"),
+    [
+        ("pi**pi**pi", "rational"),
+        ("2**pi", "rational"),
+        ("2**sqrt(2)", "rational"),
+        ("2**(1/65)", str(MAX_EXPONENT)),
+        ("2**" * (MAX_DEPTH + 1) + "1", str(MAX_DEPTH)),
+        ("sqrt(" * (MAX_DEPTH + 1) + "2" + ")" * (MAX_DEPTH + 1), str(MAX_DEPTH)),
+        ("1e400", str(MAX_BITS)),
+        ("1e-400", str(MAX_BITS)),
+        ("1e999999", "400"),
+        ("(2**64-1)**17 * 2**13", str(MAX_BITS)),  # 1088 + 13 = 1101 bits
+        ("(1e300)*(1e300)", str(MAX_BITS)),
+        ("sin(10**60)", str(MAX_ARGUMENT_BITS)),
+        ("asin(1/10**39)", str(MAX_ARGUMENT_BITS)),
+        ("+".join(f"sqrt(1e309+{i})" for i in range(1, 10)), str(MAX_WORK_BITS)),
+        ("atan(sin(" * 8 + "1/3" + "))" * 8, str(MAX_NODES)),
+        ("sqrt(sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6)))", "cannot decide the sign"),
+    ],
+)
+def test_limits_are_named(text: str, needle: str) -> None:
+    with pytest.raises(ExpressionError) as info:
+        parse_exact(text)
+    assert needle in str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("1e309", sympy.Integer(10) ** 309),  # beyond a double, exact here
+        ("-1e309", -sympy.Integer(10) ** 309),
+        ("9" * 199, sympy.Integer(10**199 - 1)),
+        ("(2**64-1)**17 * 2**12", sympy.Integer((2**64 - 1) ** 17 * 2**12)),  # 1100 bits
+        ("sin(10**38)", sympy.sin(sympy.Integer(10) ** 38)),
+        ("(" * 99 + "7" + ")" * 99, sympy.Integer(7)),
+        ("sqrt(" * MAX_DEPTH + "4" + ")" * MAX_DEPTH, 2 ** R(1, 2 ** (MAX_DEPTH - 1))),
+        ("(2**64)**(1/64)", sympy.Integer(2)),
+        ("pi**(1/2)", sympy.sqrt(pi)),
+        ("asin(1)", pi / 2),
+        ("acos(-1)", pi),
+        ("sqrt(2 - sqrt(2)**2)", sympy.Integer(0)),
+        ("(-2)**3", sympy.Integer(-8)),
+        ("108deg", 3 * pi / 5),
+    ],
+)
+def test_at_the_limits_values_are_exact(text: str, expected: sympy.Expr) -> None:
+    assert same(parse_exact(text), sympy.sympify(expected))
+
+
+@pytest.mark.parametrize(
+    ("text", "shown"),
+    [
+        ("asin(2)", "asin(2) = 1.57 - 1.32*I"),  # asin 2 = pi/2 - i ln(2 + sqrt 3)
+        ("acos(2)", "acos(2) = 0 + 1.32*I"),  # acos 2 = i ln(2 + sqrt 3)
+        ("sqrt(-1)", "sqrt(-1) = 0 + 1*I"),
+        ("1 + sqrt(-4)", "sqrt(-4) = 0 + 2*I"),
+        ("(-8)**(1/3)", "(-8)**(1/3) = 1 + 1.73*I"),  # 2 e^(i pi/3)
+        ("asin(1 + 1e-30)", "not a real number"),
+        ("2*(-1)**0.5", "not a real number"),
+    ],
+)
+def test_complex_values_are_refused(text: str, shown: str) -> None:
+    with pytest.raises(ComplexExpressionError) as info:
+        parse_exact(text)
+    assert shown in str(info.value)
+    assert isinstance(info.value, ComplexValueError) and isinstance(info.value, ExpressionError)
+
+
+def test_complex_values_by_hand() -> None:
+    # the printed parts agree with first principles: asin 2 = pi/2 - i ln(2 + sqrt 3)
+    import math
+
+    assert f"{math.pi / 2:.3g} - {math.log(2 + math.sqrt(3)):.3g}*I" == "1.57 - 1.32*I"
+    assert f"{2 * math.sin(math.pi / 3):.3g}" == "1.73"
+
+
+def test_real_sign() -> None:
+    assert real_sign(sympy.pi - R(355, 113)) == -1  # 355/113 exceeds pi by 2.7e-7
+    assert real_sign(sympy.sqrt(2) - R(99, 70)) == -1  # 99/70 = 1.414285... > 1.414213...
+    assert real_sign(sympy.Integer(0)) == 0
+    assert real_sign(sympy.sqrt(2) + sympy.sqrt(3) - sympy.sqrt(5 + 2 * sympy.sqrt(6))) is None

@@ -5,6 +5,25 @@ parsed with :mod:`ast` and walked with a strict whitelist; Python never
 evaluates it (no ``eval``, ``sympify`` or ``parse_expr``).  Decimal literals are
 read exactly (``"1.2"`` is ``6/5``) and a trailing ``deg`` or ``°`` turns
 degrees into radians (``"60deg"`` is ``pi/3``).
+
+Every text is bounded before sympy sees it, so that no text takes more than a
+fraction of a second to read or refuse (``docs/security.md``):
+
+* at most :data:`MAX_LENGTH` characters and :data:`MAX_DEPTH` nested calls and powers;
+* exponents are rational numbers ``p/q`` with ``|p|, q <=`` :data:`MAX_EXPONENT`
+  (``2**pi`` is refused: deciding its size needs numerical evaluation);
+* no integer (numerator or denominator) in a value or an intermediate result has
+  more than :data:`MAX_BITS` bits (``1e309`` still reads exactly, ``1e400`` does not),
+  and the arguments of ``sin cos tan asin acos atan atan2`` hold integers of at
+  most :data:`MAX_ARGUMENT_BITS` bits (``sin(10**60)`` is refused);
+* the numbers that enter roots and functions add up to at most
+  :data:`MAX_WORK_BITS` bits (a bound on the work of exact roots), and no value
+  or intermediate result has more than :data:`MAX_NODES` nodes;
+* every step is a real number: ``sqrt(-1)``, ``asin(2)`` and ``(-8)**(1/3)``
+  (a principal root) are refused with :class:`ComplexExpressionError`, and so is
+  a sign that cannot be decided (``sqrt(sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6)))``).
+
+Every refusal is an :class:`ExpressionError` naming the text and the limit.
 """
 
 from __future__ import annotations
@@ -13,26 +32,47 @@ import ast
 import numbers
 import operator
 import re
+import warnings
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 
+import mpmath
 import sympy
+from sympy.core.evalf import evalf as _evalf
 
-from .errors import InputError
+from .errors import ComplexValueError, InputError
 
-__all__ = ["MAX_ANGLES", "MAX_EXPONENT", "MAX_LENGTH", "ExpressionError", "parse_angles",
-           "parse_exact", "to_exact"]
+__all__ = ["MAX_ANGLES", "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT",
+           "MAX_LENGTH", "MAX_NODES", "MAX_WORK_BITS", "ComplexExpressionError", "ExpressionError",
+           "parse_angles", "parse_exact", "real_sign", "to_exact"]
 
 #: Longest text :func:`parse_exact` reads.
 MAX_LENGTH = 200
-#: Largest absolute value of a numeric exponent (``10**10**10`` is refused).
+#: Largest ``|p|`` and ``q`` of an exponent ``p/q`` (``10**10**10`` and ``2**(1/65)`` are refused).
 MAX_EXPONENT = 64
+#: Most nested function calls and powers (``sqrt(sqrt(...))`` 17 deep is refused).
+MAX_DEPTH = 16
+#: Most bits of any integer (numerator or denominator) in a value or an intermediate
+#: result: 1100 bits, about 331 decimal digits (``1e309`` reads exactly, ``1e400`` is refused).
+MAX_BITS = 1100
+#: Most bits of any integer in an argument of ``sin cos tan asin acos atan atan2``
+#: (about 38 decimal digits: ``sin(10**38)`` reads, ``sin(10**60)`` is refused).
+MAX_ARGUMENT_BITS = 128
+#: Most bits, added up over every root and function argument of one text: a bound on
+#: the work of exact roots (each may factor its radicand).
+MAX_WORK_BITS = 8192
+#: Most nodes in the tree of a value or an intermediate result (``tan(pi/120)``, written
+#: out in radicals by sympy, has 313; ``atan(sin(atan(sin(...))))`` doubles at each level).
+MAX_NODES = 1000
 #: Most angles :func:`parse_angles` returns.
 MAX_ANGLES = 1_000_000
 
 _MAX_LIST_LENGTH = 10 * MAX_LENGTH  # longest text parse_angles reads
-_MAX_BITS = 1 << 13  # bound on the bits of the integers in a result (about 2466 digits)
-_MAX_DECIMAL_EXPONENT = 1000  # bound on n in a literal such as 1e-n
+_MAX_DECIMAL_EXPONENT = 400  # bound on n in a literal such as 1e-n (checked before reading it)
+#: What sympy may raise on a value it cannot handle; ``AttributeError`` is sympy's cache
+#: wrapper failing on a lazy "cannot determine truth value" message (sympy 1.12-1.14).
+_SYMPY_FAILURES = (ValueError, TypeError, ArithmeticError, AttributeError, RecursionError,
+                   MemoryError, IndexError, KeyError, NotImplementedError)
 _DEGREE = sympy.pi / 180
 _ALLOWED = (
     "only numbers, + - * / **, pi, deg, sqrt, sin, cos, tan, asin, acos, atan, atan2"
@@ -69,6 +109,53 @@ class ExpressionError(InputError):
     """
 
 
+class ComplexExpressionError(ExpressionError, ComplexValueError):
+    """Text whose value, or a step of it, is not a real number (``asin(2)``, ``sqrt(-1)``).
+
+    Both an :class:`ExpressionError` and a :class:`~graspcompass.errors.ComplexValueError`.
+
+    Examples
+    --------
+    >>> try:
+    ...     parse_exact("1 + asin(2)")
+    ... except ComplexExpressionError as err:
+    ...     print(err)  # doctest: +ELLIPSIS
+    cannot read '1 + asin(2)': asin(2) = 1.57 - 1.32*I is not a real number (asin needs ...)
+    """
+
+
+def real_sign(value: sympy.Expr) -> int | None:
+    """The sign (-1, 0 or 1) of a real number given exactly, or None if it cannot be decided.
+
+    Rationals are decided exactly; other numbers by a numerical evaluation whose
+    accuracy is known (up to about 600 bits), so a decided sign is always right.
+    A number that is zero without being written as zero (``sqrt(2) + sqrt(3) -
+    sqrt(5 + 2*sqrt(6))``) and numbers closer to zero than the evaluation sees
+    give None.
+
+    Examples
+    --------
+    >>> real_sign(sympy.Rational(-1, 3)), real_sign(sympy.pi - 3), real_sign(sympy.Integer(0))
+    (-1, 1, 0)
+    >>> print(real_sign(sympy.sqrt(2) + sympy.sqrt(3) - sympy.sqrt(5 + 2 * sympy.sqrt(6))))
+    None
+    """
+    if value.is_Rational:
+        return (value.p > 0) - (value.p < 0)  # type: ignore[attr-defined]
+    if value == 0:
+        return 0
+    for bits in (64, 256, 640):
+        try:
+            re, im, re_acc, _ = _evalf(value, bits, {"maxprec": 2 * bits})
+        except _SYMPY_FAILURES:
+            return None
+        if im or re is None:
+            return None
+        if re_acc is not None and re_acc >= 16 and re[1]:  # 16 correct bits of a nonzero value
+            return -1 if re[0] else 1
+    return None
+
+
 def _fail(text: str, why: str) -> ExpressionError:
     shown = text if len(text) <= MAX_LENGTH else text[: MAX_LENGTH // 4] + "..."
     return ExpressionError(f"cannot read {shown!r}: {why}")
@@ -96,18 +183,26 @@ def _split_unit(text: str) -> tuple[str, bool]:
 
 
 class _Reader:
-    """Walk an :mod:`ast` tree with a whitelist, building sympy objects."""
+    """Walk an :mod:`ast` tree with a whitelist, building sympy objects within the limits."""
 
     def __init__(self, source: str, text: str, symbols: Mapping[str, sympy.Expr] | None):
         self.source, self.text, self.symbols = source, text, dict(symbols or {})
         for name, value in self.symbols.items():
             if not isinstance(value, sympy.Expr):
                 raise TypeError(f"symbol {name!r} must map to a sympy expression")
+        self.depth = 0  # nested calls and powers now open
+        self.work = 0  # bits that entered roots and functions so far
 
     def read(self, node: ast.AST) -> sympy.Expr:
         value = self._node(node)
         if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
             raise _fail(self.text, "the value is not finite (division by zero?)")
+        if _max_bits(value) > MAX_BITS:
+            raise _fail(self.text, f"a number in the value has more than {MAX_BITS} bits "
+                        f"(about {_digits(MAX_BITS)} decimal digits)")
+        if _too_many_nodes(value):
+            raise _fail(self.text, f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
+                        "out at length); simplify the text")
         return value
 
     def _node(self, node: ast.AST) -> sympy.Expr:
@@ -116,12 +211,16 @@ class _Reader:
         if isinstance(node, ast.Name):
             return self._name(node.id)
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.UAdd, ast.USub)):
-            operand = self.read(node.operand)
-            return -operand if isinstance(node.op, ast.USub) else operand
+            negative = False  # a chain such as ------1 is read in one step, not recursively
+            while isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.UAdd, ast.USub)):
+                negative ^= isinstance(node.op, ast.USub)
+                node = node.operand
+            operand = self.read(node)
+            return -operand if negative else operand
         if isinstance(node, ast.BinOp) and type(node.op) in _BINOPS:
-            left, right = self.read(node.left), self.read(node.right)
             if isinstance(node.op, ast.Pow):
-                self._check_power(left, right)
+                return self._power(node)
+            left, right = self.read(node.left), self.read(node.right)
             return _BINOPS[type(node.op)](left, right)
         if isinstance(node, ast.Call):
             return self._call(node)
@@ -152,6 +251,17 @@ class _Reader:
             raise _refuse(self.text, f"function {name!r} used without a call")
         raise _refuse(self.text, f"unknown name {name!r}")
 
+    def _enter(self) -> None:
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise _fail(self.text, f"more than {MAX_DEPTH} nested function calls and powers")
+
+    def _spend(self, value: sympy.Expr) -> None:
+        self.work += _total_bits(value)
+        if self.work > MAX_WORK_BITS:
+            raise _fail(self.text, f"the numbers in its roots and functions add up to more than "
+                        f"{MAX_WORK_BITS} bits (too costly to compute exactly)")
+
     def _call(self, node: ast.Call) -> sympy.Expr:
         if not isinstance(node.func, ast.Name):
             raise _refuse(self.text, "a call of something that is not a plain function name")
@@ -166,21 +276,105 @@ class _Reader:
         if len(node.args) != arity:
             plural = "s" if arity > 1 else ""
             raise _fail(self.text, f"{name} takes {arity} argument{plural}, got {len(node.args)}")
-        return function(*(self.read(arg) for arg in node.args))
+        self._enter()
+        args = [self.read(arg) for arg in node.args]
+        for arg in args:
+            if name != "sqrt" and _max_bits(arg) > MAX_ARGUMENT_BITS:
+                raise _fail(self.text, f"the argument of {name} holds a number of more than "
+                            f"{MAX_ARGUMENT_BITS} bits (about {_digits(MAX_ARGUMENT_BITS)} "
+                            "decimal digits)")
+            self._spend(arg)
+        if name == "sqrt":
+            self._real_root(args[0], sympy.Rational(1, 2))
+        elif name in ("asin", "acos"):
+            self._real_arcsine(name, args[0])
+        self.depth -= 1
+        return function(*args)
 
-    def _check_power(self, base: sympy.Expr, exponent: sympy.Expr) -> None:
-        if not exponent.is_number:
+    def _sign(self, value: sympy.Expr, shown: sympy.Expr) -> int:
+        sign = real_sign(value)
+        if sign is None:
+            where = "" if value == shown else f", needed for {_short(shown)}"
+            raise _fail(self.text, f"cannot decide the sign of {_short(value)} exactly (it is "
+                        f"zero or too close to zero to tell{where})")
+        return sign
+
+    def _complex(self, shown: sympy.Expr, approx: complex, why: str) -> None:
+        sign = "-" if approx.imag < 0 else "+"
+        value = f"{approx.real:.3g} {sign} {abs(approx.imag):.3g}*I"
+        raise ComplexExpressionError(
+            _fail(self.text, f"{_short(shown)} = {value} is not a real number ({why})").args[0])
+
+    def _real_arcsine(self, name: str, arg: sympy.Expr) -> None:
+        """Refuse ``asin(x)``, ``acos(x)`` for ``|x| > 1``: their values are complex."""
+        if arg.free_symbols:
             return
-        magnitude = sympy.Abs(exponent).evalf()
-        if not magnitude.is_Number or float(magnitude) > MAX_EXPONENT:
-            raise _fail(self.text, f"exponents larger than {MAX_EXPONENT} in absolute value are "
+        if -1 in (self._sign(1 - arg, arg), self._sign(1 + arg, arg)):
+            with mpmath.workdps(50):
+                x = _mpf(arg)
+                approx = complex(mpmath.asin(x) if name == "asin" else mpmath.acos(x))
+            self._complex(_FUNCTIONS[name][0](arg, evaluate=False), approx,
+                          f"{name} needs -1 <= x <= 1")
+
+    def _real_root(self, base: sympy.Expr, exponent: sympy.Rational) -> None:
+        """Refuse a negative base under a root: its principal value is complex."""
+        if base.free_symbols or exponent.q == 1 or self._sign(base, base) >= 0:
+            return
+        approx = complex(mpmath.power(_mpf(base), mpmath.mpf(exponent.p) / exponent.q))
+        hint = ("a root of a negative number is complex" if exponent.q % 2 == 0 else
+                "the principal root of a negative number is complex; write -(8**(1/3)) for "
+                "the real cube root of -8")
+        self._complex(sympy.Pow(base, exponent, evaluate=False), approx, hint)
+
+    def _power(self, node: ast.BinOp) -> sympy.Expr:
+        self._enter()
+        base, exponent = self.read(node.left), self.read(node.right)
+        if not exponent.is_Rational:
+            raise _fail(self.text, f"exponents must be rational numbers such as 2, -1 or 1/3 "
+                        f"(found {_short(exponent)})")
+        if abs(exponent.p) > MAX_EXPONENT or exponent.q > MAX_EXPONENT:
+            raise _fail(self.text, f"exponents p/q with |p| or q larger than {MAX_EXPONENT} are "
                         "refused (they could take forever to compute)")
-        if base.is_number and _bits(base) * float(magnitude) > _MAX_BITS:
-            raise _fail(self.text, "the power is too large to compute exactly")
+        if _max_bits(base) * abs(exponent.p) > MAX_BITS:
+            raise _fail(self.text, "the power is too large to compute exactly (more than "
+                        f"{MAX_BITS} bits)")
+        if exponent.q > 1:
+            self._spend(base)  # an exact root may factor the integers of its base
+            self._real_root(base, exponent)
+        self.depth -= 1
+        return base**exponent
 
 
-def _bits(value: sympy.Expr) -> int:
-    """Bits in all the integers of ``value``: a bound on the cost of powers of it."""
+def _mpf(value: sympy.Expr) -> mpmath.mpf:
+    """A real number (decided sign, bounded size) as an mpmath float, for messages."""
+    return mpmath.mpf(sympy.Float(value.evalf(50))._mpf_)
+
+
+def _short(value: sympy.Expr) -> str:
+    shown = str(value)
+    return shown if len(shown) <= 40 else shown[:37] + "..."
+
+
+def _digits(bits: int) -> int:
+    return int(bits * 0.30103)
+
+
+def _too_many_nodes(value: sympy.Expr) -> bool:
+    for count, _ in enumerate(sympy.preorder_traversal(value), 1):
+        if count > MAX_NODES:
+            return True
+    return False
+
+
+def _max_bits(value: sympy.Expr) -> int:
+    """Most bits of a numerator or a denominator in ``value``."""
+    if isinstance(value, sympy.Rational):
+        return max(int(value.p).bit_length(), int(value.q).bit_length())
+    return max((_max_bits(r) for r in value.atoms(sympy.Rational)), default=0)
+
+
+def _total_bits(value: sympy.Expr) -> int:
+    """Bits of all the integers in ``value``: a bound on the work of a root of it."""
     return sum(int(r.p).bit_length() + int(r.q).bit_length() for r in value.atoms(sympy.Rational))
 
 
@@ -195,17 +389,19 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None) -> sympy.Expr:
         raise _fail(text, "there is no number before the unit" if degrees else "the text is empty")
     reader = _Reader(source, text, symbols)
     try:
-        tree = ast.parse(source, mode="eval")
+        with warnings.catch_warnings():  # "1if 1else 2" warns about its literals: refuse quietly
+            warnings.simplefilter("ignore")
+            tree = ast.parse(source, mode="eval")
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         raise _fail(text, "incomplete or malformed expression") from None
     try:
         value = reader.read(tree.body)
     except ExpressionError:
         raise
-    except (ValueError, TypeError, ArithmeticError, RecursionError):
+    except RecursionError:
+        raise _fail(text, "the expression is nested too deeply") from None
+    except _SYMPY_FAILURES:
         raise _fail(text, "the value cannot be computed exactly") from None
-    if _bits(value) > _MAX_BITS:
-        raise _fail(text, f"the numbers in the result have more than {_MAX_BITS} bits")
     return value * _DEGREE if degrees else value
 
 
