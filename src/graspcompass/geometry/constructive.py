@@ -70,6 +70,15 @@ def _nonzero(value: sp.Expr, error: type[GeometryError], message: Callable[[], s
     return frozenset({canon(value)}) if z is None else frozenset()
 
 
+def _nonzero_frac(value: Frac, error: type[GeometryError], message: Callable[[], str],
+                  *objs: object) -> frozenset:
+    """:func:`_nonzero` for an exact fraction, deciding without a sympy expression."""
+    z = value.is_zero()
+    if z:
+        raise error(message(), *objs)
+    return frozenset({value.expr()}) if z is None else frozenset()
+
+
 def _fracs(*points: Point) -> list[tuple[Frac, Frac]]:
     """The coordinates as exact fractions (raises NotAFraction for floats)."""
     return [(Frac.of(p.x), Frac.of(p.y)) for p in points]
@@ -138,20 +147,19 @@ def meet(a: Line, b: Line) -> Point:
         (ax, ay), (adx, ady), (bx, by), (bdx, bdy) = _fracs(
             a.point, a.direction, b.point, b.direction)
         den_f = adx * bdy - ady * bdx
-        den = den_f.expr()
     except NotAFraction:
-        den_f, den = None, a.direction.cross(b.direction)
-    conds = _nonzero(
-        den,
-        ParallelLinesError,
-        lambda: f"lines are parallel, they do not meet in one point: {a} and {b}",
-        a,
-        b,
-        scale=_size(a.direction, b.direction),
-    )
+        den_f = None
+
+    def parallel() -> str:
+        return f"lines are parallel, they do not meet in one point: {a} and {b}"
+
     if den_f is not None:
+        conds = _nonzero_frac(den_f, ParallelLinesError, parallel, a, b)
         t = ((bx - ax) * bdy - (by - ay) * bdx) / den_f
         return Point((ax + t * adx).expr(), (ay + t * ady).expr(), _merge(a, b) | conds)
+    den = a.direction.cross(b.direction)
+    conds = _nonzero(den, ParallelLinesError, parallel, a, b,
+                     scale=_size(a.direction, b.direction))
     t = (b.point - a.point).cross(b.direction) / den
     p = a.point
     d = a.direction
@@ -210,17 +218,22 @@ def circle_on_diameter(a: Point, b: Point) -> Circle:
     >>> circle_on_diameter(Point(0, 0), Point(2, 0))
     Circle(Point(1, 0), radius2=1)
     """
-    if decide_zero(a.x - b.x) and decide_zero(a.y - b.y):
-        raise DegenerateCircleError(
-            f"a circle on a diameter needs two distinct end points, got {a} twice", a, b
-        )
-    c = midpoint(a, b)
+    def same() -> DegenerateCircleError:
+        return DegenerateCircleError(
+            f"a circle on a diameter needs two distinct end points, got {a} twice", a, b)
+
     try:
         (ax, ay), (bx, by) = _fracs(a, b)
-        dx, dy = bx - ax, by - ay
-        r2 = ((dx * dx + dy * dy) * Frac.of(sp.Rational(1, 4))).expr()
     except NotAFraction:
+        if decide_zero(a.x - b.x) and decide_zero(a.y - b.y):
+            raise same() from None
         r2 = canon(((b.x - a.x) ** 2 + (b.y - a.y) ** 2) / 4)
+    else:
+        dx, dy = bx - ax, by - ay
+        if dx.is_zero() and dy.is_zero():
+            raise same()
+        r2 = ((dx * dx + dy * dy) * Frac.of(sp.Rational(1, 4))).expr()
+    c = midpoint(a, b)
     return Circle(c, r2, _merge(a, b))
 
 
@@ -300,35 +313,39 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     >>> second_intersection(Circle(Point(1, 0), 1), Circle(Point(0, 1), 1), Point(0, 0))
     Point(1, 1)
     """
-    c, w = c1.center, c2.center - c1.center
-    if decide_zero(w.x) and decide_zero(w.y):
-        raise DegenerateCircleError(
-            f"concentric circles through one point coincide: {c1} and {c2}", c1, c2
-        )
+    def concentric() -> DegenerateCircleError:
+        return DegenerateCircleError(
+            f"concentric circles through one point coincide: {c1} and {c2}", c1, c2)
+
+    def tangent() -> str:
+        return f"circles {c1} and {c2} are tangent at {known}: there is no second common point"
+
     try:
-        (cx, cy), (wx, wy), (kx0, ky0) = _fracs(c, w, known)
-        kx, ky = kx0 - cx, ky0 - cy
-        side_f = wx * ky - wy * kx
-        side, scale = side_f.expr(), 0.0
+        (cx, cy), (c2x, c2y), (kx0, ky0) = _fracs(c1.center, c2.center, known)
     except NotAFraction:
-        side_f = None
-        k = Point(known.x - c.x, known.y - c.y)
-        side, scale = canon(w.x * k.y - w.y * k.x), _size(w, k)
-    conds = _nonzero(
-        side,
-        NoIntersectionError,
-        lambda: f"circles {c1} and {c2} are tangent at {known}: there is no second common point",
-        c1,
-        c2,
-        scale=scale,
-    )
+        return _second_intersection_sympy(c1, c2, known, concentric, tangent)
+    wx, wy = c2x - cx, c2y - cy
+    if wx.is_zero() and wy.is_zero():
+        raise concentric()
+    kx, ky = kx0 - cx, ky0 - cy
+    side_f = wx * ky - wy * kx
+    conds = _nonzero_frac(side_f, NoIntersectionError, tangent, c1, c2)
     # mirror image of `known` in the line of centres: known - 2 (side / |w|^2) perp(w),
     # reduced piece by piece (small gcds beat one large one)
-    if side_f is not None:
-        tf = Frac.of((Frac.of(sp.Integer(2)) * side_f / (wx * wx + wy * wy)).expr())
-        return Point((kx0 + tf * wy).expr(), (ky0 - tf * wx).expr(),
-                     _merge(c1, c2, known) | conds)
+    tf = Frac.of((Frac.of(sp.Integer(2)) * side_f / (wx * wx + wy * wy)).expr())
+    return Point((kx0 + tf * wy).expr(), (ky0 - tf * wx).expr(), _merge(c1, c2, known) | conds)
+
+
+def _second_intersection_sympy(c1: Circle, c2: Circle, known: Point,
+                               concentric: Callable[[], GeometryError],
+                               tangent: Callable[[], str]) -> Point:
+    """:func:`second_intersection` with sympy arithmetic (floats)."""
+    c, w = c1.center, c2.center - c1.center
+    if decide_zero(w.x) and decide_zero(w.y):
+        raise concentric()
     k = Point(known.x - c.x, known.y - c.y)
+    side = canon(w.x * k.y - w.y * k.x)
+    conds = _nonzero(side, NoIntersectionError, tangent, c1, c2, scale=_size(w, k))
     t = canon(2 * side / canon(w.x**2 + w.y**2))
     return Point.canonical(known.x + t * w.y, known.y - t * w.x, _merge(c1, c2, known) | conds)
 

@@ -14,6 +14,7 @@ for the expressions of the paper:
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import sympy as sp
@@ -143,6 +144,7 @@ def clear_caches() -> None:
     _atom_plan.cache_clear()
     _positions.cache_clear()
     _gen_interval.cache_clear()
+    _gen_float.cache_clear()
     trig.sincos.cache_clear()
     trig._reference.cache_clear()
 
@@ -405,9 +407,82 @@ def _finish(R, n, d) -> sp.Expr:
     return out
 
 
-def _clearly_nonzero(poly) -> bool:
-    """True when interval arithmetic (200 bits) shows the number ``poly`` is not 0."""
+_U = 2.0**-53  # unit roundoff of IEEE double
+
+
+@lru_cache(maxsize=4096)
+def _gen_float(g: sp.Expr) -> float | None:
+    """A double within one unit roundoff of the numeric generator ``g``, or None."""
     from mpmath import iv
+
+    prec = iv.prec
+    iv.prec = _IV_PREC
+    try:
+        v = _gen_interval(g)
+    except TypeError:
+        return None
+    finally:
+        iv.prec = prec
+    lo, hi = float(v.a), float(v.b)
+    m = (lo + hi) / 2
+    if not math.isfinite(m) or m == 0 or hi - lo > abs(m) * _U:
+        return None
+    return m
+
+
+def _float_sign(poly) -> int | None:
+    """The sign of the number ``poly`` by a floating-point filter, or None.
+
+    Each term is evaluated in doubles by repeated multiplication (generators
+    within one unit roundoff u, coefficients correctly rounded); a term of degree
+    D is then within (1.5 D + 1) u of its value and the sum of N terms adds at
+    most N u of the sum of magnitudes M.  A computed sum beyond twice that bound,
+    ``2 (2 D_max + N + 2) u M``, has the sign of the exact value (the usual
+    static filter of exact geometric predicates); anything closer returns None and
+    the caller falls back to interval arithmetic.
+    """
+    symbols = poly.ring.symbols
+    values: dict[int, float] = {}
+    total = magnitude = 0.0
+    dmax = count = 0
+    try:
+        for monom, coeff in poly.terms():
+            t = int(coeff.numerator) / int(coeff.denominator)
+            degree = 0
+            for i, e in enumerate(monom):
+                if not e:
+                    continue
+                v = values.get(i)
+                if v is None:
+                    v = _gen_float(symbols[i])
+                    if v is None:
+                        return None
+                    values[i] = v
+                for _ in range(e):
+                    t *= v
+                degree += e
+            total += t
+            magnitude += abs(t)
+            dmax = max(dmax, degree)
+            count += 1
+    except OverflowError:
+        return None
+    if not math.isfinite(magnitude) or magnitude < 1e-280:
+        return None
+    bound = 2.0 * (2 * dmax + count + 2) * _U * magnitude
+    if total > bound:
+        return 1
+    if total < -bound:
+        return -1
+    return None
+
+
+def _clearly_nonzero(poly) -> bool:
+    """True when a float filter or interval arithmetic (200 bits) shows ``poly`` is not 0."""
+    from mpmath import iv
+
+    if _float_sign(poly) is not None:
+        return True
 
     prec = iv.prec
     iv.prec = _IV_PREC
@@ -684,6 +759,9 @@ def _strict_sign(reduced: sp.Expr) -> int | None:
                 return 1 if value > 0 else -1
             return None
         _, n, d = hit
+        fs = _float_sign(n), _float_sign(d)
+        if None not in fs:
+            return fs[0] * fs[1]
         nv, dv = _intervals(n, d)
     except TypeError:
         return None
@@ -786,6 +864,32 @@ class Frac:
             raise ZeroDivisionError("division by zero")
         return self * Frac(other.R, other.d, other.n) if other.R is not None else \
             self * Frac(None, 1 / other.n, sp.Integer(1))
+
+    def is_zero(self) -> bool | None:
+        """Whether the value is 0: True, False, or None when undecidable (symbols).
+
+        Decided without building the sympy expression when it can be: a numerator
+        that reduces to 0 modulo the generators' relations is 0, and one whose
+        interval (200 bits) excludes 0 is not; anything else goes to
+        :func:`decide_zero` on :meth:`expr`.
+
+        Examples
+        --------
+        >>> a = Frac.of(sp.sqrt(6))
+        >>> (a - Frac.of(sp.sqrt(2)) * Frac.of(sp.sqrt(3))).is_zero(), a.is_zero()
+        (True, False)
+        """
+        if self.R is None:
+            return self.n == 0
+        root_rels, trig_rels, _ = _relations(self.R)
+        n = self.n.rem(root_rels) if root_rels else self.n
+        if n and trig_rels:
+            n = n.rem(trig_rels)
+        if not n:
+            return True
+        if _clearly_nonzero(n):
+            return False
+        return decide_zero(self.expr())
 
     def expr(self) -> sp.Expr:
         """The canonical sympy expression of this value (as :func:`canon` gives it)."""

@@ -1,0 +1,78 @@
+"""The kernel's floating-point sign filter never claims a wrong sign.
+
+``exact._float_sign`` decides the sign of a polynomial in numeric generators
+from doubles with an error bound; when it answers, the answer must be the sign
+of the exact value, which the tests get independently from mpmath at 300
+digits (and from exact zeros built to cancel).
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from graspcompass.geometry import exact
+from graspcompass.geometry.trig import OpaqueCos, OpaqueSin
+
+_GENS = (sp.sqrt(2), sp.sqrt(3), sp.sqrt(5), OpaqueSin(sp.pi / 10), OpaqueCos(sp.pi / 10),
+         OpaqueSin(sp.Rational(6, 5)), OpaqueCos(sp.Rational(6, 5)))
+_R = exact._ring(tuple(sorted(_GENS, key=exact._gen_key)))
+
+
+def _true_value(poly) -> mpmath.mpf:
+    with mpmath.workdps(300):
+        values = [mpmath.mpf(sp.N(g, 320)) for g in _R.symbols]
+        total = mpmath.mpf(0)
+        for monom, coeff in poly.terms():
+            t = mpmath.mpf(int(coeff.numerator)) / int(coeff.denominator)
+            for v, e in zip(values, monom):
+                t *= v**e
+            total += t
+        return total
+
+
+_coeff = st.fractions(min_value=-10**6, max_value=10**6, max_denominator=10**6)
+_monom = st.tuples(*[st.integers(0, 3) for _ in _GENS])
+_poly = st.lists(st.tuples(_monom, _coeff), min_size=1, max_size=8).map(
+    lambda ts: _R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in ts}))
+
+
+def _check(poly) -> None:
+    got = exact._float_sign(poly)
+    if got is None:
+        return
+    v = _true_value(poly)
+    assert v != 0 and got == (1 if v > 0 else -1), (poly, got, v)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_poly)
+def test_filter_sign_is_the_true_sign(poly):
+    _check(poly)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_poly, _poly, st.integers(-60, -20))
+def test_filter_near_cancellation(p, q, k):
+    """p*q - p*q' with q' = q + 2^k: tiny but non-zero, and exact zeros p*q - q*p."""
+    a = p * q
+    shift = _R.from_dict({(0,) * len(_GENS): sp.QQ(Fraction(2) ** k)})
+    _check(a - p * (q + shift))
+    zero = a - q * p
+    assert not zero or exact._float_sign(zero) is None or _true_value(zero) != 0
+
+
+def test_filter_refuses_exact_zero_in_disguise():
+    """(sqrt2 + sqrt3)^2 - 5 - 2 sqrt6 is 0 once sqrt6 = sqrt2 sqrt3; unreduced it is
+    a polynomial whose double evaluation is rounding noise: no sign may come out."""
+    r2, r3 = _R(sp.sqrt(2)), _R(sp.sqrt(3))
+    poly = (r2 + r3) ** 2 - 5 - 2 * r2 * r3
+    assert exact._float_sign(poly) is None
+    s, c = _R(OpaqueSin(sp.pi / 10)), _R(OpaqueCos(sp.pi / 10))
+    assert exact._float_sign(s**2 + c**2 - 1) is None
+    # 4 cos(pi/10)^2 - (10 + 2 sqrt5)/4 * ... : cos(pi/10)^2 = (5 + sqrt5)/8
+    assert exact._float_sign(8 * c**2 - 5 - _R(sp.sqrt(5))) is None
