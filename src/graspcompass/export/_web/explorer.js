@@ -400,6 +400,13 @@
     pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
+  // Colours, widths and dashes are applied to the SVG only in the redraws after a change of
+  // visibility or highlight (JSXGraph's "enhanced rendering"), not on every parameter change.
+  let visualsDirty = true;
+  function setVisualPass() {
+    board.renderer.enhancedRendering = visualsDirty;
+    visualsDirty = false;
+  }
 
   const entries = []; // {el, step, always, exists}
   function reg(el, step, opts) {
@@ -436,7 +443,7 @@
 
   const outline = reg(board.create("curve", [[0], [0]], {
     strokeColor: COL.object, fillColor: COL.objectfill, fillOpacity: 0.6, strokeWidth: 1.2,
-    highlight: false, fixed: true,
+    highlight: false, fixed: true, needsRegularUpdate: false,
   }), "O", { always: true, exists: () => !!state.shape });
   outline.updateDataArray = function () {
     const sh = state.shape;
@@ -456,11 +463,13 @@
   };
 
   reg(board.create("axis", [[0, 0], [1, 0]], {
-    strokeColor: COL.axis, highlight: false, ticks: { strokeColor: "#c8c8c8", label: {
+    strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
+    ticks: { strokeColor: "#c8c8c8", needsRegularUpdate: false, label: {
       fontSize: 10, strokeColor: "#707070" } },
   }), "x-axis", { always: true });
   reg(board.create("axis", [[0, 0], [0, 1]], {
-    strokeColor: COL.axis, highlight: false, ticks: { strokeColor: "#c8c8c8", label: {
+    strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
+    ticks: { strokeColor: "#c8c8c8", needsRegularUpdate: false, label: {
       fontSize: 10, strokeColor: "#707070" } },
   }), "y-axis", { always: true });
 
@@ -495,14 +504,21 @@
       { strokeColor: COL.side, strokeWidth: 1.3 });
   }
 
+  /** A polyline (a JSXGraph curve: no helper points) through the points ``get()`` gives. */
+  function poly(get, step, attrs, hl) {
+    const c = board.create("curve", [[0], [0]], Object.assign({ highlight: false, fixed: true,
+      strokeWidth: 1 }, attrs));
+    c.updateDataArray = function () {
+      const pts = state.num ? get(state.num) : null;
+      this.dataX = pts ? pts.map((q) => q[0]) : [];
+      this.dataY = pts ? pts.map((q) => q[1]) : [];
+    };
+    return reg(c, step, { exists: () => !!state.num, hl: hl || null });
+  }
+
   // feet of the contacts and O_M (§3.3)
   for (const i of [1, 2]) {
-    reg(board.create("segment", [
-      [() => state.p["x" + i] * (i === 1 ? 1 : -1), () => state.p.y],
-      [() => state.p["x" + i] * (i === 1 ? 1 : -1), 0],
-    ], { strokeColor: COL.perp, dash: 2, strokeWidth: 1, highlight: false, fixed: true,
-      point1: { visible: false }, point2: { visible: false } }),
-    `P${i}x`, { exists: () => !!state.num });
+    poly((q) => [q["P" + i], q[`P${i}x`]], `P${i}x`, { strokeColor: COL.perp, dash: 2 });
     point(`P${i}x`, `P${i}x`);
   }
   point("O_M", "O_M", { face: "x", size: 4 });
@@ -514,30 +530,17 @@
     lineFrom(() => state.num && state.num.perps[n], "perp" + n,
       { strokeColor: COL.perp, dash: 2, strokeWidth: 1 });
     point("Y" + n, "Y" + n, { label: { offset: [6, 4], fontSize: 13 } });
-    const lengthAttrs = { strokeColor: COL.length, strokeWidth: 1.6, lastArrow: { type: 2,
-      size: 6 }, highlight: false, fixed: true, point1: { visible: false },
-    point2: { visible: false } };
+    const lengthAttrs = { strokeColor: COL.length, strokeWidth: 1.6,
+      lastArrow: { type: 2, size: 6 } };
+    const lit = { strokeWidth: 3.5, strokeColor: COL.highlight };
     // O_M X_n along the x-axis, drawn just below it; O Y_n along the y-axis, just left of it
-    reg(board.create("arrow", [
-      [() => (state.num ? state.num.O_M[0] : NaN), () => -off() * n / 2],
-      [() => (state.num ? state.num["X" + n][0] : NaN), () => -off() * n / 2],
-    ], lengthAttrs), "OMX" + n, { exists: () => !!state.num,
-      hl: { strokeWidth: 3.5, strokeColor: COL.highlight } });
-    reg(board.create("arrow", [
-      [() => -off() * n / 2, 0],
-      [() => -off() * n / 2, () => (state.num ? state.num["Y" + n][1] : NaN)],
-    ], lengthAttrs), "OY" + n, { exists: () => !!state.num,
-      hl: { strokeWidth: 3.5, strokeColor: COL.highlight } });
+    poly((q) => [[q.O_M[0], -off() * n / 2], [q["X" + n][0], -off() * n / 2]], "OMX" + n,
+      lengthAttrs, lit);
+    poly((q) => [[-off() * n / 2, 0], [-off() * n / 2, q["Y" + n][1]]], "OY" + n,
+      lengthAttrs, lit);
     // V_n = (−O_M X_n, −O Y_n): the lengths carried to O and reversed
-    for (const axis of [0, 1]) {
-      reg(board.create("segment", [
-        [() => (state.num ? (axis ? 0 : state.num.V[n - 1][0]) : NaN),
-          () => (state.num ? (axis ? state.num.V[n - 1][1] : 0) : NaN)],
-        [num("V" + n, 0), num("V" + n, 1)],
-      ], { strokeColor: COL["circle" + n], dash: 1, strokeWidth: 1, highlight: false,
-        fixed: true, point1: { visible: false }, point2: { visible: false } }),
-      "V" + n, { exists: () => !!state.num });
-    }
+    poly((q) => [[q.V[n - 1][0], 0], q.V[n - 1], [0, q.V[n - 1][1]]], "V" + n,
+      { strokeColor: COL["circle" + n], dash: 1 });
     point("V" + n, "V" + n, { size: 3.5, strokeColor: COL["circle" + n],
       fillColor: COL["circle" + n], label: { offset: [6, 6], fontSize: 15,
         strokeColor: COL["circle" + n] } });
@@ -571,12 +574,10 @@
     const q = state.num;
     return q ? 1.15 * Math.max(q.worst.k, 0.25 * Math.hypot(q.P1[0] - q.P2[0], 0)) : 1;
   };
-  reg(board.create("arrow", [[0, 0], [
-    () => reachFe() * Math.sin(state.p.theta), () => -reachFe() * Math.cos(state.p.theta)]], {
-    strokeColor: "#333333", strokeWidth: 1.5, dash: 3, lastArrow: { type: 1, size: 5 },
-    highlight: false, fixed: true, point1: { visible: false }, point2: { visible: false },
-    name: "F_e", withLabel: false,
-  }), "envelope", { exists: () => !!state.num });
+  // the direction e(θ) of the external force F_e at O (26)
+  poly(() => [[0, 0], [reachFe() * Math.sin(state.p.theta),
+    -reachFe() * Math.cos(state.p.theta)]], "envelope",
+  { strokeColor: "#333333", strokeWidth: 1.5, dash: 3, lastArrow: { type: 1, size: 5 } });
   point("H", "envelope", { name: "H", size: 4, face: "o", strokeColor: "#111111",
     fillColor: "#ffd166", label: { offset: [8, -6], fontSize: 12 } });
   const specialPoint = (which, attrs) => reg(board.create("point", [
@@ -614,6 +615,7 @@
       if (show !== e.shown) {
         e.el.setAttribute({ visible: show });
         e.shown = show;
+        visualsDirty = true;
       }
       const hl = !!(show && e.hl && e.step === curName && cur < lastStep);
       if (e.hl && hl !== !!e.lit) {
@@ -625,6 +627,7 @@
           e.el.setAttribute(e.base);
         }
         e.lit = hl;
+        visualsDirty = true;
       }
     }
   }
@@ -677,38 +680,75 @@
   function syncControls(except) {
     for (const s of SLIDERS) {
       const v = state.p[s.name] / s.unit;
-      if (s.name !== except) s.range.value = String(Math.min(Math.max(v, s.min), s.max));
-      if (document.activeElement !== s.box) s.box.value = String(+v.toPrecision(6));
+      const r = String(Math.min(Math.max(v, s.min), s.max)), b = String(+v.toPrecision(6));
+      if (s.name !== except && r !== s.lastRange) {
+        s.range.value = r;
+        s.lastRange = r;
+      }
+      if (document.activeElement !== s.box && b !== s.lastBox) {
+        s.box.value = b;
+        s.lastBox = b;
+      }
     }
   }
 
   const f4 = (x) => (Number.isFinite(x) ? (+x.toPrecision(4)).toString() : "–");
   const deg = (t) => f4(t / DEG) + "°";
-  function renderInfo() {
-    const q = state.num, box = $("gc-error");
-    if (state.error) {
-      box.hidden = false;
-      $("gc-error-text").textContent = state.error;
-      $("gc-info").innerHTML = "<p>(no diagram: the parameters violate the conditions of " +
-        "§2.2; see the message)</p>";
-      return;
+  // the readouts: built once, then only their texts change
+  const SUB = "₀₁₂₃₄";
+  $("gc-info").innerHTML =
+    "<p id=\"gc-invalid-note\" hidden>(no diagram: the parameters violate the conditions " +
+    "of §2.2; see the message)</p><div id=\"gc-readout\">" +
+    "<p>θ = <span data-r=\"theta\"></span>: k<sub>grasp</sub> = <span data-r=\"kgrasp\"></span>, " +
+    "F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"Fint\"></span> " +
+    "<small>(eqs. (25), (17))</small></p>" +
+    "<p class=\"gc-worst\">worst: θ = <span data-r=\"wtheta\"></span>, k = " +
+    "<span data-r=\"wk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"wF\"></span>" +
+    "<span data-r=\"wn\"></span></p>" +
+    "<p class=\"gc-best\">best: θ = <span data-r=\"btheta\"></span>, k = " +
+    "<span data-r=\"bk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"bF\"></span></p>" +
+    "<table class=\"gc-v\"><tr><th></th><th>S<sub>n</sub></th><th>C<sub>n</sub></th>" +
+    "<th>k<sub>n</sub>(θ)</th></tr>" +
+    [1, 2, 3, 4].map((n) => `<tr style="color:${COL["circle" + n]}"><td>V${SUB[n]}</td>` +
+      `<td data-r="S${n}"></td><td data-r="C${n}"></td><td data-r="k${n}"></td></tr>`).join("") +
+    "</table></div>";
+  const readout = {};
+  for (const el of $("gc-info").querySelectorAll("[data-r]")) {
+    readout[el.getAttribute("data-r")] = { el, text: null };
+  }
+  function put(key, text) {
+    const r = readout[key];
+    if (r.text !== text) {
+      r.el.textContent = text;
+      r.text = text;
     }
-    box.hidden = true;
-    const p = state.p;
-    $("gc-info").innerHTML =
-      `<p>θ = ${deg(p.theta)}: k<sub>grasp</sub> = <span id="gc-kgrasp">${f4(q.kgrasp)}</span>,` +
-      ` F<sub>int</sub>/F<sub>e</sub> = <span id="gc-fint">${f4(q.Fint)}</span> ` +
-      "<small>(eqs. (25), (17))</small></p>" +
-      `<p class="gc-worst">worst: θ = ${deg(q.worst.theta)}, k = ${f4(q.worst.k)}, ` +
-      `F<sub>int</sub>/F<sub>e</sub> = ${f4(q.worst.Fint)}` +
-      (q.worst.n ? ` (V${"₀₁₂₃₄"[q.worst.n]}, k = |V${"₀₁₂₃₄"[q.worst.n]}|)` : "") + "</p>" +
-      `<p class="gc-best">best: θ = ${deg(q.best.theta)}, k = ${f4(q.best.k)}, ` +
-      `F<sub>int</sub>/F<sub>e</sub> = ${f4(q.best.Fint)}</p>` +
-      "<table class=\"gc-v\"><tr><th></th><th>S<sub>n</sub></th><th>C<sub>n</sub></th>" +
-      "<th>k<sub>n</sub>(θ)</th></tr>" +
-      [0, 1, 2, 3].map((i) => `<tr style="color:${COL["circle" + (i + 1)]}"><td>V` +
-        `${"₁₂₃₄"[i]}</td><td>${f4(q.S[i])}</td><td>${f4(q.C[i])}</td>` +
-        `<td>${f4(q.k[i])}</td></tr>`).join("") + "</table>";
+  }
+  let shownError;
+  function renderInfo() {
+    const q = state.num;
+    if (state.error !== shownError) {
+      $("gc-error").hidden = !state.error;
+      $("gc-error-text").textContent = state.error || "";
+      $("gc-invalid-note").hidden = !state.error;
+      $("gc-readout").hidden = !!state.error;
+      shownError = state.error;
+    }
+    if (state.error) return;
+    put("theta", deg(state.p.theta));
+    put("kgrasp", f4(q.kgrasp));
+    put("Fint", f4(q.Fint));
+    put("wtheta", deg(q.worst.theta));
+    put("wk", f4(q.worst.k));
+    put("wF", f4(q.worst.Fint));
+    put("wn", q.worst.n ? ` (V${SUB[q.worst.n]}, k = |V${SUB[q.worst.n]}|)` : "");
+    put("btheta", deg(q.best.theta));
+    put("bk", f4(q.best.k));
+    put("bF", f4(q.best.Fint));
+    for (let n = 1; n <= 4; n++) {
+      put("S" + n, f4(q.S[n - 1]));
+      put("C" + n, f4(q.C[n - 1]));
+      put("k" + n, f4(q.k[n - 1]));
+    }
   }
 
   function renderStep() {
@@ -737,10 +777,12 @@
     recompute();
     P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
     P2.setPositionDirectly(JXG.COORDS_BY_USER, [-state.p.x2, state.p.y]);
-    syncControls(fromSlider);
     applyVisibility();
-    renderInfo();
+    setVisualPass();
     board.update();
+    // the panel after the board: its layout waits for the next frame, not for JSXGraph
+    syncControls(fromSlider);
+    renderInfo();
     record(t0);
   }
 
@@ -757,9 +799,8 @@
       P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
     }
     recompute();
-    syncControls(null);
     applyVisibility();
-    renderInfo();
+    setVisualPass();
   }
   P1.on("drag", () => onDrag(1));
   P2.on("drag", () => onDrag(2));
@@ -767,6 +808,8 @@
     if (state.pendingT0 !== null) {
       const t0 = state.pendingT0;
       state.pendingT0 = null;
+      syncControls(null);
+      renderInfo();
       record(t0);
     }
   });
@@ -779,6 +822,7 @@
     state.step = ((i % n) + n) % n;
     applyVisibility();
     renderStep();
+    setVisualPass();
     board.update();
     return state.step;
   }
@@ -850,6 +894,8 @@
     const cx = (Math.max(...xs) + Math.min(...xs)) / 2, cy = (Math.max(...ys) + Math.min(...ys)) / 2;
     const half = span / 2 * 1.08;
     board.setBoundingBox([cx - half, cy + half, cx + half, cy - half], true);
+    visualsDirty = true;
+    setVisualPass();
     board.fullUpdate();
   }
   $("gc-fit").addEventListener("click", fit);
