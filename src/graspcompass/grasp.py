@@ -12,24 +12,50 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
 import sympy as sp
 
 from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins, side_floats
-from .errors import GraspCompassError
-from .expr import ExpressionError, parse_exact
+from .errors import (
+    ComplexValueError,
+    GraspCompassError,
+    InputError,
+    NonFiniteValueError,
+    WrongTypeError,
+)
+from .expr import ExpressionError
 from .geometry import Point
 from .geometry.exact import canon, decide_sign, has_float
 from .geometry.trig import sincos, tan_exact
+from .inputs import angle_values, force_value, real_value, substitutions
 
-__all__ = ["PRESETS", "Grasp", "InvalidGraspError"]
+__all__ = ["PRESETS", "ComplexParameterError", "Grasp", "InvalidGraspError",
+           "NonFiniteParameterError", "ParameterTypeError"]
 
 
 class InvalidGraspError(GraspCompassError):
     """The parameters do not describe a grasp the paper's method applies to."""
+
+
+class ParameterTypeError(WrongTypeError, InvalidGraspError):
+    """A grasp parameter that is not a number (``None``, ``True``, a list, a dict)."""
+
+
+class ComplexParameterError(ComplexValueError, InvalidGraspError):
+    """A grasp parameter given as a complex number (``1j``, ``sympy.I``)."""
+
+
+class NonFiniteParameterError(NonFiniteValueError, InvalidGraspError):
+    """A grasp parameter that is ``nan`` or infinite."""
+
+
+_PARAMETER_ERRORS: dict[type, type] = {
+    WrongTypeError: ParameterTypeError,
+    ComplexValueError: ComplexParameterError,
+    NonFiniteValueError: NonFiniteParameterError,
+}
 
 
 #: The paper's examples: §4.1 (Fig. 6) and Table I of §4.2 (Fig. 7).
@@ -59,33 +85,44 @@ PRESETS: dict[str, dict[str, Any]] = {
 
 
 def _value(v: Any, name: str) -> sp.Expr:
-    """A parameter as a sympy value: text is parsed exactly, floats stay floats."""
-    if isinstance(v, bool):
-        raise InvalidGraspError(f"{name} must be a number, got {v!r}")
-    if isinstance(v, str):
-        try:
-            return parse_exact(v)
-        except ExpressionError as exc:
-            raise ExpressionError(f"{name}: {exc}") from None
-    if isinstance(v, Fraction):
-        return sp.Rational(v.numerator, v.denominator)
-    if isinstance(v, (int, np.integer)):
-        return sp.Integer(int(v))
-    if isinstance(v, (float, np.floating)):
-        if not np.isfinite(v):
-            raise InvalidGraspError(f"{name} must be finite, got {v!r}")
-        return sp.Float(float(v))
-    if isinstance(v, sp.Expr):
-        if v.has(sp.zoo, sp.oo, -sp.oo, sp.nan) or v.is_real is False:
-            raise InvalidGraspError(f"{name} must be a finite real number, got {v}")
-        return v
-    raise InvalidGraspError(f"{name} must be a number or an expression, got {v!r}")
+    """A parameter through the input boundary; a refusal is also an :class:`InvalidGraspError`."""
+    try:
+        return real_value(v, name)
+    except ExpressionError:
+        raise  # text the parser refuses (a complex value: also a ComplexValueError)
+    except InputError as exc:
+        for base, kind in _PARAMETER_ERRORS.items():
+            if isinstance(exc, base):
+                raise kind(str(exc)) from None
+        raise InvalidGraspError(str(exc)) from None
+
+
+def _double(v: sp.Expr, what: str) -> float:
+    """A grasp value as a double; a value beyond double precision is refused."""
+    try:
+        out = float(v)
+    except OverflowError:
+        out = math.inf
+    if not math.isfinite(out):
+        raise NonFiniteValueError(
+            f"{what} = {_fmt(v)} is beyond double precision (about 1.8e308): the numeric "
+            "path cannot use it; give θ exactly (text such as 'pi/3') for exact values")
+    return out
+
+
+def _finite(out: Any, what: str) -> Any:
+    """Refuse a numeric result that overflowed double precision."""
+    if not np.isfinite(out).all():
+        raise NonFiniteValueError(
+            f"{what} overflows double precision (|x| > 1.8e308) for these values; give θ "
+            "and the force exactly (text such as 'pi/3') for exact values")
+    return out
 
 
 def _fmt_angle(v: sp.Expr) -> str:
     try:
         f = float(v / sp.pi)
-    except TypeError:
+    except (TypeError, OverflowError):
         return str(v)
     return f"{f:.3g}π" if math.isfinite(f) and abs(f) < 1e6 else f"{sp.N(v, 4)} rad"
 
@@ -93,7 +130,7 @@ def _fmt_angle(v: sp.Expr) -> str:
 def _fmt(v: sp.Expr) -> str:
     try:
         f = float(v)
-    except TypeError:
+    except (TypeError, OverflowError):
         return str(v)
     return str(v) if v.is_Rational else f"{v} ≈ {f:.4g}"
 
@@ -379,12 +416,23 @@ class Grasp:
         at 40 digits or more and rounded once, so they are correct to about one
         unit in the last place even where a cone side is nearly horizontal and
         S_n, C_n ~ 1/cos(φ ± ξ) are ill-conditioned in double precision.
+
+        Raises :class:`~graspcompass.errors.NonFiniteValueError` when a value is
+        beyond half the largest double (then ``S_n sin θ - C_n cos θ`` could
+        overflow): such a grasp is used with exact θ only.
         """
         if self._SC is None:
             try:
                 S, C = closed_form_floats(self.params)
             except TypeError as exc:
                 raise TypeError("a symbolic grasp cannot be evaluated on numeric θ") from exc
+            except OverflowError:
+                S, C = [math.inf], [math.inf]
+            if not all(abs(v) <= _HALF_MAX for v in (*S, *C)):  # also catches nan
+                raise NonFiniteValueError(
+                    "the grasp's S_n, C_n (eqs. (28)-(39)) are beyond double precision "
+                    f"(|S_n|, |C_n| must stay below {_HALF_MAX:.2g}); the numeric path "
+                    "cannot use this grasp: give θ exactly (text such as 'pi/3')")
             self._SC = (np.array(S), np.array(C))
         return self._SC
 
@@ -392,22 +440,29 @@ class Grasp:
     def k(self, theta: Any) -> Any:
         """The four lower limits ``k_n(θ) = V_n · e(θ)``, eqs. (18)-(21), (27), (32).
 
-        A sympy θ (or int) gives a tuple of four exact expressions; a float or a
-        numpy array gives an array of shape ``(4,) + shape(θ)``.
+        θ goes through :func:`graspcompass.inputs.angle_values`: a float or an
+        array (of at most :data:`~graspcompass.inputs.MAX_ARRAY_SIZE` finite
+        values) gives an array of shape ``(4,) + shape(θ)``; anything else (int,
+        text such as ``"pi/3"``, a sympy expression) a tuple of four exact
+        expressions.  ``nan`` and infinities are refused
+        (:class:`~graspcompass.errors.NonFiniteValueError`).
         """
-        if _is_numeric(theta):
+        t = angle_values(theta)
+        if _is_numeric(t):
             S, C = self._floats()
-            t = np.asarray(theta, dtype=float)
             s, c = np.sin(t), np.cos(t)
             return np.multiply.outer(S, s) - np.multiply.outer(C, c)
-        t = sp.sympify(theta)
         s, c = sp.sin(t), sp.cos(t)
         return tuple(canon(S * s - C * c) for S, C in zip(self.S, self.C))
 
     def k_grasp(self, theta: Any) -> Any:
         """Least internal-force parameter ``max(k1, k2, k3, k4, 0)``, eq. (25).
 
-        Exact for a sympy θ (a ``Max`` when θ is a symbol); vectorised for numpy.
+        Exact for an exact θ (a ``Max`` when θ is a symbol); a float for a float
+        θ, an array for an array.  θ is read as by :meth:`k`: text is parsed
+        safely and exactly, and ``nan``, infinities, complex values, ``None``,
+        bools and other objects are refused with a named
+        :class:`~graspcompass.errors.InputError`.
 
         Examples
         --------
@@ -417,14 +472,16 @@ class Grasp:
         True
         >>> float(g.k_grasp(0.0))
         3.232050807568877
+        >>> g.k_grasp("108deg") == g.k_grasp(3 * sp.pi / 5)
+        True
         """
-        if isinstance(theta, (float, np.floating)):  # one angle: no array machinery
+        t = angle_values(theta)
+        if isinstance(t, float):  # one angle: no array machinery
             S, C = self._floats()
-            s, c = math.sin(theta), math.cos(theta)
+            s, c = math.sin(t), math.cos(t)
             return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
-        if _is_numeric(theta):
+        if isinstance(t, np.ndarray):
             S, C = self._floats()
-            t = np.asarray(theta, dtype=float)
             s, c = np.sin(t), np.cos(t)
             out, a, b = np.zeros(t.shape), np.empty(t.shape), np.empty(t.shape)
             for Sn, Cn in zip(S, C):  # k_n = S_n sin θ - C_n cos θ, without temporaries
@@ -433,7 +490,7 @@ class Grasp:
                 np.subtract(a, b, out=a)
                 np.maximum(out, a, out=out)
             return out if t.ndim else float(out)
-        ks = self.k(theta)
+        ks = self.k(t)
         if any(k.free_symbols for k in ks):
             return sp.Max(*ks, sp.Integer(0))
         best = sp.Integer(0)
@@ -443,11 +500,19 @@ class Grasp:
         return best
 
     def internal_force(self, theta: Any, external_force: Any = 1) -> Any:
-        """Magnitude of the least internal force ``F_int = k/(x1 + x2) · F_e``, eq. (17)."""
-        kg = self.k_grasp(theta)
-        if _is_numeric(theta):
-            return kg * float(external_force) / float(self.D)
-        out = kg * sp.sympify(external_force) / self.D
+        """Magnitude of the least internal force ``F_int = k/(x1 + x2) · F_e``, eq. (17).
+
+        ``external_force`` is the magnitude ``F_e >= 0``
+        (:func:`graspcompass.inputs.force_value`); θ as in :meth:`k`.
+        """
+        t = angle_values(theta)
+        fe = force_value(external_force)
+        kg = self.k_grasp(t)
+        if _is_numeric(t):
+            with np.errstate(over="ignore", invalid="ignore"):
+                out = kg * _double(fe, "external_force") / _double(self.D, "x1 + x2")
+            return _finite(out, "F_int")
+        out = kg * fe / self.D
         return out if isinstance(kg, sp.Max) else canon(out)
 
     # -- the matrices of §2.3 --------------------------------------------------
@@ -461,24 +526,28 @@ class Grasp:
         ])
 
     def external_wrench(self, theta: Any, external_force: Any = 1) -> sp.Matrix:
-        """``M = [-F_e sin θ, F_e cos θ, 0]^T`` of eq. (4)."""
-        t, fe = sp.sympify(theta), sp.sympify(external_force)
+        """``M = [-F_e sin θ, F_e cos θ, 0]^T`` of eq. (4), for one angle."""
+        t = _one_angle(theta)
+        fe = _sympy(force_value(external_force))
         return sp.Matrix([-fe * sp.sin(t), fe * sp.cos(t), 0])
 
     def F_T(self, theta: Any, external_force: Any = 1) -> Any:
         """Particular solution ``F_T = L^† M`` as printed in eq. (13).
 
-        A sympy Matrix (4 × 1) for a sympy θ; for a float or numpy θ an array of
-        shape ``(4,) + shape(θ)``.
+        A sympy Matrix (4 × 1) for an exact θ; for a float or numpy θ an array of
+        shape ``(4,) + shape(θ)``.  Inputs as in :meth:`internal_force`.
         """
-        numeric = _is_numeric(theta)
+        t = angle_values(theta)
+        fe = force_value(external_force)
+        numeric = _is_numeric(t)
         if numeric:
-            t = np.asarray(theta, dtype=float)
-            s, c, fe = np.sin(t), np.cos(t), float(external_force)
-            D, x1, x2, y, s1, c1, s2, c2 = (float(v) for v in (
-                self.D, self.x1, self.x2, self.y, self.s1, self.c1, self.s2, self.c2))
+            s, c, fe = np.sin(t), np.cos(t), _double(fe, "external_force")
+            D, x1, x2, y, s1, c1, s2, c2 = (_double(v, name) for v, name in (
+                (self.D, "x1 + x2"), (self.x1, "x1"), (self.x2, "x2"), (self.y, "y"),
+                (self.s1, "sin φ1"), (self.c1, "cos φ1"), (self.s2, "sin φ2"),
+                (self.c2, "cos φ2")))
         else:
-            t, fe = sp.sympify(theta), sp.sympify(external_force)
+            fe = _sympy(fe)
             s, c = sp.sin(t), sp.cos(t)
             D, x1, x2, y = self.D, self.x1, self.x2, self.y
             s1, c1, s2, c2 = self.s1, self.c1, self.s2, self.c2
@@ -486,7 +555,9 @@ class Grasp:
         v = [D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
              -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]
         if numeric:
-            return fe / (2 * D) * np.array(v)
+            with np.errstate(over="ignore", invalid="ignore"):
+                out = fe / (2 * D) * np.array(v)
+            return _finite(out, "F_T")
         return sp.Matrix([fe / (2 * D) * e for e in v])
 
     def F_N(self, external_force: Any = 1) -> Any:
@@ -494,17 +565,22 @@ class Grasp:
 
         A sympy Matrix; a numpy array of shape (4,) for a float ``external_force``.
         """
-        if isinstance(external_force, (float, np.floating)):
-            return external_force / float(self.D) * np.array(
-                [float(v) for v in (self.s1, self.c1, self.s2, self.c2)])
-        fe = sp.sympify(external_force)
+        fe = force_value(external_force)
+        if isinstance(fe, float):
+            with np.errstate(over="ignore", invalid="ignore"):
+                out = fe / _double(self.D, "x1 + x2") * np.array([
+                    _double(v, name) for v, name in ((self.s1, "sin φ1"), (self.c1, "cos φ1"),
+                                                     (self.s2, "sin φ2"), (self.c2, "cos φ2"))])
+            return _finite(out, "F_N")
         return sp.Matrix([fe / self.D * e for e in (self.s1, self.c1, self.s2, self.c2)])
 
     def contact_forces(self, theta: Any, k: Any, external_force: Any = 1) -> Any:
         """``F = [N1, F1, N2, F2]^T = F_T + k F_N``, eq. (16).
 
-        Exact for a sympy θ; for a float or numpy θ (and ``k`` a number or an array
-        broadcasting with θ) an array of shape ``(4,) + shape(θ)``.
+        Exact for an exact θ (and ``k`` a number); for a float or numpy θ (and
+        ``k`` a number or an array broadcasting with θ) an array of shape
+        ``(4,) + shape(θ)``.  Inputs as in :meth:`internal_force`; ``k`` is read
+        like θ (:func:`graspcompass.inputs.angle_values`).
 
         Examples
         --------
@@ -514,20 +590,68 @@ class Grasp:
         >>> F.shape
         (4, 2)
         """
-        if _is_numeric(theta):
-            fn = self.F_N(float(external_force))
-            ft = self.F_T(theta, float(external_force))
-            kk = np.asarray(k, dtype=float)
-            return ft + np.multiply.outer(fn, np.ones(ft.shape[1:])) * kk
-        return self.F_T(theta, external_force) + sp.sympify(k) * self.F_N(external_force)
+        t = angle_values(theta)
+        fe = force_value(external_force)
+        if _is_numeric(t):
+            kk = angle_values(k, "k")
+            if not _is_numeric(kk):
+                kk = _double(kk, "k")
+            kk = np.asarray(kk, dtype=float)
+            shape = np.shape(t)
+            try:
+                ok = np.broadcast_shapes(shape, kk.shape) == shape
+            except ValueError:
+                ok = False
+            if not ok:
+                raise InputError(f"k: an array of shape {kk.shape} does not broadcast with "
+                                 f"theta's shape {shape}")
+            fe = _double(fe, "external_force")
+            fn = self.F_N(fe)
+            ft = self.F_T(t, fe)
+            with np.errstate(over="ignore", invalid="ignore"):
+                out = ft + np.multiply.outer(fn, np.ones(ft.shape[1:])) * kk
+            return _finite(out, "the contact forces")
+        kv = real_value(k, "k")
+        fe = _sympy(fe)
+        return self.F_T(t, fe) + kv * self.F_N(fe)
 
     def subs(self, values: Mapping) -> Grasp:
-        """The grasp with symbols replaced by ``values`` (validated again)."""
-        p = {k: v.subs(values) for k, v in self.params.items()}
+        """The grasp with symbols replaced by ``values`` (validated again).
+
+        Keys are the grasp's symbols or their names (``"x1"``); values are read
+        by :func:`graspcompass.inputs.real_value` (text is parsed safely and
+        exactly).  A key that is not a symbol of the grasp is refused.
+
+        Examples
+        --------
+        >>> g = Grasp.symbolic("mu").subs({"x1": 2, "x2": 2, "y": 1, "phi1": "pi/2",
+        ...                                "phi2": "pi/2", "mu1": 1, "mu2": "1.2"})
+        >>> g.V == Grasp.preset("table1a").V
+        True
+        """
+        free = set().union(*(v.free_symbols for v in self.params.values()))
+        given = substitutions(values, free, "values")
+        p = {k: v.xreplace(given) for k, v in self.params.items()}
         fr = dict(mu1=p["mu1"], mu2=p["mu2"])
         return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], **fr,
                      shape=self.shape, title=self.title)
 
 
+_HALF_MAX = 0.5 * 1.7976931348623157e308  # k_n = S_n sin θ - C_n cos θ cannot overflow below
+
+
 def _is_numeric(theta: Any) -> bool:
-    return isinstance(theta, (float, np.floating, np.ndarray, list, tuple))
+    """After :func:`angle_values`: a float or an array selects the numeric path."""
+    return isinstance(theta, (float, np.ndarray))
+
+
+def _sympy(value: sp.Expr | float) -> sp.Expr:
+    """A checked value for the exact path (a float becomes a sympy Float)."""
+    return sp.Float(value) if isinstance(value, float) else value
+
+
+def _one_angle(theta: Any) -> sp.Expr:
+    t = angle_values(theta)
+    if isinstance(t, np.ndarray):
+        raise WrongTypeError(f"theta: expected one angle, got an array of shape {t.shape}")
+    return _sympy(t)

@@ -14,12 +14,20 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from ..inputs import real_value
 from .errors import CoincidentPointsError, DegenerateCircleError, ZeroDirectionError
 from .exact import Frac, NotAFraction, canon, decide_sign, decide_zero, sym, text
 
 __all__ = ["ORIGIN", "Circle", "Conditions", "Line", "Point", "Ray", "Segment"]
 
 Conditions = frozenset  # frozenset[sympy.Expr]: each expression is assumed != 0
+
+
+def _outside(value: object, name: str) -> object:
+    """Text and floats from a caller go through the input boundary (safe parse, finite)."""
+    if isinstance(value, (str, float)):
+        return real_value(value, name)
+    return value
 
 
 def _merge(*objs: object) -> frozenset:
@@ -48,8 +56,8 @@ class Point:
     conditions: frozenset = field(default=frozenset(), compare=False, repr=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "x", sym(self.x))
-        object.__setattr__(self, "y", sym(self.y))
+        object.__setattr__(self, "x", sym(_outside(self.x, "x")))
+        object.__setattr__(self, "y", sym(_outside(self.y, "y")))
 
     @classmethod
     def canonical(cls, x: object, y: object, conditions: frozenset = frozenset()) -> Point:
