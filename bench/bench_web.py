@@ -13,6 +13,9 @@ the board, ``graspcompass.timings()``):
 
 It prints the median, 95th percentile and maximum ms of each, and the ratio of
 the median and of the 95th percentile to the budget of one 60 Hz frame (16 ms).
+It also compares the page's V_n (eqs. (28)-(39)) and k_grasp (eq. (25)) on
+``--moves`` random float grasps with ``graspcompass.Grasp(...).V`` and
+``k_grasp`` and prints the largest deviation, relative to max(1, |V_n|).
 Baseline of the same run: the matplotlib explorer (``graspcompass explore``,
 :class:`graspcompass.render.explorer.Explorer`), ``set_params`` plus a full
 Agg draw, for a few moves.  Nothing is asserted; the machine may be loaded.
@@ -30,6 +33,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Any
 
 BUDGET_MS = 16.0
 
@@ -56,7 +60,44 @@ def slider_values(i: int) -> tuple[str, str]:
     return name, f"{lo + (hi - lo) * t:.3f}"
 
 
-def run_browser(page_path: Path, moves: int) -> dict[str, list[float]]:
+def random_grasps(count: int, seed: int = 7) -> list[dict[str, float]]:
+    """Float grasps inside condition (1) with a margin of 0.02 rad."""
+    import random
+
+    rng = random.Random(seed)
+    out: list[dict[str, float]] = []
+    while len(out) < count:
+        p = dict(x1=rng.uniform(0.05, 3), x2=rng.uniform(0.05, 3), y=rng.uniform(0, 3))
+        for i in (1, 2):
+            phi = rng.uniform(0.05, math.pi)
+            lo = abs(phi - math.pi / 2) + 0.02
+            if lo >= math.pi / 2 - 0.02:
+                break
+            p[f"phi{i}"], p[f"mu{i}"] = phi, math.tan(rng.uniform(lo, math.pi / 2 - 0.02))
+        else:
+            out.append(p)
+    return out
+
+
+def deviation(page: Any, count: int) -> float:
+    """Largest |page − Python| of V_n and k_grasp over ``count`` random grasps (relative)."""
+    from graspcompass import Grasp
+
+    grasps = random_grasps(count)
+    got = page.evaluate("""ps => ps.map(p => {
+        const q = graspcompass.model.compute(Object.assign({theta: 0.7}, p));
+        return [q.V, q.kgrasp]; })""", grasps)
+    worst = 0.0
+    for p, (V, k) in zip(grasps, got):
+        g = Grasp(**p)
+        want = [(float(v.x), float(v.y)) for v in g.V]
+        scale = max(1.0, *(math.hypot(*v) for v in want))
+        worst = max(worst, *(math.dist(a, b) / scale for a, b in zip(V, want)),
+                    abs(k - g.k_grasp(0.7)) / scale)
+    return worst
+
+
+def run_browser(page_path: Path, moves: int) -> tuple[dict[str, list[float]], float]:
     from playwright.sync_api import sync_playwright
 
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -97,8 +138,9 @@ def run_browser(page_path: Path, moves: int) -> dict[str, list[float]]:
                                      theta: 0.05 * i});
                  }
                  return graspcompass.timings(); }""", moves)
+        dev = deviation(page, moves)
         browser.close()
-    return out
+    return out, dev
 
 
 def run_matplotlib(moves: int) -> list[float]:
@@ -134,7 +176,7 @@ def main(argv: list[str] | None = None) -> int:
         folder = args.out or Path(tmp)
         page_path = write_html(internal_force_diagram(Grasp.preset("fig6")),
                                folder / "explorer.html")
-        web = run_browser(page_path, moves)
+        web, dev = run_browser(page_path, moves)
     mpl = run_matplotlib(3 if args.quick else 10)
 
     print(f"web explorer update time, ms per update, measured in the page "
@@ -143,6 +185,8 @@ def main(argv: list[str] | None = None) -> int:
     for name, ms in web.items():
         print(row(name, ms))
     print(row("baseline: matplotlib explorer", mpl))
+    print(f"largest deviation from Python's closed form (V_n, k_grasp; {moves} random grasps, "
+          f"relative to max(1, |V_n|)): {dev:.2e}")
     worst_p95 = max(pct(ms, 95) for ms in web.values())
     med_all = statistics.median([m for ms in web.values() for m in ms])
     print(f"median over all web updates {med_all:.2f} ms; matplotlib / web median = "

@@ -17,6 +17,7 @@ install``, which downloads a browser).  Timings are reported by
 from __future__ import annotations
 
 import math
+import random
 import shutil
 from collections.abc import Iterator
 from importlib import resources
@@ -27,6 +28,7 @@ import pytest
 
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.construction import Construction
+from graspcompass.construction.envelope import outer_envelope
 from graspcompass.export import export
 from graspcompass.export.html import WEB_FILES, to_html
 from graspcompass.grasp import InvalidGraspError
@@ -263,6 +265,44 @@ def test_step_navigator(page: Page, fig6: Construction) -> None:
     page.page.wait_for_function("graspcompass.get('step') === 1", timeout=5000)
     page.page.click("#gc-play")
     expect(1)
+
+
+def random_grasps(count: int, seed: int = 12) -> list[dict[str, float]]:
+    """Float grasps inside condition (1) with a margin of 0.02 rad (|φ − π/2| < ξ < π/2)."""
+    rng = random.Random(seed)
+    out = []
+    while len(out) < count:
+        p = dict(x1=rng.uniform(0.05, 3), x2=rng.uniform(0.05, 3), y=rng.uniform(0, 3))
+        for i in (1, 2):
+            phi = rng.uniform(0.05, math.pi)
+            lo = abs(phi - math.pi / 2) + 0.02
+            if lo >= math.pi / 2 - 0.02:
+                break
+            p[f"phi{i}"], p[f"mu{i}"] = phi, math.tan(rng.uniform(lo, math.pi / 2 - 0.02))
+        else:
+            out.append(p)
+    return out
+
+
+def test_random_grasps_match_the_closed_form(page: Page) -> None:
+    """The page's model (no drawing) on 40 random grasps: V_n, k_grasp and the envelope."""
+    grasps = random_grasps(40)
+    got = page.js("""ps => ps.map(p => {
+        const q = graspcompass.model.compute(Object.assign({theta: 0.7}, p));
+        return {V: q.V, k: q.kgrasp, arcs: q.arcs.map(a => [a.n, a.theta0]), worst: q.worst.k};
+      })""", grasps)
+    for p, q in zip(grasps, got):
+        g = python_grasp(p)
+        V = [(float(v.x), float(v.y)) for v in g.V]
+        scale = max(1.0, *(math.hypot(*v) for v in V))
+        for a, b in zip(q["V"], V):
+            assert math.dist(a, b) <= TOL * scale, (p, a, b)
+        assert abs(q["k"] - g.k_grasp(0.7)) <= TOL * scale
+        assert abs(q["worst"] - max(math.hypot(*v) for v in V)) <= TOL * scale
+        arcs = outer_envelope({f"V{n}": v for n, v in enumerate(g.V, start=1)}).arcs
+        assert [n for n, _ in q["arcs"]] == [a.n for a in arcs], p
+        for (_, t), a in zip(q["arcs"], arcs):
+            assert abs(t - float(a.theta_start)) <= 1e-8, p
 
 
 def python_message(params: dict[str, float]) -> str:
