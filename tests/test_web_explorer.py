@@ -95,6 +95,7 @@ class Page:
         self.page = page
         self.errors: list[str] = []
         self.requests: list[str] = []
+        self.blocked: list[str] = []
         page.on("pageerror", lambda e: self.errors.append(f"page error: {e}"))
         page.on("console", lambda m: m.type == "error" and self.errors.append(m.text))
         page.on("request", lambda r: self.requests.append(r.url))
@@ -111,8 +112,18 @@ class Page:
 
 @pytest.fixture(scope="module")
 def opened(browser: Any, page_path: Path) -> Iterator[tuple[Page, dict[str, float]]]:
-    """One page for the module (loading 1 MB of script takes a second or two)."""
+    """One page for the module (loading 1 MB of script takes a second or two), offline:
+    every request but the page's own ``file:`` URL is aborted and kept in ``blocked``."""
     context = browser.new_context(viewport={"width": 1280, "height": 900}, offline=True)
+
+    def route(r: Any) -> None:
+        if r.request.url == page_path.as_uri():
+            r.continue_()
+        else:
+            p.blocked.append(r.request.url)
+            r.abort()
+
+    context.route("**/*", route)
     p = Page(context.new_page())
     p.page.goto(page_path.as_uri())
     p.page.wait_for_selector("body[data-ready='1']", timeout=20_000)
@@ -164,25 +175,15 @@ def assert_matches_python(page: Page) -> Grasp:
     return g
 
 
-def test_loads_with_the_network_off(browser: Any, page_path: Path) -> None:
-    context = browser.new_context(offline=True)
-    blocked: list[str] = []
-
-    def route(r: Any) -> None:
-        if r.request.url.startswith("file:"):
-            r.continue_()
-        else:
-            blocked.append(r.request.url)
-            r.abort()
-
-    context.route("**/*", route)
-    p = Page(context.new_page())
-    p.page.goto(page_path.as_uri())
-    p.page.wait_for_selector("body[data-ready='1']", timeout=10_000)
-    assert p.js("typeof JXG") == "object"
-    assert p.requests == [page_path.as_uri()], p.requests  # nothing but the page itself
-    assert blocked == [] and p.errors == []
-    context.close()
+def test_loads_with_the_network_off(opened: tuple[Page, dict[str, float]],
+                                    page_path: Path) -> None:
+    """The page (opened offline, every other request aborted) asked for nothing but itself,
+    whatever the other tests did with it before."""
+    p, _ = opened
+    assert p.js("typeof JXG") == "object" and p.js("typeof graspcompass.set") == "function"
+    p.js("graspcompass.set({mu2: 1.1}); graspcompass.step(0); graspcompass.step(-1)")
+    assert p.requests == [page_path.as_uri()], p.requests
+    assert p.blocked == []
 
 
 def test_start_values_are_the_closed_form(page: Page, fig6: Construction) -> None:
