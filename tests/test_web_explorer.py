@@ -221,6 +221,11 @@ def test_sliders_move_the_diagram(page: Page) -> None:
     assert abs(page.get("theta") - math.radians(123.5)) < 1e-15
     assert page.page.input_value("#gc-num-mu1") == "1.25"
     assert_matches_python(page)
+    # a preset of the paper from the menu
+    page.page.select_option("#gc-preset", "table1a")
+    want = Grasp.preset("table1a").params
+    assert all(abs(page.get(k) - float(want[k])) < 1e-15 for k in PARAMS)
+    assert_matches_python(page)
     # the set() API, as the sliders would
     assert page.js("graspcompass.set({x1: 1.7, phi2: 1.2, mu1: 0.6, theta: 3.0})") is None
     g = assert_matches_python(page)

@@ -914,6 +914,7 @@
     const t0 = performance.now();
     Object.assign(state.p, pr.params);
     state.shape = pr.shape;
+    document.querySelector(".gc-header h1").textContent = pr.title;
     refresh(t0, null);
     fit();
   });
