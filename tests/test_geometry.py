@@ -819,25 +819,32 @@ _RADICALS = [sympy.Integer(1), sympy.Integer(2), sympy.Rational(1, 2), sympy.sqr
 
 
 @settings(max_examples=150, deadline=None)
-@given(st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3))
-def test_atan_shortcut_agrees_with_sympy(terms):
-    """measurement._atan skips sympy's eval; on canonical radicals it must give the same."""
-    from graspcompass.geometry.exact import canon
-    from graspcompass.geometry.measurement import _atan
+@given(st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3),
+       st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3))
+def test_angle_of_is_atan2_on_radical_vectors(xs, ys):
+    """angle_of skips sympy's atan eval; its value must still be atan2(x, -y) (eq. (26)),
+    checked at 50 digits against mpmath, with the argument of any atan positive."""
+    import mpmath
 
-    r = canon(sum((k * v for k, v in terms), sympy.Integer(0)))
-    assume(r != 0)
-    assert _atan(r) == sympy.atan(r)
+    x = sum((k * v for k, v in xs), sympy.Integer(0))
+    y = sum((k * v for k, v in ys), sympy.Integer(0))
+    assume(not (sympy.simplify(x) == 0 and sympy.simplify(y) == 0))
+    a = angle_of(Point(x, y))
+    with mpmath.workdps(50):
+        want = mpmath.atan2(mpmath.mpf(sympy.N(x, 60)), -mpmath.mpf(sympy.N(y, 60)))
+        assert abs(mpmath.mpf(sympy.N(a, 60)) - want) < mpmath.mpf(10) ** -45
+    for t in a.atoms(sympy.atan):
+        assert sympy.N(t.args[0], 30) > 0
 
 
-@pytest.mark.parametrize("k", range(-11, 12))
-def test_atan_shortcut_on_tangents_of_twelfths_and_eighths(k):
-    from graspcompass.geometry.exact import canon
-    from graspcompass.geometry.measurement import _atan
+@pytest.mark.parametrize("k", range(-11, 13))
+def test_angle_of_gives_multiples_of_pi_where_sympy_knows_them(k):
+    """Directions at multiples of π/12 come out as those multiples (no atan left over),
+    and tan(π/8) = √2 − 1 as π/8, as sympy's atan table gives them."""
+    from graspcompass.geometry.trig import sincos
 
-    for den in (12, 8):
-        a = sympy.pi * k / den
-        if abs(a) >= sympy.pi / 2 or a == 0:
-            continue
-        r = canon(sympy.tan(a))
-        assert _atan(r) == sympy.atan(r) == a
+    a = sympy.pi * k / 12
+    s, c = sincos(a)
+    assert angle_of(Point(s, -c)) == a   # e(a) = (sin a, -cos a)
+    assert angle_of(Point(sympy.sqrt(2) - 1, -1)) == sympy.pi / 8
+    assert angle_of(Point(-1 - sympy.sqrt(2), 1)) == -5 * sympy.pi / 8

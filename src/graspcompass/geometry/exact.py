@@ -891,6 +891,24 @@ class Frac:
             return False
         return decide_zero(self.expr())
 
+    def sign(self) -> int | None:
+        """The sign -1, 0, +1 of the value, or None when undecidable (symbols).
+
+        A float filter with a proven error bound decides most signs without the
+        sympy expression; the rest goes to :func:`decide_sign` on :meth:`expr`.
+
+        Examples
+        --------
+        >>> Frac.of(sp.sqrt(2) - sp.Rational(3, 2)).sign(), Frac.of(sp.Integer(0)).sign()
+        (-1, 0)
+        """
+        if self.R is None:
+            return 0 if self.n == 0 else (1 if self.n > 0 else -1)
+        fs = _float_sign(self.n), _float_sign(self.d)
+        if None not in fs:
+            return fs[0] * fs[1]
+        return decide_sign(self.expr())
+
     def expr(self) -> sp.Expr:
         """The canonical sympy expression of this value (as :func:`canon` gives it)."""
         if self.R is None:

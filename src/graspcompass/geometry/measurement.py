@@ -6,9 +6,9 @@ from functools import lru_cache
 
 import sympy as sp
 
-from .exact import canon, decide_sign
+from .errors import ZeroDirectionError
+from .exact import Frac, NotAFraction, canon, decide_sign
 from .primitives import Line, Point
-from .trig import is_radical
 
 __all__ = ["angle_of", "distance", "distance2", "signed_length"]
 
@@ -47,51 +47,74 @@ def signed_length(start: Point, end: Point, line: Line) -> sp.Expr:
 
 @lru_cache(maxsize=1)
 def _atan_values() -> dict[sp.Expr, sp.Expr]:
-    """The arguments at which sympy's ``atan`` returns a multiple of π, and those values."""
-    table: dict[sp.Expr, sp.Expr] = {sp.Integer(0): sp.Integer(0), sp.Integer(1): sp.pi / 4}
-    table.update(sp.atan._atan_table())
-    table.update({-k: -v for k, v in list(table.items())})
+    """Positive arguments at which sympy's ``atan`` is a multiple of π, and those values."""
+    table: dict[sp.Expr, sp.Expr] = {sp.Integer(1): sp.pi / 4}
+    table.update((k, v) for k, v in sp.atan._atan_table().items() if v > 0)
     return table
 
 
-def _atan(ratio: sp.Expr) -> sp.Expr:
-    """``sympy.atan(ratio)`` for a canonical number, without sympy's costly ``eval``.
-
-    Gives what sympy's evaluation gives on such arguments (a multiple of π from its
-    table, else ``atan`` of the positive-looking argument with the sign outside),
-    which ``test_geometry`` checks against ``sympy.atan``.
-    """
-    if not is_radical(ratio):
-        return sp.atan(ratio, evaluate=False)
+def _atan_positive(ratio: sp.Expr) -> sp.Expr:
+    """``atan`` of a positive canonical number without sympy's costly ``eval``: a
+    multiple of π where sympy's table has one (``atan(2 - sqrt(3)) = pi/12``), else
+    ``atan(ratio)`` unevaluated."""
     known = _atan_values().get(ratio)
-    if known is not None:
-        return known
-    if ratio.could_extract_minus_sign():
-        return -sp.atan(-ratio, evaluate=False)
-    return sp.atan(ratio, evaluate=False)
+    return known if known is not None else sp.atan(ratio, evaluate=False)
 
 
 def angle_of(vector: Point) -> sp.Expr:
     """Angle θ from the negative y-axis, counter-clockwise, with ``e(θ) ∥ vector``.
 
-    The paper's convention (26): ``e(θ) = (sin θ, -cos θ)``.
+    The paper's convention (26): ``e(θ) = (sin θ, -cos θ)``.  Exact vectors give
+    ``±atan(r) + kπ`` with r > 0 canonical (a multiple of π where one is known).
+
+    Raises
+    ------
+    ZeroDirectionError
+        For the zero vector.
 
     Examples
     --------
     >>> angle_of(Point(1, 0)), angle_of(Point(0, -1))
     (pi/2, 0)
+    >>> from sympy import sqrt
+    >>> angle_of(Point(1, 2 + sqrt(3))), angle_of(Point(-2, -1))
+    (11*pi/12, -atan(2))
     """
-    x, y = vector.x, -vector.y  # θ = atan2(x, y), with the branch decided exactly
+    try:
+        fx, fy = Frac.of(vector.x), -Frac.of(vector.y)  # θ = atan2(x, y)
+    except NotAFraction:
+        return _angle_of_sympy(vector)
+    sy, sx = fy.sign(), fx.sign()
+    if sy is None or sx is None:  # symbolic: leave the branch to sympy
+        return _angle_of_sympy(vector)
+    if sy == 0:
+        if sx == 0:
+            raise ZeroDirectionError("the zero vector has no direction", vector)
+        return sx * sp.pi / 2
+    if sx == 0:
+        base = sp.Integer(0)
+    else:
+        ratio = fx / fy
+        base = _atan_positive((ratio if sx * sy > 0 else -ratio).expr())
+        if sx * sy < 0:
+            base = -base
+    if sy > 0:
+        return base
+    return base + sp.pi if sx >= 0 else base - sp.pi
+
+
+def _angle_of_sympy(vector: Point) -> sp.Expr:
+    """:func:`angle_of` with sympy arithmetic (floats, symbols)."""
+    x, y = vector.x, -vector.y
     sy, sx = decide_sign(y), decide_sign(x)
     if sy is None or sx is None:  # symbolic: leave the branch to sympy
         angle = sp.atan2(x, y)
         return angle.replace(sp.atan, lambda z: sp.atan(canon(z)))
     if sy == 0:
         if sx == 0:
-            raise ValueError("the zero vector has no direction")
+            raise ZeroDirectionError("the zero vector has no direction", vector)
         return sx * sp.pi / 2
-    ratio = canon(x / y)
-    base = _atan(ratio)
+    base = sp.atan(canon(x / y))
     if sy > 0:
         return base
     return base + sp.pi if sx >= 0 else base - sp.pi
