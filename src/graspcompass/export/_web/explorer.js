@@ -420,8 +420,9 @@
   const LABEL = (s) => s.replace(/(\d)/g, (d) => "₀₁₂₃₄₅₆₇₈₉"[+d])
     .replace("_M", "ₘ").replace(/x$/, "ₓ");
 
+  const labelled = []; // points whose labels are merged where they coincide ("O = Oₘ")
   function point(name, step, attrs) {
-    return reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
+    const el = reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
       name: LABEL(name), size: 2, strokeColor: COL.point, fillColor: COL.point,
       fixed: true, showInfobox: false, label: { offset: [5, 7], fontSize: 13 },
       highlight: false,
@@ -429,6 +430,8 @@
       exists: () => !!(state.num && state.num[name]),
       hl: { size: 5, strokeColor: COL.highlight, fillColor: COL.highlight },
     });
+    if (name !== "H") labelled.push({ name, el, text: LABEL(name), shownText: LABEL(name) });
+    return el;
   }
 
   /** A line c + a x + b y = 0 through P along d, from a function giving {P, d}. */
@@ -591,9 +594,10 @@
     fillColor: "#2ca02c", label: { offset: [8, 10], strokeColor: "#2ca02c" } });
 
   // O and the draggable contacts
-  reg(board.create("point", [0, 0], { name: "O", size: 2, fixed: true, strokeColor: COL.point,
-    fillColor: COL.point, highlight: false, showInfobox: false,
-    label: { offset: [-14, -12], fontSize: 13 } }), "O", { always: true });
+  labelled.unshift({ name: "O", text: "O", shownText: "O", el: reg(board.create("point", [0, 0],
+    { name: "O", size: 2, fixed: true, strokeColor: COL.point, fillColor: COL.point,
+      highlight: false, showInfobox: false, label: { offset: [-14, -12], fontSize: 13 } }),
+  "O", { always: true }) });
   const dragAttrs = { size: 6, strokeColor: "#0b1f4b", fillColor: "#ffb703", showInfobox: false,
     label: { offset: [8, 10], fontSize: 15 }, highlight: true, highlightFillColor: "#fb8500" };
   const P1 = reg(board.create("point", [state.p.x1, state.p.y],
@@ -604,7 +608,55 @@
   // ------------------------------------------------------------------------------------
   // Visibility by step and validity; highlight of the current step's objects
   // ------------------------------------------------------------------------------------
+  const entryOf = new Map(entries.map((e) => [e.el, e]));
+  labelled.sort((a, b) => (stepIndex[a.name] ?? 1e9) - (stepIndex[b.name] ?? 1e9));
+
+  /** One label for the shown points that fall within 6 px of each other (cf. layout.py). */
+  function groupLabels() {
+    const tol = 6 / Math.max(board.unitX, 1e-12);
+    const shown = labelled.filter((e) => entryOf.get(e.el).shown);
+    const where = shown.map((e) => (e.name === "O" ? [0, 0] : getValue(e.name)));
+    const taken = new Array(shown.length).fill(false);
+    for (let a = 0; a < shown.length; a++) {
+      if (taken[a]) continue;
+      const names = [shown[a].text];
+      for (let b = a + 1; b < shown.length; b++) {
+        if (!taken[b] && where[a] && where[b] &&
+            Math.abs(where[a][0] - where[b][0]) < tol && Math.abs(where[a][1] - where[b][1]) < tol) {
+          taken[b] = true;
+          names.push(shown[b].text);
+        }
+      }
+      setLabel(shown[a], names.join(" = "));
+    }
+    shown.forEach((e, i) => { if (taken[i]) setLabel(e, null); });
+    for (const e of labelled) if (!entryOf.get(e.el).shown) setLabel(e, e.text);
+  }
+  function setLabel(e, text) {
+    if (text === e.shownText || !e.el.label) return;
+    if (text === null) {
+      e.el.label.setAttribute({ visible: false });
+    } else {
+      if (e.shownText === null) e.el.label.setAttribute({ visible: "inherit" });
+      e.el.label.setText(text);
+    }
+    e.shownText = text;
+    visualsDirty = true;
+  }
+
+  /** Show, hide and highlight without a board update per change (JSXGraph's setAttribute
+   * redraws the board each time): the caller redraws once afterwards. */
   function applyVisibility() {
+    const was = board.isSuspendedUpdate;
+    board.isSuspendedUpdate = true;
+    try {
+      applyVisibilityNow();
+    } finally {
+      board.isSuspendedUpdate = was;
+    }
+  }
+
+  function applyVisibilityNow() {
     const cur = state.step;
     const curName = DATA.steps[cur] ? DATA.steps[cur].name : null;
     for (const e of entries) {
@@ -630,6 +682,7 @@
         visualsDirty = true;
       }
     }
+    groupLabels();
   }
 
   // ------------------------------------------------------------------------------------
