@@ -353,7 +353,8 @@ def test_messages_agree_with_python_on_many_values(page: Page) -> None:
     base = dict(x1=1.0, x2=1.5, y=0.5, phi1=1.2, phi2=1.4, mu1=0.8, mu2=0.9)
     cases = [dict(x1=-0.3), dict(x2=-1e-5), dict(y=-123456.7), dict(y=-2e15), dict(mu1=-0.0001),
              dict(mu2=0.0), dict(phi1=0.0), dict(phi2=3.3), dict(phi1=0.5), dict(phi1=0.3,
-             mu1=3.0), dict(phi2=2.9, mu2=0.1), dict(phi2=4.5 - math.atan(9.0), mu2=9.0)]
+             mu1=3.0), dict(phi2=2.9, mu2=0.1), dict(phi2=4.5 - math.atan(9.0), mu2=9.0),
+             dict(x1=math.nan), dict(mu2=math.inf), dict(y=-math.inf)]
     for case in cases:
         p = {**base, **case}
         got = page.js("p => graspcompass.model.validate(Object.assign({theta: 0}, p))", p)

@@ -106,8 +106,10 @@
   function validate(p) {
     for (const k of NAMES) {
       if (typeof p[k] !== "number" || !Number.isFinite(p[k])) {
-        const shown = typeof p[k] === "number" ? pyRepr(p[k]).toLowerCase() : String(p[k]);
-        return `${k === "theta" ? "θ" : k} must be finite, got ${shown}`;
+        const v = p[k];
+        const shown = typeof v !== "number" ? String(v)
+          : Number.isNaN(v) ? "nan" : v > 0 ? "inf" : "-inf";
+        return `${k}: expected a finite number, got ${shown}`;
       }
     }
     for (const i of [1, 2]) {
