@@ -18,8 +18,22 @@ from typing import Any
 __all__ = ["register", "run_explore", "run_export"]
 
 _FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
+#: Longest ``--title``.
+MAX_TITLE = 200
 _EXT = {"ggb": "ggb", "tikz": "tex", "svg": "svg", "json": "json", "png": "png", "pdf": "pdf",
         "html": "html"}
+
+
+def _title(text: str) -> str:
+    """An argparse ``type``: a title of printable characters, at most :data:`MAX_TITLE`."""
+    if len(text) > MAX_TITLE:
+        raise argparse.ArgumentTypeError(f"a title has at most {MAX_TITLE} characters, got "
+                                         f"{len(text)}")
+    bad = next((c for c in text if not c.isprintable()), None)
+    if bad is not None:
+        raise argparse.ArgumentTypeError(f"a title has printable characters only, got "
+                                         f"{bad!r} in {text[:40]!r}")
+    return text
 
 
 def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
@@ -33,7 +47,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         description="Write the construction of the grasp to a file: a live GeoGebra .ggb "
                     "(sliders x1, x2, y, φ1, φ2, μ1, μ2, draggable P1), TikZ for pdflatex, a "
                     "standalone SVG, the protocol as JSON (schema graspcompass.construction/1),"
-                    " or PNG/PDF through the renderer.")
+                    " or PNG/PDF through the renderer.",
+        epilog="The folder of -o must exist; the path is checked before any work. "
+               "exit status: 0, or 2 for a user error.")
     add_grasp_options(e)
     e.add_argument("--format", choices=_FORMATS,
                    help="file format (default: from the extension of -o)")
@@ -41,10 +57,13 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    help="output file (default: PRESET.EXT in the current folder)")
     e.add_argument("--step", type=int, metavar="N",
                    help="export the state after protocol step N (default: every step)")
-    e.add_argument("--title", metavar="TEXT", help="title of the picture (default: the grasp's)")
+    e.add_argument("--title", metavar="TEXT", type=_title,
+                   help=f"title of the picture, at most {MAX_TITLE} printable characters "
+                        "(default: the grasp's)")
     e.add_argument("--fragment", action="store_true",
                    help="TikZ only: write the tikzpicture alone, for \\input in a document")
-    e.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+    e.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
+                   help="print nothing but errors")
 
     x = subparsers.add_parser(
         "explore", help="open the interactive explorer (sliders, draggable contacts)",
@@ -53,14 +72,13 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     add_grasp_options(x)
 
 
-def _format_and_path(args: argparse.Namespace) -> tuple[str, Path]:
+def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
     from .export import guess_format
 
     if args.output is None:
         fmt = args.format or "svg"
         return fmt, Path(f"{args.preset}.{_EXT[fmt]}")
-    path = Path(args.output)
-    return (args.format or guess_format(path)), path
+    return (args.format or guess_format(args.output)), args.output
 
 
 def run_export(args: argparse.Namespace, grasp: Any) -> int:
@@ -70,26 +88,31 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     ------
     ValueError
         For a bad ``--step``, an unknown extension, or a format the
-        construction cannot be written in (a symbolic grasp in a drawing format).
+        construction cannot be written in (a symbolic grasp in a drawing format);
+        :class:`~graspcompass.errors.OutputError` for a path that cannot be
+        written (checked before any work).
     """
+    from ._output import check_target, writing
     from .construction import internal_force_diagram
     from .export import export
     from .export.tikz import write_tikz
 
     fmt, path = _format_and_path(args)
+    if args.fragment and fmt != "tikz":
+        raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
+    path = check_target(path)
     c = internal_force_diagram(grasp)
     if args.step is not None:
         if not -len(c) <= args.step < len(c):
             raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
                              f"steps, 0 to {len(c) - 1}")
         c = c.upto(args.step)
-    if args.fragment and fmt != "tikz":
-        raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
-    if fmt == "tikz" and args.fragment:
-        write_tikz(c, path, standalone=False, title=args.title)
-    else:
-        export(c, path, fmt, title=args.title)
-    if not args.quiet:
+    with writing(path):
+        if fmt == "tikz" and args.fragment:
+            write_tikz(c, path, standalone=False, title=args.title)
+        else:
+            export(c, path, fmt, title=args.title)
+    if not getattr(args, "quiet", False):
         print(f"wrote {path} ({fmt}, {len(c)} steps)")
     return 0
 

@@ -2,40 +2,75 @@
 
 With no sub-command, runs the main job on the paper's Fig. 6 grasp: replays
 the construction, writes the diagram to ``./graspcompass-out/`` and prints the
-protocol with exact coordinates.  A user error prints one line on stderr and
-exits with status 2.
+protocol with exact coordinates.
+
+Exit statuses (:data:`EXIT_STATUSES`): 0 done; 1 a check found a problem
+(``verify``, ``crosscheck``); 2 a user error: a bad option or value, an input
+refused, an output that cannot be written, with one line on stderr and never a
+traceback; 3 an internal error (a bug), also one line (``GRASPCOMPASS_DEBUG=1``
+shows the traceback); 130 interrupted.  Every option value is checked before
+any work starts, and every output path before anything is computed: a missing
+folder is refused (only the main job's ``--out`` folder itself is made, and
+it says so).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NoReturn
 
-import numpy as np
-import sympy as sp
-
-from . import __version__, _cli_export
+from . import __version__, _cli_export, _cli_k
+from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
-from ._cli_animate import write_main_animation
+from ._output import check_folder, check_target, writing
 from .construction import Construction, describe, internal_force_diagram, to_records
-from .expr import parse_angles, parse_exact
+from .errors import GraspCompassError, OutputError
 from .grasp import PRESETS, Grasp
 
-__all__ = ["build_parser", "grasp_from_args", "main"]
+__all__ = ["EXIT_STATUSES", "build_parser", "grasp_from_args", "main"]
+
+#: What each exit status of ``graspcompass`` means.
+EXIT_STATUSES = {
+    0: "done",
+    1: "a check found a problem (verify, crosscheck)",
+    2: "a user error: a bad option or value, an input refused, an output that cannot be "
+       "written (one line on stderr)",
+    3: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
+       "traceback)",
+    130: "interrupted",
+}
+#: Bounds of ``crosscheck``: random grasps, θ grid size, and their product (linprog runs).
+CROSSCHECK_GRASPS, CROSSCHECK_THETAS, CROSSCHECK_RUNS = 1000, 3600, 36_000
 
 _PARAMS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
 _FORMATS = ("png", "svg", "pdf")
+
+
+#: Longest error message printed (exact values can have thousands of digits).
+MAX_MESSAGE = 400
+
+
+def one_line(text: str, first: bool = True) -> str:
+    """``text`` on one line: its first line (or all of it, escaped, if not ``first``),
+    unprintable characters escaped, cut at :data:`MAX_MESSAGE` characters."""
+    lines = text.strip().splitlines() if first else [text.strip()]
+    line = "".join(c if c.isprintable() else repr(c)[1:-1] for c in (lines[0] if lines else ""))
+    if len(line) > MAX_MESSAGE:
+        line = f"{line[:MAX_MESSAGE - 40]} ... ({len(line)} characters in all)"
+    return line
 
 
 class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors (exit status 2, no usage block)."""
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: error: {message} (see --help)\n")
+        self.exit(2, f"{self.prog}: error: {one_line(message, first=False)} (see --help)\n")
 
 
 def _add_grasp_options(p: argparse.ArgumentParser) -> None:
@@ -50,14 +85,22 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``graspcompass`` command."""
-    p = _Parser(prog="graspcompass", description=(
-        "Ruler-and-compass internal force diagram of a two-point grasp "
-        "(Ito, Tanaka, Sasaki, Robotica 2012). Without a command: the main job on "
-        "the paper's Fig. 6 grasp."))
+    p = _Parser(
+        prog="graspcompass", formatter_class=argparse.RawDescriptionHelpFormatter,
+        description=(
+            "Ruler-and-compass internal force diagram of a two-point grasp "
+            "(Ito, Tanaka, Sasaki, Robotica 2012). Without a command: the main job on "
+            "the paper's Fig. 6 grasp."),
+        epilog="exit status:\n" + "\n".join(f"  {k:<4} {v}" for k, v in EXIT_STATUSES.items())
+        + "\n\noutputs: every option value and output path is checked before any work; "
+        "a missing\nfolder is refused (only the main job's --out folder itself is made, and "
+        "it says so).")
     p.add_argument("--version", action="version", version=f"graspcompass {__version__}")
     p.add_argument("--out", default="graspcompass-out", metavar="DIR",
-                   help="output folder of the main job (default: ./graspcompass-out)")
-    p.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+                   help="output folder of the main job (default: ./graspcompass-out; made if "
+                        "missing, in an existing folder)")
+    p.add_argument("-q", "--quiet", action="store_true", default=False,
+                   help="print nothing but errors")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
     d = sub.add_parser("draw", help="draw the diagram to a PNG, SVG or PDF file")
@@ -68,20 +111,31 @@ def build_parser() -> argparse.ArgumentParser:
                    help="draw the state after protocol step N (default: the whole diagram)")
     d.add_argument("--no-overlay", action="store_true",
                    help="leave out the computer plot of k_grasp (Fig. 6(b))")
-    d.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors")
+    quiet_option(d)
 
     s = sub.add_parser("steps", help="print the construction protocol")
     _add_grasp_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
 
-    k = sub.add_parser("k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))")
+    k = sub.add_parser(
+        "k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
+        description="k_n(θ), k_grasp(θ) and F_int for a list of directions θ of the external "
+                    "force.",
+        epilog=f"limits: --theta is at most {_cli_k.MAX_TEXT} characters and gives at most "
+               f"{_cli_k.MAX_ANGLES} angles. Up to {_cli_k.EXACT_ANGLES} angles are read "
+               "exactly (the θ column shows pi/6); more are made in double precision from the "
+               "exact start and step of each range (a note on stderr says so) and the rows "
+               f"stream out as they are computed. --exact: at most {_cli_k.EXACT_VALUES} "
+               "angles. Values that overflow a double (above 1.8e308) are refused. "
+               "exit status: 0, or 2 for a user error.")
     _add_grasp_options(k)
     k.add_argument("--theta", default="0:360:30deg", metavar="ANGLES",
-                   help="angles: a list and/or ranges start:stop:step, radians unless "
-                        "suffixed with deg (default: 0:360:30deg)")
+                   help="angles: a list and/or ranges start:stop:step (stop excluded), radians "
+                        "unless suffixed with deg (default: 0:360:30deg)")
     k.add_argument("--external-force", default="1", metavar="EXPR",
-                   help="magnitude F_e of the external force (default: 1)")
-    k.add_argument("--exact", action="store_true", help="also print exact values")
+                   help="magnitude F_e of the external force, finite and >= 0 (default: 1)")
+    k.add_argument("--exact", action="store_true",
+                   help=f"also print exact values (at most {_cli_k.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
@@ -98,18 +152,25 @@ def build_parser() -> argparse.ArgumentParser:
         "step holds); 1 otherwise; 2 for a usage error.")
     v.add_argument("--json", action="store_true",
                    help="print the results as JSON (with hypotheses, conditions, certificates)")
-    v.add_argument("--markdown", metavar="FILE", help="write the report as a Markdown page")
+    v.add_argument("--markdown", metavar="FILE",
+                   help="write the report as a Markdown page (its folder must exist)")
     v.add_argument("--certify", action="store_true",
                    help="also certify the symbolic construction (every admissible grasp) and, "
                    "if grasp options are given, that grasp's construction")
     _add_grasp_options(v)
-    v.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    quiet_option(v, "no progress bar")
 
-    x = sub.add_parser("crosscheck", help="closed form vs scipy linprog on random grasps")
-    x.add_argument("--grasps", type=int, default=20, metavar="N", help="random grasps (20)")
-    x.add_argument("--thetas", type=int, default=36, metavar="M", help="θ grid size (36)")
-    x.add_argument("--seed", type=int, default=0, help="random seed (0)")
-    x.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    x = sub.add_parser(
+        "crosscheck", help="closed form vs scipy linprog on random grasps",
+        epilog=f"limits: --grasps × --thetas at most {CROSSCHECK_RUNS} linprog problems. "
+               "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.")
+    x.add_argument("--grasps", type=bounded(int, 1, CROSSCHECK_GRASPS), default=20,
+                   metavar="N", help=f"random grasps, 1 to {CROSSCHECK_GRASPS} (20)")
+    x.add_argument("--thetas", type=bounded(int, 1, CROSSCHECK_THETAS), default=36,
+                   metavar="M", help=f"θ grid size, 1 to {CROSSCHECK_THETAS} (36)")
+    x.add_argument("--seed", type=bounded(int, 0, 2**63 - 1), default=0,
+                   help="random seed, 0 to 2**63 - 1 (0)")
+    quiet_option(x, "no progress bar")
     return p
 
 
@@ -128,19 +189,10 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
     return Grasp(**params)
 
 
-def _table(rows: list[list[str]], head: list[str]) -> str:
-    widths = [max(3, *(len(r[i]) for r in [head, *rows])) for i in range(len(head))]
-    widths[-1] = max(3, len(head[-1]))  # the last column is not padded
-    fmt = "  ".join(f"{{:<{w}}}" for w in widths[:-1]) + "  {}"
-    lines = [fmt.format(*head).rstrip(), fmt.format(*("-" * w for w in widths)).rstrip()]
-    lines += [fmt.format(*r).rstrip() for r in rows]
-    return "\n".join(lines)
-
-
 def protocol_table(c: Construction) -> str:
     """The protocol as a text table with exact values."""
     rows = [[str(s.index), s.name, s.instrument, s.ref, describe(s.obj)] for s in c.steps]
-    return _table(rows, ["#", "name", "instrument", "paper", "exact value"])
+    return _cli_k.table(rows, ["#", "name", "instrument", "paper", "exact value"])
 
 
 def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
@@ -152,32 +204,55 @@ def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
     return path
 
 
+def _out_folder(text: str, quiet: bool) -> Path:
+    """The main job's ``--out`` folder: made if missing (its parent must exist), and said so."""
+    out = Path(text)
+    if not text.strip() or "\0" in text:
+        raise OutputError(f"--out {text!r} is not a folder name")
+    try:
+        exists = out.exists()
+    except OSError as exc:
+        raise OutputError(f"cannot use the folder {text!r}: {exc.strerror or exc}") from None
+    if not exists:
+        check_folder(out.parent, out)
+        with writing(out):
+            out.mkdir()
+        if not quiet:
+            print(f"made the folder {str(out)!r}")
+    return check_folder(out)
+
+
 def _cmd_main(args: argparse.Namespace) -> int:
+    out = _out_folder(args.out, args.quiet)
+    png, svg, steps, gif = (check_target(out / name) for name in (
+        "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", MAIN_ANIMATION))
     c = internal_force_diagram(Grasp.preset("fig6"))
-    out = Path(args.out)
-    png = _draw(c, out / "fig6-diagram.png", None, None, True)
-    _draw(c, out / "fig6-diagram.svg", None, None, True)
-    (out / "fig6-steps.json").write_text(json.dumps(to_records(c), indent=1) + "\n")
+    _draw(c, png, None, None, True)
+    _draw(c, svg, None, None, True)
+    with writing(steps):
+        steps.write_text(json.dumps(to_records(c), indent=1) + "\n")
     if not args.quiet:
         print(f"{c.grasp.title}\n")
         print(protocol_table(c))
-    gif = write_main_animation(c, out, args.quiet)
+    with writing(gif):
+        write_main_animation(c, out, args.quiet)
     if not args.quiet:
-        print(f"\nwrote {png}, {out / 'fig6-diagram.svg'}, {out / 'fig6-steps.json'} and {gif}")
+        print(f"\nwrote {png}, {svg}, {steps} and {gif}")
     return 0
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
+    name = args.output if args.output is not None else f"{args.preset}.{args.format or 'png'}"
+    fmt = args.format
+    if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
+        raise ValueError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf "
+                         "file name or --format")
+    path = check_target(name)
     g = grasp_from_args(args)
     c = internal_force_diagram(g)
     if args.step is not None and not -len(c) <= args.step < len(c):
         raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
                          f"steps, 0 to {len(c) - 1}")
-    path = Path(args.output or f"{args.preset}.{args.format or 'png'}")
-    fmt = args.format
-    if fmt is None and path.suffix.lower().lstrip(".") not in _FORMATS:
-        raise ValueError(f"cannot tell the format of {str(path)!r}: use a .png, .svg or .pdf "
-                         "file name or --format")
     _draw(c, path, fmt, args.step, not args.no_overlay)
     if not args.quiet:
         print(f"wrote {path}")
@@ -194,38 +269,7 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 
 
 def _cmd_k(args: argparse.Namespace) -> int:
-    g = grasp_from_args(args)
-    thetas = parse_angles(args.theta)
-    fe = parse_exact(args.external_force)
-    if not (fe.is_number and fe.is_extended_real and fe >= 0):
-        raise ValueError(f"--external-force must be a non-negative number, got {fe}")
-    t = np.array([float(sp.N(v, 17)) for v in thetas])
-    ks, kg = g.k(t), g.k_grasp(t)
-    fint = g.internal_force(t, float(fe))
-    records = []
-    for i, th in enumerate(thetas):
-        rec: dict[str, Any] = {
-            "theta": str(th), "theta_deg": float(np.degrees(t[i])),
-            "k": [float(v) for v in ks[:, i]], "k_grasp": float(kg[i]), "F_int": float(fint[i]),
-            "limiting": int(np.argmax(ks[:, i]) + 1) if kg[i] > 0 else 0,
-        }
-        if args.exact:
-            rec["k_exact"] = [str(v) for v in g.k(th)]
-            rec["k_grasp_exact"] = str(g.k_grasp(th))
-            rec["F_int_exact"] = str(g.internal_force(th, fe))
-        records.append(rec)
-    if args.json:
-        print(json.dumps(records, indent=1))
-        return 0
-    head = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
-    rows = [[r["theta"], f"{r['theta_deg']:.4g}", *(f"{v:.6g}" for v in r["k"]),
-             f"{r['k_grasp']:.6g}", f"{r['F_int']:.6g}",
-             f"k{r['limiting']}" if r["limiting"] else "-"] for r in records]
-    print(_table(rows, head))
-    if args.exact:
-        for r in records:
-            print(f"θ = {r['theta']}: k_grasp = {r['k_grasp_exact']}, F_int = {r['F_int_exact']}")
-    return 0
+    return _cli_k.run(args, grasp_from_args(args))
 
 
 def _cmd_presets(args: argparse.Namespace) -> int:
@@ -261,11 +305,15 @@ def _certify_table(title: str, c: Construction) -> tuple[str, bool]:
 def _cmd_verify(args: argparse.Namespace) -> int:
     from . import proof
 
+    markdown = check_target(args.markdown) if args.markdown is not None else None
+    if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
+                         or args.preset != "fig6"):
+        grasp_from_args(args)  # a bad grasp option is refused before the long run
     reports = proof.run_catalogue(quiet=args.quiet or args.json)
     status = proof.exit_status(reports)
-    if args.markdown:
-        Path(args.markdown).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.markdown).write_text(proof.to_markdown(reports))
+    if markdown is not None:
+        with writing(markdown):
+            markdown.write_text(proof.to_markdown(reports))
     if args.json:
         print(proof.to_json(reports))
     elif not args.markdown or not args.quiet:
@@ -288,9 +336,9 @@ def _cmd_verify(args: argparse.Namespace) -> int:
 def _cmd_crosscheck(args: argparse.Namespace) -> int:
     from .proof.crosscheck import run_crosscheck
 
-    if args.grasps < 1 or args.thetas < 1:
-        raise ValueError(f"--grasps and --thetas must be positive, got {args.grasps}, "
-                         f"{args.thetas}")
+    if args.grasps * args.thetas > CROSSCHECK_RUNS:
+        raise ValueError(f"--grasps × --thetas = {args.grasps * args.thetas} linprog problems; "
+                         f"at most {CROSSCHECK_RUNS}")
     r = run_crosscheck(args.grasps, args.thetas, args.seed, quiet=args.quiet)
     print(f"{r.grasps} random grasps × {r.thetas} directions: largest |k_grasp − linprog| = "
           f"{r.max_abs_diff:.3e}")
@@ -303,16 +351,59 @@ _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line; returns the exit status (2 for a user error)."""
-    args = build_parser().parse_args(argv)
+    """Run the command line; returns the exit status (see :data:`EXIT_STATUSES`).
+
+    Never raises: argparse's exits (``--help``, a usage error) come back as
+    their status, and a user error (a :class:`ValueError`, which includes every
+    :class:`~graspcompass.errors.GraspCompassError`, or an :class:`OSError`) is
+    one line on stderr and status 2.  Anything else is a bug: one line and
+    status 3 (``GRASPCOMPASS_DEBUG=1`` re-raises it, with the traceback).
+    """
     try:
-        return _COMMANDS[args.command](args)
-    except BrokenPipeError:  # pragma: no cover - e.g. piped into head
+        args = build_parser().parse_args(argv)
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else 2
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SyntaxWarning)  # from text the parser refuses
+            return _COMMANDS[args.command](args)
+    except BrokenPipeError:  # e.g. piped into head: stop quietly
+        _silence_stdout()
         return 0
-    except (ValueError, OSError) as exc:  # InvalidGraspError, ExpressionError, GeometryError
-        msg = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        print(f"graspcompass: error: {msg}", file=sys.stderr)
+    except KeyboardInterrupt:
+        print("graspcompass: interrupted", file=sys.stderr)
+        return 130
+    except (GraspCompassError, ValueError, OSError) as exc:
+        if os.environ.get("GRASPCOMPASS_DEBUG"):
+            raise
+        print(f"graspcompass: error: {_message(exc)}", file=sys.stderr)
         return 2
+    except Exception as exc:  # a bug: one line, not a traceback
+        if os.environ.get("GRASPCOMPASS_DEBUG"):
+            raise
+        print(f"graspcompass: internal error: {type(exc).__name__}: {_message(exc)} (a bug; "
+              "please report it with the command line)", file=sys.stderr)
+        return 3
+
+
+def _message(exc: BaseException) -> str:
+    if isinstance(exc, OSError) and not isinstance(exc, GraspCompassError) and exc.strerror:
+        where = f"{str(exc.filename)!r}: " if exc.filename else ""
+        return one_line(f"{where}{exc.strerror}")
+    return one_line(str(exc)) or type(exc).__name__
+
+
+def _silence_stdout() -> None:
+    """Point stdout at /dev/null so that Python's flush at exit does not complain."""
+    try:
+        sys.stdout.flush()
+    except (OSError, ValueError):
+        pass
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # stdout without a file descriptor
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -25,6 +25,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from .._output import check_target, writing
 from . import json
 from .geogebra import read_ggb_xml, to_ggb, write_ggb
 from .json import SCHEMA, dumps, loads
@@ -86,15 +87,26 @@ def export(construction: Any, path: Any, format: str | None = None,
     Returns
     -------
     pathlib.Path
-        The file written (parent folders are made).
+        The file written.
 
     Raises
     ------
     ValueError
         For an unknown format, or a symbolic construction in a drawing format.
+    graspcompass.errors.OutputError
+        Before any work if the folder of ``path`` does not exist (it is not
+        made), ``path`` is a folder or is not writable; after, if the write
+        fails (a full disk).
     """
     fmt = (format or guess_format(path)).lower()
-    p = Path(path)
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown export format {format!r}: choose one of {', '.join(FORMATS)}")
+    p = check_target(path)
+    with writing(p):
+        return _write(construction, p, fmt, title)
+
+
+def _write(construction: Any, p: Path, fmt: str, title: str | None) -> Path:
     if fmt == "ggb":
         return write_ggb(construction, p, title)
     if fmt == "tikz":
@@ -102,7 +114,6 @@ def export(construction: Any, path: Any, format: str | None = None,
     if fmt == "svg":
         return write_svg(construction, p, title)
     if fmt == "json":
-        p.parent.mkdir(parents=True, exist_ok=True)
         p.write_text(dumps(construction) + "\n", encoding="utf-8")
         return p
     if fmt == "html":
@@ -113,4 +124,4 @@ def export(construction: Any, path: Any, format: str | None = None,
         from ..render import figure_diagram, save_figure  # matplotlib, only here
 
         return save_figure(figure_diagram(construction, title=title), p, format=fmt)
-    raise ValueError(f"unknown export format {format!r}: choose one of {', '.join(FORMATS)}")
+    raise AssertionError(fmt)  # pragma: no cover - FORMATS is checked first

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import io
 import os
 from pathlib import Path
 
 from matplotlib.figure import Figure
+
+from .._output import writing
 
 __all__ = ["FORMATS", "save_figure"]
 
@@ -35,6 +38,10 @@ def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = 
     ------
     ValueError
         For an extension or format other than png, svg or pdf.
+    graspcompass.errors.OutputError
+        If the file cannot be written (no permission, a full disk): the figure
+        is rendered in memory first, so a failed write leaves no half-written
+        matplotlib state behind.
 
     Examples
     --------
@@ -50,6 +57,9 @@ def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = 
                 f"extension {p.suffix!r}" if p.suffix else "a path without extension")
         raise ValueError(f"cannot save a figure to {str(p)!r}: {what} is not supported; "
                          f"use one of {', '.join('.' + f for f in FORMATS)}")
-    p.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(p, format=fmt, dpi=dpi)
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format=fmt, dpi=dpi)
+    with writing(p):
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_bytes(buffer.getvalue())
     return p

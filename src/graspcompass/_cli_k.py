@@ -1,0 +1,298 @@
+"""The ``graspcompass k`` sub-command: k_n(θ), k_grasp(θ) and F_int for a list of angles.
+
+The angles of ``--theta`` are read in one of two ways, chosen by their number
+before any of them is computed:
+
+* at most :data:`EXACT_ANGLES` angles: :func:`graspcompass.expr.parse_angles`
+  reads every angle exactly (the θ column shows ``pi/6``); ``--exact`` adds the
+  exact values, for at most :data:`EXACT_VALUES` angles (each takes exact
+  comparisons of four radicals);
+* more, up to :data:`MAX_ANGLES` (the parser's maximum): the ranges are read
+  exactly (start, stop and step by :func:`~graspcompass.expr.parse_exact`, with
+  the same rules) and their values made in double precision; a note on stderr
+  says so, and the rows are written in chunks as they are computed, so a
+  million rows stream out instead of piling up.
+
+Every number printed is finite: a grasp or an angle whose values overflow a
+double is refused with one line (exit status 2).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import re
+import sys
+from collections.abc import Iterator
+from typing import IO, Any
+
+import numpy as np
+import sympy as sp
+
+from .errors import InputTooLargeError, NonFiniteValueError
+from .expr import MAX_ANGLES, MAX_LENGTH, parse_angles, parse_exact
+
+__all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
+
+#: Most angles read exactly (more are read in double precision).
+EXACT_ANGLES = 1000
+#: Most angles ``--exact`` computes exact values for.
+EXACT_VALUES = 72
+#: Longest ``--theta`` text.
+MAX_TEXT = 10 * MAX_LENGTH
+#: Rows computed and written at a time on the float path.
+CHUNK = 20_000
+
+_HEAD = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
+_NAME_TAIL = re.compile(r"[\w.]*$")
+
+
+def _split_items(text: str) -> list[str]:
+    """Split at commas outside parentheses, as :func:`~graspcompass.expr.parse_angles` does."""
+    items, depth, start = [], 0, 0
+    for index, char in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(char, 0)
+        if char == "," and depth == 0:
+            items.append(text[start:index])
+            start = index + 1
+    return [*items, text[start:]]
+
+
+def _split_unit(text: str) -> tuple[str, bool]:
+    """Strip a trailing ``deg`` or ``°`` with the parser's rule ("30*deg" keeps its name)."""
+    body = text.rstrip()
+    if body.endswith("°"):
+        return body[:-1].rstrip(), True
+    if not body.endswith("deg"):
+        return body, False
+    head = body[:-3]
+    core = head.rstrip()
+    if not core or core[-1] in "+-*/(,:":
+        return body, False
+    tail = _NAME_TAIL.search(head).group()  # type: ignore[union-attr]
+    if tail and not (tail[0].isdigit() or tail[0] == "."):
+        return body, False
+    return core, True
+
+
+def _range(item: str) -> tuple[sp.Expr, sp.Expr, int, bool] | None:
+    """``(start, step, count, degrees)`` of a valid range item; None for anything else.
+
+    The checks are those of the parser (real numbers, a positive step, a
+    non-empty range), so None means the parser refuses the item, or reads it
+    as a single angle.
+    """
+    if ":" not in item:
+        return None
+    body, degrees = _split_unit(item)
+    parts = body.split(":")
+    if len(parts) != 3 or any(_split_unit(part)[1] for part in parts):
+        return None
+    try:
+        start, stop, step = (parse_exact(part) for part in parts)
+    except ValueError:
+        return None
+    if not all(v.is_number and v.is_extended_real for v in (start, stop, step)):
+        return None
+    if (step > 0) is not sp.true:
+        return None
+    try:
+        estimate = float(stop - start) / float(step)
+    except (ArithmeticError, TypeError, ValueError):
+        estimate = math.inf
+    if not estimate < 2 * MAX_ANGLES:
+        return start, step, 2 * MAX_ANGLES, degrees  # too many to count exactly
+    count = sp.ceiling((stop - start) / step)
+    if not count.is_Integer or count <= 0:
+        return None
+    return start, step, int(count), degrees
+
+
+def count_angles(text: str) -> int:
+    """How many angles ``text`` gives, without making them.
+
+    An item that is not a valid range counts 1; a range of more than twice
+    :data:`MAX_ANGLES` values counts ``2 * MAX_ANGLES``.
+    """
+    total = 0
+    for item in _split_items(text):
+        r = _range(item)
+        total += 1 if r is None else r[2]
+    return total
+
+
+def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
+    """The angles of ``--theta``: exact values (or None past :data:`EXACT_ANGLES`) and floats.
+
+    Raises
+    ------
+    graspcompass.expr.ExpressionError
+        For text the parser refuses.
+    InputTooLargeError
+        For more than :data:`MAX_ANGLES` angles (refused before any is made) or
+        text longer than :data:`MAX_TEXT`.
+    NonFiniteValueError
+        For an angle beyond the range of a double.
+    """
+    if len(text) > MAX_TEXT:
+        raise InputTooLargeError(f"--theta is longer than {MAX_TEXT} characters")
+    n = count_angles(text)
+    if n <= EXACT_ANGLES:
+        exact = parse_angles(text)
+        floats = np.array([_float(v) for v in exact], dtype=float)
+    elif n > MAX_ANGLES:
+        many = f"{n}" if n < 2 * MAX_ANGLES else f"more than {2 * MAX_ANGLES}"
+        raise InputTooLargeError(f"--theta gives {many} angles; at most {MAX_ANGLES} are allowed")
+    else:
+        exact, floats = None, _float_angles(text)
+    bad = np.flatnonzero(~np.isfinite(floats))
+    if bad.size:
+        raise NonFiniteValueError(f"--theta: angle {bad[0] + 1} is too large for double "
+                                  "precision (|θ| > 1.8e308)")
+    return exact, floats
+
+
+def _float(value: sp.Expr) -> float:
+    try:
+        return float(sp.N(value, 17))
+    except (OverflowError, TypeError, ValueError):
+        return math.inf
+
+
+def _float_angles(text: str) -> np.ndarray:
+    pieces = []
+    for item in _split_items(text):
+        r = _range(item)
+        if r is None:  # a single angle, or an item the parser refuses with its message
+            pieces.append(np.array([_float(v) for v in parse_angles(item)], dtype=float))
+            continue
+        start, step, count, degrees = r
+        values = _float(start) + np.arange(count, dtype=float) * _float(step)
+        pieces.append(np.radians(values) if degrees else values)
+    return np.concatenate(pieces)
+
+
+def _fe(text: str) -> tuple[sp.Expr, float]:
+    fe = parse_exact(text)
+    if not (fe.is_number and fe.is_extended_real and fe >= 0):
+        raise ValueError(f"--external-force must be a non-negative number, got {fe}")
+    value = _float(fe)
+    if not math.isfinite(value):
+        raise NonFiniteValueError(f"--external-force {text} is too large for double precision")
+    return fe, value
+
+
+def _values(g: Any, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    with np.errstate(all="ignore"):
+        ks = np.asarray(g.k(t), dtype=float).reshape(4, -1)
+        kg = np.asarray(g.k_grasp(t), dtype=float).reshape(-1)
+        fint = np.asarray(g.internal_force(t, fe), dtype=float).reshape(-1)
+    for name, arr in (("k_n", ks), ("k_grasp", kg), ("F_int", fint)):
+        if not np.all(np.isfinite(arr)):
+            raise NonFiniteValueError(
+                f"{name} overflows double precision for this grasp (a value beyond 1.8e308): "
+                "give the lengths in smaller units")
+    return ks, kg, fint
+
+
+def _limiting(ks: np.ndarray, kg: np.ndarray) -> np.ndarray:
+    return np.where(kg > 0, np.argmax(ks, axis=0) + 1, 0)
+
+
+def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
+    """Run ``graspcompass k`` for the grasp ``g``; returns the exit status (0).
+
+    Raises
+    ------
+    ValueError
+        For a refused ``--theta`` or ``--external-force`` and values that
+        overflow a double (one line each on the command line).
+    """
+    out = sys.stdout if out is None else out
+    fe, fe_float = _fe(args.external_force)
+    exact, t = read_angles(args.theta)
+    if exact is None:
+        if args.exact:
+            raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
+                                     f"angles; --theta gives {t.size}")
+        if not args.quiet:
+            print(f"graspcompass: note: {t.size} angles: θ read in double precision (exactly "
+                  f"for at most {EXACT_ANGLES} angles)", file=sys.stderr)
+        _stream(args, g, t, fe_float, out)
+        return 0
+    if args.exact and len(exact) > EXACT_VALUES:
+        raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
+                                 f"angles; --theta gives {len(exact)}")
+    ks, kg, fint = _values(g, t, fe_float)
+    lim = _limiting(ks, kg)
+    records = []
+    for i, th in enumerate(exact):
+        rec: dict[str, Any] = {
+            "theta": str(th), "theta_deg": float(np.degrees(t[i])),
+            "k": [float(v) for v in ks[:, i]], "k_grasp": float(kg[i]), "F_int": float(fint[i]),
+            "limiting": int(lim[i]),
+        }
+        if args.exact:
+            rec["k_exact"] = [str(v) for v in g.k(th)]
+            rec["k_grasp_exact"] = str(g.k_grasp(th))
+            rec["F_int_exact"] = str(g.internal_force(th, fe))
+        records.append(rec)
+    if args.json:
+        print(json.dumps(records, indent=1), file=out)
+        return 0
+    rows = [[r["theta"], f"{r['theta_deg']:.4g}", *(f"{v:.6g}" for v in r["k"]),
+             f"{r['k_grasp']:.6g}", f"{r['F_int']:.6g}",
+             f"k{r['limiting']}" if r["limiting"] else "-"] for r in records]
+    print(table(rows, _HEAD), file=out)
+    if args.exact:
+        for r in records:
+            print(f"θ = {r['theta']}: k_grasp = {r['k_grasp_exact']}, F_int = {r['F_int_exact']}",
+                  file=out)
+    return 0
+
+
+def table(rows: list[list[str]], head: list[str]) -> str:
+    """Rows under a head, columns padded to their widest cell (the last is not padded)."""
+    widths = [max(3, *(len(r[i]) for r in [head, *rows])) for i in range(len(head))]
+    widths[-1] = max(3, len(head[-1]))
+    fmt = "  ".join(f"{{:<{w}}}" for w in widths[:-1]) + "  {}"
+    lines = [fmt.format(*head).rstrip(), fmt.format(*("-" * w for w in widths)).rstrip()]
+    lines += [fmt.format(*r).rstrip() for r in rows]
+    return "\n".join(lines)
+
+
+def _chunks(g: Any, t: np.ndarray, fe: float) -> Iterator[tuple[np.ndarray, ...]]:
+    for lo in range(0, t.size, CHUNK):
+        tc = t[lo:lo + CHUNK]
+        ks, kg, fint = _values(g, tc, fe)
+        yield tc, ks, kg, fint, _limiting(ks, kg)
+
+
+def _stream(args: argparse.Namespace, g: Any, t: np.ndarray, fe: float, out: IO[str]) -> None:
+    """Write the rows of the float path chunk by chunk (a table of fixed widths, or JSON)."""
+    if args.json:
+        out.write("[")
+        sep = "\n"
+        for tc, ks, kg, fint, lim in _chunks(g, t, fe):
+            records = [f' {{"theta": "{th!r}", "theta_deg": {d!r}, "k": [{a!r}, {b!r}, {c!r}, '
+                       f'{e!r}], "k_grasp": {kk!r}, "F_int": {f!r}, "limiting": {n}}}'
+                       for th, d, a, b, c, e, kk, f, n in zip(
+                           tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(),
+                           fint.tolist(), lim.tolist())]
+            out.write(sep + ",\n".join(records))
+            out.flush()
+            sep = ",\n"
+        out.write("\n]\n")
+        return
+    widths = [12, 8, 11, 11, 11, 11, 11, 11]
+    fmt = "  ".join(f"{{:<{w}}}" for w in widths) + "  {}"
+    out.write(fmt.format(*_HEAD).rstrip() + "\n")
+    out.write(fmt.format(*("-" * w for w in [*widths, 5])).rstrip() + "\n")
+    row = "  ".join(["%-12.9g", "%-8.4g", *["%-11.6g"] * 6]) + "  %s\n"
+    for tc, ks, kg, fint, lim in _chunks(g, t, fe):
+        names = [f"k{n}" if n else "-" for n in lim.tolist()]
+        out.write("".join([row % cells for cells in zip(
+            tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(), fint.tolist(),
+            names)]))
+        out.flush()

@@ -1,0 +1,140 @@
+"""Where output files go: one check before any work, one translation of write errors.
+
+:func:`check_target` refuses, with :class:`~graspcompass.errors.OutputError`
+and a one-line message naming the path, an output file that cannot be
+written: an empty name, a folder, a missing folder (folders are never made
+silently), a parent that is a file, no permission, a name that is too long.
+:func:`writing` turns an :class:`OSError` during the write (a full disk,
+``/dev/full``) into the same error.  This module is a leaf: it imports only
+:mod:`graspcompass.errors`.
+
+Examples
+--------
+>>> import tempfile, pathlib
+>>> folder = pathlib.Path(tempfile.mkdtemp())
+>>> check_target(folder / "d.svg").name
+'d.svg'
+>>> try:
+...     check_target(folder / "missing" / "d.svg")
+... except OutputError as err:
+...     print(str(err).split(": ", 1)[1])  # doctest: +ELLIPSIS
+the folder '...missing' does not exist (create it first)
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+
+from .errors import OutputError
+
+__all__ = ["check_folder", "check_target", "writing"]
+
+
+def _fail(path: object, why: str) -> OutputError:
+    return OutputError(f"cannot write {str(path)!r}: {why}")
+
+
+def _name_max(folder: Path) -> int:
+    try:
+        return os.pathconf(folder, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):  # pragma: no cover - not POSIX
+        return 255
+
+
+def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> Path:
+    """``folder`` as a :class:`~pathlib.Path` if files can be written in it.
+
+    Parameters
+    ----------
+    folder : str or path-like
+        An existing folder.
+    path : object, optional
+        The file to be written there, named in the message (default: ``folder``).
+
+    Raises
+    ------
+    OutputError
+        If ``folder`` does not exist, is not a folder or is not writable.
+    """
+    d = Path(folder)
+    shown = d if path is None else path
+    try:
+        exists, is_dir = d.exists(), d.is_dir()
+        writable = os.access(d, os.W_OK | os.X_OK)
+    except OSError as exc:  # a name too long, a loop of links
+        raise _fail(shown, _reason(exc)) from None
+    if not exists:
+        raise _fail(shown, f"the folder {str(d)!r} does not exist (create it first)")
+    if not is_dir:
+        raise _fail(shown, f"{str(d)!r} is not a folder")
+    if not writable:
+        raise _fail(shown, f"no permission to write in the folder {str(d)!r}")
+    return d
+
+
+def check_target(path: str | os.PathLike[str]) -> Path:
+    """``path`` as a :class:`~pathlib.Path` if a file can be written there.
+
+    Checks the name alone, before any work: the folder must exist (it is not
+    made), the path must not be a folder, and the file, if it exists, must be
+    writable.  A write can still fail later (a full disk): wrap it in
+    :func:`writing`.
+
+    Raises
+    ------
+    OutputError
+        With a one-line message naming the path and the reason.
+    """
+    text = os.fspath(path)
+    if isinstance(text, bytes):  # pragma: no cover - the CLI passes str
+        text = os.fsdecode(text)
+    if not text.strip():
+        raise OutputError("cannot write a file with an empty name")
+    if "\0" in text:
+        raise _fail(text.replace("\0", "\\0"), "the name contains a NUL character")
+    p = Path(text)
+    if text.endswith(("/", os.sep)) or p.name in ("", ".", ".."):
+        raise _fail(text, "that is a folder, not a file name")
+    folder = check_folder(p.parent, text)
+    if len(os.fsencode(p.name)) > _name_max(folder):
+        raise _fail(text, f"the file name is longer than {_name_max(folder)} bytes")
+    try:
+        is_dir, exists, writable = p.is_dir(), p.exists(), os.access(p, os.W_OK)
+    except OSError as exc:
+        raise _fail(text, _reason(exc)) from None
+    if is_dir:
+        raise _fail(text, "that is a folder, not a file")
+    if exists and not writable:
+        raise _fail(text, "no permission to write the file")
+    return p
+
+
+def _reason(exc: OSError) -> str:
+    if exc.errno == errno.ENOSPC:
+        return "no space left on the device"
+    if exc.strerror:
+        return exc.strerror[:1].lower() + exc.strerror[1:]
+    return str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+
+
+@contextmanager
+def writing(path: str | os.PathLike[str]) -> Iterator[None]:
+    """Turn an :class:`OSError` raised inside the block into :class:`OutputError`.
+
+    >>> try:
+    ...     with writing("/dev/full"):
+    ...         raise OSError(28, "No space left on device")
+    ... except OutputError as err:
+    ...     print(err)
+    cannot write '/dev/full': no space left on the device
+    """
+    try:
+        yield
+    except OutputError:
+        raise
+    except OSError as exc:
+        raise _fail(os.fspath(path), _reason(exc)) from None

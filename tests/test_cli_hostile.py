@@ -1,0 +1,293 @@
+"""Issue 10, item 5: the command line under hostile input.
+
+Every user error is one line on stderr and exit status 2, never a traceback;
+an output that cannot be written is a user error; option values and output
+paths are checked before any work; nothing hangs.  Each test names the input
+that failed before (a hang, a traceback, a silent folder, nan/inf with exit 0).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+import warnings
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import graspcompass
+from graspcompass import _cli_k, cli
+from graspcompass._cli_animate import bounded
+from graspcompass.cli import main
+
+SRC = str(Path(graspcompass.__file__).resolve().parents[1])
+MILLION = "0:360:0.00036deg"  # 10^6 angles, the documented maximum of parse_angles
+
+
+@pytest.fixture
+def cwd(tmp_path, monkeypatch):
+    """A fresh working folder: a folder ``adir``, a file ``afile``, folders ``x.png``, ``d.gif``."""
+    (tmp_path / "adir").mkdir()
+    (tmp_path / "afile").write_text("x")
+    (tmp_path / "x.png").mkdir()
+    (tmp_path / "d.gif").mkdir()
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+def files(root: Path) -> set[str]:
+    return {str(p.relative_to(root)) for p in root.rglob("*")}
+
+
+def refused(capsys, argv: list[str], fragment: str = "", bound: float | None = None) -> str:
+    """Run ``argv``: status 2, nothing on stdout, one line on stderr holding ``fragment``."""
+    start = time.perf_counter()
+    code = main(argv)
+    elapsed = time.perf_counter() - start
+    out, err = capsys.readouterr()
+    assert code == 2, (argv, out[-300:], err)
+    assert out == ""
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    assert fragment in err, err
+    if bound is not None:
+        assert elapsed < bound, f"{argv} took {elapsed:.2f} s"
+    return err
+
+
+# -- --theta: a million angles, exact and float paths -----------------------------------------
+def test_theta_million_streams_and_stops_at_a_closed_pipe():
+    """Was a hang (10^6 exact angles): now the rows stream; `| head` ends it cleanly."""
+    env = {**os.environ, "PYTHONPATH": SRC + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    proc = subprocess.Popen([sys.executable, "-m", "graspcompass", "k", "--theta", MILLION],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True,
+                            encoding="utf-8")
+    assert proc.stdout is not None
+    head = [proc.stdout.readline() for _ in range(4)]
+    proc.stdout.close()  # like `| head -4`
+    try:
+        code = proc.wait(timeout=120)
+    finally:
+        proc.kill()
+    err = proc.stderr.read() if proc.stderr else ""
+    assert head[0].split()[:3] == ["θ", "deg", "k1"]
+    assert head[2].split()[0] == "0" and float(head[3].split()[1]) == pytest.approx(0.00036)
+    assert code == 0, err
+    assert "Traceback" not in err and "note: 1000000 angles" in err
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_theta_counted_before_any_angle_is_made(capsys):
+    """More than the maximum is refused in well under a second, whatever the step."""
+    for theta in ("0:360:0.0001deg", "0:1:1e-300", "0:10**60:1", f"{MILLION},1",
+                  "0:1:1e-6,0:1:1e-6"):
+        refused(capsys, ["k", "--theta", theta], "at most 1000000", bound=1.0)
+    assert _cli_k.count_angles(MILLION) == 1_000_000
+    assert _cli_k.count_angles("0:360:30deg, pi/2, 0:pi:pi/4") == 12 + 1 + 4
+
+
+def test_float_path_agrees_with_the_exact_path(capsys):
+    """Above EXACT_ANGLES the values are the same numbers, with a note, as valid JSON."""
+    code = main(["k", "--preset", "table1a", "--theta", "0:1:1/2000", "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0 and "note: 2000 angles" in err
+    rows = json.loads(out)
+    assert len(rows) == 2000 and rows[0]["theta"] == "0.0"
+    code = main(["k", "--preset", "table1a", "--theta", "0, 1/2, 1999/2000", "--json"])
+    exact = json.loads(capsys.readouterr()[0])
+    for r, e in zip((rows[0], rows[1000], rows[1999]), exact):
+        assert r["k"] == pytest.approx(e["k"], rel=1e-12, abs=1e-12)
+        assert r["k_grasp"] == pytest.approx(e["k_grasp"]) and r["limiting"] == e["limiting"]
+    code = main(["-q", "k", "--theta", "0:1:1/2000"])
+    out, err = capsys.readouterr()
+    assert code == 0 and err == "" and len(out.splitlines()) == 2002
+
+
+def test_exact_values_are_bounded(capsys):
+    refused(capsys, ["k", "--theta", "0:360:1deg", "--exact"], "at most 72 angles", bound=2.0)
+    refused(capsys, ["k", "--theta", "0:1:1e-4", "--exact"], "at most 72 angles", bound=2.0)
+    refused(capsys, ["k", "--theta", "1," * 1500 + "1"], "longer than 2000", bound=1.0)
+
+
+# -- values beyond a double: no nan/inf with exit 0 ---------------------------------------------
+@pytest.mark.parametrize("argv, fragment", [
+    (["k", "--external-force", "1e309"], "external-force"),
+    (["k", "--external-force", "10**300*10**10"], ""),
+    (["k", "--theta", "10**300*10**10"], ""),
+    (["k", "--x1", "1e309"], ""),
+    (["k", "--y", "1e309"], ""),
+])
+def test_overflowing_values_are_refused(argv, fragment, capsys):
+    err = refused(capsys, argv, fragment)
+    assert "nan" not in err.split(":", 2)[-1].split() and "inf" not in err.split()
+
+
+# -- output paths: refused before any work -----------------------------------------------------
+@pytest.mark.parametrize("argv, fragment", [
+    (["draw", "--format", "pdf", "-o", "/dev/full"], "no space left"),  # was a zlib traceback
+    (["draw", "-o", "/dev/full", "--format", "png"], "no space left"),
+    (["export", "--format", "svg", "-o", "/dev/full"], "no space left"),
+    (["export", "--format", "json", "-o", "/dev/full"], "no space left"),
+    (["export", "--format", "ggb", "-o", "/dev/full"], "no space left"),
+    (["export", "--format", "tikz", "--fragment", "-o", "/dev/full"], "no space left"),
+])
+def test_full_device_is_one_line(argv, fragment, capsys, cwd):
+    refused(capsys, argv, fragment)
+
+
+@pytest.mark.parametrize("argv", [
+    ["draw", "-o", "missing/x.png"],
+    ["export", "-o", "missing/x.svg"],
+    ["animate", "--kind", "sweep", "-o", "missing/x.gif"],
+    ["verify", "--markdown", "missing/report.md"],
+    ["--out", "missing/out"],
+])
+def test_missing_folder_is_refused_and_nothing_made(argv, capsys, cwd):
+    """Was: folders made without a word.  Now: refused, naming the folder, in no time."""
+    before = files(cwd)
+    refused(capsys, argv, "the folder 'missing' does not exist", bound=2.0)
+    assert files(cwd) == before
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (["draw", "-o", "x.png"], "is a folder"),
+    (["draw", "-o", "adir/", "--format", "svg"], "a folder"),
+    (["export", "-o", "afile/x.svg"], "'afile' is not a folder"),
+    (["export", "--format", "svg", "-o", ""], "empty name"),
+    (["export", "-o", "y" * 300 + ".svg"], "longer than"),
+    (["export", "-o", "/proc/version/x.svg"], "not a folder"),
+    (["animate", "--kind", "sweep", "-o", "d.gif", "--frames", "2"], "'d.gif': that is a folder"),
+    (["draw", "-o", ""], "cannot tell the format of ''"),
+    (["animate", "-o", ""], "without extension"),
+    (["--out", "afile"], "'afile' is not a folder"),
+    (["--out", "/dev/null"], "not a folder"),
+    (["verify", "--markdown", "adir"], "a folder"),
+])
+def test_bad_output_paths(argv, fragment, capsys, cwd):
+    before = files(cwd)
+    refused(capsys, argv, fragment, bound=2.0)
+    assert files(cwd) == before
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
+def test_read_only_folder(capsys, cwd):
+    ro = cwd / "ro"
+    ro.mkdir()
+    ro.chmod(0o555)
+    try:
+        refused(capsys, ["export", "-o", "ro/x.svg"], "no permission", bound=2.0)
+        refused(capsys, ["--out", "ro/out"], "no permission", bound=2.0)
+    finally:
+        ro.chmod(0o755)
+
+
+def test_main_job_folder_is_made_and_said(capsys, cwd):
+    """The main job makes its --out folder itself (only that level), and says so."""
+    assert cli._out_folder("new", quiet=False) == Path("new") and (cwd / "new").is_dir()
+    assert "made the folder 'new'" in capsys.readouterr().out
+    cli._out_folder("new2", quiet=True)
+    assert capsys.readouterr().out == "" and (cwd / "new2").is_dir()
+
+
+def test_unicode_output_name(capsys, cwd):
+    assert main(["export", "-q", "-o", "é🙂.svg"]) == 0
+    assert (cwd / "é🙂.svg").read_text(encoding="utf-8").lstrip().startswith("<?xml")
+
+
+def test_root_quiet_reaches_subcommands(capsys, cwd):
+    assert main(["-q", "export", "-o", "q.svg"]) == 0
+    assert capsys.readouterr().out == ""
+
+
+# -- animation options: bounded, checked before any work ---------------------------------------
+@pytest.mark.parametrize("option, value", [
+    ("--fps", "1e-300"), ("--fps", "0"), ("--fps", "-1"), ("--fps", "nan"), ("--fps", "inf"),
+    ("--fps", "121"), ("--fps", "1j"), ("--dpi", "inf"), ("--dpi", "1"), ("--dpi", "1e6"),
+    ("--dpi", "nan"), ("--frames", "0"), ("--frames", "2147483648"), ("--frames", "1e3"),
+    ("--frames-per-step", "1000"), ("--frames-per-step", "0"), ("--weight", "0"),
+    ("--weight", "1e300"), ("--weight", "nan"), ("--frames", "9" * 5000),
+])
+def test_animation_bounds(option, value, capsys, cwd):
+    """Was: tracebacks (fps 1e-300, dpi inf, dpi 1) and hangs (frames 2^31)."""
+    err = refused(capsys, ["animate", "--kind", "sweep", "-o", "a.gif", option, value],
+                  f"argument {option}: must be", bound=1.0)
+    assert len(err) < 300
+    assert files(cwd) == {"adir", "afile", "x.png", "d.gif"}
+
+
+def test_animation_pixel_budget(capsys, cwd):
+    refused(capsys, ["animate", "--kind", "sweep", "--frames", "3600", "--dpi", "600",
+                     "-o", "a.gif"], "lower --dpi or --frames", bound=5.0)
+    assert not (cwd / "a.gif").exists()
+
+
+def test_animation_small_and_valid(capsys, cwd):
+    assert main(["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "--fps", "0.01",
+                 "-o", "s.gif", "-q"]) == 0
+    assert (cwd / "s.gif").stat().st_size > 100
+
+
+@given(st.floats(allow_nan=True, allow_infinity=True) | st.text(max_size=12))
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def test_bounded_accepts_exactly_the_interval(x):
+    import argparse
+
+    parse = bounded(float, 10, 600)
+    text = x if isinstance(x, str) else repr(x)
+    try:
+        value = parse(text)
+    except argparse.ArgumentTypeError as err:
+        assert "from 10 to 600" in str(err) and "\n" not in str(err)
+    else:
+        assert 10 <= value <= 600
+
+
+# -- crosscheck, titles, odd text: one line each -------------------------------------------------
+@pytest.mark.parametrize("argv, fragment", [
+    (["crosscheck", "--grasps", "2147483648"], "from 1 to 1000"),
+    (["crosscheck", "--thetas", "1000000000"], "from 1 to 3600"),
+    (["crosscheck", "--grasps", "1000", "--thetas", "1000"], "at most 36000"),
+    (["crosscheck", "--seed", "-1"], "from 0 to"),
+    (["crosscheck", "--grasps", "0"], "from 1 to 1000"),
+    (["export", "--title", "a\0b"], "printable"),
+    (["export", "--title", "x" * 100_000], "at most 200"),
+    (["k", "--phi1", "1\n2"], "cannot read"),
+    (["k\nx"], "invalid choice"),
+    (["draw", "--step", "9" * 5000], "invalid int"),
+    (["export", "--x1", "x" * 100_000], "longer than"),
+])
+def test_odd_values_one_line(argv, fragment, capsys, cwd):
+    refused(capsys, argv, fragment, bound=2.0)
+
+
+def test_long_messages_are_cut():
+    line = cli.one_line("a" * 10_000 + "\nsecond")
+    assert len(line) <= cli.MAX_MESSAGE and "10000 characters" in line
+    assert cli.one_line("x\x1c\u2028y", first=False) == "x\\x1c\\u2028y"
+
+
+def test_main_returns_instead_of_exiting(capsys):
+    assert main(["--help"]) == 0 and "exit status" in capsys.readouterr().out
+    assert main(["--bogus"]) == 2
+
+
+def test_internal_error_is_one_line_status_3(capsys, monkeypatch):
+    def broken(args):
+        raise TypeError("a bug\nwith two lines")
+
+    monkeypatch.setitem(cli._COMMANDS, "presets", broken)
+    assert main(["presets"]) == 3
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "internal error: TypeError: a bug" in err
+
+
+def test_no_warning_leaks(capsys):
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        refused(capsys, ["k", "--phi1", "1 is 1"], "cannot read")
+        refused(capsys, ["k", "--phi1", "'\\d'"], "cannot read")
+    assert not [w for w in caught if issubclass(w.category, SyntaxWarning)]
