@@ -209,6 +209,16 @@ def test_drag_P1_with_the_mouse(page: Page) -> None:
     assert_matches_python(page)
     # the drag is timed like a slider move
     assert len(page.js("graspcompass.timings()")) > 1
+    # P2 = (−x2, y) drags x2 and y
+    x0, y0 = page.js("graspcompass.toScreen('P2')")
+    mouse.move(x0, y0)
+    mouse.down()
+    mouse.move(x0 - 30, y0 + 20, steps=4)
+    mouse.up()
+    q = page.params()
+    assert q["x2"] > p["x2"] and q["y"] < p["y"] and q["x1"] == p["x1"]
+    assert page.get("P1") == [q["x1"], q["y"]]
+    assert_matches_python(page)
 
 
 def test_sliders_move_the_diagram(page: Page) -> None:
