@@ -76,3 +76,23 @@ def test_filter_refuses_exact_zero_in_disguise():
     assert exact._float_sign(s**2 + c**2 - 1) is None
     # 4 cos(pi/10)^2 - (10 + 2 sqrt5)/4 * ... : cos(pi/10)^2 = (5 + sqrt5)/8
     assert exact._float_sign(8 * c**2 - 5 - _R(sp.sqrt(5))) is None
+
+
+@settings(max_examples=200, deadline=None)
+@given(_poly, st.sampled_from([64, 200, 333]))
+def test_integer_balls_hold_the_true_value(poly, prec):
+    """exact._intervals (integer ball arithmetic) encloses the value, tightly."""
+    from mpmath import iv
+
+    saved = iv.prec
+    iv.prec = prec
+    try:
+        (box,) = exact._intervals(poly)
+    finally:
+        iv.prec = saved
+    v = _true_value(poly)
+    with mpmath.workdps(300):
+        lo, hi = (mpmath.mpf(e) for e in box._mpi_)
+        assert lo <= v <= hi, (poly, lo, v, hi)
+        magnitude = sum(abs(int(c.numerator)) / int(c.denominator) for c in poly.coeffs())
+        assert hi - lo <= mpmath.mpf(2) ** (-prec + 40) * (1 + magnitude) * 10**6
