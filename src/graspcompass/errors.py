@@ -25,6 +25,7 @@ __all__ = [
     "InputTooLargeError",
     "NonFiniteValueError",
     "OutputError",
+    "SymbolicValueError",
     "WrongTypeError",
 ]
 
@@ -51,6 +52,13 @@ class WrongTypeError(InputError):
 
 class InputTooLargeError(InputError):
     """Text, an array, a file or an exponent beyond the documented limits."""
+
+
+class SymbolicValueError(InputError, TypeError):
+    """A value with free symbols where a number is needed (a float θ on a symbolic grasp).
+
+    Also a :class:`TypeError`, as Python raises for ``float(sympy.Symbol("x"))``.
+    """
 
 
 class OutputError(GraspCompassError):

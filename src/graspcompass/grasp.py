@@ -23,6 +23,7 @@ from .errors import (
     GraspCompassError,
     InputError,
     NonFiniteValueError,
+    SymbolicValueError,
     WrongTypeError,
 )
 from .expr import ExpressionError
@@ -103,6 +104,10 @@ def _double(v: sp.Expr, what: str) -> float:
         out = float(v)
     except OverflowError:
         out = math.inf
+    except TypeError:
+        raise SymbolicValueError(f"{what} = {v} is not a number: the numeric path (a float θ) "
+                                 "needs numbers; give θ exactly or substitute values first"
+                                 ) from None
     if not math.isfinite(out):
         raise NonFiniteValueError(
             f"{what} = {_fmt(v)} is beyond double precision (about 1.8e308): the numeric "
@@ -196,6 +201,8 @@ class Grasp:
         self.numeric = any(has_float(v) for v in self.params.values())
         self.assumptions: tuple[sp.Basic, ...] = ()
         self._SC: tuple[np.ndarray, np.ndarray] | None = None  # float S_n, C_n, on demand
+        if self.numeric:
+            self._check_doubles()
         self._validate()
         # exact sines and cosines without nested radicals (generators where needed)
         self.s1, self.c1 = sincos(self.phi1)
@@ -287,6 +294,23 @@ class Grasp:
                 self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
         self.assumptions = tuple(assumed)
 
+    def _check_doubles(self) -> None:
+        """A grasp with a float parameter computes in doubles: every parameter must be one."""
+        for name, v in self.params.items():
+            if v.free_symbols:
+                raise InvalidGraspError(
+                    f"{name} = {v} is symbolic but other parameters are floats: give every "
+                    "parameter as a number, or all exactly (text such as 'pi/3')")
+            try:
+                finite = math.isfinite(float(v))
+            except OverflowError:
+                finite = False
+            if not finite:
+                raise NonFiniteParameterError(
+                    f"{name} = {_fmt(v)} is beyond double precision (about 1.8e308) and other "
+                    "parameters are floats, so the grasp computes in doubles: give every "
+                    "parameter exactly (text such as '1e309') instead")
+
     def _check_float_margins(self) -> None:
         """Refuse a float grasp within rounding of a bound of condition (1).
 
@@ -363,7 +387,12 @@ class Grasp:
     def _side(self, n: int) -> tuple[sp.Expr, sp.Expr]:
         """``(sin(φ ± ξ), cos(φ ± ξ)) / cos ξ`` of side n, free of ``cos ξ``."""
         if self.numeric:  # correctly rounded: cos φ ∓ μ sin φ cancels in double precision
-            return tuple(sp.Float(v) for v in side_floats(self.params, n))  # type: ignore
+            sides = side_floats(self.params, n)
+            if not all(math.isfinite(v) for v in sides):
+                raise NonFiniteValueError(
+                    f"the friction cone side {n} is beyond double precision (tan(φ ± ξ) "
+                    "overflows); give the parameters exactly (text such as 'pi/3')")
+            return tuple(sp.Float(v) for v in sides)  # type: ignore
         s, c, mu = (self.s1, self.c1, self.mu1) if n in (1, 3) else (self.s2, self.c2, self.mu2)
         sg = 1 if n in (1, 2) else -1
         return s + sg * c * mu, c - sg * s * mu
@@ -425,7 +454,9 @@ class Grasp:
             try:
                 S, C = closed_form_floats(self.params)
             except TypeError as exc:
-                raise TypeError("a symbolic grasp cannot be evaluated on numeric θ") from exc
+                raise SymbolicValueError(
+                    "a symbolic grasp cannot be evaluated on numeric θ; substitute values "
+                    "first (Grasp.subs) or give θ exactly") from exc
             except OverflowError:
                 S, C = [math.inf], [math.inf]
             if not all(abs(v) <= _HALF_MAX for v in (*S, *C)):  # also catches nan
