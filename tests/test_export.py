@@ -391,3 +391,22 @@ def test_cli_explore_without_display_is_a_one_line_error():
     with pytest.raises(ValueError) as err:
         run_explore(_parse("explore"), Grasp.preset("fig6"))
     assert "\n" not in str(err.value) and "cannot open the explorer window" in str(err.value)
+
+
+# ---------------------------------------------------------------------------
+# JSON files written by the command line, read back (issue 10, item 4)
+# ---------------------------------------------------------------------------
+@pytest.mark.parametrize("preset", PRESET_NAMES)
+def test_cli_json_files_reload_and_refuse_a_tampered_grasp(preset, tmp_path):
+    from graspcompass.errors import InputError
+    from graspcompass.export.json import InconsistentDocumentError
+
+    out = tmp_path / "c.json"
+    run_export(_parse("export", "--preset", preset, "-o", str(out), "-q"), Grasp.preset(preset))
+    text = out.read_text(encoding="utf-8")
+    assert dumps(loads(text)).strip() == text.strip()  # the same file again
+    doc = __import__("json").loads(text)
+    doc["grasp"]["x2"] = "7/5"  # the contact P2 moved, its steps not
+    with pytest.raises(InconsistentDocumentError) as err:
+        loads(__import__("json").dumps(doc))
+    assert isinstance(err.value, InputError) and str(err.value).startswith("steps[4] (P2)")

@@ -64,12 +64,16 @@ A file is outside input: :func:`loads` trusts nothing in it and refuses, with a
 4. **The grasp**: its numbers are read by :func:`~graspcompass.expr.parse_exact`
    (never ``sympify`` or ``eval``; its own limits apply: 200 characters,
    bounded exponents and sizes), floats and symbols are not mixed, and the
-   grasp must pass :class:`~graspcompass.Grasp`'s checks.  Its exact values may
-   use at most :data:`MAX_NUMBER_GENERATORS` distinct irrational numbers
-   (square roots of rationals of at most :data:`MAX_RADICAND_BITS` bits, or
-   ``sin``/``cos`` of an angle that is no multiple of π/12; no nested or higher
-   roots), at most 2 of them next to symbols, and at most
-   :data:`MAX_GENERATORS` generators in all (the fully symbolic grasp has 9).
+   grasp must pass :class:`~graspcompass.Grasp`'s checks.  The exact numbers the
+   construction computes with (x1, x2, y, μ1, μ2 and the sines and cosines of
+   φ1, φ2) may hold at most :data:`MAX_NUMBER_GENERATORS` distinct irrational
+   numbers: square roots of rationals of at most :data:`MAX_RADICAND_BITS` bits
+   (no nested or higher roots, no ``pi`` or ``atan`` in a length), or the
+   ``sin``/``cos`` that the kernel keeps for an angle such as 1 rad or 3π/5,
+   which then go with rational numbers only.  Next to symbols at most 2 square
+   roots, and at most :data:`MAX_GENERATORS` generators in all (the fully
+   symbolic grasp has 9: x1, x2, y, μ1 or tan ξ1, μ2 or tan ξ2 and the sines
+   and cosines of φ1, φ2).
    The derived friction value (ξ = atan μ or μ = tan ξ) must be the one the
    grasp gives.
 5. **Consistency**: the construction is rebuilt from the grasp with the paper's
@@ -132,7 +136,7 @@ MAX_MAGNITUDE = 1e15
 #: Largest ``bits`` of a ``{"float": "p/q", "bits": n}`` number.
 MAX_FLOAT_BITS = 1024
 #: Most distinct irrational numbers (square roots, sin/cos atoms) in an exact grasp.
-MAX_NUMBER_GENERATORS = 4
+MAX_NUMBER_GENERATORS = 3
 #: Most generators (symbols, and sin/cos of symbols, plus the above) of a grasp.
 MAX_GENERATORS = 9
 #: Most bits of the numerator and of the denominator under a square root.
@@ -508,7 +512,8 @@ def _grasp(rec: dict[str, Any]) -> Grasp:
         raise JSONDocumentError(f"grasp: floats ({', '.join(floats)}) and symbols "
                                 f"({', '.join(syms)}) cannot be mixed in one grasp")
     for k, v in vals.items():
-        if not v.free_symbols and abs(sp.N(v, 15)) > MAX_MAGNITUDE:
+        size = sp.N(abs(v), 15) if not v.free_symbols else sp.S.Zero
+        if not (size.is_Number and size <= MAX_MAGNITUDE):
             raise _fail(f"grasp.{k}", f"expected a number at most {MAX_MAGNITUDE:g}", rec[k],
                         JSONTooLargeError)
     fr = rec["friction"]
@@ -554,8 +559,16 @@ def _check_generators(g: Grasp) -> None:
             if isinstance(atom, sp.Symbol):
                 symbolic.add(atom)
             elif isinstance(atom, (sp.Function, sp.NumberSymbol)):
-                (symbolic if atom.free_symbols else numbers).add(atom)
                 walk.skip()
+                if atom.free_symbols:
+                    symbolic.add(atom)
+                elif isinstance(atom, (sp.sin, sp.cos)):
+                    numbers.add(atom)
+                else:
+                    raise JSONDocumentError(
+                        f"grasp: {name} = {_show(str(v))} uses {_show(str(atom))}: lengths and "
+                        "friction coefficients of exact grasps are rational numbers or square "
+                        "roots of them (give floats for the numeric path)")
             elif isinstance(atom, sp.Pow) and not atom.exp.is_Integer:
                 walk.skip()
                 if atom.free_symbols:
@@ -571,13 +584,18 @@ def _check_generators(g: Grasp) -> None:
                         f"grasp: {name} uses {_show(str(atom))}, a square root of a number of "
                         f"more than {MAX_RADICAND_BITS} bits")
                 numbers.add(sp.sqrt(base))
+    trig = {n for n in numbers if isinstance(n, (sp.sin, sp.cos))}
+    shown = _show(", ".join(sorted(str(n) for n in numbers)))
     limit = _MAX_NUMBER_GENERATORS_WITH_SYMBOLS if symbolic else MAX_NUMBER_GENERATORS
     if len(numbers) > limit:
-        shown = ", ".join(sorted(str(n) for n in numbers))
         raise JSONTooLargeError(
-            f"grasp: its values use {len(numbers)} distinct irrational numbers "
-            f"({_show(shown)}); at most {limit} are allowed"
-            + (" next to symbols" if symbolic else ""))
+            f"grasp: its values use {len(numbers)} distinct irrational numbers ({shown}); at "
+            f"most {limit} are allowed" + (" next to symbols" if symbolic else ""))
+    if trig and (symbolic or numbers - trig):
+        raise JSONTooLargeError(
+            f"grasp: its values use sin/cos of an angle that is no multiple of pi/12 next to "
+            f"{'symbols' if symbolic else 'other irrational numbers'} ({shown}); this is not "
+            "allowed (it could take minutes to construct)")
     if len(numbers) + len(symbolic) > MAX_GENERATORS:
         shown = ", ".join(sorted(str(n) for n in numbers | symbolic))
         raise JSONTooLargeError(f"grasp: its values use {len(numbers) + len(symbolic)} "
