@@ -121,6 +121,40 @@ def test_a_dozen_square_roots_is_refused_at_once(table1a):
         assert msg.startswith("grasp:") and "distinct irrational numbers" in msg
 
 
+def test_free_replay_of_a_dozen_square_roots_is_refused_at_once(table1a):
+    # before: a grasp-less file of six steps (points with sums of square roots, two
+    # circles and their intersection) was replayed as written and ran for minutes
+    r = [f"sqrt({p})" for p in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37)]
+    step = copy.deepcopy(table1a["steps"][0])
+    steps = []
+    for i, (name, op, inputs, params) in enumerate([
+            ("O", "point", [], ["0", "0"]),
+            ("A", "point", [], ["+".join(r[0:3]), "+".join(r[3:6])]),
+            ("B", "point", [], ["+".join(r[6:9]), "+".join(r[9:12])]),
+            ("c1", "circle_on_diameter", ["O", "A"], []),
+            ("c2", "circle_on_diameter", ["O", "B"], []),
+            ("X", "second_intersection", ["c1", "c2", "O"], [])]):
+        steps.append(dict(step, index=i, name=name, op=op, inputs=inputs, params=params))
+    doc = dict(table1a, steps=steps, grasp=None)
+    assert "without a grasp" in refused(json.dumps(doc))
+    doc["grasp"] = table1a["grasp"]  # with a grasp: the first step not the recipe's is named
+    assert refused(json.dumps(doc), InconsistentDocumentError).startswith("steps[1] (A)")
+
+
+def test_irrational_numbers_the_kernel_is_slow_with_are_refused(table1a):
+    # sin/cos of 1 rad next to square roots took 8 s and more to construct
+    text = edited(table1a, ("grasp", "phi1"), "1")
+    doc = json.loads(text)
+    doc["grasp"]["x1"] = "sqrt(2)"
+    assert "sin/cos of an angle" in refused(json.dumps(doc), JSONTooLargeError)
+    doc["grasp"]["x1"] = "2"
+    doc["grasp"]["mu1"] = "pi/4"
+    assert "uses pi" in refused(json.dumps(doc))
+    msg = refused(edited(table1a, ("grasp", "mu1"), "sqrt(2)+sqrt(3)+sqrt(5)+sqrt(7)"),
+                  JSONTooLargeError)
+    assert "4 distinct irrational numbers" in msg and "at most 3" in msg
+
+
 def test_tampered_grasp_is_refused_naming_the_step(fig6_text):
     # before: accepted; re-exported it gave a .ggb and an .svg of different grasps
     doc = json.loads(fig6_text)

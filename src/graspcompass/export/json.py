@@ -566,8 +566,8 @@ def _check_generators(g: Grasp) -> None:
                     numbers.add(atom)
                 else:
                     raise JSONDocumentError(
-                        f"grasp: {name} = {_show(str(v))} uses {_show(str(atom))}: lengths and "
-                        "friction coefficients of exact grasps are rational numbers or square "
+                        f"grasp: {name} = {_show(str(v))} uses {str(atom)[:_MAX_SHOWN]}: lengths "
+                        "and friction coefficients of exact grasps are rational numbers or square "
                         "roots of them (give floats for the numeric path)")
             elif isinstance(atom, sp.Pow) and not atom.exp.is_Integer:
                 walk.skip()
