@@ -146,6 +146,8 @@ def clear_caches() -> None:
     _gen_interval.cache_clear()
     _gen_ball.cache_clear()
     _gen_float.cache_clear()
+    _relations.cache_clear()
+    _has_opaque.cache_clear()
     trig.sincos.cache_clear()
     trig._reference.cache_clear()
 
@@ -363,6 +365,12 @@ def _relations(R) -> tuple[list, list, list]:
     return root_rels, trig_rels, roots
 
 
+@lru_cache(maxsize=4096)
+def _has_opaque(R) -> bool:
+    """Whether ring R has numeric generators other than prime square roots."""
+    return any(g.is_number and _gen_key(g)[0] != 0 for g in R.symbols)
+
+
 def _finish(R, n, d) -> sp.Expr:
     """Reduce n/d modulo the relations, clear roots from d, cancel; remember the result.
 
@@ -378,7 +386,7 @@ def _finish(R, n, d) -> sp.Expr:
         n, d = n.rem(root_rels), d.rem(root_rels)
     if not d:
         raise ZeroDivisionError("division by zero")
-    opaque = any(g.is_number and _gen_key(g)[0] != 0 for g in R.symbols)
+    opaque = _has_opaque(R)
     n, d = _clear_roots(n, d, roots, root_rels, opaque)
     if d.is_ground:
         n, d = n.quo_ground(d.LC), R.one
@@ -908,8 +916,25 @@ class Frac:
     def __truediv__(self, other: Frac) -> Frac:
         if not other.n:
             raise ZeroDivisionError("division by zero")
-        return self * Frac(other.R, other.d, other.n) if other.R is not None else \
-            self * Frac(None, 1 / other.n, sp.Integer(1))
+        if other.R is None:
+            return self * Frac(None, 1 / other.n, sp.Integer(1))
+        return self * other.inverse()
+
+    def inverse(self) -> Frac:
+        """``1 / self`` with the square roots cleared from its denominator at once.
+
+        Done here, once, a quotient used twice (the parameter t of a meet, for both
+        coordinates) does not have its roots cleared again in every :meth:`expr`.
+        """
+        R = self.R
+        root_rels, _, roots = _relations(R)
+        n, d = self.d, self.n
+        if roots:
+            n, d = n.rem(root_rels), d.rem(root_rels)
+            if not d:
+                raise ZeroDivisionError("division by zero")
+            n, d = _clear_roots(n, d, roots, root_rels, _has_opaque(R))
+        return Frac(R, n, d)
 
     def is_zero(self) -> bool | None:
         """Whether the value is 0: True, False, or None when undecidable (symbols).
