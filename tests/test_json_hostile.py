@@ -424,9 +424,15 @@ def mutated(draw: st.DrawFn, doc: dict[str, Any]) -> dict[str, Any]:
         parent = doc
         for key in head:
             parent = parent[key]
-        how = draw(st.sampled_from(["delete", "replace", "swap"]))
+        how = draw(st.sampled_from(["delete", "replace", "swap", "borrow"]))
         if how == "delete":
             del parent[last]
+        elif how == "borrow":  # a value of the same document, from another place
+            *head2, last2 = draw(st.sampled_from(paths))
+            source = doc
+            for key in head2:
+                source = source[key]
+            parent[last] = copy.deepcopy(source[last2])
         elif how == "replace":
             parent[last] = draw(_JSON)
         else:
@@ -435,12 +441,26 @@ def mutated(draw: st.DrawFn, doc: dict[str, Any]) -> dict[str, Any]:
 
 
 _DOC = to_document(internal_force_diagram(Grasp.preset("table1a")))
+_FLOAT_DOC = to_document(internal_force_diagram(
+    Grasp(1.0, 1.3, 0.5, 1.2, 1.4, mu1=0.7, mu2=sp.Float(0.8, 30))))
+_EXAMPLES = int(os.environ.get("GRASPCOMPASS_FUZZ_EXAMPLES", "120"))
 
 
-@settings(max_examples=int(os.environ.get("GRASPCOMPASS_FUZZ_EXAMPLES", "120")), deadline=None,
-          database=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(max_examples=_EXAMPLES, deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(mutated(_DOC))
 def test_mutated_documents_are_refused_or_re_export_identically(doc):
+    _refused_or_the_same(doc)
+
+
+@settings(max_examples=max(_EXAMPLES // 2, 10), deadline=None, database=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(mutated(_FLOAT_DOC))
+def test_mutated_float_documents_are_refused_or_re_export_identically(doc):
+    _refused_or_the_same(doc)
+
+
+def _refused_or_the_same(doc: dict[str, Any]) -> None:
     text = json.dumps(doc, ensure_ascii=False)
     with no_hang():
         try:
