@@ -297,6 +297,11 @@ MALFORMED: list[tuple[str, Any, str]] = [
     ("NUL in a text", lambda d: edited(d, ("grasp", "title"), "a\x00b"), "grasp.title: control"),
     ("unicode junk name", lambda d: edited(d, ("steps", 0, "name"), "O\u202e"),
      "steps[0].name: expected a step name"),
+    ("newline after a name", lambda d: edited(d, ("steps", 0, "name"), "O\n"),
+     "steps[0].name: expected a step name"),
+    ("unicode digits in a float", lambda d: edited(d, ("grasp", "x1"),
+                                                   {"float": "\u0663", "bits": 53}),
+     "grasp.x1.float: expected a fraction"),
     ("long title", lambda d: edited(d, ("grasp", "title"), "t" * 5000),
      "grasp.title: a text of 5000 characters"),
     ("many steps", lambda d: edited(d, ("steps",), [d["steps"][0]] * 1000),
@@ -325,6 +330,13 @@ def test_size_errors_are_also_input_too_large(table1a):
         loads(" " * (MAX_BYTES + 1))
     with pytest.raises(InputTooLargeError):
         loads(edited(table1a, ("steps",), [table1a["steps"][0]] * 100))
+
+
+def test_huge_python_ints_in_a_document_are_refused(table1a):
+    doc = copy.deepcopy(table1a)
+    doc["steps"][0]["index"] = 10**5000
+    with no_hang(), pytest.raises(JSONTooLargeError, match=r"steps\[0\]\.index"):
+        from_document(doc)
 
 
 def test_a_cyclic_python_document_is_refused(table1a):
