@@ -332,7 +332,7 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     conds = _nonzero_frac(side_f, NoIntersectionError, tangent, c1, c2)
     # mirror image of `known` in the line of centres: known - 2 (side / |w|^2) perp(w),
     # reduced piece by piece (small gcds beat one large one)
-    tf = Frac.of((Frac.of(sp.Integer(2)) * side_f / (wx * wx + wy * wy)).expr())
+    tf = (Frac.of(sp.Integer(2)) * side_f / (wx * wx + wy * wy)).reduced()
     return Point((kx0 + tf * wy).expr(), (ky0 - tf * wx).expr(), _merge(c1, c2, known) | conds)
 
 

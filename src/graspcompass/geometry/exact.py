@@ -372,7 +372,17 @@ def _has_opaque(R) -> bool:
 
 
 def _finish(R, n, d) -> sp.Expr:
-    """Reduce n/d modulo the relations, clear roots from d, cancel; remember the result.
+    """The canonical sympy expression of n/d (:func:`_reduce`); remember it."""
+    n, d = _reduce(R, n, d)
+    out = n.as_expr() / d.as_expr() if d != R.one else n.as_expr()
+    if len(_MEMO) > 100_000:
+        _MEMO.clear()
+    _MEMO[out] = (R, n, d)
+    return out
+
+
+def _reduce(R, n, d) -> tuple:
+    """Reduce n/d modulo the relations, clear roots from d, cancel.
 
     Square roots are always reduced (``sqrt(p)**2 = p``) and cleared from the
     denominator.  The trigonometric relations ``s**2 + c**2 = 1`` form a Groebner
@@ -409,11 +419,7 @@ def _finish(R, n, d) -> sp.Expr:
         n, d = n.quo_ground(d.LC), R.one
     if d.LC < 0:
         n, d = -n, -d
-    out = n.as_expr() / d.as_expr() if d != R.one else n.as_expr()
-    if len(_MEMO) > 100_000:
-        _MEMO.clear()
-    _MEMO[out] = (R, n, d)
-    return out
+    return n, d
 
 
 _U = 2.0**-53  # unit roundoff of IEEE double
@@ -979,6 +985,12 @@ class Frac:
         if None not in fs:
             return fs[0] * fs[1]
         return decide_sign(self.expr())
+
+    def reduced(self) -> Frac:
+        """The same value in the canonical form of :meth:`expr`, without building it."""
+        if self.R is None:
+            return self
+        return Frac(self.R, *_reduce(self.R, self.n, self.d))
 
     def expr(self) -> sp.Expr:
         """The canonical sympy expression of this value (as :func:`canon` gives it)."""
