@@ -57,6 +57,7 @@ NUMBERS = [
     "atan(10**30)", "0.1", "100", "1\n2", "1 is 1", "'\\d'", "__import__('os')",
     "().__class__", "x" * 100_000, "1" * 4301, "sqrt(sqrt(2))", "°", "deg", "1°",
 ]
+REFUSED = ["nan", "inf", "1j", "abc", "1/0", "", "asin(2)", "-1", "0", "1e1000", "\x00"]
 INTS = ["-1", "0", "1", "2", "3", "1000000000", "-999999999999", "1e3", "nan", "9" * 5000,
         "inf", "x", "", "10", "44", "-44", "2147483648", "0x10", "1_0", "٣"]
 FLOATS = ["1e-300", "0", "-1", "nan", "inf", "-inf", "1e300", "1e309", "0.001", "1", "20",
@@ -64,17 +65,20 @@ FLOATS = ["1e-300", "0", "-1", "nan", "inf", "-inf", "1e300", "1e309", "0.001", 
 THETAS = [
     "0:360:1e-300deg", "0:1e300:1", "0:360:0.0001deg", "0:2*pi:pi/5000000", "1e309", "nan",
     "0:inf:1", ":", "::", "0:1:1:1", "0:10**64:1", "0:360:30deg", "pi/2", "0:2*pi:pi/4",
-    "0:1:1/1500", "1e300", "1e-300", "10**64", "0:10**60:10**54", "0:360:1deg", "x", "",
-    "0:360:-1deg", "0:pi:pi/4, 30deg", "-1e300:1e300:1e295", "0:1e-300:1e-306", "2**64",
+    "0:1:1/1500", "1e300", "1e-300", "10**64", "0:10**60:10**53", "0:360:1deg", "x", "",
+    "0:360:-1deg", "0:pi:pi/4, 30deg", "-1e300:1e300:1e293", "0:1e-300:1e-307", "2**64",
     "cos(10**60)", "0:1:1e-6,0:1:1e-6", ",".join(["1"] * 600), "1," * 1500 + "1",
     "0:90deg:1", "0:1:1j", "atan2(1, 2), 0:1:0.5", "0:1:0.5deg", "10**300*10**10",
 ]
+# "0:1:1/1500" takes the float path (1500 rows); a million valid rows take seconds: not here.
 GRASP_OPTIONS = ["--x1", "--x2", "--y", "--phi1", "--phi2", "--mu1", "--mu2", "--xi1", "--xi2"]
 PRESETS = ["fig6", "table1a", "table1b", "table1c", "nope", ""]
-PATHS = ["/dev/full", "/dev/null", "missing/x.{e}", "adir", "adir/", "afile/x.{e}",
+PATHS = ["/dev/full", "full.{e}", "/dev/null", "missing/x.{e}", "adir", "adir/", "afile/x.{e}",
          "ro/x.{e}", "é🙂.{e}", "y" * 300 + ".{e}", "\x00.{e}", "", "x.{e}",
          "/proc/version/x.{e}", "a/b/x.{e}", "x", "x.bogus", "adir/y.{e}", "~/x.{e}",
          "x.{e}/", " .{e}", "dir.{e}", "-", "/nonexistent-graspcompass/x.{e}"]
+REFUSED_PATHS = ["missing/x.md", "adir", "adir/", "afile/x.md", "", "\x00.md", "y" * 300,
+                 "/proc/version/x.md", "a/b/x.md", "x.md/", "dir.md", "/nonexistent-gc/x.md"]
 EXTENSIONS = {"draw": ["png", "svg", "pdf"], "export": ["ggb", "tex", "svg", "json", "html"],
               "animate": ["gif", "html", "mp4"], "verify": ["md"]}
 
@@ -120,8 +124,8 @@ def argv_for(r: random.Random) -> list[str]:
     if command == "explore":  # no display: always refused, after the grasp is read
         return argv + _grasp(r) + junk
     if command == "verify":  # a valid run takes seconds: refused options only
-        return argv + r.choice([["--markdown", _path(r, "verify")], ["--bogus"],
-                                ["--certify", "--x1", r.choice(NUMBERS[:20])]]) + \
+        return argv + r.choice([["--markdown", r.choice(REFUSED_PATHS)], ["--bogus"],
+                                ["--certify", "--x1", r.choice(REFUSED)]]) + \
             ["--preset", "nope"] * (r.random() < 0.5) + junk
     if command == "crosscheck":
         for option in ("--grasps", "--thetas", "--seed"):
@@ -145,13 +149,15 @@ def argv_for(r: random.Random) -> list[str]:
         if r.random() < 0.3:
             argv += ["--title", r.choice([*NUMBERS, "<script>", "}{\\", "a\tb"])]
         return argv + ["--fragment"] * (r.random() < 0.2) + ["-q"] + junk
-    argv += ["--kind", r.choice(["sweep", "orientation", "construction", "spin"])]
+    # a valid construction animation has hundreds of frames (seconds): its options are
+    # checked by the same code as the sweep's
+    argv += ["--kind", r.choice(["sweep", "orientation", "spin"])]
     cheap = {"--frames": "2", "--dpi": "10", "--frames-per-step": "1"}
     for option, pool in (("--fps", FLOATS), ("--frames", INTS), ("--frames-per-step", INTS),
                          ("--weight", FLOATS), ("--dpi", FLOATS)):
         if mutate and r.random() < 0.3:
             value = r.choice(pool)
-            if option in cheap and value.isdigit() and int(value) > 100:
+            if option in cheap and value.isdigit() and len(value) < 12 and int(value) > 100:
                 value = str(int(value) + 10**9)  # refused; a valid big value takes minutes
             argv += [option, value]
         elif option in cheap:
@@ -178,6 +184,8 @@ def workdir(tmp_path, monkeypatch):
     for name in ("adir", "ro", "dir.png", "dir.svg", "dir.gif", "dir.ggb", "dir.md"):
         (tmp_path / name).mkdir()
     (tmp_path / "afile").write_text("x")
+    for ext in {e for exts in EXTENSIONS.values() for e in exts}:
+        (tmp_path / f"full.{ext}").symlink_to("/dev/full")  # a good name, a full disk
     (tmp_path / "ro").chmod(0o555)
     monkeypatch.chdir(tmp_path)
     yield tmp_path

@@ -139,6 +139,17 @@ def test_full_device_is_one_line(argv, fragment, capsys, cwd):
     refused(capsys, argv, fragment)
 
 
+def test_full_disk_behind_a_good_name(capsys, cwd):
+    """A write that fails midway (here: a link to /dev/full) is one line, for every writer."""
+    for ext in ("gif", "html", "svg", "md"):
+        (cwd / f"full.{ext}").symlink_to("/dev/full")
+    for argv in (["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o", "full.gif"],
+                 ["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o",
+                  "full.html"],
+                 ["export", "-o", "full.html"]):
+        refused(capsys, argv, "no space left on the device")
+
+
 @pytest.mark.parametrize("argv", [
     ["draw", "-o", "missing/x.png"],
     ["export", "-o", "missing/x.svg"],
@@ -291,3 +302,37 @@ def test_no_warning_leaks(capsys):
         refused(capsys, ["k", "--phi1", "1 is 1"], "cannot read")
         refused(capsys, ["k", "--phi1", "'\\d'"], "cannot read")
     assert not [w for w in caught if issubclass(w.category, SyntaxWarning)]
+
+
+def test_main_job_checks_every_target_first(capsys, cwd):
+    (cwd / "adir" / "fig6-diagram.svg").mkdir()
+    before = files(cwd)
+    refused(capsys, ["--out", "adir"], "'adir/fig6-diagram.svg': that is a folder", bound=2.0)
+    assert files(cwd) == before
+
+
+# -- the API under the command line: export() and save_figure() ----------------------------------
+def test_export_refuses_a_missing_folder_and_a_full_disk(tmp_path):
+    from graspcompass import Grasp, internal_force_diagram
+    from graspcompass.errors import OutputError
+    from graspcompass.export import export
+
+    c = internal_force_diagram(Grasp.preset("table1a"))
+    with pytest.raises(OutputError, match=r"the folder .*missing' does not exist"):
+        export(c, tmp_path / "missing" / "x.svg")
+    assert not (tmp_path / "missing").exists()
+    for fmt in ("svg", "json", "ggb", "tikz"):
+        with pytest.raises(OutputError, match="no space left"):
+            export(c, "/dev/full", fmt)
+
+
+def test_save_figure_full_disk_is_an_output_error():
+    """Was: zlib.error from matplotlib's PDF writer after ENOSPC."""
+    from matplotlib.figure import Figure
+
+    from graspcompass.errors import OutputError
+    from graspcompass.render import save_figure
+
+    for fmt in ("pdf", "png", "svg"):
+        with pytest.raises(OutputError, match="'/dev/full': no space left"):
+            save_figure(Figure(), "/dev/full", format=fmt)
