@@ -336,3 +336,30 @@ def test_save_figure_full_disk_is_an_output_error():
     for fmt in ("pdf", "png", "svg"):
         with pytest.raises(OutputError, match="'/dev/full': no space left"):
             save_figure(Figure(), "/dev/full", format=fmt)
+
+
+# -- the float path reads ranges as the parser does -------------------------------------------
+_PARTS = st.sampled_from(["0", "1", "-1", "1/3", "pi", "pi/4", "2*pi", "0.25", "10", "-7/2",
+                          "sqrt(2)", "1e-2", "360", "45", "atan2(1, 2)", "-pi/6"])
+
+
+@given(start=_PARTS, stop=_PARTS, step=_PARTS, unit=st.sampled_from(["", "deg", " deg", "°"]),
+       single=st.sampled_from(["", ", pi/2", ", 30deg", ", atan2(1, 3)"]))
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def test_float_path_reads_ranges_like_the_parser(start, stop, step, unit, single):
+    """count_angles and the float path agree with parse_angles wherever it accepts the text."""
+    import numpy as np
+
+    from graspcompass.expr import parse_angles
+
+    text = f"{start}:{stop}:{step}{unit}{single}"
+    count = _cli_k.count_angles(text)
+    if count > 2000:  # the parser would take seconds to make them exactly
+        return
+    try:
+        exact = parse_angles(text)
+    except ValueError:
+        return
+    assert count == len(exact)
+    floats = _cli_k._float_angles(text)
+    assert np.allclose(floats, [float(v) for v in exact], rtol=1e-12, atol=1e-12)
