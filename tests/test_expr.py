@@ -468,7 +468,7 @@ def test_no_warning_escapes(text: str) -> None:
         ("sin(10**60)", str(MAX_ARGUMENT_BITS)),
         ("asin(1/10**39)", str(MAX_ARGUMENT_BITS)),
         ("+".join(f"sqrt(1e309+{i})" for i in range(1, 10)), str(MAX_WORK_BITS)),
-        ("atan(sin(" * 8 + "1/3" + "))" * 8, str(MAX_NODES)),
+        ("+".join(f"tan({k}*pi/120)" for k in (1, 7, 11, 13, 17)), str(MAX_NODES)),
         ("sqrt(sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6)))", "cannot decide the sign"),
     ],
 )
@@ -533,3 +533,109 @@ def test_real_sign() -> None:
     assert real_sign(sympy.sqrt(2) - R(99, 70)) == -1  # 99/70 = 1.414285... > 1.414213...
     assert real_sign(sympy.Integer(0)) == 0
     assert real_sign(sympy.sqrt(2) + sympy.sqrt(3) - sympy.sqrt(5 + 2 * sympy.sqrt(6))) is None
+
+
+# --------------------------------------------------------------------------- fuzz
+# Random token strings from the grammar, mutated with junk.  Bounded: about three seconds by
+# default; set GRASPCOMPASS_FUZZ_SECONDS for a longer run.  Each call runs under a 5 s alarm
+# (hang detection, not a speed assertion).  Every text must be read (a finite real sympy
+# value) or refused with an ExpressionError, without a warning.
+
+_FUZZ_ATOMS = ["0", "1", "2", "3", "7", "10", "64", "65", "0.5", "1/3", "2/3", "-1", "(-1)",
+               "(-8)", "1e-5", "1e308", "1e309", "1e-309", "1e400", "9" * 38, "9" * 60,
+               "(2**64-1)", "0x" + "f" * 32, "pi", "deg", "sqrt(2)", "(1/2)", "1.000000001"]
+_FUZZ_FUNCTIONS = ["sqrt", "sin", "cos", "tan", "asin", "acos", "atan"]
+_FUZZ_OPERATORS = ["+", "-", "*", "/", "**", "**", "**(1/2)*", "**(-1/3)*"]
+_FUZZ_JUNK = [*"()+-*/.,eE_ 0123456789°jx'\"[]{}:;=<>!&|^~%@#\\\n\t", "deg", "pi", "**",
+              "lambda", "if", "else", "not", "in", "is", "for", "0x", "1e", "__", "\x00", "é"]
+
+
+def _fuzz_text(rng, depth: int) -> str:
+    if depth <= 0 or rng.random() < 0.2:
+        return rng.choice(_FUZZ_ATOMS)
+    r = rng.random()
+    if r < 0.3:
+        return f"{rng.choice(_FUZZ_FUNCTIONS)}({_fuzz_text(rng, depth - 1)})"
+    if r < 0.35:
+        return f"atan2({_fuzz_text(rng, depth - 1)},{_fuzz_text(rng, depth - 1)})"
+    if r < 0.55:  # a chain: 1+2+3... or 2**2**2...
+        op = rng.choice(_FUZZ_OPERATORS)
+        return op.join(_fuzz_text(rng, 0 if rng.random() < 0.8 else depth - 1)
+                       for _ in range(rng.randint(2, 30)))
+    if r < 0.6:  # a nest: sin(sin(sin(...)))
+        n, f = rng.randint(2, 40), rng.choice([*_FUZZ_FUNCTIONS, "-", "+", "-("])
+        opener = f + "(" if f.isalpha() else f
+        closer = ")" if f.isalpha() or f == "-(" else ""
+        return opener * n + _fuzz_text(rng, depth - 1) + closer * n
+    if r < 0.95:
+        op = rng.choice(_FUZZ_OPERATORS)
+        return f"({_fuzz_text(rng, depth - 1)}){op}({_fuzz_text(rng, depth - 1)})"
+    return f"-{_fuzz_text(rng, depth - 1)}"
+
+
+def _mutate(rng, text: str) -> str:
+    chars = list(text)
+    for _ in range(rng.randint(1, 4)):
+        i, r = rng.randint(0, len(chars)), rng.random()
+        if r < 0.4:
+            chars.insert(i, rng.choice(_FUZZ_JUNK))
+        elif chars:
+            j = min(i, len(chars) - 1)
+            if r < 0.7:
+                del chars[j]
+            else:
+                chars[j] = rng.choice(_FUZZ_JUNK)
+    return "".join(chars)
+
+
+def test_parser_fuzz() -> None:
+    import os
+    import random
+    import time
+    import warnings
+
+    seconds = float(os.environ.get("GRASPCOMPASS_FUZZ_SECONDS", "3"))
+    seed = int(os.environ.get("GRASPCOMPASS_FUZZ_SEED", "10"))
+    rng = random.Random(seed)
+    end, runs, slowest = time.monotonic() + seconds, 0, (0.0, "")
+    while time.monotonic() < end:
+        text = _fuzz_text(rng, rng.randint(1, 5))
+        if rng.random() < 0.3:
+            text = _mutate(rng, text)
+        text = text[: MAX_LENGTH + rng.choice([0, 0, 0, 5])]
+        start = time.perf_counter()
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            escaped = _quick_value(text)
+        took = time.perf_counter() - start
+        slowest = max(slowest, (took, text))
+        assert escaped is None, f"{text!r}: {escaped!r}"
+        assert [str(w.message) for w in caught] == [], text
+        runs += 1
+    assert runs > 0
+    print(f"parser fuzz: {runs} texts in {seconds} s, slowest {slowest[0]:.3f} s: {slowest[1]!r}")
+
+
+def _quick_value(text: str) -> BaseException | str | None:
+    """None if ``text`` reads to a finite real value or is refused; else what went wrong."""
+    import signal
+
+    def _hang(*_: object) -> None:
+        raise TimeoutError(f"parse_exact({text!r}) still running after 5 s")
+
+    previous = signal.signal(signal.SIGALRM, _hang)
+    signal.setitimer(signal.ITIMER_REAL, 5.0)
+    try:
+        value = parse_exact(text)
+    except ExpressionError:
+        return None
+    except BaseException as exc:  # reported by the caller
+        return exc
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    if not isinstance(value, sympy.Expr) or value.has(sympy.nan, sympy.zoo, sympy.oo):
+        return f"not a finite expression: {value!r}"
+    if value.is_extended_real is False:
+        return f"not real: {value!r}"
+    return None

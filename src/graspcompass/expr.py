@@ -221,6 +221,8 @@ class _Reader:
             if isinstance(node.op, ast.Pow):
                 return self._power(node)
             left, right = self.read(node.left), self.read(node.right)
+            if isinstance(node.op, ast.Div) and _has_function(right) and not self._nonzero(right):
+                raise _fail(self.text, "the value is not finite (division by zero)")
             return _BINOPS[type(node.op)](left, right)
         if isinstance(node, ast.Call):
             return self._call(node)
@@ -289,7 +291,18 @@ class _Reader:
         elif name in ("asin", "acos"):
             self._real_arcsine(name, args[0])
         self.depth -= 1
-        return function(*args)
+        if not any(_has_function(arg) for arg in args):
+            return function(*args)
+        # sympy's own simplification of f(g(...)) queries the sign of g(...) again and again
+        # (exponential in the depth): keep nested functions as they are, exact and unevaluated
+        if name == "tan":
+            self._sign(sympy.cos(args[0], evaluate=False), sympy.tan(args[0], evaluate=False))
+        if name == "atan2" and not (self._nonzero(args[0]) or self._nonzero(args[1])):
+            raise _fail(self.text, "atan2(0, 0) is not defined")
+        return function(*args, evaluate=False)
+
+    def _nonzero(self, value: sympy.Expr) -> bool:
+        return bool(value.free_symbols) or self._sign(value, value) != 0
 
     def _sign(self, value: sympy.Expr, shown: sympy.Expr) -> int:
         sign = real_sign(value)
@@ -307,7 +320,7 @@ class _Reader:
 
     def _real_arcsine(self, name: str, arg: sympy.Expr) -> None:
         """Refuse ``asin(x)``, ``acos(x)`` for ``|x| > 1``: their values are complex."""
-        if arg.free_symbols:
+        if arg.free_symbols or _clearly_inside_unit(arg):
             return
         if -1 in (self._sign(1 - arg, arg), self._sign(1 + arg, arg)):
             with mpmath.workdps(50):
@@ -342,6 +355,10 @@ class _Reader:
             self._spend(base)  # an exact root may factor the integers of its base
             self._real_root(base, exponent)
         self.depth -= 1
+        if _has_function(base):  # as for functions: no sign queries through nested functions
+            if exponent < 0 and not self._nonzero(base):
+                raise _fail(self.text, "the value is not finite (division by zero)")
+            return sympy.Pow(base, exponent, evaluate=False)
         return base**exponent
 
 
@@ -357,6 +374,23 @@ def _short(value: sympy.Expr) -> str:
 
 def _digits(bits: int) -> int:
     return int(bits * 0.30103)
+
+
+def _clearly_inside_unit(value: sympy.Expr) -> bool:
+    """``|value| < 1 - 2**-32`` by one evaluation of known accuracy (else: decide exactly)."""
+    if value.is_Rational:
+        return abs(value.p) < value.q  # type: ignore[attr-defined]
+    try:
+        re, im, re_acc, _ = _evalf(value, 64, {"maxprec": 128})
+    except _SYMPY_FAILURES:
+        return False
+    if im or re is None:
+        return re is None and im is None  # exactly zero
+    return bool(re_acc is not None and re_acc >= 40 and mpmath.mpf(re) ** 2 < 1 - 2.0**-31)
+
+
+def _has_function(value: sympy.Expr) -> bool:
+    return bool(value.atoms(sympy.Function))
 
 
 def _too_many_nodes(value: sympy.Expr) -> bool:
