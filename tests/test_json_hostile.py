@@ -297,6 +297,8 @@ MALFORMED: list[tuple[str, Any, str]] = [
     ("NUL in a text", lambda d: edited(d, ("grasp", "title"), "a\x00b"), "grasp.title: control"),
     ("unicode junk name", lambda d: edited(d, ("steps", 0, "name"), "O\u202e"),
      "steps[0].name: expected a step name"),
+    ("newline in a key", lambda d: edited(d, ("grasp", "\n"), None),
+     "grasp['\\n']: unknown key"),
     ("newline after a name", lambda d: edited(d, ("steps", 0, "name"), "O\n"),
      "steps[0].name: expected a step name"),
     ("unicode digits in a float", lambda d: edited(d, ("grasp", "x1"),

@@ -278,6 +278,13 @@ def _show(v: Any) -> str:
     return text if len(text) <= _MAX_SHOWN else text[: _MAX_SHOWN - 5] + "…" + text[-4:]
 
 
+def _join(path: str, key: str) -> str:
+    """``path.key``, or ``path['key']`` for a key that is not a plain word."""
+    if re.fullmatch(r"[A-Za-z0-9_]{1,40}", key):
+        return f"{path}.{key}" if path else key
+    return f"{path}[{_show(key)}]"
+
+
 def _where(path: str) -> str:
     return path or "the document"
 
@@ -393,7 +400,7 @@ def _check_object(v: dict, schema: dict[str, Any], path: str) -> None:
         if not isinstance(key, str):
             raise _fail(path, "keys must be texts", key)
         if schema.get("additionalProperties", True) is False and key not in props:
-            raise _fail(f"{path}.{key}" if path else key,
+            raise _fail(_join(path, key),
                         f"unknown key (expected {', '.join(props)})", key)
     for key in schema.get("required", []):
         if key not in v:
@@ -401,7 +408,7 @@ def _check_object(v: dict, schema: dict[str, Any], path: str) -> None:
                                     f"{_expected(schema)} (it has {_show(sorted(v))})")
     for key, sub in props.items():
         if key in v:
-            _check(v[key], sub, f"{path}.{key}" if path else key)
+            _check(v[key], sub, _join(path, key))
 
 
 # ---------------------------------------------------------------------------
@@ -615,8 +622,8 @@ def _difference(stored: Any, given: Any, path: str) -> tuple[str, Any, Any] | No
     if isinstance(stored, dict) and isinstance(given, dict):
         for key in list(given) + [k for k in stored if k not in given]:
             if key not in stored or key not in given:
-                return f"{path}.{key}", stored.get(key, "(missing)"), given.get(key, "(none)")
-            found = _difference(stored[key], given[key], f"{path}.{key}")
+                return _join(path, key), stored.get(key, "(missing)"), given.get(key, "(none)")
+            found = _difference(stored[key], given[key], _join(path, key))
             if found:
                 return found
         return None
