@@ -54,7 +54,8 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     e.add_argument("--format", choices=_FORMATS,
                    help="file format (default: from the extension of -o)")
     e.add_argument("-o", "--output", metavar="FILE",
-                   help="output file (default: PRESET.EXT in the current folder)")
+                   help="output file, in an existing folder (default: PRESET.EXT in the "
+                        "current folder)")
     e.add_argument("--step", type=int, metavar="N",
                    help="export the state after protocol step N (default: every step)")
     e.add_argument("--title", metavar="TEXT", type=_title,

@@ -20,6 +20,7 @@ import argparse
 import json
 import os
 import sys
+import textwrap
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
@@ -46,7 +47,7 @@ EXIT_STATUSES = {
     130: "interrupted",
 }
 #: Bounds of ``crosscheck``: random grasps, θ grid size, and their product (linprog runs).
-CROSSCHECK_GRASPS, CROSSCHECK_THETAS, CROSSCHECK_RUNS = 1000, 3600, 36_000
+CROSSCHECK_GRASPS, CROSSCHECK_THETAS, CROSSCHECK_RUNS = 200, 3600, 36_000
 
 _PARAMS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
 _FORMATS = ("png", "svg", "pdf")
@@ -91,10 +92,13 @@ def build_parser() -> argparse.ArgumentParser:
             "Ruler-and-compass internal force diagram of a two-point grasp "
             "(Ito, Tanaka, Sasaki, Robotica 2012). Without a command: the main job on "
             "the paper's Fig. 6 grasp."),
-        epilog="exit status:\n" + "\n".join(f"  {k:<4} {v}" for k, v in EXIT_STATUSES.items())
-        + "\n\noutputs: every option value and output path is checked before any work; "
-        "a missing\nfolder is refused (only the main job's --out folder itself is made, and "
-        "it says so).")
+        epilog="exit status:\n" + "\n".join(
+            textwrap.fill(v, 78, initial_indent=f"  {k:<4} ", subsequent_indent=" " * 7)
+            for k, v in EXIT_STATUSES.items())
+        + "\n\n" + textwrap.fill(
+            "outputs: every option value and output path is checked before any work; a "
+            "missing folder is refused (only the main job's --out folder itself is made, and "
+            "it says so).", 78))
     p.add_argument("--version", action="version", version=f"graspcompass {__version__}")
     p.add_argument("--out", default="graspcompass-out", metavar="DIR",
                    help="output folder of the main job (default: ./graspcompass-out; made if "
@@ -105,7 +109,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     d = sub.add_parser("draw", help="draw the diagram to a PNG, SVG or PDF file")
     _add_grasp_options(d)
-    d.add_argument("-o", "--output", metavar="FILE", help="output file (default: PRESET.png)")
+    d.add_argument("-o", "--output", metavar="FILE",
+                   help="output file, in an existing folder (default: PRESET.png)")
     d.add_argument("--format", choices=_FORMATS, help="file format (default: from the extension)")
     d.add_argument("--step", type=int, metavar="N",
                    help="draw the state after protocol step N (default: the whole diagram)")
