@@ -96,3 +96,20 @@ def test_integer_balls_hold_the_true_value(poly, prec):
         assert lo <= v <= hi, (poly, lo, v, hi)
         magnitude = sum(abs(int(c.numerator)) / int(c.denominator) for c in poly.coeffs())
         assert hi - lo <= mpmath.mpf(2) ** (-prec + 40) * (1 + magnitude) * 10**6
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(st.tuples(st.integers(-9, 9), st.sampled_from(_GENS[:3] + (sp.Integer(1),))),
+                min_size=1, max_size=4),
+       st.lists(st.tuples(st.integers(1, 9), st.sampled_from(_GENS[:3] + (sp.Integer(1),))),
+                min_size=1, max_size=3),
+       st.sampled_from([15, 30, 50]))
+def test_approx_has_the_digits_it_promises(num, den, dps):
+    """approx(expr, dps) (integer balls, then a quotient) against sympy.N at 80 digits."""
+    e = sum((k * g for k, g in num), sp.Integer(0)) / sum((k * g for k, g in den), sp.Integer(0))
+    want = sp.N(e, 80)
+    if want == 0:
+        return
+    got = exact.approx(e, dps)
+    with mpmath.workdps(90):
+        assert abs(mpmath.mpf(got) - mpmath.mpf(want)) <= abs(mpmath.mpf(want)) * 10 ** (1 - dps)

@@ -744,15 +744,16 @@ def _intervals(*polys) -> list:
     from mpmath import iv
 
     k = iv.prec + 8
+    scale = iv.mpf(2) ** -k
+    return [iv.mpf([m - r, m + r]) * scale for m, r in _balls(polys, k)]
+
+
+def _balls(polys: tuple, k: int) -> list[tuple[int, int]]:
+    """Balls ``(m, r)`` at scale ``2**-k`` of the numbers ``polys`` of one ring."""
     symbols = polys[0].ring.symbols
     used = {i for p in polys for monom in p.monoms() for i, e in enumerate(monom) if e}
     balls = [_gen_ball(g, k) if i in used else None for i, g in enumerate(symbols)]
-    scale = iv.mpf(2) ** -k
-    out = []
-    for p in polys:
-        m, r = _ball_poly(p, balls, k)
-        out.append(iv.mpf([m - r, m + r]) * scale)
-    return out
+    return [_ball_poly(p, balls, k) for p in polys]
 
 
 def _interval(expr: sp.Expr):
@@ -783,24 +784,43 @@ def approx(expr: sp.Expr, dps: int = 30):
     2.36527007866...
     """
     import mpmath
-    from mpmath import iv
 
     expr = sym(expr)
-    if not expr.free_symbols and not has_float(expr) and not expr.is_Rational:
-        prec = iv.prec
-        iv.prec = max(_IV_PREC, int(dps * 3.33) + 64)
+    if not expr.free_symbols and not has_float(expr):
         try:
-            value = _interval(expr)
+            reduced = canon(expr)
         except (TypeError, ZeroDivisionError):
-            value = None
-        finally:
-            iv.prec = prec
-        if value is not None:
-            lo, hi = mpmath.mpf(value.a), mpmath.mpf(value.b)
-            if hi - lo < mpmath.mpf(10) ** -(dps + 2) * (1 + abs(lo)):
-                return (lo + hi) / 2
+            reduced = None
+        if reduced is not None and reduced.is_Rational:
+            with mpmath.workdps(dps):
+                return mpmath.mpf(int(reduced.p)) / int(reduced.q)
+        hit = _MEMO.get(reduced) if reduced is not None else None
+        if hit is not None:
+            value = _ball_quotient(hit[1], hit[2], dps)
+            if value is not None:
+                return value
     with mpmath.workdps(dps):
         return mpmath.mpf(sp.N(expr, dps))
+
+
+def _ball_quotient(n, d, dps: int):
+    """n/d to ``dps`` digits from integer balls, or None when they are too wide.
+
+    With n in mn ± rn and d in md ± rd (rd <= |md|/2), n/d is within
+    ``2 (rn/|mn| + rd/|md|)`` of mn/md relatively; that must be below 10**-(dps+2).
+    """
+    import mpmath
+
+    k = max(_IV_PREC, int(dps * 3.33) + 64) + 8
+    try:
+        (mn, rn), (md, rd) = _balls((n, d), k)
+    except TypeError:
+        return None
+    an, ad = abs(mn), abs(md)
+    if an == 0 or 2 * rd > ad or 2 * (rn * ad + rd * an) * 10 ** (dps + 2) >= an * ad:
+        return None
+    with mpmath.workdps(dps):
+        return mpmath.mpf(mn) / mpmath.mpf(md)
 
 
 def _strict_sign(reduced: sp.Expr) -> int | None:

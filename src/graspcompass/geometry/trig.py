@@ -163,12 +163,17 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 
 
 def tan_exact(angle: sp.Expr) -> sp.Expr:
-    """``sin a / cos a`` from :func:`sincos` (unreduced; pass it through ``canon``).
+    """``sin a / cos a`` from :func:`sincos`, in the kernel's canonical form.
 
     Examples
     --------
-    >>> tan_exact(sp.pi / 4)
-    1
+    >>> tan_exact(sp.pi / 4), tan_exact(sp.pi / 12), tan_exact(sp.Rational(3, 5) * sp.pi)
+    (1, 2 - sqrt(3), -cos(pi/10)/sin(pi/10))
     """
+    from .exact import Frac, NotAFraction, canon
+
     s, c = sincos(angle)
-    return s / c
+    try:
+        return (Frac.of(s) / Frac.of(c)).expr()
+    except NotAFraction:
+        return canon(s / c)
