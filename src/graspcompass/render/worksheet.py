@@ -172,6 +172,16 @@ class Worksheet:
         lo, hi = ax.get_xlim()
         return float(width_mm / (hi - lo))
 
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Write both pages to the PDF file ``path`` (A4 portrait, no resizing); return it."""
+        out = Path(path)
+        title = getattr(self.construction.grasp, "title", None) or "a two-point grasp"
+        with PdfPages(out, metadata={"Title": f"Worksheet: {title}",
+                                     "Creator": "graspcompass"}) as pdf:
+            for fig in self.figures:
+                pdf.savefig(fig)  # never bbox_inches="tight": the page size is the scale
+        return out
+
     def page_mm(self, page: int, xy: tuple[float, float]) -> tuple[float, float]:
         """Where the point ``xy`` (units) lies on ``page``, in mm from the lower left corner."""
         fig, ax = self.figures[page], self.axes[page]
@@ -648,8 +658,10 @@ def _place_axes(fig: Figure, box: tuple[float, float, float, float], scale: floa
 
 
 def _finish_axes(ax: Axes, box: tuple[float, float, float, float]) -> None:
-    """Exact limits, no ticks, a light frame round the drawing area, axis names."""
+    """Exact position and limits, no ticks, a light frame round the drawing, axis names."""
+    rect = ax.get_position(original=True)
     ax.set_aspect("auto")
+    ax.set_position(rect, which="both")  # undo any shrinking for the equal aspect
     ax.set_xlim(box[0], box[1])
     ax.set_ylim(box[2], box[3])
     ax.set_xticks([])
@@ -797,7 +809,9 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     gnames = given_names(selected, given)
     sub = _sub_construction(c, selected, gnames)
     num = numeric_objects(sub)
-    box = view_box(c.grasp, num, margin=0.04, square=False)
+    # the box draw_construction frames the same steps with, so that its labels are placed
+    # in the final geometry
+    box = view_box(c.grasp, num)
     instructions = instructions_for(c, selected, gnames)
 
     plans = _plans(box, [_intro(c, gnames), _rules()],
@@ -891,10 +905,4 @@ def worksheet(construction_or_grasp: Any, path: str | os.PathLike[str], *, steps
         at which the drawing does not fit (the message names the largest that does).
     """
     ws = worksheet_pages(construction_or_grasp, steps=steps, given=given, scale=scale)
-    out = Path(path)
-    title = getattr(ws.construction.grasp, "title", None) or "graspcompass worksheet"
-    with PdfPages(out, metadata={"Title": f"Worksheet: {title}",
-                                 "Creator": "graspcompass"}) as pdf:
-        for fig in ws.figures:
-            pdf.savefig(fig)
-    return out
+    return ws.save(path)
