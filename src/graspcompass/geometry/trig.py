@@ -163,17 +163,12 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 
 
 def tan_exact(angle: sp.Expr) -> sp.Expr:
-    """``sin a / cos a`` from :func:`sincos`, in the kernel's canonical form.
+    """``sin a / cos a`` from :func:`sincos` (unreduced; pass it through ``canon``).
 
     Examples
     --------
-    >>> tan_exact(sp.pi / 4), tan_exact(sp.pi / 12), tan_exact(sp.Rational(3, 5) * sp.pi)
-    (1, 2 - sqrt(3), -cos(pi/10)/sin(pi/10))
+    >>> tan_exact(sp.pi / 4), tan_exact(sp.pi / 3)
+    (1, sqrt(3))
     """
-    from .exact import Frac, NotAFraction, canon
-
     s, c = sincos(angle)
-    try:
-        return (Frac.of(s) / Frac.of(c)).expr()
-    except NotAFraction:
-        return canon(s / c)
+    return s / c
