@@ -8,7 +8,13 @@ napoleon, numpydoc style) and pages generated at build time into
 - ``proof-report.md``: ``graspcompass verify --markdown``, run in-process;
 - ``fig6-steps.md``: the construction protocol of the Fig. 6 grasp, each
   step linked to the paper's equation and to the gallery figure;
-- ``main-job/``: what ``graspcompass`` (the README's first command) writes.
+- ``main-job/``: what ``graspcompass`` (the README's first command) writes;
+- ``explorer-static/explorer.html``: the web explorer of the Fig. 6 grasp
+  (``graspcompass.export.html.write_html``), served as ``_static/explorer.html``.
+
+The site works offline: MathJax 3 (``_static/mathjax``) and the icons of the
+animation players (``_static/fontawesome``) are vendored, and intersphinx reads
+the inventories in ``_intersphinx/`` only (never the network; see its README).
 
 Build: ``sphinx-build -W --keep-going -b html docs docs/_build/html``
 (``.ci/build-docs.sh``).
@@ -20,7 +26,6 @@ import contextlib
 import io
 import os
 import re
-import shutil
 import sys
 from pathlib import Path
 
@@ -52,15 +57,18 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
+    "sphinx.ext.intersphinx",
+    "sphinx_copybutton",
     "sphinx_gallery.gen_gallery",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "_generated/**", "**/GALLERY_HEADER.rst", "Thumbs.db",
+exclude_patterns = ["_build", "_generated/**", "_intersphinx", "**/GALLERY_HEADER.rst", "Thumbs.db",
                     ".DS_Store"]
-# a broken cross-reference to our own pages is an error (-W); references into Python,
-# numpy or sympy from docstrings stay plain text (no intersphinx: the build is offline)
+# a broken cross-reference to our own pages is an error (-W); a reference into Python,
+# numpy, sympy or matplotlib links there when its inventory is in _intersphinx/, and stays
+# plain text otherwise
 nitpicky = False
 
 # -- MyST --------------------------------------------------------------------------------------
@@ -80,44 +88,52 @@ html_theme_options = {
     "navigation_with_keys": True,
 }
 
-# MathJax: the copy Debian ships (package libjs-mathjax) when it is installed, so that the
-# pages render their formulas offline; otherwise Sphinx's default (a CDN).
-_MATHJAX = Path("/usr/share/javascript/mathjax")
-_MATHJAX_PARTS = ("MathJax.js", "config/TeX-AMS_SVG.js", "extensions", "jax/input/TeX",
-                  "jax/element", "jax/output/SVG/jax.js", "jax/output/SVG/autoload",
-                  "jax/output/SVG/fonts/TeX", "localization/en")
+# MathJax 3.2.2 (npm package ``mathjax``, Apache-2.0), vendored in _static/mathjax: the
+# combined component ``tex-chtml-full.js`` (TeX input with every extension, so nothing is
+# autoloaded) and its woff fonts; the formulas render with no network at all.
+mathjax_path = "mathjax/tex-chtml-full.js"
+mathjax3_config = {
+    "chtml": {"matchFontHeight": False},
+    # MyST sets options.processHtmlClass (its pages are marked tex2jax_ignore)
+    "options": {"enableMenu": True},
+}
 
+# The animation players that matplotlib writes (to_jshtml) link Font Awesome 4 on a CDN for
+# their button icons; the gallery pages load the vendored subset instead (see
+# _fix_animation_player below).
+html_css_files.append("fontawesome/player.css")
+_FONT_AWESOME_LINK = re.compile(
+    r'<link rel="stylesheet"\s+href="https://maxcdn\.bootstrapcdn\.com/font-awesome/'
+    r'[0-9.]+/css/font-awesome\.min\.css">\s*')
 
-def _local_mathjax() -> bool:
-    """Copy the parts of Debian's MathJax 2 that TeX input with SVG output needs."""
-    if not (_MATHJAX / "MathJax.js").is_file():
-        return False
-    dest = GENERATED / "mathjax-static" / "mathjax"
-    if not (dest / "MathJax.js").is_file():
-        for part in _MATHJAX_PARTS:
-            src = _MATHJAX / part
-            if not src.exists():
-                return False
-            if src.is_dir():
-                shutil.copytree(src, dest / part, dirs_exist_ok=True)
-            else:
-                (dest / part).parent.mkdir(parents=True, exist_ok=True)
-                shutil.copy2(src, dest / part)
-    return True
+# The web explorer of the Fig. 6 grasp, written at build time into this folder and served
+# as _static/explorer.html (explore.md embeds it in an iframe).
+EXPLORER_STATIC = GENERATED / "explorer-static"
+EXPLORER_STATIC.mkdir(parents=True, exist_ok=True)
+html_static_path.append("_generated/explorer-static")
 
+# -- copy buttons ------------------------------------------------------------------------------
+# copy only the input of ``>>>``/``...`` sessions and ``$`` console lines, without the prompt
+copybutton_prompt_text = r">>> |\.\.\. |\$ "
+copybutton_prompt_is_regexp = True
+copybutton_only_copy_prompt_lines = True
+copybutton_exclude = ".linenos, .gp, .go"
 
-if _local_mathjax():
-    html_static_path.append("_generated/mathjax-static")
-    mathjax_path = "mathjax/MathJax.js?config=TeX-AMS_SVG"
-    mathjax2_config = {
-        # MyST marks its pages ``tex2jax_ignore`` and its math ``math``: process that
-        "tex2jax": {"inlineMath": [["\\(", "\\)"]], "displayMath": [["\\[", "\\]"]],
-                    "processRefs": False, "processEnvironments": False,
-                    "processClass": "tex2jax_process|mathjax_process|math|output_area"},
-        "SVG": {"font": "TeX"},
-        "showMathMenu": False,
-        "messageStyle": "none",
-    }
+# -- intersphinx (offline) ---------------------------------------------------------------------
+# Each inventory is a file in _intersphinx/ (see _intersphinx/README.md: where they come from
+# and how to refresh them); a missing file drops that project, and the build never fetches.
+INTERSPHINX = DOCS / "_intersphinx"
+_INVENTORIES = {
+    "python": "https://docs.python.org/3/",
+    "numpy": "https://numpy.org/doc/stable/",
+    "sympy": "https://docs.sympy.org/latest/",
+    "matplotlib": "https://matplotlib.org/stable/",
+}
+intersphinx_mapping = {name: (url, str(INTERSPHINX / f"{name}.inv"))
+                       for name, url in _INVENTORIES.items()
+                       if (INTERSPHINX / f"{name}.inv").is_file()}
+intersphinx_timeout = 1
+intersphinx_disabled_reftypes = ["*:doc", "std:label", "std:term"]
 
 # -- autodoc (numpydoc style through napoleon) -------------------------------------------------
 autodoc_typehints = "description"
@@ -129,9 +145,14 @@ autoclass_content = "class"
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 napoleon_use_rtype = False
-napoleon_use_param = True
-napoleon_attr_annotations = True
-napoleon_use_ivar = True  # "Attributes" as fields: no second description of dataclass fields
+# numpydoc lets one entry describe several names (``x1, x2, y : number or str``).  As
+# :param:/:ivar: fields Sphinx splits such a group: each parameter got the whole group's
+# text, and an attribute group ``a, b`` read as "type a, name b".  Napoleon's own field
+# lists keep a group one entry, as numpydoc shows it: "x1, x2, y (number or str) – ...".
+# "Attributes" is laid out the same way (a field list, so dataclass fields are not
+# described twice).
+napoleon_use_param = False
+napoleon_custom_sections = [("Attributes", "params_style")]
 
 # -- the gallery -------------------------------------------------------------------------------
 sphinx_gallery_conf = {
@@ -263,9 +284,20 @@ def _main_job() -> None:
     _write(GENERATED / "main-job.txt", "\n".join(keep) + "\n")
 
 
-# numpydoc allows no free text inside a "Parameters" section: a paragraph after the last
-# parameter is read by napoleon as more parameters (a docutils warning, fatal with -W).
-# Until such a docstring is fixed in the source, give that paragraph a "Notes" heading.
+def _explorer() -> None:
+    """The web explorer of the Fig. 6 grasp: ``_static/explorer.html`` of the site."""
+    from graspcompass import Grasp, internal_force_diagram
+    from graspcompass.export.html import write_html
+
+    write_html(internal_force_diagram(Grasp.preset("fig6")), EXPLORER_STATIC / "explorer.html")
+
+
+# -- the animation players of the gallery ------------------------------------------------------
+def _fix_animation_player(app: object, docname: str, source: list[str]) -> None:
+    """Drop the CDN stylesheet of matplotlib's animation player from a gallery page (the
+    icons come from ``_static/fontawesome/player.css``, on every page)."""
+    if docname.startswith("auto_examples/"):
+        source[0] = _FONT_AWESOME_LINK.sub("", source[0])
 
 
 def _generate(app: object) -> None:
@@ -273,10 +305,11 @@ def _generate(app: object) -> None:
     _proof_report()
     _steps_table()
     _main_job()
+    _explorer()
 
 
 def setup(app: object) -> dict[str, object]:
     # the generated files are read later, with the other sources
     app.connect("builder-inited", _generate, priority=400)  # type: ignore[attr-defined]
-    # before napoleon (priority 500) turns the numpydoc sections into fields
+    app.connect("source-read", _fix_animation_player)  # type: ignore[attr-defined]
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -8,7 +8,13 @@
   Chromium: every image of the gallery index, the Fig. 6 page, the front page and the
   tutorial loads, no request gets a 404, the console reports no failed resource, and a
   screenshot of each page is saved in ``docs/_build/screenshots/``.  These tests are
-  skipped, saying why, when the site is not built or Chromium is not installed.
+  skipped, saying why, when the site is not built or Chromium is not installed;
+- the built site works offline: every page opened from ``file://`` in Chromium (driven by
+  Playwright) with every non-file request aborted makes no such request and no request
+  fails, MathJax typesets every formula (no raw TeX left in the text, no MathJax error),
+  and the animation players of the gallery show their nine buttons with their icons;
+- the docs' own rules: the API has one page per module, the glossary defines its terms,
+  ``CITATION.cff`` cites the paper, ``pyproject.toml`` declares what the docs need.
 """
 
 from __future__ import annotations
@@ -35,7 +41,7 @@ DOCS = ROOT / "docs"
 GALLERY = ROOT / "gallery"
 HTML = DOCS / "_build" / "html"
 SCREENSHOTS = DOCS / "_build" / "screenshots"
-SKIP_DIRS = ("_build", "_generated", "auto_examples")
+SKIP_DIRS = ("_build", "_generated", "auto_examples", "_intersphinx")
 
 PAGES = sorted(p for p in DOCS.rglob("*.md") if not set(p.relative_to(DOCS).parts) &
                set(SKIP_DIRS))
@@ -300,3 +306,201 @@ def test_built_page_renders_in_chromium(browser: tuple[str, Path], name: str) ->
         assert im.size[0] >= 1000
         lo, hi = im.convert("L").getextrema()
         assert hi - lo > 100, f"the screenshot of {page} is blank"
+
+
+# -- the built site, offline -------------------------------------------------------------------
+# Raw TeX that MathJax should have replaced (text outside code blocks).
+RAW_TEX = re.compile(r"\\[()\[\]]|\$\$|\\(?:frac|sqrt|varphi|phi|xi|mu|theta|text|mathrm|"
+                     r"overline|begin|end|left|right|cdot|tan|sin|cos|max|tfrac|qquad)\b")
+# the page's text without code, with MathJax done (or no MathJax on the page)
+PAGE_STATE_JS = """async () => {
+  if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
+    await MathJax.startup.promise;
+  }
+  await document.fonts.ready;
+  const body = document.body.cloneNode(true);
+  body.querySelectorAll("pre, code, script, style, mjx-container, .highlight, textarea")
+      .forEach(e => e.remove());
+  const players = Array.from(document.querySelectorAll(".animation")).map(a => {
+    const buttons = Array.from(a.querySelectorAll(".anim-buttons button"));
+    return {
+      buttons: buttons.length,
+      icons: buttons.filter(b => {
+        const i = b.querySelector("i.fa");
+        if (!i) return false;
+        const before = getComputedStyle(i, "::before");
+        return getComputedStyle(i).fontFamily.includes("FontAwesome") &&
+               before.content.length === 3 && i.getBoundingClientRect().width > 4;
+      }).length,
+      frame: (a.querySelector("img") || {}).src || "",
+    };
+  });
+  return {
+    text: body.innerText,
+    math: document.querySelectorAll("mjx-container").length,
+    mathErrors: document.querySelectorAll("mjx-merror, [data-mjx-error]").length,
+    hasMath: !!document.querySelector(".math, div.math, span.math"),
+    players: players,
+    fontAwesome: document.fonts.check("14px FontAwesome", "\\uf04b"),
+  };
+}"""
+
+
+def _site_pages() -> list[Path]:
+    """Every page of the built site except the highlighted sources (``_modules``)."""
+    return sorted(p for p in HTML.rglob("*.html")
+                  if not {"_modules", "_static", "_sources", "_downloads"} &
+                  set(p.relative_to(HTML).parts))
+
+
+@pytest.fixture(scope="module")
+def offline_browser():
+    if not (HTML / "index.html").is_file() or not (HTML / "auto_examples").is_dir():
+        pytest.skip("the documentation is not built (docs/_build/html is missing): run "
+                    ".ci/build-docs.sh before this test")
+    chromium = _chromium()
+    if chromium is None:
+        pytest.skip("Chromium is not installed (Debian: apt-get install chromium), so the "
+                    "built documentation cannot be checked offline in a browser")
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        pytest.skip("Playwright for Python is not installed (pip install -e '.[test]'), so "
+                    "the built documentation cannot be checked offline in a browser")
+    with sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=chromium,
+                                     args=["--no-sandbox", "--disable-gpu"])
+        try:
+            yield browser
+        finally:
+            browser.close()
+
+
+def test_built_site_works_offline(offline_browser) -> None:
+    pages = _site_pages()
+    assert len(pages) >= 30, f"only {len(pages)} pages in the built site"
+    context = offline_browser.new_context(viewport={"width": 1280, "height": 900})
+    outside: list[str] = []   # requests that would have needed the network
+    failed: list[str] = []    # requests that failed (a missing file, an aborted request)
+
+    def route(r) -> None:
+        if r.request.url.startswith(("file:", "data:", "blob:", "about:")):
+            r.continue_()
+        else:
+            outside.append(r.request.url)
+            r.abort("internetdisconnected")
+
+    context.route("**/*", route)
+    problems: list[str] = []
+    typeset = players = 0
+    try:
+        page = context.new_page()
+
+        def request_failed(req) -> None:
+            # a file request cancelled because the test moved on to the next page (the
+            # favicon, typically) is no failure when the file is there
+            if req.failure == "net::ERR_ABORTED" and req.url.startswith("file:"):
+                local = Path(urllib.parse.unquote(urllib.parse.urlsplit(req.url).path))
+                if local.is_file() and req.url not in outside:
+                    return
+            failed.append(f"{req.url[:200]} ({req.failure})")
+
+        page.on("requestfailed", request_failed)
+        for path in pages:
+            name = str(path.relative_to(HTML))
+            before = len(outside), len(failed)
+            page.goto(path.as_uri(), wait_until="load", timeout=60_000)
+            state = page.evaluate(PAGE_STATE_JS)
+            if state["hasMath"]:
+                typeset += 1
+                if state["math"] == 0:
+                    problems.append(f"{name}: MathJax typeset no formula")
+            if state["mathErrors"]:
+                problems.append(f"{name}: {state['mathErrors']} MathJax errors")
+            raw = sorted({m.group(0) for m in RAW_TEX.finditer(state["text"])})
+            if raw:
+                i = RAW_TEX.search(state["text"]).start()
+                problems.append(f"{name}: raw TeX {raw} in the text, e.g. "
+                                f"{state['text'][max(0, i - 60):i + 60]!r}")
+            for k, player in enumerate(state["players"]):
+                players += 1
+                if player["buttons"] != 9 or player["icons"] != 9:
+                    problems.append(f"{name}: animation {k} has {player['buttons']} buttons, "
+                                    f"{player['icons']} with their icon (9 expected)")
+            if state["players"]:
+                # the player works: "next frame" shows another frame
+                page.locator(".animation button[title='Next frame']").first.click()
+                frame = page.evaluate(
+                    "() => document.querySelector('.animation img').src")
+                if frame == state["players"][0]["frame"]:
+                    problems.append(f"{name}: 'Next frame' did not change the frame")
+                if not state["fontAwesome"]:
+                    problems.append(f"{name}: the icon font of the player did not load")
+            if len(outside) > before[0] or len(failed) > before[1]:
+                problems.append(f"{name}: requests outside the site {outside[before[0]:]}, "
+                                f"failed {failed[before[1]:]}")
+    finally:
+        context.close()
+    print(f"offline: {len(pages)} pages, {typeset} with formulas, {players} animation "
+          f"players, {len(outside)} requests outside the site, {len(failed)} failed")
+    assert not outside, f"requests that need the network: {sorted(set(outside))[:20]}"
+    assert not failed, f"failed requests: {failed[:20]}"
+    assert not problems, "\n".join(problems)
+    assert typeset >= 10 and players >= 2
+
+
+# -- the docs' own rules ----------------------------------------------------------------------
+def test_api_has_one_page_per_module() -> None:
+    index = (DOCS / "api" / "index.md").read_text(encoding="utf-8")
+    for module in ("graspcompass", "grasp", "construction", "geometry", "expr", "render",
+                   "export", "proof", "cli", "symbols"):
+        page = DOCS / "api" / f"{module}.md"
+        assert page.is_file(), f"no API page for {module}"
+        name = "graspcompass" if module == "graspcompass" else f"graspcompass.{module}"
+        assert f".. automodule:: {name}\n" in page.read_text(encoding="utf-8")
+        assert f"\n{module}\n" in index, f"api/index.md does not list {module}"
+
+
+def test_glossary_defines_the_terms() -> None:
+    text = (DOCS / "glossary.md").read_text(encoding="utf-8")
+    terms = re.findall(r"^([a-zA-Z_ ]+)\n  \S", text.split("```{glossary}", 1)[1], re.M)
+    for term in ("internal force", "friction cone", "signed length", "outer envelope",
+                 "break point", "protocol"):
+        assert term in terms, f"the glossary does not define {term!r}"
+    tutorial = (DOCS / "tutorial.md").read_text(encoding="utf-8")
+    assert len(re.findall(r"\{term\}`", tutorial)) >= 3
+
+
+def test_citation_file_cites_the_paper() -> None:
+    cff = (ROOT / "CITATION.cff").read_text(encoding="utf-8")
+    assert cff.startswith("#") and "\ncff-version: 1.2.0\n" in cff
+    for needle in ("doi: 10.1017/S0263574711001135", "journal: Robotica", "volume: 30",
+                   'issue: "5"', "family-names: Ito", "family-names: Tanaka",
+                   "family-names: Sasaki", "year: 2012", "title: \"graspcompass"):
+        assert needle in cff, f"CITATION.cff lacks {needle!r}"
+    assert "10.1017/S0263574711001135" in (DOCS / "cite.md").read_text(encoding="utf-8")
+
+
+def test_pyproject_declares_what_the_docs_need() -> None:
+    tomllib = pytest.importorskip("tomllib")
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]
+    deps = " ".join(project["dependencies"])
+    # plt.figure(fig) adopting a standalone Figure, as the gallery and how-tos do: 3.11
+    assert re.search(r"matplotlib>=3\.(1[1-9]|[2-9]\d)", deps), deps
+    assert any(d.startswith("sphinx-copybutton") for d in project["optional-dependencies"]
+               ["docs"])
+    urls = project.get("urls", {})
+    assert urls and all(u.startswith("https://") for u in urls.values()), urls
+
+
+def test_mathjax_and_player_icons_are_vendored() -> None:
+    static = DOCS / "_static"
+    assert (static / "mathjax" / "tex-chtml-full.js").stat().st_size > 1_000_000
+    assert len(list((static / "mathjax" / "output" / "chtml" / "fonts" / "woff-v2")
+                    .glob("*.woff"))) >= 20
+    assert (static / "fontawesome" / "fontawesome-webfont.woff2").is_file()
+    conf = (DOCS / "conf.py").read_text(encoding="utf-8")
+    assert 'mathjax_path = "mathjax/tex-chtml-full.js"' in conf
+    assert not (static / "explorer.html").exists(), (
+        "docs/_static/explorer.html is generated at build time (docs/conf.py), not committed")
