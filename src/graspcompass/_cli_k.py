@@ -32,6 +32,7 @@ import sympy as sp
 
 from .errors import InputTooLargeError, NonFiniteValueError
 from .expr import MAX_ANGLES, MAX_LENGTH, parse_angles, parse_exact
+from .inputs import force_value
 
 __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
 
@@ -174,9 +175,7 @@ def _float_angles(text: str) -> np.ndarray:
 
 
 def _fe(text: str) -> tuple[sp.Expr, float]:
-    fe = parse_exact(text)
-    if not (fe.is_number and fe.is_extended_real and fe >= 0):
-        raise ValueError(f"--external-force must be a non-negative number, got {fe}")
+    fe = force_value(text, "--external-force")  # exact, real, finite, >= 0
     value = _float(fe)
     if not math.isfinite(value):
         raise NonFiniteValueError(f"--external-force {text} is too large for double precision")
