@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Build the documentation and the gallery with warnings as errors, then check the built
-# site in headless Chromium (tests/test_docs.py).  Run from anywhere; .ci/run calls it
-# inside the virtual environment where the package is installed with its test extra.
+# site in headless Chromium (tests/test_docs.py): the pages over HTTP, and every page from
+# file:// with the network cut (formulas typeset by the vendored MathJax, animation players
+# with their icons, no request outside the site).  The build itself needs no network
+# (intersphinx reads docs/_intersphinx/).  Run from anywhere; .ci/run calls it inside the
+# virtual environment where the package is installed with its test extra.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
