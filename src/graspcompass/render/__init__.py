@@ -44,6 +44,7 @@ from .figure import (
 )
 from .theme import DEFAULT_THEME, PAPER_THEME, THEMES, Theme
 from .timeline import AnimationError, FFmpegNotFoundError, Timeline, UnsupportedFormatError
+from .worksheet import worksheet
 
 __all__ = [
     "DEFAULT_THEME",
@@ -74,4 +75,5 @@ __all__ = [
     "save_figure",
     "save_frames",
     "theta_of_orientation",
+    "worksheet",
 ]

@@ -182,6 +182,19 @@ class Worksheet:
                 pdf.savefig(fig)  # never bbox_inches="tight": the page size is the scale
         return out
 
+    def save_png(self, path: str | os.PathLike[str], page: int = 0, dpi: float = 150) -> Path:
+        """Write one page (0 or 1) as a PNG picture, e.g. for a web page.
+
+        The text is set from measured widths, so it is rendered without font
+        hinting, which would change the widths at screen resolutions.
+        """
+        import matplotlib
+
+        out = Path(path)
+        with matplotlib.rc_context({"text.hinting": "no_hinting", "text.hinting_factor": 1}):
+            self.figures[page].savefig(out, format="png", dpi=dpi)
+        return out
+
     def page_mm(self, page: int, xy: tuple[float, float]) -> tuple[float, float]:
         """Where the point ``xy`` (units) lies on ``page``, in mm from the lower left corner."""
         fig, ax = self.figures[page], self.axes[page]
@@ -442,8 +455,12 @@ def instructions_for(construction: Any, names: Sequence[str],
 # Text is set word by word: each word is its own Text, placed at a measured offset, so that
 # mathtext parses short strings only (long mathtext lines take tens of ms each).
 _MEASURE_DPI = 1200  # text widths come in whole pixels: measure finely
-_RENDERER_FIG = Figure(figsize=(1, 1), dpi=_MEASURE_DPI)
-FigureCanvasAgg(_RENDERER_FIG)
+
+
+@lru_cache(maxsize=1)
+def _renderer() -> Any:
+    fig = Figure(figsize=(1, 1), dpi=_MEASURE_DPI)
+    return FigureCanvasAgg(fig).get_renderer()
 
 #: One word of a line: offset from the line start (mm), the text, bold or not.
 _Word = tuple[float, str, bool]
@@ -451,7 +468,7 @@ _Word = tuple[float, str, bool]
 
 @lru_cache(maxsize=8192)
 def _width_mm(text: str, size: float, bold: bool = False) -> float:
-    r = _RENDERER_FIG.canvas.get_renderer()  # type: ignore[attr-defined]
+    r = _renderer()
     ismath: Any = text.count("$") >= 2 and text.count("$") % 2 == 0
     prop = FontProperties(size=size, weight="bold" if bold else "normal")
     w, _, _ = r.get_text_width_height_descent(text, prop, ismath=ismath)
@@ -582,12 +599,12 @@ class _Plan:
 def _plans(box: tuple[float, float, float, float], intro: list[str],
            items: list[tuple[str, str]]) -> list[tuple[_Plan, list[list[_Block]]]]:
     """The ways to lay out page 1 that fit: the text below the drawing in one or two
-    columns, or in a column to the right of it."""
+    to three columns, or in a column to the right of it."""
     W, H = A4_MM
     width = W - 2 * _MARGIN
     top = H - _TOP - _HEADER
     out = []
-    for ncols in (1, 2):
+    for ncols in (1, 2, 3):
         colw = (width - (ncols - 1) * _COL_GAP) / ncols
         head = _layout_blocks([("", t) for t in intro], width, _FONT)
         cols = _columns(_layout_blocks(items, colw, _FONT), ncols)
@@ -611,7 +628,8 @@ def _plans(box: tuple[float, float, float, float], intro: list[str],
 
 
 # -- the pages -------------------------------------------------------------------------------
-def _params_line(grasp: Any) -> str:
+def _params_lines(grasp: Any, width_mm: float = A4_MM[0] - 2 * _MARGIN) -> list[str]:
+    """The grasp's parameters, exact values with their decimals, on one or two lines."""
     parts = []
     for k, v in grasp.params.items():
         if k.startswith("xi"):
@@ -621,8 +639,14 @@ def _params_line(grasp: Any) -> str:
             name = name.replace(g, u)
         f = float(v)
         exact = str(v).replace("sqrt", "√").replace("pi", "π").replace("*", "")
-        parts.append(f"{name} = {exact}" if exact == f"{f:g}" else f"{name} = {exact} ≈ {f:.4g}")
-    return ",  ".join(parts)
+        if getattr(v, "is_Float", False) or len(exact) > 14 or exact == f"{f:g}":
+            parts.append(f"{name} = {f:.6g}")
+        else:
+            parts.append(f"{name} = {exact} ≈ {f:.4g}")
+    one = ",  ".join(parts)
+    if _width_mm(one, 7.5) <= width_mm:
+        return [one]
+    return [",  ".join(parts[:3]), ",  ".join(parts[3:])]
 
 
 def _sub_construction(construction: Any, selected: Sequence[str],
@@ -670,8 +694,8 @@ def _finish_axes(ax: Axes, box: tuple[float, float, float, float]) -> None:
         spine.set_color("#bbbbbb")
         spine.set_linewidth(0.5)
     if box[2] < 0 < box[3]:
-        ax.annotate("x", (box[1], 0.0), xytext=(-3, 3), textcoords="offset points",
-                    ha="right", va="bottom", style="italic", fontsize=9)
+        ax.annotate("x", (box[1], 0.0), xytext=(-3, -3), textcoords="offset points",
+                    ha="right", va="top", style="italic", fontsize=9)
     if box[0] < 0 < box[1]:
         ax.annotate("y", (0.0, box[3]), xytext=(3, -3), textcoords="offset points",
                     ha="left", va="top", style="italic", fontsize=9)
@@ -833,7 +857,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     which = ("all of §3.3" if steps == "all" else
              f"{steps} (§3.3, Fig. 4({'abcd'[int(steps[1]) - 1]}))")
     title = getattr(c.grasp, "title", None) or "A two-point grasp"
-    cone_len = 0.45 * math.dist(num["P1"], num["P2"])
+    cone_len = min(0.45 * math.dist(num["P1"], num["P2"]), 22.0 / scale)  # at most 22 mm
     figs, axes, arts = [], [], []
     texts: list[str] = []
     bars: list[Line2D] = []
@@ -841,7 +865,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         fig = _new_page()
         head = ("Draw the internal force diagram by hand: " if page == 0
                 else "Solution, at the same scale: ") + which
-        bars.append(_header(fig, head, [title, _params_line(c.grasp)], scale))
+        bars.append(_header(fig, head, [title, *_params_lines(c.grasp)], scale))
         ax = _place_axes(fig, box, scale, plan.area)
         theme = PAPER_THEME if page == 0 else DEFAULT_THEME
         out = draw_construction(sub, step=len(gnames) - 1 if page == 0 else None, ax=ax,
