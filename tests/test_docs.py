@@ -504,3 +504,28 @@ def test_mathjax_and_player_icons_are_vendored() -> None:
     assert 'mathjax_path = "mathjax/tex-chtml-full.js"' in conf
     assert not (static / "explorer.html").exists(), (
         "docs/_static/explorer.html is generated at build time (docs/conf.py), not committed")
+
+
+def test_grouped_numpydoc_entries_render_together() -> None:
+    """``x1, x2, y : number or str`` is one entry naming all three (not three copies of
+    one text, nor ``y`` typed as ``x1, x2,``)."""
+    page = HTML / "api" / "graspcompass.html"
+    if not page.is_file():
+        pytest.skip("the documentation is not built: run .ci/build-docs.sh first")
+    text = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", page.read_text(encoding="utf-8")))
+    assert "x1, x2, y (number or str) – Contacts" in text
+    assert text.count("– Contacts P1 = (x1, y)") == 1
+    render = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", (HTML / "api" / "render.html")
+                                        .read_text(encoding="utf-8")))
+    assert "object_face, object_edge (str) – Fill and outline" in render
+    assert "cone_face, cone_alpha (str, float)" in render
+
+
+def test_pages_state_the_paper_correctly() -> None:
+    construction = (DOCS / "construction.md").read_text(encoding="utf-8")
+    # §5's collinearity is for sides of different cones; B13 is on O P2, B24 on O P1
+    assert "s5-same-contact-13" in construction and "$B_{13}$ lies on the\nline $OP_2$" in (
+        construction)
+    tutorial = (DOCS / "tutorial.md").read_text(encoding="utf-8")
+    assert "{ref}`(8)–(11) <eq-8>`" in tutorial
+    assert "(eq-8)=\n**(8)–(11)**" in (DOCS / "paper.md").read_text(encoding="utf-8")
