@@ -41,6 +41,8 @@ SEED = int(os.environ.get("GRASPCOMPASS_FUZZ_SEED",
                           "0" if "GRASPCOMPASS_FUZZ_SECONDS" not in os.environ
                           else str(random.randrange(2**32))))
 
+#: Without a display ``explore`` is refused at once; with one it would open a window.
+HEADLESS = not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
 #: Exit statuses each command documents (3, an internal error, is never acceptable here).
 STATUSES = {"verify": {0, 1, 2}, "crosscheck": {0, 1, 2}}
 DEFAULT_STATUSES = {0, 2}
@@ -103,7 +105,7 @@ def _path(r: random.Random, command: str) -> str:
 def argv_for(r: random.Random) -> list[str]:
     """One random command line: a cheap valid base with hostile values mixed in."""
     command = r.choice(["main", "draw", "steps", "k", "k", "presets", "animate", "export",
-                        "explore", "verify", "crosscheck"])
+                        *(["explore"] * HEADLESS), "verify", "crosscheck"])
     junk = [r.choice(["--bogus", "x", "-", "--", "\x00", "-q"])] if r.random() < 0.1 else []
     if command == "main":  # a valid main job takes seconds: only refused folders here
         folder = r.choice(["missing/out", "afile", "/dev/null", "", "\x00", "afile/out",

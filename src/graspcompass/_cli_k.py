@@ -45,6 +45,8 @@ MAX_TEXT = 10 * MAX_LENGTH
 #: Rows computed and written at a time on the float path.
 CHUNK = 20_000
 
+_JSON_RECORD = (' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
+                '"F_int": %r, "limiting": %d}')
 _HEAD = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
 _NAME_TAIL = re.compile(r"[\w.]*$")
 
@@ -274,11 +276,9 @@ def _stream(args: argparse.Namespace, g: Any, t: np.ndarray, fe: float, out: IO[
         out.write("[")
         sep = "\n"
         for tc, ks, kg, fint, lim in _chunks(g, t, fe):
-            records = [f' {{"theta": "{th!r}", "theta_deg": {d!r}, "k": [{a!r}, {b!r}, {c!r}, '
-                       f'{e!r}], "k_grasp": {kk!r}, "F_int": {f!r}, "limiting": {n}}}'
-                       for th, d, a, b, c, e, kk, f, n in zip(
-                           tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(),
-                           fint.tolist(), lim.tolist())]
+            records = [_JSON_RECORD % cells for cells in zip(
+                tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(),
+                fint.tolist(), lim.tolist())]
             out.write(sep + ",\n".join(records))
             out.flush()
             sep = ",\n"
