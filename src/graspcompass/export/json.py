@@ -89,7 +89,7 @@ A file is outside input: :func:`loads` trusts nothing in it and refuses, with a
 Time: a document refused by steps 1-4 is refused in milliseconds, and one
 refused at step 5 as soon as its first wrong step is rebuilt.  Accepting costs
 what building the construction from the grasp and writing its records cost:
-0.05-0.3 s for the paper's grasps, 0.3-1.5 s for random exact grasps at the
+0.1-0.5 s for the paper's grasps, 0.3-1.5 s for random exact grasps at the
 limits above on a loaded machine, under 0.2 s for float grasps (any ``bits``).
 Symbolic grasps are the exception: their construction takes as long as
 :func:`~graspcompass.internal_force_diagram` takes for them (seconds to
