@@ -363,3 +363,17 @@ def test_float_path_reads_ranges_like_the_parser(start, stop, step, unit, single
     assert count == len(exact)
     floats = _cli_k._float_angles(text)
     assert np.allclose(floats, [float(v) for v in exact], rtol=1e-12, atol=1e-12)
+
+
+def test_writing_removes_a_half_written_file_only(tmp_path):
+    from graspcompass._output import writing
+    from graspcompass.errors import OutputError
+
+    new, old = tmp_path / "new.gif", tmp_path / "old.gif"
+    old.write_text("kept")
+    for path in (new, old):
+        with pytest.raises(OutputError, match="no space left"):
+            with writing(path):
+                path.write_text("half")
+                raise OSError(28, "No space left on device")
+    assert not new.exists() and old.read_text() == "half"

@@ -5,8 +5,8 @@ and a one-line message naming the path, an output file that cannot be
 written: an empty name, a folder, a missing folder (folders are never made
 silently), a parent that is a file, no permission, a name that is too long.
 :func:`writing` turns an :class:`OSError` during the write (a full disk,
-``/dev/full``) into the same error.  This module is a leaf: it imports only
-:mod:`graspcompass.errors`.
+``/dev/full``) into the same error, and removes a half-written file.  This
+module is a leaf: it imports only :mod:`graspcompass.errors`.
 
 Examples
 --------
@@ -125,6 +125,9 @@ def _reason(exc: OSError) -> str:
 def writing(path: str | os.PathLike[str]) -> Iterator[None]:
     """Turn an :class:`OSError` raised inside the block into :class:`OutputError`.
 
+    A file the block made at ``path`` before failing (a half-written file on a
+    full disk) is removed; a file that was there before is left alone.
+
     >>> try:
     ...     with writing("/dev/full"):
     ...         raise OSError(28, "No space left on device")
@@ -132,9 +135,15 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
     ...     print(err)
     cannot write '/dev/full': no space left on the device
     """
+    existed = os.path.lexists(path)
     try:
         yield
-    except OutputError:
-        raise
-    except OSError as exc:
+    except (OSError, OutputError) as exc:
+        if not existed and os.path.isfile(path):
+            try:
+                os.unlink(path)
+            except OSError:  # pragma: no cover - nothing more to do
+                pass
+        if isinstance(exc, OutputError):
+            raise
         raise _fail(os.fspath(path), _reason(exc)) from None
