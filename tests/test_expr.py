@@ -468,7 +468,6 @@ def test_no_warning_escapes(text: str) -> None:
         ("sin(10**60)", str(MAX_ARGUMENT_BITS)),
         ("asin(1/10**39)", str(MAX_ARGUMENT_BITS)),
         ("+".join(f"sqrt(1e309+{i})" for i in range(1, 10)), str(MAX_WORK_BITS)),
-        ("+".join(f"tan({k}*pi/120)" for k in (1, 7, 11, 13, 17)), str(MAX_NODES)),
         ("sqrt(sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6)))", "cannot decide the sign"),
     ],
 )
@@ -526,6 +525,15 @@ def test_complex_values_by_hand() -> None:
 
     assert f"{math.pi / 2:.3g} - {math.log(2 + math.sqrt(3)):.3g}*I" == "1.57 - 1.32*I"
     assert f"{2 * math.sin(math.pi / 3):.3g}" == "1.73"
+
+
+def test_long_expansions_stay_unevaluated() -> None:
+    # sympy writes tan(pi/120) out in 313 nodes of nested radicals; the kernel then struggled
+    # with them (a grasp with y = tan(pi/120) did not finish k_grasp in 10 s): kept as it is
+    assert parse_exact("tan(pi/120)") == sympy.tan(pi / 120, evaluate=False)
+    assert parse_exact("sin(pi/5)") == sympy.sqrt(R(5, 8) - sympy.sqrt(5) / 8)  # short: written
+    assert parse_exact("tan(pi/8)") == sympy.sqrt(2) - 1
+    assert MAX_NODES >= 1000  # a safety net: no text of MAX_LENGTH characters reaches it now
 
 
 def test_real_sign() -> None:

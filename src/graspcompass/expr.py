@@ -61,13 +61,17 @@ MAX_ARGUMENT_BITS = 128
 #: Most bits, added up over every root and function argument of one text: a bound on
 #: the work of exact roots (each may factor its radicand).
 MAX_WORK_BITS = 8192
-#: Most nodes in the tree of a value or an intermediate result (``tan(pi/120)``, written
-#: out in radicals by sympy, has 313; ``atan(sin(atan(sin(...))))`` doubles at each level).
+#: Most nodes in the tree of a value or an intermediate result: a safety net, since a
+#: function value sympy would write out in more than 40 nodes is kept unevaluated
+#: (``tan(pi/120)`` stays ``tan(pi/120)`` rather than 313 nodes of nested radicals).
 MAX_NODES = 1000
 #: Most angles :func:`parse_angles` returns.
 MAX_ANGLES = 1_000_000
 
 _MAX_LIST_LENGTH = 10 * MAX_LENGTH  # longest text parse_angles reads
+#: A function value sympy writes out in more nodes stays unevaluated (sin(pi/5) is written
+#: out in radicals, 12 nodes; tan(pi/120), 313 nodes, stays tan(pi/120)).
+_EXPANSION_NODES = 40
 _MAX_DECIMAL_EXPONENT = 400  # bound on n in a literal such as 1e-n (checked before reading it)
 #: What sympy may raise on a value it cannot handle; ``AttributeError`` is sympy's cache
 #: wrapper failing on a lazy "cannot determine truth value" message (sympy 1.12-1.14).
@@ -292,7 +296,10 @@ class _Reader:
             self._real_arcsine(name, args[0])
         self.depth -= 1
         if not any(_has_function(arg) for arg in args):
-            return function(*args)
+            value = function(*args)
+            if _too_many_nodes(value, _EXPANSION_NODES):  # tan(pi/120): 313 nodes of radicals
+                return function(*args, evaluate=False)  # kept as the exact tan(pi/120)
+            return value
         # sympy's own simplification of f(g(...)) queries the sign of g(...) again and again
         # (exponential in the depth): keep nested functions as they are, exact and unevaluated
         if name == "tan":
@@ -393,9 +400,9 @@ def _has_function(value: sympy.Expr) -> bool:
     return bool(value.atoms(sympy.Function))
 
 
-def _too_many_nodes(value: sympy.Expr) -> bool:
+def _too_many_nodes(value: sympy.Expr, most: int = MAX_NODES) -> bool:
     for count, _ in enumerate(sympy.preorder_traversal(value), 1):
-        if count > MAX_NODES:
+        if count > most:
             return True
     return False
 
