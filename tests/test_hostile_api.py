@@ -500,3 +500,43 @@ def test_property_folders_stay_empty(tmp_path: Path) -> None:
     """The helper itself: a created file is reported."""
     with pytest.raises(AssertionError, match="files created"), empty_cwd():
         Path("stray").write_text("x")
+
+
+EXACT_TEXTS = st.lists(st.sampled_from(
+    ["1", "2", "3", "1/3", "0.5", "pi", "pi/3", "30deg", "sqrt(2)", "sqrt(", "sin(", "cos(",
+     "tan(", "atan(", "asin(", "acos(", "(", ")", "+", "-", "*", "/", "**2", "**(1/3)",
+     "1e309", "1e-300", "9" * 30]), min_size=1, max_size=12).map("".join)
+
+
+# derandomized: the exact kernel is reached here, and its known unbounded cases (below) must
+# not make CI flaky; the examples are the same on every run
+@settings(PROPERTY, derandomize=True)
+@given(name=st.sampled_from(("x1", "x2", "y", "phi1", "phi2", "xi1", "xi2")), text=EXACT_TEXTS,
+       theta=st.sampled_from(["0", "1/3", "pi/5", "2"]))
+def test_exact_grasp_from_text(name: str, text: str, theta: str) -> None:
+    """An exact grasp with one parameter given as random text: a value or a named refusal."""
+    with empty_cwd():
+        g = named_or_value(lambda: Grasp(**{**FIG6, name: text}), f"Grasp({name}={text!r})")
+        if g is not None:
+            _check_output(named_or_value(lambda: g.k_grasp(theta), f"k_grasp({theta!r})"))
+            _check_output(named_or_value(lambda: g.k_grasp(0.5), "k_grasp(0.5)"))
+
+
+# Known defects of the exact kernel (geometry/exact.py), found by the grasp fuzz of issue 10:
+# the parser reads these values in milliseconds, then canon() factors a radicand with an
+# unbounded sympy.factorint.  Reported to the kernel's owner; strict=False until fixed.
+KERNEL_SLOW = [
+    ("x1", "sqrt(1e300+1)"),  # > 20 s
+    ("phi2", "atan(2e30)"),  # sin, cos of atan(2e30) have the radicand 4e60 + 1: > 10 s
+]
+
+
+@pytest.mark.xfail(reason="geometry/exact.py factors radicands without a bound", strict=False,
+                   raises=TimeoutError)
+@pytest.mark.parametrize(("name", "text"), KERNEL_SLOW)
+def test_exact_kernel_is_bounded(name: str, text: str) -> None:
+    with bounded(f"Grasp({name}={text!r}).k_grasp('1/3')", seconds=2.0):
+        try:
+            Grasp(**{**FIG6, name: text}).k_grasp("1/3")
+        except GraspCompassError:
+            pass
