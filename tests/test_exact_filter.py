@@ -113,3 +113,21 @@ def test_approx_has_the_digits_it_promises(num, den, dps):
     got = exact.approx(e, dps)
     with mpmath.workdps(90):
         assert abs(mpmath.mpf(got) - mpmath.mpf(want)) <= abs(mpmath.mpf(want)) * 10 ** (1 - dps)
+
+
+_ROOTS_R = exact._ring((sp.sqrt(2), sp.sqrt(3), sp.sqrt(5), sp.sqrt(7)))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.dictionaries(st.tuples(*[st.integers(0, 1)] * 4), _coeff, min_size=1, max_size=16))
+def test_direct_expression_is_sympys(terms):
+    """exact._as_expr builds Add/Mul without flattening: it must be sympy's own tree."""
+    from sympy.core.cache import clear_cache
+
+    p = _ROOTS_R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in terms.items()})
+    ours = exact._as_expr(p)
+    clear_cache()
+    theirs = p.as_expr()
+    assert sp.srepr(ours) == sp.srepr(theirs)
+    assert ours == theirs and hash(ours) == hash(theirs)
+    assert exact.canon(ours) == ours

@@ -15,7 +15,7 @@ for the expressions of the paper:
 from __future__ import annotations
 
 import math
-from functools import lru_cache
+from functools import cmp_to_key, lru_cache
 
 import sympy as sp
 
@@ -25,6 +25,8 @@ __all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zer
            "fold_fractions", "has_float", "sym", "text"]
 
 Expr = sp.Expr
+
+_ADD_ORDER = cmp_to_key(sp.Basic.compare)  # the order of sympy's Add arguments
 
 #: Digits used to separate a non-zero exact number from zero before an exact test.
 _PREC = 40
@@ -148,6 +150,8 @@ def clear_caches() -> None:
     _gen_float.cache_clear()
     _relations.cache_clear()
     _has_opaque.cache_clear()
+    _root_primes.cache_clear()
+    _SQRT.clear()
     trig.sincos.cache_clear()
     trig._reference.cache_clear()
 
@@ -365,6 +369,51 @@ def _relations(R) -> tuple[list, list, list]:
     return root_rels, trig_rels, roots
 
 
+#: sqrt(m) of the square-free m met so far (sympy's evaluation of sqrt is slow).
+_SQRT: dict[int, sp.Expr] = {}
+
+
+@lru_cache(maxsize=4096)
+def _root_primes(R) -> tuple[int, ...] | None:
+    """The primes p of ring R when all its generators are square roots sqrt(p), else None."""
+    if not all(_gen_key(g)[0] == 0 for g in R.symbols):
+        return None
+    return tuple(int(g.base) for g in R.symbols)
+
+
+def _as_expr(p) -> sp.Expr:
+    """``p.as_expr()``, built directly for a reduced polynomial in prime square roots.
+
+    Gives the very expression sympy builds (``Add`` of ``coefficient * sqrt(m)``
+    terms, ``sqrt(2)*sqrt(3)`` as ``sqrt(6)``, in sympy's argument order) without
+    its flattening; ``test_exact_filter`` checks the two agree structurally.
+    """
+    primes = _root_primes(p.ring)
+    if primes is None or len(p) < 2:
+        return p.as_expr()
+    const = None
+    terms = []
+    for monom, c in p.items():
+        m = 1
+        for prime, e in zip(primes, monom):
+            if e > 1:
+                return p.as_expr()  # not reduced
+            if e:
+                m *= prime
+        q = sp.Rational(int(c.numerator), int(c.denominator))
+        if m == 1:
+            const = q
+            continue
+        root = _SQRT.get(m)
+        if root is None:
+            root = _SQRT[m] = sp.sqrt(m)
+        terms.append(root if q is sp.S.One else sp.Mul._from_args((q, root), True))
+    terms.sort(key=_ADD_ORDER)
+    if const is not None:
+        terms.insert(0, const)
+    return sp.Add._from_args(terms, True)
+
+
 @lru_cache(maxsize=4096)
 def _has_opaque(R) -> bool:
     """Whether ring R has numeric generators other than prime square roots."""
@@ -374,7 +423,7 @@ def _has_opaque(R) -> bool:
 def _finish(R, n, d) -> sp.Expr:
     """The canonical sympy expression of n/d (:func:`_reduce`); remember it."""
     n, d = _reduce(R, n, d)
-    out = n.as_expr() / d.as_expr() if d != R.one else n.as_expr()
+    out = n.as_expr() / d.as_expr() if d != R.one else _as_expr(n)
     if len(_MEMO) > 100_000:
         _MEMO.clear()
     _MEMO[out] = (R, n, d)
