@@ -120,6 +120,9 @@ def test_exact_values_are_bounded(capsys):
     (["k", "--theta", "10**300*10**10"], ""),
     (["k", "--x1", "1e309"], ""),
     (["k", "--y", "1e309"], ""),
+    (["k", "--x1", "1e-300", "--x2", "1e-300", "--external-force", "1e300"], "overflows"),
+    (["k", "--x1", "1e-300", "--x2", "1e-300", "--external-force", "1e300", "--theta",
+      "0:1:1e-4"], "overflows"),  # the float path: refused before the note and the first row
 ])
 def test_overflowing_values_are_refused(argv, fragment, capsys):
     err = refused(capsys, argv, fragment)

@@ -192,9 +192,23 @@ def _values(g: Any, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray, n
     for name, arr in (("k_n", ks), ("k_grasp", kg), ("F_int", fint)):
         if not np.all(np.isfinite(arr)):
             raise NonFiniteValueError(
-                f"{name} overflows double precision for this grasp (a value beyond 1.8e308): "
-                "give the lengths in smaller units")
+                f"{name} overflows double precision for this grasp and force (a value beyond "
+                "1.8e308): give the lengths or the force in other units")
     return ks, kg, fint
+
+
+def _check_range(g: Any, fe: float) -> None:
+    """Refuse a grasp whose k_n or F_int could overflow a double at some θ.
+
+    Over all θ, ``|k_n(θ)| <= |V_n| = hypot(S_n, C_n)`` and ``F_int <= max |V_n| · F_e / D``.
+    """
+    with np.errstate(all="ignore"):
+        largest = max(math.hypot(_float(S), _float(C)) for S, C in zip(g.S, g.C))
+        bound = largest * fe / _float(g.D) if fe else largest
+    if not math.isfinite(bound):
+        raise NonFiniteValueError("k_n or F_int overflows double precision for this grasp and "
+                                  "force (a value beyond 1.8e308): give the lengths or the "
+                                  "force in other units")
 
 
 def _limiting(ks: np.ndarray, kg: np.ndarray) -> np.ndarray:
@@ -217,7 +231,8 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
         if args.exact:
             raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
                                      f"angles; --theta gives {t.size}")
-        if not args.quiet:
+        _check_range(g, fe_float)  # before the first row: an error is then the only line
+        if not getattr(args, "quiet", False):
             print(f"graspcompass: note: {t.size} angles: θ read in double precision (exactly "
                   f"for at most {EXACT_ANGLES} angles)", file=sys.stderr)
         _stream(args, g, t, fe_float, out)
