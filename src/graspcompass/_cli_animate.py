@@ -49,8 +49,23 @@ def bounded(kind: type, low: float, high: float, *, low_open: bool = False
             ) -> Callable[[str], Any]:
     """An argparse ``type`` reading ``kind`` (int or float) within ``[low, high]``.
 
-    With ``low_open`` the lower bound is excluded.  nan, infinities and text
-    are refused with a one-line message naming the bounds.
+    nan, infinities and text are refused with a one-line message naming the
+    bounds.
+
+    Parameters
+    ----------
+    kind : type
+        ``int`` or ``float``.
+    low, high : float
+        The bounds, both included unless ``low_open``.
+    low_open : bool, optional
+        Exclude the lower bound.
+
+    Returns
+    -------
+    callable
+        A function of the option's text that returns the value or raises
+        :class:`argparse.ArgumentTypeError`.
 
     Examples
     --------
@@ -84,7 +99,15 @@ def bounded(kind: type, low: float, high: float, *, low_open: bool = False
 
 
 def quiet_option(p: argparse.ArgumentParser, text: str = "print nothing but errors") -> None:
-    """Add ``-q``/``--quiet`` to a sub-command without hiding the root's ``graspcompass -q``."""
+    """Add ``-q``/``--quiet`` to a sub-command without hiding the root's ``graspcompass -q``.
+
+    Parameters
+    ----------
+    p : argparse.ArgumentParser
+        The sub-command's parser.
+    text : str, optional
+        The option's help.
+    """
     p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=text)
 
 

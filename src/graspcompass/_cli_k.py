@@ -218,6 +218,15 @@ def _limiting(ks: np.ndarray, kg: np.ndarray) -> np.ndarray:
 def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
     """Run ``graspcompass k`` for the grasp ``g``; returns the exit status (0).
 
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``theta``, ``external_force``, ``exact``, ``json`` and ``quiet``.
+    g : Grasp
+        A numeric grasp.
+    out : file, optional
+        Where the rows go (default: stdout).
+
     Raises
     ------
     ValueError
@@ -269,7 +278,15 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
 
 
 def table(rows: list[list[str]], head: list[str]) -> str:
-    """Rows under a head, columns padded to their widest cell (the last is not padded)."""
+    """Rows under a head, columns padded to their widest cell (the last is not padded).
+
+    Parameters
+    ----------
+    rows : list of list of str
+        The cells, row by row.
+    head : list of str
+        The column names.
+    """
     widths = [max(3, *(len(r[i]) for r in [head, *rows])) for i in range(len(head))]
     widths[-1] = max(3, len(head[-1]))
     fmt = "  ".join(f"{{:<{w}}}" for w in widths[:-1]) + "  {}"

@@ -58,8 +58,16 @@ MAX_MESSAGE = 400
 
 
 def one_line(text: str, first: bool = True) -> str:
-    """``text`` on one line: its first line (or all of it, escaped, if not ``first``),
-    unprintable characters escaped, cut at :data:`MAX_MESSAGE` characters."""
+    """``text`` on one line, unprintable characters escaped, cut at :data:`MAX_MESSAGE`.
+
+    Parameters
+    ----------
+    text : str
+        A message.
+    first : bool, optional
+        Keep only the first line (exception messages); otherwise escape the
+        line breaks too (argparse messages quoting the command line).
+    """
     lines = text.strip().splitlines() if first else [text.strip()]
     line = "".join(c if c.isprintable() else repr(c)[1:-1] for c in (lines[0] if lines else ""))
     if len(line) > MAX_MESSAGE:
