@@ -33,7 +33,7 @@ from pathlib import Path
 
 import pytest
 
-from graspcompass.cli import main
+from graspcompass.cli import build_parser, main
 
 SECONDS = float(os.environ.get("GRASPCOMPASS_FUZZ_SECONDS", "5"))
 HANG = float(os.environ.get("GRASPCOMPASS_FUZZ_HANG", "30"))
@@ -48,6 +48,17 @@ STATUSES = {"verify": {0, 1, 2}, "crosscheck": {0, 1, 2}}
 DEFAULT_STATUSES = {0, 2}
 COMMANDS = ("draw", "steps", "k", "presets", "animate", "export", "explore", "verify",
             "crosscheck")
+
+
+def _registered() -> tuple[str, ...]:
+    """Every sub-command of ``graspcompass --help``."""
+    p = build_parser()
+    sub = next(a for a in p._actions if a.dest == "command")  # the subparsers action
+    return tuple(sub.choices)
+
+
+#: Sub-commands without a generator of their own: grasp options and refused outputs.
+OTHERS = tuple(c for c in _registered() if c not in COMMANDS)
 
 NUMBERS = [
     "1e309", "-1e309", "1e-309", "0", "-0", "nan", "inf", "-inf", "1j", "1+2j", "10**64",
@@ -105,7 +116,7 @@ def _path(r: random.Random, command: str) -> str:
 def argv_for(r: random.Random) -> list[str]:
     """One random command line: a cheap valid base with hostile values mixed in."""
     command = r.choice(["main", "draw", "steps", "k", "k", "presets", "animate", "export",
-                        *(["explore"] * HEADLESS), "verify", "crosscheck"])
+                        *(["explore"] * HEADLESS), "verify", "crosscheck", *OTHERS])
     junk = [r.choice(["--bogus", "x", "-", "--", "\x00", "-q"])] if r.random() < 0.1 else []
     if command == "main":  # a valid main job takes seconds: only refused folders here
         folder = r.choice(["missing/out", "afile", "/dev/null", "", "\x00", "afile/out",
@@ -113,6 +124,8 @@ def argv_for(r: random.Random) -> list[str]:
                           + ["ro/out"] * (os.geteuid() != 0))  # root writes in ro/
         return [*r.choice([[], ["-q"]]), "--out", folder, *junk]
     argv = [command]
+    if command in OTHERS:  # a command added later: hostile grasp values, refused outputs
+        return [*argv, *_grasp(r), "-o", r.choice(REFUSED_PATHS), *junk]
     if command == "presets":
         return argv + junk
     if command == "steps":
@@ -227,7 +240,7 @@ def test_cli_fuzz(workdir, capsys):
         cases += 1
         slowest = max(slowest, (seconds, argv))
         where = f"argv={argv!r} (seed {SEED}, case {cases})"
-        command = argv[0] if argv[0] in COMMANDS else "main"
+        command = argv[0] if argv[0] in COMMANDS + OTHERS else "main"
         assert code in STATUSES.get(command, DEFAULT_STATUSES), \
             f"status {code}: {err.strip()[-300:]!r} for {where}"
         assert "Traceback" not in err, f"traceback for {where}: {err[-500:]}"
