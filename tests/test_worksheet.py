@@ -236,17 +236,39 @@ def test_instructions_of_all_mention_every_step_in_order(fig6_all: tuple[Workshe
     assert "is positive when $X_n$ lies to the right of $O_M$" in " ".join(ws.texts)
 
 
-def test_text_stays_on_the_page_and_off_the_drawing(fig6_all: tuple[Worksheet, bytes]) -> None:
-    ws, _ = fig6_all
-    fig, ax = ws.figures[0], ws.axes[0]
-    renderer = fig.canvas.get_renderer()
-    page = fig.bbox
+def _check_text(ws: Worksheet, page: int) -> None:
+    """Every text inside the page margins (5 mm) and off the drawing, measured without font
+    hinting as in the PDF (hinting widens text at 72 dpi by several per cent)."""
+    import matplotlib
+
+    fig, ax = ws.figures[page], ws.axes[page]
+    with matplotlib.rc_context({"text.hinting": "no_hinting"}):
+        renderer = fig.canvas.get_renderer()
+        boxes = [(t, t.get_window_extent(renderer)) for t in fig.texts]
+    sheet = fig.bbox
     drawing = ax.get_window_extent(renderer)
-    for t in fig.texts:
-        bb = t.get_window_extent(renderer)
-        assert page.x0 <= bb.x0 and bb.x1 <= page.x1 + 0.5 and page.y0 <= bb.y0, t.get_text()
-        assert bb.y1 <= page.y1
+    for t, bb in boxes:
+        assert sheet.x0 <= bb.x0 and bb.x1 <= sheet.x1 - 5 * 72 / 25.4, t.get_text()
+        assert sheet.y0 + 5 * 72 / 25.4 <= bb.y0 and bb.y1 <= sheet.y1, t.get_text()
         assert not bb.overlaps(drawing), t.get_text()
+
+
+def test_text_stays_on_the_page_and_off_the_drawing(fig6_all: tuple[Worksheet, bytes],
+                                                    asym_v3: Worksheet) -> None:
+    ws, _ = fig6_all
+    _check_text(ws, 0)
+    _check_text(ws, 1)
+    _check_text(asym_v3, 0)
+
+
+def test_page_1_shows_the_givens_only(fig6_all: tuple[Worksheet, bytes]) -> None:
+    ws, _ = fig6_all
+    assert set(ws.given) == {"O", "x-axis", "y-axis", "P1", "P2"}
+    drawn = {k for k in ws.artists[0] if not k.startswith("cone")} - {"object"}
+    assert drawn == set(ws.given)
+    assert ws.artists[0]["cones"]  # both friction cones with their sides, to be extended
+    assert {f"V{n}" for n in (1, 2, 3, 4)} <= set(ws.artists[1])
+    assert "envelope" in ws.artists[1]
 
 
 # -- options -----------------------------------------------------------------------------------
@@ -264,10 +286,22 @@ def test_given_levels_and_names() -> None:
 
 
 def test_scale_too_large_is_refused_with_the_largest_that_fits() -> None:
-    with pytest.raises(ValueError, match=r"at most \d+ mm per unit fits"):
+    with pytest.raises(ValueError, match=r"at most [\d.]+ mm per unit fits"):
         worksheet_pages(Grasp.preset("table1c"), steps="all", scale=400)
     with pytest.raises(ValueError, match="scale must be"):
         worksheet_pages(Grasp.preset("fig6"), scale=float("nan"))
+    with pytest.raises(ValueError, match="too small to draw in"):
+        worksheet_pages(Grasp.preset("fig6"), steps="V4", scale=0.5)
+
+
+def test_any_size_of_grasp_gets_a_round_scale() -> None:
+    from graspcompass.render.worksheet import round_scale
+
+    assert [round_scale(f) for f in (12.9, 10.0, 9.99, 0.0437, 2345.6)] == [
+        12.0, 10.0, 9.9, 0.043, 2340.0]
+    big = Grasp(x1=100, x2=200, y=50, phi1="pi/2", phi2="pi/2", mu1="1/2", mu2="1/2")
+    ws = worksheet_pages(big, steps="V4")
+    assert 0.1 < ws.scale < 1 and mm_per_unit(ws, 0)[0] == pytest.approx(ws.scale, rel=1e-12)
 
 
 # -- the command -------------------------------------------------------------------------------
@@ -295,7 +329,8 @@ def test_command_writes_the_worksheet(tmp_path: Path, capsys: pytest.CaptureFixt
 
 
 @pytest.mark.parametrize("argv", [["--scale", "0"], ["--scale", "inf"], ["--steps", "V5"],
-                                  ["--given", "P1x;rm"], ["--scale", "x"]])
+                                  ["--given", "P1x;rm"], ["--scale", "x"],
+                                  ["--scale", "-3"]])
 def test_command_refuses_bad_options(argv: list[str]) -> None:
     with pytest.raises(SystemExit) as err:
         _parser().parse_args(["worksheet", *argv])

@@ -33,7 +33,7 @@ __all__ = ["register", "run"]
 _STEPS = ("all", "V1", "V2", "V3", "V4")
 _LEVELS = ("grasp", "feet", "sides", "perpendiculars")
 #: Bounds of ``--scale`` in mm per unit (as :data:`graspcompass.render.worksheet.SCALE_RANGE`).
-SCALE_MIN, SCALE_MAX = 1.0, 500.0
+SCALE_MIN, SCALE_MAX = 1e-6, 1e6
 #: Longest ``--given`` text.
 MAX_GIVEN = 200
 
@@ -45,7 +45,7 @@ def _scale(text: str) -> float:
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected millimetres per unit, a number such as 40, "
                                          f"got {text[:40]!r}") from None
-    if not math.isfinite(value) or not SCALE_MIN <= value <= SCALE_MAX:
+    if not (math.isfinite(value) and SCALE_MIN <= value <= SCALE_MAX):
         raise argparse.ArgumentTypeError(f"the scale is from {SCALE_MIN:g} to {SCALE_MAX:g} mm "
                                          f"per unit, got {text[:40]!r}")
     return value
@@ -92,7 +92,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                         "separated by commas (default: grasp)")
     w.add_argument("--scale", type=_scale, metavar="MM_PER_UNIT",
                    help="millimetres on paper per unit of the grasp (default: the largest "
-                        "whole number that fits the page)")
+                        "round value that fits the page, whole mm from 10 mm up)")
     w.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
                    help="print nothing but errors")
 

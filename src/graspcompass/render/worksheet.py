@@ -66,6 +66,7 @@ __all__ = [
     "Worksheet",
     "given_names",
     "instructions_for",
+    "round_scale",
     "selected_names",
     "worksheet",
     "worksheet_pages",
@@ -77,8 +78,10 @@ A4_MM = (210.0, 297.0)
 STEP_CHOICES = ("all", "V1", "V2", "V3", "V4")
 #: Values of ``given``, each including the ones before it: what is drawn on page 1.
 GIVEN_LEVELS = ("grasp", "feet", "sides", "perpendiculars")
-#: Smallest and largest scale (mm per unit) accepted.
-SCALE_RANGE = (1.0, 500.0)
+#: Smallest and largest scale (mm per unit) accepted; the unit of the grasp is anything.
+SCALE_RANGE = (1e-6, 1e6)
+#: Smallest width of the drawing, mm: a smaller scale is refused.
+MIN_DRAWING_MM = 20.0
 
 _MM = 1 / 25.4  # inches per mm
 _MARGIN = 12.0  # side margins, mm
@@ -191,7 +194,7 @@ class Worksheet:
         import matplotlib
 
         out = Path(path)
-        with matplotlib.rc_context({"text.hinting": "no_hinting", "text.hinting_factor": 1}):
+        with matplotlib.rc_context({"text.hinting": "no_hinting"}):
             self.figures[page].savefig(out, format="png", dpi=dpi)
         return out
 
@@ -659,6 +662,22 @@ def _sub_construction(construction: Any, selected: Sequence[str],
     return Construction(tuple(first + rest), construction.grasp, ())
 
 
+def round_scale(fit: float) -> float:
+    """The scale stated on the page: ``fit`` rounded down to whole mm per unit (at most three
+    significant digits) from 10 up, to two significant digits below 10.
+
+    Examples
+    --------
+    >>> round_scale(18.63), round_scale(1047.2), round_scale(0.987), round_scale(7.31)
+    (18.0, 1040.0, 0.98, 7.3)
+    """
+    if fit >= 10:
+        k = max(0, math.floor(math.log10(fit)) - 2)
+        return float(math.floor(fit / 10**k) * 10**k)
+    k = math.floor(math.log10(fit)) - 1
+    return float(f"{math.floor(fit / 10**k + 1e-9) * 10**k:.3g}")
+
+
 def _fits(box: tuple[float, float, float, float], w_mm: float, h_mm: float) -> float:
     return min(w_mm / (box[1] - box[0]), h_mm / (box[3] - box[2]))
 
@@ -845,14 +864,16 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     plan, text_cols = max(plans, key=lambda p: p[0].fit)
     fit = plan.fit
     if scale is None:
-        if fit < SCALE_RANGE[0]:
-            raise ValueError(f"the drawing does not fit on A4 at {SCALE_RANGE[0]:g} mm per unit")
-        scale = float(math.floor(fit))
+        scale = round_scale(fit)
     elif scale > fit * (1 + 1e-12):
         raise ValueError(
             f"at {scale:g} mm per unit the drawing needs {(box[1] - box[0]) * scale:.0f} mm × "
-            f"{(box[3] - box[2]) * scale:.0f} mm; at most {math.floor(fit):g} mm per unit "
+            f"{(box[3] - box[2]) * scale:.0f} mm; at most {round_scale(fit):g} mm per unit "
             f"fits the {plan.area[2]:.0f} mm × {plan.area[3]:.0f} mm left on the page")
+    elif (box[1] - box[0]) * scale < MIN_DRAWING_MM:
+        raise ValueError(f"at {scale:g} mm per unit the drawing is "
+                         f"{(box[1] - box[0]) * scale:.2g} mm wide, too small to draw in; give at "
+                         f"least {MIN_DRAWING_MM / (box[1] - box[0]):.2g} mm per unit")
     scale = float(scale)
     which = ("all of §3.3" if steps == "all" else
              f"{steps} (§3.3, Fig. 4({'abcd'[int(steps[1]) - 1]}))")
@@ -914,8 +935,9 @@ def worksheet(construction_or_grasp: Any, path: str | os.PathLike[str], *, steps
         What page 1 already shows: a level of :data:`GIVEN_LEVELS` or step
         names (see :func:`given_names`).  The student draws the rest.
     scale : float, optional
-        Millimetres per unit on paper; by default the largest whole number
-        that fits the drawing on the page.
+        Millimetres per unit on paper (any unit: the grasp's numbers are
+        unitless); by default the largest round value that fits the drawing on
+        the page (:func:`round_scale`: whole millimetres from 10 mm up).
 
     Returns
     -------
