@@ -89,7 +89,7 @@ _TOP = 10.0  # top margin, mm
 _BOTTOM = 10.0
 _HEADER = 30.0  # title, scale, check bar
 _GAP = 5.0  # between the drawing and the text
-_FONT = 7.6  # instructions, pt
+_FONTS = (7.6, 7.2)  # instructions, pt: the smaller one when it gives a larger drawing
 _LINE = 1.36  # line height, in font sizes
 _NUMBER_W = 11.0  # width of the step number column, mm
 _COL_GAP = 6.0
@@ -597,10 +597,12 @@ class _Plan:
     area: tuple[float, float, float, float]  # the drawing: x0, y0, width, height
     columns: list[tuple[float, float, float]]  # text columns: x0, top, width
     fit: float  # the largest scale that fits, mm per unit
+    font: float  # size of the instructions, pt
 
 
 def _plans(box: tuple[float, float, float, float], intro: list[str],
-           items: list[tuple[str, str]]) -> list[tuple[_Plan, list[list[_Block]]]]:
+           items: list[tuple[str, str]], size: float
+           ) -> list[tuple[_Plan, list[list[_Block]]]]:
     """The ways to lay out page 1 that fit: the text below the drawing in one or two
     to three columns, or in a column to the right of it."""
     W, H = A4_MM
@@ -609,24 +611,24 @@ def _plans(box: tuple[float, float, float, float], intro: list[str],
     out = []
     for ncols in (1, 2, 3):
         colw = (width - (ncols - 1) * _COL_GAP) / ncols
-        head = _layout_blocks([("", t) for t in intro], width, _FONT)
-        cols = _columns(_layout_blocks(items, colw, _FONT), ncols)
-        text_h = _height(head, _FONT) + max(_height(c, _FONT) for c in cols)
+        head = _layout_blocks([("", t) for t in intro], width, size)
+        cols = _columns(_layout_blocks(items, colw, size), ncols)
+        text_h = _height(head, size) + max(_height(c, size) for c in cols)
         area_h = top - _BOTTOM - text_h - _GAP
         if area_h <= 10:
             continue
         area = (_MARGIN, top - area_h, width, area_h)
-        below = area[1] - _GAP - _height(head, _FONT)
+        below = area[1] - _GAP - _height(head, size)
         columns = [(_MARGIN, area[1] - _GAP, width)] + [
             (_MARGIN + k * (colw + _COL_GAP), below, colw) for k in range(ncols)]
-        out.append((_Plan(area, columns, _fits(box, area[2], area[3])), [head, *cols]))
+        out.append((_Plan(area, columns, _fits(box, area[2], area[3]), size), [head, *cols]))
     for colw in (62.0, 78.0):
-        blocks = _layout_blocks([("", t) for t in intro] + items, colw, _FONT)
-        if _height(blocks, _FONT) > top - _BOTTOM:
+        blocks = _layout_blocks([("", t) for t in intro] + items, colw, size)
+        if _height(blocks, size) > top - _BOTTOM:
             continue
         area = (_MARGIN, _BOTTOM, width - colw - _COL_GAP, top - _BOTTOM)
         columns = [(W - _MARGIN - colw, top, colw)]
-        out.append((_Plan(area, columns, _fits(box, area[2], area[3])), [blocks]))
+        out.append((_Plan(area, columns, _fits(box, area[2], area[3]), size), [blocks]))
     return out
 
 
@@ -857,11 +859,12 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     box = view_box(c.grasp, num)
     instructions = instructions_for(c, selected, gnames)
 
-    plans = _plans(box, [_intro(c, gnames), _rules()],
-                   [(i.number, i.text) for i in instructions])
+    plans = [p for size in _FONTS for p in _plans(
+        box, [_intro(c, gnames), _rules()], [(i.number, i.text) for i in instructions], size)]
     if not plans:
         raise ValueError("the instructions do not leave room for a drawing on A4")
-    plan, text_cols = max(plans, key=lambda p: p[0].fit)
+    # the largest drawing at the stated (rounded) scale, then the larger print
+    plan, text_cols = max(plans, key=lambda p: (round_scale(p[0].fit), p[0].font))
     fit = plan.fit
     if scale is None:
         scale = round_scale(fit)
@@ -904,12 +907,12 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         if page == 0:
             bars.append(unit_bar)
             for (x0, top, _), col in zip(plan.columns, text_cols):
-                texts += _draw_blocks(fig, col, x0, top, _FONT)
+                texts += _draw_blocks(fig, col, x0, top, plan.font)
         else:
             _transfer_marks(ax, sub, num, theme)
             x0, top, colw = plan.columns[0]
-            sol = _layout_blocks(_solution_rows(sub, num, scale), colw, _FONT)
-            _draw_blocks(fig, sol, x0, top, _FONT)
+            sol = _layout_blocks(_solution_rows(sub, num, scale), colw, plan.font)
+            _draw_blocks(fig, sol, x0, top, plan.font)
         figs.append(fig)
         axes.append(ax)
         arts.append(out)
