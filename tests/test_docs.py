@@ -436,6 +436,18 @@ def test_built_site_works_offline(offline_browser) -> None:
                     problems.append(f"{name}: 'Next frame' did not change the frame")
                 if not state["fontAwesome"]:
                     problems.append(f"{name}: the icon font of the player did not load")
+            if name == "explore.html":
+                # the web explorer, generated at build time, runs in its frame
+                explorer = [f for f in page.frames if f.url.endswith("_static/explorer.html")]
+                if not explorer:
+                    problems.append("explore.html: no frame shows _static/explorer.html")
+                else:
+                    explorer[0].wait_for_function("() => window.graspcompass", timeout=30_000)
+                    # the Fig. 6 grasp: V1 = (-1 - sqrt(3), -3/2 - sqrt(3))
+                    v1 = explorer[0].evaluate("() => window.graspcompass.get('V1')")
+                    if v1 is None or abs(v1[0] + 1 + 3 ** 0.5) > 1e-9 or (
+                            abs(v1[1] + 1.5 + 3 ** 0.5) > 1e-9):
+                        problems.append(f"explore.html: the explorer's V1 is {v1}")
             if len(outside) > before[0] or len(failed) > before[1]:
                 problems.append(f"{name}: requests outside the site {outside[before[0]:]}, "
                                 f"failed {failed[before[1]:]}")
