@@ -324,7 +324,7 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
         (cx, cy), (c2x, c2y), (kx0, ky0) = _fracs(c1.center, c2.center, known)
     except NotAFraction:
         return _second_intersection_sympy(c1, c2, known, concentric, tangent)
-    wx, wy = c2x - cx, c2y - cy
+    wx, wy = (c2x - cx).reduced(), (c2y - cy).reduced()  # small: gcds taken once
     if wx.is_zero() and wy.is_zero():
         raise concentric()
     kx, ky = kx0 - cx, ky0 - cy
