@@ -32,9 +32,10 @@ a list where one number is needed, text in an array),
 (arrays beyond :data:`MAX_ARRAY_SIZE`) and
 :class:`~graspcompass.expr.ExpressionError` (text the parser refuses).
 
-Inside the package, ``sympy.sympify`` is only ever applied to sympy objects the
-package built itself (it never sees text from outside); this module imports
-nothing from the package but :mod:`graspcompass.expr` and
+Behind this boundary, ``sympy.sympify`` may only be applied to sympy objects
+the package built itself, never to text or other values from outside (``sympify``
+parses strings with ``eval``, also inside lists and numpy arrays).  This module
+imports nothing from the package but :mod:`graspcompass.expr` and
 :mod:`graspcompass.errors`, so the geometry kernel can use it too.
 
 Examples
