@@ -64,8 +64,8 @@ extensions = [
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "_generated/**", "_intersphinx", "**/GALLERY_HEADER.rst", "Thumbs.db",
-                    ".DS_Store"]
+exclude_patterns = ["_build", "_generated/**", "_intersphinx", "**/GALLERY_HEADER.rst",
+                    "Thumbs.db", ".DS_Store"]
 # a broken cross-reference to our own pages is an error (-W); a reference into Python,
 # numpy, sympy or matplotlib links there when its inventory is in _intersphinx/, and stays
 # plain text otherwise
