@@ -203,3 +203,25 @@ def test_twelfths_table_is_sympys_radical_form():
     for v, (s, c) in _TWELFTH_VALUES.items():
         assert sp.srepr(s) == sp.srepr(sp.sin(v * sp.pi))
         assert sp.srepr(c) == sp.srepr(sp.cos(v * sp.pi))
+
+
+@pytest.mark.parametrize("big", ["1e30", "1e300", "1e309"])
+def test_envelope_of_lengths_of_very_different_sizes(big):
+    """x1 = 10**309 with y = 1/2: the V_n differ by O(1) at size 10**309, which 40
+    digits cannot separate; the envelope raises the precision instead of refusing
+    a valid grasp.  Checked against eq. (25) evaluated in 800-digit arithmetic."""
+    import mpmath
+    import sympy as sp
+
+    import graspcompass as gc
+
+    g = gc.Grasp(big, 1, "1/2", "pi/2", "pi/2", mu1=1, mu2="6/5")
+    env = gc.internal_force_diagram(g)["envelope"]
+    S = [sp.Integer(0)] + [v.x for v in env.V]
+    C = [sp.Integer(0)] + [v.y for v in env.V]
+    with mpmath.workdps(800):
+        for arc in env.arcs:
+            t = (mpmath.mpf(sp.N(arc.theta_start, 820)) + mpmath.mpf(sp.N(arc.theta_end, 820))) / 2
+            ks = [mpmath.mpf(sp.N(s, 820)) * mpmath.sin(t)
+                  - mpmath.mpf(sp.N(c, 820)) * mpmath.cos(t) for s, c in zip(S, C)]
+            assert max(range(5), key=lambda n: ks[n]) == arc.n

@@ -287,9 +287,9 @@ def test_export_does_not_import_matplotlib():
 
 
 def test_formats_and_extensions(tmp_path):
-    assert FORMATS == ("ggb", "tikz", "svg", "json", "png", "pdf")
-    assert [guess_format(f"a.{e}") for e in ("ggb", "tex", "svg", "json", "png", "pdf")] == \
-        ["ggb", "tikz", "svg", "json", "png", "pdf"]
+    assert FORMATS == ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
+    assert [guess_format(f"a.{e}") for e in ("ggb", "tex", "svg", "json", "png", "pdf", "html")] \
+        == ["ggb", "tikz", "svg", "json", "png", "pdf", "html"]
     with pytest.raises(ValueError, match="cannot tell the format"):
         guess_format("a.docx")
 

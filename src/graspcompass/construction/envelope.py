@@ -48,6 +48,9 @@ __all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
 _TWO_PI = 2 * np.pi
 #: Working digits of the winner decisions.
 _DPS = 40
+#: Digits tried in turn when an exact break point does not check at fewer (cancellation
+#: between V_n of very different size, e.g. x1 = 10**300).
+_PRECISIONS = (_DPS, 160, 640, 2600)
 #: Candidate angles closer than this (rad) are one break angle (exact V_n).
 _EXACT_MERGE = 1e-25
 #: Float arcs shorter than this (rad) are merged into their neighbours.
@@ -244,7 +247,7 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
         lo, hi = sorted((a, b))
         p = objects.get(f"B{lo}{hi}") if lo else None
         if p is not None and not (p.x == 0 and p.y == 0):
-            tp = _theta(mpf(p.x), mpf(p.y))
+            tp = _theta(mpf(p.x, mpmath.mp.dps), mpf(p.y, mpmath.mp.dps))
             if _gap(tp, t) > 1e-20:
                 raise EnvelopeError(
                     f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
@@ -255,7 +258,7 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
         # angle with e(θ) ⊥ w, of the two the one the numeric break angle found
         w = V[hi - 1] if not lo else V[lo - 1] - V[hi - 1]
         e = w.perp()
-        te = _theta(mpf(e.x), mpf(e.y))
+        te = _theta(mpf(e.x, mpmath.mp.dps), mpf(e.y, mpmath.mp.dps))
         if _gap(te, t) > mpmath.pi / 2:
             e, te = -e, (te + mpmath.pi) % (2 * mpmath.pi)
         found.append((te, _angle(e, te), Point(0, 0)))
@@ -299,8 +302,19 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     """
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
     numeric = any(has_float(c) for v in V for c in (v.x, v.y))
-    with mpmath.workdps(_DPS):
-        Vm = [(mpf(v.x), mpf(v.y)) for v in V]
+    for dps in _PRECISIONS:  # exact V_n of very different sizes need more digits
+        try:
+            return _envelope(objects, V, numeric, dps)
+        except EnvelopeError:
+            if numeric or dps == _PRECISIONS[-1]:
+                raise
+    raise AssertionError("unreachable")  # pragma: no cover
+
+
+def _envelope(objects: Mapping[str, Any], V: tuple[Point, ...], numeric: bool,
+              dps: int) -> Envelope:
+    with mpmath.workdps(dps):
+        Vm = [(mpf(v.x, dps), mpf(v.y, dps)) for v in V]
         breaks = _breaks(Vm, _EXACT_MERGE)
         if numeric:
             breaks = _merge_short(breaks, _FLOAT_MERGE)
