@@ -18,7 +18,9 @@ from .protocol import Construction, Step, StepSpec, run_step
 __all__ = ["diagram_specs", "internal_force_diagram"]
 
 _SIDE_WORD = {1: "upper", 2: "upper", 3: "lower", 4: "lower"}
-_SIDE_EQ = {1: "(28)-(29)", 2: "(34)-(35)", 3: "(36)-(37)", 4: "(38)-(39)"}
+# O_M X_n = −S_n (§3.3 step (1)) and O Y_n = −C_n (step (2)): one equation each
+_S_EQ = {1: "(28)", 2: "(34)", 3: "(36)", 4: "(38)"}
+_C_EQ = {1: "(29)", 2: "(35)", 3: "(37)", 4: "(39)"}
 
 
 def diagram_specs(grasp: Grasp) -> list[StepSpec]:
@@ -66,9 +68,9 @@ def diagram_specs(grasp: Grasp) -> list[StepSpec]:
             S(f"Y{n}", "meet", (f"perp{n}", "y-axis"), "ruler",
               f"The perpendicular meets the y-axis at Y{n}", f"{ref} (2)"),
             S(f"OMX{n}", "signed_length", ("O_M", f"X{n}", "x-axis"), "compass",
-              f"Signed length O_M X{n} = −S{n}", f"{ref} (1), eq. {_SIDE_EQ[n]}"),
+              f"Signed length O_M X{n} = −S{n}", f"{ref} (1), eq. {_S_EQ[n]}"),
             S(f"OY{n}", "signed_length", ("O", f"Y{n}", "y-axis"), "compass",
-              f"Signed length O Y{n} = −C{n}", f"{ref} (2), eq. {_SIDE_EQ[n]}"),
+              f"Signed length O Y{n} = −C{n}", f"{ref} (2), eq. {_C_EQ[n]}"),
             S(f"V{n}", "point_from_lengths", (f"OMX{n}", f"OY{n}"), "compass",
               f"Plot V{n} = (−O_M X{n}, −O Y{n})", f"{ref} (3), eq. (30)/(33)",
               (-1, -1), key=True),

@@ -22,6 +22,8 @@ from .prove import ProofResult, Status, prove_identity
 __all__ = ["V", "appendix_claims", "diagram_claims", "side_meet", "thales"]
 
 _SC_EQ = {1: "(28)-(29)", 2: "(34)-(35)", 3: "(36)-(37)", 4: "(38)-(39)"}
+_S_EQ = {1: "(28)", 2: "(34)", 3: "(36)", 4: "(38)"}  # O_M X_n = −S_n
+_C_EQ = {1: "(29)", 2: "(35)", 3: "(37)", 4: "(39)"}  # O Y_n = −C_n
 a_, b_ = sp.symbols("a b", real=True)
 
 
@@ -150,11 +152,11 @@ def diagram_claims(eq27_out: list[Claim]) -> list[Claim]:
               "farthest point of the circles (or O) is at distance k_grasp(θ)",
               lambda: _envelope(list(deps)), depends=deps, hypotheses=()))
     for n in (1, 2, 3, 4):
-        add(Claim(f"s3.3-V{n}-OMX", f"§3.3 V{n} step (1), eq. {_SC_EQ[n]}",
+        add(Claim(f"s3.3-V{n}-OMX", f"§3.3 V{n} step (1), eq. {_S_EQ[n]}",
                   f"On the constructed X{n} and O_M: the signed length O_M X{n} = −S{n}",
                   identity(lambda n=n: early_construction()[f"OMX{n}"],
                            lambda n=n: -P.S_printed[n - 1])))
-        add(Claim(f"s3.3-V{n}-OY", f"§3.3 V{n} step (2), eq. {_SC_EQ[n]}",
+        add(Claim(f"s3.3-V{n}-OY", f"§3.3 V{n} step (2), eq. {_C_EQ[n]}",
                   f"On the constructed Y{n}: the signed length O Y{n} = −C{n}",
                   identity(lambda n=n: early_construction()[f"OY{n}"],
                            lambda n=n: -P.C_printed[n - 1])))
