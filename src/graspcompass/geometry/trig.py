@@ -150,7 +150,7 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     >>> sincos(sp.Rational(6, 5))
     (sin(6/5), cos(6/5))
     """
-    angle = sp.sympify(angle)
+    angle = sp.sympify(angle, strict=True)  # text, lists, arrays refused: never eval
     if angle.free_symbols or not angle.is_number:
         return sp.sin(angle), sp.cos(angle)
     q = _pi_multiple(angle)

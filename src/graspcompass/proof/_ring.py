@@ -73,7 +73,7 @@ class RingForm:
 
     def as_expr(self, p: Any) -> sp.Expr:
         """The polynomial ``p`` as a sympy expression (roots written as ``sqrt``)."""
-        e = p.as_expr() if hasattr(p, "as_expr") else sp.sympify(p)
+        e = p.as_expr() if hasattr(p, "as_expr") else sp.sympify(p)  # internal: ring element
         back = {self.ring.symbols[i]: r for i, _, r in self.roots}
         back.update({self.ring.symbols[i]: g for i, g in enumerate(self.gens) if i not in
                      {r[0] for r in self.roots}})

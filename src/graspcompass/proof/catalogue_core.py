@@ -122,6 +122,7 @@ def check(c: Claim) -> ProofResult:
 # -- combinators ------------------------------------------------------------------
 def with_xi(expr: Any) -> Any:
     """``expr`` with μ_i replaced by tan ξ_i (eq. (22)): one friction variable per contact."""
+    # internal: the catalogue's own expressions (built by code), never a user's text
     return sp.sympify(expr).xreplace({mu1: sp.tan(xi1), mu2: sp.tan(xi2)})
 
 
@@ -180,7 +181,7 @@ def sign(expr: Any, s: int, witness: Sequence[Any], intervals: dict | None = Non
 def sign_lemma(expr: Any, expected: tuple[int, int], what: str) -> ProofResult:
     """A structural sign fact about fresh symbols (no parameters): ``sign_of(expr)``."""
     t0 = time.perf_counter()
-    got = sign_of(sp.sympify(expr), {})
+    got = sign_of(sp.sympify(expr), {})  # internal: a catalogue expression
     ok = got == expected
     return ProofResult(Status.PROVED if ok else Status.UNDECIDED, f"sign rules: {what}",
                        time.perf_counter() - t0, detail="" if ok else f"sign {got}")

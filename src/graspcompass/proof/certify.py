@@ -71,7 +71,7 @@ def _given(step: Step) -> bool:
 
 # -- numbers --------------------------------------------------------------------
 def _decide_exact(f: Fact) -> bool | None:
-    d = sp.sympify(f.lhs - f.rhs)
+    d = sp.sympify(f.lhs - f.rhs)  # internal: a fact built from the construction
     if f.kind == "eq":
         return decide_zero(d)
     if f.kind == "nonzero":
@@ -108,7 +108,7 @@ def _decide_symbolic(f: Fact) -> _Sym:
         if f.kind == "eq":
             ok, dens = R.equal(f.lhs, f.rhs)
             return _Sym(ok, dens)
-        n, dens = R.frac(sp.sympify(f.lhs - f.rhs))
+        n, dens = R.frac(sp.sympify(f.lhs - f.rhs))  # internal: a fact (sympy)
     except ValueError:  # not a rational function of the model's generators
         if f.kind != "eq":
             return _Sym(None, [])
@@ -252,6 +252,7 @@ def certify(construction: Construction,
     ['GIVEN', 'PROVED']
     """
     model = paper_model(construction.grasp)
+    # internal: the grasp's values, already read by graspcompass.inputs when it was made
     symbolic = any(sp.sympify(v).free_symbols for v in model.values.values())
     env: dict[str, Any] = {}
     out = []

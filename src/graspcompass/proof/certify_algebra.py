@@ -73,7 +73,7 @@ class Ring:
         Denominators stay factored (each factor primitive with a positive leading
         coefficient), so adding fractions multiplies only by the missing factors.
         """
-        expr = sp.sympify(expr)
+        expr = sp.sympify(expr)  # internal: expressions of the certifier
         hit = self._cache.get(expr)
         if hit is None:
             hit = self._frac(expr)

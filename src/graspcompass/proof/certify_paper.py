@@ -55,7 +55,7 @@ class PaperModel:
     numeric: bool
 
     def _v(self, expr: sp.Expr) -> sp.Expr:
-        return sp.sympify(expr).xreplace(dict(self.values))
+        return sp.sympify(expr).xreplace(dict(self.values))  # internal: the model's
 
     # -- data (§2.2.1, Fig. 2) -------------------------------------------------
     @property
@@ -165,5 +165,6 @@ def paper_model(grasp: Any) -> PaperModel:
 
 def model_at(model: PaperModel, point: Mapping[sp.Symbol, sp.Expr]) -> PaperModel:
     """``model`` with its symbols replaced by the exact values ``point``."""
+    # internal: a Grasp's values (read by graspcompass.inputs) and a sampled point
     vals = {k: sp.sympify(v).xreplace(dict(point)) for k, v in model.values.items()}
     return PaperModel(vals, model.mu_form, False)

@@ -18,18 +18,23 @@ of 1e-40, or an exact zero test; what neither decides is reported as a violation
 
 from __future__ import annotations
 
+import numbers
 import random
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from functools import lru_cache
 from typing import Any
 
 import mpmath
+import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from ..expr import parse_exact
+from ..errors import WrongTypeError
+from ..expr import ExpressionError, parse_exact
+from ..inputs import real_value
 
-__all__ = ["CONTACTS", "find_counterexample", "nonzero_at", "sample", "violations", "wrong_sign"]
+__all__ = ["CONTACTS", "find_counterexample", "nonzero_at", "outside_expr", "sample",
+           "violations", "wrong_sign"]
 
 #: (phi_i, xi_i, mu_i) of the two contacts.
 CONTACTS = ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2))
@@ -41,14 +46,78 @@ _MUS = [sp.Rational(n, d) for n, d in ((1, 5), (1, 3), (1, 2), (3, 4), (1, 1), (
                                        (2, 1), (3, 1), (5, 1))]
 
 
+def outside_expr(value: Any, name: str, known: Iterable[sp.Symbol] = ()) -> Any:
+    """An expression, relation or value handed to the proof checker by its caller.
+
+    The proof checker's boundary (:mod:`graspcompass.inputs` for its expressions):
+    sympy objects and matrices are built by code and taken as they are; text is
+    read by the safe parser :func:`~graspcompass.expr.parse_exact` (the model's
+    symbols and ``known`` may occur in it); a list or tuple is read item by item;
+    any other value must be a real number (:func:`~graspcompass.inputs.real_value`).
+    Nothing from outside reaches ``sympy.sympify``, which runs text (also inside a
+    list or a numpy array, or the ``str`` of an unknown object) through ``eval``.
+
+    Parameters
+    ----------
+    value : sympy object, str, number, list or tuple
+    name : str
+        The parameter's name, the first word of an error message.
+    known : iterable of sympy.Symbol, optional
+        Symbols allowed in text besides those of the model.
+
+    Raises
+    ------
+    InputError
+        :class:`~graspcompass.errors.WrongTypeError` for anything else (``None``,
+        a numpy array, a dict), :class:`~graspcompass.expr.ExpressionError` for
+        text the parser refuses.
+
+    Examples
+    --------
+    >>> outside_expr("mu1*sin(phi1) - cos(phi1)", "expr")
+    mu1*sin(phi1) - cos(phi1)
+    >>> import numpy as np
+    >>> try:
+    ...     outside_expr(np.array(["__import__('os')"]), "expr")
+    ... except WrongTypeError as err:
+    ...     print(err)  # doctest: +ELLIPSIS
+    expr: expected a sympy expression, text or a number, got array([...]...) (type ndarray)
+    """
+    if isinstance(value, (sp.Basic, sp.MatrixBase)):
+        return value  # built by code: trusted (graspcompass.inputs)
+    if isinstance(value, str):
+        names = {**{str(s): s for s in known}, **_BY_NAME}
+        try:
+            return parse_exact(value, symbols=names)
+        except ExpressionError as exc:
+            raise type(exc)(f"{name}: {exc}") from None
+    if isinstance(value, (list, tuple)):
+        items = [outside_expr(v, f"{name}[{i}]", known) for i, v in enumerate(value)]
+        return items if isinstance(value, list) else tuple(items)
+    if value is None or isinstance(value, (numbers.Number, np.generic)):
+        return real_value(value, name)
+    try:
+        shown = repr(value)
+    except Exception:  # a hostile __repr__ must not hide the real error
+        shown = "..."
+    shown = shown if len(shown) <= 60 else shown[:57] + "..."
+    raise WrongTypeError(f"{name}: expected a sympy expression, text or a number, got "
+                         f"{shown} (type {type(value).__name__})")
+
+
 def _normalise(values: Mapping[Any, Any], known: Iterable[sp.Symbol] = ()
                ) -> dict[sp.Symbol, sp.Expr]:
-    """Symbols for names (those of the model, else of ``known``), exact values for text."""
+    """Symbols for names (those of the model, else of ``known``), exact values for text.
+
+    Values from the caller pass :func:`graspcompass.inputs.real_value` (text by the
+    safe parser, never ``sympify``); sympy values are kept as they are, so that a
+    complex one is reported by :func:`violations` rather than refused here.
+    """
     names = {**{str(s): s for s in known}, **_BY_NAME}
     out: dict[sp.Symbol, sp.Expr] = {}
     for k, v in values.items():
         sym = k if isinstance(k, sp.Symbol) else names.get(str(k), sp.Symbol(str(k)))
-        out[sym] = parse_exact(v) if isinstance(v, str) else sp.sympify(v)
+        out[sym] = v if isinstance(v, sp.Basic) else real_value(v, str(sym))
     return out
 
 
@@ -65,7 +134,7 @@ _DOMAIN: dict[sp.Symbol, tuple[Any, bool, Any, bool]] = {
 @lru_cache(maxsize=65536)
 def _sign(d: sp.Expr) -> int | None:
     """Exact sign of the number ``d``: 50 digits with a margin, else an exact zero test."""
-    d = sp.sympify(d)
+    d = sp.sympify(d)  # internal: d is built here from sympy values (or a Python int)
     if d.free_symbols:
         return None
     if d.is_Rational:
@@ -92,8 +161,7 @@ _OPS = {sp.StrictGreaterThan: lambda s: s > 0, sp.GreaterThan: lambda s: s >= 0,
 
 def _check(rel: Any, values: Mapping[sp.Symbol, sp.Expr]) -> str | None:
     """None if ``rel`` holds at ``values``, else why not."""
-    if not isinstance(rel, sp.Basic):
-        rel = sp.sympify(rel)
+    rel = outside_expr(rel, "assumption")  # a caller's hypothesis: never sympify
     if rel is sp.true:
         return None
     if rel is sp.false:
@@ -138,8 +206,8 @@ def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str
     >>> violations({phi1: sp.pi / 6, mu1: sp.Rational(1, 3)})
     ['condition (1) at contact 1: phi1 + atan(mu1) > pi/2 fails']
     """
-    extra = list(extra)
-    v = _normalise(values, set().union(*(sp.sympify(r).free_symbols for r in extra)))
+    extra = [outside_expr(r, "assumption") for r in extra]
+    v = _normalise(values, set().union(*(r.free_symbols for r in extra)))
     out: list[str] = []
     for sym, val in v.items():
         if val.is_real is False or val.has(sp.zoo, sp.nan, sp.I):
@@ -264,7 +332,8 @@ def _phis_for(mu: sp.Expr) -> tuple[int, ...]:
 
 def _value(sym: sp.Symbol, rng: random.Random, dom: tuple[Any, Any] | None) -> sp.Expr:
     if dom is not None:
-        lo, hi = (sp.sympify(d) if d is not None else None for d in dom)
+        lo, hi = (outside_expr(d, f"domain of {sym}") if d is not None else None
+                  for d in dom)
         if hi is None:
             return lo + rng.choice(_LENGTHS)
         return lo + (hi - lo) * sp.Rational(rng.randint(1, 23), 24)

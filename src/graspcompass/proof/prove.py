@@ -32,7 +32,7 @@ from typing import Any
 
 import sympy as sp
 
-from .model import find_counterexample, nonzero_at, wrong_sign
+from .model import find_counterexample, nonzero_at, outside_expr, wrong_sign
 from .reduce import DegenerateClaimError, reduce_expr
 from .signs import CONDITION_1, Intervals, _interval, discharge, form_json, sign_of, sign_reason
 
@@ -160,7 +160,8 @@ def _cx(values: Mapping | None) -> dict[str, str] | None:
 def _intervals_json(intervals: Intervals) -> list[dict[str, Any]]:
     out = []
     for k, (lo, hi) in intervals.items():
-        f, a, b = form_json(k), sp.expand(sp.sympify(lo) / sp.pi), sp.expand(sp.sympify(hi) / sp.pi)
+        lo, hi = outside_expr(lo, f"interval of {k}"), outside_expr(hi, f"interval of {k}")
+        f, a, b = form_json(k), sp.expand(lo / sp.pi), sp.expand(hi / sp.pi)
         if f is not None and a.is_Rational and b.is_Rational:
             out.append({"form": f, "interval": [f"{a.p}/{a.q}", f"{b.p}/{b.q}"],
                         "source": "(1)" if CONDITION_1.get(k) == (lo, hi) else "hypothesis"})
@@ -234,7 +235,8 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
     (<Status.REFUTED: 'REFUTED'>, ['phi1'])
     """
     t0 = time.perf_counter()
-    lhs, rhs = sp.sympify(lhs), sp.sympify(rhs)
+    lhs, rhs = outside_expr(lhs, "lhs"), outside_expr(rhs, "rhs")  # never sympify
+    assumptions = tuple(outside_expr(a, "assumption") for a in assumptions)
     if isinstance(lhs, sp.MatrixBase) and not isinstance(rhs, sp.MatrixBase) and rhs == 0:
         rhs = sp.zeros(*lhs.shape)
     try:
@@ -332,7 +334,10 @@ def prove_sign(
     <Status.REFUTED: 'REFUTED'>
     """
     t0 = time.perf_counter()
-    e = sp.sympify(expr)
+    e = outside_expr(expr, "expr")  # the caller's: never sympify
+    assumptions = tuple(outside_expr(a, "assumption") for a in assumptions)
+    if witness is not None:
+        witness = [outside_expr(w, f"witness[{i}]") for i, w in enumerate(witness)]
     iv_names, iv_rels = _interval_hypotheses(intervals)
     ctx_names, extra = _context(assumptions, domains, subs)
     hyps = tuple(iv_names + ctx_names)
@@ -384,10 +389,10 @@ def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals
         return (Status.UNDECIDED, "the witness proves the opposite sign, but no point of the "
                 "model was found to show it", common)
     declared = {s.name: [1, 1] if s.is_positive else [0, 1] for s in
-                set().union(*(sp.sympify(w).free_symbols for w in witness))
+                set().union(*(outside_expr(w, "witness").free_symbols for w in witness))
                 if s.is_positive or s.is_nonnegative}
     cert = {"kind": "sign", "sign": sign, "identity": ident.certificate,
-            "factors": [{"factor": _text(sp.sympify(w)), "reason": r[1]}
+            "factors": [{"factor": _text(outside_expr(w, "witness")), "reason": r[1]}
                         for w, r in zip(witness, reasons)],
             "intervals": _intervals_json(intervals), "symbols": declared,
             "hypotheses": list(hyps)}

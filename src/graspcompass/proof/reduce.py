@@ -36,6 +36,7 @@ import sympy as sp
 from .. import symbols as S
 from ..errors import GraspCompassError
 from ._ring import RingForm, to_ring
+from .model import outside_expr
 
 __all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero", "reduce_expr",
            "trig_to_poly"]
@@ -61,7 +62,7 @@ def trig_to_poly(expr: sp.Expr) -> sp.Expr:
     >>> trig_to_poly(sp.sin(phi1 + xi1)) == sp.sin(phi1)*sp.cos(xi1) + sp.sin(xi1)*sp.cos(phi1)
     True
     """
-    form = to_ring([sp.sympify(expr)])
+    form = to_ring([outside_expr(expr, "expr")])  # the caller's: never sympify
     n, d = form.values[0]
     return form.as_expr(n) / form.as_expr(d)
 
@@ -103,6 +104,7 @@ class Reduction:
     def denominator(self) -> sp.Expr:
         """The product of every denominator met, as an expression (built on demand)."""
         p = self.denominator_poly
+        # internal: a ring element
         return self.form.as_expr(p) if self.form is not None else sp.sympify(p)
 
     @property
@@ -158,7 +160,6 @@ def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
     return tuple(sorted(out, key=sp.default_sort_key))
 
 
-@lru_cache(maxsize=4096)
 def reduce_expr(expr: sp.Expr) -> Reduction:
     """Reduce ``expr`` modulo ``s_a**2 + c_a**2 - 1`` (each angle) and ``w**2 - P`` (each root).
 
@@ -183,7 +184,12 @@ def reduce_expr(expr: sp.Expr) -> Reduction:
     >>> reduce_expr((x1**2 - 1) / (x1 - 1) - x1 - 1).factors
     (x1 - 1,)
     """
-    expr = sp.sympify(expr)
+    return _reduce(outside_expr(expr, "expr"))  # the caller's: never sympify
+
+
+@lru_cache(maxsize=4096)
+def _reduce(expr: sp.Expr) -> Reduction:
+    """:func:`reduce_expr` of an expression already read (cached by content)."""
     form = to_ring([expr])
     (num, den), dens = form.values[0], form.denominators[0]
     factors = _factors(form, dens, expr)

@@ -16,6 +16,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from .model import outside_expr
 
 __all__ = ["CONDITION_1", "Intervals", "discharge", "form_json", "sign_of", "sign_reason"]
 
@@ -49,7 +50,7 @@ def form_json(form: sp.Expr) -> dict[str, int] | None:
 
 
 def _pi_multiple(v: sp.Expr) -> sp.Rational | None:
-    q = sp.expand(sp.sympify(v) / sp.pi)
+    q = sp.expand(outside_expr(v, "interval end") / sp.pi)  # may be a caller's: no sympify
     return q if q.is_Rational else None
 
 
@@ -68,7 +69,8 @@ def _interval_pieces(form: sp.Expr, intervals: Intervals):
     form = sp.expand(form)
     if form in intervals:
         a, b = intervals[form]
-        return (sp.sympify(a), sp.sympify(b)), [(form, 1, a, b)], sp.Integer(0)
+        a, b = outside_expr(a, f"interval of {form}"), outside_expr(b, f"interval of {form}")
+        return (a, b), [(form, 1, a, b)], sp.Integer(0)
     lo, hi = sp.Integer(0), sp.Integer(0)
     rest = form.as_coefficients_dict()
     rest = {t: v for t, v in rest.items()}
@@ -141,7 +143,7 @@ def sign_reason(f: Any, intervals: Intervals = CONDITION_1) -> tuple[Sign, dict]
     >>> sign_reason(sp.cos(phi1 + xi1))[0]
     (-1, -1)
     """
-    f = sp.sympify(f)
+    f = outside_expr(f, "f")  # the caller's: never sympify
     if f.is_Rational:
         s = (0, 0) if f == 0 else (_POS if f > 0 else _NEG)
         return s, {"type": "number", "value": _frac(f), "sign": list(s)}
