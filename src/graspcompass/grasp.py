@@ -33,7 +33,7 @@ from .geometry.trig import sincos, tan_exact
 from .inputs import angle_values, force_value, real_value, substitutions
 
 __all__ = ["PRESETS", "ComplexParameterError", "Grasp", "InvalidGraspError",
-           "NonFiniteParameterError", "ParameterTypeError"]
+           "NonFiniteParameterError", "ParameterTypeError", "UnsupportedParameterError"]
 
 
 class InvalidGraspError(GraspCompassError):
@@ -50,6 +50,11 @@ class ComplexParameterError(ComplexValueError, InvalidGraspError):
 
 class NonFiniteParameterError(NonFiniteValueError, InvalidGraspError):
     """A grasp parameter that is ``nan`` or infinite."""
+
+
+class UnsupportedParameterError(InputError, InvalidGraspError):
+    """An exact length or friction coefficient outside what the exact kernel computes
+    with: other roots than square roots of rationals (cube roots, nested roots)."""
 
 
 _PARAMETER_ERRORS: dict[type, type] = {
@@ -96,6 +101,26 @@ def _value(v: Any, name: str) -> sp.Expr:
             if isinstance(exc, base):
                 raise kind(str(exc)) from None
         raise InvalidGraspError(str(exc)) from None
+
+
+def _exact_kind(v: sp.Expr, name: str) -> sp.Expr:
+    """Refuse exact lengths and friction coefficients the kernel cannot compute with.
+
+    They may hold rationals, square roots of rationals, π, symbols and functions
+    such as sin or atan of anything; a cube root or a nested root would make every
+    canonical form of the construction explode, so it is refused (give a decimal,
+    which is exact, or a float).
+    """
+    if has_float(v):
+        return v
+    for a in sp.preorder_traversal(v):
+        if a.is_Pow and not a.exp.is_Integer and not a.free_symbols and not (
+                a.exp in (sp.S.Half, -sp.S.Half) and a.base.is_Rational):
+            raise UnsupportedParameterError(
+                f"{name} = {_fmt(v)} uses {a}: exact lengths and friction coefficients may "
+                "hold square roots of rational numbers, not other roots; give the value as "
+                "a decimal (read exactly) or a float")
+    return v
 
 
 def _double(v: sp.Expr, what: str) -> float:
@@ -192,7 +217,8 @@ class Grasp:
         shape: tuple | None = None,
         title: str | None = None,
     ) -> None:
-        self.x1, self.x2, self.y = _value(x1, "x1"), _value(x2, "x2"), _value(y, "y")
+        self.x1, self.x2, self.y = (_exact_kind(_value(v, k), k)
+                                    for v, k in ((x1, "x1"), (x2, "x2"), (y, "y")))
         self.phi1, self.phi2 = _value(phi1, "phi1"), _value(phi2, "phi2")
         self.mu1, self.xi1 = self._friction(1, mu1, xi1)
         self.mu2, self.xi2 = self._friction(2, mu2, xi2)
@@ -216,7 +242,7 @@ class Grasp:
                 f"xi{i} (cone half angle), exactly one of them"
             )
         if mu is not None:
-            m = _value(mu, f"mu{i}")
+            m = _exact_kind(_value(mu, f"mu{i}"), f"mu{i}")
             if decide_sign(m) in (-1, 0):
                 raise InvalidGraspError(
                     f"contact {i}: the friction coefficient μ{i} = {_fmt(m)} must be positive"

@@ -156,15 +156,45 @@ def clear_caches() -> None:
     trig._reference.cache_clear()
 
 
+#: Trial division bound of :func:`_square_free`, sympy's own for ``sqrt`` of an integer.
+_TRIAL = 2**15
+
+
+@lru_cache(maxsize=1)
+def _small_primes() -> tuple[int, ...]:
+    return tuple(sp.primerange(2, _TRIAL))
+
+
 def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
-    """``sqrt(r) = coefficient * prod(sqrt(p))`` over distinct primes p."""
+    """``sqrt(r) = coefficient * prod(sqrt(p))`` over distinct factors p.
+
+    The factors are the primes below 2**15 and, if a part of the radicand is left
+    that is no square, that part as one factor: it is never factored further, so a
+    radicand of any size is split at once (a large cofactor is not always prime,
+    which only costs uniqueness of the form, never correctness: ``sqrt(c)`` keeps
+    its relation ``sqrt(c)**2 = c``).
+    """
     n = int(r.p) * int(r.q)
-    k, primes = 1, []
-    for p, e in sorted(sp.factorint(n).items()):
+    k, factors = 1, []
+    for p in _small_primes():
+        if p * p > n:
+            break
+        if n % p:
+            continue
+        e = 0
+        while n % p == 0:
+            n //= p
+            e += 1
         k *= p ** (e // 2)
         if e % 2:
-            primes.append(p)
-    return sp.Rational(k, int(r.q)), tuple(primes)
+            factors.append(p)
+    if n > 1:
+        root = math.isqrt(n)
+        if root * root == n:
+            k *= root
+        else:
+            factors.append(n)
+    return sp.Rational(k, int(r.q)), tuple(sorted(factors))
 
 
 _TRIG = (sp.sin, sp.cos, sp.tan)
