@@ -99,9 +99,9 @@ def test_integer_balls_hold_the_true_value(poly, prec):
 
 
 @settings(max_examples=100, deadline=None)
-@given(st.lists(st.tuples(st.integers(-9, 9), st.sampled_from(_GENS[:3] + (sp.Integer(1),))),
+@given(st.lists(st.tuples(st.integers(-9, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
                 min_size=1, max_size=4),
-       st.lists(st.tuples(st.integers(1, 9), st.sampled_from(_GENS[:3] + (sp.Integer(1),))),
+       st.lists(st.tuples(st.integers(1, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
                 min_size=1, max_size=3),
        st.sampled_from([15, 30, 50]))
 def test_approx_has_the_digits_it_promises(num, den, dps):
