@@ -195,7 +195,7 @@ def test_live_funcanimation_leaves_rendering_intact(c1a):
 
 # -- output files ---------------------------------------------------------------------------
 def test_gif_opens_with_the_frames(anim, frames, tmp_path):
-    out = anim.save(tmp_path / "a" / "construction.gif", quiet=True)
+    out = anim.save(tmp_path / "construction.gif", quiet=True)
     w, h = (anim.figure.get_size_inches() * anim.figure.dpi).round().astype(int)
     distinct = 1 + sum(not np.array_equal(a, b) for a, b in pairwise(frames))
     with Image.open(out) as im:
@@ -210,6 +210,7 @@ def test_gif_opens_with_the_frames(anim, frames, tmp_path):
 
 
 def test_png_frames_per_step(c1a, anim, tmp_path):
+    (tmp_path / "png").mkdir()  # an output's folder must exist (issue 10)
     files = save_frames(anim, tmp_path / "png")
     assert len(files) == len(c1a.steps)
     assert files[17].name == "step-17-V1.png"

@@ -410,3 +410,69 @@ def test_cli_json_files_reload_and_refuse_a_tampered_grasp(preset, tmp_path):
     with pytest.raises(InconsistentDocumentError) as err:
         loads(__import__("json").dumps(doc))
     assert isinstance(err.value, InputError) and str(err.value).startswith("steps[4] (P2)")
+
+
+# ---------------------------------------------------------------------------
+# symbolic records, and dumps refusing what loads refuses (issue 10)
+# ---------------------------------------------------------------------------
+def test_float_readouts_of_symbolic_values_are_not_evaluated(monkeypatch):
+    import importlib
+
+    describe = importlib.import_module("graspcompass.construction.describe")
+
+    evalf = sp.N
+
+    def no_evalf(expr, *args, **kwargs):
+        if getattr(expr, "free_symbols", None):
+            raise AssertionError(f"{expr}, an expression in symbols, was evaluated")
+        return evalf(expr, *args, **kwargs)
+
+    monkeypatch.setattr(sp, "N", no_evalf)
+    x = sp.Symbol("x")
+    assert describe._num(sp.sqrt(x**2 + 1) + sp.pi) is None
+    point = describe._value(__import__("graspcompass").geometry.Point(x, 1))
+    assert point["float"] == [None, 1.0]
+    g = Grasp.symbolic("mu")
+    text = dumps(replay(diagram_specs(g)[:12], g))  # every readout None, none evaluated
+    assert dumps(loads(text)) == text
+
+
+def _beyond_limits():
+    from graspcompass.export.json import MAX_MAGNITUDE, MAX_TITLE
+
+    half = dict(phi1="pi/2", phi2="pi/2", mu2=1)
+    return {
+        "four square roots": (dict(x1="sqrt(2)", x2="sqrt(3)", y="sqrt(5)", mu1="sqrt(7)",
+                                   **half), "4 distinct irrational numbers"),
+        "a large length": (dict(x1=int(MAX_MAGNITUDE) * 10, x2=1, y=0, mu1=1, **half),
+                           "grasp.x1: expected a number at most 1e+15"),
+        "a long title": (dict(x1=1, x2=1, y=0, mu1=1, title="t" * (MAX_TITLE + 1), **half),
+                         "grasp.title: a text of 1001 characters"),
+        "a wide float": (dict(x1=sp.Float("1.1", 400), x2=1.0, y=0.0, phi1=1.5, phi2=1.5,
+                              mu1=1.0, mu2=1.0), "grasp.x1.bits: expected an integer"),
+        "a large radicand": (dict(x1=f"sqrt({2**70 + 1})", x2=1, y=0, mu1=1, **half),
+                             "a square root of a number of more than 64 bits"),
+    }
+
+
+@pytest.mark.parametrize("case", list(_beyond_limits()))
+def test_dumps_refuses_what_loads_refuses(case):
+    from graspcompass.export.json import JSONTooLargeError, _grasp_record, from_document
+
+    kw, message = _beyond_limits()[case]
+    g = Grasp(**kw)
+    with pytest.raises(JSONTooLargeError, match=re.escape(message)) as written:
+        dumps(internal_force_diagram(g))
+    # the same error and message as the loader's, on the document dumps would have written
+    doc = {"schema": SCHEMA, "grasp": _grasp_record(g), "skipped": [], "steps": []}
+    with pytest.raises(JSONTooLargeError) as read:
+        from_document(doc)
+    assert str(read.value) == str(written.value)
+
+
+def test_dumps_refuses_a_text_loads_cannot_read(fig6, monkeypatch):
+    from graspcompass.export import json as gj
+
+    monkeypatch.setattr(gj, "MAX_BYTES", 1000)
+    with pytest.raises(gj.JSONTooLargeError, match=r"the JSON text has \d+ bytes, more than 1000"):
+        dumps(fig6)

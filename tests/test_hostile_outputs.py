@@ -93,3 +93,103 @@ def test_sincos_refuses_text(tmp_path: Path) -> None:
         sincos(code)
     assert not marker.exists()
     assert sincos(sp.pi / 3) == (sp.sqrt(3) / 2, sp.Rational(1, 2))
+
+
+# -- 2. writers: an output's folder must exist -------------------------------------
+@pytest.fixture(scope="module")
+def c1a():
+    from graspcompass import Grasp, internal_force_diagram
+
+    return internal_force_diagram(Grasp.preset("table1a"))
+
+
+def _writers():
+    from graspcompass.export.geogebra import write_ggb
+    from graspcompass.export.html import write_html
+    from graspcompass.export.svg import write_svg
+    from graspcompass.export.tikz import write_tikz
+
+    return {"svg": write_svg, "ggb": write_ggb, "tex": write_tikz, "html": write_html}
+
+
+@pytest.mark.parametrize("ext", ["svg", "ggb", "tex", "html"])
+def test_export_writers_refuse_a_missing_folder(c1a, tmp_path: Path, ext: str) -> None:
+    write = _writers()[ext]
+    target = tmp_path / "missing" / "deeper" / f"d.{ext}"
+    with pytest.raises(OutputError, match=r"the folder '.*missing/deeper' does not exist"):
+        write(c1a, target)
+    assert not (tmp_path / "missing").exists()
+    assert write(c1a, tmp_path / f"d.{ext}").stat().st_size > 0
+
+
+@pytest.mark.parametrize("ext", ["svg", "ggb", "tex", "html"])
+def test_export_writers_turn_write_errors_into_output_errors(c1a, tmp_path: Path,
+                                                             ext: str) -> None:
+    write = _writers()[ext]
+    with pytest.raises(OutputError, match="that is a folder"):
+        write(c1a, tmp_path)
+    if os.path.exists("/dev/full"):
+        with pytest.raises(OutputError, match="no space left"):
+            write(c1a, "/dev/full")
+
+
+def test_export_writer_removes_a_half_written_file(c1a, tmp_path: Path, monkeypatch) -> None:
+    from graspcompass.export.svg import write_svg
+
+    target = tmp_path / "d.svg"
+
+    def full(self: Path, text: str, encoding: str | None = None) -> int:
+        with open(self, "w", encoding=encoding) as f:
+            f.write(text[:10])
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Path, "write_text", full)
+    with pytest.raises(OutputError, match="no space left"):
+        write_svg(c1a, target)
+    assert not target.exists()
+
+
+@pytest.fixture(scope="module")
+def small_anim(c1a):
+    from graspcompass.render.animate import animate_construction
+
+    return animate_construction(c1a, frames_per_step=1, pause_frames=1, hold_frames=1,
+                                figsize=(1.5, 1.5), dpi=20)
+
+
+@pytest.mark.parametrize("ext", ["gif", "html"])
+def test_write_animation_refuses_a_missing_folder(small_anim, tmp_path: Path, ext: str) -> None:
+    from graspcompass.render.timeline import write_animation
+
+    with pytest.raises(OutputError, match="does not exist"):
+        write_animation(small_anim, tmp_path / "missing" / f"a.{ext}", quiet=True)
+    assert not (tmp_path / "missing").exists()
+    (tmp_path / f"dir.{ext}").mkdir()
+    with pytest.raises(OutputError, match="that is a folder"):
+        write_animation(small_anim, tmp_path / f"dir.{ext}", quiet=True)
+
+
+def test_write_animation_removes_a_half_written_file(small_anim, tmp_path: Path,
+                                                     monkeypatch) -> None:
+    from graspcompass.render import timeline
+
+    def full(frames, path, fps, palette_sample=None) -> int:
+        Path(path).write_bytes(b"GIF89a")
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(timeline, "write_gif", full)
+    with pytest.raises(OutputError, match="no space left"):
+        timeline.write_animation(small_anim, tmp_path / "a.gif", quiet=True)
+    assert not (tmp_path / "a.gif").exists()
+
+
+def test_save_frames_refuses_a_missing_folder(small_anim, tmp_path: Path) -> None:
+    from graspcompass.render.animate import save_frames
+
+    with pytest.raises(OutputError, match="does not exist"):
+        save_frames(small_anim, tmp_path / "png", frames=[0])
+    assert not (tmp_path / "png").exists()
+    (tmp_path / "file").write_text("")
+    with pytest.raises(OutputError, match="is not a folder"):
+        save_frames(small_anim, tmp_path / "file", frames=[0])
+    assert [p.name for p in save_frames(small_anim, tmp_path, frames=[0])] == ["frame-0000.png"]

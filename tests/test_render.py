@@ -27,6 +27,7 @@ from matplotlib.patches import Circle as CirclePatch
 from matplotlib.text import Text
 
 from graspcompass import Grasp, internal_force_diagram
+from graspcompass.errors import OutputError
 from graspcompass.render import (
     DEFAULT_THEME,
     EXTRA_KEYS,
@@ -96,9 +97,12 @@ def test_each_preset_renders_and_saves(constructions, preset, tmp_path):
     assert (tmp_path / f"{preset}.pdf").read_bytes()[:5] == b"%PDF-"
 
 
-def test_save_creates_parents_and_format_override(constructions, tmp_path):
+def test_save_refuses_missing_folder_and_format_override(constructions, tmp_path):
     fig = figure_k_plot(Grasp.preset("fig6"), samples=200)
-    out = save_figure(fig, tmp_path / "a" / "b" / "k.png")
+    with pytest.raises(OutputError, match=r"the folder '.*a/b' does not exist"):
+        save_figure(fig, tmp_path / "a" / "b" / "k.png")  # folders are never made
+    assert not (tmp_path / "a").exists()
+    out = save_figure(fig, tmp_path / "k.png")
     assert mpimg.imread(out).shape[:2] == (675, 1200)  # 8 × 4.5 in at 150 dpi
     svg = save_figure(fig, tmp_path / "k.data", format="SVG")
     assert "<svg" in svg.read_text()

@@ -20,6 +20,13 @@ __all__ = ["describe", "step_record", "to_records"]
 
 
 def _num(expr: sp.Expr) -> float | None:
+    """The float value of ``expr``, or None if it has none (free symbols, not real).
+
+    An expression in symbols can never become a float: it is answered at once,
+    without the 17-digit evaluation (seconds per step on a symbolic grasp).
+    """
+    if getattr(expr, "free_symbols", None):
+        return None
     try:
         return float(sp.N(expr, 17))
     except TypeError:
@@ -58,7 +65,7 @@ def _value(obj: Any) -> dict[str, Any]:
         return {"point": _value(obj.point), "direction": _value(obj.direction)}
     if isinstance(obj, Circle):
         return {"center": _value(obj.center), "radius2": text(obj.radius2),
-                "radius": _num(sp.sqrt(obj.radius2))}
+                "radius": None if obj.radius2.free_symbols else _num(sp.sqrt(obj.radius2))}
     if isinstance(obj, Envelope):
         return {"arcs": [
             {"circle": a.n, "theta_start": text(a.theta_start), "theta_end": text(a.theta_end),

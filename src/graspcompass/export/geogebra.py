@@ -194,10 +194,20 @@ def to_ggb(construction: Any, title: str | None = None) -> bytes:
 
 
 def write_ggb(construction: Any, path: Any, title: str | None = None) -> Path:
-    """Write :func:`to_ggb` to ``path``; returns the path."""
-    p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_bytes(to_ggb(construction, title))
+    """Write :func:`to_ggb` to ``path``; returns the path.
+
+    Raises
+    ------
+    graspcompass.errors.OutputError
+        If ``path`` cannot be written (its folder must exist; it is not made), checked
+        before any work, or if the write fails (a half-written file is removed).
+    """
+    from .._output import check_target, writing
+
+    p = check_target(path)
+    data = to_ggb(construction, title)
+    with writing(p):
+        p.write_bytes(data)
     return p
 
 

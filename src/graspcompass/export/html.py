@@ -181,7 +181,7 @@ def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
     construction : Construction
         Numeric parameters (e.g. ``internal_force_diagram(Grasp.preset("fig6"))``).
     path : str or path-like
-        The file to write (parent folders are made).
+        The file to write; its folder must exist (it is not made).
     title : str, optional
         Title of the page (default: the grasp's title).
 
@@ -194,11 +194,16 @@ def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
     ------
     ValueError
         For a symbolic construction.
+    graspcompass.errors.OutputError
+        If ``path`` cannot be written (a missing folder, no permission), checked
+        before any work, or if the write fails (a half-written file is removed).
     """
-    p = Path(path)
+    from .._output import check_target, writing
+
+    p = check_target(path)
     text = to_html(construction, title)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_text(text, encoding="utf-8")
+    with writing(p):
+        p.write_text(text, encoding="utf-8")
     return p
 
 

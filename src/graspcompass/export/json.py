@@ -415,7 +415,7 @@ def _check_object(v: dict, schema: dict[str, Any], path: str) -> None:
 # numbers
 # ---------------------------------------------------------------------------
 def _number(v: Any) -> str | float | dict[str, Any]:
-    v = sp.sympify(v)
+    v = sp.sympify(v)  # internal: a grasp's value or a step's parameter (sympy, or an int)
     if v.atoms(sp.Float):
         if not v.is_Float:
             v = v.evalf(17)
@@ -478,13 +478,42 @@ def _record(step: Step) -> dict[str, Any]:
     return rec
 
 
+def _check_grasp_limits(g: Grasp, rec: dict[str, Any]) -> None:
+    """Refuse, as :func:`loads` would, a grasp beyond the loader's limits.
+
+    The same checks, in the same order and with the same messages, as step 3
+    (the grasp record's schema: title length, number texts, ``bits``, magnitudes)
+    and step 4 (sizes, square roots, generators) of "Reading JSON files".
+    """
+    _check(rec, _GRASP, "grasp")
+    _check_magnitudes({k: g.params[k] for k in _PARAMS}, rec)
+    _check_generators(g)
+
+
 def to_document(construction: Construction) -> dict[str, Any]:
-    """The JSON-ready document (schema :data:`SCHEMA`) of ``construction``."""
+    """The JSON-ready document (schema :data:`SCHEMA`) of ``construction``.
+
+    Raises
+    ------
+    JSONDocumentError
+        :class:`JSONTooLargeError` (or another :class:`JSONDocumentError`) for a
+        construction whose document :func:`loads` would refuse by its limits (see
+        "Reading JSON files": a grasp with more square roots or larger numbers
+        than the loader reads, a title too long, too many steps, a text too
+        long), with the message :func:`loads` gives; checked on the grasp before
+        any step is written.
+    """
     g = construction.grasp
-    return {"schema": SCHEMA, "generator": f"graspcompass {__version__}",
-            "grasp": None if g is None else _grasp_record(g),
-            "skipped": [list(x) for x in construction.skipped],
-            "steps": [_record(s) for s in construction.steps]}
+    grasp = None if g is None else _grasp_record(g)
+    if g is not None:
+        _check_grasp_limits(g, grasp)
+    doc = {"schema": SCHEMA, "generator": f"graspcompass {__version__}", "grasp": grasp,
+           "skipped": [list(x) for x in construction.skipped],
+           "steps": [_record(s) for s in construction.steps]}
+    _check(doc, DOCUMENT_SCHEMA, "")
+    for i, rec in enumerate(doc["steps"]):
+        _check(rec["value"], VALUE_SCHEMAS[rec["kind"]], f"steps[{i}].value")
+    return doc
 
 
 def dumps(construction: Construction, indent: int | None = 1) -> str:
@@ -504,6 +533,15 @@ def dumps(construction: Construction, indent: int | None = 1) -> str:
     str
         The JSON text.
 
+    Raises
+    ------
+    JSONDocumentError
+        For a construction :func:`loads` would refuse by its limits (a
+        :class:`JSONTooLargeError`, with the loader's message): its grasp, its
+        records (:func:`to_document`) or the length of the text (:data:`MAX_BYTES`).
+        A construction without a grasp is written (``"grasp": null``), though
+        :func:`loads` does not read it back.
+
     Examples
     --------
     >>> from graspcompass import Grasp, internal_force_diagram
@@ -512,7 +550,11 @@ def dumps(construction: Construction, indent: int | None = 1) -> str:
     >>> loads(text)["V1"] == c["V1"]
     True
     """
-    return _json.dumps(to_document(construction), indent=indent, ensure_ascii=False)
+    text = _json.dumps(to_document(construction), indent=indent, ensure_ascii=False)
+    size = len(text.encode("utf-8"))  # a file is read as bytes: the stricter of the two limits
+    if size > MAX_BYTES:
+        raise JSONTooLargeError(f"the JSON text has {size} bytes, more than {MAX_BYTES}")
+    return text
 
 
 # ---------------------------------------------------------------------------
@@ -525,11 +567,7 @@ def _grasp(rec: dict[str, Any]) -> Grasp:
     if floats and syms:
         raise JSONDocumentError(f"grasp: floats ({', '.join(floats)}) and symbols "
                                 f"({', '.join(syms)}) cannot be mixed in one grasp")
-    for k, v in vals.items():
-        size = sp.N(abs(v), 15) if not v.free_symbols else sp.S.Zero
-        if not (size.is_Number and size <= MAX_MAGNITUDE):
-            raise _fail(f"grasp.{k}", f"expected a number at most {MAX_MAGNITUDE:g}", rec[k],
-                        JSONTooLargeError)
+    _check_magnitudes(vals, rec)
     fr = rec["friction"]
     kw = {f"{fr[str(i)]}{i}": vals[f"{fr[str(i)]}{i}"] for i in (1, 2)}
     shape = tuple(rec["shape"]) if rec["shape"] else None
@@ -557,6 +595,15 @@ def _grasp(rec: dict[str, Any]) -> Grasp:
         raise _fail("grasp.friction", f"the grasp is written {again['friction']}", fr,
                     InconsistentDocumentError)
     return g
+
+
+def _check_magnitudes(vals: dict[str, sp.Expr], rec: dict[str, Any]) -> None:
+    """Refuse a grasp value of size above :data:`MAX_MAGNITUDE` (``rec`` is shown)."""
+    for k, v in vals.items():
+        size = sp.N(abs(v), 15) if not v.free_symbols else sp.S.Zero
+        if not (size.is_Number and size <= MAX_MAGNITUDE):
+            raise _fail(f"grasp.{k}", f"expected a number at most {MAX_MAGNITUDE:g}", rec[k],
+                        JSONTooLargeError)
 
 
 def _check_generators(g: Grasp) -> None:

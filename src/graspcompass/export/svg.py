@@ -140,10 +140,18 @@ def to_svg(construction: Any, title: str | None = None) -> str:
 
 
 def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
-    """Write :func:`to_svg` to ``path`` (UTF-8); returns the path."""
-    from pathlib import Path
+    """Write :func:`to_svg` to ``path`` (UTF-8); returns the path.
 
-    p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_text(to_svg(construction, title), encoding="utf-8")
+    Raises
+    ------
+    graspcompass.errors.OutputError
+        If ``path`` cannot be written (its folder must exist; it is not made), checked
+        before any work, or if the write fails (a half-written file is removed).
+    """
+    from .._output import check_target, writing
+
+    p = check_target(path)
+    text = to_svg(construction, title)
+    with writing(p):
+        p.write_text(text, encoding="utf-8")
     return p

@@ -160,8 +160,18 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
 
 def write_tikz(construction: Any, path: Any, standalone: bool = True,
                title: str | None = None) -> Path:
-    """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path."""
-    p = Path(path)
-    p.parent.mkdir(parents=True, exist_ok=True)
-    p.write_text(to_tikz(construction, standalone, title), encoding="utf-8")
+    """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path.
+
+    Raises
+    ------
+    graspcompass.errors.OutputError
+        If ``path`` cannot be written (its folder must exist; it is not made), checked
+        before any work, or if the write fails (a half-written file is removed).
+    """
+    from .._output import check_target, writing
+
+    p = check_target(path)
+    text = to_tikz(construction, standalone, title)
+    with writing(p):
+        p.write_text(text, encoding="utf-8")
     return p

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 
-from .._output import writing
+from .._output import check_target, writing
 
 __all__ = ["FORMATS", "save_figure"]
 
@@ -18,7 +18,7 @@ FORMATS = ("png", "svg", "pdf")
 
 def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = None,
                 dpi: float = 150) -> Path:
-    """Write ``fig`` as PNG, SVG or PDF, creating the parent directories.
+    """Write ``fig`` as PNG, SVG or PDF into an existing folder.
 
     Parameters
     ----------
@@ -39,7 +39,8 @@ def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = 
     ValueError
         For an extension or format other than png, svg or pdf.
     graspcompass.errors.OutputError
-        If the file cannot be written (no permission, a full disk): the figure
+        If the file cannot be written (its folder does not exist: folders are
+        never made; no permission, checked before any work; a full disk): the figure
         is rendered in memory first, so a failed write leaves no half-written
         matplotlib state behind.
 
@@ -57,9 +58,9 @@ def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = 
                 f"extension {p.suffix!r}" if p.suffix else "a path without extension")
         raise ValueError(f"cannot save a figure to {str(p)!r}: {what} is not supported; "
                          f"use one of {', '.join('.' + f for f in FORMATS)}")
+    p = check_target(p)
     buffer = io.BytesIO()
     fig.savefig(buffer, format=fmt, dpi=dpi)
     with writing(p):
-        p.parent.mkdir(parents=True, exist_ok=True)
         p.write_bytes(buffer.getvalue())
     return p

@@ -29,6 +29,7 @@ from typing import Any
 
 import numpy as np
 
+from .._output import check_folder, check_target, writing
 from ..errors import GraspCompassError
 from ..progress import Progress
 
@@ -377,12 +378,15 @@ def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None =
     (``anim.to_html``).  A progress bar goes to stderr when it is a terminal
     and ``quiet`` is false.  Errors (:class:`UnsupportedFormatError`,
     :class:`FFmpegNotFoundError`, :class:`AnimationError` for fps <= 0) are
-    ValueErrors with one-line messages.
+    ValueErrors with one-line messages; so is :class:`~graspcompass.errors.OutputError`
+    for a path that cannot be written (its folder must exist: it is not made),
+    checked before any frame is drawn, or a write that fails (the half-written
+    file is removed).
     """
     p = Path(path)
     ext = check_output(p)
     rate = anim.fps if fps is None else check_fps(fps)
-    p.parent.mkdir(parents=True, exist_ok=True)
+    p = check_target(p)
     sample = palette_sample(anim) if ext != ".mp4" else None
     bar = Progress(anim.frame_count, f"writing {p.name}", quiet)
 
@@ -392,13 +396,15 @@ def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None =
             yield rgb
 
     try:
-        if ext == ".gif":
-            write_gif(frames(), p, rate, palette_sample=sample)
-        elif ext == ".html":
-            size = anim.figure.get_size_inches()
-            p.write_text(jshtml(frames(), size, anim.figure.dpi, rate, sample), encoding="utf-8")
-        else:
-            write_mp4(frames(), p, rate)
+        with writing(p):
+            if ext == ".gif":
+                write_gif(frames(), p, rate, palette_sample=sample)
+            elif ext == ".html":
+                size = anim.figure.get_size_inches()
+                text = jshtml(frames(), size, anim.figure.dpi, rate, sample)
+                p.write_text(text, encoding="utf-8")
+            else:
+                write_mp4(frames(), p, rate)
     finally:
         bar.close()
     return p
@@ -410,8 +416,19 @@ def save_frames(anim: Any, folder: str | os.PathLike[str], frames: Iterable[int]
 
     For the construction: one PNG per protocol step, the frame at the end of
     the step (after its pause); for the sweep and orientation: one every 30°.
+
+    Raises
+    ------
+    graspcompass.errors.OutputError
+        If ``folder`` does not exist (it is not made) or is not writable, checked
+        before any frame is drawn, or if a write fails (that file is removed).
     """
-    out = Path(folder)
-    out.mkdir(parents=True, exist_ok=True)
+    out = check_folder(folder)
     picks = anim.key_frames() if frames is None else [(f, f"frame-{f:04d}") for f in frames]
-    return [write_png(anim.render(f), out / f"{prefix}{name}.png") for f, name in picks]
+    written = []
+    for f, name in picks:
+        target = check_target(out / f"{prefix}{name}.png")
+        rgb = anim.render(f)
+        with writing(target):
+            written.append(write_png(rgb, target))
+    return written
