@@ -85,6 +85,20 @@ def test_proof_text_is_parsed_with_the_models_symbols() -> None:
     assert prove_identity(mu1 * 2, "2*mu1").proved
 
 
+@pytest.mark.parametrize("where", ["params", "subs"])
+def test_replay_with_subs_never_runs_text(tmp_path: Path, where: str) -> None:
+    from graspcompass.construction.protocol import StepSpec, replay
+
+    code, marker = _payload(tmp_path)
+    q = sp.Symbol("q")
+    params, subs = ((code, 0), {q: 1}) if where == "params" else ((q, 0), {q: code})
+    with pytest.raises(InputError):
+        replay([StepSpec("A", "point", (), "mark", "A", "-", params)], subs=subs)
+    assert not marker.exists()
+    spec = StepSpec("A", "point", (), "mark", "A", "-", (q, "1/3"))
+    assert replay([spec], subs={"q": "1/2"})["A"].x == sp.Rational(1, 2)
+
+
 def test_sincos_refuses_text(tmp_path: Path) -> None:
     from graspcompass.geometry.trig import sincos
 

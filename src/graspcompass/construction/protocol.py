@@ -212,9 +212,17 @@ def replay(specs: Sequence[StepSpec], grasp: Any = None,
     """
     env: dict[str, Any] = {}
     steps = []
+    if subs:  # the caller's values and parameters: read at the boundary, never sympify'd
+        from ..inputs import real_value, substitutions
+
+        specs = [replace(spec, params=tuple(
+            p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")
+            for j, p in enumerate(spec.params))) for spec in specs]
+        known = set().union(*(p.free_symbols for spec in specs for p in spec.params))
+        subs = substitutions(subs, known, "subs", strict=False)
     for i, spec in enumerate(specs):
         if subs:
-            spec = replace(spec, params=tuple(sp.sympify(p).subs(subs) for p in spec.params))
+            spec = replace(spec, params=tuple(p.subs(subs) for p in spec.params))
         step = run_step(spec, env, i)
         env[spec.name] = step.obj
         steps.append(step)
