@@ -103,6 +103,17 @@ def _value(v: Any, name: str) -> sp.Expr:
         raise InvalidGraspError(str(exc)) from None
 
 
+def _pi_multiple(a: sp.Expr) -> sp.Rational | None:
+    """q with a = q π exactly, read off the expression (no arithmetic), or None."""
+    if a is sp.pi:
+        return sp.Integer(1)
+    if a.is_Rational:
+        return sp.Integer(0) if a == 0 else None
+    if a.is_Mul and len(a.args) == 2 and a.args[1] is sp.pi and a.args[0].is_Rational:
+        return a.args[0]
+    return None
+
+
 def _exact_kind(v: sp.Expr, name: str) -> sp.Expr:
     """Refuse exact lengths and friction coefficients the kernel cannot compute with.
 
@@ -249,7 +260,10 @@ class Grasp:
                 )
             return m, sp.atan(m)
         x = _value(xi, f"xi{i}")
-        for bound, sign, words in ((x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2")):
+        q = _pi_multiple(x)
+        bounds = () if q is not None and 0 < q < sp.Rational(1, 2) else (
+            (x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2"))
+        for bound, sign, words in bounds:
             if decide_sign(bound) in sign:
                 raise InvalidGraspError(
                     f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
@@ -292,6 +306,9 @@ class Grasp:
             (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"),
         ]
         for i, phi in ((1, self.phi1), (2, self.phi2)):
+            q = _pi_multiple(phi)
+            if q is not None and 0 < q <= 1:
+                continue  # 0 < φ ≤ π, decided in rationals
             checks += [
                 (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π)"),
                 (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)",
@@ -301,6 +318,9 @@ class Grasp:
         for expr, strict, msg, *shown in checks:
             self._check(expr, strict, msg, assumed, *shown)
         self._check_float_margins()  # floats within rounding of (1): refuse, with advice
+        if self._angles_pass():
+            self.assumptions = tuple(assumed)
+            return
         for i in (1, 2):
             phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
             up, lo = phi + xi, phi - xi
@@ -319,6 +339,18 @@ class Grasp:
             for expr, msg, shown in cond:
                 self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
         self.assumptions = tuple(assumed)
+
+    def _angles_pass(self) -> bool:
+        """Condition (1) decided in rationals when every φ and ξ is a rational multiple of π
+        (the common case, without building sympy expressions); False: check one by one."""
+        qs = [_pi_multiple(a) for a in (self.phi1, self.xi1, self.phi2, self.xi2)]
+        if None in qs:
+            return False
+        half, three_halves = sp.Rational(1, 2), sp.Rational(3, 2)
+        for phi, xi in (qs[:2], qs[2:]):
+            if not (-half < phi - xi < half and half < phi + xi < three_halves):
+                return False
+        return True
 
     def _check_doubles(self) -> None:
         """A grasp with a float parameter computes in doubles: every parameter must be one."""
