@@ -49,13 +49,13 @@ def _check(poly) -> None:
     assert v != 0 and got == (1 if v > 0 else -1), (poly, got, v)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=120, deadline=None)
 @given(_poly)
 def test_filter_sign_is_the_true_sign(poly):
     _check(poly)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(_poly, _poly, st.integers(-60, -20))
 def test_filter_near_cancellation(p, q, k):
     """p*q - p*q' with q' = q + 2^k: tiny but non-zero, and exact zeros p*q - q*p."""
@@ -78,7 +78,7 @@ def test_filter_refuses_exact_zero_in_disguise():
     assert exact._float_sign(8 * c**2 - 5 - _R(sp.sqrt(5))) is None
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=80, deadline=None)
 @given(_poly, st.sampled_from([64, 200, 333]))
 def test_integer_balls_hold_the_true_value(poly, prec):
     """exact._intervals (integer ball arithmetic) encloses the value, tightly."""
@@ -118,7 +118,7 @@ def test_approx_has_the_digits_it_promises(num, den, dps):
 _ROOTS_R = exact._ring((sp.sqrt(2), sp.sqrt(3), sp.sqrt(5), sp.sqrt(7)))
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=80, deadline=None)
 @given(st.dictionaries(st.tuples(*[st.integers(0, 1)] * 4), _coeff, min_size=1, max_size=16))
 def test_direct_expression_is_sympys(terms):
     """exact._as_expr builds Add/Mul without flattening: it must be sympy's own tree."""
