@@ -15,8 +15,8 @@ from typing import Any
 
 import sympy as sp
 
-from .. import geometry as geo
 from ..geometry import Circle, Line, Point
+from .operations import OPERATIONS
 
 __all__ = ["INSTRUMENTS", "OPS", "Construction", "Step", "StepSpec", "replay"]
 
@@ -24,32 +24,9 @@ __all__ = ["INSTRUMENTS", "OPS", "Construction", "Step", "StepSpec", "replay"]
 INSTRUMENTS = ("ruler", "compass", "perpendicular", "mark")
 
 
-def _point(x: sp.Expr, y: sp.Expr) -> Point:
-    return Point.canonical(x, y)
-
-
-def _line(p: Point, dx: sp.Expr, dy: sp.Expr) -> Line:
-    return geo.line_with_direction(p, Point.canonical(dx, dy))
-
-
-def _from_lengths(a: sp.Expr, b: sp.Expr, sx: sp.Expr, sy: sp.Expr) -> Point:
-    return Point.canonical(sx * a, sy * b)
-
-
-#: Operation name -> function(*input objects, *params).
-OPS: dict[str, Callable[..., Any]] = {
-    "point": _point,
-    "line_with_direction": _line,
-    "line_through": geo.line_through,
-    "meet": geo.meet,
-    "foot": geo.foot,
-    "perpendicular": lambda line, p: geo.perpendicular(line, p),
-    "midpoint": geo.midpoint,
-    "signed_length": geo.signed_length,
-    "point_from_lengths": _from_lengths,
-    "circle_on_diameter": geo.circle_on_diameter,
-    "second_intersection": geo.second_intersection,
-}
+#: Operation name -> function(*input objects, *params), derived from
+#: :data:`~graspcompass.construction.operations.OPERATIONS` (one record per operation).
+OPS: dict[str, Callable[..., Any]] = {name: op.function for name, op in OPERATIONS.items()}
 
 
 @dataclass(frozen=True)
@@ -57,7 +34,8 @@ class StepSpec:
     """The declaration of a step, before it is run.
 
     ``params`` are exact values passed after the input objects (coordinates of a
-    given point, a direction, signs).
+    given point, a direction, signs); ``role`` and ``n`` say what the object is
+    in the drawing (see :class:`Step`).
     """
 
     name: str
@@ -68,6 +46,8 @@ class StepSpec:
     ref: str
     params: tuple[Any, ...] = ()
     key: bool = False
+    role: str = ""
+    n: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -95,6 +75,14 @@ class Step:
         One line of text, and the paper's section or equation.
     key : bool
         A key result (V_n, a circle, the envelope) where an animation pauses.
+    role : str
+        What the object is in the drawing, as data (one of
+        :data:`~graspcompass.construction.operations.ROLES`: ``"cone_side"``,
+        ``"X"``, ``"V"``, ...; ``""`` for none), so that no painter reads it from
+        the name.
+    n : tuple of int
+        The indices that go with the role: ``(1,)`` for V1 or side 1, ``(1, 2)``
+        for the break point B12, ``()`` for none.
     """
 
     index: int
@@ -108,6 +96,8 @@ class Step:
     ref: str
     params: tuple[Any, ...] = ()
     key: bool = False
+    role: str = ""
+    n: tuple[int, ...] = ()
 
     @property
     def kind(self) -> str:
@@ -121,7 +111,7 @@ class Step:
     def spec(self) -> StepSpec:
         """The declaration that makes this step again."""
         return StepSpec(self.name, self.op, self.inputs, self.instrument, self.caption,
-                        self.ref, self.params, self.key)
+                        self.ref, self.params, self.key, self.role, self.n)
 
 
 @dataclass(frozen=True)
@@ -195,7 +185,7 @@ def run_step(spec: StepSpec, env: dict[str, Any], index: int,
         before |= getattr(a, "conditions", frozenset())
     new = tuple(sorted(getattr(obj, "conditions", frozenset()) - before, key=sp.default_sort_key))
     return Step(index, spec.name, spec.op, spec.instrument, spec.inputs, obj, new,
-                spec.caption, spec.ref, spec.params, spec.key)
+                spec.caption, spec.ref, spec.params, spec.key, spec.role, spec.n)
 
 
 def replay(specs: Sequence[StepSpec], grasp: Any = None,

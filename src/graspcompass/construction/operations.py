@@ -1,0 +1,222 @@
+"""One record per operation of the construction kernel.
+
+Each :class:`Operation` says everything the package knows about one verb of the
+ruler-and-compass kernel (:mod:`graspcompass.geometry.constructive`,
+:mod:`graspcompass.geometry.measurement`): the kernel function, the instrument
+that draws it, the kinds of its inputs and parameters, the kind of object it
+makes, a caption template, the GeoGebra command that makes it again, and how
+it is drawn.  :data:`OPERATIONS` maps each name to its record; the string
+dispatch of :data:`graspcompass.construction.protocol.OPS` is derived from it.
+
+The kinds are ``"point"``, ``"line"``, ``"circle"`` and ``"number"`` (a signed
+length); parameter kinds are ``"number"`` (an exact value), ``"angle"`` (radians,
+from the negative y-axis, counter-clockwise, as θ in e(θ) of eq. (26)) and
+``"branch"`` (0 or 1: which of two intersection points, in the kernel's fixed
+branch order).
+
+Examples
+--------
+>>> op = OPERATIONS["meet"]
+>>> op.inputs, op.makes, op.instrument
+(('line', 'line'), 'point', 'ruler')
+>>> op.caption_for("X1", ("side1", "x-axis"))
+'X1: where side1 meets x-axis'
+>>> op.ggb_for(("side1", "x-axis"), ())
+'Intersect[side1, x-axis]'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any
+
+import sympy as sp
+
+from .. import geometry as geo
+from ..geometry import Circle, Line, NoIntersectionError, Point
+from ..geometry.trig import sincos
+
+__all__ = ["KINDS", "OPERATIONS", "PARAM_KINDS", "ROLES", "Operation", "kind_of"]
+
+#: Kinds of objects a step makes or uses.
+KINDS = ("point", "line", "circle", "number")
+#: Kinds of parameters (exact values written after the inputs).
+PARAM_KINDS = ("number", "angle", "branch")
+#: Roles a step may play in a drawing (``""``: none), set by the recipe as data.
+ROLES = ("", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
+         "Y", "S_length", "C_length", "V", "circle", "break_point", "envelope")
+
+
+def kind_of(obj: object) -> str:
+    """The kind of a kernel object: ``"point"``, ``"line"``, ``"circle"`` or ``"number"``.
+
+    Examples
+    --------
+    >>> kind_of(Point(0, 0)), kind_of(sp.Integer(2))
+    ('point', 'number')
+    """
+    for cls, name in ((Point, "point"), (Line, "line"), (Circle, "circle")):
+        if isinstance(obj, cls):
+            return name
+    return "number" if isinstance(obj, sp.Expr) else "other"
+
+
+@dataclass(frozen=True)
+class Operation:
+    """What one kernel operation is: function, instrument, kinds, caption, GeoGebra, drawing.
+
+    Attributes
+    ----------
+    name : str
+        The operation's name in protocols and in the construction language.
+    function : callable
+        ``function(*inputs, *params)`` returns the object (the exact kernel).
+    instrument : str
+        One of :data:`graspcompass.construction.protocol.INSTRUMENTS`.
+    inputs : tuple of str
+        Kinds of the input objects (:data:`KINDS`), in order.
+    params : tuple of str
+        Kinds of the parameters (:data:`PARAM_KINDS`) written after the inputs.
+    makes : str
+        Kind of the object made.
+    caption : str
+        Template of a default caption: ``{name}`` and ``{0}``, ``{1}``, ... (inputs).
+    ggb : str or None
+        GeoGebra command template (``{0}``... inputs, ``{p0}``... parameters), or
+        None where GeoGebra's own choice would differ from the kernel's.
+    draws : str
+        How it is drawn: ``"point"``, ``"line"``, ``"circle"``, ``"length"``
+        (a measured segment) or ``"curve"``.
+    doc : str
+        One line: what the operation does, with the paper's equation where one applies.
+    """
+
+    name: str
+    function: Callable[..., Any]
+    instrument: str
+    inputs: tuple[str, ...]
+    params: tuple[str, ...]
+    makes: str
+    caption: str
+    ggb: str | None
+    draws: str
+    doc: str
+
+    def caption_for(self, name: str, inputs: tuple[str, ...]) -> str:
+        """The default caption of a step ``name`` made from ``inputs``."""
+        return self.caption.format(*inputs, name=name)
+
+    def ggb_for(self, inputs: tuple[str, ...], params: tuple[Any, ...]) -> str | None:
+        """The GeoGebra command making the object again (labels as given), or None."""
+        if self.ggb is None:
+            return None
+        values = {f"p{i}": str(p).replace("**", "^") for i, p in enumerate(params)}
+        return self.ggb.format(*inputs, **values)
+
+
+# -- kernel functions that are not a single call of the geometry package --------------
+def _point(x: sp.Expr, y: sp.Expr) -> Point:
+    return Point.canonical(x, y)
+
+
+def _line(p: Point, dx: sp.Expr, dy: sp.Expr) -> Line:
+    return geo.line_with_direction(p, Point.canonical(dx, dy))
+
+
+def _line_at_angle(p: Point, angle: sp.Expr) -> Line:
+    s, c = sincos(angle)
+    return geo.line_with_direction(p, Point.canonical(s, -c))
+
+
+def _from_lengths(a: sp.Expr, b: sp.Expr, sx: sp.Expr, sy: sp.Expr) -> Point:
+    return Point.canonical(sx * a, sy * b)
+
+
+def _perpendicular(line: Line, p: Point) -> Line:
+    return geo.perpendicular(line, p)
+
+
+def _branch(points: tuple[Point, ...], branch: sp.Expr, what: str, *objs: object) -> Point:
+    k = int(branch)
+    if len(points) <= k:
+        have = "no common point" if not points else "one common point (tangent)"
+        raise NoIntersectionError(f"{what} have {have}, so there is no branch {k}", *objs)
+    return points[k]
+
+
+def _line_circle(line: Line, circle: Circle, branch: sp.Expr) -> Point:
+    return _branch(geo.intersect_line_circle(line, circle), branch,
+                   f"the line {line} and the circle {circle}", line, circle)
+
+
+def _circles(c1: Circle, c2: Circle, branch: sp.Expr) -> Point:
+    return _branch(geo.intersect_circles(c1, c2), branch,
+                   f"the circles {c1} and {c2}", c1, c2)
+
+
+def _op(name: str, function: Callable[..., Any], instrument: str, inputs: str, params: str,
+        makes: str, caption: str, ggb: str | None, draws: str, doc: str) -> Operation:
+    return Operation(name, function, instrument, tuple(inputs.split()), tuple(params.split()),
+                     makes, caption, ggb, draws, doc)
+
+
+_ALL = (
+    _op("point", _point, "mark", "", "number number", "point",
+        "{name}: a given point", "({p0}, {p1})", "point",
+        "A given point (x, y), e.g. a contact P1 = (x1, y) of §2.2.1."),
+    _op("line_through", geo.line_through, "ruler", "point point", "", "line",
+        "{name}: the line through {0} and {1}", "Line[{0}, {1}]", "line",
+        "The line through two points, oriented from the first to the second."),
+    _op("line_with_direction", _line, "ruler", "point", "number number", "line",
+        "{name}: the line through {0} along ({p0}, {p1})", "Line[{0}, {0} + ({p0}, {p1})]",
+        "line", "The line through a point along a direction (dx, dy), e.g. a cone side."),
+    _op("line_at_angle", _line_at_angle, "ruler", "point", "angle", "line",
+        "{name}: the line through {0} at an angle from the negative y-axis",
+        "Line[{0}, {0} + (sin({p0}), -cos({p0}))]", "line",
+        "The line through a point along e(a) = (sin a, -cos a) of eq. (26)."),
+    _op("perpendicular", _perpendicular, "perpendicular", "line point", "", "line",
+        "{name}: the perpendicular to {0} through {1}", "OrthogonalLine[{1}, {0}]", "line",
+        "The perpendicular to a line through a point (§3.3 step (2))."),
+    _op("parallel", geo.parallel, "ruler", "line point", "", "line",
+        "{name}: the parallel to {0} through {1}", "Line[{1}, {0}]", "line",
+        "The parallel to a line through a point, with the same orientation."),
+    _op("foot", geo.foot, "perpendicular", "point line", "", "point",
+        "{name}: the foot of the perpendicular from {0} to {1}", "ClosestPoint[{1}, {0}]",
+        "point", "The foot of the perpendicular from a point to a line (P1x, P2x of §3.3)."),
+    _op("midpoint", geo.midpoint, "compass", "point point", "", "point",
+        "{name}: the midpoint of {0} and {1}", "Midpoint[{0}, {1}]", "point",
+        "The midpoint of two points (O_M of §3.3)."),
+    _op("meet", geo.meet, "ruler", "line line", "", "point",
+        "{name}: where {0} meets {1}", "Intersect[{0}, {1}]", "point",
+        "The one common point of two lines (X_n, Y_n of §3.3)."),
+    _op("reflect", geo.reflect, "perpendicular", "point line", "", "point",
+        "{name}: the mirror image of {0} in {1}", "Mirror[{0}, {1}]", "point",
+        "The mirror image of a point in a line."),
+    _op("circle_through", geo.circle_through, "compass", "point point", "", "circle",
+        "{name}: the circle with centre {0} through {1}", "Circle[{0}, {1}]", "circle",
+        "The circle with a centre through a point."),
+    _op("circle_on_diameter", geo.circle_on_diameter, "compass", "point point", "", "circle",
+        "{name}: the circle on the diameter {0}{1}", "Circle[Midpoint[{0}, {1}], {0}]",
+        "circle", "The circle on a diameter: the polar graph of k_n, eq. (31)-(32), Fig. 3."),
+    _op("intersect_line_circle", _line_circle, "mark", "line circle", "branch", "point",
+        "{name}: where {0} crosses {1} (branch {p0})", None, "point",
+        "A common point of a line and a circle; branch 0 lies further along the line."),
+    _op("intersect_circles", _circles, "mark", "circle circle", "branch", "point",
+        "{name}: where {0} crosses {1} (branch {p0})", None, "point",
+        "A common point of two circles; branch 0 lies left of the line of centres."),
+    _op("second_intersection", geo.second_intersection, "mark", "circle circle point", "",
+        "point", "{name}: the second common point of {0} and {1} (besides {2})",
+        "Mirror[{2}, Line[Center[{0}], Center[{1}]]]", "point",
+        "The other common point of two circles through a known one (break points, §3.3)."),
+    _op("signed_length", geo.signed_length, "compass", "point point line", "", "number",
+        "{name}: the signed length {0}{1} along {2}", "Vector[{0}, {1}] * UnitVector[{2}]",
+        "length", "The directed length from a point to a point along a line (O_M X_n, O Y_n)."),
+    _op("point_from_lengths", _from_lengths, "compass", "number number", "number number",
+        "point", "{name}: the point ({p0}·{0}, {p1}·{1})", "({p0} * {0}, {p1} * {1})", "point",
+        "The point (sx·a, sy·b) from two lengths: V_n = (−O_M X_n, −O Y_n), eq. (30)/(33)."),
+)
+
+#: Name -> record of every operation of the kernel.
+OPERATIONS: Mapping[str, Operation] = MappingProxyType({op.name: op for op in _ALL})
