@@ -681,3 +681,56 @@ def test_vectorised_contact_forces_balance_and_bind():
     assert ineq.min() > -1e-12
     binding = k > 1e-9
     assert np.abs(ineq.min(axis=0)[binding]).max() < 1e-12
+
+
+# -- an immutable value (issue 13 §1) ---------------------------------------------------
+
+
+@pytest.mark.parametrize("field", ["x1", "y", "phi2", "mu1", "xi2", "s1", "title", "_SC", "new"])
+def test_assignment_raises(field):
+    """Before issue 13, ``g.x1 = 3`` was accepted and k_grasp kept its stale float cache."""
+    g = Grasp.preset("table1a")
+    before = g.k_grasp(0.3)
+    with pytest.raises(graspcompass.grasp.FrozenGraspError, match="immutable"):
+        setattr(g, field, 3)
+    with pytest.raises(AttributeError):  # also a dataclasses.FrozenInstanceError
+        delattr(g, field)
+    assert g.k_grasp(0.3) == before and g == Grasp.preset("table1a")
+
+
+def test_replace_gives_the_new_k_grasp():
+    """replace() validates again and computes anew: k_1(0) = (x2 c - 0) tan(φ1 + ξ1) with
+    φ1 = π/2 is x2·μ1-dependent only, so changing x2 changes k_grasp(0) (eq. (18))."""
+    g = Grasp.preset("table1a")
+    g.k_grasp(0.0)  # fill the float cache of the original
+    h = g.replace(x2=3)
+    # θ = 0, φ = π/2: k1 = -x2 tan(π/2 + ξ1) = x2/μ1, k2 = x1/μ2 (eqs. (18), (19))
+    assert h.k_grasp(0) == 3 and g.k_grasp(0) == 2
+    assert h.k_grasp(0.0) == pytest.approx(3.0) and g.k_grasp(0.0) == pytest.approx(2.0)
+    assert (h.x2, g.x2) == (3, 2) and h != g
+    assert g.replace(x2=2) == g and hash(g.replace()) == hash(g)
+
+
+def test_replace_friction_forms_and_errors():
+    g = Grasp.preset("fig6")  # friction given as ξ
+    assert g.replace() == g  # ξ kept as given (not atan(tan ξ))
+    h = g.replace(mu1=2)  # the pair of contact 1 switches to μ; contact 2 keeps ξ
+    assert (h.mu1, h.xi1, h.xi2) == (2, sp.atan(2), pi / 3)
+    with pytest.raises(InvalidGraspError, match="contact 1"):
+        g.replace(mu1=-1)
+    with pytest.raises(TypeError, match="unexpected field"):
+        g.replace(z=1)
+    f = Grasp(0.8, 1.1, 0.4, 1.2, 1.4, xi1=0.5, mu2=0.7)
+    assert f.replace() == f and f.replace(y=0.5).y == 0.5
+
+
+def test_frozen_grasp_copies_and_pickles():
+    import copy
+    import pickle
+
+    g = Grasp.preset("table1c")
+    g.k_grasp(0.1)
+    for c in (pickle.loads(pickle.dumps(g)), copy.deepcopy(g), copy.copy(g)):
+        assert c == g and c.k_grasp(0.1) == g.k_grasp(0.1)
+        with pytest.raises(AttributeError):
+            c.x1 = 1

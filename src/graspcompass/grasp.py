@@ -10,6 +10,7 @@ given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -32,8 +33,17 @@ from .geometry.exact import canon, decide_sign, has_float
 from .geometry.trig import sincos, tan_exact
 from .inputs import angle_values, force_value, real_value, substitutions
 
-__all__ = ["PRESETS", "ComplexParameterError", "Grasp", "InvalidGraspError",
-           "NonFiniteParameterError", "ParameterTypeError", "UnsupportedParameterError"]
+__all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
+           "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",
+           "UnsupportedParameterError"]
+
+
+class FrozenGraspError(dataclasses.FrozenInstanceError):
+    """Assignment to (or deletion of) a field of a :class:`Grasp`, an immutable value.
+
+    An :class:`AttributeError`, like :class:`dataclasses.FrozenInstanceError`;
+    :meth:`Grasp.replace` makes a modified copy instead.
+    """
 
 
 class InvalidGraspError(GraspCompassError):
@@ -228,22 +238,74 @@ class Grasp:
         shape: tuple | None = None,
         title: str | None = None,
     ) -> None:
-        self.x1, self.x2, self.y = (_exact_kind(_value(v, k), k)
-                                    for v, k in ((x1, "x1"), (x2, "x2"), (y, "y")))
-        self.phi1, self.phi2 = _value(phi1, "phi1"), _value(phi2, "phi2")
-        self.mu1, self.xi1 = self._friction(1, mu1, xi1)
-        self.mu2, self.xi2 = self._friction(2, mu2, xi2)
-        self.shape = shape
-        self.title = title
-        self.numeric = any(has_float(v) for v in self.params.values())
-        self.assumptions: tuple[sp.Basic, ...] = ()
-        self._SC: tuple[np.ndarray, np.ndarray] | None = None  # float S_n, C_n, on demand
+        x1, x2, y = (_exact_kind(_value(v, k), k) for v, k in ((x1, "x1"), (x2, "x2"), (y, "y")))
+        init = object.__setattr__  # frozen: attributes are set here, once
+        init(self, "x1", x1)
+        init(self, "x2", x2)
+        init(self, "y", y)
+        init(self, "phi1", _value(phi1, "phi1"))
+        init(self, "phi2", _value(phi2, "phi2"))
+        m1, x1_ = self._friction(1, mu1, xi1)
+        m2, x2_ = self._friction(2, mu2, xi2)
+        init(self, "mu1", m1)
+        init(self, "xi1", x1_)
+        init(self, "mu2", m2)
+        init(self, "xi2", x2_)
+        init(self, "_given", ("mu" if mu1 is not None else "xi", "mu" if mu2 is not None else "xi"))
+        init(self, "shape", shape)
+        init(self, "title", title)
+        init(self, "numeric", any(has_float(v) for v in self.params.values()))
+        init(self, "assumptions", ())
+        init(self, "_SC", None)  # float S_n, C_n, on demand (derived from frozen values)
         if self.numeric:
             self._check_doubles()
         self._validate()
         # exact sines and cosines without nested radicals (generators where needed)
-        self.s1, self.c1 = sincos(self.phi1)
-        self.s2, self.c2 = sincos(self.phi2)
+        s1, c1 = sincos(self.phi1)
+        s2, c2 = sincos(self.phi2)
+        init(self, "s1", s1)
+        init(self, "c1", c1)
+        init(self, "s2", s2)
+        init(self, "c2", c2)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise FrozenGraspError(
+            f"cannot assign to field {name!r}: a Grasp is an immutable value (its derived "
+            f"values are computed once); use g.replace({name}=...) for a modified grasp")
+
+    def __delattr__(self, name: str) -> None:
+        raise FrozenGraspError(f"cannot delete field {name!r}: a Grasp is an immutable value")
+
+    def replace(self, **changes: Any) -> Grasp:
+        """A new grasp with some parameters changed, validated again (like
+        :func:`dataclasses.replace`); the grasp itself never changes.
+
+        Keys are the constructor's: ``x1, x2, y, phi1, phi2``, the friction as
+        ``mu1``/``xi1`` and ``mu2``/``xi2`` (giving one of a contact's pair drops
+        the other), ``shape`` and ``title``.
+
+        Examples
+        --------
+        >>> g = Grasp.preset("table1a")
+        >>> h = g.replace(x1=3, mu2="1/2")
+        >>> (h.x1, h.mu2, g.x1), h.k_grasp(0) == g.replace(x1=3).replace(mu2="0.5").k_grasp(0)
+        ((3, 1/2, 2), True)
+        """
+        unknown = set(changes) - set(_REPLACEABLE)
+        if unknown:
+            raise TypeError(f"Grasp.replace() got unexpected field(s) {sorted(unknown)}; "
+                            f"the fields are {', '.join(_REPLACEABLE)}")
+        kw: dict[str, Any] = dict(x1=self.x1, x2=self.x2, y=self.y, phi1=self.phi1,
+                                  phi2=self.phi2, shape=self.shape, title=self.title)
+        for i in (1, 2):
+            mu, xi = f"mu{i}", f"xi{i}"
+            if mu in changes or xi in changes:
+                kw[mu], kw[xi] = changes.pop(mu, None), changes.pop(xi, None)
+            else:
+                kind = self._given[i - 1]  # the form given: ξ stays ξ (no atan(tan ξ))
+                kw[kind + str(i)] = getattr(self, kind + str(i))
+        kw.update(changes)
+        return Grasp(**kw)
 
     # -- construction -----------------------------------------------------------
     def _friction(self, i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
@@ -319,7 +381,7 @@ class Grasp:
             self._check(expr, strict, msg, assumed, *shown)
         self._check_float_margins()  # floats within rounding of (1): refuse, with advice
         if self._angles_pass():
-            self.assumptions = tuple(assumed)
+            object.__setattr__(self, "assumptions", tuple(assumed))
             return
         for i in (1, 2):
             phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
@@ -338,7 +400,7 @@ class Grasp:
             ]
             for expr, msg, shown in cond:
                 self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
-        self.assumptions = tuple(assumed)
+        object.__setattr__(self, "assumptions", tuple(assumed))
 
     def _angles_pass(self) -> bool:
         """Condition (1) decided in rationals when every φ and ξ is a rational multiple of π
@@ -522,7 +584,7 @@ class Grasp:
                     "the grasp's S_n, C_n (eqs. (28)-(39)) are beyond double precision "
                     f"(|S_n|, |C_n| must stay below {_HALF_MAX:.2g}); the numeric path "
                     "cannot use this grasp: give θ exactly (text such as 'pi/3')")
-            self._SC = (np.array(S), np.array(C))
+            object.__setattr__(self, "_SC", (np.array(S), np.array(C)))
         return self._SC
 
     # -- k_n and k_grasp --------------------------------------------------------
@@ -725,6 +787,9 @@ class Grasp:
         return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], **fr,
                      shape=self.shape, title=self.title)
 
+
+#: The fields :meth:`Grasp.replace` takes (the constructor's arguments).
+_REPLACEABLE = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2", "shape", "title")
 
 _HALF_MAX = 0.5 * 1.7976931348623157e308  # k_n = S_n sin θ - C_n cos θ cannot overflow below
 
