@@ -360,7 +360,7 @@ class _Checker:
             if len(values) != len(o.params):
                 raise _Problem(f"{op} takes {len(o.params)} value(s) "
                                f"({', '.join(o.params) or 'none'}), got {len(values)}",
-                               ("value", 0))
+                               "values")
             values = tuple(self.value(v, ("value", i)) for i, v in enumerate(values))
             for i, (v, k) in enumerate(zip(values, o.params)):
                 if k == "branch" and v not in (0, 1):
@@ -374,7 +374,7 @@ class _Checker:
                 raise _Problem(f"bad {slot}: one line of text", slot)
         self._new_name(name, line)
         if caption is None:
-            caption = (OPERATIONS[op].caption_for(name, inputs) if op != _ENVELOPE
+            caption = (OPERATIONS[op].caption_for(name, inputs, values) if op != _ENVELOPE
                        else f"{name}: the outer envelope")
         s = Statement(name, op, inputs, values, caption, ref, role, n, key, optional, line)
         self.steps.append(s)
@@ -397,10 +397,10 @@ class _Checker:
     def claim(self, kind: str, terms: Iterable[Any], relation: str, under: Iterable[str],
               line: int) -> Claim:
         terms, under = tuple(terms), tuple(under)
-        for h in under:
+        for i, h in enumerate(under):
             if h not in self.hypotheses:
                 raise _Problem(f"unknown hypothesis {h!r} (declare it: hypothesis {h})",
-                               "under")
+                               ("under", i))
         if kind in _CLAIM_KINDS or kind == "on":
             need, least = _CLAIM_KINDS.get(kind, (None, 2))
             many = kind in ("collinear", "concurrent")
@@ -492,6 +492,8 @@ class _Line:
             m = _TOKEN.match(text, pos)
             col = len(text[pos:]) - len(text[pos:].lstrip()) + pos + 1
             if m is None or m.lastgroup is None:
+                if text[col - 1] == '"':
+                    raise err("unterminated string", col)
                 raise err(f"unexpected character {text[col - 1]!r}", col)
             if m.lastgroup == "open":
                 end = _group_end(text, m.end() - 1)
@@ -506,8 +508,6 @@ class _Line:
             else:
                 self.tokens.append((m.lastgroup, m.group(m.lastgroup), col))
             pos = m.end()
-        if '"' in text and not any(k == "string" for k, _, _ in self.tokens):
-            raise err("unterminated string", text.index('"') + 1)
 
 
 def parse(text: str, file: str = "<text>") -> Program:
@@ -621,6 +621,7 @@ def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None
     slots[("input", len(inputs))] = toks[i][2] if i < len(toks) else toks[-1][2]
     values: list[str] = []
     if i < len(toks) and toks[i][0] == "values":
+        slots["values"] = toks[i][2]
         for j, (item, off) in enumerate(_split_items(toks[i][1], toks[i][2])):
             slots[("value", j)] = off + len(item) - len(item.lstrip()) + 1
             values.append(item.strip())
@@ -657,7 +658,7 @@ def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None
         elif kind == "values":
             raise _Problem("the values go in one pair of parentheses, after the inputs",
                            "clause")
-        elif kind == "word" and arity is not None and text not in _KEYWORDS:
+        elif kind == "word" and arity and text not in _KEYWORDS:
             raise _Problem(f"too many inputs: {op} takes {arity}", "clause")
         else:
             raise _Problem(f"unexpected {text!r}: a caption \"…\", ref \"…\", role NAME N, "
@@ -669,17 +670,19 @@ def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None
 def _claim(body: str, chk: _Checker, number: int, err: Any) -> None:
     start = body.index("claim") + len("claim")
     under: list[str] = []
+    slots_under: list[int] = []
     m = re.search(r"\bunder\b", body[start:])
     rest_end = len(body) if m is None else start + m.start()
     if m is not None:
         for u in re.finditer(r"\S+", body[start + m.end():]):
             under.append(u.group())
+            slots_under.append(start + m.end() + u.start() + 1)
         if not under:
             raise err("write under HYPOTHESIS...", start + m.start() + 1)
     rest = body[start:rest_end]
     words = rest.split()
     col0 = start + len(rest) - len(rest.lstrip()) + 1
-    slots: dict[Any, int] = {"kind": col0, "under": start + (m.end() if m else 0) + 1}
+    slots: dict[Any, int] = {"kind": col0, **{("under", i): c for i, c in enumerate(slots_under)}}
     try:
         if not words:
             raise _Problem("an empty claim", "kind")

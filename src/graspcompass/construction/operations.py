@@ -104,9 +104,12 @@ class Operation:
     draws: str
     doc: str
 
-    def caption_for(self, name: str, inputs: tuple[str, ...]) -> str:
-        """The default caption of a step ``name`` made from ``inputs``."""
-        return self.caption.format(*inputs, name=name)
+    def caption_for(self, name: str, inputs: tuple[str, ...], params: tuple[Any, ...] = ()
+                    ) -> str:
+        """The default caption of a step ``name`` made from ``inputs`` and ``params``."""
+        values = {f"p{i}": str(p) for i, p in enumerate(params)}
+        values.update({f"p{i}": "?" for i in range(len(params), len(self.params))})
+        return self.caption.format(*inputs, name=name, **values)
 
     def ggb_for(self, inputs: tuple[str, ...], params: tuple[Any, ...]) -> str | None:
         """The GeoGebra command making the object again (labels as given), or None."""
