@@ -197,6 +197,24 @@ def test_write_animation_removes_a_half_written_file(small_anim, tmp_path: Path,
     assert not (tmp_path / "a.gif").exists()
 
 
+def test_write_animation_removes_the_file_of_a_failed_or_interrupted_write(
+        small_anim, tmp_path: Path, monkeypatch) -> None:
+    from graspcompass.render import timeline
+
+    def interrupted(frames, path, fps, palette_sample=None) -> int:
+        Path(path).write_bytes(b"GIF89a")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(timeline, "write_gif", interrupted)
+    with pytest.raises(KeyboardInterrupt):
+        timeline.write_animation(small_anim, tmp_path / "a.gif", quiet=True)
+    assert not (tmp_path / "a.gif").exists()
+    (tmp_path / "b.gif").write_bytes(b"old")  # a file that was there before is left alone
+    with pytest.raises(KeyboardInterrupt):
+        timeline.write_animation(small_anim, tmp_path / "b.gif", quiet=True)
+    assert (tmp_path / "b.gif").exists()
+
+
 def test_save_frames_refuses_a_missing_folder(small_anim, tmp_path: Path) -> None:
     from graspcompass.render.animate import save_frames
 

@@ -395,6 +395,7 @@ def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None =
             bar.update()
             yield rgb
 
+    existed = os.path.lexists(p)
     try:
         with writing(p):
             if ext == ".gif":
@@ -405,6 +406,10 @@ def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None =
                 p.write_text(text, encoding="utf-8")
             else:
                 write_mp4(frames(), p, rate)
+    except BaseException:  # ffmpeg failed, Ctrl-C: no half-written animation is left behind
+        if not existed and p.is_file():
+            p.unlink(missing_ok=True)
+        raise
     finally:
         bar.close()
     return p
