@@ -22,7 +22,8 @@ from .construction import Construction, Step, internal_force_diagram
 from .errors import GraspCompassError, InputError
 from .expr import ExpressionError, parse_exact
 from .geometry import Circle, GeometryError, Line, Point
-from .grasp import PRESETS, Grasp, InvalidGraspError
+from .grasp import PRESETS, FrozenGraspError, Grasp, InvalidGraspError
+from .world import WorldGrasp, WorldGraspError, place_grasp
 
 __version__ = "0.1.0"
 
@@ -31,6 +32,7 @@ __all__ = [
     "Circle",
     "Construction",
     "ExpressionError",
+    "FrozenGraspError",
     "GeometryError",
     "Grasp",
     "GraspCompassError",
@@ -39,7 +41,10 @@ __all__ = [
     "Line",
     "Point",
     "Step",
+    "WorldGrasp",
+    "WorldGraspError",
     "__version__",
     "internal_force_diagram",
     "parse_exact",
+    "place_grasp",
 ]
