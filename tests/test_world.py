@@ -345,3 +345,31 @@ def test_exact_text_stays_exact_and_floats_go_numeric():
     assert float(wg.internal_force((0, -g))) == pytest.approx(
         lp_least_squeeze([(0.05, 0), (-0.05, 0)], [(-1, 0), (1, 0)], (0.3, 0.3),
                          (0.025, -0.01), (0, -g))[0], rel=1e-9)
+
+
+def test_fig6_placed_in_the_world_and_mixed_inputs():
+    """Fig. 6's circle: contacts on the unit circle, normals to its centre (§4.1)."""
+    r3 = "sqrt(3)/2"
+    wg = place_grasp([(r3, "1/2"), ("-" + r3, "1/2")], [("-" + r3, "-1/2"), (r3, "-1/2")],
+                     xi=("pi/4", "pi/3"), com=(0, 0))
+    assert wg.grasp == Grasp.preset("fig6") and wg.beta == 0
+    # a float force on an exact grasp gives floats; an exact force exact values
+    f = wg.internal_force((0.0, -1.0))
+    assert isinstance(f, float) and f == pytest.approx(float(wg.internal_force((0, -1))))
+    assert all(isinstance(v, float) for v in wg.contact_forces((0.3, -1.0))["A"])
+    assert wg.theta_to_world(0.5) == 0.5 and wg.theta_to_paper("pi/2") == sp.pi / 2
+
+
+def test_more_refusals():
+    from graspcompass.errors import InputError, SymbolicValueError
+
+    ok = dict(contacts=[(2, 1), (-2, 1)], normals=[(-1, 0), (1, 0)], mu=(1, 1), com=(0, 0))
+    with pytest.raises(InputError, match="different names"):
+        place_grasp(**ok, names=("jaw", "jaw"))
+    with pytest.raises(SymbolicValueError):
+        place_grasp(**{**ok, "com": (sp.Symbol("c"), 0)})
+    with pytest.raises(WorldGraspError, match="distance between contacts A and B"):
+        place_grasp([(0, 0), (1, "1 + sqrt(2)")], [(R(-3, 5), R(-4, 5)), (R(3, 5), R(4, 5))],
+                    mu=(5, 5), com=(1, 0))
+    with pytest.raises(InputError, match="force: the external force must not be zero"):
+        place_grasp(**ok).internal_force((0, 0))

@@ -59,7 +59,7 @@ from typing import Any
 
 import sympy as sp
 
-from .errors import InputError, WrongTypeError
+from .errors import InputError, SymbolicValueError, WrongTypeError
 from .geometry.exact import canon, decide_sign, has_float
 from .geometry.trig import sincos
 from .grasp import Grasp, InvalidGraspError
@@ -186,7 +186,8 @@ def _vec(value: Any, what: str) -> Vec:
 def _no_symbols(values: list[Any]) -> None:
     for v in values:
         if isinstance(v, sp.Basic) and v.free_symbols:
-            raise InputError(f"world-frame data must be numbers, got {v} (symbols: use Grasp)")
+            raise SymbolicValueError(
+                f"world-frame data must be numbers, got {v} (for symbols use Grasp)")
 
 
 def _as_kind(v: Any, exact: bool) -> Any:
@@ -355,30 +356,35 @@ class WorldGrasp:
         >>> wg.to_paper((3, 5)), wg.to_world((2, 1))
         ((2, 1), (3, 5))
         """
-        w = _sub(self._read(point, "point"), self.origin)
-        return _c((_dot(w, self.ex), _dot(w, self.ey)), self.exact)
+        p, num = self._read(point, "point")
+        o, ex, ey = self._frame(num)
+        w = _sub(p, o)
+        return _c((_dot(w, ex), _dot(w, ey)), not num)
 
     def to_world(self, point: Any) -> Vec:
         """World coordinates of a paper-frame point."""
-        p = self._read(point, "point")
-        return _c((self.origin[0] + p[0] * self.ex[0] + p[1] * self.ey[0],
-                   self.origin[1] + p[0] * self.ex[1] + p[1] * self.ey[1]), self.exact)
+        p, num = self._read(point, "point")
+        o, ex, ey = self._frame(num)
+        return _c((o[0] + p[0] * ex[0] + p[1] * ey[0], o[1] + p[0] * ex[1] + p[1] * ey[1]),
+                  not num)
 
     def vector_to_paper(self, vector: Any) -> Vec:
         """Paper-frame components of a world vector (a force, a direction)."""
-        v = self._read(vector, "vector")
-        return _c((_dot(v, self.ex), _dot(v, self.ey)), self.exact)
+        v, num = self._read(vector, "vector")
+        _, ex, ey = self._frame(num)
+        return _c((_dot(v, ex), _dot(v, ey)), not num)
 
     def vector_to_world(self, vector: Any) -> Vec:
         """World components of a paper-frame vector."""
-        v = self._read(vector, "vector")
-        return _c((v[0] * self.ex[0] + v[1] * self.ey[0],
-                   v[0] * self.ex[1] + v[1] * self.ey[1]), self.exact)
+        v, num = self._read(vector, "vector")
+        _, ex, ey = self._frame(num)
+        return _c((v[0] * ex[0] + v[1] * ey[0], v[0] * ex[1] + v[1] * ey[1]), not num)
 
     def theta_to_world(self, theta: Any) -> Any:
         """The world angle of the paper-frame direction e(θ) (eq. (26)): ``θ + beta``.
 
-        Both angles are counter-clockwise from the negative y-axis of their frame.
+        Both angles are counter-clockwise from the negative y-axis of their frame;
+        a float θ (or a float grasp) gives a float.
 
         Examples
         --------
@@ -389,26 +395,28 @@ class WorldGrasp:
         (-pi/2, -pi/2)
         """
         t = real_value(theta, "theta")
-        return t + self.beta if self.exact else float(t) + float(self.beta)
+        return t + self.beta if self._exact_value(t) else float(t) + float(self.beta)
 
     def theta_to_paper(self, theta_world: Any) -> Any:
         """The paper-frame θ of a world angle: ``theta_world - beta``."""
         t = real_value(theta_world, "theta_world")
-        return t - self.beta if self.exact else float(t) - float(self.beta)
+        return t - self.beta if self._exact_value(t) else float(t) - float(self.beta)
 
     def external_force(self, force: Any) -> tuple[Any, Any]:
         """``(θ, F_e)`` in the paper's frame of a world external force vector at O.
 
         θ is the paper-frame angle of eq. (26) (``e(θ) = (sin θ, -cos θ)``) and F_e
-        the magnitude; a zero force is refused.
+        the magnitude; exact for an exact grasp and force, floats when either has a
+        float.  A zero force is refused.
         """
         f = self.vector_to_paper(force)
-        fe = _sqrt(_dot(f, f), self.exact)
-        if _sign(fe, self.exact) != 1:
+        num = isinstance(f[0], float)
+        fe = _sqrt(_dot(f, f), not num)
+        if _sign(fe, not num) != 1:
             raise InputError("force: the external force must not be zero")
-        if self.exact:
-            return sp.atan2(f[0], -f[1]), fe
-        return math.atan2(f[0], -f[1]), fe
+        if num:
+            return math.atan2(f[0], -f[1]), fe
+        return sp.atan2(f[0], -f[1]), fe
 
     def internal_force(self, force: Any) -> Any:
         """The least internal force (squeeze along P1P2) for a world external force at O.
@@ -426,25 +434,36 @@ class WorldGrasp:
         tangential parts put together with ``n1 = (-s1, -c1)``, ``t1 = (-c1, s1)``,
         ``n2 = (s2, -c2)``, ``t2 = (c2, s2)`` (the columns of L, eq. (5)), then
         turned into the world frame.  They balance the external force and its
-        moment about O.
+        moment about O.  Exact for an exact grasp and force, else floats.
         """
         theta, fe = self.external_force(force)
         g = self.grasp
-        if self.exact:
-            N1, F1, N2, F2 = g.contact_forces(theta, g.k_grasp(theta), fe)
-        else:
-            N1, F1, N2, F2 = (float(v) for v in g.contact_forces(theta, g.k_grasp(theta), fe))
-        s1, c1, s2, c2 = (g.s1, g.c1, g.s2, g.c2) if self.exact else (
-            float(g.s1), float(g.c1), float(g.s2), float(g.c2))
+        F = g.contact_forces(theta, g.k_grasp(theta), fe)
+        sc: tuple[Any, ...] = (g.s1, g.c1, g.s2, g.c2)
+        if isinstance(theta, float):
+            F, sc = [float(v) for v in F], tuple(float(v) for v in sc)
+        N1, F1, N2, F2 = F
+        s1, c1, s2, c2 = sc
         f1 = (-N1 * s1 - F1 * c1, -N1 * c1 + F1 * s1)
         f2 = (N2 * s2 + F2 * c2, -N2 * c2 + F2 * s2)
         return {self.names[0]: self.vector_to_world(f1), self.names[1]: self.vector_to_world(f2)}
 
-    def _read(self, v: Any, what: str) -> Vec:
+    def _exact_value(self, v: Any) -> bool:
+        return self.exact and not has_float(v)
+
+    def _read(self, v: Any, what: str) -> tuple[Vec, bool]:
+        """A world or paper vector from outside, and whether it takes the numeric path."""
         p = _vec(v, what)
-        if self.exact and not (has_float(p[0]) or has_float(p[1])):
-            return p
-        return (float(p[0]), float(p[1]))
+        _no_symbols(list(p))
+        if self._exact_value(p[0]) and self._exact_value(p[1]):
+            return p, False
+        return (float(p[0]), float(p[1])), True
+
+    def _frame(self, numeric: bool) -> tuple[Vec, Vec, Vec]:
+        """The origin and axes, as floats for the numeric path."""
+        if not numeric:
+            return self.origin, self.ex, self.ey
+        return tuple((float(v[0]), float(v[1])) for v in (self.origin, self.ex, self.ey))
 
 
 def place_grasp(
@@ -511,6 +530,8 @@ def place_grasp(
     if at_vertex not in ("refuse", "bisector"):
         raise InputError(f"at_vertex: expected 'refuse' or 'bisector', got {at_vertex!r}")
     na, nb = (str(names[0]), str(names[1]))
+    if na == nb:
+        raise InputError(f"names: the two contacts need different names, got {na!r} twice")
     pts = [_vec(p, f"contact {n}") for p, n in zip(_pair(contacts, "contacts"), (na, nb))]
     given_n = [None, None] if normals is None else list(_pair(normals, "normals"))
     nrm = [None if v is None else _vec(v, f"normal of contact {n}")
@@ -591,6 +612,12 @@ def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
         raise CoincidentContactsError(f"contacts {names[0]} and {names[1]} are the same point "
                                       f"{_pt(a)}")
     d = _sqrt(d2, exact)
+    if exact and not _square_roots_only(d):
+        raise WorldGraspError(
+            f"the distance between contacts {names[0]} and {names[1]} is {d}, not built from "
+            "square roots of rational numbers, which the exact paper frame needs (its lengths "
+            "are divided by it): give the coordinates as floats, or exactly with a rational "
+            "squared distance")
     for i in (0, 1):
         _condition_1(pts[i], nrm[i], fric[i], pts[1 - i], names[i], names[1 - i], d, exact)
     order = [0, 1]
@@ -626,6 +653,12 @@ def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
                               f"{p_names[1]}]") from None
     return WorldGrasp(g, c, ex, ey, atan2(ex[1], ex[0]), p_names, (p1, p2),
                       (nrm[order[0]], nrm[order[1]]), names[0])
+
+
+def _square_roots_only(v: sp.Expr) -> bool:
+    return all(not a.is_Pow or a.exp.is_Integer or (a.exp in (sp.S.Half, -sp.S.Half)
+                                                    and a.base.is_Rational)
+               for a in sp.preorder_traversal(v))
 
 
 def _condition_1(p: Vec, n: Vec, fric: tuple[str, Any], q: Vec, name: str, other: str,
