@@ -373,3 +373,22 @@ def test_more_refusals():
                     mu=(5, 5), com=(1, 0))
     with pytest.raises(InputError, match="force: the external force must not be zero"):
         place_grasp(**ok).internal_force((0, 0))
+
+
+def test_centre_of_mass_on_the_contact_line_keeps_the_order():
+    """y = 0: both directions of the line qualify; P1 is the first contact given, and the
+    two orders give the grasp turned by a half turn (x1 ↔ x2, μ1 ↔ μ2, φ ↔ π - φ)."""
+    n = [(R(-3, 5), R(4, 5)), (R(3, 5), R(4, 5))]
+    ab = place_grasp([(3, 0), (-1, 0)], n, mu=(2, 3), com=(0, 0))
+    ba = place_grasp([(-1, 0), (3, 0)], n[::-1], mu=(3, 2), com=(0, 0), names=("B", "A"))
+    assert ab.names == ("A", "B") and ba.names == ("B", "A") and not ba.swapped
+    g, h = ab.grasp, ba.grasp
+    assert (g.x1, g.x2, g.y, g.mu1, g.mu2) == (3, 1, 0, 2, 3)
+    assert (h.x1, h.x2, h.y, h.mu1, h.mu2) == (1, 3, 0, 3, 2)
+    assert canon(g.s1 - R(3, 5)) == 0 and canon(g.c1 + R(4, 5)) == 0  # n1 = (-sin φ1, -cos φ1)
+    assert canon(h.s1 - R(3, 5)) == 0 and canon(h.c1 - R(4, 5)) == 0  # turned: "up" is down
+    assert ab.beta == 0 and ba.beta == sp.pi
+    for t in (0.0, 0.7, 2.0, 4.0):  # one world force, two frames: the same squeeze
+        assert g.internal_force(ab.theta_to_paper(t)) == pytest.approx(
+            h.internal_force(ba.theta_to_paper(t)), abs=1e-12)
+    assert ab.world_degrees(0) == 0.0 and ba.world_degrees(0) == 180.0

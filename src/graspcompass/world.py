@@ -402,6 +402,17 @@ class WorldGrasp:
         t = real_value(theta_world, "theta_world")
         return t - self.beta if self._exact_value(t) else float(t) - float(self.beta)
 
+    def world_degrees(self, theta: Any) -> float:
+        """The world angle of a paper-frame θ in degrees, in [0, 360): for reports.
+
+        Examples
+        --------
+        >>> wg = place_grasp([(0, 1), (0, -1)], [(0, -1), (0, 1)], mu=(1, 1), com=(-1, 0))
+        >>> wg.world_degrees(0), wg.world_degrees("pi/2")  # the paper's down, its +x
+        (270.0, 0.0)
+        """
+        return math.degrees(float(self.theta_to_world(theta))) % 360.0
+
     def external_force(self, force: Any) -> tuple[Any, Any]:
         """``(θ, F_e)`` in the paper's frame of a world external force vector at O.
 
