@@ -99,6 +99,21 @@ def test_replay_with_subs_never_runs_text(tmp_path: Path, where: str) -> None:
     assert replay([spec], subs={"q": "1/2"})["A"].x == sp.Rational(1, 2)
 
 
+@pytest.mark.parametrize("bad", ["code", "list", "array"])
+def test_replay_reads_angles_at_the_boundary(tmp_path: Path, bad: str) -> None:
+    from graspcompass.construction.protocol import StepSpec, replay
+
+    code, marker = _payload(tmp_path)
+    value = {"code": code, "list": [code], "array": np.array([code])}[bad]
+    specs = [StepSpec("A", "point", (), "mark", "A", "-", (0, 0)),
+             StepSpec("L", "line_at_angle", ("A",), "ruler", "L", "-", (value,))]
+    with pytest.raises(InputError, match=r"L\.params\[0\]"):
+        replay(specs)
+    assert not marker.exists()
+    specs[1] = StepSpec("L", "line_at_angle", ("A",), "ruler", "L", "-", ("60deg",))
+    assert replay(specs)["L"].direction.y != 0
+
+
 def test_sincos_refuses_text(tmp_path: Path) -> None:
     from graspcompass.geometry.trig import sincos
 

@@ -202,12 +202,14 @@ def replay(specs: Sequence[StepSpec], grasp: Any = None,
     """
     env: dict[str, Any] = {}
     steps = []
-    if subs:  # the caller's values and parameters: read at the boundary, never sympify'd
-        from ..inputs import real_value, substitutions
+    # the caller's parameters and values: read at the boundary (text by the safe parser,
+    # numpy arrays and other objects refused by name), never sympify'd
+    from ..inputs import real_value, substitutions
 
-        specs = [replace(spec, params=tuple(
-            p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")
-            for j, p in enumerate(spec.params))) for spec in specs]
+    specs = [replace(spec, params=tuple(
+        p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")
+        for j, p in enumerate(spec.params))) for spec in specs]
+    if subs:
         known = set().union(*(p.free_symbols for spec in specs for p in spec.params))
         subs = substitutions(subs, known, "subs", strict=False)
     for i, spec in enumerate(specs):

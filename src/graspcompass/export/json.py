@@ -747,7 +747,7 @@ def _rebuild(doc: dict[str, Any], g: Grasp) -> Construction:
         step = Step(len(steps), "envelope", "envelope", "compass", tuple(circles),
                     outer_envelope(env), (),
                     "Outer envelope of the four circles: the polar graph of k_grasp(θ)",
-                    "§3.3 outside extraction, eq. (25), Fig. 5", key=True)
+                    "§3.3 outside extraction, eq. (25), Fig. 5", key=True, role="envelope")
         _compare(records[len(steps)], step, len(steps))
         steps.append(step)
     if listed != skipped:
