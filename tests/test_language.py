@@ -9,6 +9,7 @@ step and field by field.
 from __future__ import annotations
 
 import argparse
+import math
 import re
 import signal
 import time
@@ -16,10 +17,10 @@ from contextlib import contextmanager
 
 import pytest
 import sympy as sp
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from graspcompass import Circle, Grasp, Line, Point, internal_force_diagram
+from graspcompass import Circle, Grasp, InvalidGraspError, Line, Point, internal_force_diagram
 from graspcompass.construction import OPERATIONS, OPS, ROLES
 from graspcompass.construction.language import (
     ConstructionBuilder,
@@ -203,6 +204,32 @@ def test_shipped_recipe_is_todays_protocol_symbolic():
     c = replay(paper_program(), g)
     _same_protocol(c, internal_force_diagram(g))
     assert "envelope" not in c and c.conditions
+
+
+GRASP_VALUES = st.fixed_dictionaries(dict(
+    x1=st.integers(1, 40), x2=st.integers(1, 40), y=st.integers(0, 40),
+    phi1=st.integers(1, 24), phi2=st.integers(1, 24), mu1=st.integers(1, 30),
+    mu2=st.integers(1, 30)))
+
+
+def _grasp(v, floats):
+    """A grasp from small integers: lengths in tenths, φ in multiples of π/24, μ in tenths."""
+    if floats:
+        return Grasp(v["x1"] / 10, v["x2"] / 10, v["y"] / 10, v["phi1"] * math.pi / 24,
+                     v["phi2"] * math.pi / 24, mu1=v["mu1"] / 10, mu2=v["mu2"] / 10)
+    return Grasp(f"{v['x1']}/10", f"{v['x2']}/10", f"{v['y']}/10", f"{v['phi1']}*pi/24",
+                 f"{v['phi2']}*pi/24", mu1=f"{v['mu1']}/10", mu2=f"{v['mu2']}/10")
+
+
+@pytest.mark.parametrize("floats", [False, True], ids=["exact", "float"])
+@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(values=GRASP_VALUES)
+def test_shipped_recipe_is_todays_protocol_on_random_grasps(floats, values):
+    try:
+        g = _grasp(values, floats)
+    except InvalidGraspError:
+        assume(False)
+    _same_protocol(replay(paper_program(), g), internal_force_diagram(g))
 
 
 def test_shipped_recipe_text_and_claims():

@@ -55,13 +55,17 @@ from functools import lru_cache
 from importlib import resources
 from typing import Any
 
+import mpmath
 import sympy as sp
 
 from .. import symbols as _model
+from .._floatpath import mpf
 from ..errors import InputError
 from ..expr import ExpressionError, parse_exact
 from ..geometry import GeometryError
+from ..geometry.exact import canon, has_float
 from ..geometry.trig import sincos
+from ..grasp import Grasp
 from .operations import OPERATIONS, ROLES
 from .protocol import Construction, Step, StepSpec, run_step
 
@@ -102,6 +106,7 @@ HYPOTHESES: Mapping[str, str] = {
                   "(−π/2 < φi − ξi < π/2 < φi + ξi < 3π/2)",
 }
 _ENVELOPE = "envelope"
+_FLOAT_DIGITS = 40  # working digits of a float grasp's values, rounded once to doubles
 _RELATIONS = ("==", "!=", ">=", "<=", ">", "<")
 _CLAIM_KINDS = {"collinear": ("point", 3), "concurrent": ("line", 3),
                 "perpendicular": ("line", 2), "parallel": ("line", 2)}
@@ -804,10 +809,52 @@ def _bindings(program: Program, grasp: Any) -> dict[sp.Basic, sp.Expr]:
             raise InputError(f"{program.file}:{p.line}:1: no value for the parameter "
                              f"{p.name!r}")
         table[p.symbol] = given[p.name]
+    if any(has_float(v) for v in table.values()):
+        return table  # floats: each step's value is evaluated from them (_float_value)
     for atom in _trig_atoms(program):  # exact sines of the grasp's angles (no nested radicals)
         s, c = sincos(atom.args[0].xreplace(table))
         table[atom] = s if isinstance(atom, sp.sin) else c
     return table
+
+
+def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
+    """A step's value for a float grasp: a parameter (or its negative) as the double it
+    is, a constant as written, anything else evaluated from the exact binary values of
+    the parameters at 40 digits and rounded once, as
+    :meth:`graspcompass.Grasp.side_direction` does (``cos φ ∓ μ sin φ`` cancels in
+    double precision for a nearly horizontal cone side)."""
+    if not v.free_symbols:
+        return v
+    if v.is_Symbol or (v.is_Mul and len(v.args) == 2 and v.args[0] == -1
+                       and v.args[1].is_Symbol):
+        return v.xreplace(table)
+    with mpmath.workdps(_FLOAT_DIGITS):
+        value = _mp(v, table)
+    return canon(sp.Float(float(value)))
+
+
+_MP_FUNCTIONS = {sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan,
+                 sp.asin: mpmath.asin, sp.acos: mpmath.acos, sp.atan: mpmath.atan}
+
+
+def _mp(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> mpmath.mpf:
+    """``v`` in mpmath at the working precision, symbols from ``table`` (exact binary)."""
+    if v.is_Symbol:
+        return mpf(table[v])
+    if v.is_Number or not v.free_symbols:
+        return mpf(v)
+    args = [_mp(a, table) for a in v.args]
+    if v.is_Add:
+        return mpmath.fsum(args)
+    if v.is_Mul:
+        return mpmath.fprod(args)
+    if v.is_Pow:
+        return args[0] ** args[1]
+    if type(v) in _MP_FUNCTIONS:
+        return _MP_FUNCTIONS[type(v)](*args)
+    if isinstance(v, sp.atan2):
+        return mpmath.atan2(*args)
+    return mpf(v.xreplace(table))  # pragma: no cover - every function of the parser is above
 
 
 def _trig_atoms(program: Program) -> set[sp.Basic]:
@@ -854,6 +901,8 @@ def replay(program: Program, grasp: Any = None) -> Construction:
     from .envelope import outer_envelope
 
     table = _bindings(program, grasp)
+    floats = any(has_float(v) for v in grasp.params.values()) if isinstance(
+        grasp, Grasp) else False
     env: dict[str, Any] = {}
     steps: list[Step] = []
     skipped: list[tuple[str, str]] = []
@@ -867,7 +916,10 @@ def replay(program: Program, grasp: Any = None) -> Construction:
                               (), s.caption, s.ref, (), s.key, s.role, s.n))
             env[s.name] = steps[-1].obj
             continue
-        values = tuple(_canon(v.xreplace(table)) for v in s.values) if table else s.values
+        if floats:
+            values = tuple(_float_value(v, table) for v in s.values)
+        else:
+            values = tuple(_canon(v.xreplace(table)) for v in s.values) if table else s.values
         spec = StepSpec(s.name, s.op, s.inputs, OPERATIONS[s.op].instrument, s.caption, s.ref,
                         values, s.key, s.role, s.n)
         try:
@@ -886,11 +938,7 @@ def replay(program: Program, grasp: Any = None) -> Construction:
 
 
 def _canon(v: sp.Expr) -> sp.Expr:
-    if v.is_Atom:
-        return v
-    from ..geometry.exact import canon
-
-    return canon(v)
+    return v if v.is_Atom else canon(v)
 
 
 # -- the Python builder -----------------------------------------------------------------------
