@@ -392,3 +392,20 @@ def test_centre_of_mass_on_the_contact_line_keeps_the_order():
         assert g.internal_force(ab.theta_to_paper(t)) == pytest.approx(
             h.internal_force(ba.theta_to_paper(t)), abs=1e-12)
     assert ab.world_degrees(0) == 0.0 and ba.world_degrees(0) == 180.0
+
+
+def test_shapely_outlines_non_convex_and_with_a_hole():
+    wf = place_grasp([(0.0, 3.0), (6.0, 3.0)], outline=Polygon(U_SHAPE), mu=(1.0, 1.0))
+    assert wf.origin == pytest.approx((3, 11 / 6), abs=1e-12)
+    assert wf.normals[0] == pytest.approx((-1, 0)) and wf.names == ("B", "A")
+    # a 6 × 6 plate with a 2 × 2 hole off centre: the centroid moves away from the hole
+    plate = Polygon([(0, 0), (6, 0), (6, 6), (0, 6)], [[(3, 3), (5, 3), (5, 5), (3, 5)]])
+    wg = place_grasp([(6.0, 2.0), (0.0, 2.0)], outline=plate, mu=(1.0, 1.0))
+    cx = (36 * 3 - 4 * 4) / 32  # by hand: (36·3 - 4·4)/32
+    assert wg.origin == pytest.approx((cx, cx), abs=1e-12)
+    # the centre of mass above the contacts: the frame turns over, B becomes P1
+    assert float(wg.grasp.y) == pytest.approx(cx - 2) and wg.names == ("B", "A")
+    assert wg.normals == ((1.0, 0.0), (-1.0, 0.0))
+    # on the hole's edges the inward normals point apart (into the plate): refused
+    with pytest.raises(NormalOutwardError, match=r"contact A at \(3, 4\)"):
+        place_grasp([(3.0, 4.0), (5.0, 4.0)], outline=plate, mu=(1.0, 1.0))
