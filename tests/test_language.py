@@ -177,6 +177,14 @@ def test_optional_step_is_left_out_when_degenerate():
                      "U = intersect_circles c c2 (1)\n"))
 
 
+def test_replay_on_float_values_of_a_mapping():
+    vals = {"x1": 2.0, "x2": 2.0, "y": 1.0, "phi1": math.pi / 2, "phi2": math.pi / 2,
+            "mu1": 1.0, "mu2": 1.2}
+    a = replay(paper_program(), vals)
+    b = internal_force_diagram(Grasp(**vals))
+    assert a.steps == b.steps
+
+
 def test_replay_needs_every_parameter():
     with pytest.raises(InputError, match="no value for the parameter 'a'"):
         replay(parse(EVERY_OP), {"b": 1})
@@ -285,6 +293,10 @@ def test_builder_refuses_like_the_parser():
         b.step("A", "point", values=(1, 0))
     with pytest.raises(ConstructionSyntaxError, match="bad value"):
         b.step("B", "point", values=("__import__('os')", 0))
+    with pytest.raises(ConstructionSyntaxError, match="unknown name 'q' in a value"):
+        b.step("B", "point", values=(sp.Symbol("q"), 0))
+    with pytest.raises(ConstructionSyntaxError, match="unknown operation"):
+        b.step("B", "circle", "A")
 
 
 def test_claims_are_data():

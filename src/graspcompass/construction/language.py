@@ -65,7 +65,6 @@ from ..expr import ExpressionError, parse_exact
 from ..geometry import GeometryError
 from ..geometry.exact import canon, has_float
 from ..geometry.trig import sincos
-from ..grasp import Grasp
 from .operations import OPERATIONS, ROLES
 from .protocol import Construction, Step, StepSpec, run_step
 
@@ -289,6 +288,10 @@ class _Checker:
     def value(self, text: Any, slot: Any, extra: Mapping[str, sp.Expr] | None = None
               ) -> sp.Expr:
         if isinstance(text, sp.Expr):
+            unknown = text.free_symbols - set(self.symbols.values()) - set((extra or {}).values())
+            if unknown:
+                raise _Problem(f"unknown name {sorted(map(str, unknown))[0]!r} in a value: "
+                               "declare it with param", slot)
             return text
         if isinstance(text, bool) or not isinstance(text, (str, int)):
             raise _Problem(f"bad value {text!r}: give text (safe expression syntax), an int or "
@@ -901,8 +904,7 @@ def replay(program: Program, grasp: Any = None) -> Construction:
     from .envelope import outer_envelope
 
     table = _bindings(program, grasp)
-    floats = any(has_float(v) for v in grasp.params.values()) if isinstance(
-        grasp, Grasp) else False
+    floats = any(has_float(v) for v in table.values())
     env: dict[str, Any] = {}
     steps: list[Step] = []
     skipped: list[tuple[str, str]] = []
