@@ -150,7 +150,14 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     >>> sincos(sp.Rational(6, 5))
     (sin(6/5), cos(6/5))
     """
-    angle = sp.sympify(angle, strict=True)  # text, lists, arrays refused: never eval
+    try:
+        angle = sp.sympify(angle, strict=True)  # text, lists, arrays refused: never eval
+    except sp.SympifyError:
+        from ..errors import WrongTypeError
+
+        raise WrongTypeError(f"an angle must be a number or a sympy expression, got "
+                             f"{type(angle).__name__} {str(angle)[:60]!r} (read text with "
+                             "graspcompass.expr.parse_exact)") from None
     if angle.free_symbols or not angle.is_number:
         return sp.sin(angle), sp.cos(angle)
     q = _pi_multiple(angle)
