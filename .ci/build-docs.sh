@@ -17,7 +17,7 @@ python -m sphinx -W --keep-going -b html docs docs/_build/html
 seconds=$(( $(date +%s) - start ))
 echo "documentation built in ${seconds} s (limit 600 s)"
 if [ "$seconds" -gt 600 ]; then
-  echo "error: the documentation build took ${seconds} s, more than 5 minutes" >&2
+  echo "error: the documentation build took ${seconds} s, more than 10 minutes" >&2
   exit 1
 fi
 
