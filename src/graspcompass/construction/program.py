@@ -1,0 +1,534 @@
+"""The data of a construction program and the checks shared by the parser and the builder.
+
+A :class:`Program` is what :func:`graspcompass.construction.language.parse` reads
+from a file and what :class:`ConstructionBuilder` makes from Python: declared
+parameters (:class:`Param`), named hypotheses, ``let`` values, steps
+(:class:`Statement`) and claims (:class:`Claim`), all plain frozen data.  Both
+paths go through one checker, so they refuse the same things with the same
+words (:class:`ConstructionSyntaxError`, ``FILE:LINE:COL: what``).
+
+Examples
+--------
+>>> b = ConstructionBuilder()
+>>> _ = b.step("A", "point", values=(0, 0))
+>>> b.step("l", "meet", "A", "A")
+Traceback (most recent call last):
+...
+graspcompass.construction.program.ConstructionSyntaxError: <builder>:2:0: wrong kind of input: ...
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as _model
+from ..errors import InputError
+from ..expr import ExpressionError, parse_exact
+from ..geometry import GeometryError
+from .operations import OPERATIONS, ROLES
+
+__all__ = [
+    "DOMAINS",
+    "HYPOTHESES",
+    "MAX_LINES",
+    "MAX_LINE_LENGTH",
+    "Claim",
+    "ConstructionBuilder",
+    "ConstructionSyntaxError",
+    "DegenerateStepError",
+    "Param",
+    "PointValue",
+    "Program",
+    "Ref",
+    "Statement",
+    "Term",
+    "Value",
+]
+
+#: Longest line read (characters).
+MAX_LINE_LENGTH = 1000
+#: Most lines in one file.
+MAX_LINES = 10_000
+#: Domain words of ``param NAME DOMAIN`` -> what they mean.
+DOMAINS: Mapping[str, str] = {
+    "positive": "> 0", "nonnegative": ">= 0", "angle": "0 < value <= pi (a normal angle φ)",
+    "friction": "a friction coefficient μ > 0", "half_angle": "0 < ξ < pi/2 (tan ξ = μ)",
+    "real": "any real number",
+}
+#: Hypotheses a file may name (``hypothesis NAME``, ``claim ... under NAME``).
+HYPOTHESES: Mapping[str, str] = {
+    "condition1": "condition (1), §2.2.2: each friction cone contains the other contact "
+                  "(−π/2 < φi − ξi < π/2 < φi + ξi < 3π/2)",
+}
+_ENVELOPE = "envelope"
+_RELATIONS = ("==", "!=", ">=", "<=", ">", "<")
+_CLAIM_KINDS = {"collinear": ("point", 3), "concurrent": ("line", 3),
+                "perpendicular": ("line", 2), "parallel": ("line", 2)}
+_KEYWORDS = frozenset({"param", "hypothesis", "let", "claim", "ref", "role", "key", "optional",
+                       "under", "sign", "on", *_CLAIM_KINDS, "point", "pi", "deg"})
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:-[A-Za-z0-9_]+)*")
+_TOKEN = re.compile(r"""\s*(?:(?P<string>"(?:[^"\\\n]|\\.)*")|(?P<word>[A-Za-z_][A-Za-z0-9_]*
+    (?:-[A-Za-z0-9_]+)*)|(?P<int>\d+)|(?P<rel>==|!=|>=|<=|>|<|=)|(?P<open>\())""", re.X)
+
+
+# -- errors ---------------------------------------------------------------------------
+class ConstructionSyntaxError(InputError):
+    """A construction file that cannot be read: ``FILE:LINE:COL: what is wrong``.
+
+    Examples
+    --------
+    >>> from graspcompass.construction.language import parse
+    >>> try:
+    ...     parse("A = point (0, 0)\\nB = meet A A", file="ex.gc")
+    ... except ConstructionSyntaxError as err:
+    ...     print(err, (err.line, err.column))
+    ex.gc:2:10: wrong kind of input: meet takes a line as input 1, got the point 'A' (line 1)
+     (2, 10)
+    """
+
+    def __init__(self, what: str, file: str = "<text>", line: int = 0, column: int = 0) -> None:
+        super().__init__(f"{file}:{line}:{column}: {what}")
+        self.what, self.file, self.line, self.column = what, file, line, column
+
+
+class DegenerateStepError(GeometryError):
+    """A step that the kernel cannot make for these values (parallel lines, ...).
+
+    The message names the file, the line, the step and its inputs; ``objects``
+    are the input objects, ``step`` the step's name.
+    """
+
+    def __init__(self, message: str, step: str, line: int, *objects: object) -> None:
+        super().__init__(message, *objects)
+        self.step, self.line = step, line
+
+
+class _Problem(Exception):
+    """A refusal inside the checker; ``slot`` says which part of the statement is wrong."""
+
+    def __init__(self, what: str, slot: Any = None) -> None:
+        super().__init__(what)
+        self.what, self.slot = what, slot
+
+
+# -- the program as data ----------------------------------------------------------------
+@dataclass(frozen=True)
+class Param:
+    """A declared parameter: ``param NAME DOMAIN`` (a key of :data:`DOMAINS`)."""
+
+    name: str
+    domain: str
+    line: int = field(default=0, compare=False)
+
+    @property
+    def symbol(self) -> sp.Symbol:
+        """The sympy symbol of the parameter (the model's own for x1, phi1, mu1, ...)."""
+        return _symbol(self.name, self.domain)
+
+
+@dataclass(frozen=True)
+class Statement:
+    """One step of a program: ``NAME = OP INPUTS (VALUES) CLAUSES``."""
+
+    name: str
+    op: str
+    inputs: tuple[str, ...]
+    values: tuple[sp.Expr, ...]
+    caption: str
+    ref: str = ""
+    role: str = ""
+    n: tuple[int, ...] = ()
+    key: bool = False
+    optional: bool = False
+    line: int = field(default=0, compare=False)
+
+
+@dataclass(frozen=True)
+class Ref:
+    """A claim's term naming an object of the construction."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class Value:
+    """A claim's term: an exact expression in the parameters and the lengths."""
+
+    expr: sp.Expr
+
+
+@dataclass(frozen=True)
+class PointValue:
+    """A claim's term ``point(x, y)``."""
+
+    x: sp.Expr
+    y: sp.Expr
+
+
+Term = Ref | Value | PointValue
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A claim to prove: ``kind`` is ``equal``, ``sign``, ``on``, ``collinear``,
+    ``concurrent``, ``perpendicular`` or ``parallel``; ``relation`` is one of
+    ``== != > >= < <=`` for ``equal`` and ``sign``; ``under`` names hypotheses."""
+
+    kind: str
+    terms: tuple[Term, ...]
+    relation: str = ""
+    under: tuple[str, ...] = ()
+    line: int = field(default=0, compare=False)
+
+
+@dataclass(frozen=True)
+class Program:
+    """A parsed construction file: parameters, hypotheses, named values, steps, claims."""
+
+    params: tuple[Param, ...] = ()
+    hypotheses: tuple[str, ...] = ()
+    lets: tuple[tuple[str, sp.Expr], ...] = ()
+    steps: tuple[Statement, ...] = ()
+    claims: tuple[Claim, ...] = ()
+    file: str = field(default="<text>", compare=False)
+
+    @property
+    def kinds(self) -> dict[str, str]:
+        """Name -> kind of every object the steps make (``envelope`` for the envelope)."""
+        return {s.name: _makes(s.op) for s in self.steps}
+
+    def to_text(self) -> str:
+        """The program written in the language again (``parse(p.to_text()) == p``)."""
+        return _format(self)
+
+
+def _makes(op: str) -> str:
+    return _ENVELOPE if op == _ENVELOPE else OPERATIONS[op].makes
+
+
+def _symbol(name: str, domain: str) -> sp.Symbol:
+    model = getattr(_model, name, None) if name in _model.__all__ else None
+    if isinstance(model, sp.Symbol):
+        return model
+    if domain in ("positive", "friction", "half_angle", "angle"):
+        return sp.Symbol(name, positive=True)
+    return sp.Symbol(name, nonnegative=True) if domain == "nonnegative" else sp.Symbol(
+        name, real=True)
+
+
+# -- the checker shared by the parser and the builder -----------------------------------
+class _Checker:
+    """Names, kinds and values of a program being made; refuses with :class:`_Problem`."""
+
+    def __init__(self) -> None:
+        self.params: list[Param] = []
+        self.hypotheses: list[str] = []
+        self.lets: list[tuple[str, sp.Expr]] = []
+        self.steps: list[Statement] = []
+        self.claims: list[Claim] = []
+        self.symbols: dict[str, sp.Expr] = {}
+        self.where: dict[str, int] = {}  # name -> line it was made on
+        self.kinds: dict[str, str] = {}
+
+    def _new_name(self, name: str, line: int, slot: Any = "name") -> None:
+        if not isinstance(name, str) or not _NAME.fullmatch(name):
+            raise _Problem(f"bad name {name!r}: a name is a letter or _ followed by letters, "
+                           "digits, _ or single hyphens", slot)
+        if name in _KEYWORDS or name in OPERATIONS:
+            raise _Problem(f"{name!r} is a reserved word and cannot name an object", slot)
+        if name in self.where:
+            raise _Problem(f"duplicate name {name!r} (first defined on line "
+                           f"{self.where[name]})", slot)
+        self.where[name] = line
+
+    def value(self, text: Any, slot: Any, extra: Mapping[str, sp.Expr] | None = None
+              ) -> sp.Expr:
+        if isinstance(text, sp.Expr):
+            unknown = text.free_symbols - set(self.symbols.values()) - set((extra or {}).values())
+            if unknown:
+                raise _Problem(f"unknown name {sorted(map(str, unknown))[0]!r} in a value: "
+                               "declare it with param", slot)
+            return text
+        if isinstance(text, bool) or not isinstance(text, (str, int)):
+            raise _Problem(f"bad value {text!r}: give text (safe expression syntax), an int or "
+                           "a sympy expression", slot)
+        if isinstance(text, int):
+            return sp.Integer(text)
+        try:
+            return parse_exact(text, symbols={**self.symbols, **(extra or {})})
+        except ExpressionError as exc:
+            raise _Problem(f"bad value: {exc}", slot) from None
+
+    def param(self, name: str, domain: str, line: int) -> None:
+        self._new_name(name, line)
+        if domain not in DOMAINS:
+            raise _Problem(f"unknown domain {domain!r}: use > 0, >= 0 or one of "
+                           f"{', '.join(DOMAINS)}", "domain")
+        p = Param(name, domain, line)
+        self.params.append(p)
+        self.symbols[name] = p.symbol
+
+    def hypothesis(self, name: str) -> None:
+        if name not in HYPOTHESES:
+            raise _Problem(f"unknown hypothesis {name!r}: known are {', '.join(HYPOTHESES)}",
+                           "name")
+        if name in self.hypotheses:
+            raise _Problem(f"hypothesis {name!r} declared twice", "name")
+        self.hypotheses.append(name)
+
+    def let(self, name: str, text: Any, line: int) -> None:
+        self._new_name(name, line)
+        value = self.value(text, "value")
+        self.lets.append((name, value))
+        self.symbols[name] = value
+
+    def _input(self, name: Any, kind: str | None, op: str, i: int) -> str:
+        if not isinstance(name, str) or name not in self.kinds:
+            known = [n for n in self.kinds if n]
+            near = difflib.get_close_matches(str(name), known, 1)
+            hint = f" (did you mean {near[0]!r}?)" if near else ""
+            what = ("a parameter or a let value, not an object" if name in self.where
+                    else "no earlier step makes it")
+            raise _Problem(f"unknown name {name!r} as input {i + 1} of {op}: {what}{hint}",
+                           ("input", i))
+        have = self.kinds[name]
+        if kind is not None and have != kind:
+            raise _Problem(f"wrong kind of input: {op} takes a{'n' * (kind[0] in 'aeiou')} "
+                           f"{kind} as input {i + 1}, got the {have} {name!r} (line "
+                           f"{self.where[name]})", ("input", i))
+        return name
+
+    def step(self, name: str, op: str, inputs: Iterable[Any], values: Iterable[Any],
+             caption: str | None, ref: str, role: str, n: Iterable[int], key: bool,
+             optional: bool, line: int) -> Statement:
+        inputs, values, n = tuple(inputs), tuple(values), tuple(n)
+        if op != _ENVELOPE and op not in OPERATIONS:
+            near = difflib.get_close_matches(str(op), [*OPERATIONS, _ENVELOPE], 1)
+            hint = f" (did you mean {near[0]!r}?)" if near else ""
+            raise _Problem(f"unknown operation {op!r}{hint}", "op")
+        if op == _ENVELOPE:
+            if not inputs:
+                raise _Problem("envelope needs the circles (and break points) it bounds", "op")
+            for i, a in enumerate(inputs):
+                self._input(a, None, op, i)
+            if values:
+                raise _Problem("envelope takes no values", ("value", 0))
+        else:
+            o = OPERATIONS[op]
+            if len(inputs) != len(o.inputs):
+                raise _Problem(f"{op} takes {len(o.inputs)} input(s) ({', '.join(o.inputs)}), "
+                               f"got {len(inputs)}", ("input", min(len(inputs),
+                                                                   len(o.inputs))))
+            for i, (a, k) in enumerate(zip(inputs, o.inputs)):
+                self._input(a, k, op, i)
+            if len(values) != len(o.params):
+                raise _Problem(f"{op} takes {len(o.params)} value(s) "
+                               f"({', '.join(o.params) or 'none'}), got {len(values)}",
+                               "values")
+            values = tuple(self.value(v, ("value", i)) for i, v in enumerate(values))
+            for i, (v, k) in enumerate(zip(values, o.params)):
+                if k == "branch" and v not in (0, 1):
+                    raise _Problem(f"bad value: a branch is 0 or 1, got {v}", ("value", i))
+        if role not in ROLES:
+            raise _Problem(f"unknown role {role!r}: use one of {', '.join(r for r in ROLES if r)}",
+                           "role")
+        for text, slot in ((caption, "caption"), (ref, "ref")):
+            if text is not None and (not isinstance(text, str) or any(
+                    c in text for c in "\n\r\0")):
+                raise _Problem(f"bad {slot}: one line of text", slot)
+        self._new_name(name, line)
+        if caption is None:
+            caption = (OPERATIONS[op].caption_for(name, inputs, values) if op != _ENVELOPE
+                       else f"{name}: the outer envelope")
+        s = Statement(name, op, inputs, values, caption, ref, role, n, key, optional, line)
+        self.steps.append(s)
+        self.kinds[name] = _makes(op)
+        return s
+
+    def term(self, term: Any, slot: Any) -> Term:
+        if isinstance(term, (Ref, Value, PointValue)):
+            if isinstance(term, Ref) and term.name not in self.kinds:
+                raise _Problem(f"unknown name {term.name!r} in the claim", slot)
+            return term
+        if isinstance(term, str) and term in self.kinds:
+            return Ref(term)
+        lengths = {k: sp.Symbol(k, real=True) for k, v in self.kinds.items()
+                   if v == "number" and "-" not in k}
+        if isinstance(term, tuple) and len(term) == 2:
+            return PointValue(*(self.value(t, slot, lengths) for t in term))
+        return Value(self.value(term, slot, lengths))
+
+    def claim(self, kind: str, terms: Iterable[Any], relation: str, under: Iterable[str],
+              line: int) -> Claim:
+        terms, under = tuple(terms), tuple(under)
+        for i, h in enumerate(under):
+            if h not in self.hypotheses:
+                raise _Problem(f"unknown hypothesis {h!r} (declare it: hypothesis {h})",
+                               ("under", i))
+        if kind in _CLAIM_KINDS or kind == "on":
+            need, least = _CLAIM_KINDS.get(kind, (None, 2))
+            many = kind in ("collinear", "concurrent")
+            if len(terms) < least or (not many and len(terms) != least):
+                raise _Problem(f"claim {kind} takes {'at least ' * many}{least} names, got "
+                               f"{len(terms)}", ("term", len(terms)))
+            for i, t in enumerate(terms):
+                self._input(t, need if kind != "on" else ("point" if i == 0 else None),
+                            f"claim {kind}", i)
+            if kind == "on" and self.kinds[terms[1]] not in ("line", "circle"):
+                raise _Problem(f"wrong kind of input: claim on takes a line or a circle as "
+                               f"input 2, got the {self.kinds[terms[1]]} {terms[1]!r}",
+                               ("term", 1))
+            c = Claim(kind, tuple(Ref(t) for t in terms), "", under, line)
+        elif kind in ("equal", "sign"):
+            if len(terms) != 2:
+                raise _Problem(f"claim {kind} takes two sides, got {len(terms)}", ("term", 0))
+            if relation not in _RELATIONS or (kind == "equal" and relation != "=="):
+                raise _Problem(f"bad relation {relation!r}", "relation")
+            ts = tuple(self.term(t, ("term", i)) for i, t in enumerate(terms))
+            if kind == "sign" and not all(isinstance(t, Value) or (
+                    isinstance(t, Ref) and self.kinds[t.name] == "number") for t in ts):
+                raise _Problem("a sign claim compares numbers", ("term", 0))
+            sides = [self.kinds[t.name] if isinstance(t, Ref) else
+                     "point" if isinstance(t, PointValue) else "number" for t in ts]
+            if kind == "equal" and sides[0] != sides[1]:
+                raise _Problem(f"wrong kinds: cannot compare a {sides[0]} with a {sides[1]}",
+                               ("term", 1))
+            c = Claim(kind, ts, relation, under, line)
+        else:
+            raise _Problem(f"unknown claim {kind!r}: use ==, sign, on, "
+                           f"{', '.join(_CLAIM_KINDS)}", "kind")
+        self.claims.append(c)
+        return c
+
+    def program(self, file: str) -> Program:
+        return Program(tuple(self.params), tuple(self.hypotheses), tuple(self.lets),
+                       tuple(self.steps), tuple(self.claims), file)
+
+
+# -- writing a program ------------------------------------------------------------------
+def _quote(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _expr(v: sp.Expr) -> str:
+    return sp.sstr(v)
+
+
+def _term(t: Term) -> str:
+    if isinstance(t, Ref):
+        return t.name
+    if isinstance(t, PointValue):
+        return f"point({_expr(t.x)}, {_expr(t.y)})"
+    return _expr(t.expr)
+
+
+def _format(p: Program) -> str:
+    out: list[str] = []
+    for q in p.params:
+        dom = {"positive": "> 0", "nonnegative": ">= 0"}.get(q.domain, q.domain)
+        out.append(f"param {q.name} {dom}")
+    out += [f"hypothesis {h}" for h in p.hypotheses]
+    out += [f"let {n} = {_expr(v)}" for n, v in p.lets]
+    for s in p.steps:
+        parts = [s.name, "=", s.op, *s.inputs]
+        if s.values:
+            parts.append("(" + ", ".join(_expr(v) for v in s.values) + ")")
+        if s.role:
+            parts += ["role", s.role, *map(str, s.n)]
+        parts += ["key"] * s.key + ["optional"] * s.optional
+        if s.ref:
+            parts += ["ref", _quote(s.ref)]
+        parts.append(_quote(s.caption))
+        out.append(" ".join(parts))
+    for c in p.claims:
+        if c.kind in ("equal", "sign"):
+            body = f"{_term(c.terms[0])} {c.relation} {_term(c.terms[1])}"
+            line = f"claim {'sign ' * (c.kind == 'sign')}{body}"
+        else:
+            line = f"claim {c.kind} " + " ".join(_term(t) for t in c.terms)
+        out.append(line + "".join(f" under {h}" if i == 0 else f" {h}"
+                                  for i, h in enumerate(c.under)))
+    return "\n".join(out) + "\n"
+
+
+# -- the Python builder -----------------------------------------------------------------------
+class ConstructionBuilder:
+    """Make a :class:`Program` from Python, with the same checks as :func:`parse`.
+
+    Every method refuses what the parser refuses, with a
+    :class:`ConstructionSyntaxError` whose line is the number of the call.
+
+    Examples
+    --------
+    >>> from graspcompass.construction.language import parse
+    >>> b = ConstructionBuilder()
+    >>> b.param("a", "positive")
+    >>> _ = b.step("A", "point", values=("a", 0), role="given")
+    >>> _ = b.step("B", "point", values=(0, "a"))
+    >>> _ = b.step("M", "midpoint", "A", "B", caption="the midpoint")
+    >>> b.claim("equal", "M", ("a/2", "a/2"))
+    >>> b.build() == parse('''param a > 0
+    ... A = point (a, 0) role given "A: a given point"
+    ... B = point (0, a)
+    ... M = midpoint A B "the midpoint"
+    ... claim M == point(a/2, a/2)''')
+    True
+    """
+
+    def __init__(self, file: str = "<builder>") -> None:
+        self._chk, self._file, self._calls = _Checker(), file, 0
+
+    def _run(self, fn: Any, *args: Any) -> Any:
+        self._calls += 1
+        try:
+            return fn(*args)
+        except _Problem as p:
+            raise ConstructionSyntaxError(p.what, self._file, self._calls, 0) from None
+
+    def param(self, name: str, domain: str) -> None:
+        """Declare a parameter with a domain of :data:`DOMAINS` (``"positive"``, ``"angle"``...)."""
+        self._run(self._chk.param, name, domain, self._calls + 1)
+
+    def hypothesis(self, name: str) -> None:
+        """Make a hypothesis of :data:`HYPOTHESES` available to claims."""
+        self._run(self._chk.hypothesis, name)
+
+    def let(self, name: str, value: Any) -> None:
+        """A named value (text in the safe expression syntax, an int or a sympy expression)."""
+        self._run(self._chk.let, name, value, self._calls + 1)
+
+    def step(self, name: str, op: str, *inputs: str, values: Iterable[Any] = (),
+             caption: str | None = None, ref: str = "", role: str = "",
+             n: Iterable[int] = (), key: bool = False, optional: bool = False) -> Statement:
+        """Add the step ``name = op inputs (values)``; returns its :class:`Statement`.
+
+        Parameters
+        ----------
+        name, op : str
+            The new object's name and the operation (:data:`OPERATIONS` or ``"envelope"``).
+        *inputs : str
+            Names of earlier objects, of the kinds the operation takes.
+        values : iterable
+            The operation's parameters: text, ints or sympy expressions.
+        caption, ref, role, n, key, optional
+            As the clauses of the language (the caption defaults to the operation's).
+        """
+        return self._run(self._chk.step, name, op, inputs, values, caption, ref, role, n,
+                         key, optional, self._calls + 1)
+
+    def claim(self, kind: str, *terms: Any, relation: str = "==",
+              under: Iterable[str] = ()) -> None:
+        """A claim: ``kind`` is ``equal``, ``sign``, ``on``, ``collinear``, ``concurrent``,
+        ``perpendicular`` or ``parallel``; terms are names, text, or ``(x, y)`` points."""
+        rel = relation if kind in ("equal", "sign") else ""
+        self._run(self._chk.claim, kind, terms, rel, under, self._calls + 1)
+
+    def build(self) -> Program:
+        """The program made so far."""
+        return self._chk.program(self._file)
