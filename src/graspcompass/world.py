@@ -648,7 +648,8 @@ def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
                 f"the centre of mass {_pt(c)} projects onto the line through the contacts "
                 f"{'at' if _sign(x, exact) == 0 else 'beyond'} contact {names[first]} at "
                 f"{_pt(pts[first])}, not strictly between contact {names[first]} and contact "
-                f"{names[second]}: the paper's closed form needs x1 > 0 and x2 > 0 (§2.2.1)")
+                f"{names[second]}: the paper's frame (§2.2.1) assumes x1 > 0 and x2 > 0, and "
+                "Grasp refuses the others for now (issue 13 §1)")
     atan2 = sp.atan2 if exact else math.atan2
     phi1 = atan2(-n1[0], -n1[1])  # n1 = (-sin φ1, -cos φ1)
     phi2 = atan2(n2[0], -n2[1])  # n2 = (sin φ2, -cos φ2)
