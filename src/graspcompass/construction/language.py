@@ -53,7 +53,7 @@ import re
 from collections.abc import Mapping
 from functools import lru_cache
 from importlib import resources
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import mpmath
 import sympy as sp
@@ -89,6 +89,9 @@ from .program import (
     _Problem,
 )
 from .protocol import Construction, Step, StepSpec, run_step
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = [
     "DOMAINS",
@@ -415,7 +418,8 @@ def _term_text(s: str) -> Any:
 
 
 # -- replay ---------------------------------------------------------------------------------
-def _bindings(program: Program, grasp: Any) -> dict[sp.Basic, sp.Expr]:
+def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
+              ) -> dict[sp.Basic, sp.Expr]:
     """Symbol (and sin/cos of a parameter) -> value, from a Grasp or a mapping."""
     if grasp is None:
         return {}
@@ -487,7 +491,8 @@ def _trig_atoms(program: Program) -> set[sp.Basic]:
     return out
 
 
-def replay(program: Program, grasp: Any = None) -> Construction:
+def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
+           ) -> Construction:
     """Run a program's steps in order with the exact kernel.
 
     Parameters
