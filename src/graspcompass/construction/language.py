@@ -61,7 +61,7 @@ import sympy as sp
 from .._floatpath import mpf
 from ..errors import InputError
 from ..geometry import GeometryError
-from ..geometry.exact import canon, has_float
+from ..geometry.exact import Frac, NotAFraction, canon, has_float
 from ..geometry.trig import sincos
 from .operations import OPERATIONS
 from .program import (
@@ -437,8 +437,13 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
         table[p.symbol] = given[p.name]
     if any(has_float(v) for v in table.values()):
         return table  # floats: each step's value is evaluated from them (_float_value)
-    for atom in _trig_atoms(program):  # exact sines of the grasp's angles (no nested radicals)
-        s, c = sincos(atom.args[0].xreplace(table))
+    known = {}  # the grasp's own exact sin φi, cos φi (computed when it was made)
+    if not isinstance(grasp, Mapping):
+        known = {getattr(grasp, f"phi{i}"): (getattr(grasp, f"s{i}"), getattr(grasp, f"c{i}"))
+                 for i in (1, 2)}
+    for atom in program.trig_atoms:  # exact sines of the grasp's angles (no nested radicals)
+        angle = atom.args[0].xreplace(table)
+        s, c = known[angle] if angle in known else sincos(angle)
         table[atom] = s if isinstance(atom, sp.sin) else c
     return table
 
@@ -481,14 +486,6 @@ def _mp(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> mpmath.mpf:
     if isinstance(v, sp.atan2):
         return mpmath.atan2(*args)
     return mpf(v.xreplace(table))  # pragma: no cover - every function of the parser is above
-
-
-def _trig_atoms(program: Program) -> set[sp.Basic]:
-    out: set[sp.Basic] = set()
-    for s in program.steps:
-        for v in s.values:
-            out |= {a for a in v.atoms(sp.sin, sp.cos) if a.free_symbols}
-    return out
 
 
 def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
@@ -545,7 +542,8 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
         if floats:
             values = tuple(_float_value(v, table) for v in s.values)
         else:
-            values = tuple(_canon(v.xreplace(table)) for v in s.values) if table else s.values
+            values = tuple(_exact_value(v, table) if v.free_symbols else v
+                           for v in s.values) if table else s.values
         spec = StepSpec(s.name, s.op, s.inputs, OPERATIONS[s.op].instrument, s.caption, s.ref,
                         values, s.key, s.role, s.n)
         try:
@@ -563,8 +561,40 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
                         tuple(skipped))
 
 
-def _canon(v: sp.Expr) -> sp.Expr:
-    return v if v.is_Atom else canon(v)
+def _exact_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
+    """A step's value for exact parameters, in canonical form (:func:`canon`).
+
+    Computed with the kernel's fractions of polynomials (no sympy trees built on the
+    way), or by substitution where they cannot hold it.
+    """
+    try:
+        return _frac(v, table).expr()
+    except (NotAFraction, ZeroDivisionError):
+        pass
+    value = v.xreplace(table)
+    if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
+        raise InputError(f"the value {v} is not finite for these parameters")
+    return value if value.is_Atom else canon(value)
+
+
+def _frac(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> Frac:
+    if v.is_Rational:
+        return Frac.of(v)
+    hit = table.get(v)
+    if hit is not None:
+        return Frac.of(hit)
+    if v.is_Add or v.is_Mul:
+        parts = [_frac(a, table) for a in v.args]
+        out = parts[0]
+        for f in parts[1:]:
+            out = out + f if v.is_Add else out * f
+        return out
+    if v.is_Pow and v.exp.is_Integer and abs(int(v.exp)) <= 64:
+        base, out = _frac(v.base, table), Frac.of(sp.Integer(1))
+        for _ in range(abs(int(v.exp))):
+            out = out * base
+        return out if v.exp > 0 else Frac.of(sp.Integer(1)) / out
+    return Frac.of(v.xreplace(table))
 
 
 # -- the shipped recipe -------------------------------------------------------------------------

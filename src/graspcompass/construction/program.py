@@ -23,6 +23,7 @@ import difflib
 import re
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import sympy as sp
@@ -197,6 +198,13 @@ class Program:
     steps: tuple[Statement, ...] = ()
     claims: tuple[Claim, ...] = ()
     file: str = field(default="<text>", compare=False)
+
+    @cached_property
+    def trig_atoms(self) -> frozenset:
+        """``sin(a)`` and ``cos(a)`` of expressions in the parameters, in the steps' values
+        (replay gives them the grasp's exact values; computed once per program)."""
+        return frozenset(a for s in self.steps for v in s.values
+                         for a in v.atoms(sp.sin, sp.cos) if a.free_symbols)
 
     @property
     def kinds(self) -> dict[str, str]:
