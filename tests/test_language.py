@@ -185,6 +185,21 @@ def test_replay_on_float_values_of_a_mapping():
     assert a.steps == b.steps
 
 
+@pytest.mark.parametrize("text, values, what", [
+    ("param a real\nA = point (1/a, 0)", {"a": 0}, "t.gc:2:1: step A: the value 1/a is not finite"),
+    ("param a real\nA = point (1/a, 0)", {"a": 0.0}, "t.gc:2:1: step A: the value 1/a is not a "
+     "finite real"),
+    ("param a real\nA = point (sqrt(a), 0)", {"a": -1}, "sqrt(a) is not a real number"),
+    ("param a real\nA = point (sqrt(a), 0)", {"a": -1.0}, "sqrt(a) is not a finite real"),
+    ("param a > 0\nA = point (a, 0)", {"a": -1}, "t.gc:1:1: a = -1 is outside its domain"),
+    ("param a angle\nA = point (a, 0)", {"a": "4"}, "a = 4 is outside its domain (angle"),
+    ("param a half_angle\nA = point (a, 0)", {"a": "pi/2"}, "outside its domain (half_angle"),
+])
+def test_replay_refuses_bad_values(text, values, what):
+    with pytest.raises(InputError, match=re.escape(what)):
+        replay(parse(text, "t.gc"), values)
+
+
 def test_replay_needs_every_parameter():
     with pytest.raises(InputError, match="no value for the parameter 'a'"):
         replay(parse(EVERY_OP), {"b": 1})

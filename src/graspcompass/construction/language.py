@@ -49,6 +49,7 @@ Point(1, 0)
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from functools import lru_cache
@@ -61,7 +62,7 @@ import sympy as sp
 from .._floatpath import mpf
 from ..errors import InputError
 from ..geometry import GeometryError
-from ..geometry.exact import Frac, NotAFraction, canon, has_float
+from ..geometry.exact import Frac, NotAFraction, canon, decide_sign, has_float
 from ..geometry.trig import sincos
 from .operations import OPERATIONS
 from .program import (
@@ -435,6 +436,8 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
             raise InputError(f"{program.file}:{p.line}:1: no value for the parameter "
                              f"{p.name!r}")
         table[p.symbol] = given[p.name]
+        if isinstance(grasp, Mapping):
+            _check_domain(program, p, given[p.name])
     if any(has_float(v) for v in table.values()):
         return table  # floats: each step's value is evaluated from them (_float_value)
     known = {}  # the grasp's own exact sin φi, cos φi (computed when it was made)
@@ -448,6 +451,21 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
     return table
 
 
+#: Domain -> (bound, sign of value - bound, whether the bound itself is allowed).
+_BOUNDS = {"positive": ((0, 1, False),), "friction": ((0, 1, False),),
+           "nonnegative": ((0, 1, True),), "angle": ((0, 1, False), (sp.pi, -1, True)),
+           "half_angle": ((0, 1, False), (sp.pi / 2, -1, False))}
+
+
+def _check_domain(program: Program, p: Param, value: sp.Expr) -> None:
+    """Refuse a value outside the parameter's declared domain (when its sign is decided)."""
+    for bound, direction, equal in _BOUNDS.get(p.domain, ()):
+        sign = decide_sign(value - bound)
+        if sign is not None and sign != direction and not (sign == 0 and equal):
+            raise InputError(f"{program.file}:{p.line}:1: {p.name} = {value} is outside its "
+                             f"domain ({p.domain}: {DOMAINS[p.domain]})")
+
+
 def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
     """A step's value for a float grasp: a parameter (or its negative) as the double it
     is, a constant as written, anything else evaluated from the exact binary values of
@@ -459,9 +477,14 @@ def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
     if v.is_Symbol or (v.is_Mul and len(v.args) == 2 and v.args[0] == -1
                        and v.args[1].is_Symbol):
         return v.xreplace(table)
-    with mpmath.workdps(_FLOAT_DIGITS):
-        value = _mp(v, table)
-    return canon(sp.Float(float(value)))
+    try:
+        with mpmath.workdps(_FLOAT_DIGITS):
+            value = float(_mp(v, table))
+    except (ArithmeticError, TypeError, ValueError):  # 1/0, a complex root
+        value = float("nan")
+    if not math.isfinite(value):
+        raise InputError(f"the value {v} is not a finite real number for these parameters")
+    return canon(sp.Float(value))
 
 
 _MP_FUNCTIONS = {sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan,
@@ -539,11 +562,14 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
                               (), s.caption, s.ref, (), s.key, s.role, s.n))
             env[s.name] = steps[-1].obj
             continue
-        if floats:
-            values = tuple(_float_value(v, table) for v in s.values)
-        else:
-            values = tuple(_exact_value(v, table) if v.free_symbols else v
-                           for v in s.values) if table else s.values
+        try:
+            if floats:
+                values = tuple(_float_value(v, table) for v in s.values)
+            else:
+                values = tuple(_exact_value(v, table) if v.free_symbols else v
+                               for v in s.values) if table else s.values
+        except (InputError, ArithmeticError, ValueError) as exc:
+            raise InputError(f"{program.file}:{s.line}:1: step {s.name}: {exc}") from None
         spec = StepSpec(s.name, s.op, s.inputs, OPERATIONS[s.op].instrument, s.caption, s.ref,
                         values, s.key, s.role, s.n)
         try:
@@ -574,6 +600,8 @@ def _exact_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
     value = v.xreplace(table)
     if value.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
         raise InputError(f"the value {v} is not finite for these parameters")
+    if value.has(sp.I):
+        raise InputError(f"the value {v} is not a real number for these parameters")
     return value if value.is_Atom else canon(value)
 
 
