@@ -22,7 +22,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import re
 import sys
 from collections.abc import Iterator
 from typing import IO, Any
@@ -31,7 +30,7 @@ import numpy as np
 import sympy as sp
 
 from .errors import InputTooLargeError, NonFiniteValueError
-from .expr import MAX_ANGLES, MAX_LENGTH, parse_angles, parse_exact
+from .expr import MAX_ANGLES, MAX_LENGTH, _split_unit, parse_angles, parse_exact
 from .inputs import force_value
 
 __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
@@ -48,7 +47,6 @@ CHUNK = 20_000
 _JSON_RECORD = (' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
                 '"F_int": %r, "limiting": %d}')
 _HEAD = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
-_NAME_TAIL = re.compile(r"[\w.]*$")
 
 
 def _split_items(text: str) -> list[str]:
@@ -60,23 +58,6 @@ def _split_items(text: str) -> list[str]:
             items.append(text[start:index])
             start = index + 1
     return [*items, text[start:]]
-
-
-def _split_unit(text: str) -> tuple[str, bool]:
-    """Strip a trailing ``deg`` or ``°`` with the parser's rule ("30*deg" keeps its name)."""
-    body = text.rstrip()
-    if body.endswith("°"):
-        return body[:-1].rstrip(), True
-    if not body.endswith("deg"):
-        return body, False
-    head = body[:-3]
-    core = head.rstrip()
-    if not core or core[-1] in "+-*/(,:":
-        return body, False
-    tail = _NAME_TAIL.search(head).group()  # type: ignore[union-attr]
-    if tail and not (tail[0].isdigit() or tail[0] == "."):
-        return body, False
-    return core, True
 
 
 def _range(item: str) -> tuple[sp.Expr, sp.Expr, int, bool] | None:

@@ -25,13 +25,13 @@ from __future__ import annotations
 
 import errno
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
 from .errors import OutputError
 
-__all__ = ["check_folder", "check_target", "writing"]
+__all__ = ["check_folder", "check_target", "write_output", "writing"]
 
 
 def _fail(path: object, why: str) -> OutputError:
@@ -147,3 +147,20 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
         if isinstance(exc, OutputError):
             raise
         raise _fail(os.fspath(path), _reason(exc)) from None
+
+
+def write_output(path: str | os.PathLike[str], produce: Callable[[], str | bytes]) -> Path:
+    """Check ``path`` (:func:`check_target`), then write what ``produce()`` makes there.
+
+    The path is checked before any work; text is written as UTF-8, bytes as they are,
+    and a failed write becomes an :class:`~graspcompass.errors.OutputError` with the
+    half-written file removed (:func:`writing`).  Every file writer of the exports uses it.
+    """
+    p = check_target(path)
+    data = produce()
+    with writing(p):
+        if isinstance(data, bytes):
+            p.write_bytes(data)
+        else:
+            p.write_text(data, encoding="utf-8")
+    return p

@@ -202,13 +202,9 @@ def write_ggb(construction: Any, path: Any, title: str | None = None) -> Path:
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import check_target, writing
+    from .._output import write_output
 
-    p = check_target(path)
-    data = to_ggb(construction, title)
-    with writing(p):
-        p.write_bytes(data)
-    return p
+    return write_output(path, lambda: to_ggb(construction, title))
 
 
 def read_ggb_xml(source: Any) -> str:

@@ -198,13 +198,9 @@ def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
         If ``path`` cannot be written (a missing folder, no permission), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import check_target, writing
+    from .._output import write_output
 
-    p = check_target(path)
-    text = to_html(construction, title)
-    with writing(p):
-        p.write_text(text, encoding="utf-8")
-    return p
+    return write_output(path, lambda: to_html(construction, title))
 
 
 def main(argv: list[str] | None = None) -> int:

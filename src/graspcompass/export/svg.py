@@ -148,10 +148,6 @@ def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import check_target, writing
+    from .._output import write_output
 
-    p = check_target(path)
-    text = to_svg(construction, title)
-    with writing(p):
-        p.write_text(text, encoding="utf-8")
-    return p
+    return write_output(path, lambda: to_svg(construction, title))
