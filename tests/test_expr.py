@@ -13,6 +13,7 @@ import sympy
 from hypothesis import given
 from hypothesis import strategies as st
 
+from _hang import no_hang
 from graspcompass.errors import ComplexValueError
 from graspcompass.expr import (
     MAX_ANGLES,
@@ -416,22 +417,13 @@ ESCAPED = [
 
 def _quick(text: str) -> BaseException | None:
     """parse_exact(text) under a 5 s alarm (hang detection, not a speed test)."""
-    import signal
-
-    def _hang(*_: object) -> None:
-        raise TimeoutError(f"parse_exact({text!r}) still running after 5 s")
-
-    previous = signal.signal(signal.SIGALRM, _hang)
-    signal.setitimer(signal.ITIMER_REAL, 5.0)
     try:
-        parse_exact(text)
+        with no_hang(f"parse_exact({text!r})", 5.0):
+            parse_exact(text)
     except ExpressionError:
         return None
     except BaseException as exc:  # reported by the caller
         return exc
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
     return None
 
 
@@ -626,22 +618,13 @@ def test_parser_fuzz() -> None:
 
 def _quick_value(text: str) -> BaseException | str | None:
     """None if ``text`` reads to a finite real value or is refused; else what went wrong."""
-    import signal
-
-    def _hang(*_: object) -> None:
-        raise TimeoutError(f"parse_exact({text!r}) still running after 5 s")
-
-    previous = signal.signal(signal.SIGALRM, _hang)
-    signal.setitimer(signal.ITIMER_REAL, 5.0)
     try:
-        value = parse_exact(text)
+        with no_hang(f"parse_exact({text!r})", 5.0):
+            value = parse_exact(text)
     except ExpressionError:
         return None
     except BaseException as exc:  # reported by the caller
         return exc
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
     if not isinstance(value, sympy.Expr) or value.has(sympy.nan, sympy.zoo, sympy.oo):
         return f"not a finite expression: {value!r}"
     if value.is_extended_real is False:

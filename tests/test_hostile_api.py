@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import math
 import os
-import signal
 import tempfile
 import warnings
 from contextlib import contextmanager
@@ -35,6 +34,7 @@ import sympy as sp
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from _hang import no_hang
 from graspcompass import Grasp, Point
 from graspcompass.errors import (
     ComplexValueError,
@@ -65,23 +65,9 @@ PROPERTY = settings(max_examples=150, deadline=None, database=None,
                     suppress_health_check=[HealthCheck.too_slow])
 
 
-@contextmanager
 def bounded(what: str, seconds: float = HANG_SECONDS):
     """Fail a call still running after ``seconds`` (hang detection, not a speed test)."""
-    if not hasattr(signal, "setitimer"):  # pragma: no cover - no SIGALRM on Windows
-        yield
-        return
-
-    def _hang(*_: object) -> None:
-        raise TimeoutError(f"{what} still running after {seconds} s")
-
-    previous = signal.signal(signal.SIGALRM, _hang)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+    return no_hang(what, seconds)
 
 
 @contextmanager

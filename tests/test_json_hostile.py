@@ -12,9 +12,7 @@ import contextlib
 import copy
 import json
 import os
-import signal
 import time
-from collections.abc import Iterator
 from typing import Any
 
 import pytest
@@ -22,6 +20,7 @@ import sympy as sp
 from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
+from _hang import no_hang
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.construction import diagram_specs, replay
 from graspcompass.errors import InputError, InputTooLargeError
@@ -40,23 +39,13 @@ from graspcompass.export.json import (
 HANG = 20.0  # seconds: far above the second allowed, only to catch a hang
 
 
-@contextlib.contextmanager
-def no_hang(seconds: float = HANG) -> Iterator[None]:
-    def alarm(*_: Any) -> None:
-        raise TimeoutError(f"still running after {seconds} s")
-
-    old = signal.signal(signal.SIGALRM, alarm)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
+def _no_hang(seconds: float = HANG) -> contextlib.AbstractContextManager[None]:
+    return no_hang("loads", seconds)
 
 
 def refused(text: str | bytes, cls: type[Exception] = JSONDocumentError) -> str:
     """The one-line message of ``loads(text)``, which must raise ``cls``."""
-    with no_hang(), pytest.raises(cls) as err:
+    with _no_hang(), pytest.raises(cls) as err:
         loads(text)
     message = str(err.value)
     assert isinstance(err.value, InputError) and "\n" not in message and message
@@ -337,14 +326,14 @@ def test_size_errors_are_also_input_too_large(table1a):
 def test_huge_python_ints_in_a_document_are_refused(table1a):
     doc = copy.deepcopy(table1a)
     doc["steps"][0]["index"] = 10**5000
-    with no_hang(), pytest.raises(JSONTooLargeError, match=r"steps\[0\]\.index"):
+    with _no_hang(), pytest.raises(JSONTooLargeError, match=r"steps\[0\]\.index"):
         from_document(doc)
 
 
 def test_a_cyclic_python_document_is_refused(table1a):
     doc = copy.deepcopy(table1a)
     doc["steps"][3]["value"]["x"] = doc["steps"][3]["value"]
-    with no_hang(), pytest.raises(JSONDocumentError, match=r"steps\[3\]\.value\.x"):
+    with _no_hang(), pytest.raises(JSONDocumentError, match=r"steps\[3\]\.value\.x"):
         from_document(doc)
 
 
@@ -361,7 +350,7 @@ def test_the_schema_is_data():
 def test_presets_re_export_identically(preset):
     c = internal_force_diagram(Grasp.preset(preset))
     text = dumps(c)
-    with no_hang():
+    with _no_hang():
         assert dumps(loads(text)) == text
         assert dumps(loads(text.encode())) == text
         part = dumps(c.upto(8))
@@ -377,7 +366,7 @@ def test_float_and_symbolic_prefix_re_export_identically():
     assert '"bits": ' in text and dumps(loads(text)) == text
     s = Grasp.symbolic("mu")
     text = dumps(replay(diagram_specs(s)[:14], s))
-    with no_hang(60):
+    with _no_hang(60):
         assert dumps(loads(text)) == text
 
 
@@ -476,7 +465,7 @@ def test_mutated_float_documents_are_refused_or_re_export_identically(doc):
 
 def _refused_or_the_same(doc: dict[str, Any]) -> None:
     text = json.dumps(doc, ensure_ascii=False)
-    with no_hang():
+    with _no_hang():
         try:
             c = loads(text)
         except JSONDocumentError as exc:
