@@ -1,4 +1,4 @@
-"""The hand-drawing worksheet (issue 12 §3): ``render.worksheet`` and ``graspcompass worksheet``.
+"""The hand-drawing worksheet (issue 12 §3): ``render.handdrawing`` and ``graspcompass worksheet``.
 
 The PDF is read as bytes (pypdf when installed): its pages are counted and
 the A4 MediaBox and the two bars (100 mm, and one unit at the stated scale)
@@ -22,7 +22,7 @@ pytest.importorskip("matplotlib")
 
 from graspcompass import Grasp, cli, internal_force_diagram
 from graspcompass import _cli_worksheet as cw
-from graspcompass.render.worksheet import (
+from graspcompass.render.handdrawing import (
     Worksheet,
     given_names,
     selected_names,
@@ -203,7 +203,7 @@ def _in_order(numbers: list[int]) -> bool:
 @pytest.mark.parametrize("which", ["V1", "V2", "V4"])
 def test_instructions_of_one_V_n_in_protocol_order(which: str) -> None:
     c = internal_force_diagram(Grasp.preset("table1b"))
-    from graspcompass.render.worksheet import instructions_for
+    from graspcompass.render.handdrawing import instructions_for
 
     sel = selected_names(c, which)
     ins = instructions_for(c, sel, given_names(sel, "grasp"))
@@ -295,7 +295,7 @@ def test_scale_too_large_is_refused_with_the_largest_that_fits() -> None:
 
 
 def test_any_size_of_grasp_gets_a_round_scale() -> None:
-    from graspcompass.render.worksheet import round_scale
+    from graspcompass.render.handdrawing import round_scale
 
     assert [round_scale(f) for f in (12.9, 10.0, 9.99, 0.0437, 2345.6)] == [
         12.0, 10.0, 9.9, 0.043, 2340.0]

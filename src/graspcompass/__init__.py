@@ -18,12 +18,20 @@ Examples
 True
 """
 
-from .construction import Construction, Step, internal_force_diagram
-from .errors import GraspCompassError, InputError
-from .expr import ExpressionError, parse_exact
-from .geometry import Circle, GeometryError, Line, Point
-from .grasp import PRESETS, FrozenGraspError, Grasp, InvalidGraspError
-from .world import WorldGrasp, WorldGraspError, place_grasp
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ._lazy import attach
+
+if TYPE_CHECKING:
+    from .construction import Construction, Step, internal_force_diagram
+    from .errors import GraspCompassError, InputError
+    from .expr import ExpressionError, parse_exact
+    from .geometry import Circle, GeometryError, Line, Point
+    from .grasp import FrozenGraspError, Grasp, InvalidGraspError
+    from .presets import PRESETS
+    from .world import WorldGrasp, WorldGraspError, place_grasp
 
 __version__ = "0.1.0"
 
@@ -48,3 +56,16 @@ __all__ = [
     "parse_exact",
     "place_grasp",
 ]
+
+#: Where each public name lives; it is imported on first use (:mod:`graspcompass._lazy`).
+_HOMES = {
+    "Construction": "construction", "Step": "construction",
+    "internal_force_diagram": "construction",
+    "GraspCompassError": "errors", "InputError": "errors",
+    "ExpressionError": "expr", "parse_exact": "expr",
+    "Circle": "geometry", "GeometryError": "geometry", "Line": "geometry", "Point": "geometry",
+    "FrozenGraspError": "grasp", "Grasp": "grasp", "InvalidGraspError": "grasp",
+    "PRESETS": "presets",
+    "WorldGrasp": "world", "WorldGraspError": "world", "place_grasp": "world",
+}
+__getattr__, __dir__ = attach(__name__, _HOMES)

@@ -23,7 +23,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from .grasp import PRESETS
+from .presets import PRESETS
 
 __all__ = ["KINDS", "MAIN_ANIMATION", "MAX_DPI", "MAX_FPS", "MAX_FRAMES",
            "MAX_FRAMES_PER_STEP", "MAX_PIXELS", "MAX_WEIGHT", "MIN_DPI", "MIN_FPS", "MIN_WEIGHT",
@@ -159,6 +159,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
 def run(args: argparse.Namespace, grasp: Any) -> int:
     """Run ``graspcompass animate`` for ``grasp``; returns the exit status.
 
+    ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
+    called once the output is checked.
+
     Raises
     ------
     ValueError
@@ -170,19 +173,20 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
         the construction; the command line prints them on one line.
     """
     from ._output import check_target, writing
-    from .construction import internal_force_diagram
-    from .errors import InputTooLargeError
-    from .render.anim_physics import animate_orientation, animate_sweep
-    from .render.animate import animate_construction
-    from .render.theme import THEMES
     from .render.timeline import check_output
 
     name = args.output if args.output is not None else f"{args.preset}-{args.kind}.gif"
     check_output(name)
     path = check_target(name)
+    from .construction import internal_force_diagram
+    from .errors import InputTooLargeError
+    from .render.anim_physics import animate_orientation, animate_sweep
+    from .render.animate import animate_construction
+    from .render.theme import THEMES
+
     quiet = getattr(args, "quiet", False)
     theme = THEMES[args.theme]
-    c = internal_force_diagram(grasp)
+    c = internal_force_diagram(grasp() if callable(grasp) else grasp)
     anim: Any
     if args.kind == "construction":
         anim = animate_construction(c, fps=args.fps, frames_per_step=args.frames_per_step,

@@ -85,6 +85,9 @@ def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
 def run_export(args: argparse.Namespace, grasp: Any) -> int:
     """Run ``graspcompass export`` for ``grasp``; returns the exit status (0).
 
+    ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
+    called once the output is checked (the command line reads its options then).
+
     Raises
     ------
     ValueError
@@ -94,15 +97,16 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
         written (checked before any work).
     """
     from ._output import check_target, writing
-    from .construction import internal_force_diagram
-    from .export import export
-    from .export.tikz import write_tikz
 
     fmt, path = _format_and_path(args)
     if args.fragment and fmt != "tikz":
         raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
     path = check_target(path)
-    c = internal_force_diagram(grasp)
+    from .construction import internal_force_diagram
+    from .export import export
+    from .export.tikz import write_tikz
+
+    c = internal_force_diagram(grasp() if callable(grasp) else grasp)
     if args.step is not None:
         if not -len(c) <= args.step < len(c):
             raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "

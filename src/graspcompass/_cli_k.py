@@ -30,17 +30,14 @@ import numpy as np
 import sympy as sp
 
 from .errors import InputTooLargeError, NonFiniteValueError
-from .expr import MAX_ANGLES, MAX_LENGTH, _split_unit, parse_angles, parse_exact
+from .expr import _split_unit, parse_angles, parse_exact
 from .inputs import force_value
+from .limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
 
 __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
 
-#: Most angles read exactly (more are read in double precision).
-EXACT_ANGLES = 1000
-#: Most angles ``--exact`` computes exact values for.
-EXACT_VALUES = 72
 #: Longest ``--theta`` text.
-MAX_TEXT = 10 * MAX_LENGTH
+MAX_TEXT = MAX_LIST_LENGTH
 #: Rows computed and written at a time on the float path.
 CHUNK = 20_000
 
@@ -203,8 +200,9 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
     ----------
     args : argparse.Namespace
         ``theta``, ``external_force``, ``exact``, ``json`` and ``quiet``.
-    g : Grasp
-        A numeric grasp.
+    g : Grasp or callable
+        A numeric grasp, or a function that makes it, called once ``--theta``
+        and ``--external-force`` are read (so their errors come first and fast).
     out : file, optional
         Where the rows go (default: stdout).
 
@@ -217,19 +215,18 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
     out = sys.stdout if out is None else out
     fe, fe_float = _fe(args.external_force)
     exact, t = read_angles(args.theta)
+    if args.exact and (exact is None or len(exact) > EXACT_VALUES):
+        raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
+                                 f"angles; --theta gives {t.size}")
+    if callable(g):
+        g = g()
     if exact is None:
-        if args.exact:
-            raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
-                                     f"angles; --theta gives {t.size}")
         _check_range(g, fe_float)  # before the first row: an error is then the only line
         if not getattr(args, "quiet", False):
             print(f"graspcompass: note: {t.size} angles: θ read in double precision (exactly "
                   f"for at most {EXACT_ANGLES} angles)", file=sys.stderr)
         _stream(args, g, t, fe_float, out)
         return 0
-    if args.exact and len(exact) > EXACT_VALUES:
-        raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
-                                 f"angles; --theta gives {len(exact)}")
     ks, kg, fint = _values(g, t, fe_float)
     lim = _limiting(ks, kg)
     records = []

@@ -58,15 +58,15 @@ def run(args: argparse.Namespace) -> int:
     OutputError
         For a path of ``-o`` that cannot be written (checked before any work).
     """
-    from .construction.language import paper_text
-
-    if args.output is None:
-        print(paper_text(), end="")
-        return 0
     from ._output import check_target, writing
 
-    path = check_target(args.output)
+    path = None if args.output is None else check_target(args.output)
+    from .construction.language import paper_text
+
     text = paper_text()
+    if path is None:
+        print(text, end="")
+        return 0
     with writing(path):
         path.write_text(text, encoding="utf-8")
     if not getattr(args, "quiet", False):

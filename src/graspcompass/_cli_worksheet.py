@@ -4,7 +4,7 @@
 drawing the internal force diagram by hand (§3.3 of Ito, Tanaka, Sasaki,
 Robotica 2012): page 1 the grasp and its friction cones at a stated scale
 with the steps as numbered instructions, page 2 the solution at the same
-scale (:func:`graspcompass.render.worksheet.worksheet`).  The module only adds
+scale (:func:`graspcompass.render.handdrawing.worksheet`).  The module only adds
 the sub-parser and runs it; :mod:`graspcompass.cli` reports errors (a
 ``ValueError`` is one line on stderr, exit status 2).
 
@@ -32,7 +32,7 @@ __all__ = ["register", "run"]
 
 _STEPS = ("all", "V1", "V2", "V3", "V4")
 _LEVELS = ("grasp", "feet", "sides", "perpendiculars")
-#: Bounds of ``--scale`` in mm per unit (as :data:`graspcompass.render.worksheet.SCALE_RANGE`).
+#: Bounds of ``--scale`` in mm per unit (as :data:`graspcompass.render.handdrawing.SCALE_RANGE`).
 SCALE_MIN, SCALE_MAX = 1e-6, 1e6
 #: Longest ``--given`` text.
 MAX_GIVEN = 200
@@ -112,13 +112,14 @@ def run(args: argparse.Namespace, grasp: Any = None) -> int:
         written (checked before any work).
     """
     from ._output import check_target, writing
-    from .construction import internal_force_diagram
-    from .render.worksheet import worksheet_pages
 
     name = args.output if args.output is not None else f"{args.preset}-worksheet.pdf"
     if Path(name).suffix.lower() != ".pdf":
         raise ValueError(f"a worksheet is a PDF: name the output FILE.pdf, got {name!r}")
     path = check_target(name)
+    from .construction import internal_force_diagram
+    from .render.handdrawing import worksheet_pages
+
     if grasp is None:
         from .cli import grasp_from_args
 

@@ -3,7 +3,8 @@
 :func:`check_target` refuses, with :class:`~graspcompass.errors.OutputError`
 and a one-line message naming the path, an output file that cannot be
 written: an empty name, a folder, a missing folder (folders are never made
-silently), a parent that is a file, no permission, a name that is too long.
+silently), a parent that is a file, no permission, a name that is too long, a
+file system with no space left, a device that refuses writes (``/dev/full``).
 :func:`writing` turns an :class:`OSError` during the write (a full disk,
 ``/dev/full``) into the same error, and removes a half-written file.  This
 module is a leaf: it imports only :mod:`graspcompass.errors`.
@@ -25,6 +26,7 @@ from __future__ import annotations
 
 import errno
 import os
+import stat
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -73,7 +75,35 @@ def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> 
         raise _fail(shown, f"{str(d)!r} is not a folder")
     if not writable:
         raise _fail(shown, f"no permission to write in the folder {str(d)!r}")
+    try:
+        full = os.statvfs(d).f_bavail == 0
+    except (OSError, AttributeError):  # pragma: no cover - no statvfs (not POSIX)
+        full = False
+    if full:
+        raise _fail(shown, "no space left on the device")
     return d
+
+
+def _probe_device(p: Path, text: str) -> None:
+    """Write nothing to an existing character device: ``/dev/full`` refuses even that.
+
+    A zero-byte write changes nothing on ``/dev/null`` or a terminal; FIFOs
+    (``/dev/stdout`` into a pipe) are not opened, since that could block.
+    """
+    try:
+        if not stat.S_ISCHR(os.stat(p).st_mode):
+            return
+        fd = os.open(p, os.O_WRONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0))
+    except OSError as exc:
+        raise _fail(text, _reason(exc)) from None
+    try:
+        os.write(fd, b"")
+    except BlockingIOError:  # pragma: no cover - a device busy now may take the file later
+        pass
+    except OSError as exc:
+        raise _fail(text, _reason(exc)) from None
+    finally:
+        os.close(fd)
 
 
 def check_target(path: str | os.PathLike[str]) -> Path:
@@ -110,6 +140,8 @@ def check_target(path: str | os.PathLike[str]) -> Path:
         raise _fail(text, "that is a folder, not a file")
     if exists and not writable:
         raise _fail(text, "no permission to write the file")
+    if exists:
+        _probe_device(p, text)
     return p
 
 
@@ -126,7 +158,9 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
     """Turn an :class:`OSError` raised inside the block into :class:`OutputError`.
 
     A file the block made at ``path`` before failing (a half-written file on a
-    full disk) is removed; a file that was there before is left alone.
+    full disk) is removed; a file that was there before is left alone.  A
+    :class:`BrokenPipeError` (``-o /dev/stdout`` piped into ``head``) passes
+    through: the reader has what it wanted, and the command line stops quietly.
 
     >>> try:
     ...     with writing("/dev/full"):
@@ -144,7 +178,7 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
                 os.unlink(path)
             except OSError:  # pragma: no cover - nothing more to do
                 pass
-        if isinstance(exc, OutputError):
+        if isinstance(exc, (OutputError, BrokenPipeError)):
             raise
         raise _fail(os.fspath(path), _reason(exc)) from None
 

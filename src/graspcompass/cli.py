@@ -17,6 +17,7 @@ it says so).
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import os
 import sys
@@ -24,17 +25,20 @@ import textwrap
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn
 
-from . import __version__, _cli_export, _cli_k, _cli_recipe, _cli_worksheet
+from . import __version__, _cli_export, _cli_recipe, _cli_worksheet, limits
 from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
 from ._output import check_folder, check_target, writing
-from .construction import Construction, describe, internal_force_diagram, to_records
 from .errors import GraspCompassError, OutputError
-from .grasp import PRESETS, Grasp
+from .presets import PRESETS
 
-__all__ = ["EXIT_STATUSES", "build_parser", "grasp_from_args", "main"]
+if TYPE_CHECKING:  # the model (sympy, numpy) is loaded by the commands that use it
+    from .construction import Construction
+    from .grasp import Grasp
+
+__all__ = ["EXIT_STATUSES", "build_parser", "console", "grasp_from_args", "main"]
 
 #: What each exit status of ``graspcompass`` means.
 EXIT_STATUSES = {
@@ -134,11 +138,11 @@ def build_parser() -> argparse.ArgumentParser:
         "k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
         description="k_n(θ), k_grasp(θ) and F_int for a list of directions θ of the external "
                     "force.",
-        epilog=f"limits: --theta is at most {_cli_k.MAX_TEXT} characters and gives at most "
-               f"{_cli_k.MAX_ANGLES} angles. Up to {_cli_k.EXACT_ANGLES} angles are read "
+        epilog=f"limits: --theta is at most {limits.MAX_LIST_LENGTH} characters and gives at "
+               f"most {limits.MAX_ANGLES} angles. Up to {limits.EXACT_ANGLES} angles are read "
                "exactly (the θ column shows pi/6); more are made in double precision from the "
                "exact start and step of each range (a note on stderr says so) and the rows "
-               f"stream out as they are computed. --exact: at most {_cli_k.EXACT_VALUES} "
+               f"stream out as they are computed. --exact: at most {limits.EXACT_VALUES} "
                "angles. Values that overflow a double (above 1.8e308) are refused. "
                "exit status: 0, or 2 for a user error.")
     _add_grasp_options(k)
@@ -148,7 +152,7 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--external-force", default="1", metavar="EXPR",
                    help="magnitude F_e of the external force, finite and >= 0 (default: 1)")
     k.add_argument("--exact", action="store_true",
-                   help=f"also print exact values (at most {_cli_k.EXACT_VALUES} angles)")
+                   help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
@@ -190,9 +194,23 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def grasp_from_args(args: argparse.Namespace) -> Grasp:
-    """The grasp named by ``--preset`` with any parameter options applied."""
-    params: dict[str, Any] = dict(PRESETS[args.preset]["params"])
+    """The grasp named by ``--preset`` with any parameter options applied.
+
+    Each option's text is read by the safe parser first, with the message the
+    grasp would give: text the parser refuses is refused before the model
+    (and numpy) is loaded.
+    """
+    from .expr import ExpressionError, parse_exact
+
     given = {k: getattr(args, k) for k in _PARAMS if getattr(args, k, None) is not None}
+    for name, text in given.items():
+        try:
+            parse_exact(text)
+        except ExpressionError as exc:
+            raise type(exc)(f"{name}: {exc}") from None
+    from .grasp import Grasp
+
+    params: dict[str, Any] = dict(PRESETS[args.preset]["params"])
     for i in ("1", "2"):  # a given mu replaces the preset's xi and vice versa
         if f"mu{i}" in given:
             params.pop(f"xi{i}", None)
@@ -206,8 +224,11 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
 
 def protocol_table(c: Construction) -> str:
     """The protocol as a text table with exact values."""
+    from ._cli_k import table
+    from .construction import describe
+
     rows = [[str(s.index), s.name, s.instrument, s.ref, describe(s.obj)] for s in c.steps]
-    return _cli_k.table(rows, ["#", "name", "instrument", "paper", "exact value"])
+    return table(rows, ["#", "name", "instrument", "paper", "exact value"])
 
 
 def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
@@ -241,6 +262,9 @@ def _cmd_main(args: argparse.Namespace) -> int:
     out = _out_folder(args.out, args.quiet)
     png, svg, steps, gif = (check_target(out / name) for name in (
         "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", MAIN_ANIMATION))
+    from .construction import internal_force_diagram, to_records
+    from .grasp import Grasp
+
     c = internal_force_diagram(Grasp.preset("fig6"))
     _draw(c, png, None, None, True)
     _draw(c, svg, None, None, True)
@@ -263,6 +287,8 @@ def _cmd_draw(args: argparse.Namespace) -> int:
         raise ValueError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf "
                          "file name or --format")
     path = check_target(name)
+    from .construction import internal_force_diagram
+
     g = grasp_from_args(args)
     c = internal_force_diagram(g)
     if args.step is not None and not -len(c) <= args.step < len(c):
@@ -275,6 +301,8 @@ def _cmd_draw(args: argparse.Namespace) -> int:
 
 
 def _cmd_steps(args: argparse.Namespace) -> int:
+    from .construction import internal_force_diagram, to_records
+
     c = internal_force_diagram(grasp_from_args(args))
     if args.json:
         print(json.dumps(to_records(c), indent=1))
@@ -284,7 +312,9 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 
 
 def _cmd_k(args: argparse.Namespace) -> int:
-    return _cli_k.run(args, grasp_from_args(args))
+    from . import _cli_k
+
+    return _cli_k.run(args, lambda: grasp_from_args(args))
 
 
 def _cmd_presets(args: argparse.Namespace) -> int:
@@ -296,11 +326,11 @@ def _cmd_presets(args: argparse.Namespace) -> int:
 def _cmd_animate(args: argparse.Namespace) -> int:
     from ._cli_animate import run
 
-    return run(args, grasp_from_args(args))
+    return run(args, lambda: grasp_from_args(args))
 
 
 def _cmd_export(args: argparse.Namespace) -> int:
-    return _cli_export.run_export(args, grasp_from_args(args))
+    return _cli_export.run_export(args, lambda: grasp_from_args(args))
 
 
 def _cmd_explore(args: argparse.Namespace) -> int:
@@ -318,9 +348,11 @@ def _certify_table(title: str, c: Construction) -> tuple[str, bool]:
 
 
 def _cmd_verify(args: argparse.Namespace) -> int:
-    from . import proof
-
     markdown = check_target(args.markdown) if args.markdown is not None else None
+    from . import proof
+    from .construction import internal_force_diagram
+    from .grasp import Grasp
+
     if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
                          or args.preset != "fig6"):
         grasp_from_args(args)  # a bad grasp option is refused before the long run
@@ -402,6 +434,19 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 3
 
 
+def console() -> NoReturn:
+    """The ``graspcompass`` program: :func:`main` on ``sys.argv``, then exit with its status.
+
+    Before exiting it freezes the garbage collector (:func:`gc.freeze`): the
+    interpreter's teardown would otherwise scan the millions of objects that
+    sympy makes at import, which takes about 0.3 s and frees nothing a process
+    about to end needs freed.
+    """
+    status = main()
+    gc.freeze()
+    sys.exit(status)
+
+
 def _message(exc: BaseException) -> str:
     if isinstance(exc, OSError) and not isinstance(exc, GraspCompassError) and exc.strerror:
         where = f"{str(exc.filename)!r}: " if exc.filename else ""
@@ -423,4 +468,4 @@ def _silence_stdout() -> None:
 
 
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    console()

@@ -41,34 +41,22 @@ import sympy
 from sympy.core.evalf import evalf as _evalf
 
 from .errors import ComplexValueError, InputError
+from .limits import (  # the limits, stated once
+    MAX_ANGLES,
+    MAX_ARGUMENT_BITS,
+    MAX_BITS,
+    MAX_DEPTH,
+    MAX_EXPONENT,
+    MAX_LENGTH,
+    MAX_NODES,
+    MAX_WORK_BITS,
+)
+from .limits import MAX_LIST_LENGTH as _MAX_LIST_LENGTH
 
 __all__ = ["MAX_ANGLES", "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT",
            "MAX_LENGTH", "MAX_NODES", "MAX_WORK_BITS", "ComplexExpressionError", "ExpressionError",
            "parse_angles", "parse_exact", "real_sign", "to_exact"]
 
-#: Longest text :func:`parse_exact` reads.
-MAX_LENGTH = 200
-#: Largest ``|p|`` and ``q`` of an exponent ``p/q`` (``10**10**10`` and ``2**(1/65)`` are refused).
-MAX_EXPONENT = 64
-#: Most nested function calls and powers (``sqrt(sqrt(...))`` 17 deep is refused).
-MAX_DEPTH = 16
-#: Most bits of any integer (numerator or denominator) in a value or an intermediate
-#: result: 1100 bits, about 331 decimal digits (``1e309`` reads exactly, ``1e400`` is refused).
-MAX_BITS = 1100
-#: Most bits of any integer in an argument of ``sin cos tan asin acos atan atan2``
-#: (about 38 decimal digits: ``sin(10**38)`` reads, ``sin(10**60)`` is refused).
-MAX_ARGUMENT_BITS = 128
-#: Most bits, added up over every root and function argument of one text: a bound on
-#: the work of exact roots (each may factor its radicand).
-MAX_WORK_BITS = 8192
-#: Most nodes in the tree of a value or an intermediate result: a safety net, since a
-#: function value sympy would write out in more than 40 nodes is kept unevaluated
-#: (``tan(pi/120)`` stays ``tan(pi/120)`` rather than 313 nodes of nested radicals).
-MAX_NODES = 1000
-#: Most angles :func:`parse_angles` returns.
-MAX_ANGLES = 1_000_000
-
-_MAX_LIST_LENGTH = 10 * MAX_LENGTH  # longest text parse_angles reads
 #: A function value sympy writes out in more nodes stays unevaluated (sin(pi/5) is written
 #: out in radicals, 12 nodes; tan(pi/120), 313 nodes, stays tan(pi/120)).
 _EXPANSION_NODES = 40

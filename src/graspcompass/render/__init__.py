@@ -23,28 +23,33 @@ Examples
 'Fig. 6'
 """
 
-from .anim_physics import (
-    SLIP,
-    OrientationAnimation,
-    SweepAnimation,
-    animate_orientation,
-    animate_sweep,
-    theta_of_orientation,
-)
-from .animate import ConstructionAnimation, FrameAnimation, animate_construction, save_frames
-from .explorer import Explorer, explore, explore_notebook
-from .figure import (
-    EXTRA_KEYS,
-    FORMATS,
-    draw_construction,
-    draw_k_polar,
-    figure_diagram,
-    figure_k_plot,
-    save_figure,
-)
-from .theme import DEFAULT_THEME, PAPER_THEME, THEMES, Theme
-from .timeline import AnimationError, FFmpegNotFoundError, Timeline, UnsupportedFormatError
-from .worksheet import worksheet
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:
+    from .anim_physics import (
+        SLIP,
+        OrientationAnimation,
+        SweepAnimation,
+        animate_orientation,
+        animate_sweep,
+        theta_of_orientation,
+    )
+    from .animate import ConstructionAnimation, FrameAnimation, animate_construction, save_frames
+    from .explorer import Explorer, explore, explore_notebook
+    from .figure import (
+        EXTRA_KEYS,
+        FORMATS,
+        draw_construction,
+        draw_k_polar,
+        figure_diagram,
+        figure_k_plot,
+        save_figure,
+    )
+    from .handdrawing import worksheet
+    from .theme import DEFAULT_THEME, PAPER_THEME, THEMES, Theme
+    from .timeline import AnimationError, FFmpegNotFoundError, Timeline, UnsupportedFormatError
 
 __all__ = [
     "DEFAULT_THEME",
@@ -77,3 +82,20 @@ __all__ = [
     "theta_of_orientation",
     "worksheet",
 ]
+
+#: Where each name lives; matplotlib is imported with the first drawing name used.
+__getattr__, __dir__ = attach(__name__, {
+    "SLIP": "anim_physics", "OrientationAnimation": "anim_physics",
+    "SweepAnimation": "anim_physics", "animate_orientation": "anim_physics",
+    "animate_sweep": "anim_physics", "theta_of_orientation": "anim_physics",
+    "ConstructionAnimation": "animate", "FrameAnimation": "animate",
+    "animate_construction": "animate", "save_frames": "animate",
+    "Explorer": "explorer", "explore": "explorer", "explore_notebook": "explorer",
+    "EXTRA_KEYS": "figure", "FORMATS": "figure", "draw_construction": "figure",
+    "draw_k_polar": "figure", "figure_diagram": "figure", "figure_k_plot": "figure",
+    "save_figure": "figure",
+    "DEFAULT_THEME": "theme", "PAPER_THEME": "theme", "THEMES": "theme", "Theme": "theme",
+    "AnimationError": "timeline", "FFmpegNotFoundError": "timeline", "Timeline": "timeline",
+    "UnsupportedFormatError": "timeline",
+    "worksheet": "handdrawing",
+})
