@@ -1,0 +1,427 @@
+"""Check a construction file: certify its steps, prove its claims, grade it against the paper.
+
+:func:`check_program` takes a :class:`~graspcompass.construction.program.Program`
+(from a file in the construction language or the Python builder) and returns a
+:class:`ProgramReport` with one :class:`CheckRow` per step, claim and target.
+
+* **Steps.**  The program is replayed with symbolic parameters; each step's
+  non-degeneracy conditions (two lines that must meet, a radius that must not
+  vanish) are split into those implied by the domains and the file's hypotheses
+  and those that stay conditions of every result that uses the step.  A
+  condition that vanishes for every parameter makes the step REFUTED.
+* **Claims** (``claim ...`` lines) are reduced to expressions that must vanish
+  (or have a sign) and decided by polynomial reduction in the model's ring
+  (:mod:`~graspcompass.proof.certify_algebra`, :func:`~graspcompass.proof.prove_identity`,
+  :func:`~graspcompass.proof.prove_sign`), under the parameters' domains and the
+  hypotheses the claim names (``under condition1``).
+* **Targets** (``against="paper"``): every object named like a point of the
+  paper (``X1``-``X4``, ``Y1``-``Y4``, ``V1``-``V4``, ``circle1``-``circle4``,
+  ``O_M``, ``P1x``, ``P2x``) is compared with the paper's statement for it
+  (:class:`~graspcompass.proof.certify_paper.PaperModel`: §3.3, eqs. (28)-(39),
+  (A4)-(A8)) for every grasp that satisfies condition (1).
+
+A verdict is PROVED (an exact argument for every admissible parameter: the
+result lists its hypotheses, the conditions shown to follow from them and the
+non-degeneracy conditions that remain), REFUTED (a counterexample: a point of
+the model, every domain, condition (1) and μ = tan ξ checked exactly by
+:func:`~graspcompass.proof.model.violations`, at which the file, **replayed
+exactly**, contradicts the claim; the point is reported only after that exact
+replay) or UNDECIDED.
+
+Examples
+--------
+>>> from graspcompass.construction.language import parse
+>>> prog = parse('''
+... param a > 0
+... A = point (0, 0)
+... B = point (a, 0)
+... M = midpoint A B
+... claim M == point(a/2, 0)
+... claim M == point(a/3, 0)
+... ''')
+>>> r = check_program(prog)
+>>> [row.status.value for row in r.claims]
+['PROVED', 'REFUTED']
+>>> r.claims[1].counterexample  # doctest: +SKIP
+{'a': '1/2'}
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as S
+from ..construction.language import replay
+from ..construction.program import Claim, PointValue, Program, Ref
+from ..construction.protocol import Construction
+from .certify_paper import PaperModel, model_at
+from .program_decide import (
+    DOMAIN_WORDS,
+    CheckError,
+    claim_zeros,
+    coords,
+    nonzero,
+    prove_sign_claim,
+    prove_zero,
+    search,
+    sign_expr,
+    sign_fails,
+    step_conditions,
+    zeros_fail,
+)
+from .prove import ProofResult, Status
+
+__all__ = ["PAPER_TARGETS", "CheckError", "CheckRow", "ProgramReport", "check_program"]
+
+#: Names of objects graded by ``against="paper"`` -> (what the paper says it is, reference).
+PAPER_TARGETS: dict[str, str] = {
+    **{f"X{n}": f"X{n} on the x-axis, O_M X{n} = −S{n} (§3.3 step (1), (A7))" for n in range(1, 5)},
+    **{f"Y{n}": f"Y{n} on the y-axis, O Y{n} = −C{n} (§3.3 step (2), (A8))" for n in range(1, 5)},
+    **{f"V{n}": f"V{n} = (S{n}, C{n}), eqs. (28)-(39)" for n in range(1, 5)},
+    **{f"circle{n}": f"the circle on the diameter O V{n} (§3.2, Fig. 3)" for n in range(1, 5)},
+    "O_M": "the midpoint of P1x P2x, ((x1 − x2)/2, 0) (§3.3)",
+    "P1x": "the foot of P1 on the x-axis, (x1, 0) (§3.3)",
+    "P2x": "the foot of P2 on the x-axis, (−x2, 0) (§3.3)",
+}
+#: The parameters a file must declare to be graded against the paper.
+_PAPER_PARAMS = ("x1", "x2", "y", "phi1", "phi2")
+_COND1 = "condition1"
+
+
+@dataclass(frozen=True)
+class CheckRow:
+    """The verdict on one step, claim or target (plain data).
+
+    Attributes
+    ----------
+    name : str
+        The step's or target's name, or the claim as written.
+    kind : str
+        ``"step"``, ``"claim"`` or ``"target"``.
+    line : int
+        Line of the file (0 for the builder).
+    result : ProofResult
+        Status, method, hypotheses, conditions (extra non-degeneracy conditions),
+        implied (conditions shown to follow), counterexample (exact text by
+        parameter name, re-checked by exact replay), seconds.
+    """
+
+    name: str
+    kind: str
+    line: int
+    result: ProofResult
+
+    @property
+    def status(self) -> Status:
+        """The verdict."""
+        return self.result.status
+
+    @property
+    def counterexample(self) -> dict[str, str] | None:
+        """Parameter name -> exact value where the file contradicts the statement."""
+        return self.result.counterexample
+
+    def record(self) -> dict[str, Any]:
+        """JSON-ready: name, status, hypotheses, conditions, counterexample, seconds, ..."""
+        r = self.result
+        return {"name": self.name, "status": r.status.value, "line": self.line,
+                "hypotheses": list(r.hypotheses), "conditions": list(r.conditions),
+                "implied": list(r.implied), "counterexample": r.counterexample,
+                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail}
+
+
+@dataclass(frozen=True)
+class ProgramReport:
+    """Every verdict on one file: ``steps``, ``claims`` and ``targets`` (tuples of rows)."""
+
+    file: str
+    steps: tuple[CheckRow, ...]
+    claims: tuple[CheckRow, ...]
+    targets: tuple[CheckRow, ...] = ()
+    against: str | None = None
+    seconds: float = 0.0
+    construction: Construction | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def rows(self) -> tuple[CheckRow, ...]:
+        """Steps, claims and targets in that order."""
+        return self.steps + self.claims + self.targets
+
+    @property
+    def exit_status(self) -> int:
+        """0 all proved (or given), 1 something refuted, 3 something undecided."""
+        statuses = {r.status for r in self.rows}
+        if Status.REFUTED in statuses:
+            return 1
+        return 3 if Status.UNDECIDED in statuses else 0
+
+
+# -- hypotheses ---------------------------------------------------------------------------
+def _domain_text(program: Program) -> list[str]:
+    return [f"{p.name}: {p.domain}" for p in program.params]
+
+
+def _hypotheses(program: Program, cond1: bool) -> tuple[str, ...]:
+    return ("domains " + ", ".join(_domain_text(program)),
+            *(("condition (1)",) if cond1 else ()))
+
+
+def _check_model_params(program: Program) -> None:
+    """A parameter named like one of the model's must have the model's domain."""
+    for p in program.params:
+        want = DOMAIN_WORDS.get(p.name)
+        if want is not None and p.domain != want:
+            raise CheckError(f"{program.file}:{p.line}:1: {p.name} is the model's parameter "
+                             f"and has the domain {want}; declare it so (got {p.domain})")
+
+
+# -- one claim ----------------------------------------------------------------------------
+def _ancestors(program: Program, names: Iterable[str]) -> list[str]:
+    by = {s.name: s for s in program.steps}
+    seen: dict[str, None] = {}
+    todo = [n for n in names if n in by]
+    while todo:
+        n = todo.pop()
+        if n in seen:
+            continue
+        seen[n] = None
+        todo += [i for i in by[n].inputs if i in by]
+    return list(seen)
+
+
+def _refs(claim: Claim) -> list[str]:
+    names = []
+    for t in claim.terms:
+        if isinstance(t, Ref):
+            names.append(t.name)
+        else:
+            exprs = (t.x, t.y) if isinstance(t, PointValue) else (t.expr,)
+            names += [str(s) for e in exprs for s in e.free_symbols]
+    return names
+
+
+def _text(claim: Claim) -> str:
+    from ..construction.program import _format
+
+    return _format(Program(claims=(claim,))).strip().removeprefix("claim ")
+
+
+def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
+                 step_conds: Mapping[str, tuple[list[str], list[str]]]) -> CheckRow:
+    t0 = time.perf_counter()
+    cond1 = _COND1 in claim.under
+    hyps = _hypotheses(program, cond1)
+    implied: list[str] = []
+    extra: list[str] = []
+    for n in _ancestors(program, _refs(claim)):
+        imp, ext = step_conds.get(n, ([], []))
+        implied += imp
+        extra += ext
+    if claim.kind == "sign":
+        ok, r = prove_sign_claim(sign_expr(claim, env), claim.relation, cond1)
+        if ok and r is not None:
+            implied += list(r.implied)
+            extra += list(r.conditions)
+            method = r.method
+        fails = sign_fails(claim)
+    else:
+        zeros, nonzeros = claim_zeros(claim, env)
+        ok, imp, ext, method = prove_zero(zeros, cond1)
+        implied += imp
+        extra += ext + [f"{sp.factor(n)} ≠ 0" for n in nonzeros]
+        fails = zeros_fail(claim)
+    return _row(program, _text(claim), "claim", claim.line, ok, fails, t0, hyps,
+                implied, extra, method if ok else "")
+
+
+def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
+         fails: Callable[[dict[str, Any], Any], bool], t0: float, hyps: tuple[str, ...],
+         implied: list[str], extra: list[str], method: str) -> CheckRow:
+    implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
+    if ok:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,
+            conditions=tuple(extra), implied=tuple(implied)))
+    cx = search(program, fails)
+    if cx is not None:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.REFUTED, "counterexample: a point of the model (domains, condition (1), "
+            "μ = tan ξ checked exactly) at which the file, replayed exactly, contradicts it",
+            time.perf_counter() - t0, counterexample=cx, hypotheses=hyps))
+    return CheckRow(name, kind, line, ProofResult(
+        Status.UNDECIDED, "not proved, and no counterexample found by exact replay at "
+        "points of the model", time.perf_counter() - t0, hypotheses=hyps,
+        conditions=tuple(extra), implied=tuple(implied)))
+
+
+# -- targets (against the paper) ----------------------------------------------------------
+def _paper_model(program: Program) -> PaperModel:
+    names = {p.name for p in program.params}
+    missing = [n for n in _PAPER_PARAMS if n not in names]
+    for i in "12":
+        if f"mu{i}" not in names and f"xi{i}" not in names:
+            missing.append(f"mu{i} (or xi{i})")
+    if missing:
+        raise CheckError(f"{program.file}: grading against the paper needs the parameters "
+                         f"x1, x2, y, phi1, phi2 and mu1/xi1, mu2/xi2; missing: "
+                         f"{', '.join(missing)}")
+    values: dict[sp.Symbol, sp.Expr] = {getattr(S, n): getattr(S, n) for n in _PAPER_PARAMS}
+    mu_form = []
+    for i in (1, 2):
+        mu, xi = getattr(S, f"mu{i}"), getattr(S, f"xi{i}")
+        if f"mu{i}" in names:
+            values[mu], values[xi] = mu, sp.atan(mu)
+            mu_form.append(True)
+        else:
+            values[mu], values[xi] = sp.tan(xi), xi
+            mu_form.append(False)
+    return PaperModel(values, (mu_form[0], mu_form[1]), False)
+
+
+def _paper_object(model: PaperModel, name: str) -> tuple[sp.Expr, ...]:
+    if name == "O_M":
+        return model.O_M
+    if name in ("P1x", "P2x"):
+        return model.Px(int(name[1]))
+    kind, n = name.rstrip("1234"), int(name[-1])
+    if kind == "circle":
+        (cx, cy), r2 = model.circle(n)
+        return cx, cy, r2
+    return {"X": model.X, "Y": model.Y, "V": model.V}[kind](n)
+
+
+def _model_point(pt: Mapping[str, Any]) -> dict[sp.Symbol, sp.Expr]:
+    out = {getattr(S, k): sp.sympify(v) for k, v in pt.items() if k in DOMAIN_WORDS}
+    for i in (1, 2):  # the model holds both μ and ξ
+        mu, xi = getattr(S, f"mu{i}"), getattr(S, f"xi{i}")
+        if mu in out and xi not in out:
+            out[xi] = sp.atan(out[mu])
+        elif xi in out and mu not in out:
+            out[mu] = sp.tan(out[xi])
+    return out
+
+
+def _check_target(program: Program, name: str, env: dict[str, Any], model: PaperModel,
+                  step_conds: Mapping[str, tuple[list[str], list[str]]]) -> CheckRow:
+    t0 = time.perf_counter()
+    obj = env[name]
+    want = _paper_object(model, name)
+    hyps = _hypotheses(program, True)
+    try:
+        have = coords(obj)
+    except CheckError:
+        have = ()
+    if len(have) != len(want):
+        return CheckRow(name, "target", _line(program, name), ProofResult(
+            Status.REFUTED, f"the file's {name} is a {type(obj).__name__}; the paper's is "
+            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps))
+    implied: list[str] = []
+    extra: list[str] = []
+    for n in _ancestors(program, [name]):
+        imp, ext = step_conds.get(n, ([], []))
+        implied += imp
+        extra += ext
+    ok, imp, ext, method = prove_zero([h - w for h, w in zip(have, want)], True)
+
+    def fails(env_at: dict[str, Any], pt: Any) -> bool:
+        at = model_at(model, _model_point(pt))
+        return any(nonzero(h - w) for h, w in
+                   zip(coords(env_at[name]), _paper_object(at, name)))
+
+    return _row(program, name, "target", _line(program, name), ok, fails, t0, hyps,
+                implied + imp, extra + ext, method)
+
+
+def _line(program: Program, name: str) -> int:
+    return next((s.line for s in program.steps if s.name == name), 0)
+
+
+# -- the whole file -----------------------------------------------------------------------
+def check_program(program: Program, against: str | None = None,
+                  progress: Callable[[int, int, str], None] | None = None) -> ProgramReport:
+    """Certify the steps, prove the claims and (``against="paper"``) grade the objects.
+
+    Parameters
+    ----------
+    program : Program
+        A parsed file (:func:`graspcompass.construction.language.parse`) or a
+        builder's program.
+    against : {None, "paper"}, optional
+        ``"paper"``: also prove that each object named like a point of the paper
+        (:data:`PAPER_TARGETS`) equals the paper's statement (§3.3, eqs. (28)-(39))
+        for every grasp satisfying condition (1) and μ = tan ξ (22).
+    progress : callable, optional
+        Called as ``progress(done, total, name)`` after each row.
+
+    Returns
+    -------
+    ProgramReport
+        Rows for the steps, the claims and the targets; ``exit_status`` is 0
+        (all proved), 1 (something refuted) or 3 (something undecided).
+
+    Raises
+    ------
+    CheckError
+        ``against="paper"`` for a file without the paper's parameters or without
+        any object named like a point of the paper; a model parameter declared
+        with another domain than the model's.
+    DegenerateStepError
+        A step that cannot be made for general parameters.
+    """
+    if against not in (None, "paper"):
+        raise CheckError(f"cannot check against {against!r}: the one reference is 'paper'")
+    t0 = time.perf_counter()
+    _check_model_params(program)
+    model = _paper_model(program) if against == "paper" else None
+    targets = [s.name for s in program.steps if s.name in PAPER_TARGETS]
+    if against == "paper" and not targets:
+        raise CheckError(f"{program.file}: no object is named like a point of the paper "
+                         f"({', '.join(PAPER_TARGETS)}): nothing to grade")
+    c = replay(program)
+    env = {s.name: s.obj for s in c.steps}
+    cond1_file = _COND1 in program.hypotheses
+    total = len(c.steps) + len(program.claims) + len(targets)
+    done = 0
+    step_rows: list[CheckRow] = []
+    step_conds: dict[str, tuple[list[str], list[str]]] = {}
+    hyps = _hypotheses(program, cond1_file)
+    for s in c.steps:
+        t1 = time.perf_counter()
+        line = _line(program, s.name)
+        try:
+            implied, extra = step_conditions(s, cond1_file)
+        except ValueError as exc:
+            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
+                Status.REFUTED, "degenerate for every parameter", time.perf_counter() - t1,
+                detail=str(exc), hypotheses=hyps)))
+        else:
+            step_conds[s.name] = (implied, extra)
+            given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
+            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
+                Status.GIVEN if given and not s.inputs else Status.PROVED,
+                "defined where its conditions hold (the kernel's non-degeneracy conditions)",
+                time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
+                implied=tuple(implied))))
+        done += 1
+        if progress:
+            progress(done, total, s.name)
+    claim_rows = []
+    for cl in program.claims:
+        claim_rows.append(_check_claim(program, cl, env, step_conds))
+        done += 1
+        if progress:
+            progress(done, total, claim_rows[-1].name)
+    target_rows = []
+    if model is not None:
+        for name in targets:
+            target_rows.append(_check_target(program, name, env, model, step_conds))
+            done += 1
+            if progress:
+                progress(done, total, name)
+    return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
+                         against, time.perf_counter() - t0, c)

@@ -1,0 +1,303 @@
+"""The decisions behind ``graspcompass check``: what must vanish, proofs, exact replay.
+
+:func:`claim_zeros` turns a claim of a construction file into expressions that
+must vanish (and expressions that must not, its non-degeneracy conditions);
+:func:`prove_zero` decides them by polynomial reduction in the model's ring
+(:mod:`~graspcompass.proof.certify_algebra`) or by
+:func:`~graspcompass.proof.prove_identity`; :func:`search` looks for a
+counterexample by replaying the file **exactly** at sample points of the model
+(every domain, condition (1) and μ = tan ξ checked by
+:func:`~graspcompass.proof.model.violations`).  Used by
+:mod:`graspcompass.proof.program_check`.
+
+Examples
+--------
+>>> from graspcompass.construction.language import parse, replay
+>>> prog = parse("param a > 0\\nA = point (0, 0)\\nB = point (a, 0)\\nM = midpoint A B\\n"
+...              "claim M == point(a/2, 0)\\n")
+>>> env = {s.name: s.obj for s in replay(prog).steps}
+>>> zeros, nonzeros = claim_zeros(prog.claims[0], env)
+>>> prove_zero(zeros, cond1=False)[0]
+True
+"""
+
+from __future__ import annotations
+
+import itertools
+import random
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as S
+from ..construction.language import replay
+from ..construction.program import Claim, PointValue, Program, Ref
+from ..construction.protocol import Construction
+from ..errors import InputError
+from ..geometry import Circle, GeometryError, Line, Point
+from ..geometry.exact import decide_sign, decide_zero
+from .certify_algebra import classify, ring
+from .model import violations
+from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
+
+__all__ = ["DOMAIN_WORDS", "CheckError", "claim_zeros", "coords", "nonzero", "prove_sign_claim",
+           "prove_zero", "replay_at", "search", "sign_expr", "sign_fails", "step_conditions",
+           "zeros_fail"]
+
+#: The model's parameters and their domains (a file must declare them so).
+DOMAIN_WORDS = {"x1": "positive", "x2": "positive", "y": "nonnegative", "phi1": "angle",
+                "phi2": "angle", "mu1": "friction", "mu2": "friction", "xi1": "half_angle",
+                "xi2": "half_angle"}
+#: Exact sample values: lengths, friction coefficients whose 1 + μ² is a square (so that
+#: sin and cos of ξ = atan μ are rational) and φ in steps of π/12.
+_LENGTHS = tuple(sp.Rational(n, d) for n, d in ((1, 2), (1, 1), (3, 2), (2, 1), (3, 1), (7, 5),
+                                                  (5, 3), (1, 3)))
+_MUS = tuple(sp.Rational(n, d) for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15), (1, 1),
+                                             (7, 24), (15, 8)))
+
+
+class CheckError(InputError):
+    """A file that cannot be checked as asked (``against="paper"`` without the paper's
+    parameters, or with no object named like a point of the paper)."""
+
+
+# -- what must vanish ---------------------------------------------------------------------
+def coords(obj: Any) -> tuple[sp.Expr, ...]:
+    if isinstance(obj, Point):
+        return obj.x, obj.y
+    if isinstance(obj, Circle):
+        return obj.center.x, obj.center.y, obj.radius2
+    if isinstance(obj, sp.Expr):
+        return (obj,)
+    raise CheckError(f"cannot compare a {type(obj).__name__}")
+
+
+def _term(t: Any, env: Mapping[str, Any], lengths: Mapping[sp.Symbol, Any]) -> Any:
+    if isinstance(t, Ref):
+        return env[t.name]
+    if isinstance(t, PointValue):
+        return Point(t.x.xreplace(lengths), t.y.xreplace(lengths))
+    return t.expr.xreplace(lengths)
+
+
+def _lengths(env: Mapping[str, Any]) -> dict[sp.Basic, Any]:
+    """The claim's symbols -> values: lengths of the construction, and (at a sample point,
+    under the key ``"$params"``) the parameters' exact values."""
+    out: dict[sp.Basic, Any] = {sp.Symbol(k, real=True): v for k, v in env.items()
+                                if isinstance(v, sp.Expr)}
+    out.update(env.get("$params", {}))
+    return out
+
+
+def _line_zero(a: Line, b: Line) -> list[sp.Expr]:
+    return [a.direction.cross(b.direction),
+            Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction)]
+
+
+def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], list[sp.Expr]]:
+    """``(expressions that must vanish, expressions that must not)`` for a non-sign claim."""
+    objs = [_term(t, env, _lengths(env)) for t in claim.terms]
+    if claim.kind == "equal":
+        a, b = objs
+        if isinstance(a, Line):
+            return _line_zero(a, b), []
+        return [x - y for x, y in zip(coords(a), coords(b))], []
+    if claim.kind == "on":
+        p, c = objs
+        if isinstance(c, Circle):
+            return [(p.x - c.center.x) ** 2 + (p.y - c.center.y) ** 2 - c.radius2], []
+        return [Point(p.x - c.point.x, p.y - c.point.y).cross(c.direction)], []
+    if claim.kind == "collinear":
+        a = objs[0]
+        return [Point(b.x - a.x, b.y - a.y).cross(Point(c.x - a.x, c.y - a.y))
+                for b, c in itertools.pairwise(objs[1:])], []
+    if claim.kind == "parallel":
+        return [objs[0].direction.cross(objs[1].direction)], []
+    if claim.kind == "perpendicular":
+        return [objs[0].direction.dot(objs[1].direction)], []
+    if claim.kind == "concurrent":  # det of (a, b, c) rows; two of them must meet
+        rows = [sp.Matrix([list(ln.coefficients())]) for ln in objs]
+        zeros = [sp.Matrix.vstack(rows[0], rows[1], r).det() for r in rows[2:]]
+        return zeros, [objs[0].direction.cross(objs[1].direction)]
+    raise CheckError(f"unknown claim kind {claim.kind!r}")  # pragma: no cover - parser checks
+
+
+def sign_expr(claim: Claim, env: Mapping[str, Any]) -> sp.Expr:
+    a, b = (_term(t, env, _lengths(env)) for t in claim.terms)
+    return sp.sympify(a - b)  # internal: values of the construction
+
+
+# -- deciding -----------------------------------------------------------------------------
+def _classified(dens: Iterable[Any], cond1: bool) -> tuple[list[str], list[str]]:
+    """Denominator factors (ring elements) -> (implied with reasons, extra conditions)."""
+    R = ring()
+    implied: dict[str, None] = {}
+    extra: dict[str, None] = {}
+    for p in dens:
+        if cond1:
+            imp, ext = classify(p)  # ValueError: identically zero
+            implied.update(dict.fromkeys(f"{t} ({why})" for t, why in imp))
+            extra.update(dict.fromkeys(ext))
+        else:
+            if not R.reduce(p):
+                raise ValueError(f"the condition {R.expr(p)} ≠ 0 is false for every parameter")
+            extra[f"{R.expr(p)} ≠ 0"] = None
+    return list(implied), list(extra)
+
+
+def step_conditions(step: Any, cond1: bool) -> tuple[list[str], list[str]]:
+    R = ring()
+    polys, outside = [], []
+    for e in step.conditions:
+        try:
+            polys.append(R.frac(e)[0])
+        except ValueError:
+            outside.append(f"{e} ≠ 0")
+    implied, extra = _classified(polys, cond1)
+    return implied, extra + outside
+
+
+def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str], list[str],
+                                                           str]:
+    """(all vanish?, implied, extra conditions, method) by reduction in the model's ring."""
+    R = ring()
+    try:
+        dens: list[Any] = []
+        ok = True
+        for z in zeros:
+            good, d = R.equal(z, 0)
+            ok = ok and good
+            dens += d
+        if not ok:
+            return False, [], [], "polynomial reduction in the model's ring"
+        implied, extra = _classified(dens, cond1)
+        return True, implied, extra, ("polynomial reduction modulo sin² + cos² − 1, cleared "
+                                      "denominators")
+    except ValueError:  # not a rational function of the model's generators
+        pass
+    r = prove_identity(sp.Matrix(zeros), 0, intervals=CONDITION_1 if cond1 else {})
+    verdict = True if r.proved else False if r.status is Status.REFUTED else None
+    return verdict, list(r.implied), list(r.conditions), "prove_identity"
+
+
+def _witness(e: sp.Expr) -> list[sp.Expr]:
+    num, den = sp.fraction(sp.together(e))
+    out: list[sp.Expr] = []
+    for part, k in ((num, 1), (den, -1)):
+        c, fs = sp.factor_list(part)
+        out.append(sp.Integer(c) ** k if c.is_Integer else c ** k)
+        out += [f ** (m * k) for f, m in fs]
+    return out
+
+
+def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
+                     ) -> tuple[bool | None, ProofResult | None]:
+    intervals = CONDITION_1 if cond1 else {}
+    if relation in ("==",):  # pragma: no cover - sign claims use the other relations
+        return None, None
+    signs = {">": [1], "<": [-1], ">=": [1], "<=": [-1], "!=": [1, -1]}[relation]
+    try:
+        witness = _witness(e)
+    except (sp.PolynomialError, ValueError, TypeError):
+        witness = None
+    for s in signs:
+        try:
+            r = prove_sign(e, s, witness, intervals=intervals)
+        except (ValueError, ArithmeticError):
+            continue
+        if r.proved:
+            return True, r
+    if relation in (">=", "<="):
+        ok, implied, extra, _ = prove_zero([e], cond1)
+        if ok:
+            return True, ProofResult(Status.PROVED, "identically zero", 0.0,
+                                     conditions=tuple(extra), implied=tuple(implied))
+    return None, None
+
+
+# -- exact replay at sample points (counterexamples) --------------------------------------
+def _sample(program: Program, rng: random.Random) -> dict[str, sp.Expr]:
+    pt: dict[str, sp.Expr] = {}
+    names = {p.name: p for p in program.params}
+    for i in ("1", "2"):
+        mu = rng.choice(_MUS)
+        if f"mu{i}" in names:
+            pt[f"mu{i}"] = mu
+        if f"xi{i}" in names:
+            pt[f"xi{i}"] = sp.atan(mu)
+        if f"phi{i}" in names:
+            pt[f"phi{i}"] = sp.pi * sp.Rational(rng.randint(1, 12), 12)
+    for p in program.params:
+        if p.name in pt:
+            continue
+        if p.domain == "angle":
+            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 12), 12)
+        elif p.domain == "half_angle":
+            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 5), 12)
+        elif p.domain == "nonnegative" and rng.random() < 0.2:
+            pt[p.name] = sp.Integer(0)
+        elif p.domain == "real":
+            pt[p.name] = rng.choice(_LENGTHS) * rng.choice((-1, 1))
+        else:
+            pt[p.name] = rng.choice(_LENGTHS)
+    return pt
+
+
+def _admissible(program: Program, pt: Mapping[str, sp.Expr]) -> bool:
+    return not violations({getattr(S, k): v for k, v in pt.items() if k in DOMAIN_WORDS})
+
+
+def replay_at(program: Program, point: Mapping[str, Any]) -> Construction:
+    """The program replayed exactly at ``point`` (parameter name -> exact value)."""
+    return replay(program, dict(point))
+
+
+def search(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr]],
+                                              bool | None],
+            tries: int = 40, seed: int = 2012) -> dict[str, str] | None:
+    """A point of the model where the file, replayed exactly, makes ``fails`` True."""
+    rng = random.Random(seed)
+    for _ in range(tries * 3):
+        pt = _sample(program, rng)
+        if not _admissible(program, pt):
+            continue
+        tries -= 1
+        if tries < 0:
+            break
+        try:
+            c = replay_at(program, pt)
+        except (GeometryError, InputError, ArithmeticError, ValueError):
+            continue
+        env: dict[str, Any] = {s.name: s.obj for s in c.steps}
+        env["$params"] = {p.symbol: pt[p.name] for p in program.params}
+        try:
+            hit = fails(env, pt)
+        except (KeyError, GeometryError, ArithmeticError, ValueError, TypeError):
+            continue
+        if hit:
+            return {k: str(v) for k, v in pt.items()}
+    return None
+
+
+def nonzero(v: sp.Expr) -> bool:
+    """``v`` (an exact number of a replay) is decided non-zero."""
+    return decide_zero(sp.sympify(v)) is False  # internal: exact values of a replay
+
+
+def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
+    def fails(env: dict[str, Any], pt: Any) -> bool:
+        zeros, nonzeros = claim_zeros(claim, env)
+        if any(decide_zero(sp.sympify(n)) is not False for n in nonzeros):
+            return False  # outside the claim's non-degeneracy conditions
+        return any(nonzero(z) for z in zeros)
+    return fails
+
+
+def sign_fails(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
+    def fails(env: dict[str, Any], pt: Any) -> bool:
+        s = decide_sign(sign_expr(claim, env))
+        if s is None:
+            return False
+        return {">": s <= 0, "<": s >= 0, ">=": s < 0, "<=": s > 0, "!=": s == 0}[claim.relation]
+    return fails
