@@ -47,6 +47,8 @@ def test_import_graspcompass_loads_no_heavy_module() -> None:
     ["export", "--fragment", "-o", "/no/x.svg"], ["recipe", "-o", "/no/x.gc"],
     ["verify", "--markdown", "/no/x.md"], ["worksheet", "-o", "/no/x.pdf"],
     ["worksheet", "-o", "x.png"], ["draw", "-o", "x.gif"], ["--out", "/no/such/folder"],
+    ["check", "/no/such/file.gc"], ["check", "x.gc", "--markdown", "/no/such/folder/r.md"],
+    ["check", "x.gc", "--draw", "cx.png"],
 ])
 def test_usage_errors_and_cheap_commands_load_no_heavy_module(argv: list[str]) -> None:
     code = f"from graspcompass.cli import main\nmain({argv!r})"

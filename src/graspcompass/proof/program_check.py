@@ -232,6 +232,8 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     else:
         zeros, nonzeros = claim_zeros(claim, env)
         ok, imp, ext, method = prove_zero(zeros, cond1)
+        if ok and any(prove_zero([n], cond1)[0] for n in nonzeros):
+            ok = None  # a condition that never holds (two parallel lines): not a proof
         implied += imp
         extra += ext + [f"{sp.factor(n)} ≠ 0" for n in nonzeros]
         fails = zeros_fail(claim)

@@ -41,9 +41,22 @@ from .certify_algebra import classify, ring
 from .model import violations
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
 
-__all__ = ["DOMAIN_WORDS", "CheckError", "claim_zeros", "coords", "nonzero", "prove_sign_claim",
-           "prove_zero", "replay_at", "search", "sign_expr", "sign_fails", "step_conditions",
-           "zeros_fail"]
+__all__ = [
+    "DOMAIN_WORDS",
+    "CheckError",
+    "claim_zeros",
+    "coords",
+    "nonzero",
+    "not_concurrent_at",
+    "prove_sign_claim",
+    "prove_zero",
+    "replay_at",
+    "search",
+    "sign_expr",
+    "sign_fails",
+    "step_conditions",
+    "zeros_fail",
+]
 
 #: The model's parameters and their domains (a file must declare them so).
 DOMAIN_WORDS = {"x1": "positive", "x2": "positive", "y": "nonnegative", "phi1": "angle",
@@ -285,8 +298,28 @@ def nonzero(v: sp.Expr) -> bool:
     return decide_zero(sp.sympify(v)) is False  # internal: exact values of a replay
 
 
+def _on(p: Point, line: Line) -> bool:
+    return decide_zero(Point(p.x - line.point.x, p.y - line.point.y).cross(line.direction)) \
+        is True
+
+
+def not_concurrent_at(lines: list[Line]) -> bool:
+    """Decided exactly: the lines (exact values) have no common point."""
+    for a, b in itertools.combinations(lines, 2):
+        if decide_zero(a.direction.cross(b.direction)) is False:
+            a0, b0 = a.coefficients(), b.coefficients()
+            det = a0[0] * b0[1] - a0[1] * b0[0]
+            p = Point((a0[1] * b0[2] - a0[2] * b0[1]) / det, (a0[2] * b0[0] - a0[0] * b0[2]) / det)
+            return not all(_on(p, ln) for ln in lines)
+    # all parallel: concurrent only if they are one line
+    return not all(_on(ln.point, lines[0]) for ln in lines)
+
+
 def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
+    """``fails(env, point)``: the claim is false in the exact replay ``env``."""
     def fails(env: dict[str, Any], pt: Any) -> bool:
+        if claim.kind == "concurrent":  # decided as it is stated: a common point
+            return not_concurrent_at([env[t.name] for t in claim.terms])
         zeros, nonzeros = claim_zeros(claim, env)
         if any(decide_zero(sp.sympify(n)) is not False for n in nonzeros):
             return False  # outside the claim's non-degeneracy conditions
@@ -295,6 +328,7 @@ def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
 
 
 def sign_fails(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
+    """``fails(env, point)``: the sign claim is false in the exact replay ``env``."""
     def fails(env: dict[str, Any], pt: Any) -> bool:
         s = decide_sign(sign_expr(claim, env))
         if s is None:
