@@ -389,6 +389,19 @@ def test_cli_json_markdown_and_draw(files, tmp_path: Path, capsys) -> None:
     assert "drew" in out.err
 
 
+def test_cli_timeout_stops_with_status_3(tmp_path: Path, capsys) -> None:
+    full = tmp_path / "paper.gc"
+    full.write_text(_TEXT)  # the symbolic circles and break points take seconds
+    assert cli.main(["check", str(full), "--timeout", "1", "-q"]) == 3
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--timeout" in err[0]
+
+
+def test_a_claim_on_an_object_made_only_for_numbers_is_undecided() -> None:
+    text = HEAD + "circle1 = circle_on_diameter O V1\nenv = envelope circle1\nclaim env == env\n"
+    assert check_program(parse(text)).claims[0].status is Status.UNDECIDED
+
+
 def test_check_reads_stdin() -> None:
     p = subprocess.run([sys.executable, "-m", "graspcompass", "check", "-", "-q"],
                        input=BASE + "claim collinear A M D\n", capture_output=True, text=True,

@@ -27,15 +27,56 @@ Examples
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-__all__ = ["MAX_FILE_BYTES", "read_file", "register", "run"]
+__all__ = ["DEFAULT_TIMEOUT", "MAX_FILE_BYTES", "CheckTimeout", "read_file", "register", "run"]
 
 #: Largest construction file read (bytes).
 MAX_FILE_BYTES = 1_000_000
+#: Default bound on the time of one check (seconds).
+DEFAULT_TIMEOUT = 600.0
+
+
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number of seconds, got {text!r}") from None
+    if not 1 <= value <= 86_400:
+        raise argparse.ArgumentTypeError(f"must be from 1 to 86400 seconds, got {text!r}")
+    return value
+
+
+@contextmanager
+def _time_limit(seconds: float) -> Iterator[None]:
+    """Raise :class:`CheckTimeout` after ``seconds`` (POSIX, main thread; else no limit)."""
+    if not hasattr(signal, "setitimer") or threading.current_thread() is not \
+            threading.main_thread():  # pragma: no cover
+        yield
+        return
+
+    def _stop(*_: object) -> None:
+        raise CheckTimeout(f"the check took longer than {seconds:g} s (--timeout)")
+
+    previous = signal.signal(signal.SIGALRM, _stop)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+class CheckTimeout(BaseException):
+    """The check ran out of time: nothing is decided (exit status 3).  A
+    :class:`BaseException`, like :class:`KeyboardInterrupt`, so that no
+    ``except Exception`` on the way can swallow it."""
 
 
 def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
@@ -66,6 +107,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                         "the paper's side by side (PNG, SVG or PDF)")
     c.add_argument("--steps", action="store_true",
                    help="list every step in the table (default: only the steps not proved)")
+    c.add_argument("--timeout", type=_seconds, default=DEFAULT_TIMEOUT, metavar="S",
+                   help=f"stop after S seconds with exit status 3 (default {DEFAULT_TIMEOUT:g}; "
+                        "a file can make the symbolic replay arbitrarily long)")
     c.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
                    help="no progress bar")
 
@@ -113,6 +157,9 @@ def _draw(program: Any, report: Any, path: Path) -> str:
 def run(args: argparse.Namespace) -> int:
     """Run ``graspcompass check``; returns the report's exit status (0, 1 or 3).
 
+    A check that runs longer than ``--timeout`` seconds stops with one line on
+    stderr and exit status 3 (undecided).
+
     Raises
     ------
     ValueError
@@ -139,9 +186,14 @@ def run(args: argparse.Namespace) -> int:
 
     program = parse(text, shown)
     quiet = getattr(args, "quiet", False) or args.json
-    with Progress(len(program.steps) + len(program.claims), "check", quiet=quiet) as bar:
-        report = check_program(program, args.against,
-                               progress=lambda done, total, name: bar.update(note=name))
+    try:
+        with _time_limit(args.timeout), Progress(len(program.steps) + len(program.claims),
+                                                 "check", quiet=quiet) as bar:
+            report = check_program(program, args.against,
+                                   progress=lambda done, total, name: bar.update(note=name))
+    except CheckTimeout as exc:
+        print(f"graspcompass: {exc}: nothing decided", file=sys.stderr)
+        return 3
     if markdown is not None:
         with writing(markdown):
             markdown.write_text(to_markdown(report), encoding="utf-8")
