@@ -120,7 +120,8 @@ INEQUALITIES: dict[int, Inequality] = {
 #: Fields of the structured array :func:`slip` returns for an array of float θ.
 #: ``contact``, ``side`` (+1 upper, −1 lower) and ``slide_x``, ``slide_y`` are 0 in the
 #: zero-force region (n = 0); ``runner_up`` is −1 (and ``margin`` 0) if every index ties;
-#: ``binding[j]`` is True for each index j = 0..4 attaining k_grasp.
+#: ``binding[j]`` is True for each index j = 0..4 attaining k_grasp (both j = 1, 3 or
+#: both j = 2, 4: that contact carries no force, see :attr:`Slip.unloaded`).
 SLIP_DTYPE = np.dtype([
     ("theta", "f8"), ("n", "i1"), ("contact", "i1"), ("side", "i1"),
     ("slide_x", "f8"), ("slide_y", "f8"), ("k_grasp", "f8"), ("runner_up", "i1"),
@@ -192,6 +193,15 @@ class Slip:
         return len(self.binding) > 1
 
     @property
+    def unloaded(self) -> tuple[int, ...]:
+        """Contacts whose two cone sides bind together: ``μ_i N_i ∓ F_i = 0`` both, so
+        ``N_i = F_i = 0``; such a contact carries no force and is about to lose contact
+        rather than slide one way (e.g. where e(θ) is along the line from O to the other
+        contact, which then carries the external force alone)."""
+        return tuple(i for i, pair in ((1, (1, 3)), (2, (2, 4)))
+                     if set(pair) <= set(self.binding))
+
+    @property
     def inequality(self) -> Inequality | None:
         """The binding condition (:data:`INEQUALITIES`), None in the zero-force region."""
         return INEQUALITIES.get(self.n)
@@ -227,6 +237,9 @@ class Slip:
         also = ("" if not ties else " Tie: " + ", ".join(
             "k = 0" if j == 0 else f"condition {INEQUALITIES[j].equation} (k{j})"
             for j in ties) + " binds as well.")
+        for i in self.unloaded:
+            also += (f" Both sides of the cone at P{i} bind: N{i} = F{i} = 0, contact {i} "
+                     "carries no force and is about to lose contact rather than slide.")
         if self.inequality is None:
             return ("zero-force region: k_grasp = 0, the external force is resisted with no "
                     "internal force (the contact forces F_T of eq. (13) lie inside both "
