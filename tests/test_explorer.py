@@ -119,9 +119,9 @@ def test_invalid_position_shows_the_failing_inequality(ex):
     good = drawn_envelope(ex).copy()
     to = ex.ax.transData.transform
     mouse(ex, "button_press_event", to((2.0, 1.0)))
-    mouse(ex, "motion_notify_event", to((-0.5, 1.0)))  # P1 left of the y-axis
+    mouse(ex, "motion_notify_event", to((-2.5, 1.0)))  # P1 left of P2 (x1 + x2 < 0)
     assert ex.message.get_visible()
-    assert "x1 = " in ex.message.get_text() and "must be positive" in ex.message.get_text()
+    assert "x1 + x2 = " in ex.message.get_text() and "must be positive" in ex.message.get_text()
     mouse(ex, "motion_notify_event", to((2.0, 1.0)))  # back: the message goes
     mouse(ex, "button_release_event", to((2.0, 1.0)))
     assert not ex.message.get_visible()

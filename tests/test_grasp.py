@@ -416,10 +416,11 @@ def _args(**over):
 
 BAD = [
     # (kwargs, exception, substrings of the message)
-    (_args(x1=0), InvalidGraspError, ["x1 = 0", "positive"]),
-    (_args(x1=-1.5), InvalidGraspError, ["x1", "-1.5", "positive"]),
-    (_args(x2="-3/4"), InvalidGraspError, ["x2 = -3/4", "positive"]),
-    (_args(x2=0.0), InvalidGraspError, ["x2", "positive"]),
+    # x1 <= 0 or x2 <= 0 alone is a grasp (issue 13 §1); P1 must lie right of P2
+    (_args(x1=-2), InvalidGraspError, ["x1 + x2 = 0", "positive"]),
+    (_args(x1=-3.5), InvalidGraspError, ["x1 + x2", "-1.5", "positive"]),
+    (_args(x2="-11/4"), InvalidGraspError, ["x1 + x2 = -3/4", "positive"]),
+    (_args(x2=-2.0), InvalidGraspError, ["x1 + x2", "positive"]),
     (_args(y="-1/2"), InvalidGraspError, ["y = -1/2", "non-negative"]),
     (_args(phi1=0), InvalidGraspError, ["contact 1", "φ1", "positive"]),
     (_args(phi1="-pi/4"), InvalidGraspError, ["contact 1", "φ1", "-0.25π"]),

@@ -172,7 +172,10 @@ class Grasp:
     Parameters
     ----------
     x1, x2, y : number or str
-        Contacts ``P1 = (x1, y)``, ``P2 = (-x2, y)`` with ``x1, x2 > 0``, ``y >= 0``.
+        Contacts ``P1 = (x1, y)``, ``P2 = (-x2, y)`` with ``x1 + x2 > 0``, ``y >= 0``.
+        The paper (§2.2.1) takes ``x1, x2 > 0``; eqs. (12)-(39) hold as well when the
+        centre of mass projects beyond a contact (``x1 <= 0`` or ``x2 <= 0``): they
+        only divide by ``x1 + x2``.  A grasp with symbols keeps ``x1, x2 > 0``.
     phi1, phi2 : number or str
         Normal directions: φ1 clockwise, φ2 counter-clockwise from the negative
         y-axis, ``0 < φi <= π``.
@@ -337,11 +340,9 @@ class Grasp:
     # -- validation -------------------------------------------------------------
     def _validate(self) -> None:
         pi = sp.pi
-        checks: list[tuple[Any, ...]] = [
-            (self.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"),
-            (self.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"),
-            (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"),
-        ]
+        checks: list[tuple[Any, ...]] = _length_checks(self)
+        checks.append(
+            (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"))
         for i, phi in ((1, self.phi1), (2, self.phi2)):
             q = _pi_multiple(phi)
             if q is not None and 0 < q <= 1:
@@ -767,6 +768,29 @@ class Grasp:
 _REPLACEABLE = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2", "shape", "title")
 
 _HALF_MAX = 0.5 * 1.7976931348623157e308  # k_n = S_n sin θ - C_n cos θ cannot overflow below
+
+
+def _length_checks(g: Grasp) -> list[tuple[Any, ...]]:
+    """The domain of x1, x2: ``x1 + x2 > 0`` for a grasp of numbers (issue 13 §1).
+
+    Eqs. (12)-(39) only divide by x1 + x2 (det L L^T = 2 (x1 + x2)^2), so they hold
+    when the centre of mass projects beyond a contact, x1 <= 0 or x2 <= 0.  A grasp
+    with symbols keeps the paper's x1 > 0, x2 > 0 (§2.2.1): the proof checker's
+    symbolic verdicts state those domains as hypotheses.
+    """
+    if any(v.free_symbols for v in g.params.values()):
+        beyond = (" for a grasp with symbols (the symbolic proofs assume the paper's domain "
+                  "x1, x2 > 0 of §2.2.1; give every parameter a value to place the centre "
+                  "of mass beyond a contact)")
+        return [
+            (g.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"
+             + beyond),
+            (g.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"
+             + beyond),
+        ]
+    return [(g.x1 + g.x2, True, "x1 + x2 = {v} must be positive: P1 = (x1, y) lies right of "
+             "P2 = (-x2, y) (x1 <= 0 or x2 <= 0 alone is allowed: the centre of mass then "
+             "projects onto the line through the contacts beyond a contact)")]
 
 
 def _is_numeric(theta: Any) -> bool:

@@ -2,7 +2,8 @@
 
 The paper works in the object frame of §2.2.1 (Fig. 2): the origin at the centre
 of mass O, the y-axis perpendicular to the line through the two contacts,
-``P1 = (x1, y)`` and ``P2 = (-x2, y)`` with ``x1, x2 > 0`` and ``y >= 0``, the
+``P1 = (x1, y)`` and ``P2 = (-x2, y)`` with ``x1, x2 > 0`` and ``y >= 0`` (here
+``x1 + x2 > 0``: the centre of mass may project beyond a contact, issue 13 §1), the
 inward normal at P1 at the angle φ1 clockwise from the negative y-axis,
 ``n1 = (-sin φ1, -cos φ1)``, at P2 at φ2 counter-clockwise,
 ``n2 = (sin φ2, -cos φ2)`` (the columns of L in eq. (5)).
@@ -18,7 +19,7 @@ and forces computed in the paper's frame are read in the world frame.
 
 How the frame is chosen.  The x-axis runs along the line through the contacts,
 the y-axis is its counter-clockwise perpendicular.  Of the two directions of the
-line, the one that gives the contacts ``y >= 0`` is taken: P1 (``x > 0``) is the
+line, the one that gives the contacts ``y >= 0`` is taken: P1 is the
 contact that makes the line's direction P2 → P1 point along +x with the centre
 of mass below the line.  When the centre of mass lies on the line (``y = 0``)
 both directions qualify and P1 is the first contact given.  The friction of a
@@ -101,7 +102,8 @@ class NormalOutwardError(FrictionConeError):
 
 
 class CenterOfMassError(WorldGraspError):
-    """The centre of mass does not project strictly between the contacts (x1 or x2 <= 0)."""
+    """Not raised any more: the centre of mass may project beyond a contact (x1 <= 0 or
+    x2 <= 0, issue 13 §1).  Kept so that code catching it keeps working."""
 
 
 class OutlineError(WorldGraspError):
@@ -522,7 +524,7 @@ def place_grasp(
         Subclasses name the contact: :class:`FrictionConeError` (condition (1)),
         :class:`NormalOutwardError`, :class:`NormalNotUnitError`,
         :class:`ContactOffOutlineError`, :class:`VertexContactError`,
-        :class:`CenterOfMassError`, :class:`CoincidentContactsError`,
+        :class:`CoincidentContactsError`,
         :class:`OutlineError`.
 
     Examples
@@ -642,14 +644,8 @@ def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
     y = canon(_dot(_sub(p1, c), ey)) if exact else abs(_dot(_sub(p1, c), ey))
     n1 = _c((_dot(nrm[order[0]], ex), _dot(nrm[order[0]], ey)), exact)
     n2 = _c((_dot(nrm[order[1]], ex), _dot(nrm[order[1]], ey)), exact)
-    for x, first, second in ((x1, order[0], order[1]), (x2, order[1], order[0])):
-        if _sign(x, exact) != 1:
-            raise CenterOfMassError(
-                f"the centre of mass {_pt(c)} projects onto the line through the contacts "
-                f"{'at' if _sign(x, exact) == 0 else 'beyond'} contact {names[first]} at "
-                f"{_pt(pts[first])}, not strictly between contact {names[first]} and contact "
-                f"{names[second]}: the paper's frame (§2.2.1) assumes x1 > 0 and x2 > 0, and "
-                "Grasp refuses the others for now (issue 13 §1)")
+    # x1 + x2 = |P1 − P2| > 0; x1 <= 0 or x2 <= 0 (the centre of mass projecting beyond
+    # a contact) is a grasp of the model too: eqs. (12)-(39) only divide by x1 + x2
     atan2 = sp.atan2 if exact else math.atan2
     phi1 = atan2(-n1[0], -n1[1])  # n1 = (-sin φ1, -cos φ1)
     phi2 = atan2(n2[0], -n2[1])  # n2 = (sin φ2, -cos φ2)
