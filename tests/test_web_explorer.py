@@ -345,23 +345,24 @@ def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
     # back to a valid grasp
     page.js("graspcompass.set({phi2: 1.2, mu2: 1.0})")
     assert page.page.is_hidden("#gc-error") and page.get("V1") is not None
-    # drag P1 across the y-axis: x1 < 0 is no grasp either
+    # drag P1 past P2: x1 + x2 < 0 is no grasp (x1 < 0 alone is: the centre of mass
+    # then lies beyond a contact, issue 13 §1)
     x0, y0 = page.js("graspcompass.toScreen('P1')")
-    ox, _ = page.js("graspcompass.toScreen('O')")
+    x2s, _ = page.js("graspcompass.toScreen('P2')")
     page.page.mouse.move(x0, y0)
     page.page.mouse.down()
-    page.page.mouse.move(ox - 40, y0, steps=6)
+    page.page.mouse.move(x2s - 40, y0, steps=6)
     page.page.mouse.up()
     p = page.params()
-    assert p["x1"] < 0
+    assert p["x1"] + p["x2"] < 0
     assert page.page.inner_text("#gc-error-text") == python_message(p)
-    assert page.page.inner_text("#gc-error-text").startswith("x1 = -")
+    assert page.page.inner_text("#gc-error-text").startswith("x1 + x2 = -")
 
 
 def test_messages_agree_with_python_on_many_values(page: Page) -> None:
     """The page's wording of every check, against Grasp for the same floats."""
     base = dict(x1=1.0, x2=1.5, y=0.5, phi1=1.2, phi2=1.4, mu1=0.8, mu2=0.9)
-    cases = [dict(x1=-0.3), dict(x2=-1e-5), dict(y=-123456.7), dict(y=-2e15), dict(mu1=-0.0001),
+    cases = [dict(x1=-1.6), dict(x2=-1.5), dict(x1=-0.3, x2=0.2999), dict(y=-123456.7), dict(y=-2e15), dict(mu1=-0.0001),
              dict(mu2=0.0), dict(phi1=0.0), dict(phi2=3.3), dict(phi1=0.5), dict(phi1=0.3,
              mu1=3.0), dict(phi2=2.9, mu2=0.1), dict(phi2=4.5 - math.atan(9.0), mu2=9.0),
              dict(x1=math.nan), dict(mu2=math.inf), dict(y=-math.inf)]

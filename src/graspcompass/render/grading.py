@@ -43,6 +43,17 @@ def _highlight(artists: list[Any], theme: Theme) -> None:
                     pass
 
 
+def _points(obj: Any) -> list[tuple[float, float]]:
+    """Points that show ``obj``: a point itself; a circle's box corners."""
+    try:
+        if hasattr(obj, "center"):
+            (x, y), r = obj.center.evalf(), float(obj.radius)
+            return [(x - r, y - r), (x + r, y + r)]
+        return [obj.evalf()]
+    except (AttributeError, TypeError, ValueError):
+        return []
+
+
 def _short(obj: Any) -> str:
     """``≈ (x, y)`` to 4 digits for a point, the centre and radius of a circle."""
     try:
@@ -80,9 +91,22 @@ def figure_counterexample(program: Program, name: str, point: Mapping[str, Any],
     mine, paper = replay(program, grasp), internal_force_diagram(grasp)
     fig = Figure(figsize=(12, 6), layout="constrained")
     axes = fig.subplots(1, 2)
-    for ax, c, who in ((axes[0], mine, "the file"), (axes[1], paper, "the paper (§3.3)")):
-        arts = draw_construction(c, ax=ax, theme=theme)
-        _highlight(arts.get(name, []), theme)
+    panels = ((axes[0], mine, "the file"), (axes[1], paper, "the paper (§3.3)"))
+    for ax, c, _ in panels:
+        upto = c.names.index(name) if c is paper and name in c else None  # up to the object
+        _highlight(draw_construction(c, step=upto, ax=ax, theme=theme).get(name, []), theme)
+    # one view box: the file's, widened to show the paper's object too
+    (x0, x1), (y0, y1) = axes[0].get_xlim(), axes[0].get_ylim()
+    for px, py in _points(paper[name]) if name in paper else ():
+        pad = 0.1 * max(x1 - x0, y1 - y0)
+        x0, x1, y0, y1 = min(x0, px - pad), max(x1, px + pad), min(y0, py - pad), max(y1, py + pad)
+    for ax, c, who in panels:
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        for art in (*ax.texts, *ax.patches, *ax.lines, *ax.collections):
+            art.set_clip_on(True)  # labels and arrows of objects outside the view stay out
+            if hasattr(art, "set_annotation_clip"):
+                art.set_annotation_clip(True)
         ax.set_title(f"{who}: {name} {_short(c[name]) if name in c else 'is not made'}",
                      fontsize=theme.font_size)
     values = ", ".join(f"{k} = {v}" for k, v in point.items())

@@ -118,11 +118,10 @@
         return `contact ${i}: the friction coefficient μ${i} = ${fmtValue(mu)} must be positive`;
       }
     }
-    if (!(p.x1 > 0)) {
-      return `x1 = ${fmtValue(p.x1)} must be positive: P1 = (x1, y) lies right of the y-axis`;
-    }
-    if (!(p.x2 > 0)) {
-      return `x2 = ${fmtValue(p.x2)} must be positive: P2 = (-x2, y) lies left of the y-axis`;
+    if (!(p.x1 + p.x2 > 0)) {
+      return `x1 + x2 = ${fmtValue(p.x1 + p.x2)} must be positive: P1 = (x1, y) lies right ` +
+        "of P2 = (-x2, y) (x1 <= 0 or x2 <= 0 alone is allowed: the centre of mass then " +
+        "projects onto the line through the contacts beyond a contact)";
     }
     if (p.y < 0) {
       return `y = ${fmtValue(p.y)} must be non-negative (the frame of §2.2.1 puts y >= 0)`;
