@@ -102,9 +102,8 @@ def test_every_step_appears_in_order(c1a, anim):
     seq = [tl.at(f).step for f in range(anim.frame_count)]
     runs = [s for i, s in enumerate(seq) if i == 0 or s != seq[i - 1]]
     assert runs == list(range(len(c1a.steps)))
-    for s in c1a.steps:  # the caption names the step and the paper's reference
+    for s in c1a.steps:  # the caption gives the paper's reference
         text = anim.caption_at(tl.frames_of_step(s.index)[0])
-        assert f"Step {s.index + 1}/{len(c1a.steps)}" in text
         assert s.ref.replace(" step ", " ") in text.replace("\n", " ")
     perp1 = anim.caption_at(tl.frames_of_step(c1a.step("perp1").index)[0]).replace("\n", " ")
     assert "§3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1" in perp1
@@ -200,7 +199,7 @@ def test_gif_opens_with_the_frames(anim, frames, tmp_path):
     distinct = 1 + sum(not np.array_equal(a, b) for a, b in pairwise(frames))
     with Image.open(out) as im:
         assert im.size == (w, h)
-        assert im.n_frames == distinct >= anim.frame_count - 3
+        assert im.n_frames == distinct >= 0.9 * anim.frame_count
         durations = []
         for i in range(im.n_frames):
             im.seek(i)
@@ -391,7 +390,9 @@ def test_cli_animate(tmp_path, capsys):
 
 
 def test_main_job_animation(tmp_path, c1a):
+    """The main job's GIF: at least 640 pixels wide (issue 12), every frame in the file."""
     out = write_main_animation(c1a, tmp_path, quiet=True)
     assert out == tmp_path / MAIN_ANIMATION
     with Image.open(out) as im:
+        assert im.size[0] >= 640
         assert im.n_frames > 8 * len(c1a.steps)

@@ -21,7 +21,7 @@ Examples
 >>> anim.frame_count == 2 * len(c.steps) + 9 + 1
 True
 >>> print(anim.caption_at(anim.timeline.frames_of_step(13)[0]))
-Step 14/47 · perpendicular
+Step 13 of 0–46 · perpendicular
 §3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1
 """
 
@@ -29,7 +29,6 @@ from __future__ import annotations
 
 import math
 import os
-import textwrap
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -38,31 +37,34 @@ import numpy as np
 from matplotlib.animation import FuncAnimation
 from matplotlib.artist import Artist
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.colors import to_rgba
+from matplotlib.colors import to_rgb, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 from matplotlib.text import Annotation, Text
+from PIL import Image
 
-from ..layout import numeric_objects
+from ..layout import numeric_objects, tex
 from .figure import draw_construction
-from .theme import DEFAULT_THEME, Theme
+from .theme import DEFAULT_THEME, MIN_CONTRAST, QUALITIES, Quality, Theme, contrast_ratio
 from .timeline import (
+    AnimationError,
     Timeline,
     blend,
     check_fps,
     jshtml,
     palette_sample,
+    reading_frames,
     save_frames,
     write_animation,
 )
 
 __all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_construction",
-           "save_frames"]
+           "dim_alpha", "save_frames"]
 
-#: Position of the diagram axes in the construction animation (figure fraction).
+#: Where the diagram axes start (figure fraction); the layout then moves them so that the
+#: longest caption fits below (``standard``) or beside (``lecture``) the diagram.
 AX_RECT = (0.1, 0.2, 0.86, 0.72)
-_CAPTION_Y = 0.125
 
 
 class FrameAnimation:
@@ -92,9 +94,14 @@ class FrameAnimation:
     def _group_key(self, segment: int) -> Any:
         return segment
 
-    def _crossfade(self, segment: int) -> slice | None:
-        """Image rows shown as a cross-fade of the frames around the segment, or None."""
+    def _crossfade(self, segment: int) -> Any:
+        """The image region (an index of the RGB array) shown as a cross-fade of the frames
+        around the segment, or None."""
         return None
+
+    def _still(self, frame: int) -> bool:
+        """True if ``frame`` is the same picture as the frame before it (nothing moves)."""
+        return False
 
     def key_frames(self) -> list[tuple[int, str]]:
         """``(frame, name)`` of the frames :func:`save_frames` writes by default."""
@@ -104,6 +111,13 @@ class FrameAnimation:
     def frame_count(self) -> int:
         """Number of frames."""
         return self.timeline.frame_count
+
+    @property
+    def drawn_frames(self) -> int:
+        """Frames that are drawn: all but the stills, which repeat the frame before."""
+        tl = self.timeline
+        return sum(1 for i, seg in enumerate(tl.segments) for f in tl.segment_range(i)
+                   if f == tl.starts[i] or not self._still(f))
 
     def update(self, frame: int) -> list[Artist]:
         """Set the artists for ``frame``; the function of :attr:`animation`."""
@@ -126,7 +140,11 @@ class FrameAnimation:
         return self._buffer()
 
     def _buffer(self) -> np.ndarray:
-        return np.ascontiguousarray(np.asarray(self._canvas.buffer_rgba())[..., :3])
+        """The canvas as a new RGB array (Pillow drops the alpha channel twice as fast as a
+        strided numpy copy)."""
+        w, h = self._canvas.get_width_height(physical=True)
+        rgba = Image.frombuffer("RGBA", (w, h), self._canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+        return np.asarray(rgba.convert("RGB"))
 
     def iter_frames(self) -> Iterator[np.ndarray]:
         """Every frame in order as RGB arrays, drawn in layers by blitting.
@@ -162,6 +180,9 @@ class FrameAnimation:
                 movers = [a for a in dynamic if id(a) in moving]
                 background = self._background(i, frames, resting, base)
                 for f in frames:
+                    if last is not None and f > frames.start and self._still(f):
+                        yield last
+                        continue
                     self._apply(f)
                     canvas.restore_region(background)
                     self._draw(movers)
@@ -266,49 +287,226 @@ def _tint(a: Any, s: dict[str, Any], color: Any, widen: float) -> None:
 
 
 # -- the construction ---------------------------------------------------------------------------
+def _inks(a: Any, s: dict[str, Any]) -> list[Any]:
+    """The colours ``a`` draws lines, markers or glyphs with (not its fills)."""
+    out: list[Any] = []
+    if isinstance(a, Line2D):
+        if a.get_linestyle() not in ("None", "none", "", " "):
+            out.append(s["color"])
+        if a.get_marker() not in (None, "None", "none", "", " "):
+            out += [s["mec"]] + ([s["mfc"]] if to_rgba(s["mfc"])[3] > 0 and
+                                 to_rgb(s["mfc"]) != (1.0, 1.0, 1.0) else [])
+    elif isinstance(a, Patch):
+        if s["lw"] > 0 and to_rgba(s["ec"])[3] > 0:
+            out.append(s["ec"])
+    if isinstance(a, Text) and a.get_text():
+        out.append(s["color"])
+    if "arrow" in s:
+        out += _inks(a.arrow_patch, s["arrow"])
+    return out
+
+
+def dim_alpha(colors: list[Any], background: Any, ratio: float, floor: float) -> float:
+    """The least opacity in [``floor``, 1] at which every colour of ``colors``, laid over
+    ``background``, keeps the contrast ``ratio`` (WCAG 2.1) against it; 1 if one of them
+    has less even when opaque.
+
+    >>> round(dim_alpha(["black"], "white", 3.0, 0.3), 2)
+    0.42
+    >>> dim_alpha(["#ffd60a"], "white", 3.0, 0.3)  # too light to start with
+    1.0
+    """
+    bg = np.array(to_rgb(background))
+    alpha = float(floor)
+    for c in colors:
+        rgba = to_rgba(c)
+        rgb, own = np.array(rgba[:3]), rgba[3]
+        if contrast_ratio(own * rgb + (1 - own) * bg, bg) < ratio:
+            return 1.0
+        lo, hi = alpha, 1.0
+        if contrast_ratio(lo * own * rgb + (1 - lo * own) * bg, bg) >= ratio:
+            continue
+        for _ in range(40):  # the contrast grows with the opacity
+            mid = (lo + hi) / 2
+            if contrast_ratio(mid * own * rgb + (1 - mid * own) * bg, bg) >= ratio:
+                hi = mid
+            else:
+                lo = mid
+        alpha = hi
+    return alpha
+
+
+def _wrap(text: str, width: float, measure: Any) -> str:
+    """``text`` broken at spaces into lines no wider than ``width`` pixels; ``measure(s)``
+    is the width of ``s`` as drawn."""
+    lines: list[str] = []
+    for para in text.split("\n"):
+        line = ""
+        for word in para.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and measure(trial) > width:
+                lines.append(line)
+                line = word
+            else:
+                line = trial
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def _text_width(renderer: Any, prop: Any) -> Any:
+    """A fast measure of text widths in pixels: the sum of the characters' advances
+    (measured once each), 3 % wider for kerning and hinting."""
+    cache: dict[str, float] = {}
+
+    def measure(s: str) -> float:
+        total = 0.0
+        for ch in s:
+            if ch not in cache:
+                cache[ch] = renderer.get_text_width_height_descent(f"|{ch}|", prop, False)[0] \
+                    - renderer.get_text_width_height_descent("||", prop, False)[0]
+            total += cache[ch]
+        return 1.03 * total
+
+    return measure
+
+
+def _quality(quality: str | Quality) -> Quality:
+    if isinstance(quality, Quality):
+        return quality
+    if quality not in QUALITIES:
+        raise AnimationError(f"unknown quality {quality!r}; use one of {', '.join(QUALITIES)}")
+    return QUALITIES[quality]
+
+
 class ConstructionAnimation(FrameAnimation):
     """The construction of §3.3 replayed step by step; see :func:`animate_construction`."""
 
-    def __init__(self, construction: Any, fps: float = 20, frames_per_step: int = 8,
-                 pause_frames: int = 12, hold_frames: int = 20, theme: Theme = DEFAULT_THEME,
-                 figsize: tuple[float, float] = (5.0, 5.6), dpi: float = 80,
-                 labels: bool = True, rate: str = "smoothstep", dim: float = 0.3) -> None:
+    def __init__(self, construction: Any, fps: float | None = None,
+                 frames_per_step: int | None = None, pause_frames: int | None = None,
+                 hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
+                 figsize: tuple[float, float] | None = None, dpi: float | None = None,
+                 labels: bool = True, rate: str = "smoothstep", dim: float = 0.3,
+                 quality: str | Quality = "standard", caption_seconds: float | None = None,
+                 reading_rate: float | None = None) -> None:
+        q = self.quality = _quality(quality)
+        fps = check_fps(q.fps if fps is None else fps)
+        fpstep = q.frames_per_step if frames_per_step is None else frames_per_step
+        pause = q.frames(q.pause_seconds, fps) if pause_frames is None else pause_frames
+        hold = q.frames(q.hold_seconds, fps) if hold_frames is None else hold_frames
+        figsize = q.figsize if figsize is None else figsize
+        dpi = q.dpi if dpi is None else dpi
+        self.caption_seconds = q.caption_seconds if caption_seconds is None else caption_seconds
+        self.reading_rate = q.reading_rate if reading_rate is None else reading_rate
+        caption_pt = q.caption_size * theme.font_size / DEFAULT_THEME.font_size
+        theme = theme.scaled(q.scale) if q.scale != 1 else theme
         self.construction, self.theme, self.dim = construction, theme, float(dim)
         steps = construction.steps
-        timeline = Timeline.from_keys([s.key for s in steps], frames_per_step, pause_frames,
-                                      hold_frames, rate)
+        self._texts = [self._caption_text(s) for s in steps]
+        self._hold_text = self._caption_text(None)
+        least = None
+        if self.caption_seconds > 0 or self.reading_rate > 0:
+            least = [reading_frames(t, fps, self.caption_seconds, self.reading_rate)
+                     for t in self._texts]
+            if hold:
+                hold = max(hold, reading_frames(self._hold_text, fps, self.caption_seconds,
+                                                self.reading_rate))
+        timeline = Timeline.from_keys([s.key for s in steps], fpstep, pause, hold, rate,
+                                      least_frames=least)
         super().__init__(Figure(figsize=figsize, dpi=dpi), timeline, fps)
         fig = self.figure
         self.axes = ax = fig.add_axes(AX_RECT)
+        self._layout(q.layout, caption_pt)
         self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=labels)
         ax.tick_params(labelsize=theme.font_size * 0.7)
         self._num = numeric_objects(construction)
-        # each artist belongs to the first step naming it (a shared label "O = O_M" to O)
+        # each artist belongs to the first step naming it; a label shared by coincident
+        # points ("O = O_M = Y_4") shows only the names made so far
+        owners: dict[int, list[str]] = {}
+        for s in steps:
+            for a in arts.get(s.name, []):
+                owners.setdefault(id(a), []).append(s.name)
         self._items: list[list[tuple[Artist, str, dict[str, Any]]]] = [[] for _ in steps]
+        self._shared: list[tuple[Artist, list[tuple[int, str]], dict[str, Any]]] = []
         seen: set[int] = set()
         for s in steps:
             for a in arts.get(s.name, []):
-                if id(a) not in seen:
-                    seen.add(id(a))
-                    self._items[s.index].append((a, self._role(a, s), _snap(a)))
+                if id(a) in seen:
+                    continue
+                seen.add(id(a))
+                role = self._role(a, s)
+                if role == "label" and len(owners[id(a)]) > 1:
+                    self._shared.append((a, self._label_parts(a, owners[id(a)]), _snap(a)))
+                else:
+                    self._items[s.index].append((a, role, _snap(a)))
+        bg = ax.get_facecolor()
+        self._dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text" if r == "label" else
+                                                               "graphics"], self.dim)
+                      if r != "fill" else self.dim
+                      for items in self._items for a, r, sn in items]
+        self._shared_dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text"], self.dim)
+                             for a, _, sn in self._shared]
         hl, thin = theme.highlight_color, theme.thin_width
         self._aid = ax.plot([], [], color=hl, lw=thin * 1.5, ls=(0, (3, 2)), zorder=6)[0]
         self._arc = ax.plot([], [], color=hl, zorder=6)[0]
-        self._arm = ax.plot([], [], color=hl, lw=thin * 1.5, marker="o", ms=3, markevery=[0],
-                            zorder=6.5)[0]
+        self._arm = ax.plot([], [], color=hl, lw=thin * 1.5, marker="o", ms=theme.point_size * 0.75,
+                            markevery=[0], zorder=6.5)[0]
         self._halo = ax.plot([], [], "o", mfc="none", mec=hl, zorder=7)[0]
         self._aids = (self._aid, self._arc, self._arm, self._halo)
-        fig.text(0.5, 0.985, getattr(construction.grasp, "title", None) or "", ha="center",
-                 va="top", fontsize=theme.font_size * 0.8)
-        self._caption = fig.text(0.03, _CAPTION_Y, "", va="top", linespacing=1.4,
-                                 fontsize=theme.font_size * 0.85)
-        self._bar = fig.add_artist(Rectangle((0, 0), 0, 0.012, transform=fig.transFigure,
-                                             color=hl, zorder=10))
-        self._wrap = max(30, int(figsize[0] * 72 / (0.56 * theme.font_size * 0.85)))
-        self._keys: list[Any] = [None] * len(seen)
+        self._keys: list[Any] = [None] * len(self._dimf)
         self._layer: tuple[Any, int, Any] | None = None
         self._dynamic = [a for items in self._items for a, _, _ in items]
+        self._dynamic += [a for a, _, _ in self._shared]
         self._dynamic += [*self._aids, self._caption, self._bar]
+
+    # -- layout -------------------------------------------------------------------------------
+    def _layout(self, layout: str, caption_pt: float) -> None:
+        """Place the title, the caption, the progress bar and the diagram so that the
+        longest caption fits whole (measured as drawn)."""
+        fig, ax, th = self.figure, self.axes, self.theme
+        if layout not in ("below", "side"):
+            raise AnimationError(f"unknown layout {layout!r}; use 'below' or 'side'")
+        self.layout = layout
+        W, H = fig.get_size_inches() * fig.dpi
+        renderer = self._canvas.get_renderer()
+        px = fig.dpi / 72.0
+        title_pt = th.font_size * 0.8 * (1.3 if layout == "side" else 1.0)
+        title = fig.text(0.5, 1 - 0.012 * W / H, getattr(self.construction.grasp, "title", None)
+                         or "", ha="center", va="top", fontsize=title_pt)
+        bar_h = max(0.012, 4.0 / H) if layout == "side" else 0.012
+        self._bar = fig.add_artist(Rectangle((0, 0), 0, bar_h, transform=fig.transFigure,
+                                             color=th.highlight_color, zorder=10))
+        margin = max(0.03 * W, 4.0)
+        tick = th.font_size * 0.7 * px * 1.6  # the tick labels' room
+        title_h = title_pt * px * 1.5 + 0.012 * W
+        if layout == "below":
+            width = W - 2 * margin
+            x_cap = margin
+        else:
+            side = H - title_h - bar_h * H - tick - 2 * margin  # a square diagram on the left
+            ax.set_position((margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H,
+                             side / W, side / H))
+            x_cap = margin * 1.6 + tick + side + 2.5 * margin
+            width = W - x_cap - margin
+        self._caption = fig.text(x_cap / W, 0.5, "", va="top", linespacing=1.4,
+                                 fontsize=caption_pt, fontweight="normal")
+        measure = _text_width(renderer, self._caption.get_fontproperties())
+        self._wrapped = [_wrap(t, width, measure) for t in self._texts]
+        self._hold_wrapped = _wrap(self._hold_text, width, measure)
+        tallest = 0.0
+        for t in {*self._wrapped, self._hold_wrapped}:
+            self._caption.set_text(t)
+            tallest = max(tallest, self._caption.get_window_extent(renderer).height)
+        self._caption.set_text("")
+        if layout == "below":
+            top = bar_h * H + 0.6 * margin + tallest  # the caption's top, in pixels
+            self._caption.set_y(top / H)
+            bottom = top + 0.4 * margin + tick
+            ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
+            self._fade_region: Any = np.s_[:int(H - top - 2)]
+        else:
+            self._caption.set_y(1 - title_h / H - margin / H)
+            self._fade_region = np.s_[:, :int(x_cap - margin)]
+        self._title = title
 
     @staticmethod
     def _role(a: Artist, s: Any) -> str:
@@ -322,39 +520,63 @@ class ConstructionAnimation(FrameAnimation):
             return "trace"
         return "line" if s.kind == "line" and a.get_linestyle() != "None" else "marker"
 
+    def _label_parts(self, a: Any, names: list[str]) -> list[tuple[int, str]]:
+        """The parts of a shared label ``$A = B$``, each with the step making its point."""
+        index = {s.name: s.index for s in self.construction.steps}
+        by_tex = {tex(n, math=False): n for n in names}
+        parts = a.get_text().strip("$").split(" = ")
+        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), p)
+                for p in parts]
+
+    # -- captions -----------------------------------------------------------------------------
+    def _caption_text(self, s: Any) -> str:
+        """Head and body of a step's caption (``None``: the final hold), not yet wrapped.
+
+        The step numbers are the protocol's (``graspcompass steps``): 0 to len − 1.
+        """
+        if s is None:
+            return ("The internal force diagram (Fig. 5)\nin the direction e(θ) of the "
+                    "external force, the distance from O to the envelope is k_grasp(θ), "
+                    "eq. (25); F_int = k_grasp/(x1 + x2)·F_e, eq. (17)")
+        last = len(self.construction.steps) - 1
+        text = s.caption[0].lower() + s.caption[1:] if s.caption[1:2].islower() else s.caption
+        return (f"Step {s.index} of 0–{last} · {s.instrument}\n"
+                f"{s.ref.replace(' step ', ' ')}: {text}")
+
     def caption_at(self, frame: int) -> str:
-        """The caption of ``frame``: step, instrument, the paper's reference and the text."""
+        """The caption of ``frame`` as shown: the step's number in the protocol (as
+        ``graspcompass steps`` prints it), the instrument, the paper's reference, the text."""
         st = self.timeline.at(frame)
-        steps = self.construction.steps
-        if st.kind == "hold":
-            head = "The internal force diagram (Fig. 5)"
-            body = ("in the direction e(θ) of the external force, the distance from O to the "
-                    "envelope is k_grasp(θ), eq. (25); F_int = k_grasp/(x1 + x2)·F_e, eq. (17)")
-        else:
-            s = steps[st.step]
-            head = f"Step {s.index + 1}/{len(steps)} · {s.instrument}"
-            text = s.caption[0].lower() + s.caption[1:] if s.caption[1:2].islower() else s.caption
-            body = f"{s.ref.replace(' step ', ' ')}: {text}"
-        return head + "\n" + textwrap.fill(body, self._wrap)
+        return self._hold_wrapped if st.kind == "hold" else self._wrapped[st.step]
+
+    def caption_seconds_of_step(self, step: int) -> float:
+        """How long the caption of ``step`` is on screen, in seconds at :attr:`fps`."""
+        return self.timeline.seconds_of_step(step, self.fps)
 
     def key_frames(self) -> list[tuple[int, str]]:
         """The frame at the end of each protocol step, named ``step-NN-name``."""
         return [(self.timeline.last_frame_of_step(s.index), f"step-{s.index:02d}-{s.name}")
                 for s in self.construction.steps]
 
+    # -- frames -------------------------------------------------------------------------------
     def _movers(self, segment: int) -> list[Artist]:
-        return [a for a, _, _ in self._items[self.timeline.segments[segment].step]] + \
+        step = self.timeline.segments[segment].step
+        return [a for a, _, _ in self._items[step]] + \
+            [a for a, parts, _ in self._shared if any(i == step for i, _ in parts)] + \
             [*self._aids, self._bar]
 
     def _group_key(self, segment: int) -> Any:
         seg = self.timeline.segments[segment]
         return (seg.step, seg.kind) if seg.kind == "hold" else seg.step
 
-    def _crossfade(self, segment: int) -> slice | None:
+    def _crossfade(self, segment: int) -> Any:
         """The final hold: the elements fade back to their colours, the caption does not."""
         if self.timeline.segments[segment].kind != "hold":
             return None
-        return slice(0, int(self._canvas.get_width_height()[1] * (0.99 - _CAPTION_Y)))
+        return self._fade_region
+
+    def _still(self, frame: int) -> bool:
+        return self.timeline.at(frame).kind == "rest"
 
     def _background(self, segment: int, frames: range, resting: list[Artist], base: Any) -> Any:
         """Base, the earlier steps dimmed, the current step's inputs bright, the caption.
@@ -368,10 +590,12 @@ class ConstructionAnimation(FrameAnimation):
         _, done, layer = self._layer
         if done < step:
             canvas.restore_region(layer)
+            k = sum(len(items) for items in self._items[:done])
             for items in self._items[done:step]:
                 for a, _, snap in items:
                     _restore(a, snap)
-                    _fade(a, snap, self.dim)
+                    _fade(a, snap, self._dimf[k])
+                    k += 1
                 self._draw([a for a, _, _ in items])
             self._keys = [None] * len(self._keys)
             layer = canvas.copy_from_bbox(bbox)
@@ -379,14 +603,17 @@ class ConstructionAnimation(FrameAnimation):
         self._apply(frames.start)
         canvas.restore_region(layer)
         inputs = set(self.construction.steps[step].inputs)
+        moving = {id(a) for a in self._movers(segment)}
         self._draw([a for s in self.construction.steps[:step] if s.name in inputs
-                    for a, _, _ in self._items[s.index]] + [self._caption])
+                    for a, _, _ in self._items[s.index]]
+                   + [a for a, _, _ in self._shared if id(a) not in moving] + [self._caption])
         return canvas.copy_from_bbox(bbox)
 
     def _apply(self, frame: int) -> None:
         st = self.timeline.at(frame)
         steps = self.construction.steps
         inputs = set(steps[st.step].inputs)
+        hold = st.kind == "hold"
         for a in self._aids:
             a.set_visible(False)
         k = 0
@@ -394,8 +621,8 @@ class ConstructionAnimation(FrameAnimation):
             key: Any = None  # the current step: set at every frame, never cached
             if i > st.step:
                 key = "hidden"
-            elif i < st.step or st.kind == "hold":  # the hold shows the finished figure
-                key = 1.0 if steps[i].name in inputs or st.kind == "hold" else self.dim
+            elif i < st.step or hold:  # the hold shows the finished figure
+                key = "bright" if steps[i].name in inputs or hold else "dim"
             for a, role, snap in items:
                 if key is None or self._keys[k] != key:
                     self._keys[k] = key
@@ -405,11 +632,23 @@ class ConstructionAnimation(FrameAnimation):
                                           st.raw)
                     elif key == "hidden":
                         a.set_visible(False)
-                    elif key < 1.0:
-                        _fade(a, snap, key)
+                    elif key == "dim":
+                        _fade(a, snap, self._dimf[k])
                 k += 1
+        for (a, parts, snap), f in zip(self._shared, self._shared_dimf):
+            _restore(a, snap)
+            shown = [p for i, p in parts if i <= st.step or hold]
+            made = min(i for i, _ in parts)
+            if not shown or (st.step == made and st.kind == "draw" and st.progress < 0.6):
+                a.set_visible(False)
+                continue
+            a.set_text("$" + " = ".join(shown) + "$")
+            names = {steps[i].name for i, _ in parts}
+            if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
+                _fade(a, snap, f)
         self._caption.set_text(self.caption_at(frame))
-        self._bar.set_width((st.frame + 1) / self.frame_count)
+        done = 1.0 if hold else (st.step + (st.progress if st.kind == "draw" else 1.0))
+        self._bar.set_width(done if hold else done / len(steps))
 
     def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Any, kind: str,
                      p: float, raw: float) -> None:
@@ -470,12 +709,22 @@ class ConstructionAnimation(FrameAnimation):
         self._aid.set(data=(xs, ys), visible=True)
 
 
-def animate_construction(construction: Any, fps: float = 20, frames_per_step: int = 8,
-                         pause_frames: int = 12, hold_frames: int = 20,
-                         theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (5.0, 5.6),
-                         dpi: float = 80, labels: bool = True,
-                         rate: str = "smoothstep") -> ConstructionAnimation:
+def animate_construction(construction: Any, fps: float | None = None,
+                         frames_per_step: int | None = None, pause_frames: int | None = None,
+                         hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
+                         figsize: tuple[float, float] | None = None, dpi: float | None = None,
+                         labels: bool = True, rate: str = "smoothstep",
+                         quality: str | Quality = "standard",
+                         caption_seconds: float | None = None,
+                         reading_rate: float | None = None) -> ConstructionAnimation:
     """Animate the ruler-and-compass drawing of the internal force diagram (§3.3).
+
+    Every value left out (None) comes from ``quality`` (:data:`~.theme.QUALITIES`):
+    ``"standard"`` is 400 × 448 pixels, 20 fps, 8 frames per step, the caption
+    below the diagram; ``"lecture"`` is for a projector: 1280 × 720 pixels, the
+    caption at 20 pt in a panel right of the diagram, lines and labels 1.6 ×
+    larger, each step's caption on screen at least 2.5 s and longer by its
+    length (15 characters a second).
 
     Parameters
     ----------
@@ -493,13 +742,30 @@ def animate_construction(construction: Any, fps: float = 20, frames_per_step: in
         Style, size in inches, resolution, point labels on or off.
     rate : {"smoothstep", "linear", "smootherstep"}
         Easing of the drawing.
+    quality : {"standard", "lecture"} or Quality
+        The preset of the values left out.
+    caption_seconds, reading_rate : float
+        Each step lasts until its caption has been on screen ``caption_seconds``
+        and ``len(caption) / reading_rate`` seconds (the rest is a still frame);
+        0 turns a rule off.
 
     Returns
     -------
     ConstructionAnimation
         With ``.save(path)``, ``.to_html()``, ``.frame_count``, ``.timeline``,
-        ``.figure``, ``.caption_at(frame)`` and ``_repr_html_``.
+        ``.figure``, ``.caption_at(frame)``, ``.caption_seconds_of_step(step)``
+        and ``_repr_html_``.
+
+    Notes
+    -----
+    The step numbers of the captions are the protocol's, as ``graspcompass
+    steps`` prints them (0 to len − 1).  A label shared by coincident points
+    (``O = O_M = Y_4``) names only the points made so far.  The earlier steps are
+    dimmed to at most ``dim`` opacity, but each keeps a contrast of 3 : 1 (lines,
+    markers) or 4.5 : 1 (labels) against the background (:data:`~.theme.MIN_CONTRAST`).
     """
     return ConstructionAnimation(construction, fps=fps, frames_per_step=frames_per_step,
                                  pause_frames=pause_frames, hold_frames=hold_frames,
-                                 theme=theme, figsize=figsize, dpi=dpi, labels=labels, rate=rate)
+                                 theme=theme, figsize=figsize, dpi=dpi, labels=labels, rate=rate,
+                                 quality=quality, caption_seconds=caption_seconds,
+                                 reading_rate=reading_rate)

@@ -4,14 +4,50 @@ A :class:`Theme` is a frozen record read by :mod:`graspcompass.render.figure`.
 :data:`DEFAULT_THEME` is a colour theme; :data:`PAPER_THEME` is black on white,
 in the style of the paper's hand drawings (Figs. 4-7 of Ito, Tanaka and
 Sasaki, Robotica 2012), where the four circles are told apart by their dashes.
+
+The animations come in two :class:`Quality` presets (:data:`QUALITIES`):
+``standard`` (small, quick: the main job, notebooks) and ``lecture`` (for a
+projector: 1280 × 720 pixels, captions in a side panel at 20 pt, each caption
+on screen for at least 2.5 s and longer by its length, lines and labels 1.6 ×
+larger).  The earlier steps of the construction are dimmed, but never below
+the contrast of :data:`MIN_CONTRAST` against the background (WCAG 2.1:
+3 : 1 for lines and markers, 4.5 : 1 for text; :func:`contrast_ratio`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-__all__ = ["DEFAULT_THEME", "PAPER_THEME", "THEMES", "Theme"]
+__all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES", "Quality",
+           "Theme", "contrast_ratio", "relative_luminance"]
+
+#: Least contrast ratio against the background of a dimmed element (WCAG 2.1: non-text
+#: contrast 1.4.11, 3 : 1; text contrast 1.4.3, 4.5 : 1).
+MIN_CONTRAST = {"graphics": 3.0, "text": 4.5}
+
+
+def relative_luminance(rgb: Sequence[float]) -> float:
+    """WCAG 2.1 relative luminance of an sRGB colour with channels in [0, 1].
+
+    >>> relative_luminance((1.0, 1.0, 1.0)), relative_luminance((0.0, 0.0, 0.0))
+    (1.0, 0.0)
+    """
+    lin = [c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4 for c in rgb[:3]]
+    return 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
+
+
+def contrast_ratio(a: Sequence[float], b: Sequence[float]) -> float:
+    """WCAG 2.1 contrast ratio (L_light + 0.05) / (L_dark + 0.05) of two sRGB colours.
+
+    >>> round(contrast_ratio((0.0, 0.0, 0.0), (1.0, 1.0, 1.0)), 6)
+    21.0
+    >>> round(contrast_ratio((0.5, 0.5, 0.5), (1.0, 1.0, 1.0)), 2)
+    3.98
+    """
+    la, lb = relative_luminance(a), relative_luminance(b)
+    return (max(la, lb) + 0.05) / (min(la, lb) + 0.05)
 
 
 @dataclass(frozen=True)
@@ -80,6 +116,18 @@ class Theme:
         """Line style of the circle on O V_n (n = 1..4; other n cycle)."""
         return self.circle_styles[(n - 1) % len(self.circle_styles)]
 
+    def scaled(self, factor: float) -> Theme:
+        """A copy with fonts, line widths and point sizes multiplied by ``factor``.
+
+        >>> DEFAULT_THEME.scaled(2).line_width
+        2.2
+        """
+        k = float(factor)
+        return replace(self, line_width=self.line_width * k, thin_width=self.thin_width * k,
+                       envelope_width=self.envelope_width * k,
+                       computer_width=self.computer_width * k, point_size=self.point_size * k,
+                       font_size=self.font_size * k)
+
     def with_(self, **changes: Any) -> Theme:
         """A copy with some fields changed.
 
@@ -118,3 +166,71 @@ PAPER_THEME = Theme(
 
 #: Themes by name, for command lines.
 THEMES: dict[str, Theme] = {"default": DEFAULT_THEME, "paper": PAPER_THEME}
+
+
+@dataclass(frozen=True)
+class Quality:
+    """Size, pace and type of an animation (plain data; see :data:`QUALITIES`).
+
+    Attributes
+    ----------
+    name : str
+        ``standard`` or ``lecture``.
+    figsize : (float, float)
+        Frame size in inches of the construction animation; pixels = inches × ``dpi``.
+    sweep_figsize : (float, float)
+        Frame size of the sweep and orientation animations.
+    dpi, fps : float
+        Resolution and frames per second.
+    frames_per_step : int
+        Frames drawing one protocol step.
+    pause_seconds, hold_seconds : float
+        Rest on each key result (V_n, the circles, the envelope) and on the finished
+        diagram.
+    caption_seconds : float
+        Least time each caption stays on screen (0: no rule).
+    reading_rate : float
+        Characters per second: a caption stays ``len(caption) / reading_rate`` seconds
+        if that is longer (0: no rule).
+    layout : {"below", "side"}
+        Caption under the diagram or in a panel on its right.
+    caption_size : float
+        Caption font size in points (its head is 1.15 × larger in the side panel).
+    scale : float
+        Factor of the theme's fonts, lines and points (:meth:`Theme.scaled`).
+    """
+
+    name: str
+    figsize: tuple[float, float]
+    sweep_figsize: tuple[float, float]
+    dpi: float
+    fps: float
+    frames_per_step: int
+    pause_seconds: float
+    hold_seconds: float
+    caption_seconds: float
+    reading_rate: float
+    layout: str
+    caption_size: float
+    scale: float
+
+    def frames(self, seconds: float, fps: float | None = None) -> int:
+        """``seconds`` as a whole number of frames at ``fps`` (default: this quality's).
+
+        >>> QUALITIES["standard"].frames(0.6)
+        12
+        """
+        return max(0, round(float(seconds) * (self.fps if fps is None else float(fps))))
+
+
+#: The animation presets by name (``graspcompass animate --quality``).
+QUALITIES: dict[str, Quality] = {
+    "standard": Quality("standard", figsize=(5.0, 5.6), sweep_figsize=(9.6, 5.0), dpi=80.0,
+                        fps=20.0, frames_per_step=8, pause_seconds=0.6, hold_seconds=1.0,
+                        caption_seconds=0.0, reading_rate=0.0, layout="below",
+                        caption_size=8.5, scale=1.0),
+    "lecture": Quality("lecture", figsize=(12.8, 7.2), sweep_figsize=(12.8, 7.2), dpi=100.0,
+                       fps=15.0, frames_per_step=12, pause_seconds=1.5, hold_seconds=6.0,
+                       caption_seconds=2.5, reading_rate=15.0, layout="side",
+                       caption_size=20.0, scale=1.6),
+}

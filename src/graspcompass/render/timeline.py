@@ -3,7 +3,9 @@
 A :class:`Timeline` is plain data: consecutive :class:`Segment` s
 ``(step, frames, kind)``, ``kind`` being ``"draw"`` (a step's object is being
 drawn), ``"pause"`` (resting on a key result: V_n, a circle on O V_n of
-eq. (31), the envelope of eq. (25)) or ``"hold"`` (the finished diagram).
+eq. (31), the envelope of eq. (25)), ``"rest"`` (the finished step stays on
+screen, unchanged, until its caption has been read: :func:`reading_frames`)
+or ``"hold"`` (the finished diagram).
 :meth:`Timeline.at` maps a frame to a :class:`FrameState` (step, kind,
 progress in [0, 1], eased by a rate function of :data:`RATES` while drawing).
 It knows nothing of matplotlib or of the geometry, so the same timeline gives
@@ -36,10 +38,11 @@ from ..progress import Progress
 __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",
            "FrameState", "Segment", "Timeline", "UnsupportedFormatError", "blend",
            "check_fps", "check_output", "find_ffmpeg", "jshtml", "palette_sample",
-           "save_frames", "smoothstep", "write_animation", "write_gif", "write_mp4", "write_png"]
+           "reading_frames", "save_frames", "smoothstep", "write_animation", "write_gif",
+           "write_mp4", "write_png"]
 
 #: Kinds of segment.
-KINDS = ("draw", "pause", "hold")
+KINDS = ("draw", "pause", "rest", "hold")
 #: File extensions an animation is written to.
 OUTPUT_FORMATS = (".gif", ".mp4", ".html")
 
@@ -85,6 +88,21 @@ def check_fps(fps: float) -> float:
     return value
 
 
+def reading_frames(text: str, fps: float, least_seconds: float = 0.0,
+                   chars_per_second: float = 0.0) -> int:
+    """Frames a caption must stay on screen to be read: ``least_seconds``, or longer by
+    its length at ``chars_per_second`` (0: no length rule).
+
+    >>> reading_frames("x" * 60, fps=20, least_seconds=2.5, chars_per_second=15)
+    80
+    >>> reading_frames("short", fps=20, least_seconds=2.5, chars_per_second=15)
+    50
+    """
+    seconds = max(float(least_seconds), len(text) / chars_per_second if chars_per_second > 0
+                  else 0.0)
+    return math.ceil(round(seconds * check_fps(fps), 9))
+
+
 @dataclass(frozen=True)
 class Segment:
     """``frames`` consecutive frames of one step, of kind draw, pause or hold."""
@@ -100,7 +118,8 @@ class FrameState:
 
     ``raw`` goes linearly from ``1/n`` to 1 over the ``n`` frames of the
     segment (the last frame of a draw segment shows the finished object);
-    ``progress`` is ``raw`` eased by the timeline's rate in draw segments.
+    ``progress`` is ``raw`` eased by the timeline's rate in draw segments, 1
+    in rest segments.
     """
 
     frame: int
@@ -144,16 +163,32 @@ class Timeline:
 
     @classmethod
     def from_keys(cls, keys: Sequence[bool], frames_per_step: int = 8, pause_frames: int = 12,
-                  hold_frames: int = 20, rate: str = "smoothstep") -> Timeline:
-        """A draw segment per step, a pause after each key step, a hold at the end."""
+                  hold_frames: int = 20, rate: str = "smoothstep",
+                  least_frames: Sequence[int] | None = None) -> Timeline:
+        """A draw segment per step, a pause after each key step, a hold at the end.
+
+        ``least_frames[i]`` (optional): the fewest frames step ``i`` lasts (its caption's
+        reading time, :func:`reading_frames`); a rest segment makes up the difference.
+
+        >>> tl = Timeline.from_keys([False, True], 4, 2, 3, least_frames=[10, 5])
+        >>> [(s.kind, s.frames) for s in tl.segments]
+        [('draw', 4), ('rest', 6), ('draw', 4), ('pause', 2), ('hold', 3)]
+        """
         if frames_per_step < 1 or pause_frames < 0 or hold_frames < 0:
             raise AnimationError("frames_per_step must be >= 1, pause_frames and hold_frames "
                                  ">= 0")
+        if least_frames is not None and len(least_frames) != len(keys):
+            raise AnimationError(f"least_frames has {len(least_frames)} entries for "
+                                 f"{len(keys)} steps")
         segs = []
         for i, key in enumerate(keys):
             segs.append(Segment(i, frames_per_step, "draw"))
-            if key and pause_frames:
-                segs.append(Segment(i, pause_frames, "pause"))
+            pause = pause_frames if key else 0
+            if pause:
+                segs.append(Segment(i, pause, "pause"))
+            rest = 0 if least_frames is None else int(least_frames[i]) - frames_per_step - pause
+            if rest > 0:
+                segs.append(Segment(i, rest, "rest"))
         if hold_frames and keys:
             segs.append(Segment(len(keys) - 1, hold_frames, "hold"))
         return cls(tuple(segs), rate)
@@ -191,8 +226,9 @@ class Timeline:
         i = self.segment_of(f)
         seg = self.segments[i]
         raw = (f - self.starts[i] + 1) / seg.frames
-        return FrameState(f, i, seg.step, seg.kind,
-                          RATES[self.rate](raw) if seg.kind == "draw" else raw, raw)
+        progress = (RATES[self.rate](raw) if seg.kind == "draw" else
+                    1.0 if seg.kind == "rest" else raw)
+        return FrameState(f, i, seg.step, seg.kind, progress, raw)
 
     def frames_of_step(self, step: int) -> range:
         """Every frame of ``step``: its draw, pause and (last step) hold segments."""
@@ -200,6 +236,10 @@ class Timeline:
         if not idx:
             raise AnimationError(f"step {step} is not on this timeline")
         return range(self.starts[idx[0]], self.segment_range(idx[-1]).stop)
+
+    def seconds_of_step(self, step: int, fps: float) -> float:
+        """How long ``step`` (its caption) is on screen at ``fps``: its frames / fps."""
+        return len(self.frames_of_step(step)) / check_fps(fps)
 
     def last_frame_of_step(self, step: int) -> int:
         """The last frame of the step's draw and pause segments (before a hold)."""
@@ -265,8 +305,12 @@ def write_gif(frames: Iterable[np.ndarray], path: str | os.PathLike[str], fps: f
     first = next(it)
     palette = _palette(first if palette_sample is None else palette_sample)
     images: list[Image.Image] = []
-    distinct, previous = 0, b""
+    distinct, previous, last = 0, b"", None
     for rgb in chain([first], it):
+        if rgb is last:  # the same frame again (a still): nothing to quantize
+            images.append(images[-1])
+            continue
+        last = rgb
         im = Image.fromarray(rgb).quantize(palette=palette, dither=Image.Dither.NONE)
         data = im.tobytes()
         distinct += data != previous
