@@ -27,7 +27,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn
 
-from . import __version__, _cli_check, _cli_export, _cli_recipe, _cli_worksheet, limits
+from . import __version__, _cli_check, _cli_export, _cli_recipe, _cli_size, _cli_worksheet, limits
 from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
 from ._output import check_folder, check_target, writing
@@ -161,6 +161,7 @@ def build_parser() -> argparse.ArgumentParser:
     _cli_worksheet.register(sub, _add_grasp_options)
     _cli_recipe.register(sub, _add_grasp_options)
     _cli_check.register(sub, _add_grasp_options)
+    _cli_size.register(sub, _add_grasp_options)
 
     v = sub.add_parser(
         "verify", help="machine-check every claim of the paper (symbolic)",
@@ -397,7 +398,7 @@ _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_
              "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
              "crosscheck": _cmd_crosscheck, "export": _cmd_export, "explore": _cmd_explore,
              "worksheet": _cli_worksheet.run, "recipe": _cli_recipe.run,
-             "check": _cli_check.run}
+             "check": _cli_check.run, "size": _cli_size.run}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
