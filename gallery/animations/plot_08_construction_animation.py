@@ -11,9 +11,13 @@ two signed lengths and :math:`V_n` (eqs. (28)–(39)), the four circles on :math
 caption names the instrument and the paper's reference of every step; the new element is
 highlighted and the earlier ones are dimmed, except the ones the step uses.
 
-The command line writes the same animation at full size::
+The captions number the steps as ``graspcompass steps`` prints them, and a label shared by
+coincident points names only the points already made.  The command line writes the same
+animation at full size, or for a projector (1280 × 720 pixels, captions at 20 pt beside the
+diagram, each on screen long enough to read)::
 
     graspcompass animate fig6 --kind construction -o fig6-construction.gif
+    graspcompass animate fig6 --quality lecture -o fig6-lecture.mp4
 """
 
 import matplotlib.pyplot as plt
@@ -38,7 +42,9 @@ fig, axes = plt.subplots(2, 2, figsize=(10, 10), layout="constrained")
 for name, ax in zip(moments, axes.flat):
     step = construction.step(name)
     draw_construction(construction, step=step.index, ax=ax, highlight_last=True)
-    ax.set_title(f"after step {step.index + 1} of {len(construction)}: {name}", fontsize=11)
+    # the protocol's own numbers, as ``graspcompass steps`` prints them: 0 to len - 1
+    ax.set_title(f"after step {step.index} (of 0–{len(construction) - 1}): {name}",
+                 fontsize=11)
 plt.show()
 
 for name in moments:

@@ -12,9 +12,11 @@ The panel on the right draws :math:`k_1, \\dots, k_4` and :math:`k_\\mathrm{gras
 (eq. (17)) and names the friction inequality (8)–(11) that binds: which contact is about
 to slip (see also :doc:`../beyond/plot_12_which_contact_slips`).
 
-The command line writes it at full size::
+The command line writes it at full size, or with one circle at a time (the Thales view of
+Fig. 3, below)::
 
     graspcompass animate fig6 --kind sweep -o fig6-sweep.gif
+    graspcompass animate fig6 --kind sweep --circle 1 --quality lecture -o fig6-thales.gif
 """
 
 import matplotlib.pyplot as plt
@@ -52,4 +54,18 @@ plt.show()
 # embedded here.
 plt.figure(animation.figure)
 sweep_animation = animation.animation
+plt.show()
+
+# %%
+# One circle at a time: the right angle at :math:`H_1` (Fig. 3)
+# --------------------------------------------------------------
+# With ``circle=1`` only the circle on :math:`OV_1` is drawn.  The foot :math:`H_1` of the
+# perpendicular from :math:`V_1` on the line through :math:`O` along
+# :math:`e(\theta) = (\sin\theta, -\cos\theta)` makes a right angle
+# :math:`OH_1V_1` (marked), so :math:`H_1` runs on the circle on the diameter
+# :math:`OV_1` (Thales), and :math:`k_1(\theta)` is the signed length :math:`OH_1`.
+thales = animate_sweep(construction, frames=48, fps=8, dpi=60, circle=1)
+print(thales.status_at(40))
+plt.figure(thales.figure)
+thales_animation = thales.animation
 plt.show()
