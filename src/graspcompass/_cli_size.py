@@ -251,13 +251,14 @@ def run(args: argparse.Namespace) -> int:
 
 def _text(d: dict[str, Any], s: Any, lm: Any) -> str:
     per = "per jaw" if d["per"] == "jaw" else "total (both jaws)"
+    head = "PER JAW" if d["per"] == "jaw" else "TOTAL (both jaws)"
     other = ("the total of both jaws is twice this" if d["per"] == "jaw" else
              "each jaw pushes half of this")
     a = (f", |a| <= {d['accel_bound_m_s2']:.4g} m/s^2" if d["accel_bound_m_s2"] else "")
     if d["accel_vector_m_s2"] is not None:
         a += ", a = ({:.4g}, {:.4g}) m/s^2".format(*d["accel_vector_m_s2"])
     lines = [
-        f"squeeze {per.upper()} in N ({other}); {d['mass_kg']:.6g} kg, g = "
+        f"squeeze {head} in N ({other}); {d['mass_kg']:.6g} kg, g = "
         f"{d['g_m_s2']:.6g} m/s^2{a}, safety factor {d['safety']:.4g}",
         "directions: degrees counter-clockwise from the frame's -y axis (0 = the frame's down)",
         f"worst over all orientations: {d['worst_squeeze_N']:.4g} N {per}, load towards "

@@ -859,7 +859,9 @@ class LeastMu:
     ----------
     mu : float or None
         The least μ (both contacts) at which the squeeze needed is at most the
-        limit; None when no friction suffices.
+        limit; None when no friction suffices; :attr:`mu_force_closure` when
+        every force-closure μ suffices (possible for a given orientation, whose
+        squeeze can stay finite at the bound).
     mu_force_closure : float
         Below (and at) this μ the grasp is not force-closure (condition (1)).
     squeeze_infinite_friction : float
@@ -941,7 +943,11 @@ def least_mu(grasp: Any, force_limit: Any, mass: Any, *, g: Any = None, gravity:
             hi = mid
         else:
             lo = mid
-    mu = math.tan(hi) if hi < math.pi / 2 else math.inf
+    mu = math.tan(hi)
+    if hi - xi_fc <= 1e-12:  # the squeeze stays below the limit down to force closure
+        return LeastMu(mu_fc, mu_fc, at_inf, lim, per,
+                       f"any μ above the force-closure bound μ > {mu_fc:.6g} (both pads) "
+                       f"makes {lim:.4g} N {what} suffice for this case")
     return LeastMu(mu, mu_fc, at_inf, lim, per,
                    f"μ >= {mu:.6g} at both pads makes {lim:.4g} N {what} suffice "
                    f"(force closure needs μ > {mu_fc:.4g}; with infinite friction "
