@@ -412,3 +412,13 @@ def test_check_reads_stdin() -> None:
 def test_parse_errors_carry_file_line_and_column() -> None:
     with pytest.raises(ConstructionSyntaxError, match=r"^f\.gc:2:\d+: "):
         parse("A = point (0, 0)\nB = frobnicate A\n", "f.gc")
+
+
+def test_a_file_without_parameters_is_decided_on_its_numbers() -> None:
+    text = ("A = point (0, 0)\nB = point (sqrt(2), 0)\nl = line_through A B\nM = midpoint A B\n"
+            "L = signed_length A B l\nclaim M == point(sqrt(2)/2, 0)\nclaim M == point(1/2, 0)\n"
+            "claim sign L - sqrt(2) != 0\n")
+    r = check_program(parse(text))
+    assert [c.status for c in r.claims] == [Status.PROVED, Status.REFUTED, Status.REFUTED]
+    assert r.claims[1].counterexample == {}
+    assert "no parameters" in to_table(r)

@@ -167,8 +167,8 @@ def _domain_text(program: Program) -> list[str]:
 
 
 def _hypotheses(program: Program, cond1: bool) -> tuple[str, ...]:
-    return ("domains " + ", ".join(_domain_text(program)),
-            *(("condition (1)",) if cond1 else ()))
+    domains = ("domains " + ", ".join(_domain_text(program)),) if program.params else ()
+    return (*domains, *(("condition (1)",) if cond1 else ()))
 
 
 def _check_model_params(program: Program) -> None:

@@ -41,6 +41,8 @@ def to_json(report: ProgramReport) -> str:
 
 
 def _cx(row: CheckRow) -> str:
+    if row.counterexample == {}:
+        return "false as the file stands (it has no parameters)"
     return ", ".join(f"{k} = {v}" for k, v in (row.counterexample or {}).items())
 
 
@@ -83,7 +85,8 @@ def to_table(report: ProgramReport, steps: bool = False) -> str:
     rows = [(r.kind, str(r.line), _short(r.name), r.status.value, f"{r.result.seconds:.2f}",
              _extra(r, domains)) for r in shown]
     widths = [max(len(x[i]) for x in [head, *rows]) for i in range(5)]
-    lines = [f"{report.file}: every row assumes the {domains or 'domains of its parameters'}",
+    lines = [f"{report.file}: every row assumes the {domains}" if domains else
+             f"{report.file}: no parameters (the file's numbers are exact)",
              "", "  ".join(h.ljust(widths[i]) if i < 5 else h for i, h in enumerate(head))]
     lines += ["  ".join(x.ljust(widths[i]) if i < 5 else x for i, x in enumerate(row)).rstrip()
               for row in rows]
