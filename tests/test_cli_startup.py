@@ -47,6 +47,8 @@ def test_import_graspcompass_loads_no_heavy_module() -> None:
     ["export", "--fragment", "-o", "/no/x.svg"], ["recipe", "-o", "/no/x.gc"],
     ["verify", "--markdown", "/no/x.md"], ["worksheet", "-o", "/no/x.pdf"],
     ["worksheet", "-o", "x.png"], ["draw", "-o", "x.gif"], ["--out", "/no/such/folder"],
+    ["size", "--p1", "1,0", "--p2=-1,0", "--n1=-1,0", "--n2", "1,0", "--com", "0,0", "--mu",
+     "0.3", "--mass", "-1"], ["size", "--p1", "1,0", "--p2", "1", "--mass", "5lb"],
     ["check", "/no/such/file.gc"], ["check", "x.gc", "--markdown", "/no/such/folder/r.md"],
     ["check", "x.gc", "--draw", "cx.png"],
 ])

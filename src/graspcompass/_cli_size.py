@@ -3,7 +3,8 @@
 ``graspcompass size --p1 X,Y --p2 X,Y --n1 X,Y --n2 X,Y --com X,Y --mass M --mu1 A
 --mu2 B`` sizes the grasp given in one world frame (contact points, inward unit
 normals, centre of mass; or ``--outline`` instead of the normals, whose centroid
-is the default centre of mass).  Lengths are metres unless a unit is written
+is the default centre of mass).  A value that starts with a minus sign is written ``--p2=-50mm,0`` (argparse
+would read ``-50mm,0`` as an option).  Lengths are metres unless a unit is written
 (``100mm``), the mass kilograms (``500g``), accelerations m/s² (``0.5g``),
 forces newtons.  It prints the squeeze **per jaw** (each jaw's push, the paper's
 F_int, eq. (17)) or ``--per total`` (both jaws, twice it) for the worst
@@ -21,7 +22,7 @@ Examples
 >>> parser = argparse.ArgumentParser(prog="graspcompass")
 >>> sub = parser.add_subparsers(dest="command")
 >>> register(sub, lambda p: None)
->>> args = parser.parse_args(["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0",
+>>> args = parser.parse_args(["size", "--p1", "50mm,0", "--p2=-50mm,0", "--n1=-1,0",
 ...                          "--n2", "1,0", "--com", "25mm,0", "--mass", "1kg", "--mu", "0.3"])
 >>> args.per, read_pair(args.p1, "--p1", "length")
 ('jaw', ('50', 'mm', '0', None))
