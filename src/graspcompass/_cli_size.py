@@ -3,8 +3,9 @@
 ``graspcompass size --p1 X,Y --p2 X,Y --n1 X,Y --n2 X,Y --com X,Y --mass M --mu1 A
 --mu2 B`` sizes the grasp given in one world frame (contact points, inward unit
 normals, centre of mass; or ``--outline`` instead of the normals, whose centroid
-is the default centre of mass).  A value that starts with a minus sign is written ``--p2=-50mm,0`` (argparse
-would read ``-50mm,0`` as an option).  Lengths are metres unless a unit is written
+is the default centre of mass).  A value that starts with a minus sign is written
+``--p2=-50mm,0`` (argparse would read ``-50mm,0`` as an option).  Lengths are
+metres unless a unit is written
 (``100mm``), the mass kilograms (``500g``), accelerations m/s² (``0.5g``),
 forces newtons.  It prints the squeeze **per jaw** (each jaw's push, the paper's
 F_int, eq. (17)) or ``--per total`` (both jaws, twice it) for the worst
