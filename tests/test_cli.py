@@ -97,7 +97,7 @@ def test_presets_lists_all(capsys):
     "argv, fragment",
     [
         (["k", "--mu1", "0.1"], "contact 1: φ1 + ξ1"),
-        (["k", "--x1", "-1"], "x1 = -1"),
+        (["k", "--x1", "-1"], "x1 + x2 = -1"),
         (["k", "--phi2", "__import__('os').system('true')"], "cannot read"),
         (["k", "--phi2", "().__class__"], "cannot read"),
         (["k", "--y", "sqrt(3"], "malformed"),
