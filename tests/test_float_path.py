@@ -153,8 +153,11 @@ def near_coincident(x1, x2, y, n, m, d1, d2, u1=0.5, u2=0.5) -> dict:
 
 
 def seven(kw: dict) -> tuple:
-    """``(x1, x2, y, phi1, phi2, mu1, mu2)``; a float ξ gives μ = tan ξ rounded (22)."""
-    mu = [kw[f"mu{i}"] if f"mu{i}" in kw else math.tan(kw[f"xi{i}"]) for i in (1, 2)]
+    """``(x1, x2, y, phi1, phi2, mu1, mu2)``; a float ξ gives μ = tan ξ correctly rounded
+    (22), computed here at 40 digits (``math.tan`` may be an ulp off)."""
+    with mpmath.workdps(40):
+        mu = [kw[f"mu{i}"] if f"mu{i}" in kw else float(mpmath.tan(mpmath.mpf(kw[f"xi{i}"])))
+              for i in (1, 2)]
     return (*(kw[k] for k in ("x1", "x2", "y", "phi1", "phi2")), *mu)
 
 
@@ -408,3 +411,21 @@ def test_random_hard_float_grasps(kw):
     assume(m > REL_MARGIN * (1 + 1e-6))
     check_float_grasp(kw, lp_thetas=4)
 
+
+
+@settings(max_examples=200, deadline=None)
+@given(xi=st.floats(1e-6, math.pi / 2 - 1e-6))
+def test_float_xi_gives_the_correctly_rounded_mu(xi: float) -> None:
+    """μ = tan ξ (22) rounded once: sympy's 53-bit tan was an ulp off for some ξ, and near a
+    bound of condition (1) one ulp of μ moved k_grasp by 3e-10 of its size."""
+    g = Grasp(1.0, 1.0, 0.5, math.pi / 2, math.pi / 2, xi1=xi, xi2=xi)
+    with mpmath.workdps(60):
+        want = float(mpmath.tan(mpmath.mpf(xi)))
+    assert float(g.params["mu1"]) == want
+
+
+def test_near_bound_float_grasp_from_xi() -> None:
+    """The hypothesis find: φ1 + ξ1 within 4e-7 of π/2, |V1| ≈ 6.3e6."""
+    check_float_grasp({"x1": 1.0, "x2": 1.0, "y": 1.0, "phi1": 0.34926470093316486,
+                       "phi2": 1.1780972450961724, "xi1": 1.2215318503411545,
+                       "xi2": 1.1780972450961724}, lp_thetas=2)

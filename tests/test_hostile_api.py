@@ -441,7 +441,9 @@ def test_subs_raises_only_named_errors(name: str, value: Any) -> None:
 
 # condition (1) and the ranges of §2.2.1, written out again (not the code under test)
 def paper_valid(p: dict[str, float]) -> bool:
-    if not (p["x1"] > 0 and p["x2"] > 0 and p["y"] >= 0):
+    """The model's domain: x1 + x2 > 0 (a centre of mass beyond a contact is allowed,
+    issue 13 §1), y >= 0, condition (1)."""
+    if not (p["x1"] + p["x2"] > 0 and p["y"] >= 0):
         return False
     for i in (1, 2):
         phi, mu = p[f"phi{i}"], p[f"mu{i}"]

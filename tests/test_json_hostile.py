@@ -280,7 +280,7 @@ MALFORMED: list[tuple[str, Any, str]] = [
     ("friction junk", lambda d: edited(d, ("grasp", "friction"), {"1": "mu"}),
      "grasp.friction: the key '2' is missing"),
     ("shape junk", lambda d: edited(d, ("grasp", "shape"), ["circle", -1]), "grasp.shape"),
-    ("invalid grasp", lambda d: edited(d, ("grasp", "x1"), "-2"), "grasp: x1 = -2 must be"),
+    ("invalid grasp", lambda d: edited(d, ("grasp", "x1"), "-3"), "grasp: x1 + x2 = -1 must be"),
     ("lone surrogate", lambda d: edited(d, ("grasp", "title"), "a\ud800b"),
      "grasp.title: control character or lone surrogate"),
     ("NUL in a text", lambda d: edited(d, ("grasp", "title"), "a\x00b"), "grasp.title: control"),

@@ -362,7 +362,8 @@ def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
 def test_messages_agree_with_python_on_many_values(page: Page) -> None:
     """The page's wording of every check, against Grasp for the same floats."""
     base = dict(x1=1.0, x2=1.5, y=0.5, phi1=1.2, phi2=1.4, mu1=0.8, mu2=0.9)
-    cases = [dict(x1=-1.6), dict(x2=-1.5), dict(x1=-0.3, x2=0.2999), dict(y=-123456.7), dict(y=-2e15), dict(mu1=-0.0001),
+    cases = [dict(x1=-1.6), dict(x2=-1.5), dict(x1=-0.3, x2=0.2999), dict(y=-123456.7),
+             dict(y=-2e15), dict(mu1=-0.0001),
              dict(mu2=0.0), dict(phi1=0.0), dict(phi2=3.3), dict(phi1=0.5), dict(phi1=0.3,
              mu1=3.0), dict(phi2=2.9, mu2=0.1), dict(phi2=4.5 - math.atan(9.0), mu2=9.0),
              dict(x1=math.nan), dict(mu2=math.inf), dict(y=-math.inf)]

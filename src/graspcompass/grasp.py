@@ -75,6 +75,14 @@ _PARAMETER_ERRORS: dict[type, type] = {
 }
 
 
+def _rounded_tan(x: sp.Expr) -> sp.Float:
+    """``tan x`` of a float angle, correctly rounded to a double (40-digit mpmath)."""
+    import mpmath
+
+    with mpmath.workdps(40):
+        return sp.Float(float(mpmath.tan(mpmath.mpf(sp.Float(x, 53)._mpf_))), 53)
+
+
 def _value(v: Any, name: str) -> sp.Expr:
     """A parameter through the input boundary; a refusal is also an :class:`InvalidGraspError`."""
     try:
@@ -309,8 +317,10 @@ class Grasp:
                     f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
                     f"must be {words} (0 < ξ < π/2)"
                 )
-        if has_float(x) or x.free_symbols:
-            return sp.tan(x), x  # floats; or a symbol: tan(xi) is one generator
+        if x.free_symbols:
+            return sp.tan(x), x  # a symbol: tan(xi) is one generator
+        if has_float(x):  # μ = tan ξ correctly rounded to a double, eq. (22) (sympy's
+            return _rounded_tan(x), x  # 53-bit tan can be an ulp off, and k moves with it)
         return canon(tan_exact(x)), x
 
     @classmethod
