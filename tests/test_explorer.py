@@ -102,7 +102,7 @@ def test_dragging_p2_and_the_headless_api(ex):
     ex.set_params(mu1=0.8, phi1=1.4)
     assert drawn_envelope(ex) == pytest.approx(expected_envelope(ex.params, 361), abs=1e-9)
     with pytest.raises(ValueError, match="unknown parameter"):
-        ex.set_params(theta=1.0)
+        ex.set_params(psi=1.0)
     with pytest.raises(ValueError, match="only P1 and P2"):
         ex.drag("V1", 0.0, 0.0)
 

@@ -1,18 +1,34 @@
-"""Interactive explorer: sliders for x1, x2, y, φ1, φ2, μ1, μ2 and draggable P1, P2.
+"""Interactive explorer: sliders for x1, x2, y, φ1, φ2, μ1, μ2, θ and draggable P1, P2.
 
 :class:`Explorer` builds a matplotlib :class:`~matplotlib.figure.Figure` (no
-pyplot) with seven :class:`matplotlib.widgets.Slider`\\ s and the diagram:
+pyplot) with eight :class:`matplotlib.widgets.Slider`\\ s and the diagram:
 friction cones, cone sides, perpendiculars, P_nx, O_M, X_n, Y_n, V_n, the four
-circles on O V_n (eq. (31)), the envelope k_grasp (eq. (25)) and its worst and
-best case (largest and smallest k_grasp over the directions θ of the external
-force, with F_int = k / (x1 + x2) · F_e, eq. (17)).  Every change replays the
-construction through the public API (:func:`graspcompass.internal_force_diagram`
-on a float :class:`graspcompass.Grasp`).  Parameters that violate condition (1)
-(or any other check of the model) show the failing inequality on the canvas.
+circles on O V_n (eq. (31)), the envelope k_grasp (eq. (25)), the direction
+e(θ) of the external force with the point H = k_grasp(θ) e(θ) of the envelope,
+and the worst and best case (largest and smallest k_grasp over the directions θ,
+with F_int = k / (x1 + x2) · F_e, eq. (17)).  Parameters that violate
+condition (1) (or any other check of the model) show the failing inequality on
+the canvas, worded as :class:`graspcompass.Grasp` words it.
 
 Dragging P1 = (x1, y) moves x1 and y, dragging P2 = (−x2, y) moves x2 and y;
 the sliders follow.  :func:`explore` opens the window (the only pyplot use in
 the package); :func:`explore_notebook` is the Jupyter variant (ipywidgets).
+
+How a change stays under 30 ms (issue 12 §1)
+--------------------------------------------
+* The geometry is computed in double precision from the closed form of §3.3
+  (eqs. (23), (28)-(39); :func:`._explorer_scene.float_scene`, about 0.2 ms),
+  not by replaying the exact construction.  Only near a bound of condition (1)
+  (within 1e-6 rad, or a cone side so nearly horizontal that the double
+  evaluation cancels) or for invalid parameters is a :class:`~graspcompass.Grasp`
+  built: it words the failing inequality, or gives correctly rounded values.
+* The artists are made once and only moved (``set_data``, ``set_xy``,
+  ``set_center``, ``set_radius``, ``set_text``); axes, ticks, legend and the
+  sliders' tracks and labels are never rebuilt.
+* The canvas is redrawn by blitting: a background without the moving artists is
+  rendered once (again after a resize, a zoom or ``f``), and each change
+  restores it, draws the moving artists (``Figure.draw_artist``) and blits.
+  A canvas that cannot blit gets ``draw_idle()``.
 """
 
 from __future__ import annotations
@@ -20,33 +36,45 @@ from __future__ import annotations
 import io
 import math
 import textwrap
+from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
 from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import Polygon
+from matplotlib.transforms import Bbox, TransformedBbox
 from matplotlib.widgets import Slider
 
-from ..construction import internal_force_diagram
-from ..geometry import GeometryError, evaluate
-from ..grasp import Grasp, InvalidGraspError
+from ..geometry import evaluate
+from ..grasp import Grasp
 from ..layout import wedge
+from ._explorer_scene import GRASP_KEYS, Scene, ThetaGrid, float_scene, grasp_scene
+from ._pathtext import GlyphCache, PathText
 from .theme import DEFAULT_THEME
 
 __all__ = ["PARAMS", "Explorer", "explore", "explore_notebook"]
 
-#: Slider name, label, unit factor to the model (degrees for φ).
+#: Slider name, label, unit factor to the model (degrees for φ and θ).
 PARAMS = (("x1", "$x_1$", 1.0), ("x2", "$x_2$", 1.0), ("y", "$y$", 1.0),
           ("phi1", r"$\varphi_1$ (°)", math.pi / 180), ("phi2", r"$\varphi_2$ (°)", math.pi / 180),
-          ("mu1", r"$\mu_1$", 1.0), ("mu2", r"$\mu_2$", 1.0))
+          ("mu1", r"$\mu_1$", 1.0), ("mu2", r"$\mu_2$", 1.0),
+          ("theta", r"$\theta$ (°)", math.pi / 180))
 _UNIT = {p[0]: p[2] for p in PARAMS}
 _PICK_PX = 12.0
+_LABELS = ("P1", "P2", "V1", "V2", "V3", "V4")
 
 
 class Explorer:
     """The live diagram of a grasp, usable headless (``set_params``, ``drag``).
+
+    A change (slider, drag, :meth:`set_params`) recomputes the picture from the
+    closed form in double precision, moves the existing artists and blits them
+    onto a cached background (see the module docstring); the picture is the
+    one a new ``Explorer`` on the changed grasp draws, apart from the view
+    limits, which stay until :meth:`fit` (key ``f``).
 
     Parameters
     ----------
@@ -55,58 +83,91 @@ class Explorer:
     fig : matplotlib.figure.Figure, optional
         Figure to draw into (e.g. from pyplot); a new Agg figure if None.
     samples : int
-        Points of the envelope polyline.
+        Points of the envelope polyline (θ from 0 to 2π).
+    theta : float
+        Start direction θ of the external force (radians, eq. (26)).
+    blit : bool
+        Redraw a change by blitting (default); False: ``canvas.draw_idle()``,
+        which re-renders the whole figure (slow, for canvases that misbehave).
 
     Attributes
     ----------
     params : dict of str to float
-        Current x1, x2, y, phi1, phi2 (radians), mu1, mu2.
-    construction : Construction or None
-        The last valid construction; ``error`` is the message when invalid.
+        Current x1, x2, y, phi1, phi2 (radians), mu1, mu2 and theta (radians).
+    scene : Scene or None
+        The float picture of the last valid grasp (V_n, sides, perpendiculars,
+        points, envelope); None until the first valid grasp.
+    error : str or None
+        The failing inequality while the parameters are not a valid grasp.
     envelope_xy : ndarray, shape (samples, 2)
-        The envelope k_grasp(θ) e(θ) of the last valid construction.
+        The envelope k_grasp(θ) e(θ) of the last valid grasp.
     worst, best : tuple of float
         ``(θ, k_grasp)`` where k_grasp is largest and smallest.
+    sliders : dict of str to matplotlib.widgets.Slider
+        The eight sliders, keyed like :attr:`params` (φ and θ in degrees).
     """
 
     def __init__(self, grasp: Grasp | None = None, fig: Figure | None = None,
-                 samples: int = 720) -> None:
+                 samples: int = 720, theta: float = 0.0, blit: bool = True) -> None:
         g = grasp if grasp is not None else Grasp.preset("fig6")
-        self.params = {p[0]: float(evaluate(g.params[p[0]])) for p in PARAMS}
+        self.params = {k: float(evaluate(g.params[k])) for k in GRASP_KEYS}
+        self.params["theta"] = float(theta)
         self.samples = samples
+        self.blit = blit
+        self._grid = ThetaGrid(samples)
         self.fig = fig if fig is not None else Figure(figsize=(11, 7.5))
         if self.fig.canvas is None or type(self.fig.canvas).__name__ == "FigureCanvasBase":
             FigureCanvasAgg(self.fig)
         self.ax = self.fig.add_axes((0.04, 0.06, 0.58, 0.88))
         self.ax.set_aspect("equal", adjustable="box")
-        self.construction: Any = None
+        self.scene: Scene | None = None
         self.error: str | None = None
         self.envelope_xy = np.zeros((0, 2))
         self.worst = self.best = (0.0, 0.0)
         self._dragging: str | None = None
         self._syncing = False
+        self._key_done: tuple | None = None  # grasp parameters of the current scene/error
+        self._construction: tuple[tuple, Any] | None = None
+        self._capturing = False
+        self._painted = False  # the canvas buffer shows the current picture
         self._make_artists()
         self.sliders: dict[str, Slider] = {}
         for i, (name, label, unit) in enumerate(PARAMS):
-            sax = self.fig.add_axes((0.72, 0.88 - 0.06 * i, 0.22, 0.03))
+            sax = self.fig.add_axes((0.72, 0.88 - 0.055 * i, 0.22, 0.03))
             v = self.params[name] / unit
-            lo, hi = ((1.0, 180.0) if name.startswith("phi") else
-                      (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v))))
-            s = Slider(sax, label, lo, hi, valinit=v, valfmt="%.3g")
+            lo, hi = ((0.0, 360.0) if name == "theta" else (1.0, 180.0) if name.startswith("phi")
+                      else (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v))))
+            s = Slider(sax, label, lo, hi, valinit=min(max(v, lo), hi), valfmt="%.3g")
+            s.drawon = False  # the explorer redraws (blits) after its own update
             s.on_changed(lambda val, n=name: self._on_slider(n, val))
             self.sliders[name] = s
-        self.info = self.fig.text(0.67, 0.4, "", va="top", fontsize=9, family="monospace")
+        mono = FontProperties(family="monospace", size=9)
+        self.fig.text(0.67, 0.42, "k_grasp(θ), eq. (25)\nF_int = k / (x1 + x2) · F_e, eq. (17)\n"
+                      "drag P1, P2; press f to fit the view", va="top", fontproperties=mono)
+        # outside the diagram: nothing moving is drawn over it (it stays in the background)
+        self.fig.legend(handles=[self.envelope_line, self.direction, self.h_mark,
+                                 self.worst_mark, self.best_mark],
+                        loc="lower left", bbox_to_anchor=(0.665, 0.01), fontsize=8)
+        self._info_box = Bbox([[0.665, 0.17], [1.0, 0.34]])  # figure coordinates
+        self.info = self.fig.add_artist(PathText(
+            "", (0.67, 0.315), self.fig.transFigure, self.fig.dpi_scale_trans,
+            glyphs=GlyphCache(mono), zorder=3,
+            clip_box=TransformedBbox(self._info_box, self.fig.transFigure)))
+        self._groups = self._draw_order()
+        self._dynamic = [a for arts in self._groups.values() for a in arts]
+        self._regions: dict[str, Any] = {}
         for ev, fn in (("button_press_event", self._press), ("motion_notify_event", self._move),
-                       ("button_release_event", self._release), ("key_press_event", self._key)):
+                       ("button_release_event", self._release), ("key_press_event", self._key),
+                       ("draw_event", self._on_draw)):
             self.fig.canvas.mpl_connect(ev, fn)
-        self.update()
+        self._apply()
         self.fit()
 
-    # -- drawing --------------------------------------------------------------
+    # -- artists ---------------------------------------------------------------
     def _make_artists(self) -> None:
         ax, th = self.ax, DEFAULT_THEME
-        ax.axhline(0, color=th.axis_color, lw=0.8)
-        ax.axvline(0, color=th.axis_color, lw=0.8)
+        self.axis_lines = [ax.axhline(0, color=th.axis_color, lw=0.8),
+                           ax.axvline(0, color=th.axis_color, lw=0.8)]
         self.cones = [ax.add_patch(Polygon(np.zeros((3, 2)), facecolor=th.cone_face,
                                            alpha=th.cone_alpha, edgecolor="none"))
                       for _ in range(2)]
@@ -122,86 +183,232 @@ class Explorer:
                                         label=r"envelope $k_{grasp}(\theta)$, eq. (25)")
         (self.points,) = ax.plot([], [], "o", ms=3.5, color=th.point_color)
         (self.contacts,) = ax.plot([], [], "o", ms=9, color=th.highlight_color, picker=True)
+        (self.direction,) = ax.plot([], [], color="#444444", lw=1.0, ls=":",
+                                    label=r"direction $e(\theta)$ of $F_e$, eq. (26)")
+        (self.h_mark,) = ax.plot([], [], "o", ms=6, mfc="white", mec="#444444",
+                                 label=r"$H = k_{grasp}(\theta)\,e(\theta)$")
         (self.worst_mark,) = ax.plot([], [], "*", ms=14, color="#d62728", label="worst case")
         (self.best_mark,) = ax.plot([], [], "D", ms=8, color="#2ca02c", label="best case")
-        self.labels = {n: ax.annotate(n, (0, 0), xytext=(4, 4), textcoords="offset points",
-                                      fontsize=9) for n in ("P1", "P2", "V1", "V2", "V3", "V4")}
+        prop = FontProperties(size=9)
+        self.labels = {n: ax.add_artist(PathText(n, (0, 0), ax.transData,
+                                                 self.fig.dpi_scale_trans, prop=prop,
+                                                 offset=(4, 4), zorder=3))
+                       for n in _LABELS}
         self.message = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center",
                                fontsize=10, color="#b00020", visible=False, zorder=10,
                                bbox=dict(boxstyle="round", fc="#fff3f3", ec="#b00020"))
-        ax.legend(loc="lower left", fontsize=8)
         self._alphas = {a: a.get_alpha() for a in (
-            *self.sides, *self.perps, *self.circles, *self.cones, self.fill,
-            self.envelope_line, self.points, self.worst_mark, self.best_mark)}
+            *self.sides, *self.perps, *self.circles, *self.cones, self.fill, self.envelope_line,
+            self.points, self.worst_mark, self.best_mark, self.direction, self.h_mark)}
 
+    def _draw_order(self) -> dict[str, list[Any]]:
+        """The moving artists by region (``main``, ``slider:NAME``, ``info``), each
+        list in the order a full draw paints them: by zorder, ties in the axes'
+        child order, as :meth:`matplotlib.axes.Axes.draw` does."""
+        groups = {"main": {*self.axis_lines, *self.cones, *self.sides, *self.perps,
+                           *self.circles, self.fill, self.envelope_line, self.points,
+                           self.contacts, self.direction, self.h_mark, self.worst_mark,
+                           self.best_mark, *self.labels.values(), self.message,
+                           *self.ax.spines.values()}}
+        axes = {"main": self.ax}
+        for name, s in self.sliders.items():
+            groups[f"slider:{name}"] = {s.poly, s.vline, s._handle, s.valtext}
+            axes[f"slider:{name}"] = s.ax
+        out = {g: sorted((a for a in axes[g].get_children() if a in arts),
+                         key=lambda a: a.get_zorder()) for g, arts in groups.items()}
+        out["info"] = [self.info]
+        return out
+
+    def _region(self, group: str) -> Bbox:
+        """The pixels of a group's artists (display coordinates, after a draw)."""
+        if group == "main":
+            return self.ax.bbox.expanded(1.0, 1.0).padded(2)
+        if group == "info":
+            return TransformedBbox(self._info_box, self.fig.transFigure).frozen()
+        b = self.sliders[group[7:]].ax.bbox
+        return Bbox.from_extents(b.x0 - 12, b.y0 - 4, self.fig.bbox.x1, b.y1 + 4)
+
+    # -- drawing ---------------------------------------------------------------
     def fit(self) -> None:
-        """Fit the view to the current diagram."""
+        """Fit the view to the current diagram (the next change re-renders the background)."""
         pts = [self.envelope_xy] if len(self.envelope_xy) else []
         pts.append(np.array([[self.params["x1"], self.params["y"]],
                              [-self.params["x2"], self.params["y"]], [0.0, 0.0]]))
-        if self.construction is not None:
-            for n in (1, 2, 3, 4):
-                (cx, cy), r = evaluate(self.construction[f"circle{n}"])
-                pts.append(np.array([[cx - r, cy - r], [cx + r, cy + r]]))
+        if self.scene is not None:
+            c, r = self.scene.centres, self.scene.radii[:, None]
+            pts += [c - r, c + r]
         xy = np.vstack(pts)
         lo, hi = xy.min(axis=0), xy.max(axis=0)
         pad = 0.08 * float(max(hi - lo)) + 1e-9
         self.ax.set_xlim(lo[0] - pad, hi[0] + pad)
         self.ax.set_ylim(lo[1] - pad, hi[1] + pad)
+        self._regions = {}
+        self._painted = False
 
-    def update(self) -> None:
-        """Replay the construction for :attr:`params` and redraw (message if invalid)."""
-        p = self.params
-        try:
-            g = Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], mu1=p["mu1"], mu2=p["mu2"])
-            c = internal_force_diagram(g)
-        except (InvalidGraspError, GeometryError, ValueError) as exc:
-            self._show_error(str(exc))
+    def update(self, changed: Iterable[str] | None = None) -> None:
+        """Recompute the picture for :attr:`params` and redraw it (message if invalid).
+
+        Parameters
+        ----------
+        changed : iterable of str, optional
+            The parameters that changed (their sliders are redrawn with the
+            diagram and the numbers); None redraws every slider.
+        """
+        self._apply()
+        if changed is None:
+            self.redraw()
+        else:
+            self.redraw({"main", "info", *(f"slider:{k}" for k in changed)})
+
+    def redraw(self, groups: Iterable[str] | None = None) -> None:
+        """Show the artists' current state by blitting them onto the cached background.
+
+        Parameters
+        ----------
+        groups : iterable of str, optional
+            The regions to redraw: ``"main"`` (the diagram), ``"info"`` (the
+            numbers), ``"slider:NAME"``; None (or a stale canvas) redraws all.
+
+        Notes
+        -----
+        The background (the figure without the moving artists) is rendered on
+        the first call and again after any full draw of the canvas (resize,
+        zoom, savefig, :meth:`fit`), and kept per region
+        (``canvas.copy_from_bbox``).  A redraw restores the regions
+        (``restore_region``), draws their moving artists (``Figure.draw_artist``)
+        and blits them.  Without blitting (``blit=False`` or a canvas that
+        cannot) this is ``canvas.draw_idle()``, a full render.
+        """
+        canvas = self.fig.canvas
+        if not (self.blit and getattr(canvas, "supports_blit", False)):
+            canvas.draw_idle()
             return
-        self.construction, self.error = c, None
+        if not self._regions:
+            self._capture()
+        names = list(self._groups) if groups is None or not self._painted else [
+            g for g in self._groups if g in set(groups)]
+        for g in names:
+            canvas.restore_region(self._regions[g][1])
+        for g in names:
+            for a in self._groups[g]:
+                self.fig.draw_artist(a)
+        for g in names:
+            canvas.blit(self._regions[g][0])
+        self._painted = True
+
+    def _capture(self) -> None:
+        """Render the figure without the moving artists and keep its regions."""
+        canvas = self.fig.canvas
+        for a in self._dynamic:
+            a.set_animated(True)
+        self._capturing = True
+        try:
+            canvas.draw()
+        finally:
+            self._capturing = False
+            for a in self._dynamic:
+                a.set_animated(False)
+        self._painted = False  # the moving artists are not on the canvas yet
+        for g in self._groups:
+            box = self._region(g)
+            self._regions[g] = (box, canvas.copy_from_bbox(box))
+
+    def _on_draw(self, event: Any) -> None:
+        if not self._capturing:  # a full draw (resize, zoom, savefig): background is stale
+            self._regions = {}
+            self._painted = True
+
+    def _apply(self) -> None:
+        """Move the artists to the picture of :attr:`params` (no drawing)."""
+        p = self.params
+        key = tuple(p[k] for k in GRASP_KEYS)
+        if key != self._key_done:
+            self._key_done = key
+            scene = float_scene(p, self._grid)
+            if scene is None:  # invalid, or too close to a bound for doubles: ask the Grasp
+                try:
+                    scene = grasp_scene(self.grasp(), self._grid)
+                except (ValueError, ArithmeticError) as exc:  # InvalidGraspError, GeometryError
+                    self._show_error(str(exc))
+                    return
+            self._show_scene(scene)
+        elif self.error is not None:
+            return
+        self._show_theta()
+
+    def grasp(self) -> Grasp:
+        """The :class:`~graspcompass.Grasp` of the current parameters (validated).
+
+        Raises
+        ------
+        InvalidGraspError
+            With the failing inequality, when the parameters are not a grasp.
+        """
+        p = self.params
+        return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], mu1=p["mu1"], mu2=p["mu2"])
+
+    @property
+    def construction(self) -> Any:
+        """The exact-kernel construction of the current grasp, built on first access.
+
+        :func:`graspcompass.internal_force_diagram` of :meth:`grasp`; None while
+        the parameters are invalid.  Not used for drawing (it takes tens of ms).
+        """
+        if self.error is not None:
+            return None
+        key = tuple(self.params[k] for k in GRASP_KEYS)
+        if self._construction is None or self._construction[0] != key:
+            from ..construction import internal_force_diagram
+
+            self._construction = (key, internal_force_diagram(self.grasp()))
+        return self._construction[1]
+
+    def _show_scene(self, sc: Scene) -> None:
+        p = self.params
+        self.scene, self.error = sc, None
         self.message.set_visible(False)
-        num = {s.name: evaluate(s.obj) for s in c.steps if s.kind in ("point", "line", "circle")}
-        span = 100.0 * (1.0 + max(abs(v) for v in p.values()))
-
-        def far(line: Any) -> tuple[list[float], list[float]]:  # a long segment of a line
-            (px, py), (dx, dy) = line
-            return [px - span * dx, px + span * dx], [py - span * dy, py + span * dy]
-
-        for i, n in enumerate((1, 2, 3, 4)):
-            self.sides[i].set_data(*far(num[f"side{n}"]))
-            self.perps[i].set_data(*far(num[f"perp{n}"]))
-            (cx, cy), r = num[f"circle{n}"]
-            self.circles[i].set_center((cx, cy))
-            self.circles[i].set_radius(r)
-        reach = 0.6 * math.dist(num["P1"], num["P2"])
-        for i, (a, b) in enumerate(((1, 3), (2, 4))):
-            self.cones[i].set_xy(wedge(num[f"P{i + 1}"], num[f"side{a}"][1], num[f"side{b}"][1],
-                                       reach))
-        names = ("P1x", "P2x", "O_M", *(f"{k}{n}" for k in "XYV" for n in (1, 2, 3, 4)))
-        self.points.set_data([num[k][0] for k in names], [num[k][1] for k in names])
-        self.contacts.set_data([num["P1"][0], num["P2"][0]], [num["P1"][1], num["P2"][1]])
+        span = 100.0 * (1.0 + max(abs(p[k]) for k in GRASP_KEYS))
+        for i in range(4):
+            for line, (pt, d) in ((self.sides[i], sc.sides[i]), (self.perps[i], sc.perps[i])):
+                line.set_data(pt[0] + span * np.array([-d[0], d[0]]),
+                              pt[1] + span * np.array([-d[1], d[1]]))
+            self.circles[i].set_center((float(sc.S[i]) / 2, float(sc.C[i]) / 2))
+            self.circles[i].set_radius(float(math.hypot(sc.S[i], sc.C[i])) / 2)
+        reach = 0.6 * math.dist(sc.P1, sc.P2)
+        for i, (a, b) in enumerate(((0, 2), (1, 3))):
+            self.cones[i].set_xy(wedge((sc.P1, sc.P2)[i], sc.sides[a][1], sc.sides[b][1], reach))
+        self.points.set_data(sc.points[:, 0], sc.points[:, 1])
+        self.contacts.set_data([sc.P1[0], sc.P2[0]], [sc.P1[1], sc.P2[1]])
         for name, text in self.labels.items():
-            text.xy = num[name]
-        env = c["envelope"]
-        theta = np.linspace(0.0, 2 * np.pi, self.samples)
-        self.envelope_xy = env.polyline(self.samples)
-        k = env.k(theta)
-        self.envelope_line.set_data(self.envelope_xy[:, 0], self.envelope_xy[:, 1])
-        self.fill.set_xy(self.envelope_xy)
+            text.set_position(sc.point(name))
+        self.envelope_xy = sc.envelope
+        self.envelope_line.set_data(sc.envelope[:, 0], sc.envelope[:, 1])
+        self.fill.set_xy(sc.envelope)
+        k, theta = sc.k, sc.theta
         iw, ib = int(np.argmax(k)), int(np.argmin(k))
         self.worst, self.best = (float(theta[iw]), float(k[iw])), (float(theta[ib]), float(k[ib]))
-        self.worst_mark.set_data([self.envelope_xy[iw, 0]], [self.envelope_xy[iw, 1]])
-        self.best_mark.set_data([self.envelope_xy[ib, 0]], [self.envelope_xy[ib, 1]])
+        self.worst_mark.set_data([sc.envelope[iw, 0]], [sc.envelope[iw, 1]])
+        self.best_mark.set_data([sc.envelope[ib, 0]], [sc.envelope[ib, 1]])
+        self._set_faded(False)
+
+    def _show_theta(self) -> None:
+        """Direction e(θ), the point H and the info text, for the current θ."""
+        sc, p = self.scene, self.params
+        assert sc is not None
+        t = p["theta"]
+        e = (math.sin(t), -math.cos(t))
+        kt = sc.k_grasp(t)
+        far = 1.15 * max(float(sc.k.max()), 0.6 * math.dist(sc.P1, sc.P2))
+        self.direction.set_data([0.0, far * e[0]], [0.0, far * e[1]])
+        self.h_mark.set_data([kt * e[0]], [kt * e[1]])
         d = p["x1"] + p["x2"]
         self.info.set_text(
-            "k_grasp(θ), eq. (25)\nF_int = k / (x1 + x2) · F_e, eq. (17)\n\n"
+            f"θ = {math.degrees(t):.1f}° (slider):\n"
+            f"  k = {kt:.4g}, F_int/F_e = {kt / d:.4g}\n"
             f"worst case: θ = {math.degrees(self.worst[0]):.1f}°\n"
             f"  k = {self.worst[1]:.4g}, F_int/F_e = {self.worst[1] / d:.4g}\n"
             f"best case:  θ = {math.degrees(self.best[0]):.1f}°\n"
-            f"  k = {self.best[1]:.4g}, F_int/F_e = {self.best[1] / d:.4g}\n\n"
-            "drag P1, P2; press f to fit the view")
-        self._set_faded(False)
-        self.fig.canvas.draw_idle()
+            f"  k = {self.best[1]:.4g}, F_int/F_e = {self.best[1] / d:.4g}")
 
     def _show_error(self, text: str) -> None:
         self.error = text
@@ -209,17 +416,43 @@ class Explorer:
         self.message.set_visible(True)
         self.info.set_text("(no diagram: see the message)")
         self._set_faded(True)
-        self.fig.canvas.draw_idle()
 
     def _set_faded(self, faded: bool) -> None:
         for a, alpha in self._alphas.items():
             a.set_alpha(0.15 * (alpha or 1.0) if faded else alpha)
 
-    # -- interaction ----------------------------------------------------------
-    def set_params(self, **values: float) -> None:
-        """Set parameters (x1, x2, y, phi1, phi2 in radians, mu1, mu2) and redraw.
+    def png(self, compress_level: int = 1) -> bytes:
+        """The current picture as PNG bytes, encoded from the canvas buffer.
 
-        The sliders move to the new values (clipped to their range for display).
+        Nothing is re-rendered when the canvas already shows the picture (after
+        a change); the first call draws the figure once.  Needs an Agg canvas.
+        """
+        from PIL import Image
+
+        canvas = self.fig.canvas
+        if not self._painted:
+            self.redraw()
+        w, h = canvas.get_width_height(physical=True)
+        img = Image.frombuffer("RGBA", (w, h), canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+        buf = io.BytesIO()
+        img.convert("RGB").save(buf, format="png", compress_level=compress_level)
+        return buf.getvalue()
+
+    # -- interaction -----------------------------------------------------------
+    def set_params(self, **values: float) -> None:
+        """Set parameters and redraw.
+
+        Parameters
+        ----------
+        **values : float
+            Any of x1, x2, y, phi1, phi2 (radians), mu1, mu2, theta (radians).
+            The sliders move to the new values (clipped to their range for
+            display).
+
+        Raises
+        ------
+        ValueError
+            For an unknown parameter name.
         """
         unknown = set(values) - set(self.params)
         if unknown:
@@ -227,7 +460,7 @@ class Explorer:
                              f"use {', '.join(self.params)}")
         self.params.update({k: float(v) for k, v in values.items()})
         self._sync_sliders(values)
-        self.update()
+        self.update(values)
 
     def drag(self, point: str, x: float, y: float) -> None:
         """Move contact ``"P1"`` or ``"P2"`` to ``(x, y)`` as a mouse drag would."""
@@ -244,7 +477,7 @@ class Explorer:
             for k, v in values.items():
                 unit = _UNIT[k]
                 s = self.sliders[k]
-                s.set_val(min(max(v / unit, s.valmin), s.valmax))
+                s.set_val(min(max(float(v) / unit, s.valmin), s.valmax))
         finally:
             self._syncing = False
 
@@ -252,7 +485,7 @@ class Explorer:
         if self._syncing:
             return
         self.params[name] = float(val) * _UNIT[name]
-        self.update()
+        self.update((name,))
 
     def _press(self, event: Any) -> None:
         if event.inaxes is not self.ax or event.button != 1:
@@ -316,7 +549,22 @@ def explore(grasp: Grasp | None = None) -> Explorer:
 def explore_notebook(grasp: Grasp | None = None) -> Any:
     """The Jupyter explorer: ipywidgets sliders over the diagram, as an image.
 
-    Returns an ``ipywidgets.VBox``; display it as a cell's last expression.
+    The diagram is an :class:`Explorer` on its own Agg figure (80 dpi); a change
+    of a slider updates it as in the window (float closed form, blitting) and
+    the image is the canvas buffer encoded once as PNG (:meth:`Explorer.png`),
+    with no second rendering of the figure.
+
+    Parameters
+    ----------
+    grasp : Grasp, optional
+        Start values; defaults to the paper's Fig. 6 grasp.
+
+    Returns
+    -------
+    ipywidgets.VBox
+        Eight sliders (x1, x2, y, φ1, φ2, μ1, μ2, θ; angles in degrees) above the
+        image; display it as a cell's last expression.  Its ``explorer``
+        attribute is the :class:`Explorer`.
 
     Raises
     ------
@@ -327,12 +575,11 @@ def explore_notebook(grasp: Grasp | None = None) -> Any:
         import ipywidgets as w
     except ImportError as exc:
         raise ImportError("explore_notebook needs ipywidgets: pip install ipywidgets") from exc
-    ex, image = Explorer(grasp), w.Image(format="png")
+    ex = Explorer(grasp, fig=Figure(figsize=(11, 7.5), dpi=80))
+    image = w.Image(format="png")
 
     def render(*_: Any) -> None:
-        buf = io.BytesIO()
-        ex.fig.savefig(buf, format="png", dpi=80)
-        image.value = buf.getvalue()
+        image.value = ex.png()
 
     controls = []
     for name, label, unit in PARAMS:
