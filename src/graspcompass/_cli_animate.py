@@ -6,6 +6,9 @@
 :mod:`graspcompass.render.animate`: the ruler-and-compass construction of §3.3
 step by step, the external force sweeping round (Fig. 3), or the object
 turning under gravity (Fig. 1).  matplotlib is imported only when it runs.
+``--file FILE.gc [--set NAME=EXPR]`` animates the construction of a file of the
+construction language (:mod:`graspcompass._cli_file`); ``sweep`` and
+``orientation`` need the paper's four circles and take the paper's recipe only.
 
 ``--quality lecture`` is for a projector (:data:`~graspcompass.render.theme.QUALITIES`):
 1280 × 720 pixels (at the default ``--dpi 100``; ``--dpi 150`` gives 1920 × 1080),
@@ -32,6 +35,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from . import _cli_file
 from .presets import PRESETS
 
 __all__ = ["KINDS", "MAIN_ANIMATION", "MAIN_DPI", "MAIN_FIGSIZE", "MAX_DPI", "MAX_FPS",
@@ -165,10 +169,12 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    metavar="PRESET", help=f"a preset ({', '.join(sorted(PRESETS))}); same as "
                                           "--preset")
     add_grasp_options(p)
+    _cli_file.add_file_options(p, positional=False)
     p.add_argument("--kind", choices=KINDS, default="construction",
                    help="what to animate (default: construction)")
     p.add_argument("-o", "--output", metavar="FILE",
-                   help="output .gif, .mp4 or .html file (default: PRESET-KIND.gif)")
+                   help="output .gif, .mp4 or .html file (default: PRESET-KIND.gif, or "
+                        "the construction file's name for PRESET)")
     p.add_argument("--quality", choices=QUALITY_NAMES, default="standard", action=_Checked,
                    help="standard: small and quick (400x448 pixels, 20 fps); lecture: for a "
                         "projector, 1280x720 pixels, captions at 20 pt beside the diagram, "
@@ -232,10 +238,10 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
     from ._output import check_target, writing
     from .render.timeline import check_output
 
-    name = args.output if args.output is not None else f"{args.preset}-{args.kind}.gif"
+    stem = _cli_file.output_stem(args, args.preset)
+    name = args.output if args.output is not None else f"{stem}-{args.kind}.gif"
     check_output(name)
     path = check_target(name)
-    from .construction import internal_force_diagram
     from .errors import InputTooLargeError
     from .render.anim_physics import animate_orientation, animate_sweep
     from .render.animate import animate_construction
@@ -246,7 +252,10 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
     fps = q.fps if getattr(args, "fps", None) is None else args.fps
     dpi = q.dpi if getattr(args, "dpi", None) is None else args.dpi
     theme = THEMES[args.theme]
-    c = internal_force_diagram(grasp() if callable(grasp) else grasp)
+    made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
+    if args.kind != "construction":
+        _cli_file.paper_only(made, f"animate --kind {args.kind}")
+    c = made.construction
     anim: Any
     if args.kind == "construction":
         pause, hold = getattr(args, "pause", None), getattr(args, "hold", None)

@@ -2,7 +2,11 @@
 
 ``graspcompass export --format ggb|tikz|svg|json|png|pdf -o FILE`` writes the
 construction of the grasp in one of :data:`graspcompass.export.FORMATS`;
-``graspcompass explore`` opens the interactive explorer window.  The module
+``graspcompass explore`` opens the interactive explorer window.  Both take a
+construction file (``export FILE.gc``, :mod:`graspcompass._cli_file`): ``export``
+writes any file's construction (GeoGebra without sliders unless it is the
+paper's recipe); ``--format html`` and ``explore`` redraw the paper's recipe
+live and refuse a file with other steps.  The module
 only adds sub-parsers and runs them; :mod:`graspcompass.cli` builds the grasp
 from the common options and reports errors (a ``ValueError`` is one line on
 stderr, exit status 2).
@@ -14,6 +18,8 @@ import argparse
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
+
+from . import _cli_file
 
 __all__ = ["register", "run_explore", "run_export"]
 
@@ -51,11 +57,12 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         epilog="The folder of -o must exist; the path is checked before any work. "
                "exit status: 0, or 2 for a user error.")
     add_grasp_options(e)
+    _cli_file.add_file_options(e)
     e.add_argument("--format", choices=_FORMATS,
                    help="file format (default: from the extension of -o)")
     e.add_argument("-o", "--output", metavar="FILE",
-                   help="output file, in an existing folder (default: PRESET.EXT in the "
-                        "current folder)")
+                   help="output file, in an existing folder (default: PRESET.EXT, or the "
+                        "construction file's name with .EXT, in the current folder)")
     e.add_argument("--step", type=int, metavar="N",
                    help="export the state after protocol step N (default: every step)")
     e.add_argument("--title", metavar="TEXT", type=_title,
@@ -71,6 +78,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         description="A window with sliders for x1, x2, y, φ1, φ2, μ1, μ2 and draggable P1 and "
                     "P2; the construction, circles, envelope and worst/best case follow live.")
     add_grasp_options(x)
+    _cli_file.add_file_options(x)
 
 
 def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
@@ -78,7 +86,7 @@ def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
 
     if args.output is None:
         fmt = args.format or "svg"
-        return fmt, Path(f"{args.preset}.{_EXT[fmt]}")
+        return fmt, Path(f"{_cli_file.output_stem(args, args.preset)}.{_EXT[fmt]}")
     return (args.format or guess_format(args.output)), args.output
 
 
@@ -87,6 +95,8 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
 
     ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
     called once the output is checked (the command line reads its options then).
+    With a construction file (:mod:`graspcompass._cli_file`) the file is
+    replayed instead of the paper's recipe.
 
     Raises
     ------
@@ -102,11 +112,18 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     if args.fragment and fmt != "tikz":
         raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
     path = check_target(path)
-    from .construction import internal_force_diagram
     from .export import export
     from .export.tikz import write_tikz
 
-    c = internal_force_diagram(grasp() if callable(grasp) else grasp)
+    made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
+    if fmt == "html":
+        _cli_file.paper_only(made, "export --format html (the explorer page)")
+    c = made.construction
+    title = args.title
+    if fmt == "ggb" and not made.paper:
+        if title is None and c.grasp is not None:
+            title = c.grasp.title
+        c = _cli_file.without_sliders(made)
     if args.step is not None:
         if not -len(c) <= args.step < len(c):
             raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
@@ -114,9 +131,9 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
         c = c.upto(args.step)
     with writing(path):
         if fmt == "tikz" and args.fragment:
-            write_tikz(c, path, standalone=False, title=args.title)
+            write_tikz(c, path, standalone=False, title=title)
         else:
-            export(c, path, fmt, title=args.title)
+            export(c, path, fmt, title=title)
     if not getattr(args, "quiet", False):
         print(f"wrote {path} ({fmt}, {len(c)} steps)")
     return 0
@@ -128,9 +145,15 @@ def run_explore(args: argparse.Namespace, grasp: Any) -> int:
     Raises
     ------
     ValueError
-        Without a display (matplotlib has no interactive backend), in one line.
+        Without a display (matplotlib has no interactive backend), in one line;
+        a construction file that is not the paper's recipe (the explorer
+        redraws the recipe as the sliders move).
     """
+    if _cli_file.file_name(args) is not None or getattr(args, "set", None):
+        made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
+        _cli_file.paper_only(made, "explore")
+        grasp = made.construction.grasp
     from .render.explorer import explore
 
-    explore(grasp)
+    explore(grasp() if callable(grasp) else grasp)
     return 0

@@ -27,7 +27,16 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn
 
-from . import __version__, _cli_check, _cli_export, _cli_recipe, _cli_size, _cli_worksheet, limits
+from . import (
+    __version__,
+    _cli_check,
+    _cli_export,
+    _cli_file,
+    _cli_recipe,
+    _cli_size,
+    _cli_worksheet,
+    limits,
+)
 from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
 from ._output import check_folder, check_target, writing
@@ -121,17 +130,21 @@ def build_parser() -> argparse.ArgumentParser:
 
     d = sub.add_parser("draw", help="draw the diagram to a PNG, SVG or PDF file")
     _add_grasp_options(d)
+    _cli_file.add_file_options(d)
     d.add_argument("-o", "--output", metavar="FILE",
-                   help="output file, in an existing folder (default: PRESET.png)")
+                   help="output file, in an existing folder (default: PRESET.png, or the "
+                        "construction file's name with .png)")
     d.add_argument("--format", choices=_FORMATS, help="file format (default: from the extension)")
     d.add_argument("--step", type=int, metavar="N",
                    help="draw the state after protocol step N (default: the whole diagram)")
     d.add_argument("--no-overlay", action="store_true",
-                   help="leave out the computer plot of k_grasp (Fig. 6(b))")
+                   help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
+                        "the paper's recipe)")
     quiet_option(d)
 
     s = sub.add_parser("steps", help="print the construction protocol")
     _add_grasp_options(s)
+    _cli_file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
 
     k = sub.add_parser(
@@ -234,10 +247,10 @@ def protocol_table(c: Construction) -> str:
 
 
 def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
-          overlay: bool) -> Path:
+          overlay: bool, title: str | None = None) -> Path:
     from .render import figure_diagram, save_figure
 
-    fig = figure_diagram(c, step=step, overlay=overlay)
+    fig = figure_diagram(c, step=step, overlay=overlay, title=title)
     save_figure(fig, path, format=fmt)
     return path
 
@@ -283,29 +296,30 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
-    name = args.output if args.output is not None else f"{args.preset}.{args.format or 'png'}"
+    stem = _cli_file.output_stem(args, args.preset)
+    name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
     if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
         raise ValueError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf "
                          "file name or --format")
     path = check_target(name)
-    from .construction import internal_force_diagram
-
-    g = grasp_from_args(args)
-    c = internal_force_diagram(g)
+    made = _cli_file.construction(args, lambda: grasp_from_args(args))
+    c = made.construction
     if args.step is not None and not -len(c) <= args.step < len(c):
         raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
                          f"steps, 0 to {len(c) - 1}")
-    _draw(c, path, fmt, args.step, not args.no_overlay)
+    title = None if made.paper else Path(made.shown).name + (
+        f": {c.grasp.title}" if getattr(c.grasp, "title", None) else "")
+    _draw(c, path, fmt, args.step, made.paper and not args.no_overlay, title)
     if not args.quiet:
         print(f"wrote {path}")
     return 0
 
 
 def _cmd_steps(args: argparse.Namespace) -> int:
-    from .construction import internal_force_diagram, to_records
+    from .construction import to_records
 
-    c = internal_force_diagram(grasp_from_args(args))
+    c = _cli_file.construction(args, lambda: grasp_from_args(args)).construction
     if args.json:
         print(json.dumps(to_records(c), indent=1))
     else:

@@ -1,8 +1,15 @@
 """The paper's drawing recipe (§3.3, §3.2) replayed with the exact kernel.
 
-:func:`internal_force_diagram` never uses the closed form (27)-(39): the points
-V_n come out of ruler-and-compass steps on the friction cones, and the proof
-checker compares them with the closed form afterwards.
+:func:`internal_force_diagram` replays the shipped file of the construction
+language, ``recipes/paper.gc`` (:func:`~graspcompass.construction.language.paper_program`,
+printed by ``graspcompass recipe``): what the file says is what is drawn.  It
+never uses the closed form (27)-(39): the points V_n come out of
+ruler-and-compass steps on the friction cones, and the proof checker compares
+them with the closed form afterwards.
+
+:func:`diagram_specs` states the same steps from Python (the JSON reader
+rebuilds a document's construction from them, step by step, and the tests check
+that both give the same protocol, names, order and exact objects).
 """
 
 from __future__ import annotations
@@ -24,7 +31,11 @@ _C_EQ = {1: "(29)", 2: "(35)", 3: "(37)", 4: "(39)"}
 
 
 def diagram_specs(grasp: Grasp) -> list[StepSpec]:
-    """The step declarations of the diagram of ``grasp`` (without the envelope)."""
+    """The step declarations of the diagram of ``grasp`` (without the envelope).
+
+    The same steps as the shipped ``recipes/paper.gc``, which
+    :func:`internal_force_diagram` replays.
+    """
     S = StepSpec
     specs = [
         S("O", "point", (), "mark", "Origin O at the object's centre of mass", "§2.2.1",
@@ -98,8 +109,11 @@ def diagram_specs(grasp: Grasp) -> list[StepSpec]:
 def internal_force_diagram(grasp: Grasp | None = None) -> Construction:
     """Replay the paper's drawing of the internal force diagram of ``grasp``.
 
-    The steps: the axes; P1, P2; the upper and lower sides of both friction
-    cones; P1x, P2x, O_M; for n = 1..4 the extended cone side and X_n, the
+    The shipped recipe ``recipes/paper.gc`` is replayed
+    (:func:`~graspcompass.construction.language.replay` of
+    :func:`~graspcompass.construction.language.paper_program`).  The steps:
+    the axes; P1, P2; the upper and lower sides of both friction cones; P1x,
+    P2x, O_M; for n = 1..4 the extended cone side and X_n, the
     perpendicular from P2x (n = 1, 3) or P1x (n = 2, 4) and Y_n, the signed
     lengths O_M X_n, O Y_n and V_n = (−O_M X_n, −O Y_n) (§3.3); the circles on
     the diameters O V_n (§3.2); their second intersections; and, for numeric
@@ -125,7 +139,13 @@ def internal_force_diagram(grasp: Grasp | None = None) -> Construction:
     >>> c.step("X1").ref
     '§3.3 V1 step (1), Fig. 4(a)'
     """
-    grasp = Grasp.preset("fig6") if grasp is None else grasp
+    from .language import paper_program, replay
+
+    return replay(paper_program(), Grasp.preset("fig6") if grasp is None else grasp)
+
+
+def _internal_force_diagram_from_specs(grasp: Grasp) -> Construction:
+    """The same construction from :func:`diagram_specs` (the tests compare the two)."""
     env: dict[str, Any] = {}
     steps: list[Step] = []
     skipped: list[tuple[str, str]] = []
