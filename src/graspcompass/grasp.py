@@ -19,6 +19,7 @@ import numpy as np
 import sympy as sp
 
 from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins, side_floats
+from .batch import _envelope
 from .errors import (
     ComplexValueError,
     GraspCompassError,
@@ -619,13 +620,14 @@ class Grasp:
             return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
         if isinstance(t, np.ndarray):
             S, C = self._floats()
-            s, c = np.sin(t), np.cos(t)
-            out, a, b = np.zeros(t.shape), np.empty(t.shape), np.empty(t.shape)
-            for Sn, Cn in zip(S, C):  # k_n = S_n sin θ - C_n cos θ, without temporaries
-                np.multiply(s, Sn, out=a)
-                np.multiply(c, Cn, out=b)
-                np.subtract(a, b, out=a)
-                np.maximum(out, a, out=out)
+            if t.size >= _envelope.TABLE_MIN_SIZE and max(
+                    t.max(), -t.min()) <= _envelope.THETA_MAX:  # many angles: the table
+                table = self.__dict__.get("_ktable")  # of the envelope (issue 13 §5)
+                if table is None:
+                    table = _envelope.EnvelopeTable(S, C)
+                    object.__setattr__(self, "_ktable", table)
+                return table(t)
+            out = _envelope.direct_k_grasp(S, C, t)
             return out if t.ndim else float(out)
         ks = self.k(t)
         if any(k.free_symbols for k in ks):

@@ -1,0 +1,149 @@
+"""The fast numeric path (issue 13 §5): worst-case sizings per second and k_grasp on 10^6 θ.
+
+(a) ``graspcompass.batch.worst_squeeze`` on N seeded random float64 grasps (parallel and
+    tilted jaws inside condition (1), the generator of bench_sizing.py), condition (1)
+    checked, best of 5: sizings per second on one core.  Target: >= 10^7 /s.  Baselines
+    in the same run: ``graspcompass.sizing.worst_squeeze_many`` (the vectorised path
+    before §5, no checks) and a Python loop over ``Grasp`` objects
+    (``size_gripper(Grasp(...), m).worst_squeeze`` on 100 grasps).  Agreement: batch
+    against worst_squeeze_many (1e-12) and against the loop (1e-12).
+(b) ``Grasp.preset("fig6").k_grasp(theta)`` on 10^6 θ in [0, 2π), best of 5, the table of
+    the envelope warm; the first call (the table built) separately.  Target: <= 10 ms.
+    Baseline in the same run, interleaved: the array path before §5 (sin, cos and four
+    fused multiply-subtract-max passes, ``_envelope.direct_k_grasp``).  Agreement: the
+    largest difference in units of ε max_n |V_n|.
+
+Run:  PYTHONPATH=src python bench/bench_batch.py [--quick] [-n 1000000]
+"""
+
+from __future__ import annotations
+
+import os
+
+# one core: set before numpy is imported
+for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
+             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS", "BLIS_NUM_THREADS"):
+    os.environ[_var] = "1"
+
+import argparse  # noqa: E402
+import math  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+from graspcompass import Grasp, batch  # noqa: E402
+from graspcompass.batch import _envelope  # noqa: E402
+from graspcompass.sizing import size_gripper, worst_squeeze_many  # noqa: E402
+
+TARGET_RATE = 1e7
+TARGET_KG_S = 0.010
+N_THETA = 10**6
+N_LOOP = 100
+EPS = 2.0**-52
+
+
+def random_grasps(n: int, seed: int = 1) -> list[np.ndarray]:
+    """Paper-frame parameters inside condition (1): jaws tilted up to 0.8 ξ."""
+    rng = np.random.default_rng(seed)
+    mu1, mu2 = rng.uniform(0.15, 1.5, n), rng.uniform(0.15, 1.5, n)
+    return [rng.uniform(0.005, 0.1, n), rng.uniform(0.005, 0.1, n), rng.uniform(0, 0.05, n),
+            math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu1),
+            math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu2), mu1, mu2]
+
+
+def best_of_interleaved(fns, reps: int) -> list[float]:
+    """Best time of each function, repetitions interleaved (a, b, a, b, ...)."""
+    best = [math.inf] * len(fns)
+    for _ in range(reps):
+        for i, fn in enumerate(fns):
+            t0 = time.perf_counter()
+            fn()
+            best[i] = min(best[i], time.perf_counter() - t0)
+    return best
+
+
+def verdict(ok: bool) -> str:
+    return "target met" if ok else "target NOT met"
+
+
+def sizings(n: int, reps: int) -> bool:
+    p = random_grasps(n)
+    kw = dict(g=9.81, accel=2.0)
+    new = batch.worst_squeeze(*p, 1.0, **kw)
+    old = worst_squeeze_many(*p, 1.0, **kw)
+    t_new, t_old = best_of_interleaved(
+        [lambda: batch.worst_squeeze(*p, 1.0, **kw), lambda: worst_squeeze_many(*p, 1.0, **kw)],
+        reps)
+    t0 = time.perf_counter()
+    loop = [float(size_gripper(Grasp(*(float(v[i]) for v in p[:5]), mu1=float(p[5][i]),
+                                     mu2=float(p[6][i])), 1.0, g=9.81, accel=2.0).worst_squeeze)
+            for i in range(N_LOOP)]
+    t_loop = (time.perf_counter() - t0) / N_LOOP * n
+    d_old = float(np.max(np.abs(new - old) / old))
+    d_loop = float(np.max(np.abs(new[:N_LOOP] - loop) / np.array(loop)))
+    rate = n / t_new
+    print(f"\n(a) worst squeeze over all orientations, N = {n:,} grasps, best of {reps}")
+    print(f"{'case':<52} {'time':>10} {'sizings/s':>12} {'ratio':>9}")
+    print("-" * 86)
+    print(f"{'batch.worst_squeeze (condition (1) checked)':<52} {t_new * 1e3:7.1f} ms "
+          f"{rate:12.3g} {1:8.1f}x")
+    print(f"{'sizing.worst_squeeze_many (before §5, unchecked)':<52} {t_old * 1e3:7.1f} ms "
+          f"{n / t_old:12.3g} {t_new / t_old:8.2f}x")
+    print(f"{f'loop over Grasp + size_gripper ({N_LOOP}, scaled)':<52} {t_loop:7.1f} s  "
+          f"{n / t_loop:12.3g} {t_new / t_loop:8.1e}x")
+    print(f"speed-up: {t_old / t_new:.1f}x over worst_squeeze_many, {t_loop / t_new:.3g}x over "
+          f"the loop; max relative difference {d_old:.1e} and {d_loop:.1e}")
+    ok = rate >= TARGET_RATE and d_old < 1e-12 and d_loop < 1e-12
+    print(f"target (>= {TARGET_RATE:.0e} sizings/s on one core): {verdict(ok)} "
+          f"({rate:.3g} /s)")
+    return ok
+
+
+def k_grasp_many(reps: int) -> bool:
+    theta = np.linspace(0.0, 2 * np.pi, N_THETA, endpoint=False)
+    t0 = time.perf_counter()
+    g = Grasp.preset("fig6")
+    S, C = g._floats()
+    t_floats = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    first = g.k_grasp(theta)  # builds the table of the envelope
+    t_first = time.perf_counter() - t0
+    old = _envelope.direct_k_grasp(S, C, theta)
+    t_new, t_old = best_of_interleaved(
+        [lambda: g.k_grasp(theta), lambda: _envelope.direct_k_grasp(S, C, theta)], reps)
+    vmax = float(np.hypot(S, C).max())
+    diff = float(np.max(np.abs(first - old))) / (EPS * vmax)
+    print(f"\n(b) Grasp.preset('fig6').k_grasp(theta), 10^6 θ in [0, 2π), best of {reps}")
+    print(f"{'case':<52} {'time':>10} {'per θ':>10}")
+    print("-" * 76)
+    print(f"{'table of the envelope (warm)':<52} {t_new * 1e3:7.2f} ms "
+          f"{t_new / N_THETA * 1e9:7.2f} ns")
+    print(f"{'the array path before §5 (sin, cos, 4 passes)':<52} {t_old * 1e3:7.2f} ms "
+          f"{t_old / N_THETA * 1e9:7.2f} ns")
+    print(f"{f'first call: table built (+ {t_floats * 1e3:.1f} ms S_n, C_n)':<52} "
+          f"{t_first * 1e3:7.2f} ms")
+    print(f"speed-up: {t_old / t_new:.1f}x (first call {t_old / t_first:.1f}x); "
+          f"max |difference| = {diff:.2f} ε max|V_n|; "
+          f"{g.__dict__['_ktable'].broken_bins} bins hold a break point")
+    ok = t_new <= TARGET_KG_S and diff <= 4
+    print(f"target (<= {TARGET_KG_S * 1e3:.0f} ms for 10^6 θ): {verdict(ok)} "
+          f"({t_new * 1e3:.2f} ms)")
+    return ok
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="fewer repetitions")
+    ap.add_argument("-n", type=int, default=10**6, help="grasps for (a)")
+    args = ap.parse_args()
+    reps = 2 if args.quick else 5
+    print(f"python {sys.version.split()[0]}, numpy {np.__version__}, "
+          f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}")
+    a = sizings(args.n, reps)
+    b = k_grasp_many(reps)
+    print(f"\nall targets: {verdict(a and b)}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,539 @@
+"""Many grasps at once: V_n, k_n(θ), k_grasp(θ), F_int and the worst squeeze (issue 13 §5).
+
+Every function takes the seven paper-frame parameters ``x1, x2, y, phi1, phi2,
+mu1, mu2`` as arrays (or numbers) that broadcast together, of any namespace of
+the `Array API <https://data-apis.org/array-api/>`_ (numpy, CuPy, torch,
+``array_api_strict``, dask.array; found with ``array_api_compat.array_namespace``),
+and returns arrays of that namespace.  There are no loops over grasps.
+
+The model (Ito, Tanaka, Sasaki 2012) in closed form, for ``P1 = (x1, y)``,
+``P2 = (−x2, y)``, normals at φ1 (clockwise) and φ2 (counter-clockwise) from
+the negative y-axis and friction μ_i = tan ξ_i (22):
+
+* ``t_n = tan(φ ± ξ)`` in the μ form of eq. (23),
+  ``(sin φ ± μ cos φ) / (cos φ ∓ μ sin φ)``: ``+`` for n = 1 (P1), 2 (P2), the
+  upper cone sides; ``−`` for n = 3 (P1), 4 (P2), the lower ones;
+* ``S_1 = −(x1 + x2)/2 + y t_1``, ``C_1 = x2 t_1`` (28), (29);
+  ``S_2 = (x1 + x2)/2 − y t_2``, ``C_2 = x1 t_2`` (34), (35); n = 3, 4 alike
+  (36)-(39); ``V_n = (S_n, C_n)`` (30), (33);
+* ``k_n(θ) = S_n sin θ − C_n cos θ`` (27), (32); ``k_grasp = max(k_1..k_4, 0)``
+  (25); ``F_int = k_grasp/(x1 + x2) · F_e`` (17);
+* the squeeze that holds the part in every orientation,
+  ``S_f m (g + A) max_n |V_n| / (x1 + x2)`` per jaw (§5; see
+  :mod:`graspcompass.sizing.core`).
+
+Arrays: :func:`closed_form` and :func:`k` put the four sides on a new **last**
+axis (shape ``broadcast + (4,)``); θ broadcasts with the parameters.
+
+**Validity.**  The domain is that of :class:`graspcompass.Grasp`: finite values,
+``x1 + x2 > 0``, ``y >= 0``, ``0 < φ_i <= π``, ``μ_i > 0`` and condition (1),
+``−π/2 < φ_i − ξ_i < π/2 < φ_i + ξ_i < 3π/2``.  Given the others, (1) holds
+exactly when the denominators of the μ form have the signs
+``cos φ_i − μ_i sin φ_i < 0 < cos φ_i + μ_i sin φ_i`` (the cone's upper side
+rises, its lower side falls), which is how :func:`valid` checks it, on the same
+computed values the closed form divides by.  ``on_invalid="raise"`` (the
+default) raises :class:`InvalidGraspsError` naming the first invalid grasp (its
+index in the broadcast shape, the failed inequality and the values) and how many
+there are; ``on_invalid="nan"`` returns ``nan`` for invalid grasps instead (a
+design sweep keeps its shape; the only choice that stays lazy for dask).
+A ``nan`` parameter is invalid.  θ is not checked: a ``nan`` θ gives ``nan``, so
+does an infinite one.
+
+**Accuracy** (float64, u = 2^-53).  Near a bound of (1) a cone side is nearly
+horizontal and the closed form is ill-conditioned in the parameters
+themselves: the denominator ``cos φ ∓ μ sin φ`` cancels.  Computed from the
+doubles φ, μ its absolute error is about ``u (|cos φ| + μ |sin φ|)``, so
+
+    |Δt_n| <= 4u |t_n| (1 + (|sin φ| + μ|cos φ|)/|num_n| + (|cos φ| + μ|sin φ|)/|den_n|)
+
+and ``|ΔS_n| <= |y||Δt_n| + 2u(|S_n| + (|x1| + |x2|)/2)``,
+``|ΔC_n| <= |x||Δt_n| + u|C_n|`` (num, den: the μ form's numerator and
+denominator).  Away from the bounds this is a few ulp; at a relative margin
+ρ of (1) it grows like u/ρ.  :class:`graspcompass.Grasp` evaluates the same
+closed form at 40+ digits and rounds once (correct to one ulp); the tests check
+this bound against it and against mpmath at 50 digits, with hypothesis, on
+random grasps including ones within 1e-11 of a bound.  For numpy and
+``array_api_strict`` float64 input the sines and cosines of φ come from a
+2^15-entry table and a short series (absolute error below 2u, the size the
+bound assumes; 3-4× faster than the C library's), so the two namespaces give
+bit-identical results.
+
+Examples
+--------
+>>> import numpy as np
+>>> from graspcompass import batch
+>>> S, C = batch.closed_form(2.0, 2.0, 1.0, np.pi / 2, np.pi / 2, 1.0, 1.2)
+>>> np.round(S, 6).tolist(), np.round(C, 6).tolist()  # Table I (a): V_1 = (-3, -2), ...
+([-3.0, 2.833333, -1.0, 1.166667], [-2.0, -1.666667, 2.0, 1.666667])
+>>> batch.k_grasp(np.array([0.0, np.pi / 2]), 2.0, 2.0, 1.0, np.pi / 2, np.pi / 2, 1.0, 1.2)
+array([2.        , 2.83333333])
+>>> mu = np.array([0.05, 0.3, 1.0])  # a sweep over friction; 0.05 is too little here
+>>> batch.valid(2.0, 2.0, 1.0, np.pi / 2 - 0.1, np.pi / 2, mu, mu).tolist()
+[False, True, True]
+>>> batch.worst_squeeze(0.025, 0.075, 0.0, np.pi / 2, np.pi / 2, mu, mu, 1.0, g=9.81,
+...                     on_invalid="nan").round(2).tolist()
+[147.23, 25.01, 8.84]
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import ComplexValueError, InputError, WrongTypeError
+from . import _envelope
+
+__all__ = [
+    "PARAMETERS",
+    "InvalidGraspsError",
+    "closed_form",
+    "internal_force",
+    "k",
+    "k_grasp",
+    "valid",
+    "worst_squeeze",
+]
+
+#: The parameters every function takes first, in this order.
+PARAMETERS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")
+
+_ON_INVALID = ("raise", "nan")
+#: Block length of the numpy evaluation (its temporaries stay in the cache).
+_CHUNK = 1 << 13
+
+
+class InvalidGraspsError(InputError):
+    """Some grasps of a batch lie outside the domain (condition (1) and the ranges).
+
+    A :class:`ValueError` (through :class:`~graspcompass.errors.InputError`).
+
+    Attributes
+    ----------
+    index : tuple of int
+        The index of the first invalid grasp (row-major) in the broadcast shape
+        of the parameters.
+    count : int
+        How many grasps are invalid.
+    reason : str
+        What fails for that grasp, e.g. ``"φ1 + ξ1 > π/2 of condition (1)"``.
+    """
+
+    def __init__(self, message: str, index: tuple[int, ...], count: int, reason: str) -> None:
+        super().__init__(message)
+        self.index, self.count, self.reason = index, count, reason
+
+
+# -- namespaces ------------------------------------------------------------------------------
+def _namespace(*values: Any) -> Any:
+    """The Array API namespace of the arrays among ``values`` (numbers and lists are numpy)."""
+    arrays = [v for v in values if not isinstance(v, (int, float, list, tuple, np.generic))]
+    try:
+        from array_api_compat import array_namespace
+    except ImportError:  # numpy alone works without array-api-compat
+        if all(isinstance(v, np.ndarray) for v in arrays):
+            return np
+        raise ImportError("arrays other than numpy need array-api-compat: pip install "
+                          "'graspcompass[batch]'") from None
+    if not arrays:
+        arrays = [np.empty(0)]
+    return array_namespace(*arrays)
+
+
+def _is(xp: Any, name: str) -> bool:
+    try:
+        import array_api_compat as aac
+    except ImportError:
+        return name == "numpy" and xp is np
+    return bool(getattr(aac, f"is_{name}_namespace")(xp))
+
+
+def _astype(xp: Any, a: Any, dtype: Any) -> Any:
+    f = getattr(xp, "astype", None)
+    return f(a, dtype) if f is not None else a.astype(dtype)
+
+
+def _isdtype(xp: Any, dtype: Any, kind: str) -> bool:
+    f = getattr(xp, "isdtype", None)
+    if f is not None:
+        return bool(f(dtype, kind))
+    np_kind = {"bool": "b", "complex floating": "c", "real floating": "f", "integral": "iu"}
+    return np.dtype(dtype).kind in np_kind[kind]
+
+
+def _floats(xp: Any, values: tuple, names: tuple) -> list:
+    """The values as real floating arrays of ``xp`` (integers become float64)."""
+    out = []
+    for v, name in zip(values, names):
+        if isinstance(v, (list, tuple)):
+            v = np.asarray(v)
+        if isinstance(v, (bool, np.bool_)):
+            raise WrongTypeError(f"{name}: expected numbers, got a bool")
+        if isinstance(v, complex):
+            raise ComplexValueError(f"{name}: expected real numbers, got {v!r}")
+        a = xp.asarray(v)
+        if _isdtype(xp, a.dtype, "bool"):
+            raise WrongTypeError(f"{name}: expected numbers, got an array of bools")
+        if _isdtype(xp, a.dtype, "complex floating"):
+            raise ComplexValueError(f"{name}: expected real numbers, got a complex array")
+        if not _isdtype(xp, a.dtype, "real floating"):
+            if not _isdtype(xp, a.dtype, "integral"):
+                raise WrongTypeError(f"{name}: expected numbers, got dtype {a.dtype}")
+            a = _astype(xp, a, xp.float64)
+        out.append(a)
+    return out
+
+
+# -- the closed form -------------------------------------------------------------------------
+def _sincos(xp: Any, x: Any) -> tuple[Any, Any]:
+    """sin x, cos x; for float64 numpy / array_api_strict arrays from a table (|error| < 2u).
+
+    ``x = j h + d`` with ``h = 2π/2^15`` (two-part h: the reduction is exact to
+    ~1e-20 for |x| <= 2π), ``sin(jh + d) = s_j cos d + c_j sin d`` with the
+    table's s_j, c_j (one ulp) and ``cos d = 1 − d²/2``, ``sin d = d(1 − d²/6)``
+    (|d| <= 9.6e-5: below 4e-18).  Meant for angles of a few turns at most (the
+    contact angles φ ∈ (0, π]); a non-finite x gives nan.
+    """
+    if x.dtype != xp.float64 or not (_is(xp, "numpy") or _is(xp, "array_api_strict")):
+        return xp.sin(x), xp.cos(x)
+    shape = x.shape
+    flat = xp.reshape(x, (-1,))
+    s_tab, c_tab = _envelope.grid_table()
+    with np.errstate(invalid="ignore"):  # nan -> an arbitrary index; d stays nan
+        j = xp.round(flat * _envelope._INV_H)
+        i = _astype(xp, j, xp.int64) & (_envelope.M - 1)
+    d = (flat - j * _envelope._H_HI) - j * _envelope._H_LO
+    s0, c0 = xp.take(xp.asarray(s_tab), i), xp.take(xp.asarray(c_tab), i)
+    z = d * d
+    sd = d * (1.0 - z * (1.0 / 6.0))
+    w = 0.5 * z
+    s = s0 + (c0 * sd - s0 * w)
+    c = c0 - (s0 * sd + c0 * w)
+    return xp.reshape(s, shape), xp.reshape(c, shape)
+
+
+def _sides(xp: Any, phi: Any, mu: Any) -> tuple[Any, Any, Any, Any]:
+    """Numerators and denominators of tan(φ + ξ) and tan(φ − ξ) in the μ form (23)."""
+    s, c = _sincos(xp, phi)
+    ms, mc = mu * s, mu * c
+    return s + mc, c - ms, s - mc, c + ms
+
+
+def _core(xp: Any, p: list) -> tuple[list, list, Any]:
+    """S_n, C_n (n = 1..4) and the validity mask, eqs. (28)-(39) and condition (1)."""
+    x1, x2, y, phi1, phi2, mu1, mu2 = p
+    n1, d1, n3, d3 = _sides(xp, phi1, mu1)
+    n2, d2, n4, d4 = _sides(xp, phi2, mu2)
+    h = (x1 + x2) * 0.5
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        t1, t2, t3, t4 = n1 / d1, n2 / d2, n3 / d3, n4 / d4
+        S = [y * t1 - h, h - y * t2, y * t3 - h, h - y * t4]
+        C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
+    ok = ((x1 + x2 > 0) & (y >= 0) & (phi1 > 0) & (phi1 <= math.pi) & (phi2 > 0)
+          & (phi2 <= math.pi) & (mu1 > 0) & (mu2 > 0) & (d1 < 0) & (d2 < 0) & (d3 > 0)
+          & (d4 > 0))
+    for v in (x1, x2, y, mu1, mu2):  # phi and the signs above are False for nan already
+        ok = ok & xp.isfinite(v)
+    return S, C, ok
+
+
+def _margin_ok(xp: Any, p: list, margin: float) -> Any:
+    """Condition (1) with every inequality holding by more than ``margin`` of its bound."""
+    _, _, _, phi1, phi2, mu1, mu2 = p
+    ok = None
+    half = math.pi / 2
+    for phi, mu in ((phi1, mu1), (phi2, mu2)):
+        xi = xp.atan(mu)
+        lo, up = phi - xi, phi + xi
+        m = ((lo + half > margin * half) & (half - lo > margin * half)
+             & (up - half > margin * half) & (3 * half - up > margin * 3 * half))
+        ok = m if ok is None else ok & m
+    return ok
+
+
+def _reason(v: dict[str, float]) -> str:
+    """The first failed inequality of one grasp (Python floats), in words."""
+    for name in PARAMETERS:
+        if not math.isfinite(v[name]):
+            return f"{name} = {v[name]!r} is not finite"
+    if not v["x1"] + v["x2"] > 0:
+        return "x1 + x2 > 0 (P1 must lie right of P2)"
+    if not v["y"] >= 0:
+        return "y >= 0 (the frame of §2.2.1)"
+    for i in (1, 2):
+        phi, mu = v[f"phi{i}"], v[f"mu{i}"]
+        if not 0 < phi <= math.pi:
+            return f"0 < φ{i} <= π"
+        if not mu > 0:
+            return f"μ{i} > 0"
+        if not math.cos(phi) - mu * math.sin(phi) < 0:
+            return f"φ{i} + ξ{i} > π/2 of condition (1) (the friction cone misses P{3 - i})"
+        if not math.cos(phi) + mu * math.sin(phi) > 0:
+            return f"φ{i} − ξ{i} < π/2 of condition (1) (the friction cone misses P{3 - i})"
+    return "condition (1) within the margin asked (or within rounding of a bound)"
+
+
+def _refuse(xp: Any, p: list, ok: Any) -> None:
+    """Raise :class:`InvalidGraspsError` when ``ok`` is False anywhere."""
+    bad = xp.reshape(~ok, (-1,))
+    count = int(xp.sum(_astype(xp, bad, xp.int64)))
+    if not count:
+        return
+    first = int(xp.argmax(_astype(xp, bad, xp.int8)))
+    shape = tuple(ok.shape)
+    index = tuple(int(i) for i in np.unravel_index(first, shape)) if shape else ()
+    vals = {name: float(xp.reshape(xp.broadcast_to(a, shape), (-1,))[first])
+            for name, a in zip(PARAMETERS, p)}
+    reason = _reason(vals)
+    shown = ", ".join(f"{k}={v!r}" for k, v in vals.items())
+    raise InvalidGraspsError(
+        f"{count} of {math.prod(shape)} grasps are invalid; the first, at index {index} "
+        f"({shown}), fails {reason}. Pass on_invalid='nan' for nan results there, or "
+        "select the valid ones with graspcompass.batch.valid", index, count, reason)
+
+
+def _prepare(values: tuple, extra: tuple = (), extra_names: tuple = ()) -> tuple:
+    xp = _namespace(*values, *extra)
+    arrs = _floats(xp, values + extra, PARAMETERS + extra_names)
+    return xp, arrs[:7], arrs[7:]
+
+
+def _check_mode(on_invalid: str) -> None:
+    if on_invalid not in _ON_INVALID:
+        raise InputError(f"on_invalid: expected 'raise' or 'nan', got {on_invalid!r}")
+
+
+def _nan_where(xp: Any, ok: Any, v: Any) -> Any:
+    return xp.where(ok, v, xp.asarray(math.nan, dtype=v.dtype))
+
+
+def _blocks(xp: Any, arrays: list) -> list[list] | None:
+    """Row blocks of same-shape numpy arrays (scalars kept), or None: evaluate at once."""
+    if not _is(xp, "numpy"):
+        return None
+    shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    n = math.prod(shape)
+    if n <= 2 * _CHUNK or any(a.ndim and a.shape != shape for a in arrays):
+        return None
+    flat = [a.reshape(-1) if a.ndim else a for a in arrays]
+    return [[a[lo:lo + _CHUNK] if a.ndim else a for a in flat] for lo in range(0, n, _CHUNK)]
+
+
+# -- the public functions --------------------------------------------------------------------
+def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
+          margin: float = 0.0) -> Any:
+    """Which grasps lie in the domain of the method: condition (1) and the ranges.
+
+    ``x1 + x2 > 0``, ``y >= 0``, ``0 < φ_i <= π``, ``μ_i > 0``, all finite, and
+    condition (1) ``−π/2 < φ_i − ξ_i < π/2 < φ_i + ξ_i < 3π/2`` (ξ_i = atan μ_i,
+    eq. (22)), decided from the signs of the μ form's denominators
+    ``cos φ_i ∓ μ_i sin φ_i``.  Within about 1e-16 rad of a bound the verdict
+    follows the rounding of those denominators.
+
+    Parameters
+    ----------
+    x1, x2, y, phi1, phi2, mu1, mu2 : array or number
+        Broadcasting together (any Array API namespace).
+    margin : float, optional
+        Also require every inequality of (1) to hold by more than
+        ``margin · |bound|`` (rad); ``margin=1e-12`` refuses what the float path
+        of :class:`graspcompass.Grasp` refuses
+        (:data:`graspcompass._floatpath.FLOAT_MARGIN`).
+
+    Returns
+    -------
+    array of bool
+        The broadcast shape of the parameters.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> valid(1.0, 1.0, 0.0, np.pi / 2, np.pi / 2, np.array([0.5, -0.5, np.nan]), 0.5)
+    array([ True, False, False])
+    """
+    xp, p, _ = _prepare((x1, x2, y, phi1, phi2, mu1, mu2))
+    _, _, ok = _core(xp, p)
+    if margin:
+        ok = ok & _margin_ok(xp, p, float(margin))
+    return xp.broadcast_to(ok, np.broadcast_shapes(*(tuple(a.shape) for a in p)))
+
+
+def closed_form(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
+                on_invalid: str = "raise") -> tuple[Any, Any]:
+    """``S_n`` and ``C_n`` of eqs. (28)-(39), ``V_n = (S_n, C_n)`` (30), (33), of many grasps.
+
+    Parameters
+    ----------
+    x1, x2, y, phi1, phi2, mu1, mu2 : array or number
+        The grasps' parameters, broadcasting together (any Array API namespace).
+    on_invalid : {"raise", "nan"}
+        Raise :class:`InvalidGraspsError` for a grasp outside the domain
+        (:func:`valid`), or give it ``nan``.
+
+    Returns
+    -------
+    S, C : array
+        Shape ``broadcast + (4,)``: the last axis is n = 1..4 (upper side at P1,
+        upper at P2, lower at P1, lower at P2).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> S, C = closed_form(np.sqrt(3) / 2, np.sqrt(3) / 2, 0.5, np.pi / 3, np.pi / 3,
+    ...                    1.0, np.sqrt(3))  # Fig. 6: V_1 = (-1 - √3, -3/2 - √3)
+    >>> S.shape, bool(np.allclose([S[0], C[0]], [-1 - np.sqrt(3), -1.5 - np.sqrt(3)]))
+    ((4,), True)
+    """
+    _check_mode(on_invalid)
+    xp, p, _ = _prepare((x1, x2, y, phi1, phi2, mu1, mu2))
+    S, C, ok = _core(xp, p)
+    shape = np.broadcast_shapes(*(tuple(a.shape) for a in p))
+    if on_invalid == "raise":
+        _refuse(xp, p, xp.broadcast_to(ok, shape))
+    else:
+        S = [_nan_where(xp, ok, v) for v in S]
+        C = [_nan_where(xp, ok, v) for v in C]
+    S = xp.stack([xp.broadcast_to(v, shape) for v in S], axis=-1)
+    C = xp.stack([xp.broadcast_to(v, shape) for v in C], axis=-1)
+    return S, C
+
+
+def k(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
+      on_invalid: str = "raise") -> Any:
+    """The lower limits ``k_n(θ) = S_n sin θ − C_n cos θ`` (eqs. (27), (32)) of many grasps.
+
+    ``theta`` broadcasts with the parameters; the result has shape
+    ``broadcast + (4,)`` (n = 1..4 on the last axis).  Inputs as in
+    :func:`closed_form`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> k(0.0, 2.0, 2.0, 1.0, np.pi / 2, np.pi / 2, 1.0, 1.2).round(12).tolist()
+    [2.0, 1.666666666667, -2.0, -1.666666666667]
+    """
+    S, C = closed_form(x1, x2, y, phi1, phi2, mu1, mu2, on_invalid=on_invalid)
+    xp = _namespace(S)
+    t = _floats(xp, (theta,), ("theta",))[0]
+    s, c = xp.sin(t)[..., None], xp.cos(t)[..., None]
+    return S * s - C * c
+
+
+def _k_grasp(xp: Any, theta: Any, p: list, on_invalid: str) -> tuple[Any, Any, list]:
+    S, C, ok = _core(xp, p)
+    s, c = xp.sin(theta), xp.cos(theta)
+    kg = None
+    for Sn, Cn in zip(S, C):
+        kn = Sn * s - Cn * c
+        kg = kn if kg is None else xp.maximum(kg, kn)
+    kg = xp.maximum(kg, xp.asarray(0.0, dtype=kg.dtype))
+    shape = np.broadcast_shapes(tuple(kg.shape), *(tuple(a.shape) for a in p))
+    kg, ok = xp.broadcast_to(kg, shape), xp.broadcast_to(ok, shape)
+    if on_invalid == "raise":
+        _refuse(xp, [xp.broadcast_to(a, shape) for a in p], ok)
+        return kg, ok, p
+    return _nan_where(xp, ok, kg), ok, p
+
+
+def k_grasp(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
+            on_invalid: str = "raise") -> Any:
+    """The least internal-force parameter ``max(k_1, k_2, k_3, k_4, 0)`` (eq. (25)).
+
+    ``theta`` (rad, eq. (26)) broadcasts with the parameters; the result has
+    the broadcast shape.  Inputs as in :func:`closed_form`.  For one grasp on
+    many angles :meth:`graspcompass.Grasp.k_grasp` is faster (a table of the
+    envelope) and correctly rounds S_n, C_n.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> k_grasp(np.linspace(0, np.pi, 3), 2.0, 2.0, 1.0, np.pi / 2, np.pi / 2, 1.0, 1.2)
+    array([2.        , 2.83333333, 2.        ])
+    """
+    _check_mode(on_invalid)
+    xp, p, (t,) = _prepare((x1, x2, y, phi1, phi2, mu1, mu2), (theta,), ("theta",))
+    return _k_grasp(xp, t, p, on_invalid)[0]
+
+
+def internal_force(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any,
+                   mu2: Any, external_force: Any = 1.0, *, on_invalid: str = "raise") -> Any:
+    """The least internal force ``F_int = k_grasp(θ)/(x1 + x2) · F_e`` (eq. (17)).
+
+    ``external_force`` (F_e >= 0, broadcasting too) is not checked.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> round(float(internal_force(0.0, 2.0, 2.0, 1.0, np.pi / 2, np.pi / 2, 1.0, 1.2, 10.0)), 12)
+    5.0
+    """
+    _check_mode(on_invalid)
+    xp, p, (t, fe) = _prepare((x1, x2, y, phi1, phi2, mu1, mu2), (theta, external_force),
+                              ("theta", "external_force"))
+    kg = _k_grasp(xp, t, p, on_invalid)[0]
+    return kg / (p[0] + p[1]) * fe
+
+
+def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any,
+                  mass: Any, *, g: Any = 9.80665, accel: Any = 0.0, safety: Any = 1.0,
+                  per: str = "jaw", on_invalid: str = "raise") -> Any:
+    """The squeeze that holds each part in every orientation, for many grasps.
+
+    ``S_f m (g + A) max_n |V_n| / (x1 + x2)`` per jaw, twice that with
+    ``per="total"`` (the paper's §5 remark with eq. (17); the derivation is in
+    :mod:`graspcompass.sizing.core`), in SI units: metres, radians, kg, m/s²,
+    newtons.  The same number as :func:`graspcompass.sizing.worst_squeeze_many`
+    and the ``worst_squeeze`` of :func:`graspcompass.sizing.size_gripper`, with
+    condition (1) checked and any Array API namespace.
+
+    Parameters
+    ----------
+    x1, x2, y, phi1, phi2, mu1, mu2 : array or number
+        The grasps in the paper's frame (see :func:`closed_form`).
+    mass, g, accel, safety : array or number
+        Mass m (kg), gravity g and the acceleration bound A (m/s²), the safety
+        factor S_f; they broadcast with the grasps and are not checked.
+    per : {"jaw", "total"}
+    on_invalid : {"raise", "nan"}
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> F = worst_squeeze(0.025, 0.075, 0.0, np.pi / 2, np.pi / 2, 0.3, 0.3, 1.0, g=9.81)
+    >>> round(float(F), 2)  # the worked example of issue 13: 981 √26 / 200 N per jaw
+    25.01
+    """
+    _check_mode(on_invalid)
+    if per not in ("jaw", "total"):
+        raise InputError(f"per: expected 'jaw' or 'total', got {per!r}")
+    xp, p, (m, gg, a, sf) = _prepare((x1, x2, y, phi1, phi2, mu1, mu2),
+                                     (mass, g, accel, safety), ("mass", "g", "accel", "safety"))
+    factor = 1.0 if per == "jaw" else 2.0
+    blocks = _blocks(xp, [*p, m, gg, a, sf])
+    if blocks is None:
+        out, ok = _squeeze(xp, p, m, gg, a, sf, factor)
+        shape = np.broadcast_shapes(*(tuple(v.shape) for v in (*p, m, gg, a, sf)))
+        out, ok = xp.broadcast_to(out, shape), xp.broadcast_to(ok, shape)
+    else:  # numpy: blocks that stay in the cache (3x faster on 10^6 grasps)
+        shape = np.broadcast_shapes(*(v.shape for v in (*p, m, gg, a, sf)))
+        res = [_squeeze(xp, b[:7], *b[7:], factor) for b in blocks]
+        out = np.concatenate([np.broadcast_to(r[0], r[1].shape) for r in res]).reshape(shape)
+        ok = np.concatenate([r[1] for r in res]).reshape(shape)
+    if on_invalid == "raise":
+        _refuse(xp, [xp.broadcast_to(v, shape) for v in p], ok)
+        return out
+    return _nan_where(xp, ok, out)
+
+
+def _squeeze(xp: Any, p: list, m: Any, g: Any, a: Any, sf: Any, factor: float
+             ) -> tuple[Any, Any]:
+    S, C, ok = _core(xp, p)
+    with np.errstate(over="ignore", invalid="ignore"):
+        r2 = None
+        for Sn, Cn in zip(S, C):
+            v = Sn * Sn + Cn * Cn
+            r2 = v if r2 is None else xp.maximum(r2, v)
+        out = (sf * m * (g + a) * factor) * xp.sqrt(r2) / (p[0] + p[1])
+    ok = xp.broadcast_to(ok, np.broadcast_shapes(tuple(ok.shape), tuple(out.shape)))
+    return out, ok
