@@ -95,10 +95,16 @@ def _grid() -> tuple[np.ndarray, np.ndarray]:
     return _GRID
 
 
+_TABLE: tuple[np.ndarray, np.ndarray] | None = None
+
+
 def grid_table() -> tuple[np.ndarray, np.ndarray]:
-    """sin and cos of ``j h``, j = 0..M−1, about one ulp (views of the shared grid)."""
-    s, c = _grid()
-    return s[1::2], c[1::2]
+    """sin and cos of ``j h``, j = 0..M−1, about one ulp (contiguous, computed once)."""
+    global _TABLE
+    if _TABLE is None:
+        s, c = _grid()
+        _TABLE = (np.ascontiguousarray(s[1::2]), np.ascontiguousarray(c[1::2]))
+    return _TABLE
 
 
 class EnvelopeTable:
@@ -155,8 +161,8 @@ class EnvelopeTable:
             np.subtract(d_, z_, out=d_)  # d = θ − j h
             np.copyto(i_, j_, casting="unsafe")
             np.bitwise_and(i_, M - 1, out=i_)  # j mod M
-            np.take(A, i_, out=a_)
-            np.take(B, i_, out=b_)
+            np.take(A, i_, out=a_, mode="clip")  # 0 <= i < M: no check needed
+            np.take(B, i_, out=b_, mode="clip")
             np.multiply(d_, d_, out=z_)
             np.multiply(z_, -1.0 / 6.0, out=s_)
             np.add(s_, 1.0, out=s_)
