@@ -40,10 +40,10 @@ maximum of ``V · R_ρ w`` over ρ in ``[−τ, τ]`` is ``|V||w|`` when the ang
 between V and w is at most τ (``V·w >= |V||w| cos τ``), else the larger end
 ``cos τ (V·w) + sin τ |V × w|``.  So the squeeze per jaw is
 
-    F = S_f · m · max(0, max_n (M_n(w, τ) + A |V_n|)) / (x1 + x2),
+    F = S_f · m · max(0, max_n (M_n(w, τ) + A·‖V_n‖)) / (x1 + x2),
 
 and over all orientations ``F = S_f · m (|w| + A) max_n |V_n| / (x1 + x2)``
-(the paper's §5 remark: an internal force above max_n |V_n| holds the part in
+(the paper's §5 remark: an internal force above max_n ‖V_n‖ holds the part in
 every orientation).  ``S_f`` is the safety factor.
 
 **The vendor formula** sizes a part centred between the jaws and loaded along
@@ -530,7 +530,7 @@ def _best(ev: dict[str, Any], case: _Case) -> tuple[float, tuple[float, float]]:
     """The least squeeze per jaw over the orientations of the case, and ĝ there (paper frame).
 
     Minimises ``h(ρ) = max_n (a_n cos ρ + b_n sin ρ + c_n)`` over ρ in [−τ, τ]
-    (a_n = V_n·w, b_n = V_n·Jw, c_n = A|V_n|): the minimum is at an end of the
+    (a_n = V_n·w, b_n = V_n·Jw, c_n = A‖V_n‖): the minimum is at an end of the
     range, at the minimum ``ρ = atan2(−b_n, −a_n)`` of one term, or where two terms
     are equal; every such candidate is evaluated.
     """
@@ -739,7 +739,7 @@ def worst_squeeze_many(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any,
     ``per="total"``), the paper-frame parameters broadcasting together (metres,
     radians, kg, m/s²).  The closed form (28)-(39) is evaluated in double
     precision, so near the bounds of condition (1) (a cone side nearly
-    horizontal) its relative error grows like ε/|cos(φ ± ξ)|; the parameters are
+    horizontal) its relative error grows like ε / abs(cos(φ ± ξ)); the parameters are
     not checked here (:class:`~graspcompass.Grasp` and :func:`size_gripper` do).
 
     Examples
