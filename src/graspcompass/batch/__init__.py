@@ -55,7 +55,7 @@ this bound against it and against mpmath at 50 digits, with hypothesis, on
 random grasps including ones within 1e-11 of a bound.  For numpy and
 ``array_api_strict`` float64 input the sines and cosines of φ come from a
 2^15-entry table and a short series (absolute error below 2u, the size the
-bound assumes; 3-4× faster than the C library's), so the two namespaces give
+bound assumes; about 2× faster than the C library's), so the two namespaces give
 bit-identical results.
 
 Examples

@@ -42,8 +42,8 @@ M = 1 << 15
 THETA_MAX = float(1 << 16)
 #: Arrays below this size take the direct formula (the table costs ~3 ms to build once).
 TABLE_MIN_SIZE = 1 << 15
-#: Block length of the evaluation (a few arrays of it stay in the L2 cache).
-CHUNK = 1 << 14
+#: Block length of the evaluation (fewer Python calls against the cache's size).
+CHUNK = 1 << 15
 
 # 2π as a double-double, and h = 2π/M split so that j·_H_HI is exact for |j| < 2^29
 _TWO_PI_HI = 6.283185307179586
@@ -52,6 +52,8 @@ _H = _TWO_PI_HI / M  # exact: M is a power of two
 _H_HI = float(np.float32(_H))  # 24 significant bits
 _H_LO = (_H - _H_HI) + _TWO_PI_LO / M
 _INV_H = M / _TWO_PI_HI
+#: Adding 1.5·2^52 rounds |t| < 2^51 to an integer (half to even) held in the low mantissa bits.
+_ROUND = 1.5 * 2.0**52
 
 
 def direct_k_grasp(S: np.ndarray, C: np.ndarray, t: np.ndarray, out: np.ndarray | None = None,
@@ -147,22 +149,22 @@ class EnvelopeTable:
         n = flat.size
         size = min(CHUNK, n)
         jj, d, z, s, a, b = (np.empty(size) for _ in range(6))
-        idx = np.empty(size, dtype=np.intp)
         A, B = self.A, self.B
         for lo in range(0, n, size):
             m = min(size, n - lo)
             th, o = flat[lo:lo + m], out[lo:lo + m]
-            j_, d_, z_, s_, a_, b_, i_ = jj[:m], d[:m], z[:m], s[:m], a[:m], b[:m], idx[:m]
+            j_, d_, z_, s_, a_, b_ = jj[:m], d[:m], z[:m], s[:m], a[:m], b[:m]
+            i_ = z_.view(np.int64)  # z_ holds the table index first
             np.multiply(th, _INV_H, out=j_)
-            np.rint(j_, out=j_)  # the nearest grid point θ0 = j h
+            np.add(j_, _ROUND, out=j_)  # j + 1.5·2^52: j rounded to an integer, in the low bits
+            np.bitwise_and(j_.view(np.int64), M - 1, out=i_)  # j mod M
+            np.take(A, i_, out=a_, mode="clip")  # 0 <= i < M: no check needed
+            np.take(B, i_, out=b_, mode="clip")
+            np.subtract(j_, _ROUND, out=j_)  # the nearest grid point θ0 = j h
             np.multiply(j_, _H_HI, out=d_)
             np.subtract(th, d_, out=d_)  # exact (Sterbenz)
             np.multiply(j_, _H_LO, out=z_)
             np.subtract(d_, z_, out=d_)  # d = θ − j h
-            np.copyto(i_, j_, casting="unsafe")
-            np.bitwise_and(i_, M - 1, out=i_)  # j mod M
-            np.take(A, i_, out=a_, mode="clip")  # 0 <= i < M: no check needed
-            np.take(B, i_, out=b_, mode="clip")
             np.multiply(d_, d_, out=z_)
             np.multiply(z_, -1.0 / 6.0, out=s_)
             np.add(s_, 1.0, out=s_)
