@@ -80,6 +80,13 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     part.add_argument("--outline", metavar="X,Y;X,Y;...",
                       help="the part's outline (vertices separated by ';'): normals of the "
                            "edges the contacts lie on, centroid as the default --com")
+    part.add_argument("--shape", metavar="FILE",
+                      help="the part's outline from a drawing: an SVG or DXF file (the "
+                           "optional extra graspcompass[outlines]); the closed shape of "
+                           "largest area, curves flattened, in the drawing's units")
+    part.add_argument("--shape-unit", metavar="LENGTH",
+                      help="with --shape: the length of one drawing unit when the file does "
+                           "not say (default: SVG 96 per inch, DXF mm)")
     part.add_argument("--com", metavar="X,Y", help="centre of mass (default: the outline's "
                       "centroid)")
     part.add_argument("--mass", required=True, metavar="M", help="mass (kg unless a unit: 500g)")
@@ -147,6 +154,14 @@ def _check_cheap(args: argparse.Namespace) -> None:
             read_pair(getattr(args, opt), f"--{opt}", None)
     if args.accel_vector is not None:
         read_pair(args.accel_vector, "--accel-vector", "acceleration")
+    if args.shape is not None:
+        if args.outline is not None:
+            raise InputError("give the outline as --outline or as --shape FILE, not both")
+        if not args.shape.lower().endswith((".svg", ".dxf")):
+            raise InputError(f"--shape {args.shape!r}: an outline is read from a .svg or .dxf "
+                             "file")
+    elif args.shape_unit is not None:
+        raise InputError("--shape-unit goes with --shape FILE")
     if args.outline is not None:
         vertices = args.outline.split(";")
         if len(vertices) < 3:
@@ -154,9 +169,10 @@ def _check_cheap(args: argparse.Namespace) -> None:
                             f"{args.outline!r}")
         for i, v in enumerate(vertices):
             read_pair(v, f"--outline vertex {i + 1}", "length")
-    elif args.n1 is None or args.n2 is None:
-        raise InputError("give the inward normals (--n1 and --n2) or the part's --outline")
-    if args.com is None and args.outline is None:
+    elif (args.n1 is None or args.n2 is None) and args.shape is None:
+        raise InputError("give the inward normals (--n1 and --n2) or the part's --outline "
+                         "(or --shape FILE)")
+    if args.com is None and args.outline is None and args.shape is None:
         raise InputError("give the centre of mass --com (or an --outline: its centroid)")
     if args.mu is not None and (args.mu1 is not None or args.mu2 is not None):
         raise InputError("give the friction as --mu (both pads) or as --mu1 and --mu2, not both")
@@ -221,6 +237,10 @@ def run(args: argparse.Namespace) -> int:
     outline = None if args.outline is None else [
         _pair_values(v, f"--outline vertex {i + 1}", "length")
         for i, v in enumerate(args.outline.split(";"))]
+    if args.shape is not None:
+        from .outlines import read_outline
+
+        outline = read_outline(args.shape, unit=args.shape_unit)
     com = None if args.com is None else _pair_values(args.com, "--com", "length")
     try:
         wg = place_grasp(contacts, normals, mu=mu, com=com, outline=outline, names=_NAMES)
