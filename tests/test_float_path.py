@@ -109,7 +109,10 @@ def lp_k(x1, x2, y, phi1, phi2, mu1, mu2, theta) -> float:
     a, b = -(G @ FN), G @ FT
     w = np.where(a != 0, 1 / np.maximum(np.abs(a), 1e-300), 1.0)
     res = linprog([1.0], A_ub=(a * w)[:, None], b_ub=b * w, bounds=[(0, None)],
-                  method="highs")
+                  method="highs", options={"primal_feasibility_tolerance": 1e-10,
+                                           "dual_feasibility_tolerance": 1e-10})
+    # (HiGHS's default feasibility tolerance, 1e-7 absolute, was the larger error: it made
+    # the LP, not k_grasp, miss the 50-digit value by 1.9e-8 on a near-degenerate grasp)
     assert res.status == 0, res.message
     return float(res.x[0])
 
