@@ -422,3 +422,46 @@ def test_a_file_without_parameters_is_decided_on_its_numbers() -> None:
     assert [c.status for c in r.claims] == [Status.PROVED, Status.REFUTED, Status.REFUTED]
     assert r.claims[1].counterexample == {}
     assert "no parameters" in to_table(r)
+
+
+#: Wrong versions of the recipe's own claims (each false at a point of the model): the
+#: checker must never prove one, and must refute each at a point of the model.
+_CLAIMS_TAIL = _TEXT[_TEXT.index("let t1"):]
+MUTATIONS = [
+    ("x2*t1) under condition1", "x1*t1) under condition1"),
+    ("-(x1 + x2)/2 + y*t1, x2*t1)", "(x1 + x2)/2 + y*t1, x2*t1)"),
+    ("(x1 + x2)/2 - y*t2, x1*t2)", "(x1 + x2)/2 - y*t4, x1*t2)"),
+    ("-(x1 + x2)/2 + y*t3, x2*t3)", "-(x1 - x2)/2 + y*t3, x2*t3)"),
+    ("claim OMX1 == -(-(x1 + x2)/2 + y*t1)", "claim OMX1 == -(x1 + x2)/2 + y*t1"),
+    ("claim on X1 side1", "claim on X3 side1"),
+    ("claim perpendicular perp1 side1", "claim perpendicular perp1 side3"),
+    ("claim collinear O_M X1 X3", "claim collinear O_M X1 Y1"),
+    ("claim sign x1 + x2 > 0", "claim sign x1 - x2 > 0"),
+    ("let t1 = (sin(phi1) + cos(phi1)*mu1)", "let t1 = (sin(phi1) + cos(phi1)*mu2)"),
+]
+
+
+@pytest.fixture(scope="module")
+def right_claims() -> set[str]:
+    return {r.name for r in check_program(parse(HEAD + _CLAIMS_TAIL)).claims}
+
+
+@pytest.mark.parametrize("old, new", MUTATIONS, ids=[n for _, n in MUTATIONS])
+def test_wrong_claims_are_never_proved(old: str, new: str, right_claims: set[str]) -> None:
+    assert _CLAIMS_TAIL.count(old) == 1, old
+    rows = check_program(parse(HEAD + _CLAIMS_TAIL.replace(old, new))).claims
+    changed = [r for r in rows if r.name not in right_claims]
+    assert changed
+    for r in changed:
+        assert r.status is Status.REFUTED, (r.name, r.status)
+        assert is_model_point(r.counterexample), r.counterexample
+
+
+def test_an_equivalent_rewriting_stays_proved_with_its_condition() -> None:
+    """x1*t4 + (y² − y)/(y − 1) − y is x1*t4 wherever it is defined: PROVED, with the
+    condition y − 1 ≠ 0 stated (sympy does not cancel the fraction by itself)."""
+    text = HEAD + _CLAIMS_TAIL.replace("x1*t4) under condition1",
+                                       "x1*t4 + (y**2 - y)/(y - 1) - y) under condition1")
+    v4 = next(r for r in check_program(parse(text)).claims if r.name.startswith("V4"))
+    assert v4.status is Status.PROVED
+    assert any("y - 1" in c for c in v4.result.conditions), v4.result.conditions
