@@ -1,0 +1,423 @@
+"""Choosing the contacts of a two-jaw grasp on an outline (issue 13 §3): ``graspcompass plan``.
+
+:func:`plan_contacts` samples contact points along the edges of a part's
+outline (each with its edge's inward normal; vertices, where the normal is
+undefined, are never sampled), forms every pair of them, and ranks the pairs by
+the squeeze that holds the part **in every orientation** (Ito, Tanaka, Sasaki
+2012, §5 with eq. (17)):
+
+    F = m g max_n |V_n| / (x1 + x2)   per jaw,
+
+``V_n = (S_n, C_n)`` of eqs. (28)-(39) in the paper frame of each pair
+(§2.2.1, Fig. 2: the origin at the centre of mass, the x-axis along the line
+through the contacts).  Pairs that are not force-closure, i.e. violate
+condition (1) (each friction cone must contain the other contact), have no
+finite squeeze and are left out of the ranking.
+
+Everything is vectorised: the paper frame of all pairs (:func:`pair_frames`,
+the same construction as :func:`graspcompass.place_grasp`, in float64) and the
+worst squeeze (:func:`graspcompass.batch.worst_squeeze`, condition (1) through
+:func:`graspcompass.batch.valid`).  The exact optimum along pairs of polygon
+edges (a closed form in the two edge parameters) is not done here: the ranking
+is over the dense sampling.
+
+Examples
+--------
+A 100 mm × 60 mm plate, μ = 0.5, 1 kg: the best pairs are the centred ones, at
+``m g sqrt(1 + 1/μ²) / 2`` per jaw (``y = 0``, ``x1 = x2``: all four ``|V_n|``
+equal ``x1 sqrt(1 + 1/μ²)``):
+
+>>> plan = plan_contacts([(-0.05, -0.03), (0.05, -0.03), (0.05, 0.03), (-0.05, 0.03)],
+...                      mu=0.5, mass=1.0, samples=48, g=9.81)
+>>> best = plan.top(1)[0]
+>>> best.contacts, round(best.squeeze, 4), round(9.81 * (1 + 1 / 0.5**2) ** 0.5 / 2, 4)
+(((0.0, -0.03), (0.0, 0.03)), 10.9679, 10.9679)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from .errors import InputError, InputTooLargeError
+from .sizing.core import NotForceClosureError
+from .world import OutlineError
+
+__all__ = [
+    "DEFAULT_SAMPLES",
+    "MAX_PAIRS",
+    "PlanResult",
+    "PlannedPair",
+    "pair_frames",
+    "plan_contacts",
+    "sample_contacts",
+]
+
+#: Most contact pairs evaluated (``samples · (samples − 1) / 2``).
+MAX_PAIRS = 20_000
+#: Contact points sampled along the outline by default.
+DEFAULT_SAMPLES = 120
+_PER = ("jaw", "total")
+
+
+def _readonly(a: Any, dtype: Any = float) -> np.ndarray:
+    out = np.array(a, dtype=dtype)
+    out.flags.writeable = False
+    return out
+
+
+def _ring(outline: Any) -> tuple[np.ndarray, tuple[float, float]]:
+    """The counter-clockwise exterior ring (closed, float64) and the area centroid."""
+    try:
+        from shapely.geometry import Polygon
+        from shapely.geometry.polygon import orient
+    except ImportError:  # pragma: no cover - shapely comes with the outlines extra
+        raise InputError("planning on an outline needs shapely: pip install "
+                         "'graspcompass[outlines]'") from None
+    if hasattr(outline, "geom_type"):
+        if outline.geom_type != "Polygon":
+            raise OutlineError(f"expected a polygon outline, got a {outline.geom_type}")
+        poly = outline
+    else:
+        try:
+            pts = [(float(x), float(y)) for x, y in outline]
+        except (TypeError, ValueError) as exc:
+            raise OutlineError(f"outline: expected a sequence of (x, y) vertices ({exc})"
+                               ) from None
+        if len(pts) < 3:
+            raise OutlineError(f"outline: expected at least 3 vertices, got {len(pts)}")
+        poly = Polygon(pts)
+    coords = np.asarray(poly.exterior.coords, float) if not poly.is_empty else np.empty((0, 2))
+    if not np.isfinite(coords).all():
+        raise OutlineError("outline: the vertices must be finite numbers")
+    if poly.is_empty or not poly.is_valid or not poly.area > 0:
+        raise OutlineError("outline: not a simple closed polygon with an area (it crosses "
+                           "itself, or has no area)")
+    poly = orient(poly, 1.0)
+    c = poly.centroid
+    return np.asarray(poly.exterior.coords, float), (float(c.x), float(c.y))
+
+
+def sample_contacts(outline: Any, samples: int = DEFAULT_SAMPLES
+                    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Contact points spread evenly along an outline, with their edges' inward normals.
+
+    The perimeter is divided into ``samples`` equal lengths; edge ``e`` gets
+    ``round(samples · L_e⁺ / L) − round(samples · L_e⁻ / L)`` points (``L_e⁻``,
+    ``L_e⁺`` the arc length at its ends), at the centres of equal parts of the
+    edge, so no point is a vertex and an edge with an odd count has its midpoint.
+    Short edges (chords of a flattened curve) may get none.
+
+    Parameters
+    ----------
+    outline : shapely Polygon or sequence of (x, y)
+        The part's outline (its exterior ring; holes are not sampled).
+    samples : int
+        How many points in all.
+
+    Returns
+    -------
+    points, normals : ndarray, shape (samples, 2)
+        The contacts and their inward unit normals (into the material).
+    edges : ndarray of int, shape (samples,)
+        The index of each point's edge in the counter-clockwise exterior ring.
+    """
+    ring, _ = _ring(outline)
+    return _sample(ring, samples)
+
+
+def _sample(ring: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    a, b = ring[:-1], ring[1:]
+    d = b - a
+    length = np.hypot(d[:, 0], d[:, 1])
+    total = float(length.sum())
+    cum = np.concatenate([[0.0], np.cumsum(length)])
+    counts = np.diff(np.round(samples * cum / total).astype(np.int64))
+    edges = np.repeat(np.arange(len(length)), counts)
+    # the j-th of n points of an edge at (j + 1/2)/n along it
+    start = np.cumsum(counts) - counts
+    j = np.arange(edges.size) - np.repeat(start, counts)
+    t = (j + 0.5) / counts[edges]
+    points = a[edges] + t[:, None] * d[edges]
+    u = d[edges] / length[edges, None]
+    normals = np.stack([-u[:, 1], u[:, 0]], axis=-1)  # counter-clockwise: material on the left
+    return points, normals, edges
+
+
+def pair_frames(pa: Any, na: Any, pb: Any, nb: Any, com: Any) -> dict[str, np.ndarray]:
+    """The paper-frame parameters of many contact pairs at once (§2.2.1, Fig. 2), float64.
+
+    The same frame as :func:`graspcompass.place_grasp`: the x-axis along
+    ``a − b``, turned round when the centre of mass lies above the line so that
+    ``y >= 0``; P1 is then the contact on the +x side.  ``x1 = (P1 − O)·e_x``,
+    ``x2 = (O − P2)·e_x``, ``y = |(P1 − O)·e_y|``, and the normals give
+    ``φ1 = atan2(−n1x, −n1y)``, ``φ2 = atan2(n2x, −n2y)`` (``n1 = (−sin φ1, −cos φ1)``,
+    ``n2 = (sin φ2, −cos φ2)``, the columns of L in eq. (5)).
+
+    Parameters
+    ----------
+    pa, na, pb, nb : array, shape (..., 2)
+        Contact points and inward unit normals of the two contacts of each pair.
+    com : (x, y)
+        The centre of mass O.
+
+    Returns
+    -------
+    dict of ndarray
+        ``x1, x2, y, phi1, phi2`` and ``swapped`` (True where P1 is contact b).
+    """
+    pa, na, pb, nb = (np.asarray(v, float) for v in (pa, na, pb, nb))
+    c = np.asarray(com, float)
+    diff = pa - pb
+    dist = np.hypot(diff[..., 0], diff[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ex = diff / dist[..., None]
+    ey = np.stack([-ex[..., 1], ex[..., 0]], axis=-1)
+    swapped = np.einsum("...i,...i->...", pa - c, ey) < 0
+    sign = np.where(swapped, -1.0, 1.0)[..., None]
+    ex, ey = ex * sign, ey * sign
+    p1 = np.where(swapped[..., None], pb, pa)
+    p2 = np.where(swapped[..., None], pa, pb)
+    n1 = np.where(swapped[..., None], nb, na)
+    n2 = np.where(swapped[..., None], na, nb)
+
+    def dot(u: np.ndarray, v: np.ndarray) -> np.ndarray:
+        return np.einsum("...i,...i->...", u, v)
+
+    x1, x2, y = dot(p1 - c, ex), dot(c - p2, ex), np.abs(dot(p1 - c, ey))
+    phi1 = np.arctan2(-dot(n1, ex), -dot(n1, ey))
+    phi2 = np.arctan2(dot(n2, ex), -dot(n2, ey))
+    return {"x1": x1, "x2": x2, "y": y, "phi1": phi1, "phi2": phi2, "swapped": swapped}
+
+
+@dataclasses.dataclass(frozen=True)
+class PlannedPair:
+    """One ranked pair of contacts.
+
+    Attributes
+    ----------
+    rank : int
+        1 for the best (least squeeze).
+    index : int
+        The pair's index in :attr:`PlanResult.i`, :attr:`PlanResult.j`.
+    samples : tuple of int
+        The indices of its two contacts in :attr:`PlanResult.points`.
+    contacts, normals : tuple of (float, float)
+        The contact points (world frame, metres) and inward unit normals.
+    squeeze : float
+        The squeeze that holds the part in every orientation, newtons (per jaw
+        or total, :attr:`PlanResult.per`).
+    squeeze_per_kg : float
+        The same per kilogram of mass (N/kg).
+    paper : dict of float
+        ``x1, x2, y, phi1, phi2`` of the pair in the paper frame (P1 the first of
+        ``contacts``).
+    """
+
+    rank: int
+    index: int
+    samples: tuple[int, int]
+    contacts: tuple[tuple[float, float], tuple[float, float]]
+    normals: tuple[tuple[float, float], tuple[float, float]]
+    squeeze: float
+    squeeze_per_kg: float
+    paper: dict[str, float]
+
+    def to_dict(self) -> dict[str, Any]:
+        """A JSON-ready dictionary."""
+        return {"rank": self.rank, "pair": self.index, "samples": list(self.samples),
+                "contacts_m": [list(p) for p in self.contacts],
+                "normals": [list(n) for n in self.normals], "squeeze_N": self.squeeze,
+                "squeeze_N_per_kg": self.squeeze_per_kg, "paper_frame": dict(self.paper)}
+
+
+@dataclasses.dataclass(frozen=True)
+class PlanResult:
+    """The contact pairs of an outline ranked by their worst-case squeeze (read-only arrays).
+
+    Attributes
+    ----------
+    outline : ndarray, shape (V + 1, 2)
+        The counter-clockwise exterior ring (closed) the contacts lie on.
+    com : (float, float)
+        The centre of mass used.
+    mu, mass, g : float
+        Friction coefficient of both pads, mass (kg), gravity (m/s²).
+    per : {"jaw", "total"}
+        Squeezes are per jaw (the paper's F_int) or both jaws together.
+    points, normals : ndarray, shape (N, 2)
+        The sampled contacts and their inward unit normals.
+    edges : ndarray of int, shape (N,)
+        Each contact's edge of :attr:`outline`.
+    i, j : ndarray of int, shape (M,)
+        The pairs (``i < j``), all ``N (N − 1) / 2`` of them.
+    squeeze : ndarray, shape (M,)
+        Each pair's squeeze in newtons; ``nan`` where condition (1) fails.
+    force_closure : ndarray of bool, shape (M,)
+        Condition (1) holds (both friction cones contain the other contact).
+    order : ndarray of int
+        The force-closure pairs, best first (ties in pair order).
+    """
+
+    outline: np.ndarray
+    com: tuple[float, float]
+    mu: float
+    mass: float
+    g: float
+    per: str
+    points: np.ndarray
+    normals: np.ndarray
+    edges: np.ndarray
+    i: np.ndarray
+    j: np.ndarray
+    squeeze: np.ndarray
+    force_closure: np.ndarray
+    order: np.ndarray
+    frames: dict[str, np.ndarray] = dataclasses.field(repr=False)
+
+    def pair(self, index: int, rank: int = 0) -> PlannedPair:
+        """The :class:`PlannedPair` of pair ``index`` (``rank`` 0: not ranked)."""
+        a, b = int(self.i[index]), int(self.j[index])
+        if self.frames["swapped"][index]:
+            a, b = b, a
+        pts = tuple((float(self.points[k, 0]), float(self.points[k, 1])) for k in (a, b))
+        nrm = tuple((float(self.normals[k, 0]), float(self.normals[k, 1])) for k in (a, b))
+        f = float(self.squeeze[index])
+        return PlannedPair(rank, int(index), (a, b), pts, nrm, f, f / self.mass,  # type: ignore[arg-type]
+                           {k: float(self.frames[k][index])
+                            for k in ("x1", "x2", "y", "phi1", "phi2")})
+
+    def top(self, k: int = 5) -> tuple[PlannedPair, ...]:
+        """The ``k`` best force-closure pairs (fewer if there are fewer)."""
+        return tuple(self.pair(int(p), r + 1) for r, p in enumerate(self.order[:max(0, k)]))
+
+    def matrix(self) -> np.ndarray:
+        """The squeeze as a symmetric N × N matrix over the contacts (``nan`` off force closure)."""
+        n = len(self.points)
+        m = np.full((n, n), np.nan)
+        m[self.i, self.j] = self.squeeze
+        m[self.j, self.i] = self.squeeze
+        return m
+
+    def to_dict(self, k: int = 5) -> dict[str, Any]:
+        """A JSON-ready summary with the ``k`` best pairs."""
+        return {"samples": len(self.points), "pairs": len(self.i),
+                "force_closure_pairs": int(self.force_closure.sum()), "mu": self.mu,
+                "mass_kg": self.mass, "g_m_s2": self.g, "per": self.per,
+                "com_m": list(self.com), "top": [p.to_dict() for p in self.top(k)]}
+
+
+def _positive(v: Any, what: str, strict: bool = True) -> float:
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        raise InputError(f"{what}: expected a number, got {v!r}") from None
+    if not math.isfinite(x) or not (x > 0 if strict else x >= 0):
+        raise InputError(f"{what} must be a finite number {'>' if strict else '>='} 0, got {v!r}")
+    return x
+
+
+def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = DEFAULT_SAMPLES,
+                  com: Sequence[float] | None = None, g: float = 9.80665, accel: float = 0.0,
+                  safety: float = 1.0, per: str = "jaw") -> PlanResult:
+    """Rank the contact pairs of an outline by the squeeze that holds it in any orientation.
+
+    For every pair of :func:`sample_contacts` points, the squeeze
+    ``S_f m (g + A) max_n |V_n| / (x1 + x2)`` per jaw (twice that with
+    ``per="total"``; V_n of eqs. (28)-(39), F_int of eq. (17), the worst case
+    over all directions of the load as in §5), vectorised; pairs violating
+    condition (1) are not force-closure and are left out.
+
+    Parameters
+    ----------
+    outline : shapely Polygon or sequence of (x, y)
+        The part (metres), e.g. from :func:`graspcompass.outlines.read_outline`.
+    mu : float
+        Friction coefficient of both pads, ``μ = tan ξ`` (22).
+    mass : float
+        Mass in kg (1: the squeezes are newtons per kilogram).
+    samples : int
+        Contact points along the outline, from 3; at most
+        ``samples (samples − 1) / 2 <=`` :data:`MAX_PAIRS` pairs.
+    com : (x, y), optional
+        Centre of mass (default the outline's centroid, uniform density).
+    g, accel, safety : float
+        Gravity, an acceleration bound |a| <= A in any direction (m/s²), and a
+        safety factor >= 1.
+    per : {"jaw", "total"}
+
+    Returns
+    -------
+    PlanResult
+
+    Raises
+    ------
+    graspcompass.errors.InputTooLargeError
+        Too many pairs.
+    graspcompass.sizing.NotForceClosureError
+        No sampled pair is force-closure (more friction, or more samples).
+    graspcompass.world.OutlineError
+        An outline that is not a simple polygon with an area.
+    """
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)):
+        raise InputError(f"samples: expected an integer, got {samples!r}")
+    samples = int(samples)
+    if samples < 3:
+        raise InputError(f"samples must be at least 3, got {samples}")
+    pairs = samples * (samples - 1) // 2
+    if pairs > MAX_PAIRS:
+        most = int((1 + math.isqrt(1 + 8 * MAX_PAIRS)) // 2)
+        raise InputTooLargeError(f"samples {samples} give {pairs} pairs; at most {MAX_PAIRS} "
+                                 f"(samples <= {most})")
+    if per not in _PER:
+        raise InputError(f"per: expected 'jaw' or 'total', got {per!r}")
+    mu_, mass_ = _positive(mu, "mu"), _positive(mass, "mass")
+    g_, a_ = _positive(g, "g", strict=False), _positive(accel, "accel", strict=False)
+    sf = _positive(safety, "safety")
+    if sf < 1:
+        raise InputError(f"safety must be at least 1, got {safety!r}")
+    ring, centroid = _ring(outline)
+    c = centroid
+    if com is not None:
+        try:
+            c = (float(com[0]), float(com[1]))
+        except (TypeError, ValueError, IndexError):
+            raise InputError(f"com: expected (x, y), got {com!r}") from None
+        if not all(math.isfinite(v) for v in c):
+            raise InputError(f"com must be finite, got {com!r}")
+    points, normals, edges = _sample(ring, samples)
+    i, j = np.triu_indices(len(points), 1)
+    fr = pair_frames(points[i], normals[i], points[j], normals[j], c)
+    from . import batch
+
+    squeeze = batch.worst_squeeze(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
+                                  mass_, g=g_, accel=a_, safety=sf, per=per, on_invalid="nan")
+    fc = np.isfinite(squeeze)
+    if not fc.any():
+        need = _least_mu_hint(fr)
+        raise NotForceClosureError(
+            f"none of the {len(i)} pairs of the {len(points)} contacts sampled is force-closure "
+            f"with μ = {mu_:g} (condition (1): each friction cone must contain the other "
+            f"contact){need}")
+    ok = np.flatnonzero(fc)
+    order = ok[np.argsort(squeeze[ok], kind="stable")]
+    frames = {k: _readonly(v, bool if k == "swapped" else float) for k, v in fr.items()}
+    return PlanResult(_readonly(ring), (float(c[0]), float(c[1])), mu_, mass_, g_, per,
+                      _readonly(points), _readonly(normals), _readonly(edges, np.int64),
+                      _readonly(i, np.int64), _readonly(j, np.int64), _readonly(squeeze),
+                      _readonly(fc, bool), _readonly(order, np.int64), frames)
+
+
+def _least_mu_hint(fr: dict[str, np.ndarray]) -> str:
+    """``; the best pair needs μ > …`` from the angles between normals and the contact line."""
+    with np.errstate(invalid="ignore"):
+        # φ1 = π/2 is the normal along the line; the cone needs ξ > |φ − π/2| at both
+        dev = np.maximum(np.abs(fr["phi1"] - np.pi / 2), np.abs(fr["phi2"] - np.pi / 2))
+    dev = dev[np.isfinite(dev) & (fr["x1"] + fr["x2"] > 0)]
+    if not dev.size or dev.min() >= np.pi / 2:
+        return ""
+    return f"; the best pair sampled needs μ > {math.tan(float(dev.min())):.3g}"
