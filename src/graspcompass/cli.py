@@ -32,6 +32,7 @@ from . import (
     _cli_check,
     _cli_export,
     _cli_file,
+    _cli_plan,
     _cli_recipe,
     _cli_size,
     _cli_worksheet,
@@ -175,6 +176,7 @@ def build_parser() -> argparse.ArgumentParser:
     _cli_recipe.register(sub, _add_grasp_options)
     _cli_check.register(sub, _add_grasp_options)
     _cli_size.register(sub, _add_grasp_options)
+    _cli_plan.register(sub, _add_grasp_options)
 
     v = sub.add_parser(
         "verify", help="machine-check every claim of the paper (symbolic)",
@@ -412,7 +414,8 @@ _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_
              "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
              "crosscheck": _cmd_crosscheck, "export": _cmd_export, "explore": _cmd_explore,
              "worksheet": _cli_worksheet.run, "recipe": _cli_recipe.run,
-             "check": _cli_check.run, "size": _cli_size.run}
+             "check": _cli_check.run, "size": _cli_size.run,
+             "plan": _cli_plan.run}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
