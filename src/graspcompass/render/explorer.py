@@ -67,6 +67,20 @@ _PICK_PX = 12.0
 _LABELS = ("P1", "P2", "V1", "V2", "V3", "V4")
 
 
+class _Slider(Slider):
+    """A :class:`~matplotlib.widgets.Slider` that ignores clicks on other axes at once.
+
+    Every slider sees every mouse event; a plain Slider tests a press with
+    ``Axes.contains`` (about 1 ms each, eight sliders per click), this one
+    compares ``event.inaxes`` first.  Behaviour is unchanged: a slider that is
+    not being dragged does nothing with a press outside its axes.
+    """
+
+    def ignore(self, event: Any) -> bool:
+        return super().ignore(event) or (
+            not self.drag_active and getattr(event, "inaxes", self.ax) is not self.ax)
+
+
 class Explorer:
     """The live diagram of a grasp, usable headless (``set_params``, ``drag``).
 
@@ -137,7 +151,7 @@ class Explorer:
             v = self.params[name] / unit
             lo, hi = ((0.0, 360.0) if name == "theta" else (1.0, 180.0) if name.startswith("phi")
                       else (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v))))
-            s = Slider(sax, label, lo, hi, valinit=min(max(v, lo), hi), valfmt="%.3g")
+            s = _Slider(sax, label, lo, hi, valinit=min(max(v, lo), hi), valfmt="%.3g")
             s.drawon = False  # the explorer redraws (blits) after its own update
             s.on_changed(lambda val, n=name: self._on_slider(n, val))
             self.sliders[name] = s
@@ -177,12 +191,17 @@ class Explorer:
         self.circles = [ax.add_patch(CirclePatch((0, 0), 1, fill=False, ls="--", lw=1.2,
                                                  edgecolor=th.circle_color(n)))
                         for n in (1, 2, 3, 4)]
+        # a circle much larger than the view (near a bound of condition (1), |V_n| grows
+        # like 1/cos(φ ± ξ)) is drawn as its arc through O instead: Agg dashes a whole
+        # path before clipping it, seconds for a radius of 1e5 pixels
+        self.arcs = [ax.plot([], [], ls="--", lw=1.2, color=th.circle_color(n), zorder=1)[0]
+                     for n in (1, 2, 3, 4)]
         self.fill = ax.add_patch(Polygon(np.zeros((3, 2)), facecolor=th.envelope_fill,
                                          alpha=0.25, edgecolor="none", zorder=0.5))
         (self.envelope_line,) = ax.plot([], [], color=th.envelope_color, lw=2.2,
                                         label=r"envelope $k_{grasp}(\theta)$, eq. (25)")
         (self.points,) = ax.plot([], [], "o", ms=3.5, color=th.point_color)
-        (self.contacts,) = ax.plot([], [], "o", ms=9, color=th.highlight_color, picker=True)
+        (self.contacts,) = ax.plot([], [], "o", ms=9, color=th.highlight_color)
         (self.direction,) = ax.plot([], [], color="#444444", lw=1.0, ls=":",
                                     label=r"direction $e(\theta)$ of $F_e$, eq. (26)")
         (self.h_mark,) = ax.plot([], [], "o", ms=6, mfc="white", mec="#444444",
@@ -198,7 +217,8 @@ class Explorer:
                                fontsize=10, color="#b00020", visible=False, zorder=10,
                                bbox=dict(boxstyle="round", fc="#fff3f3", ec="#b00020"))
         self._alphas = {a: a.get_alpha() for a in (
-            *self.sides, *self.perps, *self.circles, *self.cones, self.fill, self.envelope_line,
+            *self.sides, *self.perps, *self.circles, *self.arcs, *self.cones, self.fill,
+            self.envelope_line,
             self.points, self.worst_mark, self.best_mark, self.direction, self.h_mark)}
 
     def _draw_order(self) -> dict[str, list[Any]]:
@@ -206,7 +226,7 @@ class Explorer:
         list in the order a full draw paints them: by zorder, ties in the axes'
         child order, as :meth:`matplotlib.axes.Axes.draw` does."""
         groups = {"main": {*self.axis_lines, *self.cones, *self.sides, *self.perps,
-                           *self.circles, self.fill, self.envelope_line, self.points,
+                           *self.circles, *self.arcs, self.fill, self.envelope_line, self.points,
                            self.contacts, self.direction, self.h_mark, self.worst_mark,
                            self.best_mark, *self.labels.values(), self.message,
                            *self.ax.spines.values()}}
@@ -242,6 +262,9 @@ class Explorer:
         pad = 0.08 * float(max(hi - lo)) + 1e-9
         self.ax.set_xlim(lo[0] - pad, hi[0] + pad)
         self.ax.set_ylim(lo[1] - pad, hi[1] + pad)
+        if self.scene is not None:
+            for i in range(4):
+                self._arc(i, float(self.scene.S[i]), float(self.scene.C[i]))
         self._regions = {}
         self._painted = False
 
@@ -324,17 +347,26 @@ class Explorer:
         key = tuple(p[k] for k in GRASP_KEYS)
         if key != self._key_done:
             self._key_done = key
-            scene = float_scene(p, self._grid)
-            if scene is None:  # invalid, or too close to a bound for doubles: ask the Grasp
-                try:
-                    scene = grasp_scene(self.grasp(), self._grid)
-                except (ValueError, ArithmeticError) as exc:  # InvalidGraspError, GeometryError
-                    self._show_error(str(exc))
-                    return
+            try:
+                scene = self._compute()
+            except (ValueError, ArithmeticError) as exc:  # InvalidGraspError, GeometryError
+                self._show_error(str(exc))
+                return
             self._show_scene(scene)
         elif self.error is not None:
             return
         self._show_theta()
+
+    def _compute(self) -> Scene:
+        """The picture of :attr:`params`: double precision, or the Grasp near a bound.
+
+        Raises :class:`~graspcompass.grasp.InvalidGraspError` (a ValueError) with
+        the failing inequality when the parameters are not a valid grasp.
+        """
+        scene = float_scene(self.params, self._grid)
+        if scene is None:  # invalid, or too close to a bound for doubles: ask the Grasp
+            scene = grasp_scene(self.grasp(), self._grid)
+        return scene
 
     def grasp(self) -> Grasp:
         """The :class:`~graspcompass.Grasp` of the current parameters (validated).
@@ -374,6 +406,7 @@ class Explorer:
                               pt[1] + span * np.array([-d[1], d[1]]))
             self.circles[i].set_center((float(sc.S[i]) / 2, float(sc.C[i]) / 2))
             self.circles[i].set_radius(float(math.hypot(sc.S[i], sc.C[i])) / 2)
+            self._arc(i, float(sc.S[i]), float(sc.C[i]))
         reach = 0.6 * math.dist(sc.P1, sc.P2)
         for i, (a, b) in enumerate(((0, 2), (1, 3))):
             self.cones[i].set_xy(wedge((sc.P1, sc.P2)[i], sc.sides[a][1], sc.sides[b][1], reach))
@@ -390,6 +423,21 @@ class Explorer:
         self.worst_mark.set_data([sc.envelope[iw, 0]], [sc.envelope[iw, 1]])
         self.best_mark.set_data([sc.envelope[ib, 0]], [sc.envelope[ib, 1]])
         self._set_faded(False)
+
+    def _arc(self, i: int, vx: float, vy: float) -> None:
+        """Circle i as a patch, or as its arc near O when it is far larger than the view."""
+        (x0, x1), (y0, y1) = self.ax.get_xlim(), self.ax.get_ylim()
+        reach = 4 * math.hypot(x1 - x0, y1 - y0) + 4 * max(abs(x0), abs(x1), abs(y0), abs(y1))
+        r = math.hypot(vx, vy) / 2
+        big = r > reach
+        self.circles[i].set_visible(not big)
+        if not big:
+            self.arcs[i].set_data([], [])
+            return
+        # points c + r (cos a, sin a) within ``reach`` of O (a0: the angle of O from c)
+        a0, half = math.atan2(-vy, -vx), 2 * math.asin(min(1.0, reach / (2 * r)))
+        a = a0 + np.linspace(-half, half, 721)
+        self.arcs[i].set_data(vx / 2 + r * np.cos(a), vy / 2 + r * np.sin(a))
 
     def _show_theta(self) -> None:
         """Direction e(θ), the point H and the info text, for the current θ."""
