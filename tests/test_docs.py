@@ -145,12 +145,15 @@ def test_gallery_has_every_figure() -> None:
     beyond = " ".join(p.name for p in _scripts(GALLERY / "beyond"))
     for topic in ("worst", "friction", "slips"):
         assert topic in beyond
-    for folder in (GALLERY, GALLERY / "animations", GALLERY / "beyond"):
+    language = " ".join(p.name for p in _scripts(GALLERY / "language"))
+    assert "thales" in language and "exercise" in language
+    for folder in (GALLERY, GALLERY / "animations", GALLERY / "beyond", GALLERY / "language"):
         assert (folder / "GALLERY_HEADER.rst").is_file()
 
 
 @pytest.mark.parametrize("script", _scripts(GALLERY) + _scripts(GALLERY / "animations") +
-                         _scripts(GALLERY / "beyond"), ids=lambda p: p.name)
+                         _scripts(GALLERY / "beyond") + _scripts(GALLERY / "language"),
+                         ids=lambda p: p.name)
 def test_gallery_script_has_a_titled_docstring(script: Path) -> None:
     import ast
 

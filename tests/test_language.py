@@ -35,6 +35,7 @@ from graspcompass.construction.language import (
     parse,
     replay,
 )
+from graspcompass.construction.recipe import _internal_force_diagram_from_specs
 from graspcompass.errors import InputError
 
 sqrt = sp.sqrt
@@ -219,13 +220,13 @@ def _same_protocol(a, b):
 @pytest.mark.parametrize("preset", PRESETS)
 def test_shipped_recipe_is_todays_protocol(preset):
     g = Grasp.preset(preset)
-    _same_protocol(replay(paper_program(), g), internal_force_diagram(g))
+    _same_protocol(replay(paper_program(), g), _internal_force_diagram_from_specs(g))
 
 
 def test_shipped_recipe_is_todays_protocol_symbolic():
     g = Grasp.symbolic("mu")
     c = replay(paper_program(), g)
-    _same_protocol(c, internal_force_diagram(g))
+    _same_protocol(c, _internal_force_diagram_from_specs(g))
     assert "envelope" not in c and c.conditions
 
 
@@ -252,7 +253,7 @@ def test_shipped_recipe_is_todays_protocol_on_random_grasps(floats, values):
         g = _grasp(values, floats)
     except InvalidGraspError:
         assume(False)
-    _same_protocol(replay(paper_program(), g), internal_force_diagram(g))
+    _same_protocol(replay(paper_program(), g), _internal_force_diagram_from_specs(g))
 
 
 def test_shipped_recipe_text_and_claims():
