@@ -156,9 +156,12 @@ def run(args: argparse.Namespace) -> int:
     safety = _number(args.safety, "--safety", None, 1, False)
     com = None
     if args.com is not None:
-        x, y = args.com.split(",")
-        com = (_number(x.strip(), "--com x", "length", -float("inf"), False),
-               _number(y.strip(), "--com y", "length", -float("inf"), False))
+        from ._cli_size import _pair_values
+
+        try:
+            com = tuple(float(v) for v in _pair_values(args.com, "--com", "length"))
+        except TypeError:
+            raise InputError(f"--com: expected two real lengths, got {args.com!r}") from None
     from .outlines import read_outline
     from .planning import plan_contacts
 
