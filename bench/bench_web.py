@@ -16,9 +16,11 @@ the median and of the 95th percentile to the budget of one 60 Hz frame (16 ms).
 It also compares the page's V_n (eqs. (28)-(39)) and k_grasp (eq. (25)) on
 ``--moves`` random float grasps with ``graspcompass.Grasp(...).V`` and
 ``k_grasp`` and prints the largest deviation, relative to max(1, |V_n|).
-Baseline of the same run: the matplotlib explorer (``graspcompass explore``,
-:class:`graspcompass.render.explorer.Explorer`), ``set_params`` plus a full
-Agg draw, for a few moves.  Nothing is asserted; the machine may be loaded.
+Baseline of the same run: the matplotlib explorer (``graspcompass explore``)
+as it was before issue 12 §1 (``bench_explorer.naive_explorer_class()``: the
+construction replayed per change), ``set_params`` plus a full Agg draw, for a
+few moves; the explorer of today blits a change in tens of ms
+(``bench/bench_explorer.py``).  Nothing is asserted; the machine may be loaded.
 
 Run:  PYTHONPATH=src python bench/bench_web.py [--quick] [--moves 200] [--out DIR]
 """
@@ -144,13 +146,14 @@ def run_browser(page_path: Path, moves: int) -> tuple[dict[str, list[float]], fl
 
 
 def run_matplotlib(moves: int) -> list[float]:
-    """ms per move of the matplotlib explorer: set_params and a full Agg draw."""
+    """ms per move of the matplotlib explorer before issue 12 §1: set_params, full Agg draw."""
     import os
 
     os.environ.setdefault("MPLBACKEND", "agg")
-    from graspcompass.render.explorer import Explorer
+    sys.path.insert(0, str(Path(__file__).parent))
+    from bench_explorer import naive_explorer_class
 
-    ex = Explorer()
+    ex = naive_explorer_class()()
     ex.fig.canvas.draw()
     ms = []
     for i in range(moves):
