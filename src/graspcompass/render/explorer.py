@@ -14,8 +14,10 @@ Dragging P1 = (x1, y) moves x1 and y, dragging P2 = (−x2, y) moves x2 and y;
 the sliders follow.  :func:`explore` opens the window (the only pyplot use in
 the package); :func:`explore_notebook` is the Jupyter variant (ipywidgets).
 
-How a change stays under 30 ms (issue 12 §1)
---------------------------------------------
+Notes
+-----
+A change stays under 30 ms (issue 12 §1; ``bench/bench_explorer.py``):
+
 * The geometry is computed in double precision from the closed form of §3.3
   (eqs. (23), (28)-(39); :func:`._explorer_scene.float_scene`, about 0.2 ms),
   not by replaying the exact construction.  Only near a bound of condition (1)
