@@ -396,7 +396,11 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
 
     squeeze = batch.worst_squeeze(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
                                   mass_, g=g_, accel=a_, safety=sf, per=per, on_invalid="nan")
-    fc = np.isfinite(squeeze)
+    # condition (1) with the float path's margin (a cone side within 1e-12 rad of the other
+    # contact is not force-closure: its squeeze would be ~1e16 N, rounding noise)
+    fc = np.isfinite(squeeze) & batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"],
+                                            mu_, mu_, margin=1e-12)
+    squeeze = np.where(fc, squeeze, np.nan)
     if not fc.any():
         need = _least_mu_hint(fr)
         raise NotForceClosureError(
