@@ -16,12 +16,14 @@ import numpy as np
 from .geometry import evaluate
 
 __all__ = [
+    "FRAMING",
     "Box",
     "clip",
     "clip_line",
     "clip_segment",
     "group_points",
     "numeric_objects",
+    "roles_of",
     "shape_extent",
     "tex",
     "view_box",
@@ -95,16 +97,31 @@ def shape_extent(shape: Any) -> Box | None:
     return None
 
 
+#: Roles of points that frame the picture (the break points do not: they lie on circles).
+FRAMING = frozenset({"", "given", "contact", "foot", "midpoint", "X", "Y", "V"})
+
+
+def roles_of(construction: Any) -> dict[str, str]:
+    """Name -> role of every step (``""`` for a step without one), the roles as data."""
+    return {s.name: getattr(s, "role", "") or "" for s in construction.steps}
+
+
 def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
-             factor: float = 3.0, square: bool = True) -> Box:
-    """An automatic view box of the diagram.
+             factor: float = 3.0, square: bool = True,
+             roles: dict[str, str] | None = None) -> Box:
+    """An automatic view box of the diagram, the one rule of every picture.
 
     It holds O, the contacts, P1x, P2x, O_M, every X_n, Y_n, V_n, the circles
     on O V_n and the object outline, plus ``margin`` of the size on each side.
     A point far away (X_n when a cone side is nearly horizontal) is cut off:
     the box stays within ``factor`` times the largest of |V_n|, the object
-    size and the contact spread from O.
+    size and the contact spread from O.  With ``roles`` (:func:`roles_of`) the
+    objects are chosen by their role, not their name: every point whose role
+    is in :data:`FRAMING` (a point without a role too) and every circle; the
+    scale is that of the ``V`` and ``contact`` points, or of all points.
     """
+    if roles is not None:
+        return _view_box_by_roles(grasp, objects, roles, margin, factor, square)
     pts: list[XY] = [(0.0, 0.0)]
     scale = 0.0
     if grasp is not None:
@@ -126,6 +143,46 @@ def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
             (cx, cy), r = v
             pts += [(cx - r, cy - r), (cx + r, cy + r)]
     arr = np.array(pts, dtype=float)
+    limit = factor * (scale if scale > 0 else 1.0)
+    arr = np.clip(arr, -limit, limit)
+    xmin, ymin = arr.min(axis=0)
+    xmax, ymax = arr.max(axis=0)
+    span = max(xmax - xmin, ymax - ymin, 1e-9)
+    if square:
+        cx, cy = (xmin + xmax) / 2, (ymin + ymax) / 2
+        xmin, xmax, ymin, ymax = cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2
+    m = margin * span
+    return (float(xmin - m), float(xmax + m), float(ymin - m), float(ymax + m))
+
+
+def _view_box_by_roles(grasp: Any, objects: dict[str, Any], roles: dict[str, str],
+                       margin: float, factor: float, square: bool) -> Box:
+    pts: list[XY] = [(0.0, 0.0)]
+    scale = 0.0
+    if grasp is not None:
+        for p in (grasp.P1, grasp.P2):
+            xy = evaluate(p)
+            pts.append(xy)
+            scale = max(scale, math.hypot(*xy))
+    ext = shape_extent(getattr(grasp, "shape", None))
+    if ext is not None:
+        pts += [(ext[0], ext[2]), (ext[1], ext[3])]
+        scale = max(scale, max(abs(v) for v in ext))
+    circles: list[XY] = []
+    for name, v in objects.items():
+        role = roles.get(name, "")
+        if isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], float):
+            if role in FRAMING:
+                pts.append(v)
+                if role in ("V", "contact"):
+                    scale = max(scale, math.hypot(*v))
+        elif (isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], tuple)
+              and isinstance(v[1], float)):  # a circle: ((cx, cy), r)
+            (cx, cy), r = v
+            circles += [(cx - r, cy - r), (cx + r, cy + r)]
+    if scale == 0.0:  # no V, no contact: the points themselves set the scale
+        scale = max((math.hypot(*p) for p in pts), default=0.0)
+    arr = np.array(pts + circles, dtype=float)
     limit = factor * (scale if scale > 0 else 1.0)
     arr = np.clip(arr, -limit, limit)
     xmin, ymin = arr.min(axis=0)

@@ -558,8 +558,9 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
             if symbolic:
                 continue
             ins = tuple(n for n in s.inputs if n in env)
-            steps.append(Step(len(steps), s.name, _ENVELOPE, "compass", ins, outer_envelope(env),
-                              (), s.caption, s.ref, (), s.key, s.role, s.n))
+            steps.append(Step(len(steps), s.name, _ENVELOPE, "compass", ins,
+                              outer_envelope(_by_role(steps, env)), (), s.caption, s.ref, (),
+                              s.key, s.role, s.n))
             env[s.name] = steps[-1].obj
             continue
         try:
@@ -585,6 +586,18 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
         steps.append(step)
     return Construction(tuple(steps), grasp if not isinstance(grasp, Mapping) else None,
                         tuple(skipped))
+
+
+def _by_role(steps: list[Step], env: dict[str, Any]) -> dict[str, Any]:
+    """The objects the envelope reads, found by role: ``role V n`` is V_n and
+    ``role break_point n m`` is B_nm, whatever the file names them (eq. (25))."""
+    out = dict(env)
+    for st in steps:
+        if st.role == "V" and len(st.n) == 1:
+            out[f"V{st.n[0]}"] = st.obj
+        elif st.role == "break_point" and len(st.n) == 2:
+            out[f"B{st.n[0]}{st.n[1]}"] = st.obj
+    return out
 
 
 def _exact_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:

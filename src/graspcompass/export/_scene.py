@@ -64,6 +64,7 @@ class Scene:
     cones: tuple[tuple[XY, ...], ...]
     outline: tuple[str, tuple[float, ...]] | None
     title: str
+    small: frozenset[str] = frozenset()  # points drawn small and unlabelled (break points)
 
 
 def _f(v: sp.Expr) -> float:
@@ -98,31 +99,6 @@ def _shape(grasp: Any) -> tuple[str, tuple[float, ...]] | None:
     return None
 
 
-def _view_box(grasp: Any, num: dict[str, Any], outline: Any) -> Box:
-    pts: list[XY] = [(0.0, 0.0)]
-    scale = 0.0
-    for name, v in num.items():
-        if isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], float):
-            if name[:1] in "VXYP" or name in ("O", "O_M"):
-                pts.append(v)
-                if name[:1] in "VP":
-                    scale = max(scale, math.hypot(*v))
-        elif name.startswith("circle"):
-            (cx, cy), r = v
-            pts += [(cx - r, cy - r), (cx + r, cy + r)]
-    if outline is not None:
-        w, h = (2 * outline[1][0],) * 2 if outline[0] == "circle" else outline[1]
-        pts += [(-w / 2, -h / 2), (w / 2, h / 2)]
-        scale = max(scale, w / 2, h / 2)
-    limit = 3.0 * (scale or 1.0)
-    xs = [min(max(p[0], -limit), limit) for p in pts]
-    ys = [min(max(p[1], -limit), limit) for p in pts]
-    span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-9)
-    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
-    half = span / 2 * 1.08
-    return (cx - half, cx + half, cy - half, cy + half)
-
-
 def _wedge(apex: XY, u: XY, v: XY, length: float, samples: int = 16) -> tuple[XY, ...]:
     poly = layout.wedge(apex, u, v, length, samples=samples + 1)
     return tuple((float(x), float(y)) for x, y in poly)
@@ -155,7 +131,10 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
     num = layout.numeric_objects(construction)
     grasp = construction.grasp
     outline = _shape(grasp)
-    box = _view_box(grasp, num, outline)
+    roles = layout.roles_of(construction)
+    by_role = {(s.role, s.n[:1]): s.name for s in construction.steps if s.role}
+    # one view box for every picture: the rule of the matplotlib drawing (layout.view_box)
+    box = layout.view_box(grasp, num, roles=roles)
     span = box[1] - box[0]
     lines, lengths, circles, pts = [], [], [], []
     envelope: tuple[Arc, ...] = ()
@@ -165,18 +144,18 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
         if kind == "point":
             pts.append((s.name, v))
         elif kind == "line":
-            role = ("axis" if s.name in ("x-axis", "y-axis") else
+            role = ("axis" if s.role == "axis" else
                     "perp" if s.op == "perpendicular" else "side")
             seg = layout.clip(v[0], v[1], box)
             if seg is not None:
                 lines.append((s.name, role, *seg))
         elif kind == "circle":
-            circles.append((s.name, int(s.name[-1]) if s.name[-1].isdigit() else 1, *v))
+            circles.append((s.name, s.n[0] if s.n else 1, *v))
         elif kind == "length" and len(s.inputs) >= 3:
             a, b, axis = (num[k] for k in s.inputs[:3])
             d = axis[1]
             norm = math.hypot(*d)
-            n = int(s.name[-1]) if s.name[-1].isdigit() else 1
+            n = s.n[0] if s.n else 1
             off = (d[1] / norm * 0.012 * span * (n + 0.5), -d[0] / norm * 0.012 * span * (n + 0.5))
             a2, b2 = (a[0] + off[0], a[1] + off[1]), (b[0] + off[0], b[1] + off[1])
             seg = layout.clip_segment(a2, b2, box)
@@ -185,18 +164,21 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
         elif kind == "envelope":
             envelope = _envelope(v)
     cones = []
-    if all(k in num for k in ("P1", "P2")):
-        reach = 0.6 * math.dist(num["P1"], num["P2"])
-        for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
-            if f"side{a}" in num and f"side{b}" in num:
-                cones.append(_wedge(num[f"P{i}"], num[f"side{a}"][1], num[f"side{b}"][1], reach))
+    p1, p2 = by_role.get(("contact", (1,))), by_role.get(("contact", (2,)))
+    if p1 in num and p2 in num:  # the cones between the sides by role (cone_side n)
+        reach = 0.6 * math.dist(num[p1], num[p2])
+        for apex, (a, b) in ((p1, (1, 3)), (p2, (2, 4))):
+            sa, sb = by_role.get(("cone_side", (a,))), by_role.get(("cone_side", (b,)))
+            if sa in num and sb in num:
+                cones.append(_wedge(num[apex], num[sa][1], num[sb][1], reach))
     inside = [(n, xy) for n, xy in pts
               if box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]]
-    grouped = group_points([p for p in inside if not p[0].startswith("B")], 1e-9 * span)
-    grouped += [((n,), xy) for n, xy in inside if n.startswith("B")]
+    small = {n for n, r in roles.items() if r == "break_point"}
+    grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
+    grouped += [((n,), xy) for n, xy in inside if n in small]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
     return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
-                 tuple(cones), outline, text)
+                 tuple(cones), outline, text, frozenset(small))
 
 
 def exact_text(obj: Any) -> str:

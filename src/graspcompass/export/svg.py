@@ -125,7 +125,7 @@ def to_svg(construction: Any, title: str | None = None) -> str:
                    'stroke-width="1.4" stroke-dasharray="8,4"/></g>')
     for names, xy in scene.points:
         x, y = m(xy).split(",")
-        small = names[0].startswith("B")
+        small = names[0] in scene.small
         label = " = ".join(_label_svg(n) for n in names)
         marker = (f'<circle cx="{x}" cy="{y}" r="{2.2 if small else 3.2}" '
                   f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')

@@ -146,7 +146,7 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
             out.append(_envelope_path(scene))
     out.append(_comment("points and their labels (coincident points share one label)"))
     for names, _ in scene.points:
-        small = names[0].startswith("B")
+        small = names[0] in scene.small
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         if not small:

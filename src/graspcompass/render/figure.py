@@ -27,6 +27,7 @@ from ..layout import (
     clip_segment,
     group_points,
     numeric_objects,
+    roles_of,
     shape_extent,
     tex,
     view_box,
@@ -53,14 +54,25 @@ EXTRA_KEYS = ("object", "cone1", "cone2", "computer plot")
 _LABEL_ORDER = "VPOXY"
 
 
-def _n(name: str) -> int:
-    digits = "".join(ch for ch in name if ch.isdigit())
-    return int(digits[-1]) if digits else 1
+def _n(step: Any) -> int:
+    """The index that goes with a step's role (``role circle 3`` -> 3); 1 without one."""
+    n = getattr(step, "n", ())
+    return int(n[0]) if n else 1
 
 
-def _draw_givens(ax: Axes, grasp: Any, num: dict[str, Any], theme: Theme,
+def _by_role(construction: Any, role: str) -> dict[int, str]:
+    """n -> name of the steps with ``role`` (the contacts, the cone sides), as data."""
+    return {_n(s): s.name for s in construction.steps if getattr(s, "role", "") == role}
+
+
+def _draw_givens(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme,
                  out: dict[str, list[Artist]]) -> None:
-    """The object outline and the friction cones, shaded towards the object (Fig. 2)."""
+    """The object outline and the friction cones, shaded towards the object (Fig. 2).
+
+    The cone at contact i is between the cone sides i (upper) and i + 2 (lower),
+    found by their roles (``role contact i``, ``role cone_side n``), not their names.
+    """
+    grasp = construction.grasp
     ext = shape_extent(getattr(grasp, "shape", None))
     style = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
                  lw=theme.line_width, zorder=0.5)
@@ -69,11 +81,12 @@ def _draw_givens(ax: Axes, grasp: Any, num: dict[str, Any], theme: Theme,
         patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
                  Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
         out["object"] = [ax.add_patch(patch)]
-    p1, p2 = np.array(num["P1"] if "P1" in num else (0, 0)), np.array(num.get("P2", (0, 0)))
+    contacts, sides = _by_role(construction, "contact"), _by_role(construction, "cone_side")
+    p1, p2 = (np.array(num.get(contacts.get(i, ""), (0, 0))) for i in (1, 2))
     length = 0.6 * float(np.linalg.norm(p1 - p2))
     for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
-        apex = num.get(f"P{i}")
-        da, db = num.get(f"side{a}"), num.get(f"side{b}")
+        apex = num.get(contacts.get(i, ""))
+        da, db = num.get(sides.get(a, "")), num.get(sides.get(b, ""))
         if apex is None or da is None or db is None:
             continue
         poly = Polygon(wedge(apex, da[1], db[1], length), closed=True, facecolor=theme.cone_face,
@@ -88,17 +101,20 @@ def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme
     if seg is None:
         return [ax.plot([], [])[0]]
     (x0, y0), (x1, y1) = seg
-    if name in ("x-axis", "y-axis"):
+    role = getattr(step, "role", "")
+    if role == "axis":
         kw: dict[str, Any] = dict(color=theme.axis_color, lw=theme.line_width * 0.8, zorder=2)
     elif step.op == "perpendicular":
         kw = dict(color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2)), zorder=2.5)
     else:
         kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
-                  label="cone sides, extended (§3.3)" if name == "side1" else "_nolegend_")
+                  label="cone sides, extended (§3.3)" if role == "cone_side" and _n(step) == 1
+                  else "_nolegend_")
     arts: list[Artist] = ax.plot([x0, x1], [y0, y1], **{**kw, **hl})
-    if name in ("x-axis", "y-axis"):
+    if role == "axis":
         end = (x1, y1) if (x1 - x0) + (y1 - y0) > 0 else (x0, y0)
-        arts.append(ax.annotate(name[0], end, xytext=(-4, -4), textcoords="offset points",
+        arts.append(ax.annotate({1: "x", 2: "y"}.get(_n(step), name), end, xytext=(-4, -4),
+                                textcoords="offset points",
                                 color=theme.axis_color, fontsize=theme.font_size,
                                 style="italic", ha="right", va="top"))
     return arts
@@ -111,8 +127,8 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
     d = np.asarray(axis[1], dtype=float)
     d /= np.linalg.norm(d)
     side = np.array([d[1], -d[0]])  # below the x-axis, right of the y-axis
-    off = side * (0.012 * span * (_n(step.name) + 0.5))
-    color = hl.get("color", theme.circle_color(_n(step.name)))
+    off = side * (0.012 * span * (_n(step) + 0.5))
+    color = hl.get("color", theme.circle_color(_n(step)))
     a, b = tuple(np.asarray(a) + off), tuple(np.asarray(b) + off)
     seg = clip_segment(a, b, box)
     if seg is None or math.dist(a, b) < 1e-9 * span:
@@ -174,13 +190,13 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         ax = Figure(figsize=(7, 7)).add_subplot()
     num_all = numeric_objects(construction)
     num = {k: num_all[k] for k in state.names}
-    box = view_box(construction.grasp, num_all)
+    box = view_box(construction.grasp, num_all, roles=roles_of(construction))
     span = box[1] - box[0]
     ax.set_xlim(box[0], box[1])
     ax.set_ylim(box[2], box[3])
     ax.set_aspect("equal", adjustable="box")
     out: dict[str, list[Artist]] = {}
-    _draw_givens(ax, construction.grasp, num_all, theme, out)
+    _draw_givens(ax, construction, num_all, theme, out)
     last = state.steps[-1].name if highlight_last else None
     points: list[tuple[str, tuple[float, float]]] = []
     curves: list[np.ndarray] = []
@@ -188,7 +204,7 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         v = num[s.name]
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
         if s.kind == "point":
-            small = s.name.startswith("B")
+            small = s.role == "break_point"  # the envelope's break points: small, unlabelled
             out[s.name] = ax.plot(
                 [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
                 mfc="white" if small else hl.get("color", theme.point_color),
@@ -201,12 +217,13 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
             if seg is not None:
                 curves.append(np.array(seg))
         elif s.kind == "circle":
-            n = _n(s.name)
+            n = _n(s)
             (cx, cy), r = v
             patch = CirclePatch((cx, cy), r, fill=False, zorder=3,
                                 edgecolor=hl.get("color", theme.circle_color(n)),
                                 ls=theme.circle_style(n), lw=hl.get("lw", theme.line_width),
-                                label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)")
+                                label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)"
+                                if s.role == "circle" else "_nolegend_")
             out[s.name] = [ax.add_patch(patch)]
             t = np.linspace(0, 2 * np.pi, 100)
             curves.append(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
@@ -226,8 +243,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
     if show_computer_plot and construction.grasp is not None:
         out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
     if labels and points:
-        axis_texts = [a for k in ("x-axis", "y-axis") for a in out.get(k, [])
-                      if isinstance(a, Text)]
+        axis_texts = [a for st in state.steps if st.role == "axis"
+                      for a in out.get(st.name, []) if isinstance(a, Text)]
         _label_points(ax, points, curves, axis_texts, theme, out)
     return out
 
