@@ -4,7 +4,7 @@
 outline (each with its edge's inward normal; vertices, where the normal is
 undefined, are never sampled), forms every pair of them, and ranks the pairs by
 the squeeze that holds the part **in every orientation** (Ito, Tanaka, Sasaki
-2012, §5 with eq. (17)):
+2012, §5 with eq. (17))::
 
     F = m g max_n |V_n| / (x1 + x2)   per jaw,
 
@@ -346,7 +346,7 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     com : (x, y), optional
         Centre of mass (default the outline's centroid, uniform density).
     g, accel, safety : float
-        Gravity, an acceleration bound |a| <= A in any direction (m/s²), and a
+        Gravity, an acceleration bound ``|a| <= A`` in any direction (m/s²), and a
         safety factor >= 1.
     per : {"jaw", "total"}
 

@@ -42,7 +42,7 @@ does an infinite one.
 **Accuracy** (float64, u = 2^-53).  Near a bound of (1) a cone side is nearly
 horizontal and the closed form is ill-conditioned in the parameters
 themselves: the denominator ``cos φ ∓ μ sin φ`` cancels.  Computed from the
-doubles φ, μ its absolute error is about ``u (|cos φ| + μ |sin φ|)``, so
+doubles φ, μ its absolute error is about ``u (|cos φ| + μ |sin φ|)``, so::
 
     |Δt_n| <= 4u |t_n| (1 + (|sin φ| + μ|cos φ|)/|num_n| + (|cos φ| + μ|sin φ|)/|den_n|)
 
