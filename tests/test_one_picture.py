@@ -55,3 +55,29 @@ def test_renamed_construction_draws_the_same_picture() -> None:
     assert {new[n] for n in sa.small} == set(sb.small)
     assert [r for _, r, *_ in sa.lines] == [r for _, r, *_ in sb.lines]
     assert [n for _, n, *_ in sa.circles] == [n for _, n, *_ in sb.circles] == [1, 2, 3, 4]
+
+
+def test_renamed_construction_gives_the_same_geogebra_file() -> None:
+    """The sliders drive the contacts and the cone sides found by role, whatever their names."""
+    import re
+
+    from graspcompass.export.geogebra import read_ggb_xml, to_ggb
+
+    g = Grasp.preset("table1a")
+    prog, new = _renamed(paper_program())
+    xa = read_ggb_xml(to_ggb(internal_force_diagram(g)))
+    xb = read_ggb_xml(to_ggb(replay(prog, g)))
+    # every command and expression, with the names mapped back
+    back = {v: k for k, v in new.items()}
+
+    def defs(xml: str, rename: dict[str, str]) -> list[str]:
+        items = re.findall(r'<(?:command name|expression label)="([^"]*)"', xml)
+        body = re.findall(r'(?:exp|a\d)="([^"]*)"', xml)
+        words = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+        return [words.sub(lambda m: rename.get(m.group(), m.group()), t) for t in items + body]
+
+    from graspcompass.export._ggb_defs import ggb_label
+
+    rename = {ggb_label(k): ggb_label(v) for k, v in back.items()}
+    assert defs(xb, rename) == defs(xa, {})
+    assert "(x_1, y_P)" in xb and "(-x_2, y_P)" in xb

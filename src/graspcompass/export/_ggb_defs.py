@@ -111,16 +111,16 @@ def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition
     """
     ins = tuple(ggb_label(n) for n in step.inputs)
     op, name = step.op, step.name
+    role, n = getattr(step, "role", ""), (getattr(step, "n", ()) or (0,))[0]
     if op == "point":
-        if with_grasp and name in ("P1", "P2"):
-            return Definition("point", exp="(x_1, y_P)" if name == "P1" else "(-x_2, y_P)")
+        if with_grasp and role == "contact" and n in (1, 2):  # the contacts, by role
+            return Definition("point", exp="(x_1, y_P)" if n == 1 else "(-x_2, y_P)")
         if all(sp.sympify(p) == 0 for p in step.params):
             return Definition("point", "Intersect", ("xAxis", "yAxis"))
         return Definition("point", exp=_pair(*step.params))
     if op == "line_with_direction":
-        n = name[-1]
-        if with_grasp and name.startswith("side") and n.isdigit():
-            return Definition("line", "Line", (ins[0], f"{ins[0]} + {_SIDE[int(n)]}"))
+        if with_grasp and role == "cone_side" and n in _SIDE:  # the cone sides, by role
+            return Definition("line", "Line", (ins[0], f"{ins[0]} + {_SIDE[n]}"))
         return Definition("line", "Line", (ins[0], f"{ins[0]} + {_pair(*step.params)}"))
     simple = {"line_through": ("line", "Line", ins), "meet": ("point", "Intersect", ins),
               "foot": ("point", "ClosestPoint", (ins[1], ins[0]) if len(ins) == 2 else ins),

@@ -33,7 +33,8 @@ from xml.sax.saxutils import quoteattr
 
 import sympy as sp
 
-from ..geometry import Circle, Line, Point
+from .. import layout
+from ..geometry import Line, Point
 from ._ggb_defs import SLIDERS, definition, ggb_label
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
@@ -79,13 +80,15 @@ def _sliders(grasp: Any) -> list[str]:
 
 
 def _style(step: Any) -> list[str]:
-    kind, name = step.kind, step.name
-    role = ("axis" if name in ("x-axis", "y-axis") else "perp" if step.op == "perpendicular"
-            else "side" if kind == "line" else name if kind == "circle" else
+    kind = step.kind
+    small = step.role == "break_point"  # roles as data, never names
+    n = step.n[0] if step.n else 1
+    role = ("axis" if step.role == "axis" else "perp" if step.op == "perpendicular"
+            else "side" if kind == "line" else f"circle{n}" if kind == "circle" else
             "envelope" if kind == "envelope" else "point")
     r, g, b = _RGB.get(role, (17, 17, 17))
     shown = kind != "length"
-    label = kind == "point" and not name.startswith("B")
+    label = kind == "point" and not small
     out = [f"<show {_a(object=str(shown).lower(), label=str(label).lower())}/>",
            f"<objColor {_a(r=r, g=g, b=b, alpha=0.12 if kind == 'envelope' else 0)}/>",
            f"<labelMode {_a(val=0)}/>"]
@@ -94,7 +97,7 @@ def _style(step: Any) -> list[str]:
         dashed = role == "perp" or kind == "circle"
         out.append(f"<lineStyle {_a(thickness=thick, type=15 if dashed else 0)}/>")
     if kind == "point":
-        out.append(f"<pointSize {_a(val=2 if name.startswith('B') else 4)}/>")
+        out.append(f"<pointSize {_a(val=2 if small else 4)}/>")
     obj = step.obj
     if isinstance(obj, Point):
         out.append(f"<coords {_a(x=repr(_f(obj.x)), y=repr(_f(obj.y)), z='1.0')}/>")
@@ -107,14 +110,10 @@ def _style(step: Any) -> list[str]:
 
 
 def _view(construction: Any) -> list[str]:
-    pts = [(0.0, 0.0)]
-    for s in construction.steps:
-        if isinstance(s.obj, Point) and (s.name[:1] in "VP" or s.name == "O_M"):
-            pts.append((_f(s.obj.x), _f(s.obj.y)))
-        elif isinstance(s.obj, Circle):
-            c, r = s.obj.center, math.sqrt(_f(s.obj.radius2))
-            pts += [(_f(c.x) - r, _f(c.y) - r), (_f(c.x) + r, _f(c.y) + r)]
-    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    # the one view box of every picture (layout.view_box, objects chosen by role)
+    box = layout.view_box(construction.grasp, layout.numeric_objects(construction),
+                          roles=layout.roles_of(construction))
+    xs, ys = [box[0], box[1]], [box[2], box[3]]
     scale = min((_W - _LEFT) / (max(xs) - min(xs) + 1e-6), _H / (max(ys) - min(ys) + 1e-6)) / 1.1
     cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
     x0, y0 = _LEFT + (_W - _LEFT) / 2 - cx * scale, _H / 2 + cy * scale
