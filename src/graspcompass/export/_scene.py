@@ -15,13 +15,14 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
 import sympy as sp
 
-from .. import layout
+from .. import labelling, layout
 from ..construction.describe import describe
 from ..layout import tex
 
-__all__ = ["COLORS", "Scene", "build_scene", "group_points", "label_tex"]
+__all__ = ["COLORS", "Label", "Scene", "build_scene", "group_points", "label_tex"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -52,6 +53,23 @@ class Arc:
 
 
 @dataclass(frozen=True)
+class Label:
+    """Where the label of one group of points goes (:func:`graspcompass.labelling.place`).
+
+    ``at`` is the label's anchor in the frame of the paper, ``direction`` its
+    side ``(dx, dy)`` of the point (1, 1: the label's lower left corner at
+    ``at``, above right of the point; 0: centred), ``box`` its estimated extent
+    ``(xmin, ymin, xmax, ymax)``, for text of :data:`graspcompass.labelling.FONT_PT`
+    points in a picture :data:`graspcompass.labelling.FRAME_PT` points wide.
+    """
+
+    names: tuple[str, ...]
+    at: XY
+    direction: tuple[int, int]
+    box: Box
+
+
+@dataclass(frozen=True)
 class Scene:
     """What to draw, in the frame of the paper (y up)."""
 
@@ -65,6 +83,11 @@ class Scene:
     outline: tuple[str, tuple[float, ...]] | None
     title: str
     small: frozenset[str] = frozenset()  # points drawn small and unlabelled (break points)
+    labels: tuple[Label, ...] = ()  # one per labelled group of points, in placement order
+
+    def label_of(self, name: str) -> Label | None:
+        """The label of the group of points whose first name is ``name``, or None."""
+        return next((lab for lab in self.labels if lab.names[0] == name), None)
 
 
 def _f(v: sp.Expr) -> float:
@@ -177,8 +200,49 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
     grouped += [((n,), xy) for n, xy in inside if n in small]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
+    # the break points' markers are not avoided: as in the matplotlib drawing (figure.py)
+    labels = _labels(box, [g for g in grouped if g[0][0] not in small], lines, lengths, circles,
+                     envelope)
     return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
-                 tuple(cones), outline, text, frozenset(small))
+                 tuple(cones), outline, text, frozenset(small), labels)
+
+
+def _arc_points(a: Arc) -> np.ndarray:
+    if a.n == 0:
+        return np.array([a.start, a.end])
+    t = np.radians(a.start_angle + a.delta * np.linspace(0.0, 1.0, max(2, int(abs(a.delta)))))
+    return np.column_stack([a.center[0] + a.radius * np.cos(t),
+                            a.center[1] + a.radius * np.sin(t)])
+
+
+def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any],
+            lengths: list[Any], circles: list[Any], envelope: tuple[Arc, ...]
+            ) -> tuple[Label, ...]:
+    """The labels of ``groups`` placed as the matplotlib drawing places them, in points."""
+    s = labelling.FRAME_PT / (box[1] - box[0])
+
+    def pt(xy: Any) -> np.ndarray:
+        a = np.asarray(xy, dtype=float).reshape(-1, 2)
+        return np.column_stack([(a[:, 0] - box[0]) * s, (a[:, 1] - box[2]) * s])
+
+    t = np.linspace(0, 2 * np.pi, 100)
+    curves = [pt([a, b]) for _, _, a, b in lines]
+    curves += [pt(np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)]))
+               for _, _, c, r in circles]
+    curves += [pt([a, b]) for _, a, b in lengths]
+    if envelope:
+        curves.append(pt(np.vstack([_arc_points(a) for a in envelope])))
+    order = sorted(groups, key=lambda g: labelling.label_order(g[0]))
+    texts = ["$" + " = ".join(label_tex(n) for n in names) + "$" for names, _ in order]
+    placed = labelling.place(pt([xy for _, xy in order]) if order else np.zeros((0, 2)), texts,
+                             curves=curves,
+                             frame=(0.0, 0.0, labelling.FRAME_PT, (box[3] - box[2]) * s))
+    out = []
+    for (names, xy), p in zip(order, placed):
+        x0, y0, x1, y1 = p.box
+        out.append(Label(names, (xy[0] + p.offset[0] / s, xy[1] + p.offset[1] / s), p.direction,
+                         (box[0] + x0 / s, box[2] + y0 / s, box[0] + x1 / s, box[2] + y1 / s)))
+    return tuple(out)
 
 
 def exact_text(obj: Any) -> str:

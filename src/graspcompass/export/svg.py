@@ -14,12 +14,17 @@ import math
 from typing import Any
 from xml.sax.saxutils import escape, quoteattr
 
-from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
+from ..labelling import FONT_PT, FRAME_PT
+from ._scene import COLORS, Label, Scene, build_scene, exact_text, label_tex
 
 __all__ = ["to_svg", "write_svg"]
 
 _SIZE = 800.0  # user units of the square picture
 _MARGIN_TOP = 40.0
+#: Label font in user units: the ratio font / picture width of the placement
+#: (:data:`graspcompass.labelling.FONT_PT` in :data:`~graspcompass.labelling.FRAME_PT`).
+_FONT = FONT_PT * _SIZE / FRAME_PT
+_ANCHOR = {1: "start", -1: "end", 0: "middle"}
 
 
 def _label_svg(name: str) -> str:
@@ -38,6 +43,21 @@ class _Map:
 
     def __call__(self, xy: tuple[float, float]) -> str:
         return f"{(xy[0] - self.x0) * self.s:.3f},{(self.y1 - xy[1]) * self.s + _MARGIN_TOP:.3f}"
+
+
+def _label_text(lab: Label, m: _Map, label: str) -> str:
+    """The ``<text>`` of a label at its place (:attr:`Scene.labels`): its side of the point.
+
+    The placement's box is ``1.35`` font sizes high; the baseline sits ``0.3`` of
+    the font size above its bottom (room for the subscripts).
+    """
+    x, y = (float(v) for v in m(lab.at).split(","))
+    dy = lab.direction[1]
+    h = 1.35 * _FONT
+    bottom = y if dy == 1 else y + h if dy == -1 else y + h / 2  # SVG's y points down
+    return (f'<text x="{x:.3f}" y="{bottom - 0.3 * _FONT:.3f}" '
+            f'text-anchor="{_ANCHOR[lab.direction[0]]}" font-size="{_FONT:.2f}" '
+            f'font-style="italic">{label}</text>')
 
 
 def _arc_path(scene: Scene, m: _Map) -> str:
@@ -129,8 +149,8 @@ def to_svg(construction: Any, title: str | None = None) -> str:
         label = " = ".join(_label_svg(n) for n in names)
         marker = (f'<circle cx="{x}" cy="{y}" r="{2.2 if small else 3.2}" '
                   f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')
-        text = ("" if small else f'<text x="{float(x) + 6:.3f}" y="{float(y) - 6:.3f}" '
-                f'font-size="15" font-style="italic">{label}</text>')
+        lab = scene.label_of(names[0])
+        text = "" if small or lab is None else _label_text(lab, m, label)
         out.append(f'<g id={quoteattr(names[0])} class="point">{tip(names[0])}{marker}{text}</g>')
     out.insert(2, '<defs><marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
                'markerWidth="6" markerHeight="6" orient="auto-start-reverse">'

@@ -21,6 +21,10 @@ from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
 __all__ = ["to_tikz", "write_tikz"]
 
 _WIDTH_CM = 11.0
+#: TikZ anchor of a label on the side ``(dx, dy)`` of its point (:attr:`Scene.labels`).
+ANCHORS = {(1, 1): "south west", (-1, 1): "south east", (1, -1): "north west",
+           (-1, -1): "north east", (0, 1): "south", (0, -1): "north", (1, 0): "west",
+           (-1, 0): "east", (0, 0): "center"}
 
 
 def _num(v: float) -> str:
@@ -60,7 +64,8 @@ def _styles(scene: Scene) -> list[str]:
         "  cone/.style={fill=gccone, fill opacity=0.35},",
         "  object/.style={draw=gcobject, fill=gcobjectfill, line width=0.6pt},",
         "  dot/.style={circle, fill=gcpoint, inner sep=0pt, minimum size=3pt},",
-        "  label/.style={anchor=south west, inner sep=1.5pt, font=\\small}]",
+        # 8 pt in 11 cm: the ratio font / width of the placement (10 pt in 388 pt)
+        "  label/.style={inner sep=0pt, font=\\fontsize{8}{9.6}\\selectfont}]",
     ]
 
 
@@ -151,7 +156,10 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         if not small:
             text = " = ".join(label_tex(n) for n in names)
-            out.append(f"\\node[label] at ({_cname(names[0])}) {{${text}$}};")
+            lab = scene.label_of(names[0])
+            if lab is not None:
+                out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
+                           f"{{${text}$}};")
     out.append("\\end{tikzpicture}")
     if standalone:
         out.append("\\end{document}")

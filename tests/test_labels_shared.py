@@ -1,0 +1,154 @@
+"""One label placement for every painter (issue 12 §4): the SVG and TikZ of Fig. 6 and
+Table I place the labels around O apart, on the same sides as the PNG
+(:mod:`graspcompass.labelling`, shared by :mod:`graspcompass.render.labels` and the scene)."""
+
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from graspcompass import Grasp, internal_force_diagram, labelling
+from graspcompass.export import to_svg, to_tikz
+from graspcompass.export._scene import build_scene
+from graspcompass.export.tikz import ANCHORS
+
+PRESETS = ["fig6", "table1a", "table1b", "table1c"]
+NS = {"s": "http://www.w3.org/2000/svg"}
+
+
+def _svg_labels(text: str) -> tuple[dict[str, tuple[float, ...]], dict[str, tuple[float, ...]]]:
+    """Label boxes (x0, y0, x1, y1, SVG units, y down) and markers (cx, cy, r) by point.
+
+    Only the labelled points' markers: the envelope's break points (small, unlabelled) are
+    not avoided by the placement, in the PNG as in the SVG.
+    """
+    root = ET.fromstring(text.encode())
+    boxes, markers = {}, {}
+    for g in root.iterfind(".//s:g[@class='point']", NS):
+        c = g.find("s:circle", NS)
+        t = g.find("s:text", NS)
+        if t is None:
+            continue
+        markers[g.get("id")] = (float(c.get("cx")), float(c.get("cy")), float(c.get("r")))
+        f = float(t.get("font-size"))
+        main = (t.text or "") + "".join(s.tail or "" for s in t)
+        subs = "".join(s.text or "" for s in t)
+        # glyph widths of an italic serif: ~0.6 em, subscripts at 70 %
+        width = 0.6 * f * len(main.replace(" ", "")) + 0.25 * f * main.count(" ")
+        width += 0.6 * 0.7 * f * len(subs)
+        x, y = float(t.get("x")), float(t.get("y"))
+        x0 = {"start": x, "end": x - width, "middle": x - width / 2}[t.get("text-anchor")]
+        boxes[g.get("id")] = (x0, y - 0.75 * f, x0 + width, y + 0.25 * f)
+    return boxes, markers
+
+
+def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> float:
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return max(w, 0.0) * max(h, 0.0)
+
+
+@pytest.fixture(scope="module", params=PRESETS)
+def construction(request):
+    return internal_force_diagram(Grasp.preset(request.param))
+
+
+def test_svg_labels_do_not_overlap_each_other_or_markers(construction) -> None:
+    boxes, markers = _svg_labels(to_svg(construction))
+    assert len(boxes) >= 10
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            assert _overlap(boxes[a], boxes[b]) == 0.0, (a, b)
+        for p, (cx, cy, r) in markers.items():
+            if p != a:
+                assert _overlap(boxes[a], (cx - r, cy - r, cx + r, cy + r)) == 0.0, (a, p)
+
+
+def test_fig6_labels_around_O_apart() -> None:
+    """The clause of issue 12 §4: O = O_M = Y4, P1x = V4, Y1, X1 ... readable."""
+    c = internal_force_diagram(Grasp.preset("fig6"))
+    boxes, _ = _svg_labels(to_svg(c))
+    assert "O" in boxes
+    near = [n for n, b in boxes.items() if n != "O"
+            and abs(b[0] - boxes["O"][0]) < 120 and abs(b[1] - boxes["O"][1]) < 120]
+    assert near  # labels crowd around O, and none covers O's
+    assert all(_overlap(boxes["O"], boxes[n]) == 0.0 for n in near)
+
+
+def test_tikz_labels_have_the_svg_anchors(construction) -> None:
+    scene = build_scene(construction)
+    svg = to_svg(construction)
+    tikz = to_tikz(construction)
+    root = ET.fromstring(svg.encode())
+    side = {"start": 1, "end": -1, "middle": 0}
+    found = 0
+    for lab in scene.labels:
+        g = root.find(f".//s:g[@id='{lab.names[0]}']", NS)
+        t, c = g.find("s:text", NS), g.find("s:circle", NS)
+        dx = side[t.get("text-anchor")]
+        f = float(t.get("font-size"))
+        mid = float(t.get("y")) + 0.3 * f - 0.675 * f  # centre of the placement's box
+        dy = 0 if abs(mid - float(c.get("cy"))) < 0.2 * f else (1 if mid < float(c.get("cy"))
+                                                                 else -1)
+        assert (dx, dy) == lab.direction, lab.names
+        node = re.search(rf"\\node\[label, anchor=([a-z ]+)\] at \(([-\d.]+), ([-\d.]+)\) "
+                         rf"\{{\${re.escape(_tex(lab.names))}\$\}};", tikz)
+        assert node is not None, lab.names
+        assert node.group(1) == ANCHORS[lab.direction]
+        assert (float(node.group(2)), float(node.group(3))) == pytest.approx(lab.at, abs=1e-9)
+        found += 1
+    assert found >= 10
+
+
+def _tex(names: tuple[str, ...]) -> str:
+    from graspcompass.export._scene import label_tex
+
+    return " = ".join(label_tex(n) for n in names)
+
+
+@pytest.mark.parametrize("preset", PRESETS)
+def test_png_and_svg_labels_on_the_same_sides(preset: str) -> None:
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from matplotlib.text import Annotation
+
+    from graspcompass.render.figure import draw_construction
+
+    c = internal_force_diagram(Grasp.preset(preset))
+    arts = draw_construction(c)
+    ax = arts["O"][0].axes
+    scene = build_scene(c)
+    assert ax.get_xlim() == pytest.approx(scene.box[:2])
+    # the placement's frame is this axes' size in points
+    side_pt = ax.bbox.width * 72.0 / ax.figure.dpi
+    assert side_pt == pytest.approx(labelling.FRAME_PT, rel=1e-6)
+    ha = {"left": 1, "right": -1, "center": 0}
+    va = {"bottom": 1, "top": -1, "center": 0}
+    for lab in scene.labels:
+        (t,) = [a for a in arts[lab.names[0]] if isinstance(a, Annotation)]
+        assert (ha[t.get_ha()], va[t.get_va()]) == lab.direction, lab.names
+        assert t.get_text() == f"${_tex(lab.names)}$"
+
+
+def test_the_shared_sizes_are_the_default_theme() -> None:
+    pytest.importorskip("matplotlib")
+    from graspcompass.render.figure import _LABEL_ORDER
+    from graspcompass.render.theme import DEFAULT_THEME
+
+    assert labelling.FONT_PT == DEFAULT_THEME.font_size
+    assert labelling.MARKER_PT == DEFAULT_THEME.point_size
+    assert labelling.LABEL_ORDER == _LABEL_ORDER
+
+
+def test_labelling_and_scene_do_not_import_matplotlib() -> None:
+    code = ("import sys, graspcompass.labelling, graspcompass.layout; "
+            "import graspcompass.export._scene as s; "
+            "from graspcompass import Grasp, internal_force_diagram; "
+            "s.build_scene(internal_force_diagram(Grasp.preset('fig6'))); "
+            "assert 'matplotlib' not in sys.modules")
+    subprocess.run([sys.executable, "-c", code], check=True, timeout=120)
