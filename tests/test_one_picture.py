@@ -81,3 +81,21 @@ def test_renamed_construction_gives_the_same_geogebra_file() -> None:
     rename = {ggb_label(k): ggb_label(v) for k, v in back.items()}
     assert defs(xb, rename) == defs(xa, {})
     assert "(x_1, y_P)" in xb and "(-x_2, y_P)" in xb
+
+
+def test_one_palette_for_png_svg_tikz_and_geogebra() -> None:
+    """The theme, the SVG/TikZ scene and the GeoGebra writer read one palette."""
+    from graspcompass.export import _scene, geogebra
+    from graspcompass.palette import PALETTE, rgb
+    from graspcompass.render.theme import DEFAULT_THEME
+
+    assert _scene.COLORS is PALETTE
+    assert DEFAULT_THEME.circle_colors == tuple(PALETTE[f"circle{n}"] for n in (1, 2, 3, 4))
+    assert (DEFAULT_THEME.side_color, DEFAULT_THEME.axis_color, DEFAULT_THEME.envelope_fill) == (
+        PALETTE["side"], PALETTE["axis"], PALETTE["fill"])
+    for role, (r, g, b) in geogebra._RGB.items():
+        assert f"#{r:02x}{g:02x}{b:02x}" == PALETTE[role] and rgb(role) == (r, g, b)
+    svg = __import__("graspcompass.export.svg", fromlist=["to_svg"]).to_svg(
+        internal_force_diagram(Grasp.preset("fig6")))
+    for n in (1, 2, 3, 4):
+        assert PALETTE[f"circle{n}"] in svg

@@ -21,19 +21,15 @@ import sympy as sp
 from .. import labelling, layout
 from ..construction.describe import describe
 from ..layout import tex
+from ..palette import PALETTE
 
 __all__ = ["COLORS", "Label", "Scene", "build_scene", "group_points", "label_tex"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
 
-#: Colours of the pictures (those of the default matplotlib theme).
-COLORS = {
-    "axis": "#404040", "side": "#b5651d", "perp": "#6c757d", "length": "#6c757d",
-    "circle1": "#1f77b4", "circle2": "#2ca02c", "circle3": "#9467bd", "circle4": "#d62728",
-    "envelope": "#0b1f4b", "fill": "#9db4d8", "cone": "#f4a261", "object": "#7f7f7f",
-    "objectfill": "#f2f2f2", "point": "#111111",
-}
+#: Colours of the pictures: the one palette, the PNG's too (:mod:`graspcompass.palette`).
+COLORS = PALETTE
 
 
 @dataclass(frozen=True)

@@ -35,15 +35,15 @@ import sympy as sp
 
 from .. import layout
 from ..geometry import Line, Point
+from ..palette import rgb
 from ._ggb_defs import SLIDERS, definition, ggb_label
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 
 _W, _H = 960, 720  # graphics view, pixels
 _LEFT = 230  # room for the sliders at the left of the view
-_RGB = {"axis": (64, 64, 64), "side": (181, 101, 29), "perp": (108, 117, 125),
-        "point": (17, 17, 17), "envelope": (11, 31, 75), "circle1": (31, 119, 180),
-        "circle2": (44, 160, 44), "circle3": (148, 103, 189), "circle4": (214, 39, 40)}
+_RGB = {role: rgb(role) for role in ("axis", "side", "perp", "point", "envelope", "circle1",
+                                     "circle2", "circle3", "circle4")}
 
 
 def _f(v: Any) -> float:

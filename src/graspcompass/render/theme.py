@@ -20,6 +20,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
+from ..palette import PALETTE
+
 __all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES", "Quality",
            "Theme", "contrast_ratio", "relative_luminance"]
 
@@ -84,23 +86,24 @@ class Theme:
         Label font size, in points.
     """
 
-    object_face: str = "#f2f2f2"
-    object_edge: str = "#7f7f7f"
-    cone_face: str = "#f4a261"
+    object_face: str = PALETTE["objectfill"]
+    object_edge: str = PALETTE["object"]
+    cone_face: str = PALETTE["cone"]
     cone_alpha: float = 0.35
-    side_color: str = "#b5651d"
-    axis_color: str = "#404040"
-    construction_color: str = "#6c757d"
-    circle_colors: tuple[str, str, str, str] = ("#1f77b4", "#2ca02c", "#9467bd", "#d62728")
+    side_color: str = PALETTE["side"]
+    axis_color: str = PALETTE["axis"]
+    construction_color: str = PALETTE["perp"]
+    circle_colors: tuple[str, str, str, str] = tuple(  # type: ignore[assignment]
+        PALETTE[f"circle{n}"] for n in (1, 2, 3, 4))
     circle_styles: tuple[Any, ...] = ("--", "--", "--", "--")
-    envelope_color: str = "#0b1f4b"
-    envelope_fill: str = "#9ecae1"
+    envelope_color: str = PALETTE["envelope"]
+    envelope_fill: str = PALETTE["fill"]
     envelope_alpha: float = 0.18
-    computer_color: str = "#ffd60a"
+    computer_color: str = PALETTE["computer"]
     computer_style: str = "-"
-    point_color: str = "#111111"
-    label_color: str = "#111111"
-    highlight_color: str = "#e63946"
+    point_color: str = PALETTE["point"]
+    label_color: str = PALETTE["point"]
+    highlight_color: str = PALETTE["highlight"]
     line_width: float = 1.1
     thin_width: float = 0.6
     envelope_width: float = 3.2
