@@ -379,3 +379,16 @@ def test_api_refuses_unknown_names(page: Page) -> None:
     with pytest.raises(Exception, match="unknown name"):
         page.js("graspcompass.get('Q7')")
     assert page.js("graspcompass.get('xi1')") == pytest.approx(math.atan(1.0))
+
+
+@pytest.mark.parametrize("preset", ["fig6", "table1a", "table1b", "table1c"])
+def test_view_box_is_the_one_rule_of_every_picture(page: Page, preset: str) -> None:
+    """The page frames the grasp as the PNG, SVG, TikZ and GeoGebra do (layout.view_box)."""
+    from graspcompass import PRESETS
+    from graspcompass.layout import numeric_objects, roles_of, view_box
+
+    c = internal_force_diagram(Grasp.preset(preset))
+    assert preset in PRESETS
+    page.page.select_option("#gc-preset", preset)  # the preset's values and its object
+    box = view_box(c.grasp, numeric_objects(c), roles=roles_of(c))
+    assert page.js("graspcompass.viewBox()") == pytest.approx(box, rel=1e-9, abs=1e-9)

@@ -923,8 +923,11 @@
     else if (ev.key === "End") setStep(lastStep);
   });
 
-  /** Fit the view to the contacts, the object, X_n, Y_n and the circles (cf. the SVG). */
-  function fit() {
+  /** The one view-box rule of every picture (graspcompass.layout.view_box, by roles):
+   * O, the contacts, the object, X_n, Y_n and the circles (so V_n), each clipped to 3×
+   * the largest of |P_i|, |V_n| and the object's size, a square, 8 % margin each side. */
+  const VIEW_MARGIN = 0.08;
+  function viewBox() {
     const q = state.num || compute(Object.assign({}, state.p));
     const pts = [[0, 0], q.P1, q.P2];
     let scale = Math.max(Math.hypot(...q.P1), Math.hypot(...q.P2));
@@ -946,8 +949,12 @@
     const span = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys),
       1e-9);
     const cx = (Math.max(...xs) + Math.min(...xs)) / 2, cy = (Math.max(...ys) + Math.min(...ys)) / 2;
-    const half = span / 2 * 1.08;
-    board.setBoundingBox([cx - half, cy + half, cx + half, cy - half], true);
+    const half = span / 2 + VIEW_MARGIN * span;
+    return [cx - half, cx + half, cy - half, cy + half];
+  }
+  function fit() {
+    const [x0, x1, y0, y1] = viewBox();
+    board.setBoundingBox([x0, y1, x1, y0], true);
     visualsDirty = true;
     setVisualPass();
     board.fullUpdate();
@@ -1030,6 +1037,8 @@
       const r = board.containerObj.getBoundingClientRect();
       return [r.left + c[1], r.top + c[2]];
     },
+    /** The view box [xmin, xmax, ymin, ymax] of the one rule (layout.view_box). */
+    viewBox: () => viewBox(),
     /** The failing inequality when the parameters are not a valid grasp, else null. */
     error: () => state.error,
     /** k_grasp(θ) (eq. (25)) and the four k_n(θ) (eq. (32)) for the current grasp. */
