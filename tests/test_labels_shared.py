@@ -23,17 +23,17 @@ NS = {"s": "http://www.w3.org/2000/svg"}
 def _svg_labels(text: str) -> tuple[dict[str, tuple[float, ...]], dict[str, tuple[float, ...]]]:
     """Label boxes (x0, y0, x1, y1, SVG units, y down) and markers (cx, cy, r) by point.
 
-    Only the labelled points' markers: the envelope's break points (small, unlabelled) are
-    not avoided by the placement, in the PNG as in the SVG.
+    Every marker, the envelope's break points (small, unlabelled) included: the placement
+    avoids them, in the PNG as in the SVG.
     """
     root = ET.fromstring(text.encode())
     boxes, markers = {}, {}
     for g in root.iterfind(".//s:g[@class='point']", NS):
         c = g.find("s:circle", NS)
         t = g.find("s:text", NS)
+        markers[g.get("id")] = (float(c.get("cx")), float(c.get("cy")), float(c.get("r")))
         if t is None:
             continue
-        markers[g.get("id")] = (float(c.get("cx")), float(c.get("cy")), float(c.get("r")))
         f = float(t.get("font-size"))
         main = (t.text or "") + "".join(s.tail or "" for s in t)
         subs = "".join(s.text or "" for s in t)

@@ -124,7 +124,8 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
           curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
           avoid: Sequence[tuple[float, float, float, float]] = (),
           font_size: float = FONT_PT, marker_size: float = MARKER_PT,
-          gap: float = GAP_PT) -> list[Placement]:
+          gap: float = GAP_PT, obstacles: Sequence[tuple[float, float]] = ()
+          ) -> list[Placement]:
     """One :class:`Placement` per label ``texts[i]`` of the point ``anchors[i]``.
 
     Parameters
@@ -141,10 +142,14 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
         Boxes of texts already drawn that labels should not cover.
     font_size, marker_size, gap : float
         In points: the label size, the marker size and the gap to the marker.
+    obstacles : sequence of (x, y)
+        Unlabelled markers (the envelope's break points), in points, that labels
+        should not cover, as the labelled ones.
     """
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     r = marker_size / 2 + 1.0
-    markers = np.array([[x - r, y - r, x + r, y + r] for x, y in pts]).reshape(-1, 4)
+    every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
+    markers = np.array([[x - r, y - r, x + r, y + r] for x, y in every]).reshape(-1, 4)
     curve = resample([c for c in curves if len(c)], 1.5)
     labels: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Placement] = []

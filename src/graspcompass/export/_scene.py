@@ -196,9 +196,9 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
     grouped += [((n,), xy) for n, xy in inside if n in small]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
-    # the break points' markers are not avoided: as in the matplotlib drawing (figure.py)
+    # the break points' markers are avoided, as in the matplotlib drawing (figure.py)
     labels = _labels(box, [g for g in grouped if g[0][0] not in small], lines, lengths, circles,
-                     envelope)
+                     envelope, [xy for names, xy in grouped if names[0] in small])
     return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
                  tuple(cones), outline, text, frozenset(small), labels)
 
@@ -212,8 +212,8 @@ def _arc_points(a: Arc) -> np.ndarray:
 
 
 def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any],
-            lengths: list[Any], circles: list[Any], envelope: tuple[Arc, ...]
-            ) -> tuple[Label, ...]:
+            lengths: list[Any], circles: list[Any], envelope: tuple[Arc, ...],
+            obstacles: list[XY] = ()) -> tuple[Label, ...]:  # type: ignore[assignment]
     """The labels of ``groups`` placed as the matplotlib drawing places them, in points."""
     s = labelling.FRAME_PT / (box[1] - box[0])
 
@@ -232,7 +232,8 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
     texts = ["$" + " = ".join(label_tex(n) for n in names) + "$" for names, _ in order]
     placed = labelling.place(pt([xy for _, xy in order]) if order else np.zeros((0, 2)), texts,
                              curves=curves,
-                             frame=(0.0, 0.0, labelling.FRAME_PT, (box[3] - box[2]) * s))
+                             frame=(0.0, 0.0, labelling.FRAME_PT, (box[3] - box[2]) * s),
+                             obstacles=pt(obstacles) if len(obstacles) else ())
     out = []
     for (names, xy), p in zip(order, placed):
         x0, y0, x1, y1 = p.box

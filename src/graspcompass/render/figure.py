@@ -245,13 +245,15 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
     if labels and points:
         axis_texts = [a for st in state.steps if st.role == "axis"
                       for a in out.get(st.name, []) if isinstance(a, Text)]
-        _label_points(ax, points, curves, axis_texts, theme, out)
+        breaks = [num[st.name] for st in state.steps if st.role == "break_point"]
+        _label_points(ax, points, curves, axis_texts, theme, out, breaks)
     return out
 
 
 def _label_points(ax: Axes, points: list[tuple[str, tuple[float, float]]],
                   curves: list[np.ndarray], avoid: list[Text], theme: Theme,
-                  out: dict[str, list[Artist]]) -> None:
+                  out: dict[str, list[Artist]],
+                  obstacles: list[tuple[float, float]] = ()) -> None:  # type: ignore[assignment]
     """One label per group of coincident points, ``O = O_M = Y_4`` (§3.3)."""
     where = dict(points)
     xs = [abs(v) for _, xy in points for v in xy]
@@ -259,7 +261,7 @@ def _label_points(ax: Axes, points: list[tuple[str, tuple[float, float]]],
     groups.sort(key=lambda g: min(_LABEL_ORDER.find(n[0]) % 9 for n in g))
     items = [(where[g[0]], "$" + " = ".join(tex(n, math=False) for n in g) + "$")
              for g in groups]
-    texts = place_labels(ax, items, curves, avoid, font_size=theme.font_size,
+    texts = place_labels(ax, items, curves, avoid, obstacles=obstacles, font_size=theme.font_size,
                          marker_size=theme.point_size, color=theme.label_color, zorder=6,
                          bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
     for g, text in zip(groups, texts):

@@ -25,6 +25,7 @@ _VA = {1: "bottom", -1: "top", 0: "center"}
 
 def place_labels(ax: Axes, items: Sequence[tuple[tuple[float, float], str]],
                  curves: Sequence[np.ndarray] = (), avoid: Sequence[Text] = (),
+                 obstacles: Sequence[tuple[float, float]] = (),
                  font_size: float = 10.0, marker_size: float = 4.0, gap: float = 2.5,
                  **text_kw: Any) -> list[Text]:
     """Add one text per ``(xy, label)`` of ``items`` at a free place around ``xy``.
@@ -37,6 +38,8 @@ def place_labels(ax: Axes, items: Sequence[tuple[tuple[float, float], str]],
         Points in data coordinates and their labels, most important first.
     curves : sequence of (N, 2) arrays
         Drawn polylines, in data coordinates, that labels should not cross.
+    obstacles : sequence of (x, y)
+        Unlabelled markers in data coordinates (break points) labels should not cover.
     avoid : sequence of Text
         Texts already drawn that labels should not cover.
     font_size, marker_size, gap : float
@@ -73,7 +76,8 @@ def place_labels(ax: Axes, items: Sequence[tuple[tuple[float, float], str]],
                    frame=tuple(ax.bbox.extents * to_pt),
                    avoid=[tuple(np.asarray(t.get_window_extent().extents) * to_pt)
                           for t in avoid],
-                   font_size=font_size, marker_size=marker_size, gap=gap)
+                   font_size=font_size, marker_size=marker_size, gap=gap,
+                   obstacles=disp(list(obstacles)) if len(obstacles) else ())
     return [ax.annotate(label, xy, xytext=p.offset, textcoords="offset points",
                         ha=_HA[p.direction[0]], va=_VA[p.direction[1]], fontsize=font_size,
                         annotation_clip=False, **text_kw)
