@@ -35,9 +35,24 @@ def test_main_job_writes_fig6_and_prints_protocol(tmp_path, capsys):
     assert "(sqrt(3), -3/2)" in line_v2
 
 
-def test_main_job_quiet(tmp_path, capsys):
+def test_main_job_quiet(tmp_path, capsys, monkeypatch):
+    """-q prints nothing; the GIF is written by a stub here (its own tests are in
+    test_animate.py: writing it again costs seconds and prints nothing off a terminal)."""
+    from graspcompass import cli
+
+    written = []
+
+    def stub(construction, out_dir, quiet=False):
+        written.append(quiet)
+        path = Path(out_dir) / cli.MAIN_ANIMATION
+        path.write_bytes(b"GIF89a")
+        return path
+
+    monkeypatch.setattr(cli, "write_main_animation", stub)
     code, out, _ = run(capsys, "--quiet", "--out", str(tmp_path))
-    assert code == 0 and out == ""
+    assert code == 0 and out == "" and written == [True]
+    assert {p.name for p in tmp_path.iterdir()} == {
+        "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", cli.MAIN_ANIMATION}
 
 
 def test_steps_json_roundtrip_values(capsys):
