@@ -120,39 +120,18 @@ def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
     is in :data:`FRAMING` (a point without a role too) and every circle; the
     scale is that of the ``V`` and ``contact`` points, or of all points.
     """
-    if roles is not None:
-        return _view_box_by_roles(grasp, objects, roles, margin, factor, square)
-    pts: list[XY] = [(0.0, 0.0)]
-    scale = 0.0
-    if grasp is not None:
-        for p in (grasp.P1, grasp.P2):
-            xy = evaluate(p)
-            pts.append(xy)
-            scale = max(scale, math.hypot(*xy))
-    ext = shape_extent(getattr(grasp, "shape", None))
-    if ext is not None:
-        pts += [(ext[0], ext[2]), (ext[1], ext[3])]
-        scale = max(scale, max(abs(v) for v in ext))
-    for name, v in objects.items():
-        if name[:1] in "VXYP" or name == "O_M":
-            if isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], float):
-                pts.append(v)
-                if name[:1] == "V":
-                    scale = max(scale, math.hypot(*v))
-        elif name.startswith("circle"):
-            (cx, cy), r = v
-            pts += [(cx - r, cy - r), (cx + r, cy + r)]
-    arr = np.array(pts, dtype=float)
-    limit = factor * (scale if scale > 0 else 1.0)
-    arr = np.clip(arr, -limit, limit)
-    xmin, ymin = arr.min(axis=0)
-    xmax, ymax = arr.max(axis=0)
-    span = max(xmax - xmin, ymax - ymin, 1e-9)
-    if square:
-        cx, cy = (xmin + xmax) / 2, (ymin + ymax) / 2
-        xmin, xmax, ymin, ymax = cx - span / 2, cx + span / 2, cy - span / 2, cy + span / 2
-    m = margin * span
-    return (float(xmin - m), float(xmax + m), float(ymin - m), float(ymax + m))
+    if roles is None:  # the paper's names stand for their roles (V_n, X_n, Y_n, feet, O_M)
+        kinds = {"V": "V", "X": "X", "Y": "Y", "P": "foot"}
+        roles = {name: "midpoint" if name == "O_M" else kinds.get(name[:1], "other")
+                 for name in objects}
+        objects = {k: v for k, v in objects.items()
+                   if not (_is_circle(v) and not k.startswith("circle"))}
+    return _view_box_by_roles(grasp, objects, roles, margin, factor, square)
+
+
+def _is_circle(v: Any) -> bool:
+    return (isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], tuple)
+            and isinstance(v[1], float))
 
 
 def _view_box_by_roles(grasp: Any, objects: dict[str, Any], roles: dict[str, str],
@@ -176,8 +155,7 @@ def _view_box_by_roles(grasp: Any, objects: dict[str, Any], roles: dict[str, str
                 pts.append(v)
                 if role in ("V", "contact"):
                     scale = max(scale, math.hypot(*v))
-        elif (isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], tuple)
-              and isinstance(v[1], float)):  # a circle: ((cx, cy), r)
+        elif _is_circle(v):  # a circle: ((cx, cy), r)
             (cx, cy), r = v
             circles += [(cx - r, cy - r), (cx + r, cy + r)]
     if scale == 0.0:  # no V, no contact: the points themselves set the scale
