@@ -27,11 +27,8 @@ Examples
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
-import threading
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -51,26 +48,6 @@ def _seconds(text: str) -> float:
     if not 1 <= value <= 86_400:
         raise argparse.ArgumentTypeError(f"must be from 1 to 86400 seconds, got {text!r}")
     return value
-
-
-@contextmanager
-def _time_limit(seconds: float) -> Iterator[None]:
-    """Raise :class:`CheckTimeout` after ``seconds`` (POSIX, main thread; else no limit)."""
-    if not hasattr(signal, "setitimer") or threading.current_thread() is not \
-            threading.main_thread():  # pragma: no cover
-        yield
-        return
-
-    def _stop(*_: object) -> None:
-        raise CheckTimeout(f"the check took longer than {seconds:g} s (--timeout)")
-
-    previous = signal.signal(signal.SIGALRM, _stop)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
-    try:
-        yield
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
 
 
 class CheckTimeout(BaseException):
@@ -186,9 +163,14 @@ def run(args: argparse.Namespace) -> int:
 
     program = parse(text, shown)
     quiet = getattr(args, "quiet", False) or args.json
+    from ._deadline import deadline
+
+    stop = args.timeout
+    alarm = deadline(stop, lambda: CheckTimeout(f"the check took longer than {stop:g} s "
+                                                "(--timeout)"))
+    bar_size = len(program.steps) + len(program.claims)
     try:
-        with _time_limit(args.timeout), Progress(len(program.steps) + len(program.claims),
-                                                 "check", quiet=quiet) as bar:
+        with alarm, Progress(bar_size, "check", quiet=quiet) as bar:
             report = check_program(program, args.against,
                                    progress=lambda done, total, name: bar.update(note=name))
     except CheckTimeout as exc:

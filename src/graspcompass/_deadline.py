@@ -1,0 +1,40 @@
+"""One alarm: raise an exception when a block runs longer than a bound (POSIX, main thread).
+
+Used by ``graspcompass check --timeout`` and by the tests' hang detection
+(``tests/_hang.py``).  Off the main thread, or without ``SIGALRM`` (Windows), it
+does nothing.
+
+Examples
+--------
+>>> with deadline(5.0, lambda: TimeoutError("too slow")):
+...     pass
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from collections.abc import Callable, Iterator
+
+__all__ = ["deadline"]
+
+
+@contextlib.contextmanager
+def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[None]:
+    """Raise ``error()`` inside the block if it is still running after ``seconds``."""
+    if not hasattr(signal, "setitimer") or threading.current_thread() is not \
+            threading.main_thread():  # pragma: no cover
+        yield
+        return
+
+    def _ring(*_: object) -> None:
+        raise error()
+
+    previous = signal.signal(signal.SIGALRM, _ring)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
