@@ -21,48 +21,13 @@ import pytest
 import sympy as sp
 
 from graspcompass import Grasp, cli, internal_force_diagram
-from graspcompass.construction.language import paper_text
+from graspcompass.construction.language import example_text, paper_text
 from graspcompass.construction.recipe import _internal_force_diagram_from_specs
 
-THALES = """\
-# Fig. 3: the foot H of the perpendicular from V on the line along e(θ) is on the circle
-param a > 0
-param b > 0
-param t real
-O = point (0, 0) role given "The origin O"
-V = point (a, b) role V 1 key "V = (S, C)"
-dir = line_with_direction O (t, -1) "The line through O along e(θ), tan θ = t"
-H = foot V dir key "The foot H of the perpendicular from V"
-circle = circle_on_diameter O V role circle 1 key "The circle on the diameter O V"
-claim on H circle
-"""
+THALES = example_text("thales.gc")
 
 #: A student's V3 (Fig. 4(c)) with one slip: the perpendicular through P1x, not P2x.
-EXERCISE = """\
-param x1 > 0
-param x2 > 0
-param y >= 0
-param phi1 angle
-param phi2 angle
-param mu1 friction
-param mu2 friction
-hypothesis condition1
-O = point (0, 0)
-x-axis = line_with_direction O (1, 0)
-y-axis = line_with_direction O (0, 1)
-P1 = point (x1, y)
-P2 = point (-x2, y)
-side3 = line_with_direction P1 (-(sin(phi1) - cos(phi1)*mu1), -(cos(phi1) + sin(phi1)*mu1))
-P1x = foot P1 x-axis
-P2x = foot P2 x-axis
-O_M = midpoint P1x P2x
-X3 = meet side3 x-axis
-perp3 = perpendicular side3 P1x
-Y3 = meet perp3 y-axis
-OMX3 = signed_length O_M X3 x-axis
-OY3 = signed_length O Y3 y-axis
-V3 = point_from_lengths OMX3 OY3 (-1, -1)
-"""
+EXERCISE = example_text("exercise-v3.gc")
 
 SETS = ("--set", "a=2", "--set", "b=1", "--set", "t=1/3")
 
@@ -241,7 +206,7 @@ def test_paper_only_pictures_refuse_a_foreign_file(capsys, files, tmp_path, argv
 
 # -- (c) refusals: one line, exit status 2 -------------------------------------------------------
 @pytest.mark.parametrize("argv, message", [
-    (("steps", "{thales}", "--set", "a=2"), "thales.gc:3:1: no value for the parameter 'b': "
+    (("steps", "{thales}", "--set", "a=2"), "thales.gc:4:1: no value for the parameter 'b': "
                                             "give --set b=VALUE"),
     (("steps", "{thales}", *SETS, "--set", "c=1"), "thales.gc has no parameter 'c' "
                                                    "(its parameters: a, b, t)"),
@@ -249,7 +214,7 @@ def test_paper_only_pictures_refuse_a_foreign_file(capsys, files, tmp_path, argv
     (("steps", "{thales}", *SETS, "--set", "a=3"), "--set a is given twice"),
     (("steps", "{thales}", *SETS, "--x1", "2"), "--x1 is not used: "),
     (("steps", "{thales}", "--set", "a=-2", "--set", "b=1", "--set", "t=0"),
-     "thales.gc:2:1: a = -2 is outside its domain"),
+     "thales.gc:3:1: a = -2 is outside its domain"),
     (("steps", "{thales}", "--set", "a=__import__('os')", "--set", "b=1", "--set", "t=0"),
      "--set a: cannot read"),
     (("steps", "--set", "a=1"), "--set gives values to the parameters of a construction file"),

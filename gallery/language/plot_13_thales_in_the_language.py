@@ -15,21 +15,11 @@ own parameters: :math:`V = (a, b)` and the direction :math:`e(\\theta)` as :math
 import matplotlib.pyplot as plt
 import sympy as sp
 
-from graspcompass.construction.language import parse, replay
+from graspcompass.construction.language import example_text, parse, replay
 from graspcompass.proof.program_check import check_program
 from graspcompass.render import draw_construction
 
-THALES = """\
-param a > 0
-param b > 0
-param t real
-O = point (0, 0) role given "The origin O"
-V = point (a, b) role V 1 key "The point V = (S, C)"
-dir = line_with_direction O (t, -1) "The line through O along e(θ), tan θ = t"
-H = foot V dir key "The foot H of the perpendicular from V"
-circle = circle_on_diameter O V role circle 1 key "The circle on the diameter O V"
-claim on H circle
-"""
+THALES = example_text("thales.gc")  # shipped with the package
 program = parse(THALES, "thales.gc")
 
 # %%

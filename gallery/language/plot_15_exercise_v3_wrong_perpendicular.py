@@ -12,35 +12,11 @@ paper --draw v3.png`` grades it; here the same from Python.
 
 import matplotlib.pyplot as plt
 
-from graspcompass.construction.language import parse
+from graspcompass.construction.language import example_text, parse
 from graspcompass.proof.program_check import check_program
 from graspcompass.render.grading import figure_counterexample
 
-ATTEMPT = """\
-param x1 > 0
-param x2 > 0
-param y >= 0
-param phi1 angle
-param phi2 angle
-param mu1 friction
-param mu2 friction
-hypothesis condition1
-O = point (0, 0)
-x-axis = line_with_direction O (1, 0)
-y-axis = line_with_direction O (0, 1)
-P1 = point (x1, y)
-P2 = point (-x2, y)
-side3 = line_with_direction P1 (-(sin(phi1) - cos(phi1)*mu1), -(cos(phi1) + sin(phi1)*mu1))
-P1x = foot P1 x-axis
-P2x = foot P2 x-axis
-O_M = midpoint P1x P2x
-X3 = meet side3 x-axis
-perp3 = perpendicular side3 P1x
-Y3 = meet perp3 y-axis
-OMX3 = signed_length O_M X3 x-axis
-OY3 = signed_length O Y3 y-axis
-V3 = point_from_lengths OMX3 OY3 (-1, -1)
-"""
+ATTEMPT = example_text("exercise-v3.gc")  # shipped with the package
 program = parse(ATTEMPT, "v3.gc")
 
 # %%

@@ -96,6 +96,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DOMAINS",
+    "EXAMPLES",
     "HYPOTHESES",
     "MAX_LINES",
     "MAX_LINE_LENGTH",
@@ -109,6 +110,7 @@ __all__ = [
     "Ref",
     "Statement",
     "Value",
+    "example_text",
     "paper_program",
     "paper_text",
     "parse",
@@ -648,6 +650,24 @@ def paper_text() -> str:
     '# The internal force diagram of a two-point grasp, drawn by ruler and compass:'
     """
     return resources.files(__package__).joinpath("recipes", "paper.gc").read_text("utf-8")
+
+
+def example_text(name: str) -> str:
+    """A construction file shipped with the package beside the recipe: ``thales.gc``
+    (Fig. 3) or ``exercise-v3.gc`` (a student's V3 with one slip, for grading).
+
+    Examples
+    --------
+    >>> parse(example_text("thales.gc")).claims[0].kind
+    'on'
+    """
+    if name not in EXAMPLES:
+        raise InputError(f"no shipped example {name!r}: choose one of {', '.join(EXAMPLES)}")
+    return resources.files(__package__).joinpath("recipes", name).read_text("utf-8")
+
+
+#: The example files shipped beside the recipe.
+EXAMPLES = ("thales.gc", "exercise-v3.gc")
 
 
 @lru_cache(maxsize=1)
