@@ -101,18 +101,10 @@ def read_file(name: str) -> tuple[str, str]:
     graspcompass.errors.InputError
         A file that cannot be read, or is not UTF-8 text.
     """
-    from .errors import InputError, InputTooLargeError
+    from ._infiles import read_bounded
+    from .errors import InputError
 
-    try:
-        if name == "-":
-            data = sys.stdin.buffer.read(MAX_FILE_BYTES + 1)
-        else:
-            with open(name, "rb") as f:
-                data = f.read(MAX_FILE_BYTES + 1)
-    except OSError as exc:
-        raise InputError(f"cannot read {name!r}: {exc.strerror or exc}") from None
-    if len(data) > MAX_FILE_BYTES:
-        raise InputTooLargeError(f"{name!r} is larger than {MAX_FILE_BYTES} bytes")
+    data = read_bounded(name, MAX_FILE_BYTES)
     try:
         return data.decode("utf-8"), "<stdin>" if name == "-" else name
     except UnicodeDecodeError as exc:

@@ -51,6 +51,7 @@ import re
 from pathlib import Path
 from typing import Any
 
+from ._infiles import read_bounded
 from .errors import InputError, InputTooLargeError
 from .world import OutlineError
 
@@ -80,17 +81,6 @@ def _unit_length(unit: str | None, default: float) -> float:
     if not (value > 0 and math.isfinite(value)):
         raise InputError(f"unit {unit!r} must be a positive length")
     return value
-
-
-def _read_bytes(path: str | os.PathLike[str]) -> bytes:
-    try:
-        with open(path, "rb") as f:
-            data = f.read(MAX_OUTLINE_BYTES + 1)
-    except OSError as exc:
-        raise InputError(f"cannot read {str(path)!r}: {exc.strerror or exc}") from None
-    if len(data) > MAX_OUTLINE_BYTES:
-        raise InputTooLargeError(f"{str(path)!r} is larger than {MAX_OUTLINE_BYTES} bytes")
-    return data
 
 
 def _polygon(rings: list[tuple[str, list[tuple[float, float]]]], where: str,
@@ -266,7 +256,7 @@ def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
     suffix = Path(path).suffix.lower()
     if suffix not in (".svg", ".dxf"):
         raise InputError(f"cannot read an outline from {str(path)!r}: use a .svg or .dxf file")
-    data = _read_bytes(path)
+    data = read_bounded(path, MAX_OUTLINE_BYTES)
     where = str(path)
     if suffix == ".svg":
         rings = _svg_rings(data, tolerance)
