@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from graspcompass import Grasp, batch
 from graspcompass.batch import _envelope
-from graspcompass.errors import InputError
+from graspcompass.errors import InputError, NonFiniteValueError
 from graspcompass.sizing import worst_squeeze_many
 
 U = 2.0**-53
@@ -345,11 +345,131 @@ def test_k_grasp_table_shapes_large_angles_and_cache():
     assert g.k_grasp(t[::-1]) is not None and g.__dict__["_ktable"] is table  # cached
     S, C = g._floats()
     np.testing.assert_allclose(kg, _envelope.direct_k_grasp(S, C, t), rtol=0, atol=1e-14)
-    big = t * 1e5  # beyond THETA_MAX: the direct formula, as before
-    np.testing.assert_array_equal(g.k_grasp(big), _envelope.direct_k_grasp(S, C, big))
+    vmax = float(np.hypot(S, C).max())
+    big = t * 1e5  # beyond the table: reduced by 2π (exactly), then the table
+    np.testing.assert_allclose(g.k_grasp(big), _envelope.direct_k_grasp(S, C, big), rtol=0,
+                               atol=4 * EPS * vmax)
+    huge = t * 1e12  # beyond THETA_MAX: the direct formula
+    np.testing.assert_array_equal(g.k_grasp(huge), _envelope.direct_k_grasp(S, C, huge))
     small = t.reshape(-1)[:100]
     np.testing.assert_array_equal(g.k_grasp(small), _envelope.direct_k_grasp(S, C, small))
     assert g == Grasp.preset("fig6") and hash(g) == hash(Grasp.preset("fig6"))
+
+
+def _dot_max(S, C, t):
+    """The reference written here: max(0, max_n V_n · e(θ)), e(θ) = (sin θ, −cos θ) (26)."""
+    t = np.asarray(t, dtype=float)
+    e = np.stack([np.sin(t), -np.cos(t)])  # libm: correctly reduced for any finite θ
+    V = np.stack([np.asarray(S, float), np.asarray(C, float)], axis=1)  # (4, 2)
+    return np.maximum(np.max(V @ e, axis=0), 0.0)
+
+
+def _ulps(values, k=2):
+    """Each value and its neighbours up to ``k`` ulps away."""
+    out = [np.asarray(values, float)]
+    for direction in (np.inf, -np.inf):
+        v = out[0]
+        for _ in range(k):
+            v = np.nextafter(v, direction)
+            out.append(v)
+    return np.concatenate(out)
+
+
+def _hard_angles(S, C):
+    """Break points ± 2 ulps on several turns, the table's edges and bins, 0, ±π, ±2π, huge."""
+    h = _envelope._STEP
+    breaks = np.array(_break_angles(S, C))
+    turns = np.array([-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 160.0, -1e5])
+    on_turns = (breaks[:, None] + 2 * np.pi * turns).ravel()
+    edges = np.array([0.0, -0.0, np.pi, -np.pi, 2 * np.pi, -2 * np.pi, 3 * np.pi,
+                      _envelope.J_LO * h, (_envelope.J_LO + 0.5) * h, (_envelope.J_LO + 1.5) * h,
+                      _envelope.J_HI * h, (_envelope.J_HI - 0.5) * h, (_envelope.J_HI - 1.5) * h,
+                      0.5 * h, 1.5 * h, -0.5 * h, 1e6, -1e6, _envelope.THETA_MAX,
+                      -_envelope.THETA_MAX, 1e7, -1e9, 1e300, 5e-324, -5e-324])
+    return np.concatenate([_ulps(on_turns), _ulps(edges), on_turns + h / 2, on_turns - h / 2])
+
+
+angle_lists = st.lists(st.one_of(st.floats(-7.0, 7.0), st.floats(-1e7, 1e7),
+                                 st.floats(-1e-6, 1e-6), st.floats(allow_nan=False,
+                                                                   allow_infinity=False)),
+                       min_size=1, max_size=50)
+
+
+@settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(grasps(), angle_lists)
+def test_envelope_table_equals_the_max_of_dot_products(p, thetas):
+    """Random valid grasps: the table path within 4 ε max|V_n| of the dot products, everywhere.
+
+    Where all four dot products are clearly negative (the zero region, if the grasp has
+    one) the table's value is exactly 0, and it is never negative.
+    """
+    if not bool(batch.valid(*p, margin=2e-12)):
+        return
+    S, C = batch.closed_form(*p)
+    vmax = float(np.hypot(S, C).max())
+    table = _envelope.EnvelopeTable(S, C)
+    t = np.concatenate([np.array(thetas), _hard_angles(S, C)])
+    kg, ref = table(t), _dot_max(S, C, t)
+    assert kg.shape == t.shape and np.isfinite(kg).all()
+    err = np.abs(kg - ref) / (EPS * vmax)
+    assert err.max() <= 4, (p, t[np.argmax(err)], err.max())
+    assert (kg >= 0).all()
+    V = np.stack([S, C], axis=1)
+    below = np.max(V @ np.stack([np.sin(t), -np.cos(t)]), axis=0) < -8 * EPS * vmax
+    assert (kg[below] == 0).all()
+    # the same angles one by one, reversed, and as a 2-d array: the same numbers
+    np.testing.assert_array_equal(table(t[::-1])[::-1], kg)
+    np.testing.assert_array_equal(table(t[:, None])[:, 0], kg)
+
+
+def test_envelope_table_against_mpmath_on_the_hard_angles():
+    """fig6 and a grasp with a zero region: within 3 ε max|V_n| of 40 digits."""
+    for g in (Grasp.preset("fig6"), Grasp(1.0, 1.0, 1.0, 2.3, 2.3, mu1=2.0, mu2=2.0)):
+        S, C = g._floats()
+        vmax = float(np.hypot(S, C).max())
+        t = _hard_angles(S, C)
+        kg = _envelope.EnvelopeTable(S, C)(t)
+        for theta, value in zip(t, kg):
+            assert abs(value - _mp_k_grasp(S, C, theta)) <= 3 * EPS * vmax, theta
+
+
+def test_zero_region_is_exactly_zero():
+    """Normals tilted upwards (φ > π/2, jaws carrying from below): k_grasp = 0 on a range."""
+    p = (1.0, 1.0, 0.0, 2.5, 2.5, 3.0, 3.0)
+    S, C = batch.closed_form(*p)
+    table = _envelope.EnvelopeTable(S, C)
+    t = np.linspace(-20, 20, 400_001)
+    V = np.stack([S, C], axis=1)
+    dots = np.max(V @ np.stack([np.sin(t), -np.cos(t)]), axis=0)
+    kg = table(t)
+    assert (dots < 0).sum() > 1000  # the grasp has a zero region
+    assert (kg[dots < -1e-14] == 0.0).all()
+    assert (kg >= 0).all()
+
+
+def test_envelope_table_blocks_and_non_finite_angles():
+    """Several blocks with nan, ±inf, break points and far angles in different ones."""
+    g = Grasp.preset("fig6")
+    S, C = g._floats()
+    vmax = float(np.hypot(S, C).max())
+    rng = np.random.default_rng(13)
+    n = 2 * _envelope.CHUNK + 5
+    t = rng.uniform(0, 2 * np.pi, n)
+    hard = _hard_angles(S, C)
+    where = rng.choice(n, hard.size, replace=False)
+    t[where] = hard
+    specials = [3, _envelope.CHUNK - 1, _envelope.CHUNK, n - 1]
+    t[specials] = [np.nan, np.inf, -np.inf, np.nan]
+    kg = _envelope.EnvelopeTable(S, C)(t)
+    ok = np.isfinite(t)
+    assert np.isnan(kg[specials]).all() and not np.isnan(kg[ok]).any()
+    assert np.abs(kg[ok] - _dot_max(S, C, t[ok])).max() <= 4 * EPS * vmax
+    assert _envelope.EnvelopeTable(S, C)(np.empty((0, 3))).shape == (0, 3)
+    # Grasp.k_grasp refuses nan and infinities, on the table's sizes too (as before)
+    with pytest.raises(NonFiniteValueError):
+        g.k_grasp(t)
+    t[specials] = 0.0
+    np.testing.assert_allclose(g.k_grasp(t), _dot_max(S, C, t), rtol=0, atol=4 * EPS * vmax)
 
 
 # -- Dask: the documented example on a local cluster -----------------------------------------

@@ -620,9 +620,8 @@ class Grasp:
             return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
         if isinstance(t, np.ndarray):
             S, C = self._floats()
-            if t.size >= _envelope.TABLE_MIN_SIZE and max(
-                    t.max(), -t.min()) <= _envelope.THETA_MAX:  # many angles: the table
-                table = self.__dict__.get("_ktable")  # of the envelope (issue 13 §5)
+            if t.size >= _envelope.TABLE_MIN_SIZE:  # many angles: the table of the envelope
+                table = self.__dict__.get("_ktable")  # (issue 13 §5)
                 if table is None:
                     table = _envelope.EnvelopeTable(S, C)
                     object.__setattr__(self, "_ktable", table)
