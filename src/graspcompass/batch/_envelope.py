@@ -237,29 +237,28 @@ class EnvelopeTable:
         AB, minimum, add, sub, mul, take = (self.AB, np.minimum.reduce, np.add, np.subtract,
                                             np.multiply, np.take)
         bias, c2, c3 = _ROUND_P_BITS + J_LO, -0.5, -1.0 / 6.0
-        rbuf, wbuf, ibuf, abbuf = (np.empty(size), np.empty(size), np.empty(size, np.int64),
-                                   np.empty((size, 2)))
+        rbuf, wbuf, abbuf = np.empty(size), np.empty(size), np.empty((size, 2))
         views, bad = None, []
         for lo in range(0, flat.size, size):
             m = min(size, flat.size - lo)
             if views is None or m < size:
-                r, w, i, ab = rbuf[:m], wbuf[:m], ibuf[:m], abbuf[:m]
-                views = r, w, i, ab, r.view(np.int64), ab[:, 0], ab[:, 1]
+                r, w, ab = rbuf[:m], wbuf[:m], abbuf[:m]
+                views = r, w, w.view(np.int64), ab, r.view(np.int64), ab[:, 0], ab[:, 1]
             r, w, i, ab, r_bits, a, b = views
             th, o = flat[lo:lo + m], out[lo:lo + m]
             add(th, _ROUND_P, out=r)  # j h + 1.5·2^(52−P): j in the low bits
-            sub(r_bits, bias, out=i)
+            sub(r_bits, bias, out=i)  # the index (in w's memory: w is free until the take)
             take(AB, i, axis=0, out=ab, mode="clip")  # out of the table: a sentinel (nan)
             sub(r, _ROUND_P, out=r)  # j h
             sub(th, r, out=r)  # d = θ − j h, exact
-            mul(b, c3, out=w)  # A + d (B + d (−A/2 + d (−B/6)))
-            mul(w, r, out=w)
-            mul(a, c2, out=o)
-            add(w, o, out=w)
-            mul(w, r, out=w)
-            add(w, b, out=w)
-            mul(w, r, out=w)
-            add(w, a, out=o)
+            mul(b, c3, out=o)  # A + d (B + d (−A/2 + d (−B/6))), accumulated in the output
+            mul(o, r, out=o)
+            mul(a, c2, out=w)
+            add(o, w, out=o)
+            mul(o, r, out=o)
+            add(o, b, out=o)
+            mul(o, r, out=o)
+            add(o, a, out=o)
             v = minimum(o)
             if v != v:  # nan: a break point, beyond the table, nan, inf
                 bad.append(np.flatnonzero(np.isnan(o)) + lo)
