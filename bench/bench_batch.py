@@ -10,7 +10,9 @@
     (``size_gripper(Grasp(...), m).worst_squeeze`` on 100 grasps).  Agreement: batch
     against worst_squeeze_many (1e-12) and against the loop (1e-12).
 (b) ``Grasp.preset("fig6").k_grasp(theta)`` on 10^6 θ in [0, 2π), best of 5, the table of
-    the envelope warm; the first call (the table built) separately.  Target: <= 10 ms.
+    the envelope warm (``_envelope.EnvelopeTable``: a cubic in θ − j h on the exact grid
+    j 2^-12, 14 passes per block); the first call (the table built) separately.  Target:
+    <= 10 ms.
     Baseline in the same run, interleaved: the array path before §5 (sin, cos and four
     fused multiply-subtract-max passes, ``_envelope.direct_k_grasp``).  Agreement: the
     largest difference in units of ε max_n |V_n|.  Wall and CPU time are printed, as in (a).
@@ -159,7 +161,8 @@ def main() -> None:
     args = ap.parse_args()
     reps = 2 if args.quick else 5
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, "
-          f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}")
+          f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}, load average "
+          f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' jobs slow both columns)")
     a = sizings(args.n, reps)
     b = k_grasp_many(reps)
     print(f"\nall targets: {verdict(a and b)}")
