@@ -18,13 +18,14 @@ from __future__ import annotations
 
 import math
 import random
-import shutil
 from collections.abc import Iterator
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import pytest
+
+from _browser import chromium
 
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.construction import Construction
@@ -53,7 +54,7 @@ def test_page_is_one_self_contained_file(fig6: Construction) -> None:
     assert "<script src" not in low and "<link rel=\"stylesheet\"" not in low
     assert "@import" not in low and "sourcemappingurl" not in low
     assert "<title>Fig. 6 &lt;explorer&gt;</title>" in page
-    assert page.count("</script>") == 3  # data, JSXGraph, the explorer
+    assert page.count("</script>") == 4  # data, JSXGraph, the labels, the explorer
 
 
 def test_symbolic_construction_is_refused() -> None:
@@ -74,18 +75,8 @@ def page_path(fig6: Construction, tmp_path_factory: pytest.TempPathFactory) -> P
 
 @pytest.fixture(scope="module")
 def browser() -> Iterator[Any]:
-    sync_api = pytest.importorskip(
-        "playwright.sync_api",
-        reason="Playwright for Python is not installed (pip install playwright, in the test "
-               "extra): the web explorer is not tested in a browser")
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    if chromium is None:
-        pytest.skip("Chromium is not installed (Debian: apt-get install chromium): the web "
-                    "explorer is not tested in a browser")
-    with sync_api.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=chromium, args=["--no-sandbox"])
+    with chromium("the web explorer") as b:
         yield b
-        b.close()
 
 
 class Page:

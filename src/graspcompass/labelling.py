@@ -30,16 +30,21 @@ from typing import Any
 import numpy as np
 
 __all__ = [
+    "FAR",
     "FONT_PT",
     "FRAME_PT",
     "GAP_PT",
     "LABEL_ORDER",
     "MARKER_PT",
     "OFFSETS",
+    "RESAMPLE_PT",
+    "SIZE_RULE",
+    "WEIGHTS",
     "Placement",
     "label_order",
     "place",
     "resample",
+    "spec",
     "text_size",
 ]
 
@@ -57,6 +62,20 @@ MARKER_PT = 4.0
 GAP_PT = 2.5
 #: Labels are placed in the order of the first letters of their names (V, P, O, X, Y).
 LABEL_ORDER = "VPOXY"
+
+#: The score of a candidate position: area (pt²) of overlap with the labels placed and
+#: with the markers, number of curve samples inside, number of other points nearer to the
+#: label's centre than its own point, area outside the frame, rank of the position tried.
+WEIGHTS: dict[str, float] = {"label": 20.0, "marker": 60.0, "curve": 3.0, "near": 300.0,
+                             "frame": 50.0, "rank": 2.0}
+#: Distance (pt) between the samples of the drawn curves that the labels avoid.
+RESAMPLE_PT = 1.5
+#: The distances tried, in units of the marker's radius plus the gap: close, then far.
+FAR = (1.0, 2.0)
+#: The text size estimate of :func:`text_size`, in units of the font size (and ``pad`` in
+#: points): width per character, per space and per subscript character, height.
+SIZE_RULE: dict[str, float] = {"char": 0.68, "space": 0.3, "sub": 0.5, "pad": 2.0,
+                               "height": 1.35}
 
 _SUB = re.compile(r"_\{([^}]*)\}|_(\w)")
 
@@ -77,9 +96,11 @@ def text_size(text: str, font_size: float) -> tuple[float, float]:
     body = text.replace("$", "")
     subs = "".join(a or b for a, b in _SUB.findall(body))
     main = _SUB.sub("", body).replace("\\", "")
-    width = 0.68 * font_size * len(main.replace(" ", "")) + 0.3 * font_size * main.count(" ")
-    width += 0.5 * font_size * len(subs)
-    return round(width + 2.0, 9), round(1.35 * font_size, 9)
+    r = SIZE_RULE
+    width = (r["char"] * font_size * len(main.replace(" ", ""))
+             + r["space"] * font_size * main.count(" "))
+    width += r["sub"] * font_size * len(subs)
+    return round(width + r["pad"], 9), round(r["height"] * font_size, 9)
 
 
 def _overlap(a: np.ndarray, boxes: np.ndarray) -> float:
@@ -99,7 +120,8 @@ def resample(curves: Sequence[Any], step: float) -> np.ndarray:
         if len(c) < 2:
             out.append(c)
             continue
-        s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(c, axis=0).T))])
+        d = np.diff(c, axis=0)  # sqrt of squares, not hypot: the page's port rounds alike
+        s = np.concatenate([[0.0], np.cumsum(np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]))])
         t = np.arange(0.0, s[-1] + step, step)
         out.append(np.column_stack([np.interp(t, s, c[:, 0]), np.interp(t, s, c[:, 1])]))
     return np.vstack(out)
@@ -150,7 +172,8 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
     r = marker_size / 2 + 1.0
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
     markers = np.array([[x - r, y - r, x + r, y + r] for x, y in every]).reshape(-1, 4)
-    curve = resample([c for c in curves if len(c)], 1.5)
+    curve = resample([c for c in curves if len(c)], RESAMPLE_PT)
+    wt = WEIGHTS
     labels: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Placement] = []
     for i, (label, (px, py)) in enumerate(zip(texts, pts)):
@@ -158,28 +181,30 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
         others = np.delete(pts, i, axis=0)
         best, best_score, best_box = (0.0, 0.0, 1, 1), np.inf, np.zeros(4)
         rank = 0
-        for far in (1.0, 2.0):
+        for far in FAR:
             for dx, dy in OFFSETS:
                 d = (marker_size / 2 + gap) * far
                 x0 = px + dx * d - (w if dx < 0 else w / 2 if dx == 0 else 0)
                 y0 = py + dy * d - (h if dy < 0 else h / 2 if dy == 0 else 0)
                 box = np.array([x0, y0, x0 + w, y0 + h])
-                score = 20.0 * _overlap(box, np.array(labels).reshape(-1, 4))
-                score += 60.0 * _overlap(box, markers)
+                score = wt["label"] * _overlap(box, np.array(labels).reshape(-1, 4))
+                score += wt["marker"] * _overlap(box, markers)
                 if len(curve):
                     inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
                               & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
-                    score += 3.0 * float(inside.sum())
+                    score += wt["curve"] * float(inside.sum())
                 if len(others):
                     c = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
-                    own = float(np.hypot(px - c[0], py - c[1]))
-                    near = np.hypot(others[:, 0] - c[0], others[:, 1] - c[1]) < own
-                    score += 300.0 * float(near.sum())
+                    # squared distances: the same rounding in numpy and in the page's port
+                    own = (px - c[0]) * (px - c[0]) + (py - c[1]) * (py - c[1])
+                    ox_, oy_ = others[:, 0] - c[0], others[:, 1] - c[1]
+                    near = ox_ * ox_ + oy_ * oy_ < own
+                    score += wt["near"] * float(near.sum())
                 if frame is not None:
                     out_w = max(0.0, frame[0] - box[0]) + max(0.0, box[2] - frame[2])
                     out_h = max(0.0, frame[1] - box[1]) + max(0.0, box[3] - frame[3])
-                    score += 50.0 * (out_w + out_h) * h
-                score += 2.0 * rank
+                    score += wt["frame"] * (out_w + out_h) * h
+                score += wt["rank"] * rank
                 rank += 1
                 if score < best_score:
                     best, best_score, best_box = (dx * d, dy * d, dx, dy), score, box
@@ -188,3 +213,20 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
         out.append(Placement((float(ox), float(oy)), (int(dx), int(dy)),
                              tuple(float(v) for v in best_box)))  # type: ignore[arg-type]
     return out
+
+
+def spec() -> dict[str, Any]:
+    """The algorithm's constants as JSON data, for its port in the web page.
+
+    The page (:mod:`graspcompass.export.html`) places its labels with a JavaScript
+    port of :func:`place` (``graspcompass.placeLabels``) that reads these numbers, so
+    that both run one rule; ``tests/test_web_labels.py`` checks them equal.
+
+    Examples
+    --------
+    >>> spec()["offsets"][:2], spec()["weights"]["near"]
+    ([[1, 1], [-1, 1]], 300.0)
+    """
+    return {"offsets": [list(o) for o in OFFSETS], "order": LABEL_ORDER, "frame": FRAME_PT,
+            "font": FONT_PT, "marker": MARKER_PT, "gap": GAP_PT, "resample": RESAMPLE_PT,
+            "far": list(FAR), "weights": dict(WEIGHTS), "size": dict(SIZE_RULE)}

@@ -1,10 +1,11 @@
-"""The one palette of every picture: PNG/PDF, SVG, TikZ, GeoGebra (issue 12 §4).
+"""The one palette of every picture: PNG/PDF, SVG, TikZ, GeoGebra, HTML (issue 12 §4).
 
 Plain data, importing nothing: :class:`graspcompass.render.theme.Theme` takes its
-defaults from here, the SVG/TikZ scene (:data:`graspcompass.export._scene.COLORS`)
-and the GeoGebra writer read the same entries, so a construction has the same
-colours in every format.  Keys are the roles of the drawing (``axis``, ``side`` for
-the cone sides, ``perp`` for the perpendiculars, ``circle1``-``circle4``, ...).
+defaults from here; the SVG/TikZ scene (:data:`graspcompass.export._scene.COLORS`),
+the GeoGebra writer, the web page and the matplotlib explorer read the same entries,
+so a construction has the same colours in every format.  Keys are the roles of the
+drawing (``axis``, ``side`` for the cone sides, ``perp`` for the perpendiculars,
+``circle1``-``circle4``, ...).
 
 Examples
 --------
@@ -24,6 +25,14 @@ PALETTE: dict[str, str] = {
     "envelope": "#0b1f4b", "fill": "#9ecae1", "cone": "#f4a261", "object": "#7f7f7f",
     "objectfill": "#f2f2f2", "point": "#111111", "computer": "#ffd60a",
     "highlight": "#e63946",
+    # the explorers (the web page and the matplotlib one): break points, the direction of
+    # the external force and its point H on the envelope, the worst and best orientation,
+    # the draggable contacts, the axes' ticks, the message of an invalid grasp
+    "breakpoint": "#555555", "breakpointfill": "#ffffff", "force": "#333333",
+    "marker": "#111111", "markerfill": "#ffd166",
+    "worst": "#d62728", "best": "#2ca02c", "contact": "#0b1f4b", "contactfill": "#ffb703",
+    "contacthover": "#fb8500", "tick": "#c8c8c8", "ticklabel": "#707070",
+    "error": "#b00020", "errorfill": "#fff3f3",
 }
 
 

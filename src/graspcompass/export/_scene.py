@@ -139,8 +139,13 @@ def _envelope(env: Any) -> tuple[Arc, ...]:
     return tuple(arcs)
 
 
-def build_scene(construction: Any, title: str | None = None) -> Scene:
+def build_scene(construction: Any, title: str | None = None, box: Box | None = None) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
+
+    ``box`` ``(xmin, xmax, ymin, ymax)`` frames it (default: the one rule
+    :func:`graspcompass.layout.view_box` on its own objects); a prefix drawn in the
+    whole construction's box keeps the frame of the whole, as the web page does when
+    it steps through the protocol.
 
     Raises
     ------
@@ -153,7 +158,8 @@ def build_scene(construction: Any, title: str | None = None) -> Scene:
     roles = layout.roles_of(construction)
     by_role = {(s.role, s.n[:1]): s.name for s in construction.steps if s.role}
     # one view box for every picture: the rule of the matplotlib drawing (layout.view_box)
-    box = layout.view_box(grasp, num, roles=roles)
+    if box is None:
+        box = layout.view_box(grasp, num, roles=roles)
     span = box[1] - box[0]
     lines, lengths, circles, pts = [], [], [], []
     envelope: tuple[Arc, ...] = ()

@@ -15,9 +15,13 @@ eq. (30)/(33), k_n(θ) = S_n sin θ − C_n cos θ of eq. (32), k_grasp of eq. (
 and F_int = k / (x1 + x2) · F_e of eq. (17).  The drawing follows §3.3: X_n,
 the perpendiculars, Y_n, the signed lengths, V_n, the circles on O V_n (eq.
 (31)), their second intersections B_nm and the outer envelope (Fig. 5), with
-the worst and best orientation of the external force.  Parameters that break
-condition (1) (or any other check of :class:`graspcompass.Grasp`) show the
-failing inequality, worded as the Python model words it.
+the worst and best orientation of the external force.  Its labels are placed by
+``labelling.js``, a port of :func:`graspcompass.labelling.place` reading the same
+constants (:func:`graspcompass.labelling.spec`), and its colours are those of
+:data:`graspcompass.palette.PALETTE`: one picture in every format (issue 12 §4).
+Parameters that break condition (1) (or any other check of
+:class:`graspcompass.Grasp`) show the failing inequality, worded as the Python
+model words it.
 
 The page's script exposes ``window.graspcompass``: ``set({x1: …, mu2: …})``
 (angles in radians, friction as μ), ``get(name)``, ``step(i)``,
@@ -47,15 +51,16 @@ from typing import Any
 
 import sympy as sp
 
-from .. import __version__
+from .. import __version__, labelling
 from ..grasp import PRESETS, Grasp
-from ._scene import COLORS
+from ..palette import PALETTE
 
 __all__ = ["WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
 
 #: The files of ``graspcompass/export/_web`` that the page is made of (and the licences).
 WEB_FILES = ("jsxgraph.min.js", "jsxgraph.css", "LICENSE.jsxgraph.MIT", "LICENSE.jsxgraph.LGPL",
-             "jsxgraph.min.js.LICENSE.txt", "explorer.js", "explorer.css", "explorer.html")
+             "jsxgraph.min.js.LICENSE.txt", "labelling.js", "explorer.js", "explorer.css",
+             "explorer.html")
 
 #: Version of the vendored JSXGraph (npm package ``jsxgraph``).
 JSXGRAPH_VERSION = "1.13.3"
@@ -104,7 +109,9 @@ def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
     dict
         ``params`` (x1, x2, y, phi1, phi2, mu1, mu2 as floats, θ = 0, radians),
         ``steps`` (index, name, caption, ref, instrument, key of each step),
-        ``initial_step``, ``shape``, ``colors``, ``presets``, ``title``, ``version``.
+        ``initial_step``, ``shape``, ``colors`` (:data:`graspcompass.palette.PALETTE`),
+        ``presets``, ``title``, ``version``, ``labelling`` (the constants of the one label
+        placement, :func:`graspcompass.labelling.spec`, read by the page's port of it).
 
     Raises
     ------
@@ -126,7 +133,8 @@ def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
     return dict(
         title=title or grasp.title or "graspcompass: the internal force diagram",
         version=__version__, params=params, steps=steps, initial_step=len(steps) - 1,
-        shape=_shape(grasp.shape), colors={**COLORS, "highlight": "#e63946"}, presets=presets,
+        shape=_shape(grasp.shape), colors=dict(PALETTE), presets=presets,
+        labelling=labelling.spec(),
     )
 
 
@@ -162,6 +170,7 @@ def to_html(construction: Any, title: str | None = None) -> str:
         # JSON inside <script>: "<\/" is the same string to JSON.parse
         "DATA": json.dumps(data, ensure_ascii=False).replace("</", "<\\/"),
         "JSXGRAPH_JS": _script_safe(js),
+        "LABELLING_JS": _script_safe(web_file("labelling.js")),
         "EXPLORER_JS": _script_safe(web_file("explorer.js")),
     }
     return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], web_file("explorer.html"))

@@ -53,6 +53,7 @@ from matplotlib.widgets import Slider
 from ..geometry import evaluate
 from ..grasp import Grasp
 from ..layout import wedge
+from ..palette import PALETTE
 from ._explorer_scene import GRASP_KEYS, Scene, ThetaGrid, float_scene, grasp_scene
 from ._pathtext import GlyphCache, PathText
 from .theme import DEFAULT_THEME
@@ -204,20 +205,24 @@ class Explorer:
                                         label=r"envelope $k_{grasp}(\theta)$, eq. (25)")
         (self.points,) = ax.plot([], [], "o", ms=3.5, color=th.point_color)
         (self.contacts,) = ax.plot([], [], "o", ms=9, color=th.highlight_color)
-        (self.direction,) = ax.plot([], [], color="#444444", lw=1.0, ls=":",
+        (self.direction,) = ax.plot([], [], color=PALETTE["force"], lw=1.0, ls=":",
                                     label=r"direction $e(\theta)$ of $F_e$, eq. (26)")
-        (self.h_mark,) = ax.plot([], [], "o", ms=6, mfc="white", mec="#444444",
+        (self.h_mark,) = ax.plot([], [], "o", ms=6, mfc=PALETTE["markerfill"],
+                                 mec=PALETTE["marker"],
                                  label=r"$H = k_{grasp}(\theta)\,e(\theta)$")
-        (self.worst_mark,) = ax.plot([], [], "*", ms=14, color="#d62728", label="worst case")
-        (self.best_mark,) = ax.plot([], [], "D", ms=8, color="#2ca02c", label="best case")
+        (self.worst_mark,) = ax.plot([], [], "*", ms=14, color=PALETTE["worst"],
+                                      label="worst case")
+        (self.best_mark,) = ax.plot([], [], "D", ms=8, color=PALETTE["best"],
+                                     label="best case")
         prop = FontProperties(size=9)
         self.labels = {n: ax.add_artist(PathText(n, (0, 0), ax.transData,
                                                  self.fig.dpi_scale_trans, prop=prop,
                                                  offset=(4, 4), zorder=3))
                        for n in _LABELS}
         self.message = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center",
-                               fontsize=10, color="#b00020", visible=False, zorder=10,
-                               bbox=dict(boxstyle="round", fc="#fff3f3", ec="#b00020"))
+                               fontsize=10, color=PALETTE["error"], visible=False,
+                               zorder=10, bbox=dict(boxstyle="round", fc=PALETTE["errorfill"],
+                                                    ec=PALETTE["error"]))
         self._alphas = {a: a.get_alpha() for a in (
             *self.sides, *self.perps, *self.circles, *self.arcs, *self.cones, self.fill,
             self.envelope_line,

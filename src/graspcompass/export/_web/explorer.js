@@ -394,6 +394,9 @@
   // The board (JSXGraph)
   // ------------------------------------------------------------------------------------
   const COL = DATA.colors;
+  // the one label placement of every picture (graspcompass.labelling, ported in labelling.js)
+  const LSPEC = DATA.labelling;
+  const GL = window.GCLabelling;
   JXG.Options.text.display = "internal";
   const board = JXG.JSXGraph.initBoard("gc-board", {
     boundingbox: [-4, 4, 4, -4], keepaspectratio: true, axis: false, grid: false,
@@ -401,6 +404,8 @@
     pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
+  // labels in the font of the other pictures: labelling.FONT_PT in a frame FRAME_PT wide
+  JXG.Options.label.fontSize = Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame);
   // Colours, widths and dashes are applied to the SVG only in the redraws after a change of
   // visibility or highlight (JSXGraph's "enhanced rendering"), not on every parameter change.
   let visualsDirty = true;
@@ -422,16 +427,19 @@
     .replace("_M", "ₘ").replace(/x$/, "ₓ");
 
   const labelled = []; // points whose labels are merged where they coincide ("O = Oₘ")
+  const markers = []; // {name, el}: the unlabelled break points, which labels avoid
+  const extras = []; // {el, text}: H, worst, best, placed after the paper's points
   function point(name, step, attrs) {
     const el = reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
       name: LABEL(name), size: 2, strokeColor: COL.point, fillColor: COL.point,
-      fixed: true, showInfobox: false, label: { offset: [5, 7], fontSize: 13 },
-      highlight: false,
+      fixed: true, showInfobox: false, highlight: false,
     }, attrs || {})), step, {
       exists: () => !!(state.num && state.num[name]),
       hl: { size: 5, strokeColor: COL.highlight, fillColor: COL.highlight },
     });
-    if (name !== "H") labelled.push({ name, el, text: LABEL(name), shownText: LABEL(name) });
+    if (name === "H") extras.push({ el, text: "H" });
+    else if (el.hasLabel) labelled.push({ name, el, text: LABEL(name), shownText: LABEL(name) });
+    else markers.push({ name, el });
     return el;
   }
 
@@ -468,13 +476,13 @@
 
   reg(board.create("axis", [[0, 0], [1, 0]], {
     strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
-    ticks: { strokeColor: "#c8c8c8", needsRegularUpdate: false, label: {
-      fontSize: 10, strokeColor: "#707070" } },
+    ticks: { strokeColor: COL.tick, needsRegularUpdate: false, label: {
+      fontSize: 10, strokeColor: COL.ticklabel } },
   }), "x-axis", { always: true });
   reg(board.create("axis", [[0, 0], [0, 1]], {
     strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
-    ticks: { strokeColor: "#c8c8c8", needsRegularUpdate: false, label: {
-      fontSize: 10, strokeColor: "#707070" } },
+    ticks: { strokeColor: COL.tick, needsRegularUpdate: false, label: {
+      fontSize: 10, strokeColor: COL.ticklabel } },
   }), "y-axis", { always: true });
 
   // friction cones (the given data of Fig. 2): wedges of half angle ξ about the normals
@@ -527,27 +535,30 @@
   }
   point("O_M", "O_M", { face: "x", size: 4 });
 
-  // one offset for the signed lengths drawn beside the axes (screen pixels → user units)
-  const off = () => 14 / board.unitX;
+  // the signed lengths are drawn beside their axis, 1.2 % of the view's width per n (as the
+  // SVG/TikZ scene draws them): O_M X_n below the x-axis, O Y_n right of the y-axis
+  const off = (n) => {
+    const b = board.getBoundingBox();
+    return 0.012 * (b[2] - b[0]) * (n + 0.5);
+  };
   for (const n of [1, 2, 3, 4]) {
-    point("X" + n, "X" + n, { label: { offset: [4, -12], fontSize: 13 } });
+    point("X" + n, "X" + n);
     lineFrom(() => state.num && state.num.perps[n], "perp" + n,
       { strokeColor: COL.perp, dash: 2, strokeWidth: 1 });
-    point("Y" + n, "Y" + n, { label: { offset: [6, 4], fontSize: 13 } });
+    point("Y" + n, "Y" + n);
     const lengthAttrs = { strokeColor: COL.length, strokeWidth: 1.6,
       lastArrow: { type: 2, size: 6 } };
     const lit = { strokeWidth: 3.5, strokeColor: COL.highlight };
     // O_M X_n along the x-axis, drawn just below it; O Y_n along the y-axis, just left of it
-    poly((q) => [[q.O_M[0], -off() * n / 2], [q["X" + n][0], -off() * n / 2]], "OMX" + n,
+    poly((q) => [[q.O_M[0], -off(n)], [q["X" + n][0], -off(n)]], "OMX" + n,
       lengthAttrs, lit);
-    poly((q) => [[-off() * n / 2, 0], [-off() * n / 2, q["Y" + n][1]]], "OY" + n,
+    poly((q) => [[off(n), 0], [off(n), q["Y" + n][1]]], "OY" + n,
       lengthAttrs, lit);
     // V_n = (−O_M X_n, −O Y_n): the lengths carried to O and reversed
     poly((q) => [[q.V[n - 1][0], 0], q.V[n - 1], [0, q.V[n - 1][1]]], "V" + n,
       { strokeColor: COL["circle" + n], dash: 1 });
     point("V" + n, "V" + n, { size: 3.5, strokeColor: COL["circle" + n],
-      fillColor: COL["circle" + n], label: { offset: [6, 6], fontSize: 15,
-        strokeColor: COL["circle" + n] } });
+      fillColor: COL["circle" + n], label: { strokeColor: COL["circle" + n] } });
   }
 
   // the circles on the diameters O V_n: the polar graphs of k_n (eq. (31), Fig. 3)
@@ -561,8 +572,10 @@
       hl: { strokeWidth: 3.5, dash: 0 } });
   }
   for (const [n, m] of [[1, 2], [1, 3], [1, 4], [2, 3], [2, 4], [3, 4]]) {
-    point(`B${n}${m}`, `B${n}${m}`, { size: 2, strokeColor: "#555555", fillColor: "#ffffff",
-      label: { offset: [5, -10], fontSize: 11, strokeColor: "#555555" } });
+    // the envelope's break points: small and unlabelled, as in the PNG, the SVG and the TikZ
+    point(`B${n}${m}`, `B${n}${m}`, { size: 2, strokeColor: COL.breakpoint,
+      fillColor: COL.breakpointfill,
+      withLabel: false });
   }
 
   // the outer envelope k_grasp (eq. (25), Fig. 5), worst and best orientation, F_e at θ
@@ -581,30 +594,35 @@
   // the direction e(θ) of the external force F_e at O (26)
   poly(() => [[0, 0], [reachFe() * Math.sin(state.p.theta),
     -reachFe() * Math.cos(state.p.theta)]], "envelope",
-  { strokeColor: "#333333", strokeWidth: 1.5, dash: 3, lastArrow: { type: 1, size: 5 } });
-  point("H", "envelope", { name: "H", size: 4, face: "o", strokeColor: "#111111",
-    fillColor: "#ffd166", label: { offset: [8, -6], fontSize: 12 } });
-  const specialPoint = (which, attrs) => reg(board.create("point", [
-    () => (state.num ? state.num[which].point[0] : NaN),
-    () => (state.num ? state.num[which].point[1] : NaN)], Object.assign({
-    fixed: true, highlight: false, showInfobox: false, label: { fontSize: 12 },
-  }, attrs)), "envelope", { exists: () => !!state.num });
-  specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: "#d62728",
-    fillColor: "#d62728", label: { offset: [8, -10], strokeColor: "#d62728" } });
-  specialPoint("best", { name: "best", face: "<>", size: 6, strokeColor: "#2ca02c",
-    fillColor: "#2ca02c", label: { offset: [8, 10], strokeColor: "#2ca02c" } });
+  { strokeColor: COL.force, strokeWidth: 1.5, dash: 3, lastArrow: { type: 1, size: 5 } });
+  point("H", "envelope", { name: "H", size: 4, face: "o", strokeColor: COL.marker,
+    fillColor: COL.markerfill });
+  const specialPoint = (which, attrs) => {
+    const el = reg(board.create("point", [
+      () => (state.num ? state.num[which].point[0] : NaN),
+      () => (state.num ? state.num[which].point[1] : NaN)], Object.assign({
+      fixed: true, highlight: false, showInfobox: false,
+    }, attrs)), "envelope", { exists: () => !!state.num });
+    extras.push({ el, text: which });
+  };
+  specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: COL.worst,
+    fillColor: COL.worst, label: { strokeColor: COL.worst } });
+  specialPoint("best", { name: "best", face: "<>", size: 6, strokeColor: COL.best,
+    fillColor: COL.best, label: { strokeColor: COL.best } });
 
   // O and the draggable contacts
   labelled.unshift({ name: "O", text: "O", shownText: "O", el: reg(board.create("point", [0, 0],
     { name: "O", size: 2, fixed: true, strokeColor: COL.point, fillColor: COL.point,
-      highlight: false, showInfobox: false, label: { offset: [-14, -12], fontSize: 13 } }),
+      highlight: false, showInfobox: false }),
   "O", { always: true }) });
-  const dragAttrs = { size: 6, strokeColor: "#0b1f4b", fillColor: "#ffb703", showInfobox: false,
-    label: { offset: [8, 10], fontSize: 15 }, highlight: true, highlightFillColor: "#fb8500" };
+  const dragAttrs = { size: 6, strokeColor: COL.contact, fillColor: COL.contactfill,
+    showInfobox: false, highlight: true, highlightFillColor: COL.contacthover };
   const P1 = reg(board.create("point", [state.p.x1, state.p.y],
     Object.assign({ name: "P₁" }, dragAttrs)), "P1", { always: true });
   const P2 = reg(board.create("point", [-state.p.x2, state.p.y],
     Object.assign({ name: "P₂" }, dragAttrs)), "P2", { always: true });
+  labelled.push({ name: "P1", el: P1, text: "P₁", shownText: "P₁" },
+    { name: "P2", el: P2, text: "P₂", shownText: "P₂" });
 
   // ------------------------------------------------------------------------------------
   // Visibility by step and validity; highlight of the current step's objects
@@ -612,27 +630,167 @@
   const entryOf = new Map(entries.map((e) => [e.el, e]));
   labelled.sort((a, b) => (stepIndex[a.name] ?? 1e9) - (stepIndex[b.name] ?? 1e9));
 
-  /** One label for the shown points that fall within 6 px of each other (cf. layout.py). */
+  /** One label for the shown points that coincide, within 1e-9 of the view's width, in the
+   * order of the steps (layout.group_points, as every other picture groups them). */
   function groupLabels() {
-    const tol = 6 / Math.max(board.unitX, 1e-12);
+    const b = board.getBoundingBox();
+    const tol = 1e-9 * (b[2] - b[0]);
     const shown = labelled.filter((e) => entryOf.get(e.el).shown);
-    const where = shown.map((e) => (e.name === "O" ? [0, 0] : getValue(e.name)));
+    const where = shown.map((e) => getValue(e.name));
     const taken = new Array(shown.length).fill(false);
+    for (const e of labelled) e.group = null;
     for (let a = 0; a < shown.length; a++) {
       if (taken[a]) continue;
-      const names = [shown[a].text];
-      for (let b = a + 1; b < shown.length; b++) {
-        if (!taken[b] && where[a] && where[b] &&
-            Math.abs(where[a][0] - where[b][0]) < tol && Math.abs(where[a][1] - where[b][1]) < tol) {
-          taken[b] = true;
-          names.push(shown[b].text);
+      const names = [shown[a].name], texts = [shown[a].text];
+      for (let c = a + 1; c < shown.length; c++) {
+        if (!taken[c] && where[a] && where[c] &&
+            Math.hypot(where[c][0] - where[a][0], where[c][1] - where[a][1]) <= tol) {
+          taken[c] = true;
+          names.push(shown[c].name);
+          texts.push(shown[c].text);
         }
       }
-      setLabel(shown[a], names.join(" = "));
+      shown[a].group = names;
+      setLabel(shown[a], texts.join(" = "));
     }
     shown.forEach((e, i) => { if (taken[i]) setLabel(e, null); });
     for (const e of labelled) if (!entryOf.get(e.el).shown) setLabel(e, e.text);
   }
+
+  /** The part of p + t d (t0 <= t <= t1) inside the box, or null (layout.clip). */
+  function clip(p, d, box, t0 = -Infinity, t1 = Infinity) {
+    const [xmin, xmax, ymin, ymax] = box;
+    for (const [pi, di, lo, hi] of [[p[0], d[0], xmin, xmax], [p[1], d[1], ymin, ymax]]) {
+      if (Math.abs(di) < 1e-300) {
+        if (pi < lo || pi > hi) return null;
+        continue;
+      }
+      let ta = (lo - pi) / di, tb = (hi - pi) / di;
+      if (ta > tb) [ta, tb] = [tb, ta];
+      t0 = Math.max(t0, ta);
+      t1 = Math.min(t1, tb);
+      if (t0 > t1) return null;
+    }
+    if (!(Number.isFinite(t0) && Number.isFinite(t1))) return null;
+    return [[p[0] + t0 * d[0], p[1] + t0 * d[1]], [p[0] + t1 * d[0], p[1] + t1 * d[1]]];
+  }
+
+  /** What the labels avoid, in user units: the drawn lines clipped to the view, the circles
+   * (100 points each), the signed lengths and the envelope (export._scene._labels). */
+  function drawnCurves(box) {
+    const q = state.num;
+    const out = [];
+    if (!q) return out;
+    const shown = (step) => entries.some((e) => e.step === step && e.shown);
+    for (const d of [[1, 0], [0, 1]]) {
+      const seg = clip([0, 0], d, box);
+      if (seg) out.push(seg);
+    }
+    for (const n of [1, 2, 3, 4]) {
+      for (const [step, line] of [["side" + n, q.sides[n]], ["perp" + n, q.perps[n]]]) {
+        if (!line || !shown(step)) continue;
+        const seg = clip(line.P, line.d, box);
+        if (seg) out.push(seg);
+      }
+    }
+    for (const n of [1, 2, 3, 4]) {
+      const [cx, cy, r] = q["circle" + n];
+      if (!shown("circle" + n) || !Number.isFinite(r)) continue;
+      const ring = [];
+      for (let j = 0; j < 100; j++) {
+        const t = (2 * PI * j) / 99;
+        ring.push([cx + r * Math.cos(t), cy + r * Math.sin(t)]);
+      }
+      out.push(ring);
+    }
+    const span = box[1] - box[0];
+    for (const n of [1, 2, 3, 4]) {
+      const o = 0.012 * span * (n + 0.5);
+      for (const [step, a, b] of [["OMX" + n, [q.O_M[0], -o], [q["X" + n][0], -o]],
+        ["OY" + n, [o, 0], [o, q["Y" + n][1]]]]) {
+        if (!shown(step) || Math.hypot(b[0] - a[0], b[1] - a[1]) <= 1e-9 * span) continue;
+        const seg = clip(a, [b[0] - a[0], b[1] - a[1]], box, 0, 1);
+        if (seg) out.push(seg);
+      }
+    }
+    if (shown("envelope")) out.push(envelopeSamples(q));
+    return out;
+  }
+
+  /** The envelope's arcs sampled every degree of their circle, as the scene samples them
+   * (export._scene._arc_points): the same curve for the labels to avoid. */
+  function envelopeSamples(q) {
+    const pts = [];
+    const deg = (x) => (x * 180) / PI;
+    for (const a of q.arcs) {
+      if (!a.n) {
+        pts.push([0, 0], [0, 0]);
+        continue;
+      }
+      const [vx, vy] = q.V[a.n - 1];
+      const start = ((((deg(2 * a.theta0 - PI - Math.atan2(vy, vx)) + 180) % 360) + 360) % 360)
+        - 180;
+      const delta = deg(2 * (a.theta1 - a.theta0));
+      const m = Math.max(2, Math.trunc(Math.abs(delta)));
+      const r = Math.hypot(vx, vy) / 2;
+      for (let j = 0; j < m; j++) {
+        const t = ((start + delta * (j === m - 1 ? 1 : j * (1 / (m - 1)))) * PI) / 180;
+        pts.push([vx / 2 + r * Math.cos(t), vy / 2 + r * Math.sin(t)]);
+      }
+    }
+    return pts;
+  }
+
+  const ANCHOR_X = { "-1": "right", 0: "middle", 1: "left" };
+  const ANCHOR_Y = { "-1": "top", 0: "middle", 1: "bottom" };
+  let lastPlacement = [], lastInputs = null;
+  /** Place every shown label with the one algorithm (labelling.place): the paper's points in
+   * the order of labelling.LABEL_ORDER, then H, worst and best; the break points avoided. */
+  function placeLabels() {
+    const [x0, y1, x1, y0] = board.getBoundingBox();
+    const box = [x0, x1, y0, y1];
+    const s = LSPEC.frame / (x1 - x0);
+    const pxPerPt = board.canvasWidth / LSPEC.frame;
+    const pt = (p) => [(p[0] - x0) * s, (p[1] - y0) * s];
+    const inside = (p) => p && p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1;
+    const groups = labelled.filter((e) => e.group && entryOf.get(e.el).shown &&
+      inside(getValue(e.name)))
+      .map((e) => ({ e, names: e.group, at: getValue(e.name) }));
+    groups.sort((a, b) => GL.labelOrder(a.names, LSPEC) - GL.labelOrder(b.names, LSPEC));
+    const special = extras.filter((x) => entryOf.get(x.el).shown && inside([x.el.X(), x.el.Y()]))
+      .map((x) => ({ e: x, names: [x.text], at: [x.el.X(), x.el.Y()], text: x.text }));
+    const texts = groups.map((g) => "$" + g.names.map(GL.tex).join(" = ") + "$");
+    const obstacles = markers.filter((m) => entryOf.get(m.el).shown && inside(getValue(m.name)))
+      .map((m) => pt(getValue(m.name)));
+    const frame = [0, 0, LSPEC.frame, (y1 - y0) * s];
+    lastInputs = { anchors: groups.map((g) => pt(g.at)), texts, opts: {
+      curves: drawnCurves(box).map((c) => c.map(pt)), frame, obstacles } };
+    // the paper's points exactly as the SVG and TikZ place them; then H, worst and best
+    // around them, avoiding their labels and markers
+    const samples = GL.resample(lastInputs.opts.curves, LSPEC.resample);
+    const placed = GL.place(lastInputs.anchors, texts,
+      Object.assign({ spec: LSPEC, samples }, lastInputs.opts));
+    const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
+      spec: LSPEC, samples, frame, avoid: placed.map((p) => p.box),
+      obstacles: obstacles.concat(lastInputs.anchors),
+    });
+    const all = groups.concat(special);
+    placed.push(...more);
+    lastPlacement = all.map((g, i) => ({ names: g.names.slice(), direction: placed[i].direction,
+      offset: placed[i].offset, box: placed[i].box }));
+    all.forEach((g, i) => {
+      const label = g.e.el.label;
+      if (!label) return;
+      const p = placed[i];
+      // the anchor and side of the SVG and TikZ labels (SVG text-anchor, dominant-baseline)
+      const vp = label.visProp;
+      vp.offset = [p.offset[0] * pxPerPt, p.offset[1] * pxPerPt];
+      vp.anchorx = ANCHOR_X[p.direction[0]];
+      vp.anchory = ANCHOR_Y[p.direction[1]];
+      label.needsUpdate = true;
+    });
+  }
+
   function setLabel(e, text) {
     if (text === e.shownText || !e.el.label) return;
     if (text === null) {
@@ -684,6 +842,7 @@
       }
     }
     groupLabels();
+    placeLabels();
   }
 
   // ------------------------------------------------------------------------------------
@@ -856,6 +1015,17 @@
     applyVisibility();
     setVisualPass();
   }
+  // zoom and pan (shift + wheel / drag) move the labels' frame: place them again
+  let relabel = null;
+  board.on("boundingbox", () => {
+    placeLabels();
+    if (relabel === null) {
+      relabel = requestAnimationFrame(() => {
+        relabel = null;
+        board.update();
+      });
+    }
+  });
   P1.on("drag", () => onDrag(1));
   P2.on("drag", () => onDrag(2));
   board.on("update", () => {
@@ -955,6 +1125,7 @@
   function fit() {
     const [x0, x1, y0, y1] = viewBox();
     board.setBoundingBox([x0, y1, x1, y0], true);
+    placeLabels();
     visualsDirty = true;
     setVisualPass();
     board.fullUpdate();
@@ -1037,6 +1208,13 @@
       const r = board.containerObj.getBoundingClientRect();
       return [r.left + c[1], r.top + c[2]];
     },
+    /** The labels as placed: [{names, direction, offset, box}] (points, y up). */
+    labels: () => JSON.parse(JSON.stringify(lastPlacement)),
+    /** What the last placement was given: {anchors, texts, opts} (points, y up). */
+    labelInputs: () => JSON.parse(JSON.stringify(lastInputs)),
+    /** The one label placement (labelling.place) on any data, for checks. */
+    placeLabels: (anchors, texts, opts) => GL.place(anchors, texts,
+      Object.assign({ spec: LSPEC }, opts || {})),
     /** The view box [xmin, xmax, ymin, ymax] of the one rule (layout.view_box). */
     viewBox: () => viewBox(),
     /** The failing inequality when the parameters are not a valid grasp, else null. */

@@ -1,0 +1,269 @@
+/* graspcompass — label placement in the web page: a port of graspcompass.labelling.place.
+ *
+ * One algorithm for every picture (issue 12 §4): the PNG, the SVG and the TikZ place their
+ * labels with graspcompass.labelling.place (Python); the page places its own with this port,
+ * which reads the same constants (labelling.spec(), passed in the page's data).  Each label
+ * tries eight positions around its point (NE, NW, SE, SW, N, S, E, W), close and then twice
+ * as far, and takes the one with the least overlap with the labels already placed, the point
+ * markers and the drawn curves.  Every arithmetic step is the Python one in the same order
+ * (squared distances, numpy's pairwise summation of the overlaps, numpy.interp's formula),
+ * so that both give the same placement; tests/test_web_labels.py checks it in Chromium.
+ *
+ * Sizes in points of a frame whose y axis points up.
+ */
+(function (root) {
+  "use strict";
+
+  const SUB = /_\{([^}]*)\}|_(\w)/g;
+  const chars = (s) => Array.from(s).length;
+  const round9 = (x) => Number(x.toFixed(9));
+
+  /** Estimated [width, height] of a mathtext label (labelling.text_size). */
+  function textSize(text, fontSize, spec) {
+    const r = spec.size;
+    const body = text.split("$").join("");
+    let subs = "";
+    body.replace(SUB, (m, a, b) => {
+      subs += a || b || "";
+      return m;
+    });
+    const main = body.replace(SUB, "").split("\\").join("");
+    const spaces = main.split(" ").length - 1;
+    let width = r.char * fontSize * chars(main.split(" ").join("")) + r.space * fontSize * spaces;
+    width += r.sub * fontSize * chars(subs);
+    return [round9(width + r.pad), round9(r.height * fontSize)];
+  }
+
+  /** numpy's pairwise summation (add.reduce of a contiguous float64 array). */
+  function pairwiseSum(a, start, n) {
+    if (n < 8) {
+      let res = -0.0;
+      for (let i = 0; i < n; i++) res += a[start + i];
+      return res;
+    }
+    if (n <= 128) {
+      const r = a.slice(start, start + 8);
+      let i = 8;
+      for (; i < n - (n % 8); i += 8) {
+        for (let j = 0; j < 8; j++) r[j] += a[start + i + j];
+      }
+      let res = ((r[0] + r[1]) + (r[2] + r[3])) + ((r[4] + r[5]) + (r[6] + r[7]));
+      for (; i < n; i++) res += a[start + i];
+      return res;
+    }
+    let n2 = Math.floor(n / 2);
+    n2 -= n2 % 8;
+    return pairwiseSum(a, start, n2) + pairwiseSum(a, start + n2, n - n2);
+  }
+
+  /** Total overlap area of box ``b`` with ``boxes`` (labelling._overlap). */
+  function overlap(b, boxes) {
+    if (boxes.length === 0) return 0.0;
+    const terms = new Array(boxes.length);
+    for (let i = 0; i < boxes.length; i++) {
+      const o = boxes[i];
+      const w = Math.max(Math.min(b[2], o[2]) - Math.max(b[0], o[0]), 0);
+      const h = Math.max(Math.min(b[3], o[3]) - Math.max(b[1], o[1]), 0);
+      terms[i] = w * h;
+    }
+    return pairwiseSum(terms, 0, terms.length);
+  }
+
+  /** numpy.interp(t, s, fp) at t = 0, step, 2 step, ... (n values) for increasing s: the
+   * same index j (the largest with s[j] <= t) and the same formula, found by a walk. */
+  function interpWalk(s, xs, ys, step, n, out) {
+    const last = s.length - 1;
+    let j = 0;
+    for (let i = 0; i < n; i++) {
+      const t = i * step;
+      if (t > s[last]) {
+        out.push(xs[last], ys[last]);
+        continue;
+      }
+      while (j < last && s[j + 1] <= t) j++;
+      if (j === last || s[j] === t) {
+        out.push(xs[j], ys[j]);
+        continue;
+      }
+      out.push(lerp(s, xs, j, t), lerp(s, ys, j, t));
+    }
+  }
+  function lerp(xp, fp, j, x) {
+    const slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j]);
+    let v = slope * (x - xp[j]) + fp[j];
+    if (Number.isNaN(v)) {
+      v = slope * (x - xp[j + 1]) + fp[j + 1];
+      if (Number.isNaN(v) && fp[j] === fp[j + 1]) v = fp[j];
+    }
+    return v;
+  }
+
+  /** Points every ``step`` along each polyline (labelling.resample): flat [x0, y0, x1, ...]. */
+  function resample(curves, step) {
+    const out = [];
+    for (const raw of curves) {
+      const c = raw.filter((p) => Number.isFinite(p[0]) && Number.isFinite(p[1]));
+      if (c.length < 2) {
+        for (const p of c) out.push(p[0], p[1]);
+        continue;
+      }
+      const s = [0.0], xs = [c[0][0]], ys = [c[0][1]];
+      let acc = 0.0;
+      for (let i = 1; i < c.length; i++) {
+        const dx = c[i][0] - c[i - 1][0], dy = c[i][1] - c[i - 1][1];
+        acc += Math.sqrt(dx * dx + dy * dy);
+        s.push(acc);
+        xs.push(c[i][0]);
+        ys.push(c[i][1]);
+      }
+      interpWalk(s, xs, ys, step, Math.max(Math.ceil((acc + step) / step), 0), out);
+    }
+    return out;
+  }
+
+  /** The curve samples within ``win`` [x0, y0, x1, y1] (those outside can't be inside any
+   * box tried), bucketed on a dense grid, to count those strictly inside a box quickly:
+   * the count is the one of a scan over every sample (labelling.place's inside.sum()). */
+  function sampleGrid(flat, win) {
+    const cell = 16;
+    const nx = Math.max(1, Math.ceil((win[2] - win[0]) / cell));
+    const ny = Math.max(1, Math.ceil((win[3] - win[1]) / cell));
+    if (!(nx * ny <= 1 << 20)) return { count: (b) => countAll(flat, b) };
+    const start = new Int32Array(nx * ny + 1);
+    const idx = new Int32Array(flat.length / 2).fill(-1);
+    for (let k = 0, m = 0; k < flat.length; k += 2, m++) {
+      const x = flat[k], y = flat[k + 1];
+      if (!(x >= win[0] && x <= win[2] && y >= win[1] && y <= win[3])) continue;
+      const i = Math.min(nx - 1, Math.floor((x - win[0]) / cell));
+      const j = Math.min(ny - 1, Math.floor((y - win[1]) / cell));
+      idx[m] = j * nx + i;
+      start[idx[m] + 1]++;
+    }
+    for (let c = 0; c < nx * ny; c++) start[c + 1] += start[c];
+    const fill = start.slice(0, nx * ny);
+    const pts = new Float64Array(2 * start[nx * ny]);
+    for (let m = 0; m < idx.length; m++) {
+      if (idx[m] < 0) continue;
+      const at = fill[idx[m]]++;
+      pts[2 * at] = flat[2 * m];
+      pts[2 * at + 1] = flat[2 * m + 1];
+    }
+    return {
+      count(b) {
+        const i0 = Math.max(0, Math.floor((b[0] - win[0]) / cell));
+        const i1 = Math.min(nx - 1, Math.floor((b[2] - win[0]) / cell));
+        const j0 = Math.max(0, Math.floor((b[1] - win[1]) / cell));
+        const j1 = Math.min(ny - 1, Math.floor((b[3] - win[1]) / cell));
+        let n = 0;
+        for (let j = j0; j <= j1; j++) {
+          for (let k = start[j * nx + i0]; k < start[j * nx + i1 + 1]; k++) {
+            const x = pts[2 * k], y = pts[2 * k + 1];
+            if (x > b[0] && x < b[2] && y > b[1] && y < b[3]) n++;
+          }
+        }
+        return n;
+      },
+    };
+  }
+  function countAll(flat, b) {
+    let n = 0;
+    for (let k = 0; k < flat.length; k += 2) {
+      const x = flat[k], y = flat[k + 1];
+      if (x > b[0] && x < b[2] && y > b[1] && y < b[3]) n++;
+    }
+    return n;
+  }
+
+  /**
+   * One placement {offset: [dx, dy], direction: [sx, sy], box: [x0, y0, x1, y1]} per label
+   * texts[i] of the point anchors[i] (labelling.place).  ``opts``: spec (labelling.spec()),
+   * curves (polylines [[x, y], ...]) or samples (their resample()), frame [x0, y0, x1, y1]
+   * or null, avoid (boxes),
+   * fontSize, markerSize, gap, obstacles ([[x, y], ...]).
+   */
+  function place(anchors, texts, opts) {
+    const spec = opts.spec;
+    const wt = spec.weights;
+    const font = opts.fontSize ?? spec.font;
+    const marker = opts.markerSize ?? spec.marker;
+    const gap = opts.gap ?? spec.gap;
+    const frame = opts.frame || null;
+    const r = marker / 2 + 1.0;
+    const every = anchors.concat(opts.obstacles || []);
+    const markers = every.map(([x, y]) => [x - r, y - r, x + r, y + r]);
+    // opts.samples: the curves already resampled (resample(curves, spec.resample)), reused
+    const flat = opts.samples ||
+      resample((opts.curves || []).filter((c) => c.length), spec.resample);
+    // every box tried lies within its width or height plus the far distance of its point
+    const sizes = texts.map((t) => textSize(t, font, spec));
+    let reach = 0;
+    for (const [w, h] of sizes) reach = Math.max(reach, w, h);
+    reach += (marker / 2 + gap) * Math.max(...spec.far) + 1;
+    let win = [Infinity, Infinity, -Infinity, -Infinity];
+    for (const [x, y] of anchors) {
+      win = [Math.min(win[0], x - reach), Math.min(win[1], y - reach),
+        Math.max(win[2], x + reach), Math.max(win[3], y + reach)];
+    }
+    const grid = flat.length && anchors.length ? sampleGrid(flat, win) : null;
+    const labels = (opts.avoid || []).map((b) => b.slice());
+    const out = [];
+    for (let i = 0; i < anchors.length; i++) {
+      const [px, py] = anchors[i];
+      const [w, h] = sizes[i];
+      let best = [0.0, 0.0, 1, 1], bestScore = Infinity, bestBox = [0, 0, 0, 0];
+      let rank = 0;
+      for (const far of spec.far) {
+        for (const [dx, dy] of spec.offsets) {
+          const d = (marker / 2 + gap) * far;
+          const x0 = px + dx * d - (dx < 0 ? w : dx === 0 ? w / 2 : 0);
+          const y0 = py + dy * d - (dy < 0 ? h : dy === 0 ? h / 2 : 0);
+          const box = [x0, y0, x0 + w, y0 + h];
+          let score = wt.label * overlap(box, labels);
+          score += wt.marker * overlap(box, markers);
+          if (grid) score += wt.curve * grid.count(box);
+          if (anchors.length > 1) {
+            const cx = (box[0] + box[2]) / 2, cy = (box[1] + box[3]) / 2;
+            const own = (px - cx) * (px - cx) + (py - cy) * (py - cy);
+            let near = 0;
+            for (let k = 0; k < anchors.length; k++) {
+              if (k === i) continue;
+              const ox = anchors[k][0] - cx, oy = anchors[k][1] - cy;
+              if (ox * ox + oy * oy < own) near++;
+            }
+            score += wt.near * near;
+          }
+          if (frame) {
+            const outW = Math.max(0.0, frame[0] - box[0]) + Math.max(0.0, box[2] - frame[2]);
+            const outH = Math.max(0.0, frame[1] - box[1]) + Math.max(0.0, box[3] - frame[3]);
+            score += wt.frame * (outW + outH) * h;
+          }
+          score += wt.rank * rank;
+          rank += 1;
+          if (score < bestScore) {
+            best = [dx * d, dy * d, dx, dy];
+            bestScore = score;
+            bestBox = box;
+          }
+        }
+      }
+      labels.push(bestBox);
+      out.push({ offset: [best[0], best[1]], direction: [best[2], best[3]], box: bestBox });
+    }
+    return out;
+  }
+
+  /** The order of placement of a group of point names (labelling.label_order). */
+  function labelOrder(names, spec) {
+    return Math.min(...names.map((n) => ((spec.order.indexOf(n[0]) % 9) + 9) % 9));
+  }
+
+  /** The paper's label of a point name as a TeX body (layout.tex(name, math=False)). */
+  function tex(name) {
+    const m = /^([A-Za-z])_?([A-Za-z0-9]*)$/.exec(name);
+    if (!m) return name;
+    const [, head, rest] = m;
+    return !rest ? head : rest.length === 1 ? `${head}_${rest}` : `${head}_{${rest}}`;
+  }
+
+  root.GCLabelling = { place, textSize, resample, labelOrder, tex, overlap };
+})(typeof window !== "undefined" ? window : globalThis);

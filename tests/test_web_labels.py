@@ -1,0 +1,216 @@
+"""One label placement and one palette in the web page too (issue 12 §4).
+
+The page of ``graspcompass export --format html`` places its labels with
+``labelling.js``, a port of :func:`graspcompass.labelling.place`, and reads its
+colours from :data:`graspcompass.palette.PALETTE`.  Checked here:
+
+* the port gives the Python function's placement on random problems
+  (hypothesis: anchors, texts, polylines with repeated and non-finite points,
+  markers, frames) and on the degenerate ones (coincident points, points on
+  the frame's edge, boxes touching curve samples);
+* the page, on the paper's four grasps at every step, labels the same groups
+  of points on the same sides as the SVG and TikZ scene
+  (:func:`graspcompass.export._scene.build_scene`), and its drawn labels do not
+  cover each other (their rectangles measured in the browser);
+* the page's script writes no colour of its own.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Iterator
+from typing import Any
+
+import numpy as np
+import pytest
+from _browser import chromium
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from graspcompass import Grasp, internal_force_diagram, labelling
+from graspcompass.export._scene import build_scene
+from graspcompass.export.html import page_data, to_html, web_file
+from graspcompass.palette import PALETTE
+
+PRESETS = ["fig6", "table1a", "table1b", "table1c"]
+
+
+# -- without a browser --------------------------------------------------------------------------
+def test_page_script_has_no_colour_of_its_own() -> None:
+    js = web_file("explorer.js")
+    assert not re.findall(r"#[0-9a-fA-F]{3}(?:[0-9a-fA-F]{3})?\b", js)
+    used = set(re.findall(r"COL\.(\w+)", js)) | set(re.findall(r'COL\["(\w+)"\]', js))
+    used |= {f"circle{n}" for n in range(1, 5)} if 'COL["circle" + n]' in js else set()
+    assert used, "the page reads no colour from the palette"
+    assert used <= set(PALETTE), sorted(used - set(PALETTE))
+
+
+def test_page_data_carries_the_palette_and_the_placement_rule() -> None:
+    data = page_data(internal_force_diagram(Grasp.preset("fig6")))
+    assert data["colors"] == PALETTE
+    spec = data["labelling"]
+    assert spec == json.loads(json.dumps(labelling.spec()))
+    assert [tuple(o) for o in spec["offsets"]] == list(labelling.OFFSETS)
+    assert spec["weights"] == labelling.WEIGHTS and spec["far"] == list(labelling.FAR)
+
+
+# -- the port against the Python function -------------------------------------------------------
+@pytest.fixture(scope="module")
+def browser() -> Iterator[Any]:
+    with chromium("the web page's label placement") as b:
+        yield b
+
+
+@pytest.fixture(scope="module")
+def port(browser: Any) -> Iterator[Any]:
+    """A blank page with labelling.js and the constants of labelling.spec()."""
+    page = browser.new_page()
+    page.set_content("<!DOCTYPE html><html><body></body></html>")
+    page.add_script_tag(content=web_file("labelling.js"))
+    page.evaluate("s => { window.SPEC = s; }", labelling.spec())
+    yield page
+    page.close()
+
+
+def _js_place(port: Any, problems: list[dict[str, Any]]) -> list[list[dict[str, Any]]]:
+    return port.evaluate(
+        "ps => ps.map(p => GCLabelling.place(p.anchors, p.texts, Object.assign({spec: SPEC}, "
+        "p.opts)))", problems)
+
+
+def _py_place(p: dict[str, Any]) -> list[labelling.Placement]:
+    o = p["opts"]
+    return labelling.place(p["anchors"], p["texts"],
+                           curves=[np.asarray(c, dtype=float).reshape(-1, 2) for c in
+                                   o.get("curves", [])],
+                           frame=tuple(o["frame"]) if o.get("frame") else None,
+                           avoid=[tuple(b) for b in o.get("avoid", [])],
+                           font_size=o.get("fontSize", labelling.FONT_PT),
+                           marker_size=o.get("markerSize", labelling.MARKER_PT),
+                           gap=o.get("gap", labelling.GAP_PT),
+                           obstacles=o.get("obstacles", []))
+
+
+def _same(js: list[dict[str, Any]], py: list[labelling.Placement]) -> None:
+    assert len(js) == len(py)
+    for i, (a, b) in enumerate(zip(js, py)):
+        assert tuple(a["direction"]) == b.direction, (i, a, b)
+        assert a["offset"] == pytest.approx(b.offset, abs=1e-9), i
+        assert a["box"] == pytest.approx(b.box, abs=1e-9), i
+
+
+NAMES = ["O", "O_M", "P1", "P2", "P1x", "V1", "V4", "X3", "Y2", "B12", "worst", "H"]
+coord = st.floats(-40.0, 420.0, allow_nan=False, allow_infinity=False)
+point = st.tuples(coord, coord)
+# polylines with repeated points, spikes and the odd non-finite vertex (dropped, as in Python)
+vertex = st.one_of(point, point, point, st.just((math.nan, 0.0)), st.just((math.inf, 5.0)))
+
+
+@st.composite
+def problems(draw) -> dict[str, Any]:
+    n = draw(st.integers(1, 14))
+    anchors = draw(st.lists(point, min_size=n, max_size=n))
+    if n > 2 and draw(st.booleans()):  # coincident and near-coincident points
+        anchors[1] = anchors[0]
+        anchors[2] = (anchors[0][0] + 1e-9, anchors[0][1])
+    texts = ["$" + " = ".join(draw(st.lists(st.sampled_from(NAMES), min_size=1, max_size=3)))
+             + "$" for _ in range(n)]
+    curves = draw(st.lists(st.lists(vertex, min_size=0, max_size=12), max_size=5))
+    if draw(st.booleans()):  # repeated vertices: zero-length segments
+        curves.append([anchors[0], anchors[0], (anchors[0][0] + 30.0, anchors[0][1])])
+    opts: dict[str, Any] = {
+        "curves": [[list(v) for v in c] for c in curves],
+        "obstacles": [list(v) for v in draw(st.lists(point, max_size=6))],
+        "frame": draw(st.one_of(st.none(), st.just([0.0, 0.0, 388.08, 388.08]),
+                                st.just([0.0, 0.0, 388.08, 250.0]))),
+        "avoid": [[x, y, x + 20.0, y + 10.0] for x, y in draw(st.lists(point, max_size=3))],
+    }
+    if draw(st.booleans()):
+        opts.update(fontSize=draw(st.sampled_from([8.0, 10.0, 14.5])),
+                    markerSize=draw(st.sampled_from([2.0, 4.0, 9.0])),
+                    gap=draw(st.sampled_from([0.0, 2.5, 6.0])))
+    return {"anchors": [list(a) for a in anchors], "texts": texts, "opts": opts}
+
+
+@settings(max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                  HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(st.lists(problems(), min_size=1, max_size=8))
+def test_port_places_as_python(port: Any, batch: list[dict[str, Any]]) -> None:
+    for js, p in zip(_js_place(port, batch), batch):
+        _same(js, _py_place(p))
+
+
+def test_port_on_a_crowd_on_a_grid(port: Any) -> None:
+    """Points on a 12 pt grid and curves through the candidate boxes' edges: ties broken
+    alike (the first best position), integer counts of samples alike."""
+    xs = np.arange(100.0, 100.0 + 12.0 * 5, 12.0)
+    anchors = [[float(x), float(y)] for x in xs for y in xs]
+    curves = [[[0.0, float(y)], [388.08, float(y)]] for y in xs + 4.5]
+    curves += [[[float(x) + 4.5, 0.0], [float(x) + 4.5, 388.08]] for x in xs]
+    p = {"anchors": anchors, "texts": ["$V_{%d}$" % i for i in range(len(anchors))],
+         "opts": {"curves": curves, "frame": [0.0, 0.0, 388.08, 388.08]}}
+    (js,) = _js_place(port, [p])
+    _same(js, _py_place(p))
+    assert len({tuple(a["direction"]) for a in js}) > 3  # the crowd is spread, not one side
+
+
+def test_port_sizes_texts_as_python(port: Any) -> None:
+    texts = ["$O$", "$P_{1x}$", "$O = O_M = Y_4$", "$B_{12}$", "$\\theta_1$", "$worst$", "$$",
+             "$_{}$", "$a b  c$"]
+    got = port.evaluate("ts => ts.map(t => GCLabelling.textSize(t, 10, SPEC))", texts)
+    assert [tuple(g) for g in got] == [labelling.text_size(t, 10.0) for t in texts]
+
+
+# -- the page -----------------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def explorer(browser: Any, tmp_path_factory: pytest.TempPathFactory) -> Iterator[Any]:
+    path = tmp_path_factory.mktemp("web") / "explorer.html"
+    path.write_text(to_html(internal_force_diagram(Grasp.preset("fig6"))), encoding="utf-8")
+    page = browser.new_page(viewport={"width": 1280, "height": 900})
+    page.goto(path.as_uri())
+    page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+    yield page
+    page.close()
+
+
+def _page_labels(page: Any, preset: str, step: int) -> list[tuple[tuple[str, ...], tuple]]:
+    labels = page.evaluate(
+        "([p, s]) => { const box = document.getElementById('gc-preset'); box.value = p; "
+        "box.dispatchEvent(new Event('change')); graspcompass.step(s); graspcompass.fit(); "
+        "return graspcompass.labels(); }", [preset, step])
+    return [(tuple(lab["names"]), tuple(lab["direction"])) for lab in labels
+            if lab["names"][0] not in ("H", "worst", "best")]
+
+
+@pytest.mark.parametrize("preset", PRESETS)
+def test_page_labels_as_the_svg_and_tikz(explorer: Any, preset: str) -> None:
+    c = internal_force_diagram(Grasp.preset(preset))
+    # every step where a labelled point appears, and the whole construction
+    steps = [s.index for s in c.steps if s.kind == "point" and s.role != "break_point"]
+    box = build_scene(c).box  # the page keeps the whole construction's frame at every step
+    for i in [*steps[2::3], len(c.steps) - 1]:
+        scene = build_scene(c.upto(i), box=box)
+        want = [(lab.names, lab.direction) for lab in scene.labels]
+        assert _page_labels(explorer, preset, i) == want, (preset, i, c.steps[i].name)
+
+
+def test_page_labels_do_not_cover_each_other(explorer: Any) -> None:
+    """The drawn labels' rectangles (measured in the browser, not estimated)."""
+    for preset in PRESETS:
+        _page_labels(explorer, preset, -1)
+        rects = explorer.evaluate(
+            "() => [...document.querySelectorAll('#gc-board text')]"
+            ".filter(t => t.getAttribute('display') !== 'none' && "
+            "t.style.visibility !== 'hidden' && t.textContent.trim() && "
+            "!/^[−-]?[0-9.]+$/.test(t.textContent.trim()))"  # not the ticks
+            ".map(t => { const r = t.getBoundingClientRect(); "
+            "return [t.textContent, r.left, r.top, r.right, r.bottom]; })")
+        assert len(rects) >= 10, rects
+        for i, a in enumerate(rects):
+            for b in rects[i + 1:]:
+                w = min(a[3], b[3]) - max(a[1], b[1])
+                h = min(a[4], b[4]) - max(a[2], b[2])
+                assert w <= 1.0 or h <= 1.0, (preset, a, b)
