@@ -26,7 +26,6 @@ from typing import Any
 import pytest
 
 from _browser import chromium
-
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.construction import Construction
 from graspcompass.construction.envelope import outer_envelope

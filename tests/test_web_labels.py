@@ -25,10 +25,10 @@ from typing import Any
 
 import numpy as np
 import pytest
-from _browser import chromium
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram, labelling
 from graspcompass.export._scene import build_scene
 from graspcompass.export.html import page_data, to_html, web_file
@@ -150,7 +150,7 @@ def test_port_on_a_crowd_on_a_grid(port: Any) -> None:
     anchors = [[float(x), float(y)] for x in xs for y in xs]
     curves = [[[0.0, float(y)], [388.08, float(y)]] for y in xs + 4.5]
     curves += [[[float(x) + 4.5, 0.0], [float(x) + 4.5, 388.08]] for x in xs]
-    p = {"anchors": anchors, "texts": ["$V_{%d}$" % i for i in range(len(anchors))],
+    p = {"anchors": anchors, "texts": [f"$V_{{{i}}}$" for i in range(len(anchors))],
          "opts": {"curves": curves, "frame": [0.0, 0.0, 388.08, 388.08]}}
     (js,) = _js_place(port, [p])
     _same(js, _py_place(p))
