@@ -40,7 +40,8 @@ SLIDERS = ["x_1", "x_2", "y_P", "φ_1", "φ_2", "μ_1", "μ_2"]
 CONSTRUCTION_TAGS = {"command", "element", "expression", "cascell"}
 COMMAND_TAGS = {"input", "output", "outputSizes", "casMap"}
 ELEMENT_TAGS = {"show", "objColor", "labelMode", "lineStyle", "pointSize", "coords", "caption",
-                "breakpoint", "value", "slider", "animation", "layer", "fixed", "auxiliary"}
+                "breakpoint", "value", "slider", "animation", "layer", "fixed", "auxiliary",
+                "labelOffset"}
 ROOT_TAGS = {"gui", "euclidianView", "kernel", "construction", "algebraView", "scripting"}
 
 

@@ -99,3 +99,52 @@ def test_one_palette_for_png_svg_tikz_and_geogebra() -> None:
         internal_force_diagram(Grasp.preset("fig6")))
     for n in (1, 2, 3, 4):
         assert PALETTE[f"circle{n}"] in svg
+
+
+@pytest.mark.parametrize("preset", ["fig6", "table1a", "table1b", "table1c"])
+def test_geogebra_labels_where_the_svg_puts_them(preset: str) -> None:
+    """GeoGebra draws a point's name with its baseline's left end at (x + 4, y − 2 s) plus
+    ``labelOffset`` (DrawPoint.update, GeoGebra's source); rebuilt from the file alone,
+    each label sits on its side of the point as in the scene, and none covers another."""
+    import re
+    import xml.etree.ElementTree as ET
+
+    from graspcompass.export.geogebra import ggb_xml
+
+    c = internal_force_diagram(Grasp.preset(preset))
+    root = ET.fromstring(ggb_xml(c).encode())
+    cs = root.find("euclidianView/coordSystem").attrib
+    x0, y0, scale = float(cs["xZero"]), float(cs["yZero"]), float(cs["scale"])
+    font = float(root.find("gui/font").attrib["size"])
+    boxes = {}
+    for el in root.iterfind("construction/element[@type='point']"):
+        off = el.find("labelOffset")
+        if el.find("show").attrib["label"] != "true":
+            continue
+        assert off is not None, el.attrib["label"]
+        co = el.find("coords").attrib
+        sx, sy = x0 + float(co["x"]) * scale, y0 - float(co["y"]) * scale
+        size = float(el.find("pointSize").attrib["val"])
+        bx = sx + 4 + float(off.attrib["x"])
+        by = sy - 2 * size + float(off.attrib["y"])  # the baseline, y down
+        name = el.attrib["label"]
+        main, subs = name[0], re.sub(r"^.", "", name).replace("_", "")
+        width = 0.6 * font * len(main) + 0.45 * font * len(subs)  # a sans-serif, subscripts
+        boxes[name] = ((bx, by - 0.75 * font, bx + width, by + 0.25 * font), (sx, sy))
+    scene = build_scene(c)
+    assert len(boxes) == sum(len(lab.names) for lab in scene.labels)
+    for lab in scene.labels:
+        (bx0, by0, bx1, by1), (sx, sy) = boxes[lab.names[0]]
+        dx, dy = lab.direction
+        cx, cy = (bx0 + bx1) / 2, (by0 + by1) / 2
+        if dx:
+            assert (cx - sx) * dx > 0, (lab.names, lab.direction)
+        if dy:
+            assert (sy - cy) * dy > 0, (lab.names, lab.direction)  # screen y points down
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            (a0, a1, a2, a3), _ = boxes[a]
+            (b0, b1, b2, b3), _ = boxes[b]
+            w, h = min(a2, b2) - max(a0, b0), min(a3, b3) - max(a1, b1)
+            assert w <= 1.0 or h <= 1.0, (preset, a, b)

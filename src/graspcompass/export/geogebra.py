@@ -33,15 +33,17 @@ from xml.sax.saxutils import quoteattr
 
 import sympy as sp
 
-from .. import layout
+from .. import labelling
 from ..geometry import Line, Point
 from ..palette import rgb
 from ._ggb_defs import SLIDERS, definition, ggb_label
+from ._scene import build_scene, label_tex
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 
 _W, _H = 960, 720  # graphics view, pixels
 _LEFT = 230  # room for the sliders at the left of the view
+_POINT_SIZE = 4  # of the labelled points (GeoGebra's pointSize, pixels)
 _RGB = {role: rgb(role) for role in ("axis", "side", "perp", "point", "envelope", "circle1",
                                      "circle2", "circle3", "circle4")}
 
@@ -79,7 +81,7 @@ def _sliders(grasp: Any) -> list[str]:
     return out
 
 
-def _style(step: Any) -> list[str]:
+def _style(step: Any, offset: tuple[int, int] | None = None) -> list[str]:
     kind = step.kind
     small = step.role == "break_point"  # roles as data, never names
     n = step.n[0] if step.n else 1
@@ -97,7 +99,9 @@ def _style(step: Any) -> list[str]:
         dashed = role == "perp" or kind == "circle"
         out.append(f"<lineStyle {_a(thickness=thick, type=15 if dashed else 0)}/>")
     if kind == "point":
-        out.append(f"<pointSize {_a(val=2 if small else 4)}/>")
+        out.append(f"<pointSize {_a(val=2 if small else _POINT_SIZE)}/>")
+    if label and offset is not None:
+        out.append(f"<labelOffset {_a(x=offset[0], y=offset[1])}/>")
     obj = step.obj
     if isinstance(obj, Point):
         out.append(f"<coords {_a(x=repr(_f(obj.x)), y=repr(_f(obj.y)), z='1.0')}/>")
@@ -109,15 +113,51 @@ def _style(step: Any) -> list[str]:
     return out
 
 
-def _view(construction: Any) -> list[str]:
-    # the one view box of every picture (layout.view_box, objects chosen by role)
-    box = layout.view_box(construction.grasp, layout.numeric_objects(construction),
-                          roles=layout.roles_of(construction))
+def _frame(box: tuple[float, float, float, float]) -> tuple[float, float, float]:
+    """GeoGebra's ``xZero``, ``yZero`` and ``scale`` (pixels per unit) of the view box."""
     xs, ys = [box[0], box[1]], [box[2], box[3]]
     scale = min((_W - _LEFT) / (max(xs) - min(xs) + 1e-6), _H / (max(ys) - min(ys) + 1e-6)) / 1.1
     cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
-    x0, y0 = _LEFT + (_W - _LEFT) / 2 - cx * scale, _H / 2 + cy * scale
-    return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>", "</gui>",
+    return _LEFT + (_W - _LEFT) / 2 - cx * scale, _H / 2 + cy * scale, scale
+
+
+def _font_px(box: tuple[float, float, float, float], scale: float) -> int:
+    """The label font in pixels: labelling.FONT_PT in a frame FRAME_PT wide, as everywhere."""
+    return max(8, round(labelling.FONT_PT * scale * (box[1] - box[0]) / labelling.FRAME_PT))
+
+
+def _label_offsets(scene: Any, frame: tuple[float, float, float]) -> dict[str, tuple[int, int]]:
+    """``labelOffset`` (pixels, y down) of each labelled point: its label where the one
+    placement (:mod:`graspcompass.labelling`, the scene's labels) puts it.
+
+    GeoGebra draws a point's name with its baseline's left end at (x + 4, y − 2 s) for a
+    point of size s at (x, y) on the screen, plus the offset.  Points that coincide share
+    one label in the other pictures ("O = O_M"); here each keeps its own, side by side in
+    the group's place, so that each follows its point when a slider separates them.
+    """
+    x_zero, y_zero, scale = frame
+    px_per_pt = scale * (scene.box[1] - scene.box[0]) / labelling.FRAME_PT
+    font = labelling.FONT_PT
+    where = {names[0]: xy for names, xy in scene.points}
+    out = {}
+    for lab in scene.labels:
+        x0, y0 = lab.box[0], lab.box[1]
+        left = x_zero + x0 * scale
+        base = y_zero - y0 * scale - 0.3 * 1.35 * font * px_per_pt  # above the box's bottom
+        px, py = where[lab.names[0]]
+        sx, sy = x_zero + px * scale, y_zero - py * scale
+        for name in lab.names:
+            out[name] = (round(left - (sx + 4)), round(base - (sy - 2 * _POINT_SIZE)))
+            width = labelling.text_size("$" + label_tex(name) + " $", font)[0]
+            left += width * px_per_pt
+    return out
+
+
+def _view(construction: Any, scene: Any) -> list[str]:
+    # the one view box of every picture (layout.view_box, objects chosen by role)
+    x0, y0, scale = _frame(scene.box)
+    return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
+            f"\t<font {_a(size=_font_px(scene.box, scale))}/>", "</gui>",
             "<euclidianView>", f"\t<size {_a(width=_W, height=_H)}/>",
             f"\t<coordSystem {_a(xZero=repr(x0), yZero=repr(y0))}"
             f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
@@ -140,11 +180,13 @@ def ggb_xml(construction: Any, title: str | None = None) -> str:
         raise ValueError("cannot write a symbolic construction to GeoGebra: its sliders need "
                          "numbers; substitute values first (Grasp.subs)")
     text = title if title is not None else (getattr(grasp, "title", None) or "")
+    scene = build_scene(construction)
+    offsets = _label_offsets(scene, _frame(scene.box))
     out = ['<?xml version="1.0" encoding="utf-8"?>',
            f'<geogebra {_a(format="5.0", version="5.0.0.0", app="classic", platform="d")} '
            'xsi:noNamespaceSchemaLocation="http://www.geogebra.org/apps/xsd/ggb.xsd" '
            'xmlns="" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
-           *_view(construction),
+           *_view(construction, scene),
            "<kernel>", f"\t<continuous {_a(val='false')}/>", f"\t<decimals {_a(val=4)}/>",
            f"\t<angleUnit {_a(val='radiant')}/>", f"\t<coordStyle {_a(val=0)}/>", "</kernel>",
            f"<construction {_a(title=text, author='graspcompass', date='')}>"]
@@ -162,7 +204,7 @@ def ggb_xml(construction: Any, title: str | None = None) -> str:
             out += [f"<command {_a(name=d.command)}{var}>", f"\t<input {args}/>",
                     f"\t<output {_a(a0=label)}/>", "</command>"]
         out.append(f"<element {_a(type=d.element, label=label)}>")
-        out += ["\t" + line for line in _style(s)]
+        out += ["\t" + line for line in _style(s, offsets.get(s.name))]
         out.append(f"\t<caption {_a(val=s.caption)}/>")
         if s.key:
             out.append(f"\t<breakpoint {_a(val='true')}/>")
