@@ -405,7 +405,9 @@
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
   // labels in the font of the other pictures: labelling.FONT_PT in a frame FRAME_PT wide
-  JXG.Options.label.fontSize = Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame);
+  const LFONT = Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame);
+  const withFont = (attrs) => Object.assign({}, attrs,
+    { label: Object.assign({ fontSize: LFONT }, attrs && attrs.label) });
   // Colours, widths and dashes are applied to the SVG only in the redraws after a change of
   // visibility or highlight (JSXGraph's "enhanced rendering"), not on every parameter change.
   let visualsDirty = true;
@@ -433,7 +435,7 @@
     const el = reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
       name: LABEL(name), size: 2, strokeColor: COL.point, fillColor: COL.point,
       fixed: true, showInfobox: false, highlight: false,
-    }, attrs || {})), step, {
+    }, withFont(attrs))), step, {
       exists: () => !!(state.num && state.num[name]),
       hl: { size: 5, strokeColor: COL.highlight, fillColor: COL.highlight },
     });
@@ -602,7 +604,7 @@
       () => (state.num ? state.num[which].point[0] : NaN),
       () => (state.num ? state.num[which].point[1] : NaN)], Object.assign({
       fixed: true, highlight: false, showInfobox: false,
-    }, attrs)), "envelope", { exists: () => !!state.num });
+    }, withFont(attrs))), "envelope", { exists: () => !!state.num });
     extras.push({ el, text: which });
   };
   specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: COL.worst,
@@ -612,11 +614,11 @@
 
   // O and the draggable contacts
   labelled.unshift({ name: "O", text: "O", shownText: "O", el: reg(board.create("point", [0, 0],
-    { name: "O", size: 2, fixed: true, strokeColor: COL.point, fillColor: COL.point,
-      highlight: false, showInfobox: false }),
+    withFont({ name: "O", size: 2, fixed: true, strokeColor: COL.point, fillColor: COL.point,
+      highlight: false, showInfobox: false })),
   "O", { always: true }) });
-  const dragAttrs = { size: 6, strokeColor: COL.contact, fillColor: COL.contactfill,
-    showInfobox: false, highlight: true, highlightFillColor: COL.contacthover };
+  const dragAttrs = withFont({ size: 6, strokeColor: COL.contact, fillColor: COL.contactfill,
+    showInfobox: false, highlight: true, highlightFillColor: COL.contacthover });
   const P1 = reg(board.create("point", [state.p.x1, state.p.y],
     Object.assign({ name: "P₁" }, dragAttrs)), "P1", { always: true });
   const P2 = reg(board.create("point", [-state.p.x2, state.p.y],
