@@ -430,7 +430,8 @@
 
   const labelled = []; // points whose labels are merged where they coincide ("O = Oₘ")
   const markers = []; // {name, el}: the unlabelled break points, which labels avoid
-  const extras = []; // {el, text}: H, worst, best, placed after the paper's points
+  const extras = []; // {el, text}: H, placed after the paper's points
+  const unlabelled = []; // {name, el}: the worst and best markers, which H's label avoids
   function point(name, step, attrs) {
     const el = reg(board.create("point", [num(name, 0), num(name, 1)], Object.assign({
       name: LABEL(name), size: 2, strokeColor: COL.point, fillColor: COL.point,
@@ -605,12 +606,14 @@
       () => (state.num ? state.num[which].point[1] : NaN)], Object.assign({
       fixed: true, highlight: false, showInfobox: false,
     }, withFont(attrs))), "envelope", { exists: () => !!state.num });
-    extras.push({ el, text: which });
+    unlabelled.push({ name: which, el });
   };
+  // the worst and best orientation: a red square and a green diamond, named in the panel
+  // (■ worst, ◆ best) in the same colours, not on the crowded board
   specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: COL.worst,
-    fillColor: COL.worst, label: { strokeColor: COL.worst } });
+    fillColor: COL.worst, withLabel: false });
   specialPoint("best", { name: "best", face: "<>", size: 6, strokeColor: COL.best,
-    fillColor: COL.best, label: { strokeColor: COL.best } });
+    fillColor: COL.best, withLabel: false });
 
   // O and the draggable contacts
   labelled.unshift({ name: "O", text: "O", shownText: "O", el: reg(board.create("point", [0, 0],
@@ -774,7 +777,9 @@
       Object.assign({ spec: LSPEC, samples }, lastInputs.opts));
     const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
       spec: LSPEC, samples, frame, avoid: placed.map((p) => p.box),
-      obstacles: obstacles.concat(lastInputs.anchors),
+      obstacles: obstacles.concat(lastInputs.anchors, unlabelled
+        .filter((m) => entryOf.get(m.el).shown && inside(getValue(m.name)))
+        .map((m) => pt(getValue(m.name)))),
     });
     const all = groups.concat(special);
     placed.push(...more);
@@ -917,10 +922,12 @@
     "<p>θ = <span data-r=\"theta\"></span>: k<sub>grasp</sub> = <span data-r=\"kgrasp\"></span>, " +
     "F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"Fint\"></span> " +
     "<small>(eqs. (25), (17))</small></p>" +
-    "<p class=\"gc-worst\">worst: θ = <span data-r=\"wtheta\"></span>, k = " +
+    `<p class="gc-worst" style="color:${COL.worst}">■ worst: θ = ` +
+    "<span data-r=\"wtheta\"></span>, k = " +
     "<span data-r=\"wk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"wF\"></span>" +
     "<span data-r=\"wn\"></span></p>" +
-    "<p class=\"gc-best\">best: θ = <span data-r=\"btheta\"></span>, k = " +
+    `<p class="gc-best" style="color:${COL.best}">◆ best: θ = ` +
+    "<span data-r=\"btheta\"></span>, k = " +
     "<span data-r=\"bk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"bF\"></span></p>" +
     "<table class=\"gc-v\"><tr><th></th><th>S<sub>n</sub></th><th>C<sub>n</sub></th>" +
     "<th>k<sub>n</sub>(θ)</th></tr>" +
