@@ -13,7 +13,11 @@ updates the whole construction, the four circles and the envelope
 step's caption (``<caption>``), shown in GeoGebra's construction protocol; the
 key steps (V_n, the circles, the envelope) are breakpoints of the protocol's
 navigation.  Labels are the step names, except ``x-axis`` -> ``axisX``,
-``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.
+``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.  The view is the one view box
+of every picture (:func:`graspcompass.layout.view_box`), the colours the one palette
+(:mod:`graspcompass.palette`), and each point's name sits where the one label placement
+(:mod:`graspcompass.labelling`, through the SVG/TikZ scene) puts it: a ``labelOffset``
+from GeoGebra's own place for it, in a label font of the same size relative to the view.
 
 The XML follows the tags documented for ``geogebra.xml`` (``<geogebra
 format="5.0">``, ``<euclidianView>``, ``<kernel>``, ``<construction>`` with
