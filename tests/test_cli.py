@@ -20,24 +20,10 @@ def run(capsys, *argv: str) -> tuple[int, str, str]:
     return code, out, err
 
 
-def test_main_job_writes_fig6_and_prints_protocol(tmp_path, capsys):
-    code, out, err = run(capsys, "--out", str(tmp_path))
-    assert code == 0 and err == ""
-    png = tmp_path / "fig6-diagram.png"
-    assert png.stat().st_size > 10_000
-    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert (tmp_path / "fig6-diagram.svg").read_text().lstrip().startswith("<?xml")
-    steps = json.loads((tmp_path / "fig6-steps.json").read_text())
-    assert [s["name"] for s in steps][:3] == ["O", "x-axis", "y-axis"]
-    # the printed protocol carries exact coordinates: V2 = (√3, −3/2) of §4.1 by hand,
-    # S2 = (x1 + x2)/2 − y tan(φ2 + ξ2) = √3/2 + √3/2 and C2 = x1 tan(2π/3) = −3/2
-    line_v2 = next(ln for ln in out.splitlines() if ln.split()[1:2] == ["V2"])
-    assert "(sqrt(3), -3/2)" in line_v2
-
-
-def test_main_job_quiet(tmp_path, capsys, monkeypatch):
-    """-q prints nothing; the GIF is written by a stub here (its own tests are in
-    test_animate.py: writing it again costs seconds and prints nothing off a terminal)."""
+@pytest.fixture()
+def stub_gif(monkeypatch):
+    """The main job's GIF written by a stub (its own tests are in test_animate.py, on the
+    same ``write_main_animation``: writing it again costs 15-30 s); records ``quiet``."""
     from graspcompass import cli
 
     written = []
@@ -49,8 +35,33 @@ def test_main_job_quiet(tmp_path, capsys, monkeypatch):
         return path
 
     monkeypatch.setattr(cli, "write_main_animation", stub)
+    return written
+
+
+def test_main_job_writes_fig6_and_prints_protocol(tmp_path, capsys, stub_gif):
+    from graspcompass import cli
+
+    code, out, err = run(capsys, "--out", str(tmp_path))
+    assert code == 0 and err == "" and stub_gif == [False]
+    png = tmp_path / "fig6-diagram.png"
+    assert png.stat().st_size > 10_000
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert (tmp_path / "fig6-diagram.svg").read_text().lstrip().startswith("<?xml")
+    steps = json.loads((tmp_path / "fig6-steps.json").read_text())
+    assert [s["name"] for s in steps][:3] == ["O", "x-axis", "y-axis"]
+    # the printed protocol carries exact coordinates: V2 = (√3, −3/2) of §4.1 by hand,
+    # S2 = (x1 + x2)/2 − y tan(φ2 + ξ2) = √3/2 + √3/2 and C2 = x1 tan(2π/3) = −3/2
+    line_v2 = next(ln for ln in out.splitlines() if ln.split()[1:2] == ["V2"])
+    assert "(sqrt(3), -3/2)" in line_v2
+    assert cli.MAIN_ANIMATION in out  # the four files are named
+
+
+def test_main_job_quiet(tmp_path, capsys, stub_gif):
+    """-q prints nothing and asks the GIF writer for quiet."""
+    from graspcompass import cli
+
     code, out, _ = run(capsys, "--quiet", "--out", str(tmp_path))
-    assert code == 0 and out == "" and written == [True]
+    assert code == 0 and out == "" and stub_gif == [True]
     assert {p.name for p in tmp_path.iterdir()} == {
         "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", cli.MAIN_ANIMATION}
 
