@@ -214,3 +214,38 @@ def test_page_labels_do_not_cover_each_other(explorer: Any) -> None:
                 w = min(a[3], b[3]) - max(a[1], b[1])
                 h = min(a[4], b[4]) - max(a[2], b[2])
                 assert w <= 1.0 or h <= 1.0, (preset, a, b)
+
+
+def _page_vs_python(page: Any) -> None:
+    """The page's last placement equals labelling.place on what the page gave it."""
+    got = page.evaluate("graspcompass.labels()")
+    given_ = page.evaluate("graspcompass.labelInputs()")
+    placed = _py_place(given_)
+    paper = [g for g in got if g["names"][0] != "H"]
+    _same(paper, placed)
+
+
+def test_page_places_as_python_after_drags_and_zooms(explorer: Any) -> None:
+    """Random grasps set as the sliders would, then a zoom and a pan: each time the
+    labels are placed again, as labelling.place places the page's own drawing."""
+    rng = np.random.default_rng(12)
+    explorer.evaluate("() => { graspcompass.step(-1); graspcompass.fit(); }")
+    for _ in range(6):
+        phi = rng.uniform(1.2, 1.9, 2)
+        mu = rng.uniform(0.4, 1.5, 2)
+        err = explorer.evaluate("p => graspcompass.set(p)", {
+            "x1": float(rng.uniform(0.3, 2)), "x2": float(rng.uniform(0.3, 2)),
+            "y": float(rng.uniform(0, 1)), "phi1": float(phi[0]), "phi2": float(phi[1]),
+            "mu1": float(mu[0]), "mu2": float(mu[1]), "theta": float(rng.uniform(0, 6))})
+        if err:
+            continue
+        _page_vs_python(explorer)
+    before = explorer.evaluate("graspcompass.labelInputs().anchors")
+    explorer.evaluate("() => { graspcompass.board.zoomIn(); }")
+    explorer.wait_for_timeout(100)
+    _page_vs_python(explorer)
+    explorer.evaluate("() => { const b = graspcompass.board.getBoundingBox(); "
+                      "graspcompass.board.setBoundingBox([b[0] + 0.3, b[1], b[2] + 0.3, b[3]]); }")
+    explorer.wait_for_timeout(100)
+    _page_vs_python(explorer)
+    assert explorer.evaluate("graspcompass.labelInputs().anchors") != before
