@@ -1,0 +1,135 @@
+"""The canonical form of the kernel's exact expressions (:func:`canon`) and its inputs.
+
+Every coordinate a construction makes is passed once through :func:`canon`; a
+number whose atoms the ring of :mod:`~graspcompass.geometry._exact_convert` cannot
+hold is put over a rationalised denominator by conjugates (:func:`_rationalize`).
+Private to :mod:`graspcompass.geometry.exact`, which re-exports these names.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..expr import parse_exact
+from ._exact_convert import _canon_ring
+from ._exact_ring import _MEMO
+
+
+def sym(value: object) -> sp.Expr:
+    """Return ``value`` as a sympy expression without any parsing of text.
+
+    Python ints become :class:`sympy.Integer`, floats :class:`sympy.Float`;
+    sympy expressions pass through; text is read exactly and safely by
+    :func:`graspcompass.expr.parse_exact` (``"1.2"`` is 6/5).
+
+    Examples
+    --------
+    >>> sym(3), sym(0.5), sym("1.2")
+    (3, 0.500000000000000, 6/5)
+    """
+    if isinstance(value, sp.Basic):
+        return value  # type: ignore[return-value]
+    if isinstance(value, str):
+        return parse_exact(value)
+    if isinstance(value, bool):
+        raise TypeError(f"expected a number or a sympy expression, got {value!r}")
+    if isinstance(value, int):
+        return sp.Integer(value)
+    if isinstance(value, float):
+        return sp.Float(value)
+    try:
+        return sp.sympify(value, strict=True)  # numpy scalars, Fraction
+    except (sp.SympifyError, TypeError) as exc:
+        raise TypeError(f"expected a number or a sympy expression, got {value!r}") from exc
+
+
+def text(expr: object) -> str:
+    """``str(expr)`` in sympy's own term order, without its numeric sorting of terms.
+
+    The default printer sorts the terms of a sum of numbers by evaluating each one,
+    which is slow for long exact sums; this text is the same for equal canonical
+    forms.
+
+    Examples
+    --------
+    >>> text(sp.sqrt(3) / 2 + 1)
+    'sqrt(3)/2 + 1'
+    """
+    if not isinstance(expr, sp.Basic):
+        return str(expr)
+    if expr.free_symbols or not expr.has(sp.sin, sp.cos, sp.atan):
+        return str(expr)  # small radicals and symbols: sympy's usual order
+    return sp.sstr(expr, order="none")
+
+
+def has_float(expr: sp.Expr) -> bool:
+    """True when ``expr`` holds a floating-point number (the numeric path)."""
+    return bool(expr.atoms(sp.Float))
+
+
+def canon(expr: sp.Expr) -> sp.Expr:
+    """Canonical, small form of an exact expression (no ``simplify``).
+
+    Numbers and symbolic expressions alike become one reduced fraction of
+    sparse polynomials in their generators (symbols, ``sqrt(p)`` for primes p,
+    ``sin(a)`` and ``cos(a)`` of each angle, other atoms), with the numerator
+    and denominator reduced modulo ``sqrt(p)**2 = p`` and
+    ``sin(a)**2 + cos(a)**2 = 1`` and square roots cleared from the denominator
+    by conjugates.
+
+    Examples
+    --------
+    >>> from sympy import sqrt, pi, tan, sin, cos, symbols
+    >>> canon((sqrt(3) + 1) / (1 - sqrt(3)))
+    -2 - sqrt(3)
+    >>> canon(tan(7*pi/12) * sqrt(3)/2)
+    -sqrt(3) - 3/2
+    >>> a, b = symbols("a b")
+    >>> canon((a**2 - b**2) / (a - b))
+    a + b
+    >>> canon(sin(a)**2 + cos(a)**2 - 1), canon(sqrt(6) - sqrt(2)*sqrt(3))
+    (0, 0)
+    """
+    expr = sym(expr)
+    if expr.is_Rational or expr.is_Symbol or expr in _MEMO:  # memo keys are canonical
+        return expr
+    if has_float(expr):
+        return sp.Float(expr.evalf(17)) if not expr.free_symbols else sp.expand(expr)
+    fast = _canon_ring(expr)
+    if fast is not None:
+        return fast
+    if expr.free_symbols:
+        return sp.cancel(sp.together(expr))
+    num, den = sp.fraction(sp.together(expr))
+    if den.is_Rational:
+        return sp.expand(num) / den
+    num, den = _rationalize(sp.expand(num), sp.expand(den))
+    return sp.expand(num) / sp.expand(den)
+
+
+def _square_roots(expr: sp.Expr) -> list[sp.Pow]:
+    return sorted(
+        (p for p in expr.atoms(sp.Pow) if p.exp == sp.S.Half and p.base.is_Rational),
+        key=sp.default_sort_key,
+    )
+
+
+def _rationalize(num: sp.Expr, den: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """Clear square roots of rationals from ``den`` by conjugates, one root at a time.
+
+    ``den = A + B*r`` with r a square root; multiplying by ``A - B*r`` leaves
+    ``A**2 - B**2*r**2``, free of r.  Much cheaper than ``radsimp`` (which runs
+    ``nsimplify``) on the quadratic fields of the paper's examples.
+    """
+    for _ in range(6):
+        roots = _square_roots(den)
+        if not roots or den.is_Rational:
+            break
+        r = roots[0]
+        b = den.coeff(r)
+        a = sp.expand(den - b * r)
+        if a.has(r) or b.has(r):
+            break
+        num = sp.expand(num * (a - b * r))
+        den = sp.expand(a**2 - b**2 * r.base)
+    return num, den

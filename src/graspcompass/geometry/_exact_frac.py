@@ -1,0 +1,188 @@
+"""Exact values as fractions of sparse polynomials: the kernel's fast arithmetic.
+
+Constructions compute with :class:`Frac` instead of sympy expression trees; its
+zero and sign tests use the float filter and integer balls of
+:mod:`~graspcompass.geometry._exact_bounds` before the decisions of
+:mod:`~graspcompass.geometry._exact_decide`.  Private to
+:mod:`graspcompass.geometry.exact`, which re-exports these names.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ._exact_bounds import _clearly_nonzero, _float_sign
+from ._exact_canon import canon
+from ._exact_convert import _canon_ring, _convert, _lift
+from ._exact_decide import decide_sign, decide_zero
+from ._exact_ring import (
+    _MEMO,
+    _clear_roots,
+    _finish,
+    _gen_key,
+    _has_opaque,
+    _reduce,
+    _relations,
+    _ring,
+)
+
+
+def _nd(e: sp.Expr, R, index: dict) -> tuple:
+    """``e`` as (numerator, denominator) in the ring R whose generators are ``index``."""
+    return _convert(e, R, {g: (R.gens[i], R.one) for g, i in index.items()})
+
+
+def _ground(R, q: sp.Rational):
+    """The rational ``q`` as a constant of ring R (``R(q)`` goes through ``from_expr``)."""
+    return R.ground_new(R.domain.from_sympy(q))
+
+
+class NotAFraction(Exception):
+    """An expression the fast path cannot hold (floats, ``I``): use sympy arithmetic."""
+
+
+class Frac:
+    """An exact value as a fraction ``n/d`` of sparse polynomials in its generators.
+
+    The kernel's constructions compute with these instead of building sympy
+    expression trees; :meth:`expr` gives the canonical sympy expression (the same
+    as :func:`canon`), reduced modulo the relations of the generators.
+
+    Examples
+    --------
+    >>> a = Frac.of(sp.sqrt(3) / 2)
+    >>> (a * a + Frac.of(sp.Rational(1, 4))).expr()
+    1
+    """
+
+    __slots__ = ("R", "d", "n")
+
+    def __init__(self, R, n, d) -> None:
+        self.R, self.n, self.d = R, n, d
+
+    @classmethod
+    def of(cls, e: sp.Expr) -> Frac:
+        """The fraction of an exact expression (a memo hit for the kernel's own values)."""
+        if e.is_Rational:
+            return cls(None, e, sp.Integer(1))
+        hit = _MEMO.get(e)
+        if hit is None:
+            if e.has(sp.Float) or _canon_ring(e) is None:
+                raise NotAFraction(e)
+            hit = _MEMO.get(canon(e))
+            if hit is None:
+                raise NotAFraction(e)
+        return cls(*hit)
+
+    def _pair(self, other: Frac) -> tuple:
+        if self.R is other.R:
+            return self.R, self.n, self.d, other.n, other.d
+        if self.R is None:
+            R = other.R
+            return R, _ground(R, self.n), R.one, other.n, other.d
+        if other.R is None:
+            R = self.R
+            return R, self.n, self.d, _ground(R, other.n), R.one
+        gens = set(self.R.symbols) | set(other.R.symbols)
+        R = _ring(tuple(sorted(gens, key=_gen_key)))
+        return (R, _lift(self.n, self.R, R), _lift(self.d, self.R, R),
+                _lift(other.n, other.R, R), _lift(other.d, other.R, R))
+
+    def __add__(self, other: Frac) -> Frac:
+        if self.R is None and other.R is None:
+            return Frac(None, self.n + other.n, sp.Integer(1))
+        R, a, b, c, d = self._pair(other)
+        if b == d:
+            return Frac(R, a + c, b)
+        return Frac(R, a * d + c * b, b * d)
+
+    def __neg__(self) -> Frac:
+        return Frac(self.R, -self.n, self.d)
+
+    def __sub__(self, other: Frac) -> Frac:
+        return self + (-other)
+
+    def __mul__(self, other: Frac) -> Frac:
+        if self.R is None and other.R is None:
+            return Frac(None, self.n * other.n, sp.Integer(1))
+        R, a, b, c, d = self._pair(other)
+        return Frac(R, a * c, b * d)
+
+    def __truediv__(self, other: Frac) -> Frac:
+        if not other.n:
+            raise ZeroDivisionError("division by zero")
+        if other.R is None:
+            return self * Frac(None, 1 / other.n, sp.Integer(1))
+        return self * other.inverse()
+
+    def inverse(self) -> Frac:
+        """``1 / self`` with the square roots cleared from its denominator at once.
+
+        Done here, once, a quotient used twice (the parameter t of a meet, for both
+        coordinates) does not have its roots cleared again in every :meth:`expr`.
+        """
+        R = self.R
+        root_rels, _, roots = _relations(R)
+        n, d = self.d, self.n
+        if roots:
+            n, d = n.rem(root_rels), d.rem(root_rels)
+            if not d:
+                raise ZeroDivisionError("division by zero")
+            n, d = _clear_roots(n, d, roots, root_rels, _has_opaque(R))
+        return Frac(R, n, d)
+
+    def is_zero(self) -> bool | None:
+        """Whether the value is 0: True, False, or None when undecidable (symbols).
+
+        Decided without building the sympy expression when it can be: a numerator
+        that reduces to 0 modulo the generators' relations is 0, and one whose
+        interval (200 bits) excludes 0 is not; anything else goes to
+        :func:`decide_zero` on :meth:`expr`.
+
+        Examples
+        --------
+        >>> a = Frac.of(sp.sqrt(6))
+        >>> (a - Frac.of(sp.sqrt(2)) * Frac.of(sp.sqrt(3))).is_zero(), a.is_zero()
+        (True, False)
+        """
+        if self.R is None:
+            return self.n == 0
+        root_rels, trig_rels, _ = _relations(self.R)
+        n = self.n.rem(root_rels) if root_rels else self.n
+        if n and trig_rels:
+            n = n.rem(trig_rels)
+        if not n:
+            return True
+        if _clearly_nonzero(n):
+            return False
+        return decide_zero(self.expr())
+
+    def sign(self) -> int | None:
+        """The sign -1, 0, +1 of the value, or None when undecidable (symbols).
+
+        A float filter with a proven error bound decides most signs without the
+        sympy expression; the rest goes to :func:`decide_sign` on :meth:`expr`.
+
+        Examples
+        --------
+        >>> Frac.of(sp.sqrt(2) - sp.Rational(3, 2)).sign(), Frac.of(sp.Integer(0)).sign()
+        (-1, 0)
+        """
+        if self.R is None:
+            return 0 if self.n == 0 else (1 if self.n > 0 else -1)
+        fs = _float_sign(self.n), _float_sign(self.d)
+        if None not in fs:
+            return fs[0] * fs[1]
+        return decide_sign(self.expr())
+
+    def reduced(self) -> Frac:
+        """The same value in the canonical form of :meth:`expr`, without building it."""
+        if self.R is None:
+            return self
+        return Frac(self.R, *_reduce(self.R, self.n, self.d))
+
+    def expr(self) -> sp.Expr:
+        """The canonical sympy expression of this value (as :func:`canon` gives it)."""
+        if self.R is None:
+            return self.n
+        return _finish(self.R, self.n, self.d)
