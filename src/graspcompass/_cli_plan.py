@@ -34,6 +34,7 @@ __all__ = ["MAX_SAMPLES", "register", "run"]
 #: :data:`graspcompass.planning.MAX_PAIRS` (20,000).
 MAX_SAMPLES = 200
 _MAX_TOP = 1000
+_MAX_EXACT = 50
 
 
 def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
@@ -73,6 +74,17 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     s.add_argument("--safety", default="1", metavar="S", help="safety factor >= 1 (default 1)")
     s.add_argument("--per", choices=("jaw", "total"), default="jaw",
                    help="the squeeze per jaw (default) or of both jaws together")
+    s.add_argument("--gravity", metavar="X,Y", help="gravity's direction in the drawing's frame "
+                   "(y up): rank by the worst case in that orientation (default: every "
+                   "orientation)")
+    s.add_argument("--tilt", metavar="ANGLE", help="with --gravity: the part may turn by up to "
+                   "±ANGLE (deg or rad needed: 15deg)")
+    s.add_argument("--exact", type=int, default=3, metavar="K",
+                   help="optimise the edge pairs of the K best sampled pairs over the whole "
+                        "edges, with a proof (branch and bound; every orientation only; 0 to "
+                        f"{_MAX_EXACT}, default 3)")
+    s.add_argument("--tol", default="1e-6", metavar="T", help="relative tolerance of those "
+                   "proofs (default 1e-6)")
     s.add_argument("--samples", type=int, default=120, metavar="N",
                    help=f"contact points along the outline, 3 to {MAX_SAMPLES} (default 120)")
     s.add_argument("--top", type=int, default=5, metavar="K",
@@ -95,6 +107,14 @@ def _check_cheap(args: argparse.Namespace) -> None:
             f"at most {MAX_SAMPLES} samples ({MAX_SAMPLES * (MAX_SAMPLES - 1) // 2} pairs)")
     if not 1 <= args.top <= _MAX_TOP:
         raise InputError(f"--top must be from 1 to {_MAX_TOP}, got {args.top}")
+    if not 0 <= args.exact <= _MAX_EXACT:
+        raise InputError(f"--exact must be from 0 to {_MAX_EXACT}, got {args.exact}")
+    if args.tilt is not None and args.gravity is None:
+        raise InputError("--tilt needs --gravity (the orientation it tilts from)")
+    if args.gravity is not None:
+        read_pair(args.gravity, "--gravity", None)
+    if args.tilt is not None:
+        split_unit(args.tilt, "angle", "--tilt")
     if args.com is not None:
         read_pair(args.com, "--com", "length")
     for opt, text, kind in (("--mass", args.mass, "mass"), ("--g", args.g, "acceleration"),
@@ -154,6 +174,16 @@ def run(args: argparse.Namespace) -> int:
     accel = 0.0 if args.accel is None else _number(args.accel, "--accel", "acceleration", 0,
                                                    False)
     safety = _number(args.safety, "--safety", None, 1, False)
+    tol = _number(args.tol, "--tol", None, 0, True)
+    gravity = None
+    if args.gravity is not None:
+        from ._cli_size import _pair_values
+
+        try:
+            gravity = tuple(float(v) for v in _pair_values(args.gravity, "--gravity", None))
+        except TypeError:
+            raise InputError(f"--gravity: expected two real numbers, got {args.gravity!r}"
+                             ) from None
     com = None
     if args.com is not None:
         from ._cli_size import _pair_values
@@ -167,7 +197,8 @@ def run(args: argparse.Namespace) -> int:
 
     outline = read_outline(args.shape, unit=args.shape_unit)
     plan = plan_contacts(outline, mu=mu, mass=mass, samples=args.samples, com=com, g=g,
-                         accel=accel, safety=safety, per=args.per)
+                         accel=accel, safety=safety, per=args.per, gravity=gravity,
+                         tilt=args.tilt, exact=args.exact, tol=tol)
     record = plan.to_dict(args.top)
     record["shape"] = args.shape
     if draw is not None:
@@ -193,7 +224,7 @@ def _text(d: dict[str, Any]) -> str:
              f"{d['force_closure_pairs']} force-closure with μ = {d['mu']:.4g}; "
              f"{d['mass_kg']:.6g} kg, g = {d['g_m_s2']:.6g} m/s^2",
              f"centre of mass ({d['com_m'][0] * 1e3:.3f}, {d['com_m'][1] * 1e3:.3f}) mm; squeeze "
-             f"{per} that holds the part in every orientation",
+             f"{per} that holds the part in {d['orientations']}",
              f"{'rank':>4}  {'contact 1 (mm)':>20}  {'contact 2 (mm)':>20}  {'squeeze N':>10}  "
              f"{'N/kg':>8}"]
     for p in d["top"]:
@@ -201,4 +232,17 @@ def _text(d: dict[str, Any]) -> str:
         lines.append(f"{p['rank']:>4}  {'(' + ', '.join(a) + ')':>20}  "
                      f"{'(' + ', '.join(b) + ')':>20}  {p['squeeze_N']:>10.4g}  "
                      f"{p['squeeze_N_per_kg']:>8.4g}")
+    if d["exact"]:
+        lines.append(f"exact along the best edge pairs ({d['exact_method']}; tolerance "
+                     f"{d['exact'][0]['tolerance']:.0e}):")
+        lines.append(f"{'rank':>4}  {'edges':>7}  {'contact 1 (mm)':>20}  {'contact 2 (mm)':>20}  "
+                     f"{'squeeze N':>10}  {'proved >=':>10}  {'sampled':>10}  saved")
+        for p in d["exact"]:
+            a, b = ([f"{v * 1e3:.3f}" for v in c] for c in p["contacts_m"])
+            saved = "" if p["improvement"] is None else f"{100 * p['improvement']:.2f}%"
+            samp = "-" if p["sampled_squeeze_N"] is None else f"{p['sampled_squeeze_N']:.6g}"
+            lines.append(f"{p['rank']:>4}  {'{},{}'.format(*p['edges']):>7}  "
+                         f"{'(' + ', '.join(a) + ')':>20}  {'(' + ', '.join(b) + ')':>20}  "
+                         f"{p['squeeze_N']:>10.6g}  {p['lower_bound_N']:>10.6g}  {samp:>10}  "
+                         f"{saved}{'' if p['certified'] else ' (not closed)'}")
     return "\n".join(lines)

@@ -17,9 +17,23 @@ finite squeeze and are left out of the ranking.
 Everything is vectorised: the paper frame of all pairs (:func:`pair_frames`,
 the same construction as :func:`graspcompass.place_grasp`, in float64) and the
 worst squeeze (:func:`graspcompass.batch.worst_squeeze`, condition (1) through
-:func:`graspcompass.batch.valid`).  The exact optimum along pairs of polygon
-edges (a closed form in the two edge parameters) is not done here: the ranking
-is over the dense sampling.
+:func:`graspcompass.batch.valid`).
+
+**The user's orientations.**  With ``gravity=(x, y)`` (and ``tilt=τ``) the
+ranking is by the worst case over the tilts ``|ρ| <= τ`` of that gravity (0: the
+given orientation) instead of every orientation:
+``S_f m max(0, max_n (M_n + A |V_n|)) / (x1 + x2)``, ``M_n`` the largest
+``V_n · R_ρ (g ĝ)`` (:mod:`graspcompass.sizing.core`, vectorised over the pairs by
+:func:`graspcompass.sizing._arc.arc_max_many`).
+
+**Exact along edges.**  Over all orientations, for the edge pairs of the best
+sampled pairs (``exact=3`` of them by default), the least squeeze over every
+force-closure pair of points of the two edges, not only the samples, is found
+and *proved* within a relative tolerance (default 1e-6) by branch and bound
+over the two edge parameters with interval lower bounds of the closed form
+(:mod:`graspcompass.planning._exact`); :attr:`PlanResult.exact`.  Under a tilt
+range the refinement is not run (the infimum may sit on the boundary of
+condition (1), where the bounds do not close).
 
 Examples
 --------
@@ -32,6 +46,9 @@ equal ``x1 sqrt(1 + 1/μ²)``):
 >>> best = plan.top(1)[0]
 >>> best.contacts, round(best.squeeze, 4), round(9.81 * (1 + 1 / 0.5**2) ** 0.5 / 2, 4)
 (((0.0, -0.03), (0.0, 0.03)), 10.9679, 10.9679)
+>>> ex = plan.exact[0]  # proved: no pair on these two edges needs less than lower_bound
+>>> ex.certified, bool(ex.lower_bound <= 9.81 * 5 ** 0.5 / 2 <= ex.squeeze)
+(True, True)
 """
 
 from __future__ import annotations
@@ -43,13 +60,17 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InputError, InputTooLargeError
-from .sizing.core import NotForceClosureError
-from .world import OutlineError
+from ..errors import InputError, InputTooLargeError
+from ..sizing.core import NotForceClosureError
+from ..world import OutlineError
+from ._exact import DEFAULT_TOL, Load
+from ._refine import METHOD, ExactPair, refine_plan
 
 __all__ = [
     "DEFAULT_SAMPLES",
+    "DEFAULT_TOL",
     "MAX_PAIRS",
+    "ExactPair",
     "PlanResult",
     "PlannedPair",
     "pair_frames",
@@ -168,7 +189,8 @@ def pair_frames(pa: Any, na: Any, pb: Any, nb: Any, com: Any) -> dict[str, np.nd
     Returns
     -------
     dict of ndarray
-        ``x1, x2, y, phi1, phi2`` and ``swapped`` (True where P1 is contact b).
+        ``x1, x2, y, phi1, phi2``, ``swapped`` (True where P1 is contact b) and
+        ``ex_x, ex_y``, the paper's x-axis in the world frame (``e_y = J e_x``).
     """
     pa, na, pb, nb = (np.asarray(v, float) for v in (pa, na, pb, nb))
     c = np.asarray(com, float)
@@ -191,7 +213,8 @@ def pair_frames(pa: Any, na: Any, pb: Any, nb: Any, com: Any) -> dict[str, np.nd
     x1, x2, y = dot(p1 - c, ex), dot(c - p2, ex), np.abs(dot(p1 - c, ey))
     phi1 = np.arctan2(-dot(n1, ex), -dot(n1, ey))
     phi2 = np.arctan2(dot(n2, ex), -dot(n2, ey))
-    return {"x1": x1, "x2": x2, "y": y, "phi1": phi1, "phi2": phi2, "swapped": swapped}
+    return {"x1": x1, "x2": x2, "y": y, "phi1": phi1, "phi2": phi2, "swapped": swapped,
+            "ex_x": ex[..., 0], "ex_y": ex[..., 1]}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -261,6 +284,14 @@ class PlanResult:
         Condition (1) holds (both friction cones contain the other contact).
     order : ndarray of int
         The force-closure pairs, best first (ties in pair order).
+    exact : tuple of ExactPair
+        The proved optima along the best edge pairs, least squeeze first (empty
+        with ``exact=0`` or under a tilt range).
+    gravity : (float, float) or None
+        Gravity's unit direction when the ranking is over tilts of it; None: every
+        orientation.
+    tilt : float or None
+        With ``gravity``: the tilt bound in radians (0: the given orientation).
     """
 
     outline: np.ndarray
@@ -278,6 +309,9 @@ class PlanResult:
     force_closure: np.ndarray
     order: np.ndarray
     frames: dict[str, np.ndarray] = dataclasses.field(repr=False)
+    exact: tuple[ExactPair, ...] = ()
+    gravity: tuple[float, float] | None = None
+    tilt: float | None = None
 
     def pair(self, index: int, rank: int = 0) -> PlannedPair:
         """The :class:`PlannedPair` of pair ``index`` (``rank`` 0: not ranked)."""
@@ -308,7 +342,23 @@ class PlanResult:
         return {"samples": len(self.points), "pairs": len(self.i),
                 "force_closure_pairs": int(self.force_closure.sum()), "mu": self.mu,
                 "mass_kg": self.mass, "g_m_s2": self.g, "per": self.per,
-                "com_m": list(self.com), "top": [p.to_dict() for p in self.top(k)]}
+                "com_m": list(self.com), "orientations": self.orientations(),
+                "gravity": None if self.gravity is None else list(self.gravity),
+                "tilt_deg": None if self.tilt is None else math.degrees(self.tilt),
+                "top": [p.to_dict() for p in self.top(k)],
+                "exact": [p.to_dict() for p in self.exact],
+                "exact_method": METHOD if self.exact else None}
+
+    def orientations(self) -> str:
+        """Which orientations the squeezes hold the part in, in words."""
+        if self.gravity is None:
+            return "every orientation"
+        g = f"gravity along ({self.gravity[0]:.6g}, {self.gravity[1]:.6g})"
+        if not self.tilt:
+            return g
+        if self.tilt >= math.pi:
+            return "every orientation"
+        return f"{g}, the part tilted by up to ±{math.degrees(self.tilt):.6g}°"
 
 
 def _positive(v: Any, what: str, strict: bool = True) -> float:
@@ -323,7 +373,8 @@ def _positive(v: Any, what: str, strict: bool = True) -> float:
 
 def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = DEFAULT_SAMPLES,
                   com: Sequence[float] | None = None, g: float = 9.80665, accel: float = 0.0,
-                  safety: float = 1.0, per: str = "jaw") -> PlanResult:
+                  safety: float = 1.0, per: str = "jaw", gravity: Sequence[float] | None = None,
+                  tilt: Any = None, exact: int = 3, tol: float = DEFAULT_TOL) -> PlanResult:
     """Rank the contact pairs of an outline by the squeeze that holds it in any orientation.
 
     For every pair of :func:`sample_contacts` points, the squeeze
@@ -349,6 +400,18 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
         Gravity, an acceleration bound ``|a| <= A`` in any direction (m/s²), and a
         safety factor >= 1.
     per : {"jaw", "total"}
+    gravity : (x, y), optional
+        Gravity's direction in the outline's frame: rank by the worst case over
+        the tilts of the part within ``tilt`` of it (default: every orientation).
+    tilt : angle, optional
+        With ``gravity``: the part may turn by up to ±tilt (radians, or text with
+        a unit such as ``"15deg"``; ±180° or more is every orientation); without
+        it the given orientation.
+    exact : int
+        How many edge pairs (those of the best sampled pairs) to optimise over
+        their continuous parameters, with a proof (over every orientation only).
+    tol : float
+        The relative tolerance of those proofs, in (0, 0.1].
 
     Returns
     -------
@@ -380,6 +443,12 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     sf = _positive(safety, "safety")
     if sf < 1:
         raise InputError(f"safety must be at least 1, got {safety!r}")
+    if isinstance(exact, bool) or not isinstance(exact, (int, np.integer)) or not 0 <= exact <= 50:
+        raise InputError(f"exact: expected an integer from 0 to 50, got {exact!r}")
+    tol_ = _positive(tol, "tol")
+    if tol_ > 0.1:
+        raise InputError(f"tol must be at most 0.1, got {tol!r}")
+    load = _load(g_, a_, gravity, tilt, mass_, sf, per)
     ring, centroid = _ring(outline)
     c = centroid
     if com is not None:
@@ -392,10 +461,13 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     points, normals, edges = _sample(ring, samples)
     i, j = np.triu_indices(len(points), 1)
     fr = pair_frames(points[i], normals[i], points[j], normals[j], c)
-    from . import batch
+    from .. import batch
 
     squeeze = batch.worst_squeeze(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
                                   mass_, g=g_, accel=a_, safety=sf, per=per, on_invalid="nan")
+    factor = sf * mass_ * (1.0 if per == "jaw" else 2.0)
+    if not load.any_orientation:
+        squeeze = _tilted(fr, mu_, load) * factor
     # condition (1) with the float path's margin (a cone side within 1e-12 rad of the other
     # contact is not force-closure: its squeeze would be ~1e16 N, rounding noise)
     fc = np.isfinite(squeeze) & batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"],
@@ -410,10 +482,44 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     ok = np.flatnonzero(fc)
     order = ok[np.argsort(squeeze[ok], kind="stable")]
     frames = {k: _readonly(v, bool if k == "swapped" else float) for k, v in fr.items()}
-    return PlanResult(_readonly(ring), (float(c[0]), float(c[1])), mu_, mass_, g_, per,
+    plan = PlanResult(_readonly(ring), (float(c[0]), float(c[1])), mu_, mass_, g_, per,
                       _readonly(points), _readonly(normals), _readonly(edges, np.int64),
                       _readonly(i, np.int64), _readonly(j, np.int64), _readonly(squeeze),
-                      _readonly(fc, bool), _readonly(order, np.int64), frames)
+                      _readonly(fc, bool), _readonly(order, np.int64), frames,
+                      gravity=load.gravity, tilt=None if load.gravity is None else load.tau)
+    if exact and load.any_orientation:
+        plan = dataclasses.replace(plan, exact=refine_plan(plan, int(exact), load, factor, tol_))
+    return plan
+
+
+def _load(g: float, a: float, gravity: Any, tilt: Any, mass: float, sf: float, per: str
+          ) -> Load:
+    """The orientations asked, read as :func:`graspcompass.size_gripper` reads them."""
+    if gravity is None and tilt is None:
+        return Load(g, a)
+    import types
+
+    from ..sizing.core import _read_case
+
+    case = _read_case(types.SimpleNamespace(exact=False), mass, g, gravity, tilt, a, sf, per)
+    gdir = (float(case.gravity[0]), float(case.gravity[1]))  # type: ignore[index]
+    if case.tilt == "any":
+        return Load(g, a, gdir, math.pi)
+    return Load(g, a, gdir, 0.0 if case.tilt is None else float(case.tilt))
+
+
+def _tilted(fr: dict[str, np.ndarray], mu: float, load: Load) -> np.ndarray:
+    """``max(0, max_n M_n + A|V_n|) / (x1 + x2)`` of every pair (tilts of gravity), nan off (1)."""
+    from .. import batch
+    from ..sizing._arc import arc_max_many
+
+    S, C = batch.closed_form(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu, mu,
+                             on_invalid="nan")
+    ex, ey = fr["ex_x"][..., None], fr["ex_y"][..., None]
+    vx, vy = S * ex - C * ey, S * ey + C * ex  # V_n = S_n e_x + C_n e_y, e_y = J e_x
+    w = (load.g * load.gravity[0], load.g * load.gravity[1])  # type: ignore[index]
+    top = (arc_max_many(vx, vy, w, load.tau) + load.accel * np.hypot(vx, vy)).max(axis=-1)
+    return np.maximum(top, 0.0) / (fr["x1"] + fr["x2"])
 
 
 def _least_mu_hint(fr: dict[str, np.ndarray]) -> str:
