@@ -152,3 +152,32 @@ def test_labelling_and_scene_do_not_import_matplotlib() -> None:
             "s.build_scene(internal_force_diagram(Grasp.preset('fig6'))); "
             "assert 'matplotlib' not in sys.modules")
     subprocess.run([sys.executable, "-c", code], check=True, timeout=120)
+
+
+@pytest.mark.parametrize("radius", [1e6, 1e12, 1e300])
+def test_huge_curves_cost_what_the_frame_holds(radius: float) -> None:
+    """A circle near a bound of condition (1) is huge (|V_n| grows like 1/cos(φ ± ξ)):
+    only its samples near the labels count, so placing labels beside it is as quick as
+    beside a small one and gives the same answer as its part near the labels alone."""
+    import math
+
+    import numpy as np
+
+    from _hang import no_hang
+
+    anchors = [(100.0, 100.0), (140.0, 100.0), (120.0, 130.0)]
+    texts = ["$V_1$", "$X_2$", "$O = O_M$"]
+    t = np.linspace(0.0, 2 * math.pi, 100)
+    # a circle through (120, 95) with its centre far below: nearly a line under the points
+    centre = (120.0, 95.0 - radius)
+    huge = np.column_stack([centre[0] + radius * np.sin(t), centre[1] + radius * np.cos(t)])
+    with no_hang("label placement beside a huge circle", 10):
+        placed = labelling.place(anchors, texts, curves=[huge], frame=(0, 0, 388.08, 388.08))
+    assert len(placed) == 3
+    # what the labels see of it: the horizontal line y = 95 (the circle's chord near the
+    # top is the segment from its first vertex, (120, 95), along t: a line at this scale)
+    near = np.array([[120.0 - 400.0, 95.0], [120.0, 95.0], [120.0 + 400.0, 95.0]])
+    if radius >= 1e12:  # the 100-gon's first edge: from (120, 95) to the right, level
+        assert [p.direction for p in placed] == [
+            p.direction for p in labelling.place(anchors, texts, curves=[near[1:]],
+                                                 frame=(0, 0, 388.08, 388.08))]

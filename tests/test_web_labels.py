@@ -105,7 +105,10 @@ NAMES = ["O", "O_M", "P1", "P2", "P1x", "V1", "V4", "X3", "Y2", "B12", "worst", 
 coord = st.floats(-40.0, 420.0, allow_nan=False, allow_infinity=False)
 point = st.tuples(coord, coord)
 # polylines with repeated points, spikes and the odd non-finite vertex (dropped, as in Python)
-vertex = st.one_of(point, point, point, st.just((math.nan, 0.0)), st.just((math.inf, 5.0)))
+huge = st.floats(-1e300, 1e300, allow_nan=False)
+# huge vertices too: a circle near a bound of condition (1) is a huge polygon on the page
+vertex = st.one_of(point, point, point, st.just((math.nan, 0.0)), st.just((math.inf, 5.0)),
+                   st.tuples(huge, coord), st.tuples(coord, huge))
 
 
 @st.composite
@@ -141,6 +144,30 @@ def problems(draw) -> dict[str, Any]:
 def test_port_places_as_python(port: Any, batch: list[dict[str, Any]]) -> None:
     for js, p in zip(_js_place(port, batch), batch):
         _same(js, _py_place(p))
+
+
+@settings(max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(st.lists(st.lists(vertex, max_size=10), max_size=4),
+       st.one_of(st.none(), st.tuples(coord, coord).map(lambda p: [p[0], p[1], p[0] + 90,
+                                                                   p[1] + 60])))
+def test_port_resamples_as_python(port: Any, curves: list, window: list | None) -> None:
+    """The same samples of the curves, bit for bit; with a window, the same ones in it
+    (without one, only curves of a sane size: a huge one has too many samples)."""
+    if window is None:
+        curves = [[v for v in c if max(map(abs, v)) < 1e4] for c in curves]
+    got = port.evaluate("([c, w]) => GCLabelling.resample(c, 1.5, w)",
+                        [[[list(v) for v in c] for c in curves], window])
+    js = np.asarray(got, dtype=float).reshape(-1, 2)
+    py = labelling.resample([np.asarray(c, dtype=float).reshape(-1, 2) for c in curves], 1.5,
+                            window=tuple(window) if window else None)
+    if window is None:
+        assert js.tolist() == py.tolist()
+    else:
+        x0, y0, x1, y1 = window
+        inside = lambda a: a[(a[:, 0] >= x0) & (a[:, 0] <= x1)  # noqa: E731
+                             & (a[:, 1] >= y0) & (a[:, 1] <= y1)]
+        assert sorted(map(tuple, inside(js))) == sorted(map(tuple, inside(py)))
 
 
 def test_port_on_a_crowd_on_a_grid(port: Any) -> None:
@@ -249,3 +276,19 @@ def test_page_places_as_python_after_drags_and_zooms(explorer: Any) -> None:
     explorer.wait_for_timeout(100)
     _page_vs_python(explorer)
     assert explorer.evaluate("graspcompass.labelInputs().anchors") != before
+
+
+def test_page_near_a_bound_of_condition_1(explorer: Any) -> None:
+    """φ1 + ξ1 → π/2: |V_1| grows like 1/cos(φ1 + ξ1) and its circle becomes a huge
+    polygon on the board.  The labels still come (as labelling.place places them), and
+    within rounding of the bound the page shows the refusal instead."""
+    explorer.evaluate("() => { graspcompass.step(-1); graspcompass.fit(); }")
+    errors = []
+    for eps in (1e-3, 1e-6, 1e-9, 1e-11, 1e-13, 0.0):
+        err = explorer.evaluate("e => graspcompass.set({phi1: Math.PI / 2 - "
+                                "Math.atan(graspcompass.get('mu1')) + e})", eps)
+        errors.append(err)
+        if err is None:
+            _page_vs_python(explorer)
+            assert len(explorer.evaluate("graspcompass.labels()")) >= 6
+    assert errors[:3] == [None] * 3 and "condition (1)" in errors[-1]

@@ -111,8 +111,23 @@ def _overlap(a: np.ndarray, boxes: np.ndarray) -> float:
     return float((w * h).sum())
 
 
-def resample(curves: Sequence[Any], step: float) -> np.ndarray:
-    """Points every ``step`` along each polyline (an (N, 2) array)."""
+def resample(curves: Sequence[Any], step: float,
+             window: tuple[float, float, float, float] | None = None) -> np.ndarray:
+    """Points every ``step`` along each segment of each polyline (an (N, 2) array).
+
+    Each segment ``a -> b`` of length ``L`` gives ``a + (i step / L)(b - a)`` for
+    ``0 <= i step < L`` (``a`` alone if ``L = 0``, nothing if ``L`` overflows); each
+    polyline adds its last vertex.  Non-finite vertices are dropped.  With ``window``
+    ``(x0, y0, x1, y1)`` only the points of the segments' parts in it are made (a few
+    just outside too): a huge curve (a circle near a bound of condition (1)) costs what
+    the window holds, and a segment too long for floats to space its points by
+    ``step`` in the window (more than 2^53 steps from its start) has none there.
+
+    Examples
+    --------
+    >>> resample([[(0.0, 0.0), (3.0, 0.0)]], 1.5).tolist()
+    [[0.0, 0.0], [1.5, 0.0], [3.0, 0.0]]
+    """
     out = [np.zeros((0, 2))]
     for c in curves:
         c = np.asarray(c, dtype=float).reshape(-1, 2)
@@ -120,11 +135,51 @@ def resample(curves: Sequence[Any], step: float) -> np.ndarray:
         if len(c) < 2:
             out.append(c)
             continue
-        d = np.diff(c, axis=0)  # sqrt of squares, not hypot: the page's port rounds alike
-        s = np.concatenate([[0.0], np.cumsum(np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1]))])
-        t = np.arange(0.0, s[-1] + step, step)
-        out.append(np.column_stack([np.interp(t, s, c[:, 0]), np.interp(t, s, c[:, 1])]))
+        a = c[:-1]
+        with np.errstate(over="ignore", invalid="ignore"):
+            d = np.diff(c, axis=0)
+            length = np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])  # as the page's port
+            # a segment too long for floats (an overflowing length) has no samples
+            count = np.where(np.isfinite(length),
+                             np.where(length > 0, np.ceil(length / step), 1.0), 0.0)
+        lo, hi = np.zeros_like(count), count
+        if window is not None:
+            lo, hi = _in_window(a, d, length, step, window, count)
+        n = np.clip(hi - lo, 0, None).astype(np.int64)
+        if n.sum():
+            seg = np.repeat(np.arange(len(a)), n)
+            i = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)).astype(float)
+            u = (i + np.repeat(lo, n)) * step
+            f = np.divide(u, length[seg], out=np.zeros_like(u), where=length[seg] > 0)
+            out.append(np.column_stack([a[seg, 0] + f * d[seg, 0], a[seg, 1] + f * d[seg, 1]]))
+        out.append(c[-1:])
     return np.vstack(out)
+
+
+def _in_window(a: np.ndarray, d: np.ndarray, length: np.ndarray, step: float,
+               window: tuple[float, float, float, float], count: np.ndarray
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """The range ``lo <= i < hi`` of the samples of each segment that may lie in
+    ``window`` (Liang-Barsky on ``a + t d``, the window widened by ``step``)."""
+    x0, y0, x1, y1 = window
+    t0, t1 = np.zeros(len(a)), np.ones(len(a))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for p, q, lo_, hi_ in ((a[:, 0], d[:, 0], x0 - step, x1 + step),
+                               (a[:, 1], d[:, 1], y0 - step, y1 + step)):
+            flat = q == 0
+            ta, tb = (lo_ - p) / q, (hi_ - p) / q
+            ta, tb = np.minimum(ta, tb), np.maximum(ta, tb)
+            out = flat & ((p < lo_) | (p > hi_))
+            t0 = np.where(flat, t0, np.maximum(t0, ta))
+            t1 = np.where(flat, t1, np.minimum(t1, tb))
+            t1 = np.where(out, -1.0, t1)
+        lo = np.clip(np.floor(t0 * length / step) - 1, 0, count)
+        hi = np.clip(np.ceil(t1 * length / step) + 2, 0, count)
+    # more samples than the window can hold: the segment is so long that floats cannot
+    # space its points by ``step`` near the window (|a| / step > 2^53); it has none
+    cap = 4.0 + np.ceil(2.0 * ((x1 - x0) + (y1 - y0)) / step)
+    empty = ~(t0 <= t1) | ~np.isfinite(lo) | ~np.isfinite(hi) | (hi - lo > cap)
+    return np.where(empty, 0.0, lo), np.where(empty, 0.0, hi)
 
 
 @dataclass(frozen=True)
@@ -172,12 +227,15 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
     r = marker_size / 2 + 1.0
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
     markers = np.array([[x - r, y - r, x + r, y + r] for x, y in every]).reshape(-1, 4)
-    curve = resample([c for c in curves if len(c)], RESAMPLE_PT)
+    sizes = [text_size(t, font_size) for t in texts]
+    window = _reach(pts, sizes, marker_size, gap)
+    curve = (resample([c for c in curves if len(c)], RESAMPLE_PT, window=window)
+             if window is not None else np.zeros((0, 2)))
     wt = WEIGHTS
     labels: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Placement] = []
-    for i, (label, (px, py)) in enumerate(zip(texts, pts)):
-        w, h = text_size(label, font_size)
+    for i, (px, py) in enumerate(pts[:len(texts)]):
+        w, h = sizes[i]
         others = np.delete(pts, i, axis=0)
         best, best_score, best_box = (0.0, 0.0, 1, 1), np.inf, np.zeros(4)
         rank = 0
@@ -213,6 +271,18 @@ def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
         out.append(Placement((float(ox), float(oy)), (int(dx), int(dy)),
                              tuple(float(v) for v in best_box)))  # type: ignore[arg-type]
     return out
+
+
+def _reach(pts: np.ndarray, sizes: list[tuple[float, float]], marker_size: float,
+           gap: float) -> tuple[float, float, float, float] | None:
+    """A window holding every box tried: each point widened by the largest label size
+    and the far distance (only curve samples in it can fall in a box)."""
+    pts = pts[np.all(np.isfinite(pts), axis=1)]  # a box about a nan point holds nothing
+    if not len(pts):
+        return None
+    r = max([max(w, h) for w, h in sizes] + [0.0]) + (marker_size / 2 + gap) * max(FAR) + 1.0
+    return (float(pts[:, 0].min() - r), float(pts[:, 1].min() - r),
+            float(pts[:, 0].max() + r), float(pts[:, 1].max() + r))
 
 
 def spec() -> dict[str, Any]:

@@ -772,11 +772,10 @@
       curves: drawnCurves(box).map((c) => c.map(pt)), frame, obstacles } };
     // the paper's points exactly as the SVG and TikZ place them; then H, worst and best
     // around them, avoiding their labels and markers
-    const samples = GL.resample(lastInputs.opts.curves, LSPEC.resample);
     const placed = GL.place(lastInputs.anchors, texts,
-      Object.assign({ spec: LSPEC, samples }, lastInputs.opts));
+      Object.assign({ spec: LSPEC }, lastInputs.opts));
     const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
-      spec: LSPEC, samples, frame, avoid: placed.map((p) => p.box),
+      spec: LSPEC, curves: lastInputs.opts.curves, frame, avoid: placed.map((p) => p.box),
       obstacles: obstacles.concat(lastInputs.anchors, unlabelled
         .filter((m) => entryOf.get(m.el).shown && inside(getValue(m.name)))
         .map((m) => pt(getValue(m.name)))),

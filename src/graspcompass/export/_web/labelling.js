@@ -6,7 +6,7 @@
  * tries eight positions around its point (NE, NW, SE, SW, N, S, E, W), close and then twice
  * as far, and takes the one with the least overlap with the labels already placed, the point
  * markers and the drawn curves.  Every arithmetic step is the Python one in the same order
- * (squared distances, numpy's pairwise summation of the overlaps, numpy.interp's formula),
+ * (squared distances, numpy's pairwise summation of the overlaps, the curves' samples),
  * so that both give the same placement; tests/test_web_labels.py checks it in Chromium.
  *
  * Sizes in points of a frame whose y axis points up.
@@ -69,37 +69,35 @@
     return pairwiseSum(terms, 0, terms.length);
   }
 
-  /** numpy.interp(t, s, fp) at t = 0, step, 2 step, ... (n values) for increasing s: the
-   * same index j (the largest with s[j] <= t) and the same formula, found by a walk. */
-  function interpWalk(s, xs, ys, step, n, out) {
-    const last = s.length - 1;
-    let j = 0;
-    for (let i = 0; i < n; i++) {
-      const t = i * step;
-      if (t > s[last]) {
-        out.push(xs[last], ys[last]);
+  /** The range [lo, hi) of the samples of segment a + t d (t in [0, 1], length L) that may
+   * lie in ``win`` (Liang-Barsky, the window widened by ``step``): labelling._in_window. */
+  function inWindow(a, d, L, step, win, count) {
+    let t0 = 0, t1 = 1;
+    for (const [p, q, lo, hi] of [[a[0], d[0], win[0] - step, win[2] + step],
+      [a[1], d[1], win[1] - step, win[3] + step]]) {
+      if (q === 0) {
+        if (p < lo || p > hi) return [0, 0];
         continue;
       }
-      while (j < last && s[j + 1] <= t) j++;
-      if (j === last || s[j] === t) {
-        out.push(xs[j], ys[j]);
-        continue;
-      }
-      out.push(lerp(s, xs, j, t), lerp(s, ys, j, t));
+      let ta = (lo - p) / q, tb = (hi - p) / q;
+      if (ta > tb) [ta, tb] = [tb, ta];
+      t0 = Math.max(t0, ta);
+      t1 = Math.min(t1, tb);
     }
-  }
-  function lerp(xp, fp, j, x) {
-    const slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j]);
-    let v = slope * (x - xp[j]) + fp[j];
-    if (Number.isNaN(v)) {
-      v = slope * (x - xp[j + 1]) + fp[j + 1];
-      if (Number.isNaN(v) && fp[j] === fp[j + 1]) v = fp[j];
-    }
-    return v;
+    if (!(t0 <= t1)) return [0, 0];
+    const lo = Math.min(Math.max(Math.floor((t0 * L) / step) - 1, 0), count);
+    const hi = Math.min(Math.max(Math.ceil((t1 * L) / step) + 2, 0), count);
+    // more samples than the window holds: floats cannot space them by step there
+    const cap = 4 + Math.ceil((2 * ((win[2] - win[0]) + (win[3] - win[1]))) / step);
+    return Number.isFinite(lo) && Number.isFinite(hi) && hi - lo <= cap ? [lo, hi] : [0, 0];
   }
 
-  /** Points every ``step`` along each polyline (labelling.resample): flat [x0, y0, x1, ...]. */
-  function resample(curves, step) {
+  /** Points every ``step`` along each segment of each polyline (labelling.resample): a
+   * segment a -> b of length L gives a + (i step / L)(b - a) for 0 <= i step < L (a alone
+   * if L = 0, nothing if L overflows), each polyline its last vertex; non-finite vertices
+   * dropped; with ``win`` [x0, y0, x1, y1] only the samples that may lie in it.
+   * Flat [x0, y0, x1, ...]. */
+  function resample(curves, step, win) {
     const out = [];
     for (const raw of curves) {
       const c = raw.filter((p) => Number.isFinite(p[0]) && Number.isFinite(p[1]));
@@ -107,16 +105,19 @@
         for (const p of c) out.push(p[0], p[1]);
         continue;
       }
-      const s = [0.0], xs = [c[0][0]], ys = [c[0][1]];
-      let acc = 0.0;
-      for (let i = 1; i < c.length; i++) {
-        const dx = c[i][0] - c[i - 1][0], dy = c[i][1] - c[i - 1][1];
-        acc += Math.sqrt(dx * dx + dy * dy);
-        s.push(acc);
-        xs.push(c[i][0]);
-        ys.push(c[i][1]);
+      for (let j = 0; j + 1 < c.length; j++) {
+        const a = c[j], d = [c[j + 1][0] - a[0], c[j + 1][1] - a[1]];
+        const L = Math.sqrt(d[0] * d[0] + d[1] * d[1]);
+        const count = !Number.isFinite(L) ? 0 : L > 0 ? Math.ceil(L / step) : 1;
+        const [lo, hi] = win ? inWindow(a, d, L, step, win, count) : [0, count];
+        // (m + lo) as in Python: lo may be too large for k++ to step by one
+        for (let m = 0, n = hi - lo; m < n; m++) {
+          const f = L > 0 ? ((m + lo) * step) / L : 0;
+          out.push(a[0] + f * d[0], a[1] + f * d[1]);
+        }
       }
-      interpWalk(s, xs, ys, step, Math.max(Math.ceil((acc + step) / step), 0), out);
+      const e = c[c.length - 1];
+      out.push(e[0], e[1]);
     }
     return out;
   }
@@ -125,6 +126,7 @@
    * box tried), bucketed on a dense grid, to count those strictly inside a box quickly:
    * the count is the one of a scan over every sample (labelling.place's inside.sum()). */
   function sampleGrid(flat, win) {
+    if (!win) return { count: (b) => countAll(flat, b) };
     const cell = 16;
     const nx = Math.max(1, Math.ceil((win[2] - win[0]) / cell));
     const ny = Math.max(1, Math.ceil((win[3] - win[1]) / cell));
@@ -177,8 +179,7 @@
   /**
    * One placement {offset: [dx, dy], direction: [sx, sy], box: [x0, y0, x1, y1]} per label
    * texts[i] of the point anchors[i] (labelling.place).  ``opts``: spec (labelling.spec()),
-   * curves (polylines [[x, y], ...]) or samples (their resample()), frame [x0, y0, x1, y1]
-   * or null, avoid (boxes),
+   * curves (polylines [[x, y], ...]), frame [x0, y0, x1, y1] or null, avoid (boxes),
    * fontSize, markerSize, gap, obstacles ([[x, y], ...]).
    */
   function place(anchors, texts, opts) {
@@ -191,20 +192,22 @@
     const r = marker / 2 + 1.0;
     const every = anchors.concat(opts.obstacles || []);
     const markers = every.map(([x, y]) => [x - r, y - r, x + r, y + r]);
-    // opts.samples: the curves already resampled (resample(curves, spec.resample)), reused
-    const flat = opts.samples ||
-      resample((opts.curves || []).filter((c) => c.length), spec.resample);
     // every box tried lies within its width or height plus the far distance of its point
+    // (labelling._reach): only curve samples in that window can fall in a box
     const sizes = texts.map((t) => textSize(t, font, spec));
     let reach = 0;
     for (const [w, h] of sizes) reach = Math.max(reach, w, h);
-    reach += (marker / 2 + gap) * Math.max(...spec.far) + 1;
+    reach = reach + (marker / 2 + gap) * Math.max(...spec.far) + 1;
     let win = [Infinity, Infinity, -Infinity, -Infinity];
     for (const [x, y] of anchors) {
+      if (!(Number.isFinite(x) && Number.isFinite(y))) continue; // its boxes hold nothing
       win = [Math.min(win[0], x - reach), Math.min(win[1], y - reach),
         Math.max(win[2], x + reach), Math.max(win[3], y + reach)];
     }
-    const grid = flat.length && anchors.length ? sampleGrid(flat, win) : null;
+    const finite = win.every(Number.isFinite);
+    const flat = finite ? resample((opts.curves || []).filter((c) => c.length),
+      spec.resample, win) : [];
+    const grid = flat.length ? sampleGrid(flat, win) : null;
     const labels = (opts.avoid || []).map((b) => b.slice());
     const out = [];
     for (let i = 0; i < anchors.length; i++) {
