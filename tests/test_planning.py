@@ -53,7 +53,7 @@ def test_rectangle_best_pair_from_first_principles() -> None:
     |V_n| = a sqrt(1 + 1/μ²), so F = m g sqrt(1 + 1/μ²)/2 per jaw, whatever a.  Any
     y > 0 adds y/μ to |S_n|, and x1 ≠ x2 makes max(x1, x2)/μ > a/μ: no pair does better.
     """
-    plan = plan_contacts(PLATE, mu=MU, mass=2.0, samples=48, g=G)
+    plan = plan_contacts(PLATE, mu=MU, mass=2.0, samples=48, g=G, exact=0)
     expected = 2.0 * G * math.sqrt(1 + 1 / MU**2) / 2
     centred = {frozenset({(0.0, -0.03), (0.0, 0.03)}), frozenset({(0.05, 0.0), (-0.05, 0.0)})}
     best = plan.top(3)
@@ -75,7 +75,7 @@ def test_frames_and_squeezes_agree_with_place_grasp_and_size_gripper() -> None:
     from graspcompass.outlines import read_outline
 
     outline = read_outline(BRACKET)
-    plan = plan_contacts(outline, mu=MU, mass=1.5, samples=60, g=G)
+    plan = plan_contacts(outline, mu=MU, mass=1.5, samples=60, g=G, exact=0)
     picks = plan.order[np.linspace(0, len(plan.order) - 1, 6).astype(int)]
     values = []
     for k in picks:
@@ -139,7 +139,7 @@ def test_bad_outlines_and_no_force_closure() -> None:
     triangle = [(0, 0), (0.1, 0), (0.05, 0.05 * math.sqrt(3))]  # needs μ > tan 30°
     with pytest.raises(NotForceClosureError, match="none of the"):
         plan_contacts(triangle, mu=0.3, samples=30)
-    assert plan_contacts(triangle, mu=0.7, samples=30).force_closure.any()
+    assert plan_contacts(triangle, mu=0.7, samples=30, exact=0).force_closure.any()
 
 
 # -- the command line ----------------------------------------------------------------------
@@ -199,3 +199,231 @@ def test_as_a_process() -> None:
                          text=True,
                          timeout=120)
     assert out.returncode == 0 and out.stdout.count("\n") == 4, out.stderr
+
+
+# -- issue 13 §3: exact along edge pairs, the user's orientations ---------------------------
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from graspcompass.planning._exact import EdgePair, Load, edge_pair_values, refine_edge_pair  # noqa: E402,I001
+from graspcompass.sizing import SizingError  # noqa: E402
+
+
+def paper_squeeze(a, na, b, nb, com, mu, g=G):
+    """m g max_n |V_n| / (x1 + x2) per kg from the paper's formulas, nan off condition (1).
+
+    The frame of §2.2.1 (origin O, x-axis along P2→P1, y >= 0), the angles of Fig. 2,
+    t_n = tan(φ ± ξ) and eqs. (28)-(39): S = (y t1 − h, h − y t2, y t3 − h, h − y t4),
+    C = (x2 t1, x1 t2, x2 t3, x1 t4), h = (x1 + x2)/2.
+    """
+    a, na, b, nb, o = (np.asarray(v, float) for v in (a, na, b, nb, com))
+    J = lambda v: np.stack([-v[..., 1], v[..., 0]], axis=-1)  # noqa: E731
+    dot = lambda u, v: (u * v).sum(axis=-1)  # noqa: E731
+    length = np.linalg.norm(a - b, axis=-1)
+    ex = (a - b) / length[..., None]
+    flip = dot(a - o, J(ex)) < 0
+    ex = np.where(flip[..., None], -ex, ex)
+    ey = J(ex)
+    p1, p2 = np.where(flip[..., None], b, a), np.where(flip[..., None], a, b)
+    n1, n2 = np.where(flip[..., None], nb, na), np.where(flip[..., None], na, nb)
+    x1, x2, y = dot(p1 - o, ex), dot(o - p2, ex), dot(p1 - o, ey)
+    phi1 = np.arctan2(-dot(n1, ex), -dot(n1, ey))
+    phi2 = np.arctan2(dot(n2, ex), -dot(n2, ey))
+    xi = math.atan(mu)
+    ok = np.ones(np.shape(x1), bool)
+    for phi in (phi1, phi2):
+        ok &= (phi > 0) & (phi <= np.pi) & (phi - xi > -np.pi / 2) & (phi - xi < np.pi / 2) \
+            & (phi + xi > np.pi / 2) & (phi + xi < 3 * np.pi / 2)
+    h = (x1 + x2) / 2
+    t1, t2, t3, t4 = (np.tan(p + s * xi) for p, s in ((phi1, 1), (phi2, 1), (phi1, -1),
+                                                       (phi2, -1)))
+    S = [y * t1 - h, h - y * t2, y * t3 - h, h - y * t4]
+    C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
+    r = np.max([np.hypot(s, c) for s, c in zip(S, C)], axis=0)
+    return np.where(ok, g * r / (x1 + x2), np.nan)
+
+
+def _edge(ring, k):
+    a0, a1 = ring[k], ring[k + 1]
+    d = a1 - a0
+    return a0, d, np.array([-d[1], d[0]]) / np.linalg.norm(d)
+
+
+def brute_force(ring, ea, eb, com, mu, n=601):
+    """The least paper_squeeze over an n × n grid of (s, t), then a finer grid around it."""
+    (a0, da, na), (b0, db, nb) = _edge(ring, ea), _edge(ring, eb)
+    lo_s, hi_s, lo_t, hi_t = 0.0, 1.0, 0.0, 1.0
+    for _ in range(3):
+        s, t = np.meshgrid(np.linspace(lo_s, hi_s, n), np.linspace(lo_t, hi_t, n),
+                           indexing="ij")
+        q = paper_squeeze(a0 + s[..., None] * da, na, b0 + t[..., None] * db, nb, com, mu)
+        k = np.nanargmin(q)
+        best, (sb, tb) = float(q.ravel()[k]), (float(s.ravel()[k]), float(t.ravel()[k]))
+        w = 4 * (hi_s - lo_s) / (n - 1), 4 * (hi_t - lo_t) / (n - 1)
+        lo_s, hi_s = max(0.0, sb - w[0]), min(1.0, sb + w[0])
+        lo_t, hi_t = max(0.0, tb - w[1]), min(1.0, tb + w[1])
+        n = 201
+    return best
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(-1, 1), min_size=12, max_size=12), st.floats(0.2, 1.5))
+def test_edge_closed_form_is_the_papers(v, mu) -> None:
+    """V_n from equilibrium in the world frame (the module) = eqs. (28)-(39) in the paper frame."""
+    a0, a1, b0, b1 = (0.5 * v[0], -1 + 0.3 * v[1]), (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]), \
+        (0.5 * v[4], 1 + 0.3 * v[5]), (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7])
+    com = (0.4 * v[8], 0.4 * v[9])
+    pair = EdgePair.of(a0, a1, b0, b1, com, mu)
+    s, t = np.linspace(0, 1, 7) * 0.98 + 0.01 * (1 + v[10]), np.linspace(1, 0, 7) * 0.98 \
+        + 0.01 * (1 + v[11])
+    q = edge_pair_values(pair, Load(g=G), s, t)
+    a, b = pair.points(s, t)
+    na, nb = pair.normals()
+    want = paper_squeeze(a, na, b, nb, com, mu)
+    both = np.isfinite(q) & np.isfinite(want)
+    assert np.allclose(q[both], want[both], rtol=1e-9)
+    # condition (1) agrees away from its boundary (within 1e-9 of a bound, rounding decides)
+    assert (np.isfinite(q) == np.isfinite(want)).mean() >= 6 / 7
+
+
+def test_exact_rectangle_centred_pair_in_closed_form() -> None:
+    """Long sides of the plate: s = t = 1/2 and F = m g sqrt(1 + 1/μ²)/2, proved within tol."""
+    plan = plan_contacts(PLATE, mu=MU, mass=2.0, samples=48, g=G, exact=2, tol=1e-7)
+    want = 2.0 * G * math.sqrt(1 + 1 / MU**2) / 2
+    assert {p.edges for p in plan.exact} == {(0, 2), (1, 3)}
+    for p in plan.exact:
+        assert p.certified and p.lower_bound <= want * (1 + 1e-12)
+        assert p.squeeze == pytest.approx(want, rel=1e-7)
+        assert p.params == pytest.approx((0.5, 0.5), abs=1e-3)
+        assert p.squeeze <= p.sampled_squeeze * (1 + 1e-12)
+
+
+@pytest.mark.parametrize("mu, com", [(0.5, None), (0.35, (0.06, -0.045))])
+def test_exact_bracket_against_brute_force_and_samples(mu, com) -> None:
+    from graspcompass.outlines import read_outline
+
+    plan = plan_contacts(read_outline(BRACKET), mu=mu, mass=1.0, samples=60, g=G, com=com,
+                         exact=1 if com else 2)
+    assert plan.exact
+    ring = np.asarray(plan.outline)
+    for p in plan.exact:
+        ea, eb = p.edges
+        grid = brute_force(ring, ea, eb, plan.com, mu)
+        assert p.certified and p.squeeze - p.lower_bound <= p.tol * p.squeeze
+        # the proof holds against an independent fine grid, and the optimum is found
+        assert p.lower_bound <= grid * (1 + 1e-12)
+        assert p.squeeze <= grid * (1 + 2e-6)
+        # no sampled pair on these two edges does better
+        on = ((plan.edges[plan.i] == ea) & (plan.edges[plan.j] == eb)) | (
+            (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea))
+        sampled = plan.squeeze[on & plan.force_closure]
+        assert p.lower_bound <= sampled.min() * (1 + 1e-12)
+        assert p.squeeze <= sampled.min() and p.sampled_squeeze == sampled.min()
+        # the optimum's squeeze against the LP over the load directions
+        (p1, p2), (n1, n2) = p.contacts, p.normals
+        lp = max(lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * e(t))[0]
+                 for t in np.linspace(0, 2 * np.pi, 121))
+        assert lp <= p.squeeze * (1 + 1e-9) and lp == pytest.approx(p.squeeze, rel=2e-3)
+    assert plan.exact[0].squeeze <= plan.top(1)[0].squeeze
+
+
+def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
+    """The search under a tilt range: its lower bound is below a fine grid's least value."""
+    pair = EdgePair.of((-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03),
+                       (0.01, 0.005), 0.6)
+    load = Load(g=G, accel=1.0, gravity=(0.0, -1.0), tau=math.radians(25))
+    opt = refine_edge_pair(pair, load, tol=1e-5, max_boxes=4000)
+    s, t = np.meshgrid(np.linspace(0, 1, 801), np.linspace(0, 1, 801), indexing="ij")
+    grid = np.nanmin(edge_pair_values(pair, load, s, t))
+    # the infimum lies on the boundary of condition (1) here: the proof need not close,
+    # but what it proves holds
+    assert opt.lower <= grid * (1 + 1e-12) and opt.value <= grid * (1 + 1e-3)
+    assert opt.boxes <= 2 * 4000
+
+
+def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
+    """Every orientation within ±τ of gravity, by an LP per orientation (test_sizing)."""
+    tau, gdir, m = math.radians(30), np.array([0.6, -0.8]), 1.5
+    plan = plan_contacts(PLATE, mu=MU, mass=m, samples=24, g=G, gravity=tuple(gdir),
+                         tilt="30deg", accel=0.0)
+    assert plan.exact == () and plan.tilt == pytest.approx(tau)
+    assert "±30°" in plan.orientations()
+    rhos = np.linspace(-tau, tau, 121)
+    rot = lambda r: np.array([[math.cos(r), -math.sin(r)], [math.sin(r), math.cos(r)]])  # noqa: E731
+    picks = plan.order[np.linspace(0, len(plan.order) - 1, 5).astype(int)]
+    for k in picks:
+        p = plan.pair(int(k))
+        (p1, p2), (n1, n2) = p.contacts, p.normals
+        lp = max(lp_squeeze(p1, p2, n1, n2, MU, MU, plan.com, m * G * rot(r) @ gdir)[0]
+                 for r in rhos)
+        assert p.squeeze >= lp * (1 - 1e-9) and p.squeeze == pytest.approx(lp, rel=2e-3, abs=1e-9)
+        wg = place_grasp(list(p.contacts), list(p.normals), mu=(MU, MU), com=plan.com)
+        s = size_gripper(wg, m, g=G, gravity=tuple(gdir), tilt=tau)
+        assert float(s.squeeze) == pytest.approx(p.squeeze, rel=1e-9, abs=1e-12)
+    # the given orientation (no tilt) and a tilt of 180°: every orientation again
+    fixed = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1))
+    assert fixed.tilt == 0.0 and fixed.orientations() == "gravity along (0, -1)"
+    every = plan_contacts(PLATE, mu=MU, samples=24, exact=0)
+    half_turn = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1), tilt=math.pi)
+    assert np.allclose(every.squeeze, half_turn.squeeze, equal_nan=True)
+    assert np.all((fixed.squeeze <= every.squeeze * (1 + 1e-12)) | np.isnan(every.squeeze))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.floats(-3, 3), st.floats(-3, 3), st.floats(0.1, 3), st.floats(0, 3.2),
+       st.floats(-math.pi, math.pi))
+def test_arc_max_many_is_arc_max(S, C, gmag, tau, ang) -> None:
+    from graspcompass.sizing._arc import arc_max_many
+    from graspcompass.sizing.core import _arc_max
+
+    w = (gmag * math.cos(ang), gmag * math.sin(ang))
+    want, _ = _arc_max(S, C, math.hypot(S, C), w, gmag, tau, False)
+    brute = max(S * (math.cos(r) * w[0] - math.sin(r) * w[1])
+                + C * (math.sin(r) * w[0] + math.cos(r) * w[1])
+                for r in np.linspace(-tau, tau, 2001))
+    got = float(arc_max_many(S, C, w, tau))
+    assert got == pytest.approx(want, rel=1e-12, abs=1e-12)
+    assert got >= brute - 1e-12 and got == pytest.approx(brute, abs=1e-5 * (1 + gmag))
+
+
+@pytest.mark.parametrize("kwargs, error, text", [
+    (dict(tilt="10deg"), SizingError, "gravity"),
+    (dict(gravity=(0, 0)), SizingError, "zero vector"),
+    (dict(gravity=(0, -1), tilt=-0.1), SizingError, "tilt"),
+    (dict(gravity=(0, -1), tilt="10"), InputError, "unit"),
+    (dict(gravity=("x", 1)), InputError, "gravity"),
+    (dict(exact=-1), InputError, "exact"),
+    (dict(exact=True), InputError, "exact"),
+    (dict(tol=0.0), InputError, "tol"),
+    (dict(tol=0.5), InputError, "tol"),
+])
+def test_bad_orientation_and_exact_arguments(kwargs, error, text) -> None:
+    with pytest.raises(error, match=text):
+        plan_contacts(PLATE, **{"mu": MU, "samples": 12, **kwargs})
+
+
+def test_cli_exact_and_tilt_json(capsys) -> None:
+    assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--exact", "1", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    ex = d["exact"][0]
+    assert ex["certified"] and ex["lower_bound_N"] <= ex["squeeze_N"] <= ex["sampled_squeeze_N"]
+    assert "branch and bound" in d["exact_method"] and d["orientations"] == "every orientation"
+    assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--gravity", "0,-1",
+                 "--tilt", "15deg", "--json"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["exact"] == [] and d["tilt_deg"] == pytest.approx(15) and d["gravity"] == [0, -1]
+    assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--exact", "1"]) == 0
+    assert "proved >=" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("extra, text", [
+    (["--tilt", "10deg"], "--tilt needs --gravity"),
+    (["--gravity", "0,0"], "zero vector"),
+    (["--gravity", "0,-1", "--tilt", "10"], "unit"),
+    (["--gravity", "0,-1", "--tilt=-10deg"], "tilt"),
+    (["--gravity", "1"], "--gravity"),
+    (["--exact", "99"], "--exact"),
+    (["--tol", "0"], "--tol"),
+])
+def test_cli_bad_orientation_one_line_exit_2(extra, text, capsys) -> None:
+    _one_line_exit_2(["plan", "--shape", str(BRACKET), "--samples", "12", *extra], capsys, text)

@@ -66,8 +66,8 @@ __all__ = ["EdgeOptimum", "EdgePair", "Load", "edge_pair_values", "refine_edge_p
 
 #: Default relative tolerance of the proof: value − lower <= tol · value.
 DEFAULT_TOL = 1e-6
-#: Most live boxes at one level before the search gives up (then ``certified`` is False).
-MAX_BOXES = 200_000
+#: Most boxes bounded before the search gives up (then ``certified`` is False).
+MAX_BOXES = 20_000
 _SIDES = ((0, 1), (0, -1), (1, 1), (1, -1))  # (contact 0 = a / 1 = b, cone side ±)
 #: The sign ``d × c`` has on the force-closure set, per side of _SIDES.
 _SIGN = (1.0, -1.0, -1.0, 1.0)
@@ -514,7 +514,8 @@ def refine_edge_pair(pair: EdgePair, load: Load, *, tol: float = DEFAULT_TOL,
         Points to try first (e.g. the sampled contacts on these edges); the result
         is never worse than the best of them.
     max_boxes : int
-        Give up (``certified`` False) when more boxes than this are alive.
+        Give up (``certified`` False, ``lower`` still proved) after bounding this
+        many boxes.
 
     Returns
     -------
@@ -561,7 +562,7 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
         if drop.any():
             pruned = min(pruned, float(lower[drop].min()))
         s_lo, s_hi, t_lo, t_hi, lower = (v[keep] for v in (s_lo, s_hi, t_lo, t_hi, lower))
-        if s_lo.size > max_boxes:
+        if s_lo.size and count + 2 * s_lo.size > max_boxes:
             certified = False
             pruned = min(pruned, float(lower.min()))
             break
