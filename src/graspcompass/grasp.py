@@ -6,11 +6,15 @@ perpendicular to the line through the contacts, ``P1 = (x1, y)`` and
 at P2 the angle φ2 counter-clockwise, with the negative y-axis.  Friction is
 given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
 (22).  The external force F_e acts at O along ``e(θ) = (sin θ, -cos θ)`` (26).
+
+:class:`Grasp` and its documentation live here; the code is in private modules
+(every name stays importable from here): the errors and the input boundary of the
+parameters (``_grasp_values``), the validation and condition (1)
+(``_grasp_checks``), the float path and the forces of §2.3 (``_grasp_forces``).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -18,156 +22,48 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from ._floatpath import FLOAT_MARGIN, closed_form_floats, condition_1_margins, side_floats
-from .batch import _envelope
-from .errors import (
-    ComplexValueError,
-    GraspCompassError,
-    InputError,
-    NonFiniteValueError,
-    SymbolicValueError,
-    WrongTypeError,
+from . import _grasp_forces as _forces
+from ._floatpath import side_floats
+from ._grasp_checks import (
+    _angles_pass,  # noqa: F401
+    _check,  # noqa: F401
+    _check_doubles,
+    _check_float_margins,  # noqa: F401
+    _friction,
+    _length_checks,  # noqa: F401
+    _validate,
 )
-from .expr import ExpressionError
+from ._grasp_values import (
+    _HALF_MAX,  # noqa: F401
+    _PARAMETER_ERRORS,  # noqa: F401
+    ComplexParameterError,
+    FrozenGraspError,
+    InvalidGraspError,
+    NonFiniteParameterError,
+    ParameterTypeError,
+    UnsupportedParameterError,
+    _double,  # noqa: F401
+    _exact_kind,
+    _finite,  # noqa: F401
+    _fmt,  # noqa: F401
+    _fmt_angle,  # noqa: F401
+    _is_numeric,
+    _one_angle,
+    _pi_multiple,  # noqa: F401
+    _rounded_tan,  # noqa: F401
+    _sympy,
+    _value,
+)
+from .errors import NonFiniteValueError
 from .geometry import Point
-from .geometry.exact import canon, decide_sign, has_float
-from .geometry.trig import sincos, tan_exact
-from .inputs import angle_values, force_value, real_value, substitutions
+from .geometry.exact import canon, decide_sign, has_float  # noqa: F401
+from .geometry.trig import sincos
+from .inputs import angle_values, force_value, real_value, substitutions  # noqa: F401
 from .presets import PRESETS
 
 __all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
            "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",
            "UnsupportedParameterError"]
-
-
-class FrozenGraspError(dataclasses.FrozenInstanceError):
-    """Assignment to (or deletion of) a field of a :class:`Grasp`, an immutable value.
-
-    An :class:`AttributeError`, like :class:`dataclasses.FrozenInstanceError`;
-    :meth:`Grasp.replace` makes a modified copy instead.
-    """
-
-
-class InvalidGraspError(GraspCompassError):
-    """The parameters do not describe a grasp the paper's method applies to."""
-
-
-class ParameterTypeError(WrongTypeError, InvalidGraspError):
-    """A grasp parameter that is not a number (``None``, ``True``, a list, a dict)."""
-
-
-class ComplexParameterError(ComplexValueError, InvalidGraspError):
-    """A grasp parameter given as a complex number (``1j``, ``sympy.I``)."""
-
-
-class NonFiniteParameterError(NonFiniteValueError, InvalidGraspError):
-    """A grasp parameter that is ``nan`` or infinite."""
-
-
-class UnsupportedParameterError(InputError, InvalidGraspError):
-    """An exact length or friction coefficient outside what the exact kernel computes
-    with: other roots than square roots of rationals (cube roots, nested roots)."""
-
-
-_PARAMETER_ERRORS: dict[type, type] = {
-    WrongTypeError: ParameterTypeError,
-    ComplexValueError: ComplexParameterError,
-    NonFiniteValueError: NonFiniteParameterError,
-}
-
-
-def _rounded_tan(x: sp.Expr) -> sp.Float:
-    """``tan x`` of a float angle, correctly rounded to a double (40-digit mpmath)."""
-    import mpmath
-
-    with mpmath.workdps(40):
-        return sp.Float(float(mpmath.tan(mpmath.mpf(sp.Float(x, 53)._mpf_))), 53)
-
-
-def _value(v: Any, name: str) -> sp.Expr:
-    """A parameter through the input boundary; a refusal is also an :class:`InvalidGraspError`."""
-    try:
-        return real_value(v, name)
-    except ExpressionError:
-        raise  # text the parser refuses (a complex value: also a ComplexValueError)
-    except InputError as exc:
-        for base, kind in _PARAMETER_ERRORS.items():
-            if isinstance(exc, base):
-                raise kind(str(exc)) from None
-        raise InvalidGraspError(str(exc)) from None
-
-
-def _pi_multiple(a: sp.Expr) -> sp.Rational | None:
-    """q with a = q π exactly, read off the expression (no arithmetic), or None."""
-    if a is sp.pi:
-        return sp.Integer(1)
-    if a.is_Rational:
-        return sp.Integer(0) if a == 0 else None
-    if a.is_Mul and len(a.args) == 2 and a.args[1] is sp.pi and a.args[0].is_Rational:
-        return a.args[0]
-    return None
-
-
-def _exact_kind(v: sp.Expr, name: str) -> sp.Expr:
-    """Refuse exact lengths and friction coefficients the kernel cannot compute with.
-
-    They may hold rationals, square roots of rationals, π, symbols and functions
-    such as sin or atan of anything; a cube root or a nested root would make every
-    canonical form of the construction explode, so it is refused (give a decimal,
-    which is exact, or a float).
-    """
-    if has_float(v):
-        return v
-    for a in sp.preorder_traversal(v):
-        if a.is_Pow and not a.exp.is_Integer and not a.free_symbols and not (
-                a.exp in (sp.S.Half, -sp.S.Half) and a.base.is_Rational):
-            raise UnsupportedParameterError(
-                f"{name} = {_fmt(v)} uses {a}: exact lengths and friction coefficients may "
-                "hold square roots of rational numbers, not other roots; give the value as "
-                "a decimal (read exactly) or a float")
-    return v
-
-
-def _double(v: sp.Expr, what: str) -> float:
-    """A grasp value as a double; a value beyond double precision is refused."""
-    try:
-        out = float(v)
-    except OverflowError:
-        out = math.inf
-    except TypeError:
-        raise SymbolicValueError(f"{what} = {v} is not a number: the numeric path (a float θ) "
-                                 "needs numbers; give θ exactly or substitute values first"
-                                 ) from None
-    if not math.isfinite(out):
-        raise NonFiniteValueError(
-            f"{what} = {_fmt(v)} is beyond double precision (about 1.8e308): the numeric "
-            "path cannot use it; give θ exactly (text such as 'pi/3') for exact values")
-    return out
-
-
-def _finite(out: Any, what: str) -> Any:
-    """Refuse a numeric result that overflowed double precision."""
-    if not np.isfinite(out).all():
-        raise NonFiniteValueError(
-            f"{what} overflows double precision (|x| > 1.8e308) for these values; give θ "
-            "and the force exactly (text such as 'pi/3') for exact values")
-    return out
-
-
-def _fmt_angle(v: sp.Expr) -> str:
-    try:
-        f = float(v / sp.pi)
-    except (TypeError, OverflowError):
-        return str(v)
-    return f"{f:.3g}π" if math.isfinite(f) and abs(f) < 1e6 else f"{sp.N(v, 4)} rad"
-
-
-def _fmt(v: sp.Expr) -> str:
-    try:
-        f = float(v)
-    except (TypeError, OverflowError):
-        return str(v)
-    return str(v) if v.is_Rational else f"{v} ≈ {f:.4g}"
 
 
 class Grasp:
@@ -232,8 +128,8 @@ class Grasp:
         init(self, "y", y)
         init(self, "phi1", _value(phi1, "phi1"))
         init(self, "phi2", _value(phi2, "phi2"))
-        m1, x1_ = self._friction(1, mu1, xi1)
-        m2, x2_ = self._friction(2, mu2, xi2)
+        m1, x1_ = _friction(1, mu1, xi1)
+        m2, x2_ = _friction(2, mu2, xi2)
         init(self, "mu1", m1)
         init(self, "xi1", x1_)
         init(self, "mu2", m2)
@@ -245,8 +141,8 @@ class Grasp:
         init(self, "assumptions", ())
         init(self, "_SC", None)  # float S_n, C_n, on demand (derived from frozen values)
         if self.numeric:
-            self._check_doubles()
-        self._validate()
+            _check_doubles(self)
+        _validate(self)
         # exact sines and cosines without nested radicals (generators where needed)
         s1, c1 = sincos(self.phi1)
         s2, c2 = sincos(self.phi2)
@@ -295,35 +191,6 @@ class Grasp:
         return Grasp(**kw)
 
     # -- construction -----------------------------------------------------------
-    def _friction(self, i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
-        if (mu is None) == (xi is None):
-            raise InvalidGraspError(
-                f"contact {i}: give the friction either as mu{i} (coefficient) or as "
-                f"xi{i} (cone half angle), exactly one of them"
-            )
-        if mu is not None:
-            m = _exact_kind(_value(mu, f"mu{i}"), f"mu{i}")
-            if decide_sign(m) in (-1, 0):
-                raise InvalidGraspError(
-                    f"contact {i}: the friction coefficient μ{i} = {_fmt(m)} must be positive"
-                )
-            return m, sp.atan(m)
-        x = _value(xi, f"xi{i}")
-        q = _pi_multiple(x)
-        bounds = () if q is not None and 0 < q < sp.Rational(1, 2) else (
-            (x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2"))
-        for bound, sign, words in bounds:
-            if decide_sign(bound) in sign:
-                raise InvalidGraspError(
-                    f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
-                    f"must be {words} (0 < ξ < π/2)"
-                )
-        if x.free_symbols:
-            return sp.tan(x), x  # a symbol: tan(xi) is one generator
-        if has_float(x):  # μ = tan ξ correctly rounded to a double, eq. (22) (sympy's
-            return _rounded_tan(x), x  # 53-bit tan can be an ulp off, and k moves with it)
-        return canon(tan_exact(x)), x
-
     @classmethod
     def preset(cls, name: str) -> Grasp:
         """One of the paper's examples: ``"fig6"``, ``"table1a"``, ``"table1b"``, ``"table1c"``."""
@@ -347,112 +214,6 @@ class Grasp:
             raise InvalidGraspError(f"friction must be 'xi' or 'mu', got {friction!r}")
         fr = dict(xi1=s.xi1, xi2=s.xi2) if friction == "xi" else dict(mu1=s.mu1, mu2=s.mu2)
         return cls(s.x1, s.x2, s.y, s.phi1, s.phi2, **fr)
-
-    # -- validation -------------------------------------------------------------
-    def _validate(self) -> None:
-        pi = sp.pi
-        checks: list[tuple[Any, ...]] = _length_checks(self)
-        checks.append(
-            (self.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"))
-        for i, phi in ((1, self.phi1), (2, self.phi2)):
-            q = _pi_multiple(phi)
-            if q is not None and 0 < q <= 1:
-                continue  # 0 < φ ≤ π, decided in rationals
-            checks += [
-                (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π)"),
-                (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)",
-                 phi),
-            ]
-        assumed: list[sp.Basic] = []
-        for expr, strict, msg, *shown in checks:
-            self._check(expr, strict, msg, assumed, *shown)
-        self._check_float_margins()  # floats within rounding of (1): refuse, with advice
-        if self._angles_pass():
-            object.__setattr__(self, "assumptions", tuple(assumed))
-            return
-        for i in (1, 2):
-            phi, xi = (self.phi1, self.xi1) if i == 1 else (self.phi2, self.xi2)
-            up, lo = phi + xi, phi - xi
-            who = f"the friction cone at P{i}"
-            other = f"P{3 - i}"
-            cond = [
-                (lo + pi / 2, f"φ{i} − ξ{i} = {{a}} must exceed −π/2 — {who} turns past the "
-                 "contact's tangent line (condition (1))", lo),
-                (pi / 2 - lo, f"φ{i} − ξ{i} = {{a}} must be below π/2 — {who} does not "
-                 f"contain {other} (its lower side passes above {other}; condition (1))", lo),
-                (up - pi / 2, f"φ{i} + ξ{i} = {{a}} must exceed π/2 — {who} does not contain "
-                 f"{other} (its upper side passes below {other}; condition (1))", up),
-                (3 * pi / 2 - up, f"φ{i} + ξ{i} = {{a}} must be below 3π/2 — {who} turns past "
-                 "the contact's tangent line (condition (1))", up),
-            ]
-            for expr, msg, shown in cond:
-                self._check(expr, True, f"contact {i}: " + msg, assumed, shown)
-        object.__setattr__(self, "assumptions", tuple(assumed))
-
-    def _angles_pass(self) -> bool:
-        """Condition (1) decided in rationals when every φ and ξ is a rational multiple of π
-        (the common case, without building sympy expressions); False: check one by one."""
-        qs = [_pi_multiple(a) for a in (self.phi1, self.xi1, self.phi2, self.xi2)]
-        if None in qs:
-            return False
-        half, three_halves = sp.Rational(1, 2), sp.Rational(3, 2)
-        for phi, xi in (qs[:2], qs[2:]):
-            if not (-half < phi - xi < half and half < phi + xi < three_halves):
-                return False
-        return True
-
-    def _check_doubles(self) -> None:
-        """A grasp with a float parameter computes in doubles: every parameter must be one."""
-        for name, v in self.params.items():
-            if v.free_symbols:
-                raise InvalidGraspError(
-                    f"{name} = {v} is symbolic but other parameters are floats: give every "
-                    "parameter as a number, or all exactly (text such as 'pi/3')")
-            try:
-                finite = math.isfinite(float(v))
-            except OverflowError:
-                finite = False
-            if not finite:
-                raise NonFiniteParameterError(
-                    f"{name} = {_fmt(v)} is beyond double precision (about 1.8e308) and other "
-                    "parameters are floats, so the grasp computes in doubles: give every "
-                    "parameter exactly (text such as '1e309') instead")
-
-    def _check_float_margins(self) -> None:
-        """Refuse a float grasp within rounding of a bound of condition (1).
-
-        The float construction's X_n, Y_n, V_n scale like 1/cos(φ ± ξ) (eqs.
-        (28)-(39)) and carry a relative error of about ε/|cos(φ ± ξ)|; below a
-        margin of :data:`~graspcompass._floatpath.FLOAT_MARGIN` (1e-12) of the
-        bound, double precision cannot resolve them (see :mod:`._floatpath`).
-        """
-        if not self.numeric or any(v.free_symbols for v in self.params.values()):
-            return
-        for m in condition_1_margins(self.params):
-            if abs(m.relative) >= FLOAT_MARGIN:  # clearly inside, or clearly outside
-                continue
-            where = ("within" if m.margin > 0 else "on the wrong side of, and within")
-            raise InvalidGraspError(
-                f"contact {m.contact}: {m.text} of condition (1) is within rounding of its "
-                f"bound: φ{m.contact} {m.text[3]} ξ{m.contact} = {m.value!r} rad is {where} "
-                f"{abs(m.margin):.2g} rad of {m.bound}, below the {FLOAT_MARGIN:g}·|{m.bound}| "
-                "that double precision resolves here (the cone side is nearly horizontal and "
-                f"X_n, Y_n, V_n scale like 1/cos(φ{m.contact} {m.text[3]} ξ{m.contact})). "
-                "Give the parameters exactly, as text such as 'pi/2', '3*pi/4' or '1/3', "
-                "to use the exact path"
-            )
-
-    @staticmethod
-    def _check(expr: sp.Expr, strict: bool, msg: str, assumed: list, shown: Any = None) -> None:
-        sign = decide_sign(expr)
-        bad = sign == -1 or (strict and sign == 0)
-        if bad:
-            v = expr if shown is None else shown
-            raise InvalidGraspError(msg.format(v=_fmt(v), a=_fmt_angle(v)))
-        if sign is None:
-            rel = expr > 0 if strict else expr >= 0
-            if rel is not sp.true:
-                assumed.append(rel)
 
     # -- parameters -------------------------------------------------------------
     @property
@@ -557,22 +318,7 @@ class Grasp:
         beyond half the largest double (then ``S_n sin θ - C_n cos θ`` could
         overflow): such a grasp is used with exact θ only.
         """
-        if self._SC is None:
-            try:
-                S, C = closed_form_floats(self.params)
-            except TypeError as exc:
-                raise SymbolicValueError(
-                    "a symbolic grasp cannot be evaluated on numeric θ; substitute values "
-                    "first (Grasp.subs) or give θ exactly") from exc
-            except OverflowError:
-                S, C = [math.inf], [math.inf]
-            if not all(abs(v) <= _HALF_MAX for v in (*S, *C)):  # also catches nan
-                raise NonFiniteValueError(
-                    "the grasp's S_n, C_n (eqs. (28)-(39)) are beyond double precision "
-                    f"(|S_n|, |C_n| must stay below {_HALF_MAX:.2g}); the numeric path "
-                    "cannot use this grasp: give θ exactly (text such as 'pi/3')")
-            object.__setattr__(self, "_SC", (np.array(S), np.array(C)))
-        return self._SC
+        return _forces._closed_form_doubles(self)
 
     # -- k_n and k_grasp --------------------------------------------------------
     def k(self, theta: Any) -> Any:
@@ -613,29 +359,7 @@ class Grasp:
         >>> g.k_grasp("108deg") == g.k_grasp(3 * sp.pi / 5)
         True
         """
-        t = angle_values(theta)
-        if isinstance(t, float):  # one angle: no array machinery
-            S, C = self._floats()
-            s, c = math.sin(t), math.cos(t)
-            return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
-        if isinstance(t, np.ndarray):
-            S, C = self._floats()
-            if t.size >= _envelope.TABLE_MIN_SIZE:  # many angles: the table of the envelope
-                table = self.__dict__.get("_ktable")  # (issue 13 §5)
-                if table is None:
-                    table = _envelope.EnvelopeTable(S, C)
-                    object.__setattr__(self, "_ktable", table)
-                return table(t)
-            out = _envelope.direct_k_grasp(S, C, t)
-            return out if t.ndim else float(out)
-        ks = self.k(t)
-        if any(k.free_symbols for k in ks):
-            return sp.Max(*ks, sp.Integer(0))
-        best = sp.Integer(0)
-        for k in ks:
-            if decide_sign(k - best) == 1:
-                best = k
-        return best
+        return _forces._k_grasp(self, theta)
 
     def internal_force(self, theta: Any, external_force: Any = 1) -> Any:
         """Magnitude of the least internal force ``F_int = k/(x1 + x2) · F_e``, eq. (17).
@@ -643,15 +367,7 @@ class Grasp:
         ``external_force`` is the magnitude ``F_e >= 0``
         (:func:`graspcompass.inputs.force_value`); θ as in :meth:`k`.
         """
-        t = angle_values(theta)
-        fe = force_value(external_force)
-        kg = self.k_grasp(t)
-        if _is_numeric(t):
-            with np.errstate(over="ignore", invalid="ignore"):
-                out = kg * _double(fe, "external_force") / _double(self.D, "x1 + x2")
-            return _finite(out, "F_int")
-        out = kg * fe / self.D
-        return out if isinstance(kg, sp.Max) else canon(out)
+        return _forces._internal_force(self, theta, external_force)
 
     # -- the matrices of §2.3 --------------------------------------------------
     def grasp_matrix(self) -> sp.Matrix:
@@ -675,42 +391,14 @@ class Grasp:
         A sympy Matrix (4 × 1) for an exact θ; for a float or numpy θ an array of
         shape ``(4,) + shape(θ)``.  Inputs as in :meth:`internal_force`.
         """
-        t = angle_values(theta)
-        fe = force_value(external_force)
-        numeric = _is_numeric(t)
-        if numeric:
-            s, c, fe = np.sin(t), np.cos(t), _double(fe, "external_force")
-            D, x1, x2, y, s1, c1, s2, c2 = (_double(v, name) for v, name in (
-                (self.D, "x1 + x2"), (self.x1, "x1"), (self.x2, "x2"), (self.y, "y"),
-                (self.s1, "sin φ1"), (self.c1, "cos φ1"), (self.s2, "sin φ2"),
-                (self.c2, "cos φ2")))
-        else:
-            fe = _sympy(fe)
-            s, c = sp.sin(t), sp.cos(t)
-            D, x1, x2, y = self.D, self.x1, self.x2, self.y
-            s1, c1, s2, c2 = self.s1, self.c1, self.s2, self.c2
-        a, b = y * s - x2 * c, y * s + x1 * c
-        v = [D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
-             -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]
-        if numeric:
-            with np.errstate(over="ignore", invalid="ignore"):
-                out = fe / (2 * D) * np.array(v)
-            return _finite(out, "F_T")
-        return sp.Matrix([fe / (2 * D) * e for e in v])
+        return _forces._F_T(self, theta, external_force)
 
     def F_N(self, external_force: Any = 1) -> Any:
         """Internal-force direction ``F_N`` of eq. (15), a null vector of L.
 
         A sympy Matrix; a numpy array of shape (4,) for a float ``external_force``.
         """
-        fe = force_value(external_force)
-        if isinstance(fe, float):
-            with np.errstate(over="ignore", invalid="ignore"):
-                out = fe / _double(self.D, "x1 + x2") * np.array([
-                    _double(v, name) for v, name in ((self.s1, "sin φ1"), (self.c1, "cos φ1"),
-                                                     (self.s2, "sin φ2"), (self.c2, "cos φ2"))])
-            return _finite(out, "F_N")
-        return sp.Matrix([fe / self.D * e for e in (self.s1, self.c1, self.s2, self.c2)])
+        return _forces._F_N(self, external_force)
 
     def contact_forces(self, theta: Any, k: Any, external_force: Any = 1) -> Any:
         """``F = [N1, F1, N2, F2]^T = F_T + k F_N``, eq. (16).
@@ -728,30 +416,7 @@ class Grasp:
         >>> F.shape
         (4, 2)
         """
-        t = angle_values(theta)
-        fe = force_value(external_force)
-        if _is_numeric(t):
-            kk = angle_values(k, "k")
-            if not _is_numeric(kk):
-                kk = _double(kk, "k")
-            kk = np.asarray(kk, dtype=float)
-            shape = np.shape(t)
-            try:
-                ok = np.broadcast_shapes(shape, kk.shape) == shape
-            except ValueError:
-                ok = False
-            if not ok:
-                raise InputError(f"k: an array of shape {kk.shape} does not broadcast with "
-                                 f"theta's shape {shape}")
-            fe = _double(fe, "external_force")
-            fn = self.F_N(fe)
-            ft = self.F_T(t, fe)
-            with np.errstate(over="ignore", invalid="ignore"):
-                out = ft + np.multiply.outer(fn, np.ones(ft.shape[1:])) * kk
-            return _finite(out, "the contact forces")
-        kv = real_value(k, "k")
-        fe = _sympy(fe)
-        return self.F_T(t, fe) + kv * self.F_N(fe)
+        return _forces._contact_forces(self, theta, k, external_force)
 
     def subs(self, values: Mapping) -> Grasp:
         """The grasp with symbols replaced by ``values`` (validated again).
@@ -778,44 +443,3 @@ class Grasp:
 #: The fields :meth:`Grasp.replace` takes (the constructor's arguments).
 _REPLACEABLE = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2", "shape", "title")
 
-_HALF_MAX = 0.5 * 1.7976931348623157e308  # k_n = S_n sin θ - C_n cos θ cannot overflow below
-
-
-def _length_checks(g: Grasp) -> list[tuple[Any, ...]]:
-    """The domain of x1, x2: ``x1 + x2 > 0`` for a grasp of numbers (issue 13 §1).
-
-    Eqs. (12)-(39) only divide by x1 + x2 (det L L^T = 2 (x1 + x2)^2), so they hold
-    when the centre of mass projects beyond a contact, x1 <= 0 or x2 <= 0.  A grasp
-    with symbols keeps the paper's x1 > 0, x2 > 0 (§2.2.1): the proof checker's
-    symbolic verdicts state those domains as hypotheses.
-    """
-    if any(v.free_symbols for v in g.params.values()):
-        beyond = (" for a grasp with symbols (the symbolic proofs assume the paper's domain "
-                  "x1, x2 > 0 of §2.2.1; give every parameter a value to place the centre "
-                  "of mass beyond a contact)")
-        return [
-            (g.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"
-             + beyond),
-            (g.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"
-             + beyond),
-        ]
-    return [(g.x1 + g.x2, True, "x1 + x2 = {v} must be positive: P1 = (x1, y) lies right of "
-             "P2 = (-x2, y) (x1 <= 0 or x2 <= 0 alone is allowed: the centre of mass then "
-             "projects onto the line through the contacts beyond a contact)")]
-
-
-def _is_numeric(theta: Any) -> bool:
-    """After :func:`angle_values`: a float or an array selects the numeric path."""
-    return isinstance(theta, (float, np.ndarray))
-
-
-def _sympy(value: sp.Expr | float) -> sp.Expr:
-    """A checked value for the exact path (a float becomes a sympy Float)."""
-    return sp.Float(value) if isinstance(value, float) else value
-
-
-def _one_angle(theta: Any) -> sp.Expr:
-    t = angle_values(theta)
-    if isinstance(t, np.ndarray):
-        raise WrongTypeError(f"theta: expected one angle, got an array of shape {t.shape}")
-    return _sympy(t)
