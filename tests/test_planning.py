@@ -205,7 +205,7 @@ def test_as_a_process() -> None:
 from hypothesis import given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from graspcompass.planning._exact import EdgePair, Load, edge_pair_values, refine_edge_pair  # noqa: E402,I001
+from graspcompass.planning._exact import EdgePair, Load, edge_pair_values, refine_edge_pair  # noqa: E402
 from graspcompass.sizing import SizingError  # noqa: E402
 
 
