@@ -232,6 +232,9 @@ def _text(d: dict[str, Any]) -> str:
         lines.append(f"{p['rank']:>4}  {'(' + ', '.join(a) + ')':>20}  "
                      f"{'(' + ', '.join(b) + ')':>20}  {p['squeeze_N']:>10.4g}  "
                      f"{p['squeeze_N_per_kg']:>8.4g}")
+    if d["gravity"] is not None:
+        lines.append("(the exact refinement along edges is over every orientation only: not run "
+                     "with --gravity)")
     if d["exact"]:
         lines.append(f"exact along the best edge pairs ({d['exact_method']}; tolerance "
                      f"{d['exact'][0]['tolerance']:.0e}):")

@@ -7,6 +7,8 @@ its friction cone (half angle ξ, tan ξ = μ, eq. (22)) opening into the part, 
 line through the two contacts (condition (1): each cone contains the other
 contact); on the right the squeeze of every pair as a heat map over the
 contacts' indices along the outline (blank where the pair is not force-closure).
+The proved optima along the best edge pairs (:attr:`PlanResult.exact`), when
+there are any, are drawn dashed with star markers.
 
 Examples
 --------
@@ -67,6 +69,11 @@ def draw_plan_outline(ax: Any, plan: Any, top: int = 5, cone_length: float | Non
             for q in sides:
                 ax.plot([p[0], q[0]], [p[1], q[1]], color=colour, lw=0.8)
             ax.plot(*p, "o", color=colour, ms=5)
+    for pair in getattr(plan, "exact", ()):
+        (a, b) = np.asarray(pair.contacts) * mm
+        ax.plot([a[0], b[0]], [a[1], b[1]], "--", color="black", lw=1.0, marker="*", ms=9,
+                mfc="gold", label=f"proved best on edges {pair.edges[0]},{pair.edges[1]}: "
+                                  f"{pair.squeeze:.4g} N")
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
