@@ -327,6 +327,16 @@ def test_exact_bracket_against_brute_force_and_samples(mu, com) -> None:
     assert plan.exact[0].squeeze <= plan.top(1)[0].squeeze
 
 
+def test_exact_adjacent_edges_of_a_triangle() -> None:
+    """Edges meeting at a vertex (where (s, t) is singular): still proved, against the grid."""
+    tri = [(0, 0), (0.1, 0), (0.05, 0.05 * math.sqrt(3))]
+    plan = plan_contacts(tri, mu=0.7, samples=30, g=G, exact=1)
+    p = plan.exact[0]
+    grid = brute_force(np.asarray(plan.outline), *p.edges, plan.com, 0.7)
+    assert p.certified and p.lower_bound <= grid * (1 + 1e-12) <= p.squeeze * (1 + 1e-3)
+    assert p.squeeze <= p.sampled_squeeze
+
+
 def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
     """The search under a tilt range: its lower bound is below a fine grid's least value."""
     pair = EdgePair.of((-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03),

@@ -322,6 +322,9 @@ class _Bounds:
         self.d = d
         self.h = np.array([[-1.0], [-1.0], [1.0], [1.0]])  # V = h d/2 − κ J r_j
         self.load = load
+        # on (1) the angle between d and a cone side is in (0, 2ξ): |κ| >= cot 2ξ
+        # = (1 − μ²)/(2μ) when μ < 1 (the margin covers its rounding)
+        self.kmin = max(0.0, (1 - pair.mu**2) / (2 * pair.mu) * (1 - 1e-12) - 1e-300)
 
     def _fields(self, s: tuple, t: tuple, grad: bool) -> tuple:
         """d, |d| over the boxes; per side (rows): V, d × c may be > 0, V_s, V_t, d × c > 0."""
@@ -333,7 +336,7 @@ class _Bounds:
         jr = _J(rj)
         d4 = ((d[0][0][None], d[0][1][None]), (d[1][0][None], d[1][1][None]))
         v = _vadd((_half(d4[0], self.h), _half(d4[1], self.h)), _vscale(_neg(kappa), jr))
-        out = {"v": v, "may": dd[1] > 0}
+        out = {"v": v, "may": dd[1] > 0, "rnorm": _norm(rj)[0]}
         if grad:
             den2 = (_sq_lo(dd), _sq_hi(dd))
             for k in ("fs", "ft"):
@@ -357,6 +360,8 @@ class _Bounds:
         v = f["v"]
         norm_lo = _norm(v)[0]
         l4 = (length[0][None], length[1][None])
+        # |V| >= |κ||r_j| − |d|/2: bounded away from 0 where two edges meet at a vertex
+        norm_lo = np.maximum(norm_lo, _dn(_dn(self.kmin * f["rnorm"]) - _up(l4[1] * 0.5)))
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             natural = _dn(self._top(v, norm_lo) / l4[1])
             # the mean-value form of φ = V·U/|d| around the centre
@@ -574,6 +579,6 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
                                         np.concatenate([cut_t, cut_t[cut_s]]))
     if not np.isfinite(best_v):
         return None  # no force-closure pair (or none at a box's centre or corner)
-    lower = min(pruned, best_v)
+    lower = max(0.0, min(pruned, best_v))  # q >= 0
     return EdgeOptimum(best_st[0], best_st[1], best_v, lower, float(tol),
                        certified and best_v - lower <= tol * best_v, count)
