@@ -216,6 +216,11 @@ def paper_squeeze(a, na, b, nb, com, mu, g=G):
     t_n = tan(φ ± ξ) and eqs. (28)-(39): S = (y t1 − h, h − y t2, y t3 − h, h − y t4),
     C = (x2 t1, x1 t2, x2 t3, x1 t4), h = (x1 + x2)/2.
     """
+    with np.errstate(invalid="ignore", divide="ignore"):  # a = b where two edges meet: nan
+        return _paper_squeeze(a, na, b, nb, com, mu, g)
+
+
+def _paper_squeeze(a, na, b, nb, com, mu, g):
     a, na, b, nb, o = (np.asarray(v, float) for v in (a, na, b, nb, com))
     J = lambda v: np.stack([-v[..., 1], v[..., 0]], axis=-1)  # noqa: E731
     dot = lambda u, v: (u * v).sum(axis=-1)  # noqa: E731
