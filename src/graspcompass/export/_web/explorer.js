@@ -405,7 +405,8 @@
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
   // labels in the font of the other pictures: labelling.FONT_PT in a frame FRAME_PT wide
-  const LFONT = Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame);
+  // (at least 10 px: a page opened in a hidden frame starts with a board 0 px wide)
+  const LFONT = Math.max(10, Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame));
   const withFont = (attrs) => Object.assign({}, attrs,
     { label: Object.assign({ fontSize: LFONT }, attrs && attrs.label) });
   // Colours, widths and dashes are applied to the SVG only in the redraws after a change of
