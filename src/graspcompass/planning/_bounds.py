@@ -1,0 +1,201 @@
+"""Lower bounds of the squeeze over boxes of edge parameters, for :mod:`._exact`."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ._interval import (
+    _J,
+    _add,
+    _div_pos,
+    _dn,
+    _dot,
+    _half,
+    _lin,
+    _mul,
+    _neg,
+    _norm,
+    _pt,
+    _sq_hi,
+    _sq_lo,
+    _stack,
+    _sub,
+    _up,
+    _vadd,
+    _vec,
+    _vscale,
+)
+
+if TYPE_CHECKING:
+    from ._exact import EdgePair, Load
+
+_SIDES = ((0, 1), (0, -1), (1, 1), (1, -1))  # (contact 0 = a / 1 = b, cone side ±)
+#: The sign ``d × c`` has on the force-closure set, per side of _SIDES.
+_SIGN = (1.0, -1.0, -1.0, 1.0)
+
+
+class _Bounds:
+    """Lower bounds of q over boxes of (s, t), vectorised over the four cone sides and the boxes.
+
+    Two bounds per cone side, the larger kept: the natural interval extension,
+    and the mean-value form of the smooth minorant ``φ = V·U / |d|`` with U fixed
+    in each box (``(g + A) V_c/|V_c|``, or ``R_ρc (g ĝ) + A V_c/|V_c|`` with ρc the
+    worst tilt at the box's centre: ``V·U <= (g + A)|V|``, resp. ``<= M + A|V|``,
+    with equality at the centre), whose error shrinks like the square of the box.
+    The rounding of U is covered by an interval of ±1e-15 (g + A) around it.
+    """
+
+    def __init__(self, pair: EdgePair, load: Load) -> None:
+        a0, ea, b0, eb, o = (tuple(_pt(v) for v in p) for p in (pair.a0, pair.ea, pair.b0,
+                                                                  pair.eb, pair.com))
+        zero = (_pt(0.0), _pt(0.0))
+        d = _vec((_sub(a0[0], b0[0]), _sub(a0[1], b0[1])), ea, (_neg(eb[0]), _neg(eb[1])))
+        r = (_vec((_sub(a0[0], o[0]), _sub(a0[1], o[1])), ea, zero),
+             _vec((_sub(b0[0], o[0]), _sub(b0[1], o[1])), zero, eb))
+        mu = _pt(pair.mu)
+        nums, dens, rjs = [], [], []
+        for (i, sgn), sig in zip(_SIDES, _SIGN):
+            e = ea if i == 0 else eb
+            n = (_neg(e[1]), e[0])
+            me = (_mul(mu, e[0]), _mul(mu, e[1]))
+            c = (_add(n[0], me[0]), _add(n[1], me[1])) if sgn > 0 else (
+                _sub(n[0], me[0]), _sub(n[1], me[1]))
+            num, den = _lin(d, c, "dot"), _lin(d, c, "cross")
+            if sig < 0:
+                num, den = num.neg(), den.neg()
+            nums.append(num)
+            dens.append(den)
+            rjs.append(r[1 - i])
+        # every coefficient as a column over the four sides, shape (4, 1)
+        self.num, self.den = _stack(nums), _stack(dens)
+        self.rj = (_stack([v[0] for v in rjs]), _stack([v[1] for v in rjs]))
+        self.d = d
+        self.h = np.array([[-1.0], [-1.0], [1.0], [1.0]])  # V = h d/2 − κ J r_j
+        self.load = load
+        # on (1) the angle between d and a cone side is in (0, 2ξ): |κ| >= cot 2ξ
+        # = (1 − μ²)/(2μ) when μ < 1 (the margin covers its rounding)
+        self.kmin = max(0.0, (1 - pair.mu**2) / (2 * pair.mu) * (1 - 1e-12) - 1e-300)
+
+    def _fields(self, s: tuple, t: tuple, grad: bool) -> tuple:
+        """d, |d| over the boxes; per side (rows): V, d × c may be > 0, V_s, V_t, d × c > 0."""
+        d = (self.d[0].over(s, t), self.d[1].over(s, t))
+        s4, t4 = (s[0][None], s[1][None]), (t[0][None], t[1][None])
+        nn, dd = self.num.over(s4, t4), self.den.over(s4, t4)
+        kappa = _div_pos(nn, dd)
+        rj = (self.rj[0].over(s4, t4), self.rj[1].over(s4, t4))
+        jr = _J(rj)
+        d4 = ((d[0][0][None], d[0][1][None]), (d[1][0][None], d[1][1][None]))
+        v = _vadd((_half(d4[0], self.h), _half(d4[1], self.h)), _vscale(_neg(kappa), jr))
+        out = {"v": v, "may": dd[1] > 0, "rnorm": _norm(rj)[0]}
+        if grad:
+            den2 = (_sq_lo(dd), _sq_hi(dd))
+            for k in ("fs", "ft"):
+                # κ' = (num' den − num den') / den²;  V' = h d'/2 − κ' J r − κ J r'
+                kp = _div_pos(_sub(_mul(getattr(self.num, k), dd),
+                                   _mul(nn, getattr(self.den, k))), den2)
+                dk = (getattr(self.d[0], k), getattr(self.d[1], k))
+                jrk = _J((getattr(self.rj[0], k), getattr(self.rj[1], k)))
+                out[k] = _vadd(_vadd((_half(dk[0], self.h), _half(dk[1], self.h)),
+                                     _vscale(_neg(kp), jr)), _vscale(_neg(kappa), jrk))
+            out["strict"] = dd[0] > 0
+        return d, _norm(d), out
+
+    def lower(self, s: tuple, t: tuple) -> tuple[np.ndarray, np.ndarray]:
+        """Lower bounds of q over the boxes and whether each may meet condition (1)."""
+        ld = self.load
+        d, length, f = self._fields(s, t, True)
+        sc, tc = (s[0] + s[1]) / 2, (t[0] + t[1]) / 2
+        _, lc, fc = self._fields((sc, sc), (tc, tc), False)
+        feasible = f["may"].all(axis=0)
+        v = f["v"]
+        norm_lo = _norm(v)[0]
+        l4 = (length[0][None], length[1][None])
+        # |V| >= |κ||r_j| − |d|/2: bounded away from 0 where two edges meet at a vertex
+        norm_lo = np.maximum(norm_lo, _dn(_dn(self.kmin * f["rnorm"]) - _up(l4[1] * 0.5)))
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            natural = _dn(self._top(v, norm_lo) / l4[1])
+            # the mean-value form of φ = V·U/|d| around the centre
+            vc = fc["v"]
+            cx, cy = (vc[0][0] + vc[0][1]) / 2, (vc[1][0] + vc[1][1]) / 2
+            nc = np.hypot(cx, cy)
+            ux, uy = cx / nc, cy / nc
+            if ld.any_orientation:
+                U = (ux * (ld.g + ld.accel), uy * (ld.g + ld.accel))
+            else:
+                gx, gy = ld.g * ld.gravity[0], ld.g * ld.gravity[1]  # type: ignore[index]
+                rho = np.clip(np.arctan2(cy * gx - cx * gy, cx * gx + cy * gy),
+                              -ld.tau, ld.tau)  # type: ignore[arg-type]
+                cr, sr = np.cos(rho), np.sin(rho)
+                U = (cr * gx - sr * gy + ld.accel * ux, sr * gx + cr * gy + ld.accel * uy)
+            du = 1e-15 * (ld.g + ld.accel)
+            Ui = ((U[0] - du, U[0] + du), (U[1] - du, U[1] + du))
+            lc4 = (lc[0][None], lc[1][None])
+            phic = _div_pos(_dot(vc, Ui), lc4)
+            l2 = (_sq_lo(l4), _sq_hi(l4))
+            vu = _dot(v, Ui)
+            steps, grads = [], []
+            for k, step in (("fs", (_dn(s[0] - sc), _up(s[1] - sc))),
+                            ("ft", (_dn(t[0] - tc), _up(t[1] - tc)))):
+                # φ' = V'·U/|d| − (V·U) |d|'/|d|²,  |d|' = d·d'/|d|
+                dk = (getattr(self.d[0], k), getattr(self.d[1], k))
+                lk = _div_pos(_dot(d, dk), length)
+                lk = (lk[0][None], lk[1][None])
+                grads.append(_sub(_div_pos(_dot(f[k], Ui), l4), _div_pos(_mul(vu, lk), l2)))
+                steps.append((step[0][None], step[1][None]))
+            ok = f["strict"] & (l4[0] > 0) & (nc > 0) & np.isfinite(phic[0])
+            for g_ in grads:
+                ok &= np.isfinite(g_[0]) & np.isfinite(g_[1])
+            mv = _add(_add(phic, _mul(steps[0], grads[0])), _mul(steps[1], grads[1]))[0]
+            best = np.maximum(np.where(np.isnan(natural), -np.inf, natural),
+                              np.where(ok, mv, -np.inf)).max(axis=0)
+            best = np.maximum(best, _pairs(phic, grads, steps, ok))
+        if not ld.any_orientation:
+            best = np.maximum(best, 0.0)
+        return np.where(feasible, best, np.inf), feasible
+
+    def _top(self, v: tuple, norm_lo: np.ndarray) -> np.ndarray:
+        """A lower bound of (g + A)|V|, or of M + A|V|, over the box (natural extension)."""
+        ld = self.load
+        if ld.any_orientation:
+            return _dn(norm_lo * _dn(np.float64(ld.g) + np.float64(ld.accel)))
+        gx, gy = ld.gravity  # type: ignore[misc]
+        best = np.full(norm_lo.shape, -np.inf)
+        tau = float(ld.tau)  # type: ignore[arg-type]
+        dw = 1e-15 * ld.g  # covers the rounding of R_ρ w
+        for rho in (-tau, 0.0, tau):  # V·R_ρ w at three tilts: each a lower bound of M
+            cr, sr = math.cos(rho), math.sin(rho)
+            wx, wy = ld.g * (cr * gx - sr * gy), ld.g * (sr * gx + cr * gy)
+            best = np.maximum(best, _dot(v, ((wx - dw, wx + dw), (wy - dw, wy + dw)))[0])
+        return best + _dn(norm_lo * np.float64(ld.accel))
+
+
+_PAIRS = np.array([(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]).T
+
+
+def _pairs(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:
+    """The mean-value form of ``λ φ_n + (1 − λ) φ_m <= max_n φ_n`` for the six pairs n < m.
+
+    λ in [0, 1] makes the combination's gradient at the centre least: along a
+    valley where two sides cross (a kink of the maximum), the combination is
+    smooth and flat across it, so its bound is of second order there too.
+    """
+    n, m = _PAIRS
+    gs = [((g[0] + g[1]) / 2) for g in grads]  # about the centre's gradient
+    a = np.stack([gs[0][n], gs[1][n]])
+    b = np.stack([gs[0][m], gs[1][m]])
+    diff = a - b
+    den = (diff * diff).sum(axis=0)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        lam = np.clip(-(b * diff).sum(axis=0) / den, 0.0, 1.0)
+    lam = np.where(np.isfinite(lam), lam, 0.5)
+    mu = 1.0 - lam  # exact for λ in [0, 1]? not always: use the interval of 1 − λ
+    li, mi = (lam, lam), (_dn(mu), _up(mu))
+    val = _add(_mul(li, (phic[0][n], phic[1][n])), _mul(mi, (phic[0][m], phic[1][m])))
+    for g, st in zip(grads, steps):
+        gc = _add(_mul(li, (g[0][n], g[1][n])), _mul(mi, (g[0][m], g[1][m])))
+        val = _add(val, _mul((st[0][0][None], st[1][0][None]), gc))
+    good = ok[n] & ok[m] & np.isfinite(val[0])
+    return np.where(good, val[0], -np.inf).max(axis=0)
