@@ -13,6 +13,11 @@ input gives the same frames.  :class:`FrameAnimation` is the player shared
 with :mod:`graspcompass.render.anim_physics`: it draws frames by blitting and
 writes GIF, MP4 or HTML; in Jupyter an animation shows itself (``_repr_html_``).
 
+The animation of the construction is made here; its parts are private modules,
+every name still importable from here: the player (``_anim_player``), the
+artists' states, dimming and highlighting (``_anim_ink``) and the layout of the
+caption (``_anim_layout``).
+
 Examples
 --------
 >>> from graspcompass import Grasp, internal_force_diagram
@@ -28,36 +33,21 @@ Step 13 of 0–46 · perpendicular
 from __future__ import annotations
 
 import math
-import os
-from collections.abc import Iterator
-from pathlib import Path
 from typing import Any
 
 import numpy as np
-from matplotlib.animation import FuncAnimation
 from matplotlib.artist import Artist
-from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.colors import to_rgb, to_rgba
 from matplotlib.figure import Figure
-from matplotlib.lines import Line2D
-from matplotlib.patches import Patch, Rectangle
+from matplotlib.patches import Patch
 from matplotlib.text import Annotation, Text
-from PIL import Image
 
 from ..layout import numeric_objects, tex
+from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
+from ._anim_layout import _layout, _text_width, _wrap  # noqa: F401
+from ._anim_player import FrameAnimation
 from .figure import draw_construction
-from .theme import DEFAULT_THEME, MIN_CONTRAST, QUALITIES, Quality, Theme, contrast_ratio
-from .timeline import (
-    AnimationError,
-    Timeline,
-    blend,
-    check_fps,
-    jshtml,
-    palette_sample,
-    reading_frames,
-    save_frames,
-    write_animation,
-)
+from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
+from .timeline import Timeline, check_fps, reading_frames, save_frames
 
 __all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_construction",
            "dim_alpha", "save_frames"]
@@ -67,315 +57,8 @@ __all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_constr
 AX_RECT = (0.1, 0.2, 0.86, 0.72)
 
 
-class FrameAnimation:
-    """A figure whose artists are set for each frame of a timeline; renders and saves it.
-
-    Subclasses set ``_dynamic`` (every artist they change, in drawing order)
-    and implement ``_apply(frame)`` (set the artists for that frame, whatever
-    came before); they may override ``_movers(segment)`` (the artists changing
-    within a segment), ``_group_key(segment)`` (consecutive segments with one
-    key leave the other dynamic artists alone) and ``_crossfade(segment)``.
-    """
-
-    _blit_live = False  # blitting of the live FuncAnimation
-
-    def __init__(self, figure: Figure, timeline: Timeline, fps: float) -> None:
-        self.figure, self.timeline, self.fps = figure, timeline, check_fps(fps)
-        self._canvas = FigureCanvasAgg(figure)
-        self._anim: FuncAnimation | None = None
-        self._dynamic: list[Artist] = []
-
-    def _apply(self, frame: int) -> None:
-        raise NotImplementedError
-
-    def _movers(self, segment: int) -> list[Artist]:
-        return self._dynamic
-
-    def _group_key(self, segment: int) -> Any:
-        return segment
-
-    def _crossfade(self, segment: int) -> Any:
-        """The image region (an index of the RGB array) shown as a cross-fade of the frames
-        around the segment, or None."""
-        return None
-
-    def _still(self, frame: int) -> bool:
-        """True if ``frame`` is the same picture as the frame before it (nothing moves)."""
-        return False
-
-    def key_frames(self) -> list[tuple[int, str]]:
-        """``(frame, name)`` of the frames :func:`save_frames` writes by default."""
-        return [(f, f"frame-{f:04d}") for f in range(self.frame_count)]
-
-    @property
-    def frame_count(self) -> int:
-        """Number of frames."""
-        return self.timeline.frame_count
-
-    @property
-    def drawn_frames(self) -> int:
-        """Frames that are drawn: all but the stills, which repeat the frame before."""
-        tl = self.timeline
-        return sum(1 for i, seg in enumerate(tl.segments) for f in tl.segment_range(i)
-                   if f == tl.starts[i] or not self._still(f))
-
-    def update(self, frame: int) -> list[Artist]:
-        """Set the artists for ``frame``; the function of :attr:`animation`."""
-        self._apply(int(frame))
-        return self._dynamic if self._blit_live else []
-
-    def render(self, frame: int) -> np.ndarray:
-        """Frame ``frame`` as an RGB array ``(height, width, 3)``, drawn in full."""
-        tl = self.timeline
-        f = tl.check(frame)
-        rng = tl.segment_range(tl.segment_of(f))
-        rows = self._crossfade(tl.segment_of(f))
-        if rows is not None and rng.start > 0 and f != rng.stop - 1:
-            return blend(self.render(rng.start - 1), self.render(rng.stop - 1),
-                         tl.at(f).progress, rows)
-        for a in self._dynamic:  # a live blitting FuncAnimation may have left them animated
-            a.set_animated(False)
-        self._apply(f)
-        self._canvas.draw()
-        return self._buffer()
-
-    def _buffer(self) -> np.ndarray:
-        """The canvas as a new RGB array (Pillow drops the alpha channel twice as fast as a
-        strided numpy copy)."""
-        w, h = self._canvas.get_width_height(physical=True)
-        rgba = Image.frombuffer("RGBA", (w, h), self._canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
-        return np.asarray(rgba.convert("RGB"))
-
-    def iter_frames(self) -> Iterator[np.ndarray]:
-        """Every frame in order as RGB arrays, drawn in layers by blitting.
-
-        The artists that never change are drawn once; the dynamic artists that
-        rest during a group of segments once per group; the movers every frame.
-        """
-        canvas, tl, dynamic = self._canvas, self.timeline, list(self._dynamic)
-        for a in dynamic:
-            a.set_animated(True)
-        try:
-            self._apply(0)
-            canvas.draw()
-            base = canvas.copy_from_bbox(self.figure.bbox)
-            last, i, n = None, 0, len(tl.segments)
-            while i < n:
-                j = i
-                while j + 1 < n and self._group_key(j + 1) == self._group_key(i):
-                    j += 1
-                frames = range(tl.starts[i], tl.segment_range(j).stop)
-                rows = self._crossfade(i)
-                if rows is not None and last is not None:
-                    self._apply(frames[-1])
-                    canvas.restore_region(base)
-                    self._draw(dynamic)
-                    end = self._buffer()
-                    yield from (blend(last, end, tl.at(f).progress, rows) for f in frames[:-1])
-                    yield end
-                    i = j + 1
-                    continue
-                moving = {id(a) for s in range(i, j + 1) for a in self._movers(s)}
-                resting = [a for a in dynamic if id(a) not in moving]
-                movers = [a for a in dynamic if id(a) in moving]
-                background = self._background(i, frames, resting, base)
-                for f in frames:
-                    if last is not None and f > frames.start and self._still(f):
-                        yield last
-                        continue
-                    self._apply(f)
-                    canvas.restore_region(background)
-                    self._draw(movers)
-                    last = self._buffer()
-                    yield last
-                i = j + 1
-        finally:
-            for a in dynamic:
-                a.set_animated(False)
-
-    def _background(self, segment: int, frames: range, resting: list[Artist], base: Any) -> Any:
-        """The background of a group of frames: ``base`` and the resting artists."""
-        self._apply(frames.start)
-        self._canvas.restore_region(base)
-        self._draw(resting)
-        return self._canvas.copy_from_bbox(self.figure.bbox)
-
-    def _draw(self, artists: list[Artist]) -> None:
-        for a in sorted(artists, key=lambda a: a.get_zorder()):
-            if a.get_visible():
-                self.figure.draw_artist(a)
-
-    def save(self, path: str | os.PathLike[str], fps: float | None = None,
-             quiet: bool = False) -> Path:
-        """Write ``.gif``, ``.mp4`` or ``.html``; see :func:`~.timeline.write_animation`."""
-        return write_animation(self, path, fps, quiet)
-
-    @property
-    def animation(self) -> FuncAnimation:
-        """A :class:`~matplotlib.animation.FuncAnimation` of the frames, for live display
-        (blitting in the sweep and orientation animations)."""
-        if self._anim is None:
-            self._anim = FuncAnimation(self.figure, self.update, frames=self.frame_count,
-                                       init_func=lambda: self.update(0), repeat=True,
-                                       interval=1000.0 / self.fps, blit=self._blit_live,
-                                       cache_frame_data=False)
-        return self._anim
-
-    def to_html(self, fps: float | None = None) -> str:
-        """Self-contained interactive HTML of every frame, the player of ``to_jshtml``."""
-        rate = self.fps if fps is None else check_fps(fps)
-        return jshtml(self.iter_frames(), self.figure.get_size_inches(), self.figure.dpi, rate,
-                      palette_sample(self))
-
-    def _repr_html_(self) -> str:
-        return self.to_html()
 
 
-# -- artists' states ----------------------------------------------------------------------------
-def _snap(a: Artist) -> dict[str, Any]:
-    """What :func:`_restore` needs to put ``a`` back as :func:`draw_construction` drew it."""
-    s: dict[str, Any] = {"visible": a.get_visible(), "alpha": a.get_alpha()}
-    if isinstance(a, Line2D):
-        s.update(color=a.get_color(), lw=a.get_linewidth(), ms=a.get_markersize(),
-                 mfc=a.get_markerfacecolor(), mec=a.get_markeredgecolor(),
-                 data=(np.array(a.get_xdata(), float), np.array(a.get_ydata(), float)))
-    elif isinstance(a, Patch):  # colours as given: "none" stays invisible under any alpha
-        s.update(lw=a.get_linewidth(), ec=getattr(a, "_original_edgecolor", a.get_edgecolor()),
-                 fc=getattr(a, "_original_facecolor", a.get_facecolor()))
-    if isinstance(a, Text):
-        s["color"] = a.get_color()
-    if isinstance(a, Annotation):
-        s["xy"] = tuple(a.xy)
-        if a.arrow_patch is not None:
-            s["arrow"] = _snap(a.arrow_patch)
-    return s
-
-
-def _restore(a: Any, s: dict[str, Any]) -> None:
-    a.set_visible(s["visible"])
-    a.set_alpha(s["alpha"])
-    if isinstance(a, Line2D):
-        a.set(color=s["color"], lw=s["lw"], ms=s["ms"], mfc=s["mfc"], mec=s["mec"])
-        a.set_data(*s["data"])
-    elif isinstance(a, Patch):
-        a.set(edgecolor=s["ec"], facecolor=s["fc"], lw=s["lw"])
-    if isinstance(a, Text):
-        a.set_color(s["color"])
-    if isinstance(a, Annotation):
-        a.xy = s["xy"]
-        if "arrow" in s:
-            _restore(a.arrow_patch, s["arrow"])
-        a.stale = True
-
-
-def _fade(a: Any, s: dict[str, Any], factor: float) -> None:
-    a.set_alpha((1.0 if s["alpha"] is None else s["alpha"]) * factor)
-    if "arrow" in s:
-        _fade(a.arrow_patch, s["arrow"], factor)
-
-
-def _tint(a: Any, s: dict[str, Any], color: Any, widen: float) -> None:
-    """Colour ``a`` as the new object and widen its lines by ``widen``."""
-    if isinstance(a, Line2D):
-        a.set(color=color, mec=color, lw=s["lw"] * widen)
-        if to_rgba(s["mfc"]) != to_rgba("white"):
-            a.set_markerfacecolor(color)
-    elif isinstance(a, Patch):
-        a.set(edgecolor=color, lw=s["lw"] * widen)
-    if "arrow" in s:
-        a.arrow_patch.set_color(color)
-
-
-# -- the construction ---------------------------------------------------------------------------
-def _inks(a: Any, s: dict[str, Any]) -> list[Any]:
-    """The colours ``a`` draws lines, markers or glyphs with (not its fills)."""
-    out: list[Any] = []
-    if isinstance(a, Line2D):
-        if a.get_linestyle() not in ("None", "none", "", " "):
-            out.append(s["color"])
-        if a.get_marker() not in (None, "None", "none", "", " "):
-            out += [s["mec"]] + ([s["mfc"]] if to_rgba(s["mfc"])[3] > 0 and
-                                 to_rgb(s["mfc"]) != (1.0, 1.0, 1.0) else [])
-    elif isinstance(a, Patch):
-        if s["lw"] > 0 and to_rgba(s["ec"])[3] > 0:
-            out.append(s["ec"])
-    if isinstance(a, Text) and a.get_text():
-        out.append(s["color"])
-    if "arrow" in s:
-        out += _inks(a.arrow_patch, s["arrow"])
-    return out
-
-
-def dim_alpha(colors: list[Any], background: Any, ratio: float, floor: float) -> float:
-    """The least opacity in [``floor``, 1] at which every colour of ``colors``, laid over
-    ``background``, keeps the contrast ``ratio`` (WCAG 2.1) against it; 1 if one of them
-    has less even when opaque.
-
-    >>> round(dim_alpha(["black"], "white", 3.0, 0.3), 2)
-    0.42
-    >>> dim_alpha(["#ffd60a"], "white", 3.0, 0.3)  # too light to start with
-    1.0
-    """
-    bg = np.array(to_rgb(background))
-    alpha = float(floor)
-    for c in colors:
-        rgba = to_rgba(c)
-        rgb, own = np.array(rgba[:3]), rgba[3]
-        if contrast_ratio(own * rgb + (1 - own) * bg, bg) < ratio:
-            return 1.0
-        lo, hi = alpha, 1.0
-        if contrast_ratio(lo * own * rgb + (1 - lo * own) * bg, bg) >= ratio:
-            continue
-        for _ in range(40):  # the contrast grows with the opacity
-            mid = (lo + hi) / 2
-            if contrast_ratio(mid * own * rgb + (1 - mid * own) * bg, bg) >= ratio:
-                hi = mid
-            else:
-                lo = mid
-        alpha = hi
-    return alpha
-
-
-def _wrap(text: str, width: float, measure: Any) -> str:
-    """``text`` broken at spaces into lines no wider than ``width`` pixels; ``measure(s)``
-    is the width of ``s`` as drawn."""
-    lines: list[str] = []
-    for para in text.split("\n"):
-        line = ""
-        for word in para.split(" "):
-            trial = f"{line} {word}" if line else word
-            if line and measure(trial) > width:
-                lines.append(line)
-                line = word
-            else:
-                line = trial
-        lines.append(line)
-    return "\n".join(lines)
-
-
-def _text_width(renderer: Any, prop: Any) -> Any:
-    """A fast measure of text widths in pixels: the sum of the characters' advances
-    (measured once each), 3 % wider for kerning and hinting."""
-    cache: dict[str, float] = {}
-
-    def measure(s: str) -> float:
-        total = 0.0
-        for ch in s:
-            if ch not in cache:
-                cache[ch] = renderer.get_text_width_height_descent(f"|{ch}|", prop, False)[0] \
-                    - renderer.get_text_width_height_descent("||", prop, False)[0]
-            total += cache[ch]
-        return 1.03 * total
-
-    return measure
-
-
-def _quality(quality: str | Quality) -> Quality:
-    if isinstance(quality, Quality):
-        return quality
-    if quality not in QUALITIES:
-        raise AnimationError(f"unknown quality {quality!r}; use one of {', '.join(QUALITIES)}")
-    return QUALITIES[quality]
 
 
 class ConstructionAnimation(FrameAnimation):
@@ -415,7 +98,7 @@ class ConstructionAnimation(FrameAnimation):
         super().__init__(Figure(figsize=figsize, dpi=dpi), timeline, fps)
         fig = self.figure
         self.axes = ax = fig.add_axes(AX_RECT)
-        self._layout(q.layout, caption_pt)
+        _layout(self, q.layout, caption_pt)
         self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=labels)
         ax.tick_params(labelsize=theme.font_size * 0.7)
         self._num = numeric_objects(construction)
@@ -457,56 +140,6 @@ class ConstructionAnimation(FrameAnimation):
         self._dynamic = [a for items in self._items for a, _, _ in items]
         self._dynamic += [a for a, _, _ in self._shared]
         self._dynamic += [*self._aids, self._caption, self._bar]
-
-    # -- layout -------------------------------------------------------------------------------
-    def _layout(self, layout: str, caption_pt: float) -> None:
-        """Place the title, the caption, the progress bar and the diagram so that the
-        longest caption fits whole (measured as drawn)."""
-        fig, ax, th = self.figure, self.axes, self.theme
-        if layout not in ("below", "side"):
-            raise AnimationError(f"unknown layout {layout!r}; use 'below' or 'side'")
-        self.layout = layout
-        W, H = fig.get_size_inches() * fig.dpi
-        renderer = self._canvas.get_renderer()
-        px = fig.dpi / 72.0
-        title_pt = th.font_size * 0.8 * (1.3 if layout == "side" else 1.0)
-        title = fig.text(0.5, 1 - 0.012 * W / H, getattr(self.construction.grasp, "title", None)
-                         or "", ha="center", va="top", fontsize=title_pt)
-        bar_h = max(0.012, 4.0 / H) if layout == "side" else 0.012
-        self._bar = fig.add_artist(Rectangle((0, 0), 0, bar_h, transform=fig.transFigure,
-                                             color=th.highlight_color, zorder=10))
-        margin = max(0.03 * W, 4.0)
-        tick = th.font_size * 0.7 * px * 1.6  # the tick labels' room
-        title_h = title_pt * px * 1.5 + 0.012 * W
-        if layout == "below":
-            width = W - 2 * margin
-            x_cap = margin
-        else:
-            side = H - title_h - bar_h * H - tick - 2 * margin  # a square diagram on the left
-            ax.set_position((margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H,
-                             side / W, side / H))
-            x_cap = margin * 1.6 + tick + side + 2.5 * margin
-            width = W - x_cap - margin
-        self._caption = fig.text(x_cap / W, 0.5, "", va="top", linespacing=1.4,
-                                 fontsize=caption_pt, fontweight="normal")
-        measure = _text_width(renderer, self._caption.get_fontproperties())
-        self._wrapped = [_wrap(t, width, measure) for t in self._texts]
-        self._hold_wrapped = _wrap(self._hold_text, width, measure)
-        tallest = 0.0
-        for t in {*self._wrapped, self._hold_wrapped}:
-            self._caption.set_text(t)
-            tallest = max(tallest, self._caption.get_window_extent(renderer).height)
-        self._caption.set_text("")
-        if layout == "below":
-            top = bar_h * H + 0.6 * margin + tallest  # the caption's top, in pixels
-            self._caption.set_y(top / H)
-            bottom = top + 0.4 * margin + tick
-            ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
-            self._fade_region: Any = np.s_[:int(H - top - 2)]
-        else:
-            self._caption.set_y(1 - title_h / H - margin / H)
-            self._fade_region = np.s_[:, :int(x_cap - margin)]
-        self._title = title
 
     @staticmethod
     def _role(a: Artist, s: Any) -> str:

@@ -1,0 +1,192 @@
+"""The player of the animations: frames drawn by blitting, written as GIF, MP4 or HTML.
+
+:class:`~graspcompass.render.animate.FrameAnimation` sets the artists of a frame
+from a :class:`~graspcompass.render.timeline.Timeline` and draws only what moves
+on a saved background; the construction (:mod:`graspcompass.render.animate`) and
+the physics (:mod:`graspcompass.render.anim_physics`) animations share it.  The
+class is documented, pickled and shown as ``graspcompass.render.animate.FrameAnimation``.
+Private to :mod:`graspcompass.render.animate`, which re-exports it.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from matplotlib.animation import FuncAnimation
+from matplotlib.artist import Artist
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+from PIL import Image
+
+from .timeline import Timeline, blend, check_fps, jshtml, palette_sample, write_animation
+
+
+class FrameAnimation:
+    """A figure whose artists are set for each frame of a timeline; renders and saves it.
+
+    Subclasses set ``_dynamic`` (every artist they change, in drawing order)
+    and implement ``_apply(frame)`` (set the artists for that frame, whatever
+    came before); they may override ``_movers(segment)`` (the artists changing
+    within a segment), ``_group_key(segment)`` (consecutive segments with one
+    key leave the other dynamic artists alone) and ``_crossfade(segment)``.
+    """
+
+    _blit_live = False  # blitting of the live FuncAnimation
+
+    def __init__(self, figure: Figure, timeline: Timeline, fps: float) -> None:
+        self.figure, self.timeline, self.fps = figure, timeline, check_fps(fps)
+        self._canvas = FigureCanvasAgg(figure)
+        self._anim: FuncAnimation | None = None
+        self._dynamic: list[Artist] = []
+
+    def _apply(self, frame: int) -> None:
+        raise NotImplementedError
+
+    def _movers(self, segment: int) -> list[Artist]:
+        return self._dynamic
+
+    def _group_key(self, segment: int) -> Any:
+        return segment
+
+    def _crossfade(self, segment: int) -> Any:
+        """The image region (an index of the RGB array) shown as a cross-fade of the frames
+        around the segment, or None."""
+        return None
+
+    def _still(self, frame: int) -> bool:
+        """True if ``frame`` is the same picture as the frame before it (nothing moves)."""
+        return False
+
+    def key_frames(self) -> list[tuple[int, str]]:
+        """``(frame, name)`` of the frames :func:`save_frames` writes by default."""
+        return [(f, f"frame-{f:04d}") for f in range(self.frame_count)]
+
+    @property
+    def frame_count(self) -> int:
+        """Number of frames."""
+        return self.timeline.frame_count
+
+    @property
+    def drawn_frames(self) -> int:
+        """Frames that are drawn: all but the stills, which repeat the frame before."""
+        tl = self.timeline
+        return sum(1 for i, seg in enumerate(tl.segments) for f in tl.segment_range(i)
+                   if f == tl.starts[i] or not self._still(f))
+
+    def update(self, frame: int) -> list[Artist]:
+        """Set the artists for ``frame``; the function of :attr:`animation`."""
+        self._apply(int(frame))
+        return self._dynamic if self._blit_live else []
+
+    def render(self, frame: int) -> np.ndarray:
+        """Frame ``frame`` as an RGB array ``(height, width, 3)``, drawn in full."""
+        tl = self.timeline
+        f = tl.check(frame)
+        rng = tl.segment_range(tl.segment_of(f))
+        rows = self._crossfade(tl.segment_of(f))
+        if rows is not None and rng.start > 0 and f != rng.stop - 1:
+            return blend(self.render(rng.start - 1), self.render(rng.stop - 1),
+                         tl.at(f).progress, rows)
+        for a in self._dynamic:  # a live blitting FuncAnimation may have left them animated
+            a.set_animated(False)
+        self._apply(f)
+        self._canvas.draw()
+        return self._buffer()
+
+    def _buffer(self) -> np.ndarray:
+        """The canvas as a new RGB array (Pillow drops the alpha channel twice as fast as a
+        strided numpy copy)."""
+        w, h = self._canvas.get_width_height(physical=True)
+        rgba = Image.frombuffer("RGBA", (w, h), self._canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+        return np.asarray(rgba.convert("RGB"))
+
+    def iter_frames(self) -> Iterator[np.ndarray]:
+        """Every frame in order as RGB arrays, drawn in layers by blitting.
+
+        The artists that never change are drawn once; the dynamic artists that
+        rest during a group of segments once per group; the movers every frame.
+        """
+        canvas, tl, dynamic = self._canvas, self.timeline, list(self._dynamic)
+        for a in dynamic:
+            a.set_animated(True)
+        try:
+            self._apply(0)
+            canvas.draw()
+            base = canvas.copy_from_bbox(self.figure.bbox)
+            last, i, n = None, 0, len(tl.segments)
+            while i < n:
+                j = i
+                while j + 1 < n and self._group_key(j + 1) == self._group_key(i):
+                    j += 1
+                frames = range(tl.starts[i], tl.segment_range(j).stop)
+                rows = self._crossfade(i)
+                if rows is not None and last is not None:
+                    self._apply(frames[-1])
+                    canvas.restore_region(base)
+                    self._draw(dynamic)
+                    end = self._buffer()
+                    yield from (blend(last, end, tl.at(f).progress, rows) for f in frames[:-1])
+                    yield end
+                    i = j + 1
+                    continue
+                moving = {id(a) for s in range(i, j + 1) for a in self._movers(s)}
+                resting = [a for a in dynamic if id(a) not in moving]
+                movers = [a for a in dynamic if id(a) in moving]
+                background = self._background(i, frames, resting, base)
+                for f in frames:
+                    if last is not None and f > frames.start and self._still(f):
+                        yield last
+                        continue
+                    self._apply(f)
+                    canvas.restore_region(background)
+                    self._draw(movers)
+                    last = self._buffer()
+                    yield last
+                i = j + 1
+        finally:
+            for a in dynamic:
+                a.set_animated(False)
+
+    def _background(self, segment: int, frames: range, resting: list[Artist], base: Any) -> Any:
+        """The background of a group of frames: ``base`` and the resting artists."""
+        self._apply(frames.start)
+        self._canvas.restore_region(base)
+        self._draw(resting)
+        return self._canvas.copy_from_bbox(self.figure.bbox)
+
+    def _draw(self, artists: list[Artist]) -> None:
+        for a in sorted(artists, key=lambda a: a.get_zorder()):
+            if a.get_visible():
+                self.figure.draw_artist(a)
+
+    def save(self, path: str | os.PathLike[str], fps: float | None = None,
+             quiet: bool = False) -> Path:
+        """Write ``.gif``, ``.mp4`` or ``.html``; see :func:`~.timeline.write_animation`."""
+        return write_animation(self, path, fps, quiet)
+
+    @property
+    def animation(self) -> FuncAnimation:
+        """A :class:`~matplotlib.animation.FuncAnimation` of the frames, for live display
+        (blitting in the sweep and orientation animations)."""
+        if self._anim is None:
+            self._anim = FuncAnimation(self.figure, self.update, frames=self.frame_count,
+                                       init_func=lambda: self.update(0), repeat=True,
+                                       interval=1000.0 / self.fps, blit=self._blit_live,
+                                       cache_frame_data=False)
+        return self._anim
+
+    def to_html(self, fps: float | None = None) -> str:
+        """Self-contained interactive HTML of every frame, the player of ``to_jshtml``."""
+        rate = self.fps if fps is None else check_fps(fps)
+        return jshtml(self.iter_frames(), self.figure.get_size_inches(), self.figure.dpi, rate,
+                      palette_sample(self))
+
+    def _repr_html_(self) -> str:
+        return self.to_html()
+
+
+FrameAnimation.__module__ = "graspcompass.render.animate"  # documented and pickled there
