@@ -40,17 +40,11 @@ def _text(max_length: int = MAX_TEXT, **extra: Any) -> dict[str, Any]:
 
 
 _NAME = _text(32, pattern=r"[A-Za-z0-9_-]+", description="a step name (letters, digits, _ -)")
-
-
 _FLOAT_READOUT = {"type": ["number", "null"], "description": "a JSON number or null"}
-
-
 _POINT = _obj({"x": _text(), "y": _text(),
                "float": {"type": "array", "prefixItems": [_FLOAT_READOUT, _FLOAT_READOUT],
                          "minItems": 2, "maxItems": 2, "description": "a pair [x, y]"}},
               "a point record {x, y, float}")
-
-
 VALUE_SCHEMAS: dict[str, dict[str, Any]] = {
     "point": _POINT,
     "line": _obj({"point": _POINT, "direction": _POINT}, "a line record {point, direction}"),
@@ -66,11 +60,7 @@ VALUE_SCHEMAS: dict[str, dict[str, Any]] = {
                                    "start": _POINT, "end": _POINT}, "an arc record")}},
                      "an envelope record {arcs}"),
 }
-
-
 _FINITE = {"type": "number", "minimum": -MAX_MAGNITUDE, "maximum": MAX_MAGNITUDE}
-
-
 _NUMBER = {"anyOf": [
     _text(1000),
     _FINITE,
@@ -78,12 +68,8 @@ _NUMBER = {"anyOf": [
           "bits": {"type": "integer", "minimum": 1, "maximum": MAX_FLOAT_BITS}},
          'a float record {"float": "p/q", "bits": n}'),
 ], "description": 'a number (exact text, a JSON number or {"float": "p/q", "bits": n})'}
-
-
 _SIZE = {"type": "number", "exclusiveMinimum": 0, "maximum": MAX_MAGNITUDE,
          "description": "a positive JSON number"}
-
-
 _GRASP = _obj({
     **{k: _NUMBER for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")},
     "friction": _obj({i: {"enum": ["mu", "xi"]} for i in ("1", "2")},
@@ -97,8 +83,6 @@ _GRASP = _obj({
          "maxItems": 3},
     ], "description": 'null, ["circle", r] or ["rectangle", w, h]'},
 }, "the grasp record (an object)")
-
-
 _STEP = _obj({
     "index": {"type": "integer", "minimum": 0, "maximum": MAX_STEPS},
     "name": _NAME,
@@ -114,8 +98,6 @@ _STEP = _obj({
     "conditions": {"type": "array", "items": _text(), "maxItems": 64},
     "value": {"type": "object", "description": "a value record (an object)"},
 }, "a step record (an object)")
-
-
 DOCUMENT_SCHEMA: dict[str, Any] = _obj({
     "schema": {"const": SCHEMA},
     "generator": _text(200),
@@ -126,11 +108,7 @@ DOCUMENT_SCHEMA: dict[str, Any] = _obj({
         "description": "a pair [name, reason]"}},
     "steps": {"type": "array", "items": _STEP, "maxItems": MAX_STEPS},
 }, "a JSON object", optional=("generator",))
-
-
 _JUNK = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f\ud800-\udfff\ufffe\uffff]")
-
-
 _JSON_TYPES = {"string": str, "array": list, "object": dict, "boolean": bool,
                "null": type(None)}
 

@@ -20,11 +20,7 @@ from ._exact_ring import _MEMO, _finish, _gen_key, _ring
 
 #: Generators met so far: one growing ring keeps the memo below reusable.
 _GENS: set[sp.Expr] = set()
-
-
 _MAX_GENS = 80
-
-
 #: Trial division bound of :func:`_square_free`, sympy's own for ``sqrt`` of an integer.
 _TRIAL = 2**15
 
