@@ -71,26 +71,33 @@
 
   /** The range [lo, hi) of the samples of segment a + t d (t in [0, 1], length L) that may
    * lie in ``win`` (Liang-Barsky, the window widened by ``step``): labelling._in_window. */
-  function inWindow(a, d, L, step, win, count) {
+  function inWindow(ax, ay, dx, dy, L, step, win, count) {
     let t0 = 0, t1 = 1;
-    for (const [p, q, lo, hi] of [[a[0], d[0], win[0] - step, win[2] + step],
-      [a[1], d[1], win[1] - step, win[3] + step]]) {
-      if (q === 0) {
-        if (p < lo || p > hi) return [0, 0];
-        continue;
-      }
-      let ta = (lo - p) / q, tb = (hi - p) / q;
-      if (ta > tb) [ta, tb] = [tb, ta];
+    // x, then y (scalar code: this runs for every segment of every curve at every update)
+    if (dx === 0) {
+      if (ax < win[0] - step || ax > win[2] + step) return EMPTY;
+    } else {
+      let ta = (win[0] - step - ax) / dx, tb = (win[2] + step - ax) / dx;
+      if (ta > tb) { const t = ta; ta = tb; tb = t; }
       t0 = Math.max(t0, ta);
       t1 = Math.min(t1, tb);
     }
-    if (!(t0 <= t1)) return [0, 0];
+    if (dy === 0) {
+      if (ay < win[1] - step || ay > win[3] + step) return EMPTY;
+    } else {
+      let ta = (win[1] - step - ay) / dy, tb = (win[3] + step - ay) / dy;
+      if (ta > tb) { const t = ta; ta = tb; tb = t; }
+      t0 = Math.max(t0, ta);
+      t1 = Math.min(t1, tb);
+    }
+    if (!(t0 <= t1)) return EMPTY;
     const lo = Math.min(Math.max(Math.floor((t0 * L) / step) - 1, 0), count);
     const hi = Math.min(Math.max(Math.ceil((t1 * L) / step) + 2, 0), count);
     // more samples than the window holds: floats cannot space them by step there
     const cap = 4 + Math.ceil((2 * ((win[2] - win[0]) + (win[3] - win[1]))) / step);
-    return Number.isFinite(lo) && Number.isFinite(hi) && hi - lo <= cap ? [lo, hi] : [0, 0];
+    return Number.isFinite(lo) && Number.isFinite(hi) && hi - lo <= cap ? [lo, hi] : EMPTY;
   }
+  const EMPTY = [0, 0];
 
   /** Points every ``step`` along each segment of each polyline (labelling.resample): a
    * segment a -> b of length L gives a + (i step / L)(b - a) for 0 <= i step < L (a alone
@@ -99,21 +106,22 @@
    * Flat [x0, y0, x1, ...]. */
   function resample(curves, step, win) {
     const out = [];
+    const finite = (p) => Number.isFinite(p[0]) && Number.isFinite(p[1]);
     for (const raw of curves) {
-      const c = raw.filter((p) => Number.isFinite(p[0]) && Number.isFinite(p[1]));
+      const c = raw.every(finite) ? raw : raw.filter(finite);
       if (c.length < 2) {
         for (const p of c) out.push(p[0], p[1]);
         continue;
       }
       for (let j = 0; j + 1 < c.length; j++) {
-        const a = c[j], d = [c[j + 1][0] - a[0], c[j + 1][1] - a[1]];
-        const L = Math.sqrt(d[0] * d[0] + d[1] * d[1]);
+        const ax = c[j][0], ay = c[j][1], dx = c[j + 1][0] - ax, dy = c[j + 1][1] - ay;
+        const L = Math.sqrt(dx * dx + dy * dy);
         const count = !Number.isFinite(L) ? 0 : L > 0 ? Math.ceil(L / step) : 1;
-        const [lo, hi] = win ? inWindow(a, d, L, step, win, count) : [0, count];
+        const [lo, hi] = win ? inWindow(ax, ay, dx, dy, L, step, win, count) : [0, count];
         // (m + lo) as in Python: lo may be too large for k++ to step by one
         for (let m = 0, n = hi - lo; m < n; m++) {
           const f = L > 0 ? ((m + lo) * step) / L : 0;
-          out.push(a[0] + f * d[0], a[1] + f * d[1]);
+          out.push(ax + f * dx, ay + f * dy);
         }
       }
       const e = c[c.length - 1];
