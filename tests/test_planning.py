@@ -220,7 +220,7 @@ def paper_squeeze(a, na, b, nb, com, mu, g=G):
         return _paper_squeeze(a, na, b, nb, com, mu, g)
 
 
-def _paper_squeeze(a, na, b, nb, com, mu, g):
+def _paper_squeeze(a, na, b, nb, com, mu, g, frame=False):
     a, na, b, nb, o = (np.asarray(v, float) for v in (a, na, b, nb, com))
     J = lambda v: np.stack([-v[..., 1], v[..., 0]], axis=-1)  # noqa: E731
     dot = lambda u, v: (u * v).sum(axis=-1)  # noqa: E731
@@ -244,6 +244,8 @@ def _paper_squeeze(a, na, b, nb, com, mu, g):
                                                        (phi2, -1)))
     S = [y * t1 - h, h - y * t2, y * t3 - h, h - y * t4]
     C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
+    if frame:
+        return S, C, ex, ey, x1 + x2, ok
     r = np.max([np.hypot(s, c) for s, c in zip(S, C)], axis=0)
     return np.where(ok, g * r / (x1 + x2), np.nan)
 
@@ -254,21 +256,62 @@ def _edge(ring, k):
     return a0, d, np.array([-d[1], d[0]]) / np.linalg.norm(d)
 
 
-def brute_force(ring, ea, eb, com, mu, n=601):
-    """The least paper_squeeze over an n × n grid of (s, t), then a finer grid around it."""
+def brute_force(ring, ea, eb, com, mu, n=601, fn=None, rounds=3, starts=1):
+    """The least paper_squeeze (or fn) over an n × n grid of (s, t), then finer grids around it.
+
+    With ``starts`` > 1, finer grids around each of that many best local minima of the
+    first grid (a valley nearly flat along a short edge can hide the optimum at its end).
+    """
     (a0, da, na), (b0, db, nb) = _edge(ring, ea), _edge(ring, eb)
-    lo_s, hi_s, lo_t, hi_t = 0.0, 1.0, 0.0, 1.0
-    for _ in range(3):
+    fn = fn or (lambda a, na, b, nb: paper_squeeze(a, na, b, nb, com, mu))
+
+    def grid(lo_s, hi_s, lo_t, hi_t, n):
         s, t = np.meshgrid(np.linspace(lo_s, hi_s, n), np.linspace(lo_t, hi_t, n),
                            indexing="ij")
-        q = paper_squeeze(a0 + s[..., None] * da, na, b0 + t[..., None] * db, nb, com, mu)
-        k = np.nanargmin(q)
+        return s, t, fn(a0 + s[..., None] * da, na, b0 + t[..., None] * db, nb)
+
+    s, t, q = grid(0.0, 1.0, 0.0, 1.0, n)
+    pad = np.pad(np.where(np.isnan(q), np.inf, q), 1, constant_values=np.inf)
+    local = np.isfinite(q) & np.all([q <= pad[1 + i:1 + i + n, 1 + j:1 + j + n]
+                                      for i in (-1, 0, 1) for j in (-1, 0, 1)], axis=0)
+    cand = np.flatnonzero(local.ravel())
+    cand = cand[np.argsort(q.ravel()[cand])][:starts] if starts > 1 else [np.nanargmin(q)]
+    out = np.inf
+    for k in cand:
         best, (sb, tb) = float(q.ravel()[k]), (float(s.ravel()[k]), float(t.ravel()[k]))
-        w = 4 * (hi_s - lo_s) / (n - 1), 4 * (hi_t - lo_t) / (n - 1)
-        lo_s, hi_s = max(0.0, sb - w[0]), min(1.0, sb + w[0])
-        lo_t, hi_t = max(0.0, tb - w[1]), min(1.0, tb + w[1])
-        n = 201
-    return best
+        w, m = (4 / (n - 1), 4 / (n - 1)), n
+        for _ in range(rounds - 1):
+            lo_s, hi_s = max(0.0, sb - w[0]), min(1.0, sb + w[0])
+            lo_t, hi_t = max(0.0, tb - w[1]), min(1.0, tb + w[1])
+            m = 201
+            ss, tt, qq = grid(lo_s, hi_s, lo_t, hi_t, m)
+            j = np.nanargmin(qq)
+            best, (sb, tb) = float(qq.ravel()[j]), (float(ss.ravel()[j]), float(tt.ravel()[j]))
+            w = 4 * (hi_s - lo_s) / (m - 1), 4 * (hi_t - lo_t) / (m - 1)
+        out = min(out, best)
+    return out
+
+
+def paper_squeeze_tilted(a, na, b, nb, com, mu, gdir, tau, accel=0.0, g=G):
+    """The squeeze per kg over the tilts |ρ| <= τ of gravity g ĝ and accelerations |a| <= A.
+
+    In the paper frame (eqs. (17), (28)-(39)) the internal force for a load F_e is
+    max(0, max_n V_n · F_e) / (x1 + x2), V_n = (S_n, C_n); F_e = g R_ρ ĝ + a, and over
+    |a| <= A the worst V_n · a is A |V_n|.  Over ρ, V_n · R_ρ ĝ is a sinusoid in ρ:
+    its maximum on [−τ, τ] is at an end or at its peak (the ρ turning ĝ onto V_n).
+    """
+    with np.errstate(invalid="ignore", divide="ignore"):
+        S, C, ex, ey, span, ok = _paper_squeeze(a, na, b, nb, com, mu, g, frame=True)
+        gx, gy = gdir
+        top = np.full(np.shape(span), -np.inf)
+        for s_, c_ in zip(S, C):
+            vx, vy = s_ * ex[..., 0] + c_ * ey[..., 0], s_ * ex[..., 1] + c_ * ey[..., 1]
+            peak = np.clip(np.arctan2(gx * vy - gy * vx, gx * vx + gy * vy), -tau, tau)
+            for rho in (-tau, tau, peak):
+                wx = g * (np.cos(rho) * gx - np.sin(rho) * gy)
+                wy = g * (np.sin(rho) * gx + np.cos(rho) * gy)
+                top = np.maximum(top, vx * wx + vy * wy + accel * np.hypot(vx, vy))
+        return np.where(ok, np.maximum(top, 0.0) / span, np.nan)
 
 
 @settings(max_examples=60, deadline=None)
@@ -342,6 +385,94 @@ def test_exact_adjacent_edges_of_a_triangle() -> None:
     assert p.squeeze <= p.sampled_squeeze
 
 
+TRAPEZE = [(-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03)]
+
+
+@pytest.mark.parametrize("shape, mu, com, gdir, tilt, accel, boundary", [
+    # the least squeeze approached on the boundary of condition (1), finite there
+    ("trapeze", 0.6, (0.01, 0.005), (0.0, -1.0), 25, 1.0, True),
+    ("bracket", 0.5, None, (0.6, -0.8), 30, 0.0, False),
+])
+def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, tilt, accel,
+                                                         boundary) -> None:
+    """Under a tilt range: proved, ≤ every sampled pair, and the brute-force grid's optimum."""
+    from graspcompass.outlines import read_outline
+
+    outline = TRAPEZE if shape == "trapeze" else read_outline(BRACKET)
+    tau = math.radians(tilt)
+    plan = plan_contacts(outline, mu=mu, mass=1.0, samples=40, g=G, com=com, gravity=gdir,
+                         tilt=f"{tilt}deg", accel=accel, exact=1)
+    p = plan.exact[0]
+    ring = np.asarray(plan.outline)
+    ea, eb = p.edges
+    fn = lambda a, na, b, nb: paper_squeeze_tilted(a, na, b, nb, plan.com, mu, gdir, tau,  # noqa: E731
+                                                   accel)
+    grid = brute_force(ring, ea, eb, plan.com, mu, n=301, fn=fn, rounds=4, starts=6)
+    assert p.certified and p.squeeze - p.lower_bound <= p.tol * p.squeeze
+    # the proof holds against the grid (a bound too high fails here), and it is the optimum
+    assert p.lower_bound <= grid * (1 + 1e-12)
+    assert p.squeeze <= grid * (1 + p.tol) and grid <= p.squeeze * (1 + 1e-4)
+    # no sampled pair on these two edges does better
+    on = ((plan.edges[plan.i] == ea) & (plan.edges[plan.j] == eb)) | (
+        (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea))
+    sampled = plan.squeeze[on & plan.force_closure]
+    assert p.lower_bound <= sampled.min() * (1 + 1e-12) and p.squeeze <= sampled.min()
+    assert p.sampled_squeeze == sampled.min()
+    # the reported pair: force-closure by the paper's condition (1), its squeeze the paper's
+    (p1, p2), (n1, n2) = p.contacts, p.normals
+    here = fn(np.array(p1), np.array(n1), np.array(p2), np.array(n2))
+    assert here == pytest.approx(p.squeeze, rel=1e-9)
+    # ... and by dense sampling of the orientations (A = 0: an LP per orientation)
+    if not accel:
+        lp = max(lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * rot)[0] for rot in (
+            np.array([math.cos(r) * gdir[0] - math.sin(r) * gdir[1],
+                      math.sin(r) * gdir[0] + math.cos(r) * gdir[1]])
+            for r in np.linspace(-tau, tau, 41)))
+        assert lp <= p.squeeze * (1 + 1e-9) and lp == pytest.approx(p.squeeze, rel=1e-3)
+    # what is proved, stated: the boundary of (1), the orientations, the tolerance
+    assert p.on_boundary is boundary and (p.cone_margin <= 1e-6) is boundary
+    assert p.cone_margin > 0 and f"±{tilt}°" in p.claim() and "condition (1)" in p.claim()
+    assert ("boundary of condition (1)" in p.claim()) is boundary
+    assert p.to_dict()["on_boundary"] is boundary
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_box_lower_bounds_hold_across_the_boundary_of_condition_1(seed) -> None:
+    """Each box's lower bound is at most q at every force-closure point sampled in it.
+
+    Random edge pairs, tilt ranges and accelerations, random boxes from 1e-4 to 0.1 wide,
+    many straddling the boundary of (1) (where κ is unbounded); μ up to 1.5.
+    """
+    from graspcompass.planning._bounds import _Bounds
+
+    rng = np.random.default_rng(seed)
+    straddling = 0
+    for _ in range(6):
+        v = rng.uniform(-1, 1, 10)
+        pair = EdgePair.of((0.5 * v[0], -1 + 0.3 * v[1]), (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]),
+                           (0.5 * v[4], 1 + 0.3 * v[5]), (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7]),
+                           (0.4 * v[8], 0.4 * v[9]), rng.uniform(0.2, 1.5))
+        ang = rng.uniform(-math.pi, math.pi)
+        load = Load(g=G, accel=float(rng.choice([0.0, 3.0, 20.0])),
+                    gravity=(math.cos(ang), math.sin(ang)), tau=float(rng.uniform(0, 1.2)))
+        bounds = _Bounds(pair, load)
+        n = 200
+        c, h = rng.uniform(0, 1, (n, 2)), 10 ** rng.uniform(-4, -1, n)
+        s_box = np.clip(c[:, 0] - h, 0, 1), np.clip(c[:, 0] + h, 0, 1)
+        t_box = np.clip(c[:, 1] - h, 0, 1), np.clip(c[:, 1] + h, 0, 1)
+        lower, feasible = bounds.lower(s_box, t_box)
+        straddling += int((feasible & bounds.straddle).sum())
+        u = np.linspace(0, 1, 15)
+        S = s_box[0][:, None, None] + (s_box[1] - s_box[0])[:, None, None] * u[None, :, None]
+        T = t_box[0][:, None, None] + (t_box[1] - t_box[0])[:, None, None] * u[None, None, :]
+        q = edge_pair_values(pair, load, S, T).reshape(n, -1)
+        has = np.isfinite(q).any(axis=1)
+        least = np.where(has, np.nanmin(np.where(np.isfinite(q), q, np.inf), axis=1), np.inf)
+        assert feasible[has].all()  # no box with a force-closure point is dropped
+        assert np.all(lower[has] <= least[has] * (1 + 1e-12))
+    assert straddling >= 10
+
+
 def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
     """The search under a tilt range: its lower bound is below a fine grid's least value."""
     pair = EdgePair.of((-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03),
@@ -350,17 +481,19 @@ def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
     opt = refine_edge_pair(pair, load, tol=1e-5, max_boxes=4000)
     s, t = np.meshgrid(np.linspace(0, 1, 801), np.linspace(0, 1, 801), indexing="ij")
     grid = np.nanmin(edge_pair_values(pair, load, s, t))
-    # the infimum lies on the boundary of condition (1) here: the proof need not close,
-    # but what it proves holds
-    assert opt.lower <= grid * (1 + 1e-12) and opt.value <= grid * (1 + 1e-3)
-    assert opt.boxes <= 2 * 4000
+    # the infimum lies on the boundary of condition (1) here: proved all the same
+    assert opt.lower <= grid * (1 + 1e-12) and opt.value <= grid * (1 + 1e-5)
+    assert opt.certified and opt.on_boundary and opt.boxes <= 2 * 4000
+    # with too small a budget: "not closed", and the lower bound still holds
+    cut = refine_edge_pair(pair, load, tol=1e-5, max_boxes=100)
+    assert not cut.certified and cut.lower <= grid * (1 + 1e-12) and cut.boxes <= 200
 
 
 def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
     """Every orientation within ±τ of gravity, by an LP per orientation (test_sizing)."""
     tau, gdir, m = math.radians(30), np.array([0.6, -0.8]), 1.5
     plan = plan_contacts(PLATE, mu=MU, mass=m, samples=24, g=G, gravity=tuple(gdir),
-                         tilt="30deg", accel=0.0)
+                         tilt="30deg", accel=0.0, exact=0)
     assert plan.exact == () and plan.tilt == pytest.approx(tau)
     assert "±30°" in plan.orientations()
     rhos = np.linspace(-tau, tau, 61)
@@ -376,10 +509,10 @@ def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
         s = size_gripper(wg, m, g=G, gravity=tuple(gdir), tilt=tau)
         assert float(s.squeeze) == pytest.approx(p.squeeze, rel=1e-9, abs=1e-12)
     # the given orientation (no tilt) and a tilt of 180°: every orientation again
-    fixed = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1))
+    fixed = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1), exact=0)
     assert fixed.tilt == 0.0 and fixed.orientations() == "gravity along (0, -1)"
     every = plan_contacts(PLATE, mu=MU, samples=24, exact=0)
-    half_turn = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1), tilt=math.pi)
+    half_turn = plan_contacts(PLATE, mu=MU, samples=24, gravity=(0, -1), tilt=math.pi, exact=0)
     assert np.allclose(every.squeeze, half_turn.squeeze, equal_nan=True)
     assert np.all((fixed.squeeze <= every.squeeze * (1 + 1e-12)) | np.isnan(every.squeeze))
 
@@ -426,7 +559,11 @@ def test_cli_exact_and_tilt_json(capsys) -> None:
     assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--gravity", "0,-1",
                  "--tilt", "15deg", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
-    assert d["exact"] == [] and d["tilt_deg"] == pytest.approx(15) and d["gravity"] == [0, -1]
+    assert d["tilt_deg"] == pytest.approx(15) and d["gravity"] == [0, -1]
+    ex = d["exact"][0]  # proved under the tilt range too, and says over which orientations
+    assert ex["certified"] and ex["lower_bound_N"] <= ex["squeeze_N"] <= ex["sampled_squeeze_N"]
+    assert "±15°" in ex["proves"] and "condition (1)" in ex["proves"]
+    assert isinstance(ex["on_boundary"], bool) and ex["cone_margin_rad"] > 0
     assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--exact", "1"]) == 0
     assert "proved >=" in capsys.readouterr().out
 

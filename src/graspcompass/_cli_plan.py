@@ -81,8 +81,8 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    "±ANGLE (deg or rad needed: 15deg)")
     s.add_argument("--exact", type=int, default=3, metavar="K",
                    help="optimise the edge pairs of the K best sampled pairs over the whole "
-                        "edges, with a proof (branch and bound; every orientation only; 0 to "
-                        f"{_MAX_EXACT}, default 3)")
+                        "edges, with a proof (branch and bound, over the orientations asked; 0 "
+                        f"to {_MAX_EXACT}, default 3)")
     s.add_argument("--tol", default="1e-6", metavar="T", help="relative tolerance of those "
                    "proofs (default 1e-6)")
     s.add_argument("--samples", type=int, default=120, metavar="N",
@@ -232,9 +232,6 @@ def _text(d: dict[str, Any]) -> str:
         lines.append(f"{p['rank']:>4}  {'(' + ', '.join(a) + ')':>20}  "
                      f"{'(' + ', '.join(b) + ')':>20}  {p['squeeze_N']:>10.4g}  "
                      f"{p['squeeze_N_per_kg']:>8.4g}")
-    if d["gravity"] is not None:
-        lines.append("(the exact refinement along edges is over every orientation only: not run "
-                     "with --gravity)")
     if d["exact"]:
         lines.append(f"exact along the best edge pairs ({d['exact_method']}; tolerance "
                      f"{d['exact'][0]['tolerance']:.0e}):")
@@ -247,5 +244,10 @@ def _text(d: dict[str, Any]) -> str:
             lines.append(f"{p['rank']:>4}  {'{},{}'.format(*p['edges']):>7}  "
                          f"{'(' + ', '.join(a) + ')':>20}  {'(' + ', '.join(b) + ')':>20}  "
                          f"{p['squeeze_N']:>10.6g}  {p['lower_bound_N']:>10.6g}  {samp:>10}  "
-                         f"{saved}{'' if p['certified'] else ' (not closed)'}")
+                         f"{saved}{'' if p['certified'] else ' (not closed)'}"
+                         f"{' (on the boundary of (1))' if p['on_boundary'] else ''}")
+        if any(p["on_boundary"] for p in d["exact"]):
+            lines.append("(on the boundary of (1): the least squeeze is approached where a "
+                         "contact is at the edge of its friction cone; the pair shown is just "
+                         "inside, with no margin for error in μ or in placing the jaws)")
     return "\n".join(lines)

@@ -26,14 +26,17 @@ given orientation) instead of every orientation:
 ``V_n · R_ρ (g ĝ)`` (:mod:`graspcompass.sizing.core`, vectorised over the pairs by
 :func:`graspcompass.sizing._arc.arc_max_many`).
 
-**Exact along edges.**  Over all orientations, for the edge pairs of the best
-sampled pairs (``exact=3`` of them by default), the least squeeze over every
-force-closure pair of points of the two edges, not only the samples, is found
-and *proved* within a relative tolerance (default 1e-6) by branch and bound
-over the two edge parameters with interval lower bounds of the closed form
-(:mod:`graspcompass.planning._exact`); :attr:`PlanResult.exact`.  Under a tilt
-range the refinement is not run (the infimum may sit on the boundary of
-condition (1), where the bounds do not close).
+**Exact along edges.**  For the edge pairs of the best sampled pairs
+(``exact=3`` of them by default), the least squeeze over every force-closure
+pair of points of the two edges, not only the samples, is found and *proved*
+within a relative tolerance (default 1e-6) by branch and bound over the two
+edge parameters with interval lower bounds of the closed form
+(:mod:`graspcompass.planning._exact`); :attr:`PlanResult.exact`, each with what
+it proves (:meth:`ExactPair.claim`).  Over every orientation or under the
+user's tilt range alike; under a tilt range the least squeeze may be approached
+on the boundary of condition (1), where it stays finite: then ``on_boundary``
+says so (the infimum over the force-closure pairs, attained by none; the pair
+reported is just inside, at the edge of a friction cone).
 
 Examples
 --------
@@ -286,7 +289,7 @@ class PlanResult:
         The force-closure pairs, best first (ties in pair order).
     exact : tuple of ExactPair
         The proved optima along the best edge pairs, least squeeze first (empty
-        with ``exact=0`` or under a tilt range).
+        with ``exact=0``).
     gravity : (float, float) or None
         Gravity's unit direction when the ranking is over tilts of it; None: every
         orientation.
@@ -487,8 +490,9 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
                       _readonly(i, np.int64), _readonly(j, np.int64), _readonly(squeeze),
                       _readonly(fc, bool), _readonly(order, np.int64), frames,
                       gravity=load.gravity, tilt=None if load.gravity is None else load.tau)
-    if exact and load.any_orientation:
-        plan = dataclasses.replace(plan, exact=refine_plan(plan, int(exact), load, factor, tol_))
+    if exact:
+        plan = dataclasses.replace(plan, exact=refine_plan(plan, int(exact), load, factor, tol_,
+                                                           plan.orientations()))
     return plan
 
 

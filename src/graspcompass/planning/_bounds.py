@@ -89,7 +89,7 @@ class _Bounds:
         jr = _J(rj)
         d4 = ((d[0][0][None], d[0][1][None]), (d[1][0][None], d[1][1][None]))
         v = _vadd((_half(d4[0], self.h), _half(d4[1], self.h)), _vscale(_neg(kappa), jr))
-        out = {"v": v, "may": dd[1] > 0, "rnorm": _norm(rj)[0]}
+        out = {"v": v, "may": dd[1] > 0, "rnorm": _norm(rj), "kappa": kappa, "jr": jr}
         if grad:
             den2 = (_sq_lo(dd), _sq_hi(dd))
             for k in ("fs", "ft"):
@@ -114,9 +114,16 @@ class _Bounds:
         norm_lo = _norm(v)[0]
         l4 = (length[0][None], length[1][None])
         # |V| >= |κ||r_j| − |d|/2: bounded away from 0 where two edges meet at a vertex
-        norm_lo = np.maximum(norm_lo, _dn(_dn(self.kmin * f["rnorm"]) - _up(l4[1] * 0.5)))
+        # |κ| from its interval (unbounded near the boundary of (1)), at least cot 2ξ
+        kap = f["kappa"]
+        kmag = np.maximum(np.where(kap[0] > 0, kap[0], np.where(kap[1] < 0, -kap[1], 0.0)),
+                          self.kmin)
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            natural = _dn(self._top(v, norm_lo) / l4[1])
+            norm_lo = np.maximum(norm_lo, _dn(_dn(kmag * f["rnorm"][0]) - _up(l4[1] * 0.5)))
+            natural = _over_length(self._top(v, norm_lo), l4)
+            if not ld.any_orientation:
+                natural = np.maximum(natural, _over_length(
+                    self._blow(d, f, norm_lo, l4, s, t), l4))
             # the mean-value form of φ = V·U/|d| around the centre
             vc = fc["v"]
             cx, cy = (vc[0][0] + vc[0][1]) / 2, (vc[1][0] + vc[1][1]) / 2
@@ -154,7 +161,60 @@ class _Bounds:
             best = np.maximum(best, _pairs(phic, grads, steps, ok))
         if not ld.any_orientation:
             best = np.maximum(best, 0.0)
+        self.straddle = feasible & ~f["strict"].all(axis=0)  # boxes across the boundary of (1)
         return np.where(feasible, best, np.inf), feasible
+
+    def _blow(self, d: tuple, f: dict, norm_lo: np.ndarray, l4: tuple, s: tuple, t: tuple
+              ) -> np.ndarray:
+        """A lower bound of ``M_n + A|V_n|`` that sees κ_n grow without bound, per side.
+
+        With ``V = h d/2 − κ J r`` and a tilt ρ (``w = R_ρ g ĝ``; ``M >= V·w``):
+        ``V·w + A|V| >= h (d·w)/2 + κ (±A|r| − Jr·w) − A|d|/2`` for κ of one sign
+        (``|V| >= |κ||r| − |d|/2``), the product taken as one interval: near the
+        boundary of (1), where κ → ±∞, it tends to +∞ or −∞ as the pair's squeeze
+        does (the natural extension, component by component, loses the sign).
+        """
+        ld = self.load
+        kap, jr, (rlo, rhi) = f["kappa"], f["jr"], f["rnorm"]
+        A = np.float64(ld.accel)
+        arl, arh = _dn(A * rlo), _up(A * rhi)
+        dl = _up(A * _up(l4[1] * 0.5))
+        best = np.full(norm_lo.shape, -np.inf)
+        for wx, wy in self._tilts(f, s, t):
+            w = ((wx[0], wx[1]), (wy[0], wy[1]))
+            dw = _dot(((d[0][0][None], d[0][1][None]), (d[1][0][None], d[1][1][None])), w)
+            base = _half(dw, self.h)
+            jw = _dot(jr, w)
+            pos = _sub(base, _mul(kap, jw))
+            best = np.maximum(best, _dn(pos[0] + _dn(A * norm_lo)))
+            for sel, x in ((kap[0] >= 0, _sub((arl, arh), jw)),
+                           (kap[1] <= 0, _sub(_neg(jw), (arl, arh)))):
+                b = _sub(_add(base, _mul(kap, x)), (dl, dl))[0]
+                best = np.where(sel, np.maximum(best, b), best)
+        return best
+
+    def _tilts(self, f: dict, s: tuple, t: tuple) -> list:
+        """Gravity ``g R_ρ ĝ`` (as intervals covering its rounding) at a few tilts |ρ| <= τ.
+
+        The ends and 0, and per box the worst tilt for ``±J r`` at the box's centre.
+        """
+        ld = self.load
+        gx, gy = ld.g * ld.gravity[0], ld.g * ld.gravity[1]  # type: ignore[index]
+        tau = float(ld.tau)  # type: ignore[arg-type]
+        jr = f["jr"]
+        cx, cy = (jr[0][0] + jr[0][1]) / 2, (jr[1][0] + jr[1][1]) / 2
+        rhos = [np.float64(-tau), np.float64(0.0), np.float64(tau)]
+        for sg in (1.0, -1.0):
+            with np.errstate(invalid="ignore"):
+                r = np.arctan2(sg * (cy * gx - cx * gy), sg * (cx * gx + cy * gy))
+            rhos.append(np.clip(np.where(np.isfinite(r), r, 0.0), -tau, tau))
+        dw = 1e-15 * ld.g * 4  # covers the rounding of cos, sin and R_ρ w
+        out = []
+        for rho in rhos:
+            cr, sr = np.cos(rho), np.sin(rho)
+            wx, wy = cr * gx - sr * gy, sr * gx + cr * gy
+            out.append(((wx - dw, wx + dw), (wy - dw, wy + dw)))
+        return out
 
     def _top(self, v: tuple, norm_lo: np.ndarray) -> np.ndarray:
         """A lower bound of (g + A)|V|, or of M + A|V|, over the box (natural extension)."""
@@ -173,6 +233,13 @@ class _Bounds:
 
 
 _PAIRS = np.array([(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]).T
+
+
+def _over_length(x: np.ndarray, l4: tuple) -> np.ndarray:
+    """A lower bound of ``X / |d|`` from ``X >= x`` and ``|d|`` in ``l4`` (> 0 on (1))."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        q = np.where(x >= 0, _dn(x / l4[1]), _dn(x / l4[0]))
+    return np.where(np.isnan(q), -np.inf, q)
 
 
 def _pairs(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:

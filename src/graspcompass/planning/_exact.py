@@ -37,6 +37,23 @@ to the data's float values (vertices, centre of mass, μ), not an optimiser's
 guess.  The upper end is the float value at the reported point (relative error
 about 1e-15).
 
+**The boundary of condition (1).**  Boxes whose four denominators cannot all
+have their sign (an outward-rounded test) hold no force-closure pair and are
+dropped: they are not candidates.  Over every orientation q grows without bound
+towards the boundary (``|V_n| → ∞``).  Under a tilt range it need not: ``M_n +
+A|V_n|`` tends to −∞ where ``V_n`` turns away from every tilted gravity, and q
+stays finite, so its infimum may be approached on the boundary, by pairs at the
+edge of a friction cone, and attained by none.  Boxes that straddle the
+boundary are bounded with κ over their force-closure part as an interval
+unbounded at one end, the product ``κ (±A|r| − Jr·w)`` taken as one interval so
+that its sign survives (``_Bounds._blow``), and split until the bound closes; the
+points of the boundary nearest them (the force-closure set is a convex polygon
+of (s, t), four half-planes in the square), moved ``1e-3 tol`` inside, are tried
+as upper bounds.  The result then states it: ``on_boundary`` when the reported
+pair is within :data:`BOUNDARY` radians of (1) (:func:`cone_margin`), ``value``
+within ``tol`` of the infimum over the force-closure pairs, which equals the
+least q over their closure (q extended by continuity).
+
 Examples
 --------
 A 100 × 60 mm plate, μ = 0.5, its two long sides: the centred pair with
@@ -63,10 +80,14 @@ import numpy as np
 from ..sizing._arc import arc_max_many
 from ._bounds import _SIDES, _SIGN, _Bounds
 
-__all__ = ["EdgeOptimum", "EdgePair", "Load", "edge_pair_values", "refine_edge_pair"]
+__all__ = ["EdgeOptimum", "EdgePair", "Load", "cone_margin", "edge_pair_values",
+           "refine_edge_pair"]
 
 #: Default relative tolerance of the proof: value − lower <= tol · value.
 DEFAULT_TOL = 1e-6
+#: A pair at most this far inside condition (1) (radians, :func:`cone_margin`) is reported
+#: as on its boundary.
+BOUNDARY = 1e-6
 #: Most boxes bounded before the search gives up (then ``certified`` is False).
 MAX_BOXES = 20_000
 
@@ -171,6 +192,22 @@ def edge_pair_values(pair: EdgePair, load: Load, s: Any, t: Any) -> np.ndarray:
     return np.where(ok, q, np.nan)
 
 
+def cone_margin(pair: EdgePair, s: Any, t: Any) -> np.ndarray:
+    """How far inside condition (1) the pairs are: the least angle (radians) by which the
+    line of contact is inside a friction cone's side, over the four sides (< 0: outside).
+    """
+    a, b = pair.points(s, t)
+    d = a - b
+    length = np.hypot(d[..., 0], d[..., 1])
+    out = np.full(length.shape, np.inf)
+    for c, sig in zip((*_cones(pair.ea, pair.mu), *_cones(pair.eb, pair.mu)), _SIGN):
+        den = d[..., 0] * c[1] - d[..., 1] * c[0]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            sin = sig * den / (length * math.hypot(c[0], c[1]))
+        out = np.minimum(out, np.arcsin(np.clip(sin, -1.0, 1.0)))
+    return out
+
+
 def _combine(vs: list, load: Load, length: np.ndarray) -> np.ndarray:
     with np.errstate(invalid="ignore", over="ignore"):
         if load.any_orientation:
@@ -182,6 +219,50 @@ def _combine(vs: list, load: Load, length: np.ndarray) -> np.ndarray:
             top = np.maximum(top, 0.0)
         return top / length
 
+
+
+def _closure_polygon(bounds: _Bounds) -> np.ndarray | None:
+    """The corners of ``{(s, t) in [0, 1]²: d × c has its sign for the four sides}`` (float).
+
+    Condition (1) is four inequalities linear in (s, t) (module docstring): the
+    square clipped by four half-planes (Sutherland–Hodgman), None when empty.
+    """
+    den = bounds.den
+    coef = [((den.f0[0][n, 0] + den.f0[1][n, 0]) / 2, (den.fs[0][n, 0] + den.fs[1][n, 0]) / 2,
+             (den.ft[0][n, 0] + den.ft[1][n, 0]) / 2) for n in range(4)]
+    poly = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    for c0, cs, ct in coef:
+        out = []
+        for k, p in enumerate(poly):
+            q = poly[k - 1]
+            fp, fq = c0 + cs * p[0] + ct * p[1], c0 + cs * q[0] + ct * q[1]
+            if (fp >= 0) != (fq >= 0):
+                u = fq / (fq - fp)
+                out.append((q[0] + u * (p[0] - q[0]), q[1] + u * (p[1] - q[1])))
+            if fp >= 0:
+                out.append(p)
+        poly = out
+        if not poly:
+            return None
+    return np.array(poly)
+
+
+def _inside(poly: np.ndarray, s: np.ndarray, t: np.ndarray, eps: float
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """The nearest points of the polygon's boundary to (s, t), moved ``eps`` to its centroid."""
+    s, t = np.atleast_1d(s), np.atleast_1d(t)
+    if not s.size:
+        return s, t
+    a, b = poly, np.roll(poly, -1, axis=0)
+    e = b - a
+    ee = np.where((e * e).sum(axis=1) > 0, (e * e).sum(axis=1), 1.0)
+    ps = np.stack([s, t], axis=-1)[:, None, :]
+    u = np.clip(((ps - a) * e).sum(axis=-1) / ee, 0.0, 1.0)
+    foot = a + u[..., None] * e
+    k = np.argmin(((foot - ps) ** 2).sum(axis=-1), axis=1)
+    p = foot[np.arange(len(s)), k]
+    p = p + eps * (poly.mean(axis=0) - p)
+    return np.clip(p[:, 0], 0.0, 1.0), np.clip(p[:, 1], 0.0, 1.0)
 
 
 def _halve(lo: np.ndarray, hi: np.ndarray, olo: np.ndarray, ohi: np.ndarray, which: np.ndarray
@@ -211,6 +292,13 @@ class EdgeOptimum:
         False when the search stopped at :data:`MAX_BOXES` (then ``lower`` still holds).
     boxes : int
         Boxes bounded in all.
+    margin : float
+        How far inside condition (1) the reported pair is (:func:`cone_margin`, radians).
+    on_boundary : bool
+        ``margin <= BOUNDARY``: the least squeeze is approached on the boundary of
+        condition (1) (under a tilt range it stays finite there); the pair reported
+        is force-closure, just inside it, and ``value`` is within ``tol`` of the
+        infimum, which no force-closure pair attains.
     """
 
     s: float
@@ -220,6 +308,8 @@ class EdgeOptimum:
     tol: float
     certified: bool
     boxes: int
+    margin: float = math.nan
+    on_boundary: bool = False
 
 
 def refine_edge_pair(pair: EdgePair, load: Load, *, tol: float = DEFAULT_TOL,
@@ -265,6 +355,13 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
 
     st = np.asarray(list(start), float).reshape(-1, 2)
     consider(st[:, 0], st[:, 1])
+    # the force-closure set is a convex polygon of (s, t): its corners (nudged inside), and
+    # below the points of its boundary nearest the boxes that straddle it, are tried too
+    # (where the least squeeze is approached on the boundary of (1) under a tilt range)
+    poly = _closure_polygon(bounds)
+    nudge = max(1e-3 * tol, 1e-12)
+    if poly is not None:
+        consider(*_inside(poly, poly[:, 0], poly[:, 1], nudge))
     n0 = 8
     g = np.arange(n0 + 1) / n0
     s0, t0 = np.meshgrid(g[:-1], g[:-1], indexing="ij")
@@ -278,6 +375,10 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
         consider(np.concatenate([(s_lo + s_hi) / 2, s_lo, s_lo, s_hi, s_hi]),
                  np.concatenate([(t_lo + t_hi) / 2, t_lo, t_hi, t_lo, t_hi]))
         lower, feas = bounds.lower((s_lo, s_hi), (t_lo, t_hi))
+        if poly is not None and not load.any_orientation:
+            near = feas & bounds.straddle & (lower < best_v * (1 - tol))
+            consider(*_inside(poly, (s_lo[near] + s_hi[near]) / 2,
+                              (t_lo[near] + t_hi[near]) / 2, nudge))
         count += s_lo.size
         keep = feas & (lower < best_v * (1 - tol))
         drop = feas & ~keep
@@ -297,5 +398,7 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
     if not np.isfinite(best_v):
         return None  # no force-closure pair (or none at a box's centre or corner)
     lower = max(0.0, min(pruned, best_v))  # q >= 0
+    margin = float(cone_margin(pair, *best_st))
     return EdgeOptimum(best_st[0], best_st[1], best_v, lower, float(tol),
-                       certified and best_v - lower <= tol * best_v, count)
+                       certified and best_v - lower <= tol * best_v, count, margin,
+                       margin <= BOUNDARY)

@@ -5,7 +5,11 @@
 worst-case squeeze over every force-closure pair of points of the two edges
 (:func:`graspcompass.planning._exact.refine_edge_pair`: branch and bound with
 outward-rounded interval lower bounds of ``m g max_n |V_n| / (x1 + x2)``,
-eqs. (17), (28)-(39), condition (1)).
+eqs. (17), (28)-(39), condition (1); or, under a tilt range, of
+``max(0, max_n M_n + A|V_n|) / (x1 + x2)``).  What each result proves is in
+:meth:`ExactPair.claim`: the hypotheses (the edges, condition (1), the
+orientations, the float data), the tolerance, and whether the least squeeze is
+approached on the boundary of condition (1).
 """
 
 from __future__ import annotations
@@ -55,6 +59,17 @@ class ExactPair:
         The best sampled pair on these two edges (``nan`` if none is force-closure).
     boxes : int
         Boxes bounded by the search.
+    cone_margin : float
+        How far inside condition (1) the reported pair is, radians: the least angle
+        between the line of contact and a side of either friction cone.
+    on_boundary : bool
+        The least squeeze is approached on the boundary of condition (1)
+        (``cone_margin <= 1e-6`` rad): under a tilt range the squeeze stays finite
+        there; no force-closure pair attains the infimum, the reported pair
+        (just inside, at the edge of a friction cone: no margin for error in μ or
+        in placing the jaws) is within ``tol`` of it.
+    orientations : str
+        The orientations of the worst case (:meth:`PlanResult.orientations`).
     """
 
     rank: int
@@ -68,6 +83,25 @@ class ExactPair:
     certified: bool
     sampled_squeeze: float
     boxes: int
+    cone_margin: float = math.nan
+    on_boundary: bool = False
+    orientations: str = "every orientation"
+
+    def claim(self) -> str:
+        """What is proved, with its hypotheses, in one sentence."""
+        i, j = self.edges
+        out = (f"every pair of points of edges {i} and {j} meeting condition (1) (force closure) "
+               f"needs at least {self.lower_bound:.9g} N to hold the part in {self.orientations}"
+               f" (outward-rounded interval bounds on the float data)")
+        if not self.certified:
+            return out + f"; not closed: the search stopped with the gap above tol = {self.tol:g}"
+        out += (f"; the pair reported needs {self.squeeze:.9g} N, within tol = {self.tol:g} of "
+                f"the least")
+        if self.on_boundary:
+            out += (" (the least is approached on the boundary of condition (1), where a "
+                    "contact is at the edge of a friction cone, and attained by no "
+                    "force-closure pair)")
+        return out
 
     @property
     def improvement(self) -> float:
@@ -82,7 +116,9 @@ class ExactPair:
                 "normals": [list(n) for n in self.normals], "squeeze_N": self.squeeze,
                 "lower_bound_N": self.lower_bound, "tolerance": self.tol,
                 "certified": self.certified, "sampled_squeeze_N": _num(self.sampled_squeeze),
-                "improvement": _num(imp), "boxes": self.boxes}
+                "improvement": _num(imp), "boxes": self.boxes,
+                "cone_margin_rad": _num(self.cone_margin), "on_boundary": self.on_boundary,
+                "proves": self.claim()}
 
 
 def _num(v: float) -> float | None:
@@ -93,8 +129,8 @@ def _param(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> np.ndarray:
     return ((p - a) @ e) / float(e @ e)
 
 
-def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DEFAULT_TOL
-                ) -> tuple[ExactPair, ...]:
+def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DEFAULT_TOL,
+                orientations: str = "every orientation") -> tuple[ExactPair, ...]:
     """Refine the ``count`` best distinct edge pairs of ``plan`` (best sampled pairs first).
 
     Parameters
@@ -108,6 +144,8 @@ def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DE
         Newtons per unit of q: ``S_f m`` per jaw, twice that for the total.
     tol : float
         Relative tolerance of each proof.
+    orientations : str
+        How the orientations are described in :meth:`ExactPair.claim`.
 
     Returns
     -------
@@ -142,6 +180,7 @@ def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DE
         out.append(ExactPair(0, (int(ea), int(eb)), (opt.s, opt.t),
                              (tuple(map(float, pts[0])), tuple(map(float, pts[1]))),  # type: ignore[arg-type]
                              ep.normals(), opt.value * scale, opt.lower * scale, opt.tol,
-                             opt.certified, best_sampled, opt.boxes))
+                             opt.certified, best_sampled, opt.boxes, opt.margin,
+                             opt.on_boundary, orientations))
     out.sort(key=lambda p: p.squeeze)
     return tuple(dataclasses.replace(p, rank=r + 1) for r, p in enumerate(out))
