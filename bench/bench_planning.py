@@ -19,7 +19,10 @@ plate), sampled by :func:`graspcompass.planning.sample_contacts`:
     (s, t) on the same edge pair, refined until its least value is within the same
     1e-6 of the proved optimum or at its largest size (4096², 1024² with --quick;
     then the ratio is a lower bound of the speed-up), and proves nothing;
-    and how much the proved optimum saves over the best sampled pair.
+    and how much the proved optimum saves over the best sampled pair;
+(d) the same under a tilt range (``plan --gravity --tilt``: the worst case over the tilts
+    |ρ| <= τ of gravity), where the least squeeze may be approached on the boundary of
+    condition (1) (a trapeze with an offset centre of mass shows it).
 
 It prints the time per pair of each, whether both agree on force closure (they differ on
 *expanding* grips, two contacts pushing apart, e.g. on the bracket's notch walls: ε > 0,
@@ -58,6 +61,7 @@ from graspcompass.planning._exact import (  # noqa: E402
 
 BRACKET = Path(__file__).resolve().parents[1] / "docs" / "_static" / "outlines" / "bracket.svg"
 PLATE = [(-0.05, -0.03), (0.05, -0.03), (0.05, 0.03), (-0.05, 0.03)]
+TRAPEZE = [(-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03)]
 MU = 0.5
 
 
@@ -122,12 +126,24 @@ def run(name: str, outline: object, samples: int, fc_pairs: int | None) -> None:
           f"(ε = {eps[sel == best_b][0]:.4f} vs {_eps_of(plan, sel, eps, int(plan.order[0]))})")
 
 
-def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4096) -> None:
-    """(c): the proved optimum per edge pair, timed against a dense grid of the same accuracy."""
-    plan = plan_contacts(outline, mu=MU, mass=1.0, samples=samples, exact=pairs)
-    load = Load(g=9.80665)
+def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4096,
+          gravity: tuple[float, float] | None = None, tilt_deg: float | None = None,
+          com: tuple[float, float] | None = None) -> None:
+    """(c): the proved optimum per edge pair, timed against a dense grid of the same accuracy.
+
+    (d) with ``gravity`` and ``tilt_deg``: the same under the tilts |ρ| <= τ of gravity.
+    """
+    if gravity is None:
+        plan = plan_contacts(outline, mu=MU, mass=1.0, samples=samples, exact=pairs, com=com)
+        load = Load(g=9.80665)
+        head = "(c) exact along"
+    else:
+        plan = plan_contacts(outline, mu=MU, mass=1.0, samples=samples, exact=pairs, com=com,
+                             gravity=gravity, tilt=f"{tilt_deg}deg")
+        load = Load(g=9.80665, gravity=_unit(gravity), tau=math.radians(tilt_deg))
+        head = f"(d) {name}, tilts of ±{tilt_deg:g}° of gravity {gravity}: exact along"
     ring = np.asarray(plan.outline)
-    print(f"  (c) exact along the {len(plan.exact)} best edge pairs (tolerance 1e-6):")
+    print(f"  {head} the {len(plan.exact)} best edge pairs (tolerance 1e-6):")
     for p in plan.exact:
         ea, eb = p.edges
         ep = EdgePair.of(ring[ea], ring[ea + 1], ring[eb], ring[eb + 1], plan.com, MU)
@@ -148,10 +164,16 @@ def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4
         t_grid = time.perf_counter() - t0
         reached = "within 1e-6" if q <= opt.value * (1 + 1e-6) else f"{q / opt.value - 1:.1e} above"
         print(f"      edges {ea:>2},{eb:>2}: {p.squeeze:.6f} N/kg (proved >= {p.lower_bound:.6f}, "
-              f"{'certified' if opt.certified else 'NOT closed'}, {opt.boxes} boxes), best "
+              f"{'certified' if opt.certified else 'NOT closed'}, {opt.boxes} boxes"
+              f"{', on the boundary of (1)' if opt.on_boundary else ''}), best "
               f"sample {p.sampled_squeeze:.6f}: {100 * p.improvement:.2f}% less")
         print(f"        branch and bound {t_bb * 1e3:7.1f} ms; grid {n}×{n} ({reached}) "
               f"{t_grid * 1e3:7.1f} ms; ratio grid/B&B = {t_grid / t_bb:.2f}")
+
+
+def _unit(v: tuple[float, float]) -> tuple[float, float]:
+    n = math.hypot(*v)
+    return v[0] / n, v[1] / n
 
 
 def _mm(c: tuple) -> str:
@@ -175,6 +197,11 @@ def main() -> None:
     exact("bracket.svg", read_outline(BRACKET), samples, 2 if args.quick else 3, largest)
     run("plate 100 × 60 mm", PLATE, samples, sub)
     exact("plate", PLATE, samples, 2, largest)
+    print("under a tilt range (plan --gravity X,Y --tilt ANGLE):")
+    exact("bracket.svg", read_outline(BRACKET), samples, 2 if args.quick else 3, largest,
+          gravity=(0.6, -0.8), tilt_deg=30)
+    exact("trapeze 100/90 × 60 mm", TRAPEZE, samples, 2, largest, gravity=(0.0, -1.0),
+          tilt_deg=25, com=(0.01, 0.005))
 
 
 if __name__ == "__main__":
