@@ -375,12 +375,17 @@ def test_exact_bracket_against_brute_force_and_samples(mu, com) -> None:
     assert plan.exact[0].squeeze <= plan.top(1)[0].squeeze
 
 
-def test_exact_adjacent_edges_of_a_triangle() -> None:
-    """Edges meeting at a vertex (where (s, t) is singular): still proved, against the grid."""
+@pytest.mark.parametrize("mu", [0.7, 1.2])
+def test_exact_adjacent_edges_of_a_triangle(mu) -> None:
+    """Edges meeting at a vertex (where (s, t) is singular): still proved, against the grid.
+
+    For μ >= 1 a cone side can be ⟂ d, so no single |V_n| stays away from 0 at the vertex;
+    the bound is joint over the sides (:class:`graspcompass.planning._bounds._Vertex`).
+    """
     tri = [(0, 0), (0.1, 0), (0.05, 0.05 * math.sqrt(3))]
-    plan = plan_contacts(tri, mu=0.7, samples=30, g=G, exact=1)
+    plan = plan_contacts(tri, mu=mu, samples=30, g=G, exact=1)
     p = plan.exact[0]
-    grid = brute_force(np.asarray(plan.outline), *p.edges, plan.com, 0.7)
+    grid = brute_force(np.asarray(plan.outline), *p.edges, plan.com, mu)
     assert p.certified and p.lower_bound <= grid * (1 + 1e-12) <= p.squeeze * (1 + 1e-3)
     assert p.squeeze <= p.sampled_squeeze
 
@@ -436,15 +441,35 @@ def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, t
     assert p.to_dict()["on_boundary"] is boundary
 
 
-@pytest.mark.parametrize("seed", [0, 1])
-def test_box_lower_bounds_hold_across_the_boundary_of_condition_1(seed) -> None:
-    """Each box's lower bound is at most q at every force-closure point sampled in it.
-
-    Random edge pairs, tilt ranges and accelerations, random boxes from 1e-4 to 0.1 wide,
-    many straddling the boundary of (1) (where κ is unbounded); μ up to 1.5.
-    """
+def _boxes_hold(pair, load, rng, n=200, corner=False):
+    """Random boxes 1e-4 to 0.1 wide (half of them at (s, t) = (1, 0) with ``corner``): each
+    box's lower bound is at most q at every force-closure point sampled in it; returns how
+    many straddle the boundary of (1)."""
     from graspcompass.planning._bounds import _Bounds
 
+    bounds = _Bounds(pair, load)
+    c, h = rng.uniform(0, 1, (n, 2)), 10 ** rng.uniform(-4, -1, n)
+    if corner:
+        c[: n // 2] = np.stack([1 - 10 ** rng.uniform(-4, -0.5, n // 2),
+                                10 ** rng.uniform(-4, -0.5, n // 2)], axis=-1)
+    s_box = np.clip(c[:, 0] - h, 0, 1), np.clip(c[:, 0] + h, 0, 1)
+    t_box = np.clip(c[:, 1] - h, 0, 1), np.clip(c[:, 1] + h, 0, 1)
+    lower, feasible = bounds.lower(s_box, t_box)
+    u = np.linspace(0, 1, 15)
+    S = s_box[0][:, None, None] + (s_box[1] - s_box[0])[:, None, None] * u[None, :, None]
+    T = t_box[0][:, None, None] + (t_box[1] - t_box[0])[:, None, None] * u[None, None, :]
+    q = edge_pair_values(pair, load, S, T).reshape(n, -1)
+    has = np.isfinite(q).any(axis=1)
+    least = np.where(has, np.nanmin(np.where(np.isfinite(q), q, np.inf), axis=1), np.inf)
+    assert feasible[has].all()  # no box with a force-closure point is dropped
+    assert np.all(lower[has] <= least[has] * (1 + 1e-12))
+    return int((feasible & bounds.straddle).sum())
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_box_lower_bounds_hold_across_the_boundary_of_condition_1(seed) -> None:
+    """Random edge pairs, tilt ranges and accelerations, many boxes straddling the boundary
+    of (1) (where κ is unbounded); μ up to 1.5."""
     rng = np.random.default_rng(seed)
     straddling = 0
     for _ in range(6):
@@ -455,22 +480,20 @@ def test_box_lower_bounds_hold_across_the_boundary_of_condition_1(seed) -> None:
         ang = rng.uniform(-math.pi, math.pi)
         load = Load(g=G, accel=float(rng.choice([0.0, 3.0, 20.0])),
                     gravity=(math.cos(ang), math.sin(ang)), tau=float(rng.uniform(0, 1.2)))
-        bounds = _Bounds(pair, load)
-        n = 200
-        c, h = rng.uniform(0, 1, (n, 2)), 10 ** rng.uniform(-4, -1, n)
-        s_box = np.clip(c[:, 0] - h, 0, 1), np.clip(c[:, 0] + h, 0, 1)
-        t_box = np.clip(c[:, 1] - h, 0, 1), np.clip(c[:, 1] + h, 0, 1)
-        lower, feasible = bounds.lower(s_box, t_box)
-        straddling += int((feasible & bounds.straddle).sum())
-        u = np.linspace(0, 1, 15)
-        S = s_box[0][:, None, None] + (s_box[1] - s_box[0])[:, None, None] * u[None, :, None]
-        T = t_box[0][:, None, None] + (t_box[1] - t_box[0])[:, None, None] * u[None, None, :]
-        q = edge_pair_values(pair, load, S, T).reshape(n, -1)
-        has = np.isfinite(q).any(axis=1)
-        least = np.where(has, np.nanmin(np.where(np.isfinite(q), q, np.inf), axis=1), np.inf)
-        assert feasible[has].all()  # no box with a force-closure point is dropped
-        assert np.all(lower[has] <= least[has] * (1 + 1e-12))
+        straddling += _boxes_hold(pair, load, rng)
     assert straddling >= 10
+
+
+def test_box_lower_bounds_hold_at_a_shared_vertex_for_mu_above_1() -> None:
+    """Two edges of a triangle meeting at a vertex, μ from 0.8 to 2.5, every orientation."""
+    rng = np.random.default_rng(3)
+    for _ in range(6):
+        v = rng.uniform(-1, 1, 6)
+        P = np.array([(0.0, 0.0), (0.1 + 0.05 * v[0], 0.02 * v[1]),
+                      (0.03 * v[2], 0.1 + 0.05 * v[3])])
+        com = P.mean(axis=0) + 0.01 * v[4:6]
+        pair = EdgePair.of(P[0], P[1], P[1], P[2], com, rng.uniform(0.8, 2.5))
+        _boxes_hold(pair, Load(g=G, accel=float(rng.choice([0.0, 3.0]))), rng, corner=True)
 
 
 def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:

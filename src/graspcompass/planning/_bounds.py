@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -51,6 +51,9 @@ class _Bounds:
     def __init__(self, pair: EdgePair, load: Load) -> None:
         a0, ea, b0, eb, o = (tuple(_pt(v) for v in p) for p in (pair.a0, pair.ea, pair.b0,
                                                                   pair.eb, pair.com))
+        if pair.a1 is not None and pair.b1 is not None:  # the exact differences, enclosed
+            ea = tuple(_sub(_pt(pair.a1[k]), a0[k]) for k in (0, 1))
+            eb = tuple(_sub(_pt(pair.b1[k]), b0[k]) for k in (0, 1))
         zero = (_pt(0.0), _pt(0.0))
         d = _vec((_sub(a0[0], b0[0]), _sub(a0[1], b0[1])), ea, (_neg(eb[0]), _neg(eb[1])))
         r = (_vec((_sub(a0[0], o[0]), _sub(a0[1], o[1])), ea, zero),
@@ -78,6 +81,7 @@ class _Bounds:
         # on (1) the angle between d and a cone side is in (0, 2ξ): |κ| >= cot 2ξ
         # = (1 − μ²)/(2μ) when μ < 1 (the margin covers its rounding)
         self.kmin = max(0.0, (1 - pair.mu**2) / (2 * pair.mu) * (1 - 1e-12) - 1e-300)
+        self.vertex = _Vertex.of(pair, self.num, self.den)
 
     def _fields(self, s: tuple, t: tuple, grad: bool) -> tuple:
         """d, |d| over the boxes; per side (rows): V, d × c may be > 0, V_s, V_t, d × c > 0."""
@@ -121,6 +125,11 @@ class _Bounds:
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             norm_lo = np.maximum(norm_lo, _dn(_dn(kmag * f["rnorm"][0]) - _up(l4[1] * 0.5)))
             natural = _over_length(self._top(v, norm_lo), l4)
+            if self.vertex is not None and ld.any_orientation:
+                # max_n |V_n| >= K − |d|/2, K jointly over the sides (μ >= 1 at a vertex)
+                k = self.vertex.least(s, t, f["rnorm"][0])
+                joint = _dn(_dn(k / l4[1][0]) - 0.5) * _dn(np.float64(ld.g) + np.float64(ld.accel))
+                natural = np.maximum(natural, np.where(np.isnan(joint), -np.inf, joint)[None])
             if not ld.any_orientation:
                 natural = np.maximum(natural, _over_length(
                     self._blow(d, f, norm_lo, l4, s, t), l4))
@@ -233,6 +242,75 @@ class _Bounds:
 
 
 _PAIRS = np.array([(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]).T
+
+
+class _Vertex:
+    """Where the two edges meet at a vertex: a lower bound of ``max_n |κ_n| |r_n|`` by direction.
+
+    With ``(s, t) = (sv, tv)`` the common vertex (exactly, in the float data) and
+    ``σ = |s − sv|``, ``τ = |t − tv|``, ``d`` is linear in (σ, τ) and so are the
+    numerator and denominator of each κ_n: κ_n depends on ``λ = τ/(σ + τ)`` alone.
+    For μ >= 1 some κ_n vanish (a cone side ⟂ d), so no single side's |V_n| is
+    bounded away from 0 near the vertex, but not all at once: a table of interval
+    bounds of each |κ_n| over 256 cells of λ (cells off condition (1) dropped)
+    gives ``max_n |V_n| >= min over the box's λ of max_n |κ_n| |r_n| − |d|/2``, and
+    q grows like 1/|d| towards the vertex.
+    """
+
+    CELLS = 256
+
+    def __init__(self, sv: float, tv: float, kabs: np.ndarray, ok: np.ndarray) -> None:
+        self.sv, self.tv, self.kabs, self.ok = sv, tv, kabs, ok
+
+    @classmethod
+    def of(cls, pair: EdgePair, num: Any, den: Any) -> _Vertex | None:
+        from fractions import Fraction as F
+
+        def ends(p0: tuple, p1: tuple | None, e: tuple) -> tuple:
+            far = p1 if p1 is not None else tuple(F(p0[k]) + F(e[k]) for k in (0, 1))
+            return tuple(F(v) for v in p0), tuple(F(v) for v in far)
+
+        ea, eb = ends(pair.a0, pair.a1, pair.ea), ends(pair.b0, pair.b1, pair.eb)
+        for sv, tv in ((1, 0), (0, 1), (0, 0), (1, 1)):
+            if ea[sv] == eb[tv]:
+                break
+        else:
+            return None
+        # s − sv = sa σ, t − tv = sb τ: the forms are ρ ((1 − λ) sa f_s + λ sb f_t), ρ = σ + τ
+        sa, sb = (1.0 if sv == 0 else -1.0), (1.0 if tv == 0 else -1.0)
+        k = np.arange(cls.CELLS + 1) / cls.CELLS  # exact
+        lam = (k[:-1], k[1:])
+        one = (_dn(1.0 - lam[1]), _up(1.0 - lam[0]))
+
+        def form(f: Any) -> tuple:
+            fs = (f.fs[0] * sa, f.fs[1] * sa) if sa > 0 else (-f.fs[1], -f.fs[0])
+            ft = (f.ft[0] * sb, f.ft[1] * sb) if sb > 0 else (-f.ft[1], -f.ft[0])
+            return _add(_mul((one[0][None], one[1][None]), fs),
+                        _mul((lam[0][None], lam[1][None]), ft))
+
+        with np.errstate(all="ignore"):
+            kap = _div_pos(form(num), form(den))
+        kabs = np.where(kap[0] > 0, kap[0], np.where(kap[1] < 0, -kap[1], 0.0))
+        ok = (form(den)[1] > 0).all(axis=0)
+        return cls(sv, tv, kabs, ok)
+
+    def least(self, s: tuple, t: tuple, rlo: np.ndarray) -> np.ndarray:
+        """Per box, a lower bound of ``max_n |κ_n| |r_n|`` (``rlo``: |r_n| >= rlo, (4, boxes))."""
+        sig = (s[0] - self.sv, s[1] - self.sv) if self.sv == 0 else (self.sv - s[1], self.sv - s[0])
+        tau = (t[0] - self.tv, t[1] - self.tv) if self.tv == 0 else (self.tv - t[1], self.tv - t[0])
+        sig = (np.maximum(sig[0], 0.0), sig[1])
+        tau = (np.maximum(tau[0], 0.0), tau[1])
+        with np.errstate(invalid="ignore", divide="ignore"):
+            lo = np.where(tau[0] > 0, _dn(tau[0] / _up(sig[1] + tau[0])), 0.0)
+            hi = np.where(tau[1] > 0, _up(tau[1] / _dn(sig[0] + tau[1])), 1.0)
+        n = self.CELLS
+        first = np.clip(np.floor(np.nan_to_num(lo, nan=0.0) * n), 0, n - 1).astype(int)
+        last = np.clip(np.ceil(np.nan_to_num(hi, nan=1.0) * n), 1, n).astype(int)
+        cells = np.arange(n)
+        inside = (cells[:, None] >= first[None]) & (cells[:, None] < last[None]) & self.ok[:, None]
+        # max over the sides of |κ_n| |r_n| in each cell, then the least over the box's cells
+        m = _dn(self.kabs[:, :, None] * rlo[:, None, :]).max(axis=0)
+        return np.where(inside, m, np.inf).min(axis=0)
 
 
 def _over_length(x: np.ndarray, l4: tuple) -> np.ndarray:

@@ -127,13 +127,18 @@ class EdgePair:
     eb: tuple[float, float]
     com: tuple[float, float]
     mu: float
+    #: The edges' second vertices, when given (:meth:`of`): the proof is then about the
+    #: segments ``a0 → a1``, ``b0 → b1`` exactly (``ea``, ``eb`` are their rounded
+    #: differences, for the float evaluation only), so that edges sharing a vertex meet.
+    a1: tuple[float, float] | None = None
+    b1: tuple[float, float] | None = None
 
     @classmethod
     def of(cls, a0: Any, a1: Any, b0: Any, b1: Any, com: Any, mu: float) -> EdgePair:
         """The edges ``a0 → a1`` and ``b0 → b1`` (counter-clockwise: material on the left)."""
         f = [(float(p[0]), float(p[1])) for p in (a0, a1, b0, b1, com)]
         return cls(f[0], (f[1][0] - f[0][0], f[1][1] - f[0][1]), f[2],
-                   (f[3][0] - f[2][0], f[3][1] - f[2][1]), f[4], float(mu))
+                   (f[3][0] - f[2][0], f[3][1] - f[2][1]), f[4], float(mu), f[1], f[3])
 
     def points(self, s: Any, t: Any) -> tuple[np.ndarray, np.ndarray]:
         """The contacts a(s), b(t), shape (..., 2)."""
