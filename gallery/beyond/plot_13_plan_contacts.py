@@ -102,6 +102,21 @@ print(tilted.orientations())
 for p in tilted.top(3):
     a, b = (f"({x * 1e3:.1f}, {y * 1e3:.1f})" for x, y in p.contacts)
     print(f"#{p.rank}: {a} – {b} mm: {p.squeeze:.3f} N per jaw")
+
+# %%
+# The proof under the tilt range: ``plan.exact`` again, over the same orientations.  Here
+# the least squeeze is approached on the boundary of condition (1): as one contact reaches
+# the edge of its friction cone the squeeze stays finite (under every orientation it would
+# grow without bound), so the optimum is an infimum that no force-closure pair attains.
+# ``on_boundary`` says so, ``cone_margin`` is how far inside the pair printed is (radians),
+# and ``claim()`` states what is proved.  Such a pair has no margin for error in μ: back
+# off from it.
+for p in tilted.exact:
+    a, b = (f"({x * 1e3:.2f}, {y * 1e3:.2f})" for x, y in p.contacts)
+    print(f"edges {p.edges}: {a} – {b} mm, {p.squeeze:.5f} N (proved >= {p.lower_bound:.5f}"
+          f"{', on the boundary of (1)' if p.on_boundary else ''}); "
+          f"{100 * p.improvement:.2f}% less than the best sample")
+print(tilted.exact[0].claim())
 fig, ax = plt.subplots(figsize=(7, 4.6), layout="constrained")
 draw_plan_outline(ax, tilted, top=3)
 plt.show()
