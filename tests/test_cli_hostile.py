@@ -12,7 +12,6 @@ import json
 import os
 import subprocess
 import sys
-import time
 import warnings
 from pathlib import Path
 
@@ -21,6 +20,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import graspcompass
+from _hang import no_hang
 from graspcompass import _cli_k, cli
 from graspcompass._cli_animate import bounded
 from graspcompass.cli import main
@@ -45,17 +45,19 @@ def files(root: Path) -> set[str]:
 
 
 def refused(capsys, argv: list[str], fragment: str = "", bound: float | None = None) -> str:
-    """Run ``argv``: status 2, nothing on stdout, one line on stderr holding ``fragment``."""
-    start = time.perf_counter()
-    code = main(argv)
-    elapsed = time.perf_counter() - start
+    """Run ``argv``: status 2, nothing on stdout, one line on stderr holding ``fragment``.
+
+    ``bound`` (seconds) is what the refusal takes on a quiet machine (bench/bench_cli.py
+    measures it); here only a hang is caught, at 30 times that (no timed assertions: a
+    loaded machine is not a defect).
+    """
+    with no_hang(" ".join(argv), 30 * (bound or 2.0)):
+        code = main(argv)
     out, err = capsys.readouterr()
     assert code == 2, (argv, out[-300:], err)
     assert out == ""
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
     assert fragment in err, err
-    if bound is not None:
-        assert elapsed < bound, f"{argv} took {elapsed:.2f} s"
     return err
 
 
