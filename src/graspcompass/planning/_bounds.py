@@ -164,14 +164,63 @@ class _Bounds:
             ok = f["strict"] & (l4[0] > 0) & (nc > 0) & np.isfinite(phic[0])
             for g_ in grads:
                 ok &= np.isfinite(g_[0]) & np.isfinite(g_[1])
-            mv = _add(_add(phic, _mul(steps[0], grads[0])), _mul(steps[1], grads[1]))[0]
-            best = np.maximum(np.where(np.isnan(natural), -np.inf, natural),
-                              np.where(ok, mv, -np.inf)).max(axis=0)
-            best = np.maximum(best, _pairs(phic, grads, steps, ok))
+            forms = _forms(phic, grads, steps, ok)
+            straddle = feasible & ~f["strict"].all(axis=0)  # boxes across the boundary of (1)
+            if straddle.any():
+                # the forms are concave in the step: over the force-closure part of the
+                # box (a polygon), their least value is at one of its corners
+                k = np.flatnonzero(straddle)
+                sub = [((g[0][:, k], g[1][:, k])) for g in grads]
+                least = np.full((10, k.size), np.inf)
+                for ps, pt in self._corners((s[0][k], s[1][k]), (t[0][k], t[1][k])):
+                    st_ = [((_dn(p_ - c_)[None], _up(p_ - c_)[None]))
+                           for p_, c_ in ((ps, sc[k]), (pt, tc[k]))]
+                    val = _forms((phic[0][:, k], phic[1][:, k]), sub, st_, ok[:, k])
+                    least = np.minimum(least, np.where(np.isnan(ps), np.inf, val))
+                forms[:, k] = np.maximum(forms[:, k], np.where(np.isfinite(least), least,
+                                                               forms[:, k]))
+            best = np.maximum(np.where(np.isnan(natural), -np.inf, natural).max(axis=0),
+                              forms.max(axis=0))
         if not ld.any_orientation:
             best = np.maximum(best, 0.0)
-        self.straddle = feasible & ~f["strict"].all(axis=0)  # boxes across the boundary of (1)
+        self.straddle = straddle
         return np.where(feasible, best, np.inf), feasible
+
+    def _corners(self, s: tuple, t: tuple) -> list:
+        """Points (s, t) per box whose hull holds the box's force-closure part (nan: none).
+
+        The box's corners, where its sides cross the lines ``d × c_n = 0`` and where
+        those lines cross, kept when inside the box and on the force-closure side of
+        every line, each line moved outwards by 1e-12 of its size (covering the
+        rounding of its coefficients and of these points).
+        """
+        den = self.den
+        lines = []
+        for n in range(4):
+            a, b, c = ((getattr(den, k)[0][n, 0] + getattr(den, k)[1][n, 0]) / 2
+                       for k in ("f0", "fs", "ft"))
+            size = abs(a) + abs(b) + abs(c)
+            lines.append((a + 1e-12 * size, b, c, size))
+        pts = [(s[i], t[j]) for i in (0, 1) for j in (0, 1)]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for a, b, c, _ in lines:
+                for i in (0, 1):
+                    pts.append((s[i], -(a + b * s[i]) / c * np.ones_like(s[i])))
+                    pts.append((-(a + c * t[i]) / b * np.ones_like(t[i]), t[i]))
+            for n in range(4):
+                for m in range(n + 1, 4):
+                    (a1, b1, c1, _), (a2, b2, c2, _) = lines[n], lines[m]
+                    det = b1 * c2 - b2 * c1
+                    ps, pt = (c1 * a2 - c2 * a1) / det, (b2 * a1 - b1 * a2) / det
+                    pts.append((np.full_like(s[0], ps), np.full_like(s[0], pt)))
+        out = []
+        for ps, pt in pts:
+            ps, pt = np.clip(ps, s[0], s[1]), np.clip(pt, t[0], t[1])
+            good = np.isfinite(ps) & np.isfinite(pt)
+            for a, b, c, size in lines:
+                good &= a + b * ps + c * pt >= -1e-12 * size
+            out.append((np.where(good, ps, np.nan), np.where(good, pt, np.nan)))
+        return out
 
     def _blow(self, d: tuple, f: dict, norm_lo: np.ndarray, l4: tuple, s: tuple, t: tuple
               ) -> np.ndarray:
@@ -320,6 +369,13 @@ def _over_length(x: np.ndarray, l4: tuple) -> np.ndarray:
     return np.where(np.isnan(q), -np.inf, q)
 
 
+def _forms(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:
+    """The mean-value forms' lower ends, per side (4 rows) and per pair of sides (6 rows)."""
+    mv = _add(_add(phic, _mul(steps[0], grads[0])), _mul(steps[1], grads[1]))[0]
+    return np.concatenate([np.where(ok & ~np.isnan(mv), mv, -np.inf),
+                           _pairs(phic, grads, steps, ok)])
+
+
 def _pairs(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:
     """The mean-value form of ``λ φ_n + (1 − λ) φ_m <= max_n φ_n`` for the six pairs n < m.
 
@@ -343,4 +399,4 @@ def _pairs(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:
         gc = _add(_mul(li, (g[0][n], g[1][n])), _mul(mi, (g[0][m], g[1][m])))
         val = _add(val, _mul((st[0][0][None], st[1][0][None]), gc))
     good = ok[n] & ok[m] & np.isfinite(val[0])
-    return np.where(good, val[0], -np.inf).max(axis=0)
+    return np.where(good, val[0], -np.inf)

@@ -51,8 +51,9 @@ points of the boundary nearest them (the force-closure set is a convex polygon
 of (s, t), four half-planes in the square), moved ``1e-3 tol`` inside, are tried
 as upper bounds.  The result then states it: ``on_boundary`` when the reported
 pair is within :data:`BOUNDARY` radians of (1) (:func:`cone_margin`), ``value``
-within ``tol`` of the infimum over the force-closure pairs, which equals the
-least q over their closure (q extended by continuity).
+within ``tol`` of the infimum over the force-closure pairs (q tends to a finite
+limit on part of the boundary, where the blowing ``V_n`` turns away from every
+tilted load, and to +∞ on the rest; the infimum can sit where the two meet).
 
 Examples
 --------
@@ -402,6 +403,9 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
                                         np.concatenate([cut_t, cut_t[cut_s]]))
     if not np.isfinite(best_v):
         return None  # no force-closure pair (or none at a box's centre or corner)
+    if poly is not None and not load.any_orientation:
+        # the nearest point of the boundary of (1), if no worse: where the least is approached
+        consider(*_inside(poly, np.array([best_st[0]]), np.array([best_st[1]]), nudge))
     lower = max(0.0, min(pruned, best_v))  # q >= 0
     margin = float(cone_margin(pair, *best_st))
     return EdgeOptimum(best_st[0], best_st[1], best_v, lower, float(tol),
