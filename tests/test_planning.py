@@ -412,7 +412,7 @@ def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, t
     ea, eb = p.edges
     fn = lambda a, na, b, nb: paper_squeeze_tilted(a, na, b, nb, plan.com, mu, gdir, tau,  # noqa: E731
                                                    accel)
-    grid = brute_force(ring, ea, eb, plan.com, mu, n=301, fn=fn, rounds=4, starts=6)
+    grid = brute_force(ring, ea, eb, plan.com, mu, n=301, fn=fn, rounds=4, starts=3)
     assert p.certified and p.squeeze - p.lower_bound <= p.tol * p.squeeze
     # the proof holds against the grid (a bound too high fails here), and it is the optimum
     assert p.lower_bound <= grid * (1 + 1e-12)
@@ -466,13 +466,12 @@ def _boxes_hold(pair, load, rng, n=200, corner=False):
     return int((feasible & bounds.straddle).sum())
 
 
-@pytest.mark.parametrize("seed", [0, 1])
-def test_box_lower_bounds_hold_across_the_boundary_of_condition_1(seed) -> None:
+def test_box_lower_bounds_hold_across_the_boundary_of_condition_1() -> None:
     """Random edge pairs, tilt ranges and accelerations, many boxes straddling the boundary
     of (1) (where κ is unbounded); μ up to 1.5."""
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(0)
     straddling = 0
-    for _ in range(6):
+    for _ in range(9):
         v = rng.uniform(-1, 1, 10)
         pair = EdgePair.of((0.5 * v[0], -1 + 0.3 * v[1]), (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]),
                            (0.5 * v[4], 1 + 0.3 * v[5]), (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7]),
@@ -580,7 +579,7 @@ def test_cli_exact_and_tilt_json(capsys) -> None:
     assert ex["certified"] and ex["lower_bound_N"] <= ex["squeeze_N"] <= ex["sampled_squeeze_N"]
     assert "branch and bound" in d["exact_method"] and d["orientations"] == "every orientation"
     assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--gravity", "0,-1",
-                 "--tilt", "15deg", "--json"]) == 0
+                 "--tilt", "15deg", "--exact", "1", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
     assert d["tilt_deg"] == pytest.approx(15) and d["gravity"] == [0, -1]
     ex = d["exact"][0]  # proved under the tilt range too, and says over which orientations

@@ -170,13 +170,16 @@ class _Bounds:
                 # the forms are concave in the step: over the force-closure part of the
                 # box (a polygon), their least value is at one of its corners
                 k = np.flatnonzero(straddle)
-                sub = [((g[0][:, k], g[1][:, k])) for g in grads]
-                least = np.full((10, k.size), np.inf)
-                for ps, pt in self._corners((s[0][k], s[1][k]), (t[0][k], t[1][k])):
-                    st_ = [((_dn(p_ - c_)[None], _up(p_ - c_)[None]))
-                           for p_, c_ in ((ps, sc[k]), (pt, tc[k]))]
-                    val = _forms((phic[0][:, k], phic[1][:, k]), sub, st_, ok[:, k])
-                    least = np.minimum(least, np.where(np.isnan(ps), np.inf, val))
+                pts = self._corners((s[0][k], s[1][k]), (t[0][k], t[1][k]))
+                ps = np.concatenate([p_[0] for p_ in pts])  # corner j of box i at j·n + i
+                pt = np.concatenate([p_[1] for p_ in pts])
+                kk = np.tile(k, len(pts))
+                st_ = [((_dn(p_ - c_[kk])[None], _up(p_ - c_[kk])[None]))
+                       for p_, c_ in ((ps, sc), (pt, tc))]
+                val = _forms((phic[0][:, kk], phic[1][:, kk]),
+                             [((g[0][:, kk], g[1][:, kk])) for g in grads], st_, ok[:, kk])
+                val = np.where(np.isnan(ps), np.inf, val).reshape(10, len(pts), k.size)
+                least = val.min(axis=1)
                 forms[:, k] = np.maximum(forms[:, k], np.where(np.isfinite(least), least,
                                                                forms[:, k]))
             best = np.maximum(np.where(np.isnan(natural), -np.inf, natural).max(axis=0),
