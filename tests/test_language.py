@@ -246,7 +246,9 @@ def _grasp(v, floats):
 
 
 @pytest.mark.parametrize("floats", [False, True], ids=["exact", "float"])
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# two grasps in three break condition (1) and are skipped: not a sign of a bad strategy
+@settings(max_examples=12, deadline=None,
+          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
 @given(values=GRASP_VALUES)
 def test_shipped_recipe_is_todays_protocol_on_random_grasps(floats, values):
     try:

@@ -137,10 +137,10 @@ def problems(draw) -> dict[str, Any]:
     return {"anchors": [list(a) for a in anchors], "texts": texts, "opts": opts}
 
 
-@settings(max_examples=40, deadline=None,
+@settings(max_examples=30, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture,
                                   HealthCheck.too_slow, HealthCheck.data_too_large])
-@given(st.lists(problems(), min_size=1, max_size=8))
+@given(st.lists(problems(), min_size=1, max_size=5))
 def test_port_places_as_python(port: Any, batch: list[dict[str, Any]]) -> None:
     for js, p in zip(_js_place(port, batch), batch):
         _same(js, _py_place(p))
