@@ -129,7 +129,7 @@ def test_preset_construction_closed_form(name, preset_constructions):
     check_construction(preset_constructions[name], PRESET_PARAMS[name])
 
 
-@settings(max_examples=15, deadline=None, database=None,
+@settings(max_examples=10, deadline=None, database=None,
           suppress_health_check=[HealthCheck.too_slow])
 @given(exact_params())
 def test_random_exact_construction(p):

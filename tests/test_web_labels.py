@@ -137,7 +137,7 @@ def problems(draw) -> dict[str, Any]:
     return {"anchors": [list(a) for a in anchors], "texts": texts, "opts": opts}
 
 
-@settings(max_examples=30, deadline=None,
+@settings(max_examples=20, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture,
                                   HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(st.lists(problems(), min_size=1, max_size=5))
