@@ -24,7 +24,7 @@ import json
 from collections.abc import Callable
 from typing import Any
 
-from ._cli_size import read_pair
+from ._cli_size import add_outline_options, read_pair
 from .errors import InputError, InputTooLargeError
 from .sizing.units import split_unit
 
@@ -56,14 +56,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                f"sampled); --samples at most {MAX_SAMPLES} ({MAX_SAMPLES * (MAX_SAMPLES - 1) // 2}"
                " pairs). exit status: 0; 2 for a user error, including an outline on which no "
                "sampled pair is force-closure.")
-    s.add_argument("--shape", required=True, metavar="FILE",
-                   help="the part's outline: an SVG or DXF file (the optional extra "
-                        "graspcompass[outlines]); the closed shape of largest area")
-    s.add_argument("--shape-unit", metavar="LENGTH",
-                   help="the length of one drawing unit when the file does not say (default: "
-                        "SVG 96 per inch, DXF mm)")
-    s.add_argument("--com", metavar="X,Y", help="centre of mass (default: the outline's "
-                   "centroid)")
+    add_outline_options(s, shape_required=True)
     s.add_argument("--mass", default="1kg", metavar="M",
                    help="mass (kg unless a unit: 500g; default 1kg, so N per kg)")
     s.add_argument("--mu", default="0.5", metavar="MU",

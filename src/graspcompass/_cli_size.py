@@ -40,10 +40,24 @@ from typing import Any
 from .errors import InputError
 from .sizing.units import split_unit
 
-__all__ = ["read_pair", "register", "run"]
+__all__ = ["add_outline_options", "read_pair", "register", "run"]
 
 _NEGATIVE = re.compile(r"\s*-\s*(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[^\d\s.]*\s*$")
 _NAMES = ("jaw1", "jaw2")
+
+
+def add_outline_options(group: Any, *, shape_required: bool) -> None:
+    """``--shape``, ``--shape-unit`` and ``--com``: the part's outline from a drawing and
+    its centre of mass, as ``graspcompass size`` and ``graspcompass plan`` read them."""
+    group.add_argument("--shape", required=shape_required, metavar="FILE",
+                       help="the part's outline from a drawing: an SVG or DXF file (the "
+                            "optional extra graspcompass[outlines]); the closed shape of "
+                            "largest area, curves flattened, in the drawing's units")
+    group.add_argument("--shape-unit", metavar="LENGTH",
+                       help="with --shape: the length of one drawing unit when the file "
+                            "does not say (default: SVG 96 per inch, DXF mm)")
+    group.add_argument("--com", metavar="X,Y", help="centre of mass (default: the "
+                       "outline's centroid)")
 
 
 def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
@@ -80,15 +94,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     part.add_argument("--outline", metavar="X,Y;X,Y;...",
                       help="the part's outline (vertices separated by ';'): normals of the "
                            "edges the contacts lie on, centroid as the default --com")
-    part.add_argument("--shape", metavar="FILE",
-                      help="the part's outline from a drawing: an SVG or DXF file (the "
-                           "optional extra graspcompass[outlines]); the closed shape of "
-                           "largest area, curves flattened, in the drawing's units")
-    part.add_argument("--shape-unit", metavar="LENGTH",
-                      help="with --shape: the length of one drawing unit when the file does "
-                           "not say (default: SVG 96 per inch, DXF mm)")
-    part.add_argument("--com", metavar="X,Y", help="centre of mass (default: the outline's "
-                      "centroid)")
+    add_outline_options(part, shape_required=False)
     part.add_argument("--mass", required=True, metavar="M", help="mass (kg unless a unit: 500g)")
     part.add_argument("--mu", metavar="MU", help="friction coefficient of both pads")
     part.add_argument("--mu1", metavar="MU", help="friction coefficient at jaw 1")

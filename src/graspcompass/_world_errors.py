@@ -11,18 +11,6 @@ from __future__ import annotations
 
 from .grasp import InvalidGraspError
 
-__all__ = [
-    "CenterOfMassError",
-    "CoincidentContactsError",
-    "ContactOffOutlineError",
-    "FrictionConeError",
-    "NormalNotUnitError",
-    "NormalOutwardError",
-    "OutlineError",
-    "VertexContactError",
-    "WorldGraspError",
-]
-
 
 class WorldGraspError(InvalidGraspError):
     """World-frame data that do not make a grasp; the message names the contact."""

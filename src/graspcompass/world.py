@@ -43,8 +43,8 @@ angle of the paper's x-axis in the world frame (:attr:`WorldGrasp.beta`).
 
 The code: the errors are in ``_world_errors``, :class:`WorldGrasp` in
 ``_world_grasp``, :func:`place_grasp` in ``_world_place``, the outlines in
-``_world_outline`` and the exact-or-float helpers in ``_world_arith``; every
-name is importable from here and the classes are documented and pickled as this
+``_world_outline`` and the exact-or-float helpers in ``_world_arith``; the public
+names are importable from here and the classes are documented and pickled as this
 module's.
 
 Examples
@@ -59,32 +59,6 @@ True
 
 from __future__ import annotations
 
-import dataclasses  # noqa: F401  (re-exported: the old home of these names)
-import math  # noqa: F401
-from collections.abc import Sequence  # noqa: F401
-from typing import Any  # noqa: F401
-
-import sympy as sp  # noqa: F401
-
-from ._world_arith import (  # noqa: F401
-    ON_OUTLINE_TOL,
-    UNIT_TOL,
-    Vec,
-    _as_kind,
-    _c,
-    _cross,
-    _deg,
-    _dot,
-    _fmt,
-    _no_symbols,
-    _pair,
-    _pt,
-    _scaled,
-    _sign,
-    _sqrt,
-    _sub,
-    _vec,
-)
 from ._world_errors import (
     CenterOfMassError,
     CoincidentContactsError,
@@ -97,29 +71,8 @@ from ._world_errors import (
     WorldGraspError,
 )
 from ._world_grasp import WorldGrasp
-from ._world_outline import (  # noqa: F401
-    _inward,
-    _near,
-    _on_segment,
-    _Outline,
-    _outline,
-    _outline_normal,
-    _vertices,
-)
-from ._world_place import (  # noqa: F401
-    _condition_1,
-    _friction,
-    _is_shapely,
-    _normals,
-    _place,
-    _square_roots_only,
-    place_grasp,
-)
-from .errors import InputError, SymbolicValueError, WrongTypeError  # noqa: F401
-from .geometry.exact import canon, decide_sign, has_float  # noqa: F401
-from .geometry.trig import sincos  # noqa: F401
-from .grasp import Grasp, InvalidGraspError  # noqa: F401
-from .inputs import real_value  # noqa: F401
+from ._world_place import place_grasp
+from .grasp import Grasp  # noqa: F401  (the examples)
 
 __all__ = [
     "CenterOfMassError",
