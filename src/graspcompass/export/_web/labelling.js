@@ -72,24 +72,12 @@
   /** The range [lo, hi) of the samples of segment a + t d (t in [0, 1], length L) that may
    * lie in ``win`` (Liang-Barsky, the window widened by ``step``): labelling._in_window. */
   function inWindow(ax, ay, dx, dy, L, step, win, count) {
-    let t0 = 0, t1 = 1;
-    // x, then y (scalar code: this runs for every segment of every curve at every update)
-    if (dx === 0) {
-      if (ax < win[0] - step || ax > win[2] + step) return EMPTY;
-    } else {
-      let ta = (win[0] - step - ax) / dx, tb = (win[2] + step - ax) / dx;
-      if (ta > tb) { const t = ta; ta = tb; tb = t; }
-      t0 = Math.max(t0, ta);
-      t1 = Math.min(t1, tb);
-    }
-    if (dy === 0) {
-      if (ay < win[1] - step || ay > win[3] + step) return EMPTY;
-    } else {
-      let ta = (win[1] - step - ay) / dy, tb = (win[3] + step - ay) / dy;
-      if (ta > tb) { const t = ta; ta = tb; tb = t; }
-      t0 = Math.max(t0, ta);
-      t1 = Math.min(t1, tb);
-    }
+    T[0] = 0;
+    T[1] = 1;
+    // x, then y (no arrays made: this runs for every segment of every curve per update)
+    if (!clipAxis(ax, dx, win[0] - step, win[2] + step) ||
+        !clipAxis(ay, dy, win[1] - step, win[3] + step)) return EMPTY;
+    const t0 = T[0], t1 = T[1];
     if (!(t0 <= t1)) return EMPTY;
     const lo = Math.min(Math.max(Math.floor((t0 * L) / step) - 1, 0), count);
     const hi = Math.min(Math.max(Math.ceil((t1 * L) / step) + 2, 0), count);
@@ -97,6 +85,22 @@
     const cap = 4 + Math.ceil((2 * ((win[2] - win[0]) + (win[3] - win[1]))) / step);
     return Number.isFinite(lo) && Number.isFinite(hi) && hi - lo <= cap ? [lo, hi] : EMPTY;
   }
+
+  /** Narrow T = [t0, t1] to the t where lo <= p + t q <= hi; false when q = 0 and p is
+   * outside [lo, hi] (Liang-Barsky along one axis). */
+  function clipAxis(p, q, lo, hi) {
+    if (q === 0) return p >= lo && p <= hi;
+    let ta = (lo - p) / q, tb = (hi - p) / q;
+    if (ta > tb) {
+      const t = ta;
+      ta = tb;
+      tb = t;
+    }
+    T[0] = Math.max(T[0], ta);
+    T[1] = Math.min(T[1], tb);
+    return true;
+  }
+  const T = new Float64Array(2);
   const EMPTY = [0, 0];
 
   /** Points every ``step`` along each segment of each polyline (labelling.resample): a
