@@ -389,9 +389,22 @@ def test_cli_json_markdown_and_draw(files, tmp_path: Path, capsys) -> None:
     assert "drew" in out.err
 
 
-def test_cli_timeout_stops_with_status_3(tmp_path: Path, capsys) -> None:
+def test_cli_timeout_stops_with_status_3(tmp_path: Path, capsys, monkeypatch) -> None:
+    """A check longer than --timeout stops with status 3.  The check is made slow on
+    purpose: the paper's file alone may finish within a second once caches are warm."""
+    import time
+
+    from graspcompass.proof import program_check
+
+    def slow(*args, **kwargs):
+        end = time.monotonic() + 30
+        while time.monotonic() < end:  # interrupted by the alarm of --timeout
+            time.sleep(0.01)
+        raise AssertionError("--timeout did not stop the check")
+
+    monkeypatch.setattr(program_check, "check_program", slow)
     full = tmp_path / "paper.gc"
-    full.write_text(_TEXT)  # the symbolic circles and break points take seconds
+    full.write_text(_TEXT)
     assert cli.main(["check", str(full), "--timeout", "1", "-q"]) == 3
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "--timeout" in err[0]
