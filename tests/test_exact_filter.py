@@ -30,7 +30,7 @@ def _true_value(poly) -> mpmath.mpf:
         for monom, coeff in poly.terms():
             t = mpmath.mpf(int(coeff.numerator)) / int(coeff.denominator)
             for v, e in zip(values, monom):
-                t *= v**e
+                t *= v**int(e)
             total += t
         return total
 
@@ -42,7 +42,7 @@ _poly = st.lists(st.tuples(_monom, _coeff), min_size=1, max_size=8).map(
 
 
 def _check(poly) -> None:
-    got = exact._float_sign(poly)
+    got = exact._float_sign(_R, poly)
     if got is None:
         return
     v = _true_value(poly)
@@ -60,10 +60,11 @@ def test_filter_sign_is_the_true_sign(poly):
 def test_filter_near_cancellation(p, q, k):
     """p*q - p*q' with q' = q + 2^k: tiny but non-zero, and exact zeros p*q - q*p."""
     a = p * q
-    shift = _R.from_dict({(0,) * len(_GENS): sp.QQ(Fraction(2) ** k)})
+    two_k = Fraction(2) ** k
+    shift = _R.from_dict({(0,) * len(_GENS): sp.QQ(two_k.numerator, two_k.denominator)})
     _check(a - p * (q + shift))
     zero = a - q * p
-    assert not zero or exact._float_sign(zero) is None or _true_value(zero) != 0
+    assert not zero or exact._float_sign(_R, zero) is None or _true_value(zero) != 0
 
 
 def test_filter_refuses_exact_zero_in_disguise():
@@ -71,11 +72,11 @@ def test_filter_refuses_exact_zero_in_disguise():
     a polynomial whose double evaluation is rounding noise: no sign may come out."""
     r2, r3 = _R(sp.sqrt(2)), _R(sp.sqrt(3))
     poly = (r2 + r3) ** 2 - 5 - 2 * r2 * r3
-    assert exact._float_sign(poly) is None
+    assert exact._float_sign(_R, poly) is None
     s, c = _R(OpaqueSin(sp.pi / 10)), _R(OpaqueCos(sp.pi / 10))
-    assert exact._float_sign(s**2 + c**2 - 1) is None
+    assert exact._float_sign(_R, s**2 + c**2 - 1) is None
     # 4 cos(pi/10)^2 - (10 + 2 sqrt5)/4 * ... : cos(pi/10)^2 = (5 + sqrt5)/8
-    assert exact._float_sign(8 * c**2 - 5 - _R(sp.sqrt(5))) is None
+    assert exact._float_sign(_R, 8 * c**2 - 5 - _R(sp.sqrt(5))) is None
 
 
 @settings(max_examples=80, deadline=None)
@@ -87,7 +88,7 @@ def test_integer_balls_hold_the_true_value(poly, prec):
     saved = iv.prec
     iv.prec = prec
     try:
-        (box,) = exact._intervals(poly)
+        (box,) = exact._intervals(_R, poly)
     finally:
         iv.prec = saved
     v = _true_value(poly)
@@ -125,9 +126,60 @@ def test_direct_expression_is_sympys(terms):
     from sympy.core.cache import clear_cache
 
     p = _ROOTS_R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in terms.items()})
-    ours = exact._as_expr(p)
+    ours = exact._as_expr(_ROOTS_R, p)
     clear_cache()
-    theirs = p.as_expr()
+    theirs = _sympy_sum(_ROOTS_R.symbols, terms)
     assert sp.srepr(ours) == sp.srepr(theirs)
     assert ours == theirs and hash(ours) == hash(theirs)
     assert exact.canon(ours) == ours
+
+
+def _sympy_sum(gens, terms) -> sp.Expr:
+    """The polynomial built by sympy's own (evaluating) Add and Mul."""
+    return sp.Add(*[sp.Rational(c.numerator, c.denominator) * sp.Mul(*[g**e for g, e in
+                                                                        zip(gens, m)])
+                    for m, c in terms.items() if c])
+
+
+_MIXED_GENS = tuple(sorted((sp.sqrt(2), sp.sqrt(3), OpaqueSin(sp.pi / 10), OpaqueCos(sp.pi / 10),
+                            sp.Symbol("x1", positive=True), sp.Symbol("mu1", positive=True)),
+                           key=exact._gen_key))
+_MIXED_R = exact._ring(_MIXED_GENS)
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.dictionaries(st.tuples(*[st.integers(0, 2)] * len(_MIXED_GENS)), _coeff, min_size=1,
+                       max_size=12))
+def test_direct_expression_with_trig_and_symbols_is_sympys(terms):
+    """The builder makes sympy's own tree for every kind of generator (the factors in
+    sympy's order, reduced roots multiplied into one), up to 48 terms."""
+    from sympy.core.cache import clear_cache
+
+    terms = {m: c for m, c in terms.items()
+             if all(e <= 1 for g, e in zip(_MIXED_GENS, m) if g.is_Pow)}  # roots reduced
+    if not any(terms.values()):
+        return
+    p = _MIXED_R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in terms.items()})
+    ours = exact._as_expr(_MIXED_R, p)
+    clear_cache()
+    theirs = _sympy_sum(_MIXED_GENS, terms)
+    assert sp.srepr(ours) == sp.srepr(theirs)
+    assert ours == theirs and hash(ours) == hash(theirs)
+
+
+def test_a_denominator_zero_on_the_model_is_division_by_zero():
+    """Values as written: Z = sin² + cos² − 1 is 0 at every point, so x·Z/(x·Z) is 0/0 —
+    never 1 by a cancelled common factor (the reduction comes before the gcd)."""
+    import pytest
+
+    s, c = OpaqueSin(sp.pi / 10), OpaqueCos(sp.pi / 10)
+    x = sp.Symbol("x1", positive=True)
+    for z in (s**2 + c**2 - 1, sp.sin(x) ** 2 + sp.cos(x) ** 2 - 1):
+        zf = exact.Frac.of(sp.expand(x * z + x)) - exact.Frac.of(x)  # x·Z, built unreduced
+        with pytest.raises(ZeroDivisionError):
+            zf / zf
+        with pytest.raises(ZeroDivisionError):
+            (exact.Frac.of(x) / zf).expr()
+    # a factor that is non-zero on the model still cancels
+    f = exact.Frac.of(x + s)
+    assert ((f * exact.Frac.of(x)) / f).expr() == x

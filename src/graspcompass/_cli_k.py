@@ -31,6 +31,7 @@ import sympy as sp
 
 from .errors import InputTooLargeError, NonFiniteValueError
 from .expr import _split_unit, parse_angles, parse_exact
+from .geometry.numeric import to_float
 from .inputs import force_value
 from .limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
 
@@ -136,7 +137,7 @@ def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
 
 def _float(value: sp.Expr) -> float:
     try:
-        return float(sp.N(value, 17))
+        return to_float(value, 17)
     except (OverflowError, TypeError, ValueError):
         return math.inf
 

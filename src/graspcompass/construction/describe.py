@@ -13,6 +13,7 @@ import sympy as sp
 
 from ..geometry import Circle, Line, Point
 from ..geometry.exact import text
+from ..geometry.numeric import to_float
 from .envelope import Envelope
 from .protocol import Construction, Step
 
@@ -28,7 +29,7 @@ def _num(expr: sp.Expr) -> float | None:
     if getattr(expr, "free_symbols", None):
         return None
     try:
-        return float(sp.N(expr, 17))
+        return to_float(expr, 17)
     except TypeError:
         return None
 

@@ -41,7 +41,15 @@ import sympy as sp
 from .._floatpath import mpf
 from ..errors import GraspCompassError
 from ..geometry import Point, angle_of
-from ..geometry.exact import canon, decide_sign, has_float
+from ..geometry.exact import (
+    Frac,
+    NotAFraction,
+    canon,
+    decide_sign,
+    decide_zero,
+    free,
+    has_float,
+)
 
 __all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
 
@@ -103,7 +111,7 @@ class Envelope:
     def winner(self, theta: Any) -> np.ndarray:
         """Index of the outermost circle (0 in the zero region) for numeric θ."""
         t = np.mod(np.asarray(theta, dtype=float), _TWO_PI)
-        starts = np.array([float(a.theta_start) for a in self.arcs])
+        starts = np.array([_float(a.theta_start) for a in self.arcs])
         ns = np.array([a.n for a in self.arcs])
         order = np.argsort(starts)
         idx = np.searchsorted(starts[order], t, side="right") - 1
@@ -113,8 +121,8 @@ class Envelope:
         """k_grasp(θ) read off the envelope (numeric), for checking against eq. (25)."""
         t = np.asarray(theta, dtype=float)
         w = self.winner(t)
-        S = np.array([0.0] + [float(v.x) for v in self.V])
-        C = np.array([0.0] + [float(v.y) for v in self.V])
+        S = np.array([0.0] + [_float(v.x) for v in self.V])
+        C = np.array([0.0] + [_float(v.y) for v in self.V])
         return S[w] * np.sin(t) - C[w] * np.cos(t)
 
     def polyline(self, samples: int = 720) -> np.ndarray:
@@ -137,12 +145,32 @@ def _angle(vector: Point, approx: Any = None) -> sp.Expr:
         negative = decide_sign(a) == -1
     # angle_of returns atan(canonical) + kπ, already in canonical form; only a
     # symbolic angle (atan2 of expressions) needs the canonical form again
-    exact = canon if a.free_symbols else (lambda e: e)
+    exact = canon if free(a) else (lambda e: e)
     return exact(a + 2 * sp.pi) if negative else exact(a)
 
 
+def _float(value: Any) -> float:
+    """``float(value)`` of an exact number from its canonical form (sympy's evalf of a
+    long exact expression takes seconds)."""
+    return float(mpf(value, 20))
+
+
+def _parallel(p: Point, e: Point) -> bool:
+    """Whether the exact vectors ``p`` and ``e`` are parallel (cross product 0, decided)."""
+    try:
+        fx, fy, gx, gy = (Frac.of(v) for v in (p.x, p.y, e.x, e.y))
+    except NotAFraction:
+        return bool(decide_zero(p.x * e.y - p.y * e.x))
+    return bool((fx * gy - fy * gx).is_zero())
+
+
+def numeric_point(p: Point) -> bool:
+    """True when a coordinate of ``p`` holds a float."""
+    return has_float(p.x) or has_float(p.y)
+
+
 def _plus_2pi(angle: sp.Expr) -> sp.Expr:
-    return canon(angle + 2 * sp.pi) if angle.free_symbols else angle + 2 * sp.pi
+    return canon(angle + 2 * sp.pi) if free(angle) else angle + 2 * sp.pi
 
 
 def _theta(wx: mpmath.mpf, wy: mpmath.mpf) -> mpmath.mpf:
@@ -246,21 +274,26 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
     for t, a, b in breaks:
         lo, hi = sorted((a, b))
         p = objects.get(f"B{lo}{hi}") if lo else None
-        if p is not None and not (p.x == 0 and p.y == 0):
-            tp = _theta(mpf(p.x, mpmath.mp.dps), mpf(p.y, mpmath.mp.dps))
-            if _gap(tp, t) > 1e-20:
-                raise EnvelopeError(
-                    f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
-                    f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
-            found.append((tp, _angle(p, tp), p))
-            continue
-        # the largest k falls to 0 (or the circles touch at O): the break is O, at the
-        # angle with e(θ) ⊥ w, of the two the one the numeric break angle found
+        # the break lies at the angle with e(θ) ⊥ w = V_lo − V_hi (eq. (32): k_lo = k_hi),
+        # of the two the one the numeric break angle found: B_lo,hi, the foot of O on the
+        # line V_lo V_hi, is a multiple of perp(w), so its angle is that of ±perp(w) (a
+        # far smaller exact number than B's own coordinates); where the largest k falls
+        # to 0 (or the circles touch at O) the break is O, at the same angle
         w = V[hi - 1] if not lo else V[lo - 1] - V[hi - 1]
         e = w.perp()
         te = _theta(mpf(e.x, mpmath.mp.dps), mpf(e.y, mpmath.mp.dps))
         if _gap(te, t) > mpmath.pi / 2:
             e, te = -e, (te + mpmath.pi) % (2 * mpmath.pi)
+        if p is not None and not (p.x == 0 and p.y == 0):
+            tp = _theta(mpf(p.x, mpmath.mp.dps), mpf(p.y, mpmath.mp.dps))
+            if _gap(tp, t) > 1e-20 or _gap(tp, te) > 1e-20:
+                raise EnvelopeError(
+                    f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
+                    f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
+            # e's angle is B's exactly when B is a multiple of e (a file's own B need not be)
+            along = not numeric_point(p) and _parallel(p, e)
+            found.append((tp, _angle(e if along else p, tp), p))
+            continue
         found.append((te, _angle(e, te), Point(0, 0)))
     # sorted by the angles themselves: a break just below 2π comes last
     order = sorted(range(len(found)), key=lambda j: found[j][0])

@@ -25,6 +25,7 @@ from ._json_limits import (
     _MAX_SHOWN,
     MAX_GENERATORS,
     MAX_MAGNITUDE,
+    MAX_ANGLE_GENERATORS,
     MAX_NUMBER_GENERATORS,
     MAX_RADICAND_BITS,
     InconsistentDocumentError,
@@ -194,17 +195,23 @@ def _check_generators(g: Grasp) -> None:
                         f"more than {MAX_RADICAND_BITS} bits")
                 numbers.add(sp.sqrt(base))
     trig = {n for n in numbers if isinstance(n, (sp.sin, sp.cos))}
-    shown = _show(", ".join(sorted(str(n) for n in numbers)))
+    roots = numbers - trig
+    shown = _show(", ".join(sorted(str(n) for n in roots)))
     limit = _MAX_NUMBER_GENERATORS_WITH_SYMBOLS if symbolic else MAX_NUMBER_GENERATORS
-    if len(numbers) > limit:
+    if len(roots) > limit:  # each square root doubles the degree of the number field
         raise JSONTooLargeError(
-            f"grasp: its values use {len(numbers)} distinct irrational numbers ({shown}); at "
+            f"grasp: its values use {len(roots)} distinct irrational numbers ({shown}); at "
             f"most {limit} are allowed" + (" next to symbols" if symbolic else ""))
-    if trig and (symbolic or numbers - trig):
+    if len(trig) > MAX_ANGLE_GENERATORS:
+        raise JSONTooLargeError(
+            f"grasp: its values use {len(trig)} sines and cosines of angles that are no "
+            f"multiples of pi/12 ({_show(', '.join(sorted(map(str, trig))))}); at most "
+            f"{MAX_ANGLE_GENERATORS} are allowed (four angles)")
+    if trig and symbolic:
+        shown = _show(", ".join(sorted(str(n) for n in numbers)))
         raise JSONTooLargeError(
             f"grasp: its values use sin/cos of an angle that is no multiple of pi/12 next to "
-            f"{'symbols' if symbolic else 'other irrational numbers'} ({shown}); this is not "
-            "allowed (it could take minutes to construct)")
+            f"symbols ({shown}); this is not allowed (it could take minutes to construct)")
     if len(numbers) + len(symbolic) > MAX_GENERATORS:
         shown = ", ".join(sorted(str(n) for n in numbers | symbolic))
         raise JSONTooLargeError(f"grasp: its values use {len(numbers) + len(symbolic)} "

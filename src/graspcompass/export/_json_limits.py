@@ -12,15 +12,16 @@ from ..errors import InputError, InputTooLargeError
 
 # documented in graspcompass.export.json, which binds them again with their descriptions
 SCHEMA = "graspcompass.construction/1"
-MAX_BYTES = 1 << 20
+MAX_BYTES = 16 << 20
 MAX_STEPS = 64
-MAX_TEXT = 100_000
+MAX_TEXT = 4_000_000
 MAX_TITLE = 1000
 MAX_INT_DIGITS = 30
 MAX_MAGNITUDE = 1e15
 MAX_FLOAT_BITS = 1024
 MAX_NUMBER_GENERATORS = 3
-MAX_GENERATORS = 9
+MAX_ANGLE_GENERATORS = 8
+MAX_GENERATORS = 14
 MAX_RADICAND_BITS = 64
 _MAX_NUMBER_GENERATORS_WITH_SYMBOLS = 2
 _MAX_SHOWN = 60

@@ -20,6 +20,7 @@ import sympy as sp
 
 from .. import labelling, layout
 from ..construction.describe import describe
+from ..geometry.numeric import to_float
 from ..layout import tex
 from ..palette import PALETTE
 
@@ -87,7 +88,7 @@ class Scene:
 
 
 def _f(v: sp.Expr) -> float:
-    return float(sp.N(v, 20))
+    return to_float(v, 20)
 
 
 def label_tex(name: str) -> str:

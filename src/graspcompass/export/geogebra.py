@@ -35,10 +35,9 @@ from pathlib import Path
 from typing import Any
 from xml.sax.saxutils import quoteattr
 
-import sympy as sp
-
 from .. import labelling
 from ..geometry import Line, Point
+from ..geometry.numeric import to_float
 from ..palette import rgb
 from ._ggb_defs import SLIDERS, definition, ggb_label
 from ._scene import build_scene, label_tex
@@ -53,7 +52,7 @@ _RGB = {role: rgb(role) for role in ("axis", "side", "perp", "point", "envelope"
 
 
 def _f(v: Any) -> float:
-    return float(sp.N(v, 17))
+    return to_float(v, 17)
 
 
 def _a(**attrs: Any) -> str:

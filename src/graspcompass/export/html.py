@@ -49,9 +49,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-import sympy as sp
-
 from .. import __version__, labelling
+from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
 from ..palette import PALETTE
 
@@ -78,7 +77,7 @@ def web_file(name: str) -> str:
 def _float(v: Any, name: str) -> float:
     if getattr(v, "free_symbols", None):
         raise ValueError(f"the web explorer needs numeric parameters; {name} = {v} is symbolic")
-    return float(sp.N(v, 30))
+    return to_float(v, 30)
 
 
 def _shape(shape: Any) -> list[Any] | None:

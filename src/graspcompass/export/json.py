@@ -51,7 +51,7 @@ A file is outside input: :func:`loads` trusts nothing in it and refuses, with a
 ``ValueError``) whose one-line message names the place (a JSON path such as
 ``steps[3].params[1]``), what is wrong and the value (shortened).  In order:
 
-1. **Size**: at most :data:`MAX_BYTES` (1 MiB) of text (:class:`JSONTooLargeError`).
+1. **Size**: at most :data:`MAX_BYTES` (16 MiB) of text (:class:`JSONTooLargeError`).
 2. **JSON**: strict JSON only: ``NaN``, ``Infinity``, numbers that overflow a
    double, integers of more than :data:`MAX_INT_DIGITS` digits, duplicate keys
    and nesting deeper than Python's JSON reader allows are refused.
@@ -66,14 +66,14 @@ A file is outside input: :func:`loads` trusts nothing in it and refuses, with a
    bounded exponents and sizes), floats and symbols are not mixed, and the
    grasp must pass :class:`~graspcompass.Grasp`'s checks.  The exact numbers the
    construction computes with (x1, x2, y, μ1, μ2 and the sines and cosines of
-   φ1, φ2) may hold at most :data:`MAX_NUMBER_GENERATORS` distinct irrational
-   numbers: square roots of rationals of at most :data:`MAX_RADICAND_BITS` bits
-   (no nested or higher roots, no ``pi`` or ``atan`` in a length), or the
-   ``sin``/``cos`` that the kernel keeps for an angle such as 1 rad or 3π/5,
-   which then go with rational numbers only.  Next to symbols at most 2 square
-   roots, and at most :data:`MAX_GENERATORS` generators in all (the fully
-   symbolic grasp has 9: x1, x2, y, μ1 or tan ξ1, μ2 or tan ξ2 and the sines
-   and cosines of φ1, φ2).
+   φ1, φ2) may hold at most :data:`MAX_NUMBER_GENERATORS` distinct square roots
+   of rationals of at most :data:`MAX_RADICAND_BITS` bits (no nested or higher
+   roots, no ``pi`` or ``atan`` in a length) and at most
+   :data:`MAX_ANGLE_GENERATORS` of the ``sin``/``cos`` that the kernel keeps for
+   angles such as 1 rad or 3π/5 (four typed angles: φ1, φ2, ξ1, ξ2).  Next to
+   symbols at most 2 square roots and no such sin/cos, and at most
+   :data:`MAX_GENERATORS` generators in all (the fully symbolic grasp has 9:
+   x1, x2, y, μ1 or tan ξ1, μ2 or tan ξ2 and the sines and cosines of φ1, φ2).
    The derived friction value (ξ = atan μ or μ = tan ξ) must be the one the
    grasp gives.
 5. **Consistency**: the construction is rebuilt from the grasp with the paper's
@@ -162,8 +162,9 @@ from ._json_schema import (
 )
 from ._json_steps import _compare, _rebuild, _record  # noqa: F401
 
-__all__ = ["DOCUMENT_SCHEMA", "MAX_BYTES", "MAX_FLOAT_BITS", "MAX_GENERATORS", "MAX_INT_DIGITS",
-           "MAX_MAGNITUDE", "MAX_NUMBER_GENERATORS", "MAX_RADICAND_BITS", "MAX_STEPS",
+__all__ = ["DOCUMENT_SCHEMA", "MAX_ANGLE_GENERATORS", "MAX_BYTES", "MAX_FLOAT_BITS",
+           "MAX_GENERATORS", "MAX_INT_DIGITS", "MAX_MAGNITUDE", "MAX_NUMBER_GENERATORS",
+           "MAX_RADICAND_BITS", "MAX_STEPS",
            "MAX_TEXT", "MAX_TITLE", "SCHEMA", "VALUE_SCHEMAS", "InconsistentDocumentError",
            "JSONDocumentError", "JSONTooLargeError", "dumps", "from_document", "loads",
            "to_document"]
@@ -184,8 +185,10 @@ MAX_INT_DIGITS = _limits.MAX_INT_DIGITS
 MAX_MAGNITUDE = _limits.MAX_MAGNITUDE
 #: Largest ``bits`` of a ``{"float": "p/q", "bits": n}`` number.
 MAX_FLOAT_BITS = _limits.MAX_FLOAT_BITS
-#: Most distinct irrational numbers (square roots, sin/cos atoms) in an exact grasp.
+#: Most distinct square roots in an exact grasp (each doubles the number field's degree).
 MAX_NUMBER_GENERATORS = _limits.MAX_NUMBER_GENERATORS
+#: Most sines and cosines of angles that are no multiples of pi/12 (four typed angles).
+MAX_ANGLE_GENERATORS = _limits.MAX_ANGLE_GENERATORS
 #: Most generators (symbols, and sin/cos of symbols, plus the above) of a grasp.
 MAX_GENERATORS = _limits.MAX_GENERATORS
 #: Most bits of the numerator and of the denominator under a square root.

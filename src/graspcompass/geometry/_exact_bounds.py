@@ -38,7 +38,7 @@ def _gen_float(g: sp.Expr) -> float | None:
     return m
 
 
-def _float_sign(poly) -> int | None:
+def _float_sign(R, poly) -> int | None:
     """The sign of the number ``poly`` by a floating-point filter, or None.
 
     Each term is evaluated in doubles by repeated multiplication (generators
@@ -49,13 +49,13 @@ def _float_sign(poly) -> int | None:
     static filter of exact geometric predicates); anything closer returns None and
     the caller falls back to interval arithmetic.
     """
-    symbols = poly.ring.symbols
+    symbols = R.symbols
     values: dict[int, float] = {}
     total = magnitude = 0.0
     dmax = count = 0
     try:
         for monom, coeff in poly.terms():
-            t = int(coeff.numerator) / int(coeff.denominator)
+            t = int(coeff.p) / int(coeff.q)
             degree = 0
             for i, e in enumerate(monom):
                 if not e:
@@ -77,7 +77,7 @@ def _float_sign(poly) -> int | None:
         return None
     if not math.isfinite(magnitude) or magnitude < 1e-280:
         return None
-    bound = 2.0 * (2 * dmax + count + 2) * _U * magnitude
+    bound = 2.0 * (2 * int(dmax) + count + 2) * _U * magnitude
     if total > bound:
         return 1
     if total < -bound:
@@ -85,17 +85,17 @@ def _float_sign(poly) -> int | None:
     return None
 
 
-def _clearly_nonzero(poly) -> bool:
+def _clearly_nonzero(R, poly) -> bool:
     """True when a float filter or interval arithmetic (200 bits) shows ``poly`` is not 0."""
     from mpmath import iv
 
-    if _float_sign(poly) is not None:
+    if _float_sign(R, poly) is not None:
         return True
 
     prec = iv.prec
     iv.prec = _IV_PREC
     try:
-        (value,) = _intervals(poly)
+        (value,) = _intervals(R, poly)
     except TypeError:
         return False
     finally:
@@ -172,7 +172,7 @@ def _ball_poly(poly, balls: list, k: int) -> tuple[int, int]:
     """
     m_total = r_total = 0
     for monom, coeff in poly.terms():
-        m, r = (int(coeff.numerator) << k) // int(coeff.denominator), 1
+        m, r = (int(coeff.p) << k) // int(coeff.q), 1
         for i, e in enumerate(monom):
             if e:
                 gm, gr = balls[i]
@@ -183,7 +183,7 @@ def _ball_poly(poly, balls: list, k: int) -> tuple[int, int]:
     return m_total, r_total
 
 
-def _intervals(*polys) -> list:
+def _intervals(R, *polys) -> list:
     """Intervals (mpmath.iv, at the current precision) of the numbers ``polys`` of one ring.
 
     Evaluated in exact integer ball arithmetic (:func:`_ball_poly`), each generator
@@ -194,12 +194,12 @@ def _intervals(*polys) -> list:
 
     k = iv.prec + 8
     scale = iv.mpf(2) ** -k
-    return [iv.mpf([m - r, m + r]) * scale for m, r in _balls(polys, k)]
+    return [iv.mpf([m - r, m + r]) * scale for m, r in _balls(R, polys, k)]
 
 
-def _balls(polys: tuple, k: int) -> list[tuple[int, int]]:
-    """Balls ``(m, r)`` at scale ``2**-k`` of the numbers ``polys`` of one ring."""
-    symbols = polys[0].ring.symbols
-    used = {i for p in polys for monom in p.monoms() for i, e in enumerate(monom) if e}
+def _balls(R, polys: tuple, k: int) -> list[tuple[int, int]]:
+    """Balls ``(m, r)`` at scale ``2**-k`` of the numbers ``polys`` of ring R."""
+    symbols = R.symbols
+    used = {i for p in polys for i, e in enumerate(p.degrees()) if e}
     balls = [_gen_ball(g, k) if i in used else None for i, g in enumerate(symbols)]
     return [_ball_poly(p, balls, k) for p in polys]

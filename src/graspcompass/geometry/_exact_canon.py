@@ -12,7 +12,7 @@ import sympy as sp
 
 from ..expr import parse_exact
 from ._exact_convert import _canon_ring
-from ._exact_ring import _MEMO
+from ._exact_ring import _MEMO, _SORTED_TERMS
 
 
 def sym(value: object) -> sp.Expr:
@@ -57,14 +57,67 @@ def text(expr: object) -> str:
     """
     if not isinstance(expr, sp.Basic):
         return str(expr)
-    if expr.free_symbols or not expr.has(sp.sin, sp.cos, sp.atan):
+    hit = _MEMO.get(expr)
+    if hit is not None and len(hit[1]) + len(hit[2]) > _SORTED_TERMS:
+        return _poly_text(*hit)  # a long canonical number: printed from its polynomials
+    if free(expr) or not expr.has(sp.sin, sp.cos, sp.atan):
         return str(expr)  # small radicals and symbols: sympy's usual order
     return sp.sstr(expr, order="none")
 
 
+def _poly_text(R, n, d) -> str:
+    """``n/d`` as text, term by term in the ring's monomial order (``sympy.sstr`` of
+    the same expression sorts its terms first, which costs seconds for long ones)."""
+    names: dict[tuple[int, int], str] = {}
+
+    def poly(p) -> str:
+        roots = set(R.roots)
+        out = []
+        for monom, c in p.terms():
+            m, factors = 1, []
+            for i, e in enumerate(monom):
+                if not e:
+                    continue
+                if i in roots and e == 1:
+                    m *= int(R.symbols[i].base)
+                    continue
+                f = names.get((i, e))
+                if f is None:
+                    g = str(R.symbols[i])
+                    f = names[(i, e)] = g if e == 1 else f"{g}**{e}"
+                factors.append(f)
+            if m > 1:
+                factors.insert(0, f"sqrt({m})")
+            num, den = int(c.p), int(c.q)
+            sign = "-" if num < 0 else "+"
+            num = abs(num)
+            body = "*".join(([str(num)] if num != 1 or not factors else []) + factors)
+            if den != 1:
+                body += f"/{den}"
+            out.append((sign, body))
+        if not out:
+            return "0"
+        head = ("-" if out[0][0] == "-" else "") + out[0][1]
+        return head + "".join(f" {sg} {b}" for sg, b in out[1:])
+
+    if d.is_one():
+        return poly(n)
+    return f"({poly(n)})/({poly(d)})"
+
+
 def has_float(expr: sp.Expr) -> bool:
     """True when ``expr`` holds a floating-point number (the numeric path)."""
+    if expr in _MEMO:  # the kernel's canonical numbers are exact
+        return False
     return bool(expr.atoms(sp.Float))
+
+
+def free(expr: sp.Expr) -> bool:
+    """``bool(expr.free_symbols)``, read off the ring of a canonical number at once."""
+    hit = _MEMO.get(expr)
+    if hit is not None:
+        return hit[0].free
+    return bool(expr.free_symbols)
 
 
 def canon(expr: sp.Expr) -> sp.Expr:

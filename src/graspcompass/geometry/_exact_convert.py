@@ -155,7 +155,7 @@ def _convert(e: sp.Expr, R, amap: dict) -> tuple:
         r, n, d = hit
         return (n, d) if r is R else (_lift(n, r, R), _lift(d, r, R))
     if e.is_Rational:
-        return R(e.p), R(e.q)
+        return R(int(e.p)), R(int(e.q))
     m = amap.get(e)
     if m is not None:
         return m
@@ -171,28 +171,22 @@ def _convert(e: sp.Expr, R, amap: dict) -> tuple:
 
 
 @lru_cache(maxsize=1024)
-def _positions(r, R) -> tuple[int, ...] | None:
-    """Where each generator of ring r sits in ring R (None if one is missing)."""
-    index = {g: i for i, g in enumerate(R.symbols)}
-    try:
-        return tuple(index[g] for g in r.symbols)
-    except KeyError:
-        return None
+def _positions(r, R) -> tuple[int | None, ...]:
+    """Where each generator of ring r sits in ring R (None where R lacks it)."""
+    return tuple(R.index.get(g) for g in r.symbols)
 
 
 def _lift(p, r, R):
-    """The polynomial p of ring r as an element of R, whose generators include r's."""
+    """The polynomial p of ring r as an element of R (which holds every generator p uses)."""
+    if r is R:
+        return p
+    if p.is_constant():
+        return R.ctx.constant(p.leading_coefficient()) if not p.is_zero() else R.zero
     pos = _positions(r, R)
-    if pos is None:
-        return p.set_ring(R)
-    k = R.ngens
-    out = {}
-    for monom, coeff in p.items():
-        m = [0] * k
-        for i, e in zip(pos, monom):
-            m[i] = e
-        out[tuple(m)] = coeff
-    return R.dtype(out)
+    if None in pos:
+        if any(e and i is None for i, e in zip(pos, p.degrees())):
+            raise ValueError(f"{R} does not hold the generators of {p} in {r}")
+    return p.compose(*(R.zero if i is None else R.gens[i] for i in pos), ctx=R.ctx)
 
 
 def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
@@ -216,10 +210,10 @@ def _canon_ring(expr: sp.Expr) -> sp.Expr | None:
     for a, plan in atoms.items():
         if plan[0] == "root":
             coefficient, ps = plan[1], plan[2]
-            n = R(coefficient.p)
+            n = R(int(coefficient.p))
             for p in ps:
                 n *= index[sp.sqrt(p)]
-            amap[a] = (n, R(coefficient.q))
+            amap[a] = (n, R(int(coefficient.q)))
     for a, plan in atoms.items():  # after the roots: values may hold roots
         if plan[0] == "trig":
             s, c = index[plan[2]], index[plan[3]]

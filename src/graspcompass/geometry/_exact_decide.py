@@ -11,9 +11,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ._exact_bounds import _IV_PREC, _balls, _float_sign, _intervals
-from ._exact_canon import canon, has_float, sym
-from ._exact_ring import _MEMO
+from ._exact_bounds import _IV_PREC, _balls, _clearly_nonzero, _float_sign, _intervals
+from ._exact_canon import canon, free, has_float, sym
+from ._exact_ring import _MEMO, reduce_poly
 
 #: Digits used to separate a non-zero exact number from zero before an exact test.
 _PREC = 40
@@ -49,7 +49,14 @@ def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
         if has_float(expr):
             return abs(float(expr)) <= 1e-12 * scale
         return bool(expr == 0)
-    if expr.free_symbols:
+    hit = _MEMO.get(expr)
+    if hit is not None:  # a canonical number: 0 when its numerator reduces to 0
+        R, n, _ = hit
+        if reduce_poly(R, n).is_zero():
+            return True
+        if not R.free and _clearly_nonzero(R, n):
+            return False
+    if free(expr):
         reduced = canon(expr)
         if reduced == 0:
             return True
@@ -92,7 +99,12 @@ def decide_sign(expr: sp.Expr) -> int | None:
     expr = sym(expr)
     if expr.is_Number and not has_float(expr):
         return 0 if expr == 0 else (1 if expr > 0 else -1)
-    if not expr.free_symbols and not has_float(expr):
+    hit = _MEMO.get(expr)
+    if hit is not None and not hit[0].free:
+        sign = _strict_sign(expr)
+        if sign is not None:
+            return sign
+    if not free(expr) and not has_float(expr):
         q = expr / sp.pi  # angles: a rational multiple of pi is decided at once
         if q.is_Rational:
             return 0 if q == 0 else (1 if q > 0 else -1)
@@ -104,7 +116,7 @@ def decide_sign(expr: sp.Expr) -> int | None:
         return 0
     if zero is None:
         return None
-    if expr.free_symbols:
+    if free(expr):
         if expr.is_positive:
             return 1
         if expr.is_negative:
@@ -126,8 +138,8 @@ def _interval(expr: sp.Expr):
     hit = _MEMO.get(reduced)
     if hit is None:
         return None
-    _, n, d = hit
-    nv, dv = _intervals(n, d)
+    R, n, d = hit
+    nv, dv = _intervals(R, n, d)
     return nv / dv
 
 
@@ -146,7 +158,7 @@ def approx(expr: sp.Expr, dps: int = 30):
     import mpmath
 
     expr = sym(expr)
-    if not expr.free_symbols and not has_float(expr):
+    if not free(expr) and not has_float(expr):
         try:
             reduced = canon(expr)
         except (TypeError, ZeroDivisionError):
@@ -156,14 +168,14 @@ def approx(expr: sp.Expr, dps: int = 30):
                 return mpmath.mpf(int(reduced.p)) / int(reduced.q)
         hit = _MEMO.get(reduced) if reduced is not None else None
         if hit is not None:
-            value = _ball_quotient(hit[1], hit[2], dps)
+            value = _ball_quotient(*hit, dps)
             if value is not None:
                 return value
     with mpmath.workdps(dps):
         return mpmath.mpf(sp.N(expr, dps))
 
 
-def _ball_quotient(n, d, dps: int):
+def _ball_quotient(R, n, d, dps: int):
     """n/d to ``dps`` digits from integer balls, or None when they are too wide.
 
     With n in mn ± rn and d in md ± rd (rd <= |md|/2), n/d is within
@@ -173,7 +185,7 @@ def _ball_quotient(n, d, dps: int):
 
     k = max(_IV_PREC, int(dps * 3.33) + 64) + 8
     try:
-        (mn, rn), (md, rd) = _balls((n, d), k)
+        (mn, rn), (md, rd) = _balls(R, (n, d), k)
     except TypeError:
         return None
     an, ad = abs(mn), abs(md)
@@ -198,11 +210,11 @@ def _strict_sign(reduced: sp.Expr) -> int | None:
             if value.is_Number and abs(value) > sp.Float(10) ** (-_PREC // 2):
                 return 1 if value > 0 else -1
             return None
-        _, n, d = hit
-        fs = _float_sign(n), _float_sign(d)
+        R, n, d = hit
+        fs = _float_sign(R, n), _float_sign(R, d)
         if None not in fs:
             return fs[0] * fs[1]
-        nv, dv = _intervals(n, d)
+        nv, dv = _intervals(R, n, d)
     except TypeError:
         return None
     finally:

@@ -20,10 +20,10 @@ from ._exact_ring import (
     _clear_roots,
     _finish,
     _gen_key,
-    _has_opaque,
     _reduce,
-    _relations,
     _ring,
+    reduce_poly,
+    reduce_roots,
 )
 
 
@@ -33,8 +33,27 @@ def _nd(e: sp.Expr, R, index: dict) -> tuple:
 
 
 def _ground(R, q: sp.Rational):
-    """The rational ``q`` as a constant of ring R (``R(q)`` goes through ``from_expr``)."""
-    return R.ground_new(R.domain.from_sympy(q))
+    """The rational ``q`` as a constant of ring R."""
+    return R(q)
+
+
+#: Products of term counts from which a sum or product first cancels across its operands
+#: ((a/b)(c/d) = (a/g)(c/h) / ((b/h)(d/g)), g = gcd(a, d), h = gcd(c, b)): the gcds of
+#: the small operands cost far less than the one of the large result.
+_CROSS = 400
+
+
+def _cancel_pair(a, d) -> tuple:
+    """``(a/g, d/g)`` with ``g = gcd(a, d)`` (the same pair when they share no factor).
+
+    Cancelling a common factor of a numerator and a denominator is valid wherever
+    the denominator ``d`` is non-zero, which its caller checks or records.
+    """
+    if a == d:
+        one = a.context().constant(1)
+        return one, one
+    g = a.gcd(d)
+    return (a, d) if g.is_one() else (a / g, d / g)
 
 
 class NotAFraction(Exception):
@@ -94,7 +113,13 @@ class Frac:
         R, a, b, c, d = self._pair(other)
         if b == d:
             return Frac(R, a + c, b)
-        return Frac(R, a * d + c * b, b * d)
+        if b.is_constant() or d.is_constant() or len(b) * len(d) < _CROSS:
+            return Frac(R, a * d + c * b, b * d)
+        g = b.gcd(d)  # over the least common denominator: far smaller when they share factors
+        if g.is_one():
+            return Frac(R, a * d + c * b, b * d)
+        bg, dg = b / g, d / g
+        return Frac(R, a * dg + c * bg, bg * d)
 
     def __neg__(self) -> Frac:
         return Frac(self.R, -self.n, self.d)
@@ -106,10 +131,17 @@ class Frac:
         if self.R is None and other.R is None:
             return Frac(None, self.n * other.n, sp.Integer(1))
         R, a, b, c, d = self._pair(other)
+        if len(a) * len(d) >= _CROSS and not d.is_constant():
+            a, d = _cancel_pair(a, d)
+        if len(c) * len(b) >= _CROSS and not b.is_constant():
+            c, b = _cancel_pair(c, b)
         return Frac(R, a * c, b * d)
 
     def __truediv__(self, other: Frac) -> Frac:
-        if not other.n:
+        if other.R is None:
+            if not other.n:
+                raise ZeroDivisionError("division by zero")
+        elif reduce_poly(other.R, other.n).is_zero():
             raise ZeroDivisionError("division by zero")
         if other.R is None:
             return self * Frac(None, 1 / other.n, sp.Integer(1))
@@ -122,13 +154,11 @@ class Frac:
         coordinates) does not have its roots cleared again in every :meth:`expr`.
         """
         R = self.R
-        root_rels, _, roots = _relations(R)
+        if reduce_poly(R, self.n).is_zero():
+            raise ZeroDivisionError("division by zero")
         n, d = self.d, self.n
-        if roots:
-            n, d = n.rem(root_rels), d.rem(root_rels)
-            if not d:
-                raise ZeroDivisionError("division by zero")
-            n, d = _clear_roots(n, d, roots, root_rels, _has_opaque(R))
+        if R.roots and not R.opaque:
+            n, d = _clear_roots(R, reduce_roots(R, n), reduce_roots(R, d))
         return Frac(R, n, d)
 
     def is_zero(self) -> bool | None:
@@ -147,13 +177,10 @@ class Frac:
         """
         if self.R is None:
             return self.n == 0
-        root_rels, trig_rels, _ = _relations(self.R)
-        n = self.n.rem(root_rels) if root_rels else self.n
-        if n and trig_rels:
-            n = n.rem(trig_rels)
-        if not n:
+        n = reduce_poly(self.R, self.n)
+        if n.is_zero():
             return True
-        if _clearly_nonzero(n):
+        if _clearly_nonzero(self.R, n):
             return False
         return decide_zero(self.expr())
 
@@ -170,7 +197,7 @@ class Frac:
         """
         if self.R is None:
             return 0 if self.n == 0 else (1 if self.n > 0 else -1)
-        fs = _float_sign(self.n), _float_sign(self.d)
+        fs = _float_sign(self.R, self.n), _float_sign(self.R, self.d)
         if None not in fs:
             return fs[0] * fs[1]
         return decide_sign(self.expr())

@@ -36,7 +36,7 @@ from ._exact_bounds import (
     _intervals,  # noqa: F401
     _scaled,  # noqa: F401
 )
-from ._exact_canon import _rationalize, _square_roots, canon, has_float, sym, text  # noqa: F401
+from ._exact_canon import _rationalize, _square_roots, canon, free, has_float, sym, text  # noqa: F401
 from ._exact_convert import (
     _GENS,
     _MAX_GENS,  # noqa: F401
@@ -66,19 +66,18 @@ from ._exact_ring import (
     _ADD_ORDER,  # noqa: F401
     _MEMO,
     _SQRT,
+    Ring,  # noqa: F401
     _as_expr,  # noqa: F401
     _clear_roots,  # noqa: F401
     _finish,  # noqa: F401
     _gen_key,  # noqa: F401
-    _has_opaque,
     _reduce,  # noqa: F401
-    _relations,
     _ring,
-    _root_primes,
+    reduce_poly,  # noqa: F401
 )
 
 __all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zero",
-           "fold_fractions", "has_float", "sym", "text"]
+           "fold_fractions", "free", "has_float", "sym", "text"]
 
 Expr = sp.Expr
 
@@ -95,9 +94,6 @@ def clear_caches() -> None:
     _gen_interval.cache_clear()
     _gen_ball.cache_clear()
     _gen_float.cache_clear()
-    _relations.cache_clear()
-    _has_opaque.cache_clear()
-    _root_primes.cache_clear()
     _SQRT.clear()
     trig.sincos.cache_clear()
     trig._reference.cache_clear()

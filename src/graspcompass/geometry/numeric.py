@@ -15,15 +15,51 @@ import sympy as sp
 
 from ..errors import InputError, NonFiniteValueError
 from ..inputs import real_value, substitutions
+from .exact import approx, has_float
+from .exact import free as _has_symbols
 from .primitives import Circle, Line, Point
 
-__all__ = ["evaluate"]
+__all__ = ["evaluate", "to_float"]
+
+
+def to_float(expr: sp.Expr, digits: int = 20) -> float:
+    """``float(expr)`` of a number, fast for the kernel's long exact values.
+
+    An exact number is evaluated from its canonical form (integer ball arithmetic,
+    each generator once, :func:`~graspcompass.geometry.exact.approx` to ``digits``
+    digits, then rounded once), not by ``sympy.N``, whose evaluation of a long
+    expression in the sines and cosines of typed angles takes seconds.
+
+    Raises
+    ------
+    TypeError
+        If ``expr`` has free symbols.
+
+    Examples
+    --------
+    >>> to_float(sp.sqrt(2) / 2)
+    0.7071067811865476
+    """
+    if isinstance(expr, (int, float)):
+        return float(expr)
+    if expr.is_Float or expr.is_Rational:
+        return float(expr)
+    if _has_symbols(expr):
+        raise TypeError(f"{expr} has free symbols and no numeric value")
+    if not has_float(expr):
+        return float(approx(expr, digits))
+    return float(sp.N(expr, digits))
 
 
 def _f(expr: sp.Expr, subs: Mapping | None) -> float:
     e = expr.subs(subs) if subs else expr
     try:
-        out = float(e.evalf(17))
+        if e.is_Float:
+            out = float(e)
+        elif not _has_symbols(e) and not has_float(e):  # exact: from the canonical form, fast
+            out = float(approx(e, 20))
+        else:
+            out = float(e.evalf(17))
     except TypeError as exc:
         free = ", ".join(sorted(map(str, e.free_symbols)))
         raise InputError(f"cannot evaluate {expr} numerically: free symbols {free}") from exc
