@@ -23,9 +23,9 @@ from ..grasp import Grasp
 from ._json_limits import (
     _MAX_NUMBER_GENERATORS_WITH_SYMBOLS,
     _MAX_SHOWN,
+    MAX_ANGLE_GENERATORS,
     MAX_GENERATORS,
     MAX_MAGNITUDE,
-    MAX_ANGLE_GENERATORS,
     MAX_NUMBER_GENERATORS,
     MAX_RADICAND_BITS,
     InconsistentDocumentError,
