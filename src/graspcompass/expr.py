@@ -53,10 +53,25 @@ from .limits import (  # the limits, stated once
 )
 from .limits import MAX_LIST_LENGTH as _MAX_LIST_LENGTH
 
-__all__ = ["MAX_ANGLES", "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT",
-           "MAX_LENGTH", "MAX_NODES", "MAX_WORK_BITS", "ComplexExpressionError", "ExpressionError",
-           "Condition", "parse_angles", "parse_exact", "parse_with_conditions", "real_sign",
-           "tree_conditions", "to_exact"]
+__all__ = [
+    "MAX_ANGLES",
+    "MAX_ARGUMENT_BITS",
+    "MAX_BITS",
+    "MAX_DEPTH",
+    "MAX_EXPONENT",
+    "MAX_LENGTH",
+    "MAX_NODES",
+    "MAX_WORK_BITS",
+    "ComplexExpressionError",
+    "Condition",
+    "ExpressionError",
+    "parse_angles",
+    "parse_exact",
+    "parse_with_conditions",
+    "real_sign",
+    "to_exact",
+    "tree_conditions",
+]
 
 #: A condition under which a value is defined, as written: ``(relation, expr)`` with
 #: relation ``"!="`` (a divisor, ``expr ≠ 0``), ``">="`` (a radicand, ``expr ≥ 0``) or

@@ -60,6 +60,7 @@ from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
 from .certify_paper import PaperModel, model_at
+from .program_conditions import decide, distinct, operation_conditions, tie_mu
 from .program_decide import (
     DOMAIN_WORDS,
     CheckError,
@@ -73,7 +74,6 @@ from .program_decide import (
     step_conditions,
     zeros_fail,
 )
-from .program_conditions import decide, distinct, operation_conditions, tie_mu
 from .program_search import find, sign_score
 from .prove import ProofResult, Status
 
