@@ -225,6 +225,22 @@ def _uses_cond1(implied: Iterable[str]) -> bool:
     return any("(1)" in t for t in implied)
 
 
+_CRASHES = (ArithmeticError, ValueError, TypeError, AttributeError, KeyError, IndexError,
+            NotImplementedError, RecursionError, sp.PolynomialError)
+
+
+def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
+             run: Callable[[], CheckRow]) -> CheckRow:
+    """A row whatever happens inside: a failure of the algebra is UNDECIDED, named."""
+    t0 = time.perf_counter()
+    try:
+        return run()
+    except _CRASHES as exc:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, "the checker could not decide it", time.perf_counter() - t0,
+            detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
+
+
 def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
                  step_conds: Mapping[str, tuple[list[str], list[str]]],
                  vacuous: Mapping[str, str] | None = None) -> CheckRow:
@@ -511,14 +527,17 @@ def check_program(program: Program, against: str | None = None,
     claim_rows = []
     for cl in program.claims:
         use = step_conds if _COND1 in cl.under or not cond1_file else plain_conds
-        claim_rows.append(_check_claim(program, cl, env, use, vacuous))
+        claim_rows.append(_guarded(_text(cl), "claim", cl.line, hyps, lambda cl=cl, use=use:
+                                   _check_claim(program, cl, env, use, vacuous)))
         done += 1
         if progress:
             progress(done, total, claim_rows[-1].name)
     target_rows = []
     if model is not None:
         for name in targets:
-            target_rows.append(_check_target(program, name, env, model, step_conds, vacuous))
+            target_rows.append(_guarded(name, "target", _line(program, name), hyps,
+                                        lambda name=name: _check_target(
+                                            program, name, env, model, step_conds, vacuous)))
             done += 1
             if progress:
                 progress(done, total, name)
