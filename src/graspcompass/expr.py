@@ -53,9 +53,31 @@ from .limits import (  # the limits, stated once
 )
 from .limits import MAX_LIST_LENGTH as _MAX_LIST_LENGTH
 
-__all__ = ["MAX_ANGLES", "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT",
-           "MAX_LENGTH", "MAX_NODES", "MAX_WORK_BITS", "ComplexExpressionError", "ExpressionError",
-           "parse_angles", "parse_exact", "real_sign", "to_exact"]
+__all__ = [
+    "MAX_ANGLES",
+    "MAX_ARGUMENT_BITS",
+    "MAX_BITS",
+    "MAX_DEPTH",
+    "MAX_EXPONENT",
+    "MAX_LENGTH",
+    "MAX_NODES",
+    "MAX_WORK_BITS",
+    "ComplexExpressionError",
+    "Condition",
+    "ExpressionError",
+    "parse_angles",
+    "parse_exact",
+    "parse_with_conditions",
+    "real_sign",
+    "to_exact",
+    "tree_conditions",
+]
+
+#: A condition under which a value is defined, as written: ``(relation, expr)`` with
+#: relation ``"!="`` (a divisor, ``expr ≠ 0``), ``">="`` (a radicand, ``expr ≥ 0``) or
+#: ``">"`` (a radicand under a negative power).  Kept before sympy evaluates the text, so
+#: ``x/x`` keeps ``x ≠ 0`` although its value is 1.
+Condition = tuple[str, sympy.Expr]
 
 #: A function value sympy writes out in more nodes stays unevaluated (sin(pi/5) is written
 #: out in radicals, 12 nodes; tan(pi/120), 313 nodes, stays tan(pi/120)).
@@ -177,8 +199,11 @@ def _split_unit(text: str) -> tuple[str, bool]:
 class _Reader:
     """Walk an :mod:`ast` tree with a whitelist, building sympy objects within the limits."""
 
-    def __init__(self, source: str, text: str, symbols: Mapping[str, sympy.Expr] | None):
+    def __init__(self, source: str, text: str, symbols: Mapping[str, sympy.Expr] | None,
+                 inherited: Mapping[str, tuple[Condition, ...]] | None = None):
         self.source, self.text, self.symbols = source, text, dict(symbols or {})
+        self.inherited = dict(inherited or {})  # a name's own conditions (a let value)
+        self.conditions: dict[Condition, None] = {}  # collected as written, in order
         for name, value in self.symbols.items():
             if not isinstance(value, sympy.Expr):
                 raise TypeError(f"symbol {name!r} must map to a sympy expression")
@@ -213,6 +238,8 @@ class _Reader:
             if isinstance(node.op, ast.Pow):
                 return self._power(node)
             left, right = self.read(node.left), self.read(node.right)
+            if isinstance(node.op, ast.Div):
+                self._condition("!=", right)
             if isinstance(node.op, ast.Div) and _has_function(right) and not self._nonzero(right):
                 raise _fail(self.text, "the value is not finite (division by zero)")
             return _BINOPS[type(node.op)](left, right)
@@ -240,10 +267,17 @@ class _Reader:
         if name in _CONSTANTS:
             return _CONSTANTS[name]
         if name in self.symbols and not name.startswith("__"):
+            self.conditions.update(dict.fromkeys(self.inherited.get(name, ())))
             return self.symbols[name]
         if name in _FUNCTIONS:
             raise _refuse(self.text, f"function {name!r} used without a call")
         raise _refuse(self.text, f"unknown name {name!r}")
+
+    def _condition(self, relation: str, value: sympy.Expr) -> None:
+        """Record that the text needs ``value relation 0`` (only symbolic values: a number
+        is decided where it is read)."""
+        if value.free_symbols:
+            self.conditions[(relation, value)] = None
 
     def _enter(self) -> None:
         self.depth += 1
@@ -280,8 +314,14 @@ class _Reader:
             self._spend(arg)
         if name == "sqrt":
             self._real_root(args[0], sympy.Rational(1, 2))
+            self._condition(">=", args[0])
         elif name in ("asin", "acos"):
             self._real_arcsine(name, args[0])
+            self._condition(">=", 1 - args[0] ** 2)
+        elif name == "tan":
+            self._condition("!=", sympy.cos(args[0]))
+        elif name == "atan2":
+            self._condition("!=", args[0] ** 2 + args[1] ** 2)
         self.depth -= 1
         if not any(_has_function(arg) for arg in args):
             value = function(*args)
@@ -349,6 +389,9 @@ class _Reader:
         if exponent.q > 1:
             self._spend(base)  # an exact root may factor the integers of its base
             self._real_root(base, exponent)
+            self._condition(">" if exponent < 0 else ">=", base)
+        elif exponent < 0:
+            self._condition("!=", base)
         self.depth -= 1
         if _has_function(base):  # as for functions: no sign queries through nested functions
             if exponent < 0 and not self._nonzero(base):
@@ -407,7 +450,9 @@ def _total_bits(value: sympy.Expr) -> int:
     return sum(int(r.p).bit_length() + int(r.q).bit_length() for r in value.atoms(sympy.Rational))
 
 
-def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None) -> sympy.Expr:
+def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
+           inherited: Mapping[str, tuple[Condition, ...]] | None = None,
+           out: list[Condition] | None = None) -> sympy.Expr:
     if not isinstance(text, str):
         raise TypeError(f"expected a str, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
@@ -416,7 +461,7 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None) -> sympy.Expr:
     source = body.strip()
     if not source:
         raise _fail(text, "there is no number before the unit" if degrees else "the text is empty")
-    reader = _Reader(source, text, symbols)
+    reader = _Reader(source, text, symbols, inherited)
     try:
         with warnings.catch_warnings():  # "1if 1else 2" warns about its literals: refuse quietly
             warnings.simplefilter("ignore")
@@ -431,6 +476,8 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None) -> sympy.Expr:
         raise _fail(text, "the expression is nested too deeply") from None
     except _SYMPY_FAILURES:
         raise _fail(text, "the value cannot be computed exactly") from None
+    if out is not None:
+        out += [c for c in reader.conditions if c not in out]
     return value * _DEGREE if degrees else value
 
 
@@ -469,6 +516,78 @@ def parse_exact(text: str, *, symbols: Mapping[str, sympy.Symbol] | None = None)
     cannot read "__import__('os')": only numbers, ... (found unknown function '__import__')
     """
     return _parse(text, symbols)
+
+
+def parse_with_conditions(text: str, *, symbols: Mapping[str, sympy.Expr] | None = None,
+                          inherited: Mapping[str, tuple[Condition, ...]] | None = None
+                          ) -> tuple[sympy.Expr, tuple[Condition, ...]]:
+    """:func:`parse_exact`, and the conditions under which the text is defined as written.
+
+    sympy evaluates ``x*(x - y)/(x - y)`` to ``x`` and ``z/z`` to ``1`` as it builds the
+    value; the conditions are collected from the syntax tree before that, so nothing a
+    user divides by or takes the root of is lost: every divisor (``!=``: ≠ 0), every
+    radicand (``>=``: ≥ 0; ``>`` under a negative power), ``1 − x²`` under ``asin`` and
+    ``acos``, ``cos a`` under ``tan a``, ``x² + y²`` under ``atan2(y, x)``.  Only symbolic
+    conditions are listed: a number is decided where it is read (``1/0`` and ``sqrt(-1)``
+    are refused).
+
+    Parameters
+    ----------
+    text : str
+        As for :func:`parse_exact`.
+    symbols : Mapping[str, sympy.Expr], optional
+        Names allowed in ``text``.
+    inherited : Mapping[str, tuple of Condition], optional
+        The conditions of a named value (a ``let``), added where the name is used.
+
+    Returns
+    -------
+    (sympy.Expr, tuple of Condition)
+        The value and its conditions ``(relation, expr)``, in the order written.
+
+    Examples
+    --------
+    >>> x, y = sympy.symbols("x y", positive=True)
+    >>> parse_with_conditions("x*(x - y)/(x - y)", symbols={"x": x, "y": y})
+    (x, (('!=', x - y),))
+    >>> parse_with_conditions("sqrt(-x)", symbols={"x": x})[1]
+    (('>=', -x),)
+    """
+    out: list[Condition] = []
+    value = _parse(text, symbols, inherited, out)
+    return value, tuple(out)
+
+
+def tree_conditions(value: sympy.Expr) -> tuple[Condition, ...]:
+    """The conditions visible in an expression tree already built (a value given as a
+    sympy expression, not as text): negative powers, roots, ``tan``, ``asin``/``acos``,
+    ``atan2`` and ``log`` of symbolic arguments.  What sympy has cancelled is gone: give
+    text to :func:`parse_with_conditions` to keep it.
+
+    Examples
+    --------
+    >>> x = sympy.Symbol("x", positive=True)
+    >>> tree_conditions(1/(x - 1) + sympy.sqrt(2 - x))
+    (('!=', x - 1), ('>=', 2 - x))
+    """
+    out: dict[Condition, None] = {}
+    for node in sympy.preorder_traversal(value):
+        if not getattr(node, "free_symbols", None):
+            continue
+        if node.is_Pow and node.exp.is_Rational and node.base.free_symbols:
+            if node.exp.q > 1:
+                out[(">" if node.exp < 0 else ">=", node.base)] = None
+            elif node.exp < 0:
+                out[("!=", node.base)] = None
+        elif isinstance(node, sympy.tan):
+            out[("!=", sympy.cos(node.args[0]))] = None
+        elif isinstance(node, (sympy.asin, sympy.acos)):
+            out[(">=", 1 - node.args[0] ** 2)] = None
+        elif isinstance(node, sympy.atan2):
+            out[("!=", node.args[0] ** 2 + node.args[1] ** 2)] = None
+        elif isinstance(node, sympy.log):
+            out[(">", node.args[0])] = None
+    return tuple(out)
 
 
 def to_exact(value: object) -> sympy.Expr:

@@ -30,7 +30,7 @@ import sympy as sp
 
 from .. import symbols as _model
 from ..errors import InputError
-from ..expr import ExpressionError, parse_exact
+from ..expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
 from ..geometry import GeometryError
 from .operations import OPERATIONS, ROLES
 
@@ -148,6 +148,9 @@ class Statement:
     key: bool = False
     optional: bool = False
     line: int = field(default=0, compare=False)
+    #: The conditions its values need as written (divisors ≠ 0, radicands ≥ 0, ...:
+    #: :func:`graspcompass.expr.parse_with_conditions`), proved or listed by the checker.
+    conditions: tuple[Condition, ...] = field(default=(), compare=False)
 
 
 @dataclass(frozen=True)
@@ -186,6 +189,8 @@ class Claim:
     relation: str = ""
     under: tuple[str, ...] = ()
     line: int = field(default=0, compare=False)
+    #: The conditions its values need as written (see :attr:`Statement.conditions`).
+    conditions: tuple[Condition, ...] = field(default=(), compare=False)
 
 
 @dataclass(frozen=True)
@@ -243,6 +248,8 @@ class _Checker:
         self.symbols: dict[str, sp.Expr] = {}
         self.where: dict[str, int] = {}  # name -> line it was made on
         self.kinds: dict[str, str] = {}
+        self.let_conditions: dict[str, tuple[Condition, ...]] = {}
+        self.pending: list[Condition] = []  # conditions of the values read for a statement
 
     def _new_name(self, name: str, line: int, slot: Any = "name") -> None:
         if not isinstance(name, str) or not _NAME.fullmatch(name):
@@ -255,6 +262,10 @@ class _Checker:
                            f"{self.where[name]})", slot)
         self.where[name] = line
 
+    def _pending(self) -> tuple[Condition, ...]:
+        out, self.pending = tuple(dict.fromkeys(self.pending)), []
+        return out
+
     def value(self, text: Any, slot: Any, extra: Mapping[str, sp.Expr] | None = None
               ) -> sp.Expr:
         if isinstance(text, sp.Expr):
@@ -262,6 +273,9 @@ class _Checker:
             if unknown:
                 raise _Problem(f"unknown name {sorted(map(str, unknown))[0]!r} in a value: "
                                "declare it with param", slot)
+            if text.has(sp.I, sp.zoo, sp.nan, sp.oo, -sp.oo):
+                raise _Problem(f"bad value {text}: not a finite real number", slot)
+            self.pending += tree_conditions(text)
             return text
         if isinstance(text, bool) or not isinstance(text, (str, int)):
             raise _Problem(f"bad value {text!r}: give text (safe expression syntax), an int or "
@@ -269,9 +283,12 @@ class _Checker:
         if isinstance(text, int):
             return sp.Integer(text)
         try:
-            return parse_exact(text, symbols={**self.symbols, **(extra or {})})
+            value, conds = parse_with_conditions(text, symbols={**self.symbols, **(extra or {})},
+                                                 inherited=self.let_conditions)
         except ExpressionError as exc:
             raise _Problem(f"bad value: {exc}", slot) from None
+        self.pending += conds
+        return value
 
     def param(self, name: str, domain: str, line: int) -> None:
         self._new_name(name, line)
@@ -292,7 +309,9 @@ class _Checker:
 
     def let(self, name: str, text: Any, line: int) -> None:
         self._new_name(name, line)
+        self.pending = []
         value = self.value(text, "value")
+        self.let_conditions[name] = self._pending()
         self.lets.append((name, value))
         self.symbols[name] = value
 
@@ -339,6 +358,7 @@ class _Checker:
                 raise _Problem(f"{op} takes {len(o.params)} value(s) "
                                f"({', '.join(o.params) or 'none'}), got {len(values)}",
                                "values")
+            self.pending = []
             values = tuple(self.value(v, ("value", i)) for i, v in enumerate(values))
             for i, (v, k) in enumerate(zip(values, o.params)):
                 if k == "branch" and v not in (0, 1):
@@ -354,7 +374,8 @@ class _Checker:
         if caption is None:
             caption = (OPERATIONS[op].caption_for(name, inputs, values) if op != _ENVELOPE
                        else f"{name}: the outer envelope")
-        s = Statement(name, op, inputs, values, caption, ref, role, n, key, optional, line)
+        s = Statement(name, op, inputs, values, caption, ref, role, n, key, optional, line,
+                      self._pending())
         self.steps.append(s)
         self.kinds[name] = _makes(op)
         return s
@@ -398,6 +419,7 @@ class _Checker:
                 raise _Problem(f"claim {kind} takes two sides, got {len(terms)}", ("term", 0))
             if relation not in _RELATIONS or (kind == "equal" and relation != "=="):
                 raise _Problem(f"bad relation {relation!r}", "relation")
+            self.pending = []
             ts = tuple(self.term(t, ("term", i)) for i, t in enumerate(terms))
             if kind == "sign" and not all(isinstance(t, Value) or (
                     isinstance(t, Ref) and self.kinds[t.name] == "number") for t in ts):
@@ -407,7 +429,7 @@ class _Checker:
             if kind == "equal" and sides[0] != sides[1]:
                 raise _Problem(f"wrong kinds: cannot compare a {sides[0]} with a {sides[1]}",
                                ("term", 1))
-            c = Claim(kind, ts, relation, under, line)
+            c = Claim(kind, ts, relation, under, line, self._pending())
         else:
             raise _Problem(f"unknown claim {kind!r}: use ==, sign, on, "
                            f"{', '.join(_CLAIM_KINDS)}", "kind")

@@ -60,6 +60,7 @@ from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
 from .certify_paper import PaperModel, model_at
+from .program_conditions import decide, distinct, operation_conditions, tie_mu
 from .program_decide import (
     DOMAIN_WORDS,
     CheckError,
@@ -68,12 +69,12 @@ from .program_decide import (
     nonzero,
     prove_sign_claim,
     prove_zero,
-    search,
     sign_expr,
     sign_fails,
     step_conditions,
     zeros_fail,
 )
+from .program_search import find, sign_score
 from .prove import ProofResult, Status
 
 __all__ = ["PAPER_TARGETS", "CheckError", "CheckRow", "ProgramReport", "check_program"]
@@ -211,11 +212,42 @@ def _text(claim: Claim) -> str:
     return _format(Program(claims=(claim,))).strip().removeprefix("claim ")
 
 
+def _vacuous(name: str, kind: str, line: int, t0: float, hyps: tuple[str, ...],
+             why: str) -> CheckRow:
+    """REFUTED without a counterexample: what it is about exists at no point of the model."""
+    return CheckRow(name, kind, line, ProofResult(
+        Status.REFUTED, "vacuous: a condition it needs is false at every point of the model "
+        "(no counterexample: nothing exists there to contradict)", time.perf_counter() - t0,
+        detail=why, hypotheses=hyps))
+
+
+def _uses_cond1(implied: Iterable[str]) -> bool:
+    return any("(1)" in t for t in implied)
+
+
+_CRASHES = (ArithmeticError, ValueError, TypeError, AttributeError, KeyError, IndexError,
+            NotImplementedError, RecursionError, sp.PolynomialError)
+
+
+def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
+             run: Callable[[], CheckRow]) -> CheckRow:
+    """A row whatever happens inside: a failure of the algebra is UNDECIDED, named."""
+    t0 = time.perf_counter()
+    try:
+        return run()
+    except _CRASHES as exc:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, "the checker could not decide it", time.perf_counter() - t0,
+            detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
+
+
 def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
-                 step_conds: Mapping[str, tuple[list[str], list[str]]]) -> CheckRow:
+                 step_conds: Mapping[str, tuple[list[str], list[str]]],
+                 vacuous: Mapping[str, str] | None = None) -> CheckRow:
     t0 = time.perf_counter()
     cond1 = _COND1 in claim.under
     hyps = _hypotheses(program, cond1)
+    tie = tie_mu(p.name for p in program.params)
     missing = [t.name for t in claim.terms if isinstance(t, Ref) and t.name not in env]
     if missing:  # an optional step left out, or the envelope (numbers only)
         return CheckRow(_text(claim), "claim", claim.line, ProofResult(
@@ -224,38 +256,61 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
             hypotheses=hyps))
     implied: list[str] = []
     extra: list[str] = []
-    for n in _ancestors(program, _refs(claim)):
+    ancestors = _ancestors(program, _refs(claim))
+    gone = [f"{n}: {vacuous[n]}" for n in ancestors if vacuous and n in vacuous]
+    lengths = {sp.Symbol(k, real=True): v for k, v in env.items() if isinstance(v, sp.Expr)}
+    own = decide([(r, e.xreplace(lengths)) for r, e in claim.conditions], cond1, tie)
+    if gone or own.false:
+        return _vacuous(_text(claim), "claim", claim.line, t0, hyps,
+                        "; ".join([*gone, *(f"{t} is false everywhere" for t in own.false)]))
+    for n in ancestors:
         imp, ext = step_conds.get(n, ([], []))
         implied += imp
         extra += ext
+    implied += own.implied
+    extra += own.extra
+    if not cond1 and _uses_cond1(implied):  # a step's condition follows from (1): say so
+        hyps = _hypotheses(program, True)
     if claim.kind == "sign":
-        ok, r = prove_sign_claim(sign_expr(claim, env), claim.relation, cond1)
+        e = sign_expr(claim, env)
+        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1)
         if ok and r is not None:
             implied += list(r.implied)
             extra += list(r.conditions)
             method = r.method
         fails = sign_fails(claim)
+        try:
+            score = sign_score(e, claim.relation, program)
+        except (TypeError, ValueError, NameError, SyntaxError, KeyError):
+            score = None
     else:
+        score = None
         zeros, nonzeros = claim_zeros(claim, env)
+        if tie:
+            zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
         ok, imp, ext, method = prove_zero(zeros, cond1)
         if ok and any(prove_zero([n], cond1)[0] for n in nonzeros):
             ok = None  # a condition that never holds (two parallel lines): not a proof
         implied += imp
         extra += ext + [f"{sp.factor(n)} ≠ 0" for n in nonzeros]
         fails = zeros_fail(claim)
+    # a counterexample is a point of the model: condition (1) holds there too (docs)
+    search_kw = {"claim": claim, "cond1": True, "score": score,
+                 "names": ancestors}
     return _row(program, _text(claim), "claim", claim.line, ok, fails, t0, hyps,
-                implied, extra, method if ok else "")
+                implied, extra, method if ok else "", search_kw)
 
 
 def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
          fails: Callable[[dict[str, Any], Any], bool], t0: float, hyps: tuple[str, ...],
-         implied: list[str], extra: list[str], method: str) -> CheckRow:
+         implied: list[str], extra: list[str], method: str,
+         search_kw: Mapping[str, Any] | None = None) -> CheckRow:
     implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
     if ok:
         return CheckRow(name, kind, line, ProofResult(
             Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,
             conditions=tuple(extra), implied=tuple(implied)))
-    cx = search(program, fails)
+    cx = find(program, fails, **(search_kw or {}))
     if cx is not None:
         return CheckRow(name, kind, line, ProofResult(
             Status.REFUTED, "counterexample: a point of the model (domains, condition (1), "
@@ -315,11 +370,16 @@ def _model_point(pt: Mapping[str, Any]) -> dict[sp.Symbol, sp.Expr]:
 
 
 def _check_target(program: Program, name: str, env: dict[str, Any], model: PaperModel,
-                  step_conds: Mapping[str, tuple[list[str], list[str]]]) -> CheckRow:
+                  step_conds: Mapping[str, tuple[list[str], list[str]]],
+                  vacuous: Mapping[str, str] | None = None) -> CheckRow:
     t0 = time.perf_counter()
     obj = env[name]
     want = _paper_object(model, name)
     hyps = _hypotheses(program, True)
+    gone = [f"{n}: {vacuous[n]}" for n in _ancestors(program, [name])
+            if vacuous and n in vacuous]
+    if gone:
+        return _vacuous(name, "target", _line(program, name), t0, hyps, "; ".join(gone))
     try:
         have = coords(obj)
     except CheckError:
@@ -342,11 +402,34 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
                    zip(coords(env_at[name]), _paper_object(at, name)))
 
     return _row(program, name, "target", _line(program, name), ok, fails, t0, hyps,
-                implied + imp, extra + ext, method)
+                implied + imp, extra + ext, method,
+                {"cond1": True, "names": _ancestors(program, [name])})
 
 
 def _line(program: Program, name: str) -> int:
     return next((s.line for s in program.steps if s.name == name), 0)
+
+
+_TWO_POINTS = ("line_through", "circle_through", "circle_on_diameter", "intersect_circles",
+               "second_intersection")
+
+
+def _distinct_ends(program: Program, c: Construction, s: Any, own: Any,
+                   texts: list[str]) -> None:
+    """Two points shown distinct under the kernel conditions of the steps before (which
+    every result using the step assumes): a line's direction, a circle's radius, the
+    line of two centres; the condition (``texts``) is then implied."""
+    if not texts or not all(t in own.extra for t in texts):
+        return
+    by = {st.name: st for st in c.steps}
+    ins = [by[n].obj for n in s.inputs]
+    assumed = [e for n in _ancestors(program, [s.name]) if n in by for e in by[n].conditions]
+    a, b = (ins[0], ins[1]) if s.op in ("line_through", "circle_through",
+                                        "circle_on_diameter") else (ins[0].center, ins[1].center)
+    if distinct(a, b, assumed):
+        own.extra = [t for t in own.extra if t not in texts]
+        own.implied += [t + " (the two points differ wherever the steps before are defined)"
+                        for t in texts]
 
 
 # -- the whole file -----------------------------------------------------------------------
@@ -400,17 +483,38 @@ def check_program(program: Program, against: str | None = None,
     step_rows: list[CheckRow] = []
     step_conds: dict[str, tuple[list[str], list[str]]] = {}
     hyps = _hypotheses(program, cond1_file)
+    tie = tie_mu(p.name for p in program.params)
+    statements = {st.name: st for st in program.steps}
+    vacuous: dict[str, str] = {}
+    plain_conds: dict[str, tuple[list[str], list[str]]] = {}
     for s in c.steps:
         t1 = time.perf_counter()
         line = _line(program, s.name)
+        stmt = statements[s.name]
+        ops, replaced = operation_conditions(s.op, [env[n] for n in s.inputs], s.obj)
+        own = decide([*stmt.conditions, *ops], cond1_file, tie)
+        if s.op in _TWO_POINTS and own.extra:
+            _distinct_ends(program, c, s, own, decide(ops[:1], cond1_file, tie).extra)
         try:
-            implied, extra = step_conditions(s, cond1_file)
+            implied, extra = step_conditions(s, cond1_file, replaced, tie)
+            if own.false:
+                raise ValueError("; ".join(f"{t} is false for every parameter"
+                                           for t in own.false))
+            implied, extra = implied + own.implied, extra + own.extra
         except ValueError as exc:
+            vacuous[s.name] = str(exc)
             step_rows.append(CheckRow(s.name, "step", line, ProofResult(
-                Status.REFUTED, "degenerate for every parameter", time.perf_counter() - t1,
-                detail=str(exc), hypotheses=hyps)))
+                Status.REFUTED, "degenerate for every parameter: it exists at no point of "
+                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps)))
         else:
             step_conds[s.name] = (implied, extra)
+            if cond1_file:  # for claims not under condition1: the same, without (1)
+                try:
+                    imp0, ext0 = step_conditions(s, False, replaced, tie)
+                    own0 = decide([*stmt.conditions, *ops], False, tie)
+                    plain_conds[s.name] = (imp0 + own0.implied, ext0 + own0.extra)
+                except ValueError:
+                    plain_conds[s.name] = (implied, extra)
             given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
             step_rows.append(CheckRow(s.name, "step", line, ProofResult(
                 Status.GIVEN if given and not s.inputs else Status.PROVED,
@@ -422,14 +526,18 @@ def check_program(program: Program, against: str | None = None,
             progress(done, total, s.name)
     claim_rows = []
     for cl in program.claims:
-        claim_rows.append(_check_claim(program, cl, env, step_conds))
+        use = step_conds if _COND1 in cl.under or not cond1_file else plain_conds
+        claim_rows.append(_guarded(_text(cl), "claim", cl.line, hyps, lambda cl=cl, use=use:
+                                   _check_claim(program, cl, env, use, vacuous)))
         done += 1
         if progress:
             progress(done, total, claim_rows[-1].name)
     target_rows = []
     if model is not None:
         for name in targets:
-            target_rows.append(_check_target(program, name, env, model, step_conds))
+            target_rows.append(_guarded(name, "target", _line(program, name), hyps,
+                                        lambda name=name: _check_target(
+                                            program, name, env, model, step_conds, vacuous)))
             done += 1
             if progress:
                 progress(done, total, name)

@@ -37,7 +37,7 @@ from ..construction.protocol import Construction
 from ..errors import InputError
 from ..geometry import Circle, GeometryError, Line, Point
 from ..geometry.exact import decide_sign, decide_zero
-from .certify_algebra import classify, ring
+from .certify_algebra import _positive, _primitive, classify, ring
 from .model import violations
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
 
@@ -121,19 +121,34 @@ def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], li
         if isinstance(c, Circle):
             return [(p.x - c.center.x) ** 2 + (p.y - c.center.y) ** 2 - c.radius2], []
         return [Point(p.x - c.point.x, p.y - c.point.y).cross(c.direction)], []
-    if claim.kind == "collinear":
+    if claim.kind == "collinear":  # rank of the differences <= 1: every pair, any repetition
         a = objs[0]
         return [Point(b.x - a.x, b.y - a.y).cross(Point(c.x - a.x, c.y - a.y))
-                for b, c in itertools.pairwise(objs[1:])], []
+                for b, c in itertools.combinations(objs[1:], 2)], []
     if claim.kind == "parallel":
         return [objs[0].direction.cross(objs[1].direction)], []
     if claim.kind == "perpendicular":
         return [objs[0].direction.dot(objs[1].direction)], []
-    if claim.kind == "concurrent":  # det of (a, b, c) rows; two of them must meet
-        rows = [sp.Matrix([list(ln.coefficients())]) for ln in objs]
-        zeros = [sp.Matrix.vstack(rows[0], rows[1], r).det() for r in rows[2:]]
-        return zeros, [objs[0].direction.cross(objs[1].direction)]
+    if claim.kind == "concurrent":
+        return _concurrent_zeros(objs)
     raise CheckError(f"unknown claim kind {claim.kind!r}")  # pragma: no cover - parser checks
+
+
+def _concurrent_zeros(lines: list[Line]) -> tuple[list[sp.Expr], list[sp.Expr]]:
+    """Lines with a common point: two lines ``i, j`` that are not parallel (kept as the
+    condition) and every other row in the span of theirs (det of rows i, j, r); when
+    every pair is parallel for all parameters, every line is line 0 (same point set)."""
+    for i, j in itertools.combinations(range(len(lines)), 2):
+        cross = lines[i].direction.cross(lines[j].direction)
+        if decide_zero(sp.sympify(cross)) is True:
+            continue
+        rows = [sp.Matrix([list(ln.coefficients())]) for ln in lines]
+        zeros = [sp.Matrix.vstack(rows[i], rows[j], rows[r]).det()
+                 for r in range(len(lines)) if r not in (i, j)]
+        return zeros, [cross]
+    a = lines[0]
+    return [Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction)
+            for b in lines[1:]], []
 
 
 def sign_expr(claim: Claim, env: Mapping[str, Any]) -> sp.Expr:
@@ -153,16 +168,36 @@ def _classified(dens: Iterable[Any], cond1: bool) -> tuple[list[str], list[str]]
             implied.update(dict.fromkeys(f"{t} ({why})" for t, why in imp))
             extra.update(dict.fromkeys(ext))
         else:
-            if not R.reduce(p):
+            q = R.reduce(p)
+            if not q:
                 raise ValueError(f"the condition {R.expr(p)} ≠ 0 is false for every parameter")
+            if q.is_ground:
+                implied[f"{R.expr(p)} ≠ 0 (a non-zero constant)"] = None
+                continue
+            p = _primitive(p)
+            if _positive(R.reduce(p), R):
+                implied[f"{R.expr(p)} ≠ 0 (a positive polynomial of x1, x2, μ)"] = None
+                continue
             extra[f"{R.expr(p)} ≠ 0"] = None
     return list(implied), list(extra)
 
 
-def step_conditions(step: Any, cond1: bool) -> tuple[list[str], list[str]]:
+def step_conditions(step: Any, cond1: bool, exclude: Iterable[sp.Expr] = (),
+                    tie: Mapping[sp.Symbol, sp.Expr] | None = None
+                    ) -> tuple[list[str], list[str]]:
+    """The kernel's ``≠ 0`` conditions of a step: (implied with reasons, extra).
+
+    ``exclude``: conditions the checker states otherwise (a discriminant is ≥ 0, not
+    ≠ 0); ``tie``: μ -> tan ξ where a file declares both.  ValueError: a condition
+    false for every parameter."""
     R = ring()
     polys, outside = [], []
+    exclude = list(exclude)
     for e in step.conditions:
+        if any(decide_zero(sp.sympify(e - x)) is True for x in exclude):
+            continue
+        if tie:
+            e = e.xreplace(tie)
         try:
             polys.append(R.frac(e)[0])
         except ValueError:
@@ -207,7 +242,11 @@ def _witness(e: sp.Expr) -> list[sp.Expr]:
 def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
                      ) -> tuple[bool | None, ProofResult | None]:
     intervals = CONDITION_1 if cond1 else {}
-    if relation in ("==",):  # pragma: no cover - sign claims use the other relations
+    if relation == "==":  # an identity: reduced to zero, or refuted by the search
+        ok, implied, extra, method = prove_zero([e], cond1)
+        if ok:
+            return True, ProofResult(Status.PROVED, method, 0.0, conditions=tuple(extra),
+                                     implied=tuple(implied))
         return None, None
     signs = {">": [1], "<": [-1], ">=": [1], "<=": [-1], "!=": [1, -1]}[relation]
     try:
@@ -333,5 +372,6 @@ def sign_fails(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
         s = decide_sign(sign_expr(claim, env))
         if s is None:
             return False
-        return {">": s <= 0, "<": s >= 0, ">=": s < 0, "<=": s > 0, "!=": s == 0}[claim.relation]
+        return {">": s <= 0, "<": s >= 0, ">=": s < 0, "<=": s > 0, "!=": s == 0,
+                "==": s != 0}[claim.relation]
     return fails

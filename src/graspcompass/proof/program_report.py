@@ -90,11 +90,15 @@ def to_table(report: ProgramReport, steps: bool = False) -> str:
              "", "  ".join(h.ljust(widths[i]) if i < 5 else h for i, h in enumerate(head))]
     lines += ["  ".join(x.ljust(widths[i]) if i < 5 else x for i, x in enumerate(row)).rstrip()
               for row in rows]
-    refuted = [r for r in shown if r.status is Status.REFUTED]
+    refuted = [r for r in shown if r.status is Status.REFUTED and r.counterexample is not None]
     if refuted:
         lines.append("\ncounterexamples (points of the model; the file replayed exactly there)")
-        lines += [f"  {_short(r.name)}: {_cx(r) or r.result.detail or r.result.method}"
-                  for r in refuted]
+        lines += [f"  {_short(r.name)}: {_cx(r)}" for r in refuted]
+    other = [r for r in shown if r.status is Status.REFUTED and r.counterexample is None]
+    if other:
+        lines.append("\nrefuted without a counterexample (false or undefined at every point of "
+                     "the model)")
+        lines += [f"  {_short(r.name)}: {r.result.detail or r.result.method}" for r in other]
     lines.append(f"\n{_counts(report)}; {report.seconds:.1f} s")
     return "\n".join(lines)
 

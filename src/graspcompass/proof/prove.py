@@ -32,6 +32,7 @@ from typing import Any
 
 import sympy as sp
 
+from ..expr import tree_conditions
 from .model import find_counterexample, nonzero_at, outside_expr, wrong_sign
 from .reduce import DegenerateClaimError, reduce_expr
 from .signs import CONDITION_1, Intervals, _interval, discharge, form_json, sign_of, sign_reason
@@ -132,6 +133,10 @@ def _interval_hypotheses(intervals: Intervals) -> tuple[list[str], list[Any]]:
     if any(CONDITION_1.get(k) == tuple(v) for k, v in intervals.items()):
         names.append(CONDITION_1_NAME)
     for k, v in intervals.items():
+        lo, hi = (sp.sympify(b) for b in v)  # internal: the caller's bounds, numbers
+        if (lo - hi).is_number and not (lo - hi).free_symbols and bool(lo >= hi):
+            raise DegenerateClaimError(f"the interval hypothesis {k} in ({lo}, {hi}) is "
+                                       "empty: nothing would be proved")
         if CONDITION_1.get(k) != tuple(v):
             names.append(_iv_text(k, v))
             rels += [sp.StrictGreaterThan(k, v[0], evaluate=False),
@@ -355,8 +360,9 @@ def prove_sign(
     sample_syms = set(target.free_symbols) | {s for r in iv_rels for s in r.free_symbols}
     if subs:
         sample_syms -= set(subs)
-    found = find_counterexample(lambda v: wrong_sign(e, sign, v), list(sample_syms), extra,
-                                domains=domains, derived=subs)
+    where = tree_conditions(e)  # a counterexample is a point where e is defined (no 0/0)
+    found = find_counterexample(lambda v: _defined_at(where, v) and wrong_sign(e, sign, v),
+                                list(sample_syms), extra, domains=domains, derived=subs)
     if found is not None:
         return ProofResult(Status.REFUTED, "exact substitution", time.perf_counter() - t0,
                            _cx(found), values={"expr": float(sp.N(e.xreplace(found), 17))},
@@ -367,6 +373,22 @@ def prove_sign(
     if isinstance(proof, Exception):
         raise proof
     return ProofResult(proof[0], proof[1], time.perf_counter() - t0, **proof[2])
+
+
+def _defined_at(conditions: Sequence[tuple[str, sp.Expr]], values: Mapping) -> bool:
+    """Every divisor of the expression non-zero and every radicand ≥ 0 at ``values``,
+    decided exactly (undecided: not a point to report)."""
+    from ..geometry.exact import decide_sign
+
+    for rel, c in conditions:
+        try:
+            s = decide_sign(c.xreplace(values))
+        except (ValueError, TypeError, ArithmeticError):
+            return False
+        if s is None or (rel == "!=" and s == 0) or (rel == ">=" and s < 0) or \
+                (rel == ">" and s <= 0):
+            return False
+    return True
 
 
 def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals: Intervals,

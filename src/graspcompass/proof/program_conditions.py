@@ -1,0 +1,292 @@
+"""The conditions under which a file's steps and claims exist, decided one by one.
+
+A value is kept as written: the parser collects every divisor (≠ 0), every
+radicand (≥ 0) and every domain of ``tan``, ``asin``, ``acos``, ``atan2``
+(:func:`graspcompass.expr.parse_with_conditions`) before sympy evaluates the
+text, so ``x1*Z/(x1*Z)`` keeps ``x1*Z ≠ 0`` although its value is 1.  A step
+adds the existence conditions of its operation (:func:`operation_conditions`):
+a circle through two points or on a diameter needs them distinct, a line its
+direction, two circles distinct centres, an intersection with a circle a
+discriminant ≥ 0 (not ≠ 0: two points are made, or one when tangent).
+
+:func:`decide` splits each condition into *implied* (shown to follow from the
+domains, μ = tan ξ and condition (1) where named: an exact zero test modulo
+sin² + cos² = 1, or a sign from structure, :func:`~graspcompass.proof.signs.sign_of`),
+*false* (false at every point of the model: the step or claim is then REFUTED as
+vacuous, never PROVED) or *extra* (listed as a condition of the result).
+
+Examples
+--------
+>>> from graspcompass.symbols import x1, phi1
+>>> z = sp.sin(phi1)**2 + sp.cos(phi1)**2 - 1
+>>> decide([("!=", x1 * z)], cond1=False).false
+['x1*(sin(phi1)**2 + cos(phi1)**2 - 1) ≠ 0']
+>>> decide([(">=", -x1)], cond1=False).false
+['-x1 ≥ 0']
+>>> decide([("!=", x1)], cond1=False).implied
+['x1 ≠ 0 (sign from the domains)']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import sympy as sp
+
+from .. import symbols as S
+from ..expr import Condition
+from ..geometry import Circle, Line, Point
+from ..geometry.exact import decide_zero
+from .signs import CONDITION_1, sign_of
+
+__all__ = ["Decided", "decide", "operation_conditions", "tie_mu"]
+
+_WORD = {"!=": "≠ 0", ">=": "≥ 0", ">": "> 0"}
+#: Intervals that hold on the domains alone (ξ is a half angle, 0 < ξ < π/2).
+_DOMAIN_INTERVALS = {S.xi1: (0, sp.pi / 2), S.xi2: (0, sp.pi / 2)}
+_MAX_FACTOR_NODES = 400  # factor only small conditions (a sign from the factors)
+
+
+@dataclass
+class Decided:
+    """Conditions split into implied (with reasons), false everywhere, and extra."""
+
+    implied: list[str] = field(default_factory=list)
+    false: list[str] = field(default_factory=list)
+    extra: list[str] = field(default_factory=list)
+
+    def add(self, other: Decided) -> None:
+        """Merge ``other`` into this one (order kept, no repeats)."""
+        for mine, theirs in ((self.implied, other.implied), (self.false, other.false),
+                             (self.extra, other.extra)):
+            mine += [t for t in theirs if t not in mine]
+
+
+def tie_mu(names: Iterable[str]) -> dict[sp.Symbol, sp.Expr]:
+    """μi -> sin ξi / cos ξi for each contact whose μ and ξ are both declared (eq. (22))."""
+    names = set(names)
+    return {getattr(S, f"mu{i}"): sp.sin(getattr(S, f"xi{i}")) / sp.cos(getattr(S, f"xi{i}"))
+            for i in (1, 2)
+            if f"mu{i}" in names and f"xi{i}" in names}
+
+
+def _zero(e: sp.Expr) -> bool | None:
+    """``e`` vanishes at every point where it is defined (modulo sin² + cos² = 1 and
+    μ = tan ξ where ξ occurs); True also when ``e`` is defined nowhere (0/0 everywhere)."""
+    from .reduce import DegenerateClaimError, reduce_expr
+
+    if e.is_number and not e.free_symbols:
+        z = decide_zero(e)
+        return z
+    try:
+        return reduce_expr(e).is_zero or None
+    except DegenerateClaimError:
+        return True
+    except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError):
+        return None
+
+
+def _sign(e: sp.Expr, intervals: Mapping) -> tuple[int, int] | None:
+    got = None
+    try:
+        got = sign_of(e, intervals)
+        if got is None and sp.count_ops(e) <= _MAX_FACTOR_NODES:
+            got = sign_of(sp.factor(e), intervals)
+    except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError,
+            sp.PolynomialError):
+        return None
+    return got
+
+
+def _ring_nonzero(e: sp.Expr) -> bool:
+    """The numerator of ``e`` reduces to a non-zero constant or a polynomial of positive
+    terms in x1, x2, μ (y ≥ 0) in the model's ring (its denominators are the kernel's,
+    assumed non-zero where they are recorded)."""
+    from .certify_algebra import _positive, ring
+
+    R = ring()
+    try:
+        q = R.reduce(R.frac(e)[0])
+    except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError):
+        return False
+    return bool(q) and (q.is_ground or _positive(q, R))
+
+
+def _classified(e: sp.Expr, cond1: bool) -> tuple[list[str], list[str]] | bool | None:
+    """``e ≠ 0`` by the checker's classification of ring factors (the kernel's own
+    conditions are stated so, in the same words): (implied, extra), False when it is
+    false for every parameter, None outside the ring."""
+    from .certify_algebra import _primitive, ring
+    from .program_decide import _classified as split
+
+    try:
+        p = ring().frac(e)[0]
+    except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError):
+        return None
+    if not p:
+        return False
+    try:
+        return split([_primitive(p)], cond1)
+    except ValueError:
+        return False
+
+
+def decide(conditions: Iterable[Condition], cond1: bool,
+           tie: Mapping[sp.Symbol, sp.Expr] | None = None) -> Decided:
+    """Split ``(relation, expr)`` conditions into implied, false everywhere and extra.
+
+    Parameters
+    ----------
+    conditions : iterable of (str, sympy.Expr)
+        ``("!=", e)``: e ≠ 0; ``(">=", e)``: e ≥ 0; ``(">", e)``: e > 0.
+    cond1 : bool
+        Whether condition (1) of §2.2.2 may be used (the file or claim names it).
+    tie : Mapping, optional
+        μi -> tan ξi where a file declares both (:func:`tie_mu`).
+
+    Returns
+    -------
+    Decided
+        Texts ``"e ≠ 0 (reason)"`` implied, ``"e ≠ 0"`` false at every point of the
+        model, ``"e ≥ 0"`` kept as conditions.
+    """
+    out = Decided()
+    intervals = CONDITION_1 if cond1 else _DOMAIN_INTERVALS
+    why = "condition (1)" if cond1 else "the domains"
+    for rel, e in dict.fromkeys(conditions):
+        e = sp.sympify(e)  # internal: conditions the parser and the kernel made
+        if tie:
+            e = e.xreplace(tie)
+        text = f"{e} {_WORD[rel]}"
+        z = _zero(e)
+        if z:
+            (out.implied if rel == ">=" else out.false).append(
+                text + " (identically zero)" if rel == ">=" else text)
+            continue
+        s = _sign(e, intervals)
+        if s is not None:
+            lo, hi = s
+            holds = {"!=": lo > 0 or hi < 0, ">=": lo >= 0, ">": lo > 0}[rel]
+            fails = {"!=": lo == hi == 0, ">=": hi < 0, ">": hi <= 0}[rel]
+            if holds:
+                out.implied.append(f"{text} (sign from {why})")
+                continue
+            if fails and not cond1:  # false on the domains alone: false on the whole model
+                out.false.append(text)
+                continue
+            if fails:
+                out.false.append(text)
+                continue
+        if rel == "!=" and _ring_nonzero(e):
+            out.implied.append(f"{text} (a positive polynomial of x1, x2, μ modulo "
+                               "sin² + cos² = 1)")
+            continue
+        if rel == "!=":
+            split = _classified(e, cond1)
+            if split is False:
+                out.false.append(text)
+                continue
+            if split is not None:
+                out.implied += [t for t in split[0] if t not in out.implied]
+                out.extra += [t for t in split[1] if t not in out.extra]
+                continue
+        if e.is_number and not e.free_symbols and z is False:
+            out.implied.append(f"{text} (a number)")
+            continue
+        out.extra.append(text)
+    return out
+
+
+def _norm2(p: Point) -> sp.Expr:
+    return p.x ** 2 + p.y ** 2
+
+
+def _disc(line: Line, circle: Circle) -> sp.Expr:
+    """The discriminant of the kernel's line-circle intersection (two points iff > 0)."""
+    d = line.direction
+    w = Point(line.point.x - circle.center.x, line.point.y - circle.center.y)
+    a, b = d.dot(d), d.dot(w)
+    return b ** 2 - a * (w.dot(w) - circle.radius2)
+
+
+def _radical_axis(c1: Circle, c2: Circle) -> Line:
+    n = Point(c2.center.x - c1.center.x, c2.center.y - c1.center.y)
+    h = (c1.radius2 - c2.radius2 + c2.center.dot(c2.center) - c1.center.dot(c1.center)) / 2
+    k = h / n.dot(n)
+    return Line(Point(n.x * k, n.y * k), Point(-n.y, n.x))
+
+
+def operation_conditions(op: str, inputs: list[Any], obj: Any
+                         ) -> tuple[list[Condition], list[sp.Expr]]:
+    """``(conditions the operation needs, kernel conditions they replace)``.
+
+    The kernel records what it must divide by as ``≠ 0``; an intersection with a
+    circle records its discriminant, which must be ≥ 0 for the point to exist, and a
+    circle, a line or a radical axis may need two points distinct that the kernel
+    does not record.  Computed from the step's inputs (exact expressions).
+    """
+    if op in ("circle_through", "circle_on_diameter"):
+        return [("!=", obj.radius2)], []
+    if op == "line_through":
+        return [("!=", _norm2(obj.direction))], []
+    if op == "line_with_direction":
+        return [("!=", _norm2(obj.direction))], []
+    if op == "intersect_line_circle":
+        d = _disc(inputs[0], inputs[1])
+        return [(">=", d)], [d]
+    if op == "intersect_circles":
+        c1, c2 = inputs
+        n = Point(c2.center.x - c1.center.x, c2.center.y - c1.center.y)
+        conds: list[Condition] = [("!=", _norm2(n))]
+        if decide_zero(sp.sympify(_norm2(n))) is True:
+            return conds, []
+        d = _disc(_radical_axis(c1, c2), c1)
+        return [*conds, (">=", d)], [d]
+    if op == "second_intersection":
+        c1, c2, _ = inputs
+        n = Point(c2.center.x - c1.center.x, c2.center.y - c1.center.y)
+        return [("!=", _norm2(n))], []
+    return [], []
+
+
+def distinct(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool:
+    """Proof that ``a ≠ b`` wherever the ``assumed`` expressions are non-zero and the
+    lengths and friction coefficients are positive: the numerators of ``a − b``, the
+    relations sin² + cos² = 1 and ``1 − t·k`` (k the product of what is non-zero) have
+    the Gröbner basis [1] (Rabinowitsch), so no point makes ``a = b``.  False: no proof."""
+    from .certify_algebra import _expand_trig
+
+    exprs = [sp.together(_expand_trig(sp.sympify(e))) for e in (a.x - b.x, a.y - b.y)]
+    nums = [sp.fraction(e)[0] for e in exprs]
+    if any(n.is_number and n != 0 for n in nums):
+        return True
+    k = sp.Integer(1)
+    for e in assumed:
+        k *= sp.fraction(sp.together(_expand_trig(sp.sympify(e))))[0]
+    free = set().union(*(n.free_symbols for n in nums)) | k.free_symbols
+    for s in (S.x1, S.x2, S.mu1, S.mu2):
+        if s in free:
+            k *= s
+    if S.x1 in free and S.x2 in free:
+        k *= S.x1 + S.x2
+    atoms = set().union(*(n.atoms(sp.sin, sp.cos) for n in nums)) | k.atoms(sp.sin, sp.cos)
+    if any(not at.args[0].is_Symbol for at in atoms):
+        return False
+    angles = {at.args[0] for at in atoms}
+    sub: dict[sp.Basic, sp.Symbol] = {}
+    rels = []
+    for ang in angles:
+        s_, c_ = sp.Dummy(f"s_{ang}"), sp.Dummy(f"c_{ang}")
+        sub[sp.sin(ang)], sub[sp.cos(ang)] = s_, c_
+        rels.append(s_**2 + c_**2 - 1)
+    t = sp.Dummy("t")
+    polys = [n.xreplace(sub) for n in nums] + rels + [1 - t * k.xreplace(sub)]
+    gens = [t, *sorted({g for p in polys for g in p.free_symbols} - {t}, key=str)]
+    if len(gens) > 12 or sp.count_ops(k) > 2000:
+        return False
+    try:
+        return list(sp.groebner(polys, *gens, order="grevlex").exprs) == [1]
+    except (sp.PolynomialError, ValueError, TypeError, ArithmeticError, NotImplementedError):
+        return False

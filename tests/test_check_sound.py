@@ -1,0 +1,96 @@
+"""Issue 19, one test per item (each failed before the fix)."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from graspcompass import symbols as S
+from graspcompass.construction.language import ConstructionBuilder, parse
+from graspcompass.expr import parse_with_conditions
+from graspcompass.proof.program_check import check_program
+from graspcompass.proof.prove import DegenerateClaimError, Status, prove_sign
+
+Z = "(sin(phi1)**2 + cos(phi1)**2 - 1)"
+HEAD = "param x1 > 0\nparam x2 > 0\nparam phi1 angle\n"
+
+
+def _last(text: str):
+    return check_program(parse(text)).claims[-1]
+
+
+def test_collinear_with_a_repeated_first_point_is_refuted() -> None:  # item 1
+    text = "param a > 0\nA = point (0, 0)\nB = point (a, 0)\nD = point (0, a)\n"
+    assert _last(text + "claim collinear A B A D\n").status is Status.REFUTED
+    b = ConstructionBuilder()
+    b.param("a", "positive")
+    b.step("A", "point", values=(0, 0))
+    b.step("B", "point", values=("a", 0))
+    b.step("D", "point", values=(0, "a"))
+    b.claim("collinear", "A", "B", "A", "D")
+    assert check_program(b.build()).claims[0].status is Status.REFUTED
+
+
+def test_equality_in_a_sign_claim_is_decided() -> None:  # item 6
+    assert _last(HEAD + "claim sign x1 + 1 == x1\n").status is Status.REFUTED
+    assert _last(HEAD + "claim sign 2*x1 == x1 + x1\n").status is Status.PROVED
+
+
+def test_the_parser_keeps_divisors_and_radicands() -> None:  # items 2-4
+    x1, x2 = sp.symbols("x1 x2", positive=True)
+    _, conds = parse_with_conditions("x1*(x1 - x2)/(x1 - x2)", symbols={"x1": x1, "x2": x2})
+    assert ("!=", x1 - x2) in conds
+    _, conds = parse_with_conditions("x1/x1", symbols={"x1": x1})
+    assert ("!=", x1) in conds
+
+
+@pytest.mark.parametrize("text", [
+    f"P = point (x1*{Z}/(x1*{Z}), 0)\nclaim P == point(1, 0)\n",
+    f"claim sign {Z}/{Z} > 0\n",
+    "Q = point (sqrt(-x1), 0)\nclaim Q == point(sqrt(-x1), 0)\n",
+    "claim sign 1/(x1 - x1*sin(phi1)**2 - x1*cos(phi1)**2) > 0\n",
+])
+def test_a_vacuous_claim_is_refuted_not_proved(text: str) -> None:  # items 2, 3, 7
+    row = _last(HEAD + text)
+    assert row.status is Status.REFUTED and row.counterexample is None
+
+
+def test_mu_and_xi_declared_together_are_tied() -> None:  # item 3
+    text = ("param mu1 friction\nparam xi1 half_angle\nO = point (0, 0)\nA = point (1, 0)\n"
+            "l = line_with_direction O (1, mu1)\nm = line_with_direction A (cos(xi1), "
+            "sin(xi1))\nX = meet l m\n")
+    assert check_program(parse(text)).steps[-1].status is Status.REFUTED
+
+
+def test_existence_conditions_are_listed() -> None:  # item 4
+    r = check_program(parse(HEAD + "C = point (x1, 0)\nQ = point (x2, 0)\n"
+                            "c = circle_through C Q\n"))
+    assert r.steps[-1].result.conditions  # degenerate at x1 = x2
+    r = check_program(parse(HEAD + "claim sign x1*(x1 - x2)/(x1 - x2) > 0\n"))
+    assert any("x1 - x2" in c for c in r.claims[0].result.conditions)
+
+
+@pytest.mark.parametrize("claim", ["sign cos(phi1 + phi2) < 0", "sign x1 - x2 > 0"])
+def test_false_sign_claims_are_refuted(claim: str) -> None:  # item 6
+    row = _last("param x1 > 0\nparam x2 > 0\nparam phi1 angle\nparam phi2 angle\n"
+                f"claim {claim}\n")
+    assert row.status is Status.REFUTED and row.counterexample
+
+
+def test_a_narrow_false_sign_claim_is_refuted() -> None:  # item 6
+    row = _last("param phi1 angle\nparam xi1 half_angle\n"
+                "claim sign cos(phi1 + xi1) + 1/100 < 0\n")
+    assert row.status is Status.REFUTED
+
+
+def test_prove_sign_refuses_an_empty_interval_and_a_0_over_0() -> None:  # items 5, 7
+    with pytest.raises(ValueError):
+        prove_sign(S.x1, 1, intervals={S.phi1: (sp.pi, 0)})
+    z = sp.sin(S.phi1) ** 2 + sp.cos(S.phi1) ** 2 - 1
+    with pytest.raises(DegenerateClaimError):
+        prove_sign(z * S.x1 / sp.expand(S.x1 * z), -1, witness=[1])
+
+
+def test_an_unreducible_claim_is_a_verdict_not_a_crash() -> None:  # item 7
+    row = _last(HEAD + "claim sign sin(phi1 + 1) > -2\n")
+    assert row.status in (Status.PROVED, Status.UNDECIDED)
