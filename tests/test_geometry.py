@@ -848,3 +848,20 @@ def test_angle_of_gives_multiples_of_pi_where_sympy_knows_them(k):
     assert angle_of(Point(s, -c)) == a   # e(a) = (sin a, -cos a)
     assert angle_of(Point(sympy.sqrt(2) - 1, -1)) == sympy.pi / 8
     assert angle_of(Point(-1 - sympy.sqrt(2), 1)) == -5 * sympy.pi / 8
+
+
+def test_atan_table_is_sympys_on_the_kernels_numbers():
+    """measurement._atan_values is written out; it must be sympy's table restricted to
+    the arguments without nested radicals (the only ones a canonical number can be)."""
+    from graspcompass.geometry.measurement import _atan_values
+    from graspcompass.geometry.trig import is_radical
+
+    theirs = {k: v for k, v in sympy.atan._atan_table().items() if v > 0 and is_radical(k)}
+    theirs[sympy.Integer(1)] = sympy.pi / 4
+    assert _atan_values() == theirs
+
+
+def test_small_primes_sieve_is_sympys():
+    from graspcompass.geometry._exact_convert import _TRIAL, _small_primes
+
+    assert _small_primes() == tuple(sympy.primerange(2, _TRIAL))

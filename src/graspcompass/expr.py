@@ -212,6 +212,8 @@ class _Reader:
 
     def read(self, node: ast.AST) -> sympy.Expr:
         value = self._node(node)
+        if value.is_Symbol or value is sympy.pi:
+            return value  # a name or pi: nothing to bound
         if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
             raise _fail(self.text, "the value is not finite (division by zero?)")
         if _max_bits(value) > MAX_BITS:

@@ -28,6 +28,10 @@ from .program import (
 
 
 def _strip_comment(text: str) -> str:
+    if "#" not in text:
+        return text
+    if '"' not in text:
+        return text[: text.index("#")]
     quoted = False
     i = 0
     while i < len(text):

@@ -27,7 +27,13 @@ _TRIAL = 2**15
 
 @lru_cache(maxsize=1)
 def _small_primes() -> tuple[int, ...]:
-    return tuple(sp.primerange(2, _TRIAL))
+    """The primes below :data:`_TRIAL`, by a sieve (``sympy.primerange`` takes 20 ms)."""
+    sieve = bytearray([1]) * _TRIAL
+    sieve[:2] = b"\x00\x00"
+    for i in range(2, math.isqrt(_TRIAL - 1) + 1):
+        if sieve[i]:
+            sieve[i * i::i] = bytes(len(range(i * i, _TRIAL, i)))
+    return tuple(i for i, flag in enumerate(sieve) if flag)
 
 
 def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:

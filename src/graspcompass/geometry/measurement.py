@@ -47,10 +47,17 @@ def signed_length(start: Point, end: Point, line: Line) -> sp.Expr:
 
 @lru_cache(maxsize=1)
 def _atan_values() -> dict[sp.Expr, sp.Expr]:
-    """Positive arguments at which sympy's ``atan`` is a multiple of π, and those values."""
-    table: dict[sp.Expr, sp.Expr] = {sp.Integer(1): sp.pi / 4}
-    table.update((k, v) for k, v in sp.atan._atan_table().items() if v > 0)
-    return table
+    """Positive arguments at which ``atan`` is a multiple of π, and those values.
+
+    The entries of sympy's own table (``atan._atan_table``) whose arguments the kernel
+    can make: square roots of rationals, no nested radicals (``tan(pi/5)`` is
+    ``sqrt(5 - 2*sqrt(5))``, never a canonical number).  Written out: building
+    sympy's table costs 25 ms in every new process (``test_geometry`` checks that
+    both agree).
+    """
+    r2, r3 = sp.sqrt(2), sp.sqrt(3)
+    return {sp.Integer(1): sp.pi / 4, r3 / 3: sp.pi / 6, r3: sp.pi / 3, r2 - 1: sp.pi / 8,
+            r2 + 1: 3 * sp.pi / 8, 2 - r3: sp.pi / 12, r3 + 2: 5 * sp.pi / 12}
 
 
 def _atan_positive(ratio: sp.Expr) -> sp.Expr:
