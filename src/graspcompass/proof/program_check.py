@@ -59,6 +59,7 @@ from .. import symbols as S
 from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
+from ._budget import TIMED_OUT, Budget
 from .certify_paper import PaperModel, model_at
 from .program_conditions import decide, distinct, operation_conditions, tie_mu
 from .program_decide import (
@@ -434,7 +435,8 @@ def _distinct_ends(program: Program, c: Construction, s: Any, own: Any,
 
 # -- the whole file -----------------------------------------------------------------------
 def check_program(program: Program, against: str | None = None,
-                  progress: Callable[[int, int, str], None] | None = None) -> ProgramReport:
+                  progress: Callable[[int, int, str], None] | None = None,
+                  timeout: float | None = None) -> ProgramReport:
     """Certify the steps, prove the claims and (``against="paper"``) grade the objects.
 
     Parameters
@@ -448,6 +450,11 @@ def check_program(program: Program, against: str | None = None,
         for every grasp satisfying condition (1) and μ = tan ξ (22).
     progress : callable, optional
         Called as ``progress(done, total, name)`` after each row.
+    timeout : float, optional
+        Seconds for the whole check (``None``: no limit).  Every verdict reached
+        before the limit is kept; each row not decided by then (and every row when
+        the replay itself does not end in time) is UNDECIDED, its method
+        :data:`~graspcompass.proof._budget.TIMED_OUT`.
 
     Returns
     -------
@@ -473,7 +480,20 @@ def check_program(program: Program, against: str | None = None,
     if against == "paper" and not targets:
         raise CheckError(f"{program.file}: no object is named like a point of the paper "
                          f"({', '.join(PAPER_TARGETS)}): nothing to grade")
-    c = replay(program)
+    budget = Budget(timeout)
+
+    def late(name: str, kind: str, line: int) -> Callable[[], CheckRow]:
+        return lambda: CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, TIMED_OUT, 0.0, detail=f"--timeout {timeout:g} s",
+            hypotheses=_hypotheses(program, _COND1 in program.hypotheses)))
+
+    c = budget.run(lambda: replay(program), lambda: None)
+    if c is None:  # the replay itself ran out of time: every row is timed out
+        rows = [late(st.name, "step", st.line)() for st in program.steps]
+        claims = [late(_text(cl), "claim", cl.line)() for cl in program.claims]
+        tg = [late(t, "target", _line(program, t))() for t in targets]
+        return ProgramReport(program.file, tuple(rows), tuple(claims), tuple(tg), against,
+                             time.perf_counter() - t0, None)
     env = {s.name: s.obj for s in c.steps}
     made = set(env)
     targets = [t for t in targets if t in made]  # an optional step may be left out
@@ -487,7 +507,9 @@ def check_program(program: Program, against: str | None = None,
     statements = {st.name: st for st in program.steps}
     vacuous: dict[str, str] = {}
     plain_conds: dict[str, tuple[list[str], list[str]]] = {}
-    for s in c.steps:
+
+    def step_row(s: Any) -> CheckRow:
+        """One step's row; the shared tables are written only once it is complete."""
         t1 = time.perf_counter()
         line = _line(program, s.name)
         stmt = statements[s.name]
@@ -503,41 +525,50 @@ def check_program(program: Program, against: str | None = None,
             implied, extra = implied + own.implied, extra + own.extra
         except ValueError as exc:
             vacuous[s.name] = str(exc)
-            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
+            return CheckRow(s.name, "step", line, ProofResult(
                 Status.REFUTED, "degenerate for every parameter: it exists at no point of "
-                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps)))
-        else:
-            step_conds[s.name] = (implied, extra)
-            if cond1_file:  # for claims not under condition1: the same, without (1)
-                try:
-                    imp0, ext0 = step_conditions(s, False, replaced, tie)
-                    own0 = decide([*stmt.conditions, *ops], False, tie)
-                    plain_conds[s.name] = (imp0 + own0.implied, ext0 + own0.extra)
-                except ValueError:
-                    plain_conds[s.name] = (implied, extra)
-            given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
-            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
-                Status.GIVEN if given and not s.inputs else Status.PROVED,
-                "defined where its conditions hold (the kernel's non-degeneracy conditions)",
-                time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
-                implied=tuple(implied))))
+                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps))
+        plain = (implied, extra)
+        if cond1_file:  # for claims not under condition1: the same, without (1)
+            try:
+                imp0, ext0 = step_conditions(s, False, replaced, tie)
+                own0 = decide([*stmt.conditions, *ops], False, tie)
+                plain = (imp0 + own0.implied, ext0 + own0.extra)
+            except ValueError:
+                pass
+        step_conds[s.name] = (implied, extra)
+        plain_conds[s.name] = plain
+        given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
+        return CheckRow(s.name, "step", line, ProofResult(
+            Status.GIVEN if given and not s.inputs else Status.PROVED,
+            "defined where its conditions hold (the kernel's non-degeneracy conditions)",
+            time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
+            implied=tuple(implied)))
+
+    for s in c.steps:
+        line = _line(program, s.name)
+        step_rows.append(budget.run(lambda s=s: step_row(s), late(s.name, "step", line)))
         done += 1
         if progress:
             progress(done, total, s.name)
     claim_rows = []
     for cl in program.claims:
         use = step_conds if _COND1 in cl.under or not cond1_file else plain_conds
-        claim_rows.append(_guarded(_text(cl), "claim", cl.line, hyps, lambda cl=cl, use=use:
-                                   _check_claim(program, cl, env, use, vacuous)))
+        claim_rows.append(budget.run(
+            lambda cl=cl, use=use: _guarded(_text(cl), "claim", cl.line, hyps, lambda: (
+                _check_claim(program, cl, env, use, vacuous))),
+            late(_text(cl), "claim", cl.line)))
         done += 1
         if progress:
             progress(done, total, claim_rows[-1].name)
     target_rows = []
     if model is not None:
         for name in targets:
-            target_rows.append(_guarded(name, "target", _line(program, name), hyps,
-                                        lambda name=name: _check_target(
-                                            program, name, env, model, step_conds, vacuous)))
+            line = _line(program, name)
+            target_rows.append(budget.run(
+                lambda name=name, line=line: _guarded(name, "target", line, hyps, lambda: (
+                    _check_target(program, name, env, model, step_conds, vacuous))),
+                late(name, "target", line)))
             done += 1
             if progress:
                 progress(done, total, name)
