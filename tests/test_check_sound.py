@@ -146,3 +146,28 @@ def test_check_against_paper_proves_nothing_about_a_0_over_0_v1(tmp_path, capsys
             assert rows.get(name) != "PROVED", name
     else:  # refused: one line naming the step, exit 2
         assert status == 2 and "V1" in out.err and len(out.err.strip().splitlines()) == 1
+
+
+# -- item 5: a REFUTED row carries a counterexample or a stated exact reason --------------------
+def test_a_target_of_the_wrong_kind_is_refuted_with_a_stated_reason() -> None:
+    from graspcompass.construction.language import paper_text
+
+    text = paper_text()
+    head = text[: text.index("# -- the circles")]
+    old = "V1 = point_from_lengths OMX1 OY1 (-1, -1)"
+    r = check_program(parse(head.replace(old, "V1 = line_through O P1")), "paper")
+    row = next(t for t in r.targets if t.name == "V1")
+    assert row.status is Status.REFUTED and row.counterexample is None
+    assert row.reason and "Line" in row.reason and "every" in row.reason
+    assert row.record()["reason"] == row.reason
+    from graspcompass.proof.program_report import to_markdown, to_table
+
+    assert row.reason[:40] in to_table(r) and "none: " in to_markdown(r)
+
+
+def test_a_bare_refuted_row_is_not_reported_as_refuted() -> None:
+    from graspcompass.proof.program_check import CheckRow
+    from graspcompass.proof.prove import ProofResult
+
+    row = CheckRow("x", "claim", 1, ProofResult(Status.REFUTED, "no reason", 0.0))
+    assert row.status is Status.UNDECIDED

@@ -128,13 +128,31 @@ class CheckRow:
         """Parameter name -> exact value where the file contradicts the statement."""
         return self.result.counterexample
 
+    @property
+    def reason(self) -> str | None:
+        """Why a REFUTED row has no counterexample: the exact reason (``None`` otherwise)."""
+        if self.status is not Status.REFUTED or self.counterexample is not None:
+            return None
+        return self.result.detail or None
+
+    def __post_init__(self) -> None:
+        """REFUTED comes with a counterexample or a stated exact reason, never bare: a bare
+        one is UNDECIDED (an internal guard; every REFUTED row above states one)."""
+        r = self.result
+        if r.status is Status.REFUTED and r.counterexample is None and not r.detail:
+            object.__setattr__(self, "result", ProofResult(
+                Status.UNDECIDED, "refuted without a counterexample or a stated reason: "
+                "not reported as refuted", r.seconds, hypotheses=r.hypotheses,
+                conditions=r.conditions, implied=r.implied))
+
     def record(self) -> dict[str, Any]:
         """JSON-ready: name, status, hypotheses, conditions, counterexample, seconds, ..."""
         r = self.result
         return {"name": self.name, "status": r.status.value, "line": self.line,
                 "hypotheses": list(r.hypotheses), "conditions": list(r.conditions),
                 "implied": list(r.implied), "counterexample": r.counterexample,
-                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail}
+                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail,
+                "reason": self.reason}
 
 
 @dataclass(frozen=True)
@@ -386,9 +404,14 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
     except CheckError:
         have = ()
     if len(have) != len(want):
+        what = {2: "a point", 3: "a circle", 1: "a number"}[len(want)]
         return CheckRow(name, "target", _line(program, name), ProofResult(
             Status.REFUTED, f"the file's {name} is a {type(obj).__name__}; the paper's is "
-            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps))
+            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps,
+            detail=f"no counterexample needed: the file's {name} is a {type(obj).__name__} "
+            f"for every value of the parameters (the kind of an object does not depend on "
+            f"them) and the paper's {name} is {what}, so they differ at every point of the "
+            f"model"))
     implied: list[str] = []
     extra: list[str] = []
     for n in _ancestors(program, [name]):
