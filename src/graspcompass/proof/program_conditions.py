@@ -100,6 +100,35 @@ def _sign(e: sp.Expr, intervals: Mapping) -> tuple[int, int] | None:
     return got
 
 
+def _even_power(t: sp.Expr) -> bool:
+    """``t`` is a product of even powers of real expressions (so ``t ≥ 0``)."""
+    factors = sp.Mul.make_args(t)
+    return bool(factors) and all(
+        isinstance(f, sp.Pow) and f.exp.is_Integer and f.exp % 2 == 0
+        and f.base.is_real is True for f in factors)
+
+
+def _positive_sum(f: sp.Expr, intervals: Mapping) -> bool:
+    """``f > 0`` at every point: each term is a positive number, a positive multiple of
+    even powers of real expressions (≥ 0), or of a sign ≥ 0 on the intervals, and one
+    of them is > 0 ((x1 − x2)² + 1, which the interval signs alone cannot see)."""
+    strict = False
+    for t in sp.Add.make_args(sp.sympify(f)):
+        c, rest = t.as_coeff_Mul()
+        if c < 0:
+            return False
+        if rest == 1:
+            strict = strict or c > 0
+            continue
+        if _even_power(rest):
+            continue
+        s = _sign(t, intervals)
+        if s is None or s[0] < 0:
+            return False
+        strict = strict or s[0] > 0
+    return strict
+
+
 def _ring_nonzero(e: sp.Expr) -> bool:
     """The numerator of ``e`` reduces to a non-zero constant or a polynomial of positive
     terms in x1, x2, μ (y ≥ 0) in the model's ring (its denominators are the kernel's,
@@ -179,6 +208,12 @@ def decide(conditions: Iterable[Condition], cond1: bool,
             if fails:
                 out.false.append(text)
                 continue
+        if rel in (">=", ">") and _positive_sum(-e, intervals):  # negative everywhere
+            out.false.append(text)
+            continue
+        if rel in (">=", ">") and _positive_sum(e, intervals):
+            out.implied.append(f"{text} (a positive sum of squares and signs from {why})")
+            continue
         if rel == "!=" and _ring_nonzero(e):
             out.implied.append(f"{text} (a positive polynomial of x1, x2, μ modulo "
                                "sin² + cos² = 1)")
