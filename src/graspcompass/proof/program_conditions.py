@@ -108,25 +108,35 @@ def _even_power(t: sp.Expr) -> bool:
         and f.base.is_real is True for f in factors)
 
 
+def _bounded_trig(t: sp.Expr) -> bool:
+    """``t`` is a product of powers of sines and cosines (so ``|t| ≤ 1``)."""
+    return all(isinstance(f.base if isinstance(f, sp.Pow) else f, (sp.sin, sp.cos))
+               and (not isinstance(f, sp.Pow) or (f.exp.is_Integer and f.exp > 0))
+               and f.free_symbols for f in sp.Mul.make_args(t))
+
+
 def _positive_sum(f: sp.Expr, intervals: Mapping) -> bool:
-    """``f > 0`` at every point: each term is a positive number, a positive multiple of
-    even powers of real expressions (≥ 0), or of a sign ≥ 0 on the intervals, and one
-    of them is > 0 ((x1 − x2)² + 1, which the interval signs alone cannot see)."""
+    """``f > 0`` at every point, term by term: a number adds itself to a floor, a
+    positive multiple of even powers of real expressions is ≥ 0, c·(product of sines and
+    cosines) is ≥ −|c|, any other term needs a sign ≥ 0 on the intervals; then the floor
+    is > 0, or ≥ 0 with a term > 0 ((x1 − x2)² + 1 and 2 − cos²φ, which interval signs
+    alone do not see)."""
+    floor = sp.Integer(0)
     strict = False
     for t in sp.Add.make_args(sp.sympify(f)):
         c, rest = t.as_coeff_Mul()
-        if c < 0:
-            return False
         if rest == 1:
-            strict = strict or c > 0
+            floor += c
+        elif c > 0 and _even_power(rest):
             continue
-        if _even_power(rest):
-            continue
-        s = _sign(t, intervals)
-        if s is None or s[0] < 0:
-            return False
-        strict = strict or s[0] > 0
-    return strict
+        elif _bounded_trig(rest):
+            floor -= abs(c)
+        else:
+            sg = _sign(t, intervals)
+            if sg is None or sg[0] < 0:
+                return False
+            strict = strict or sg[0] > 0
+    return bool(floor > 0) or (bool(floor >= 0) and strict)
 
 
 def _ring_nonzero(e: sp.Expr) -> bool:
