@@ -88,12 +88,48 @@ def _zero(e: sp.Expr) -> bool | None:
         return None
 
 
+def _factor(e: sp.Expr) -> sp.Expr:
+    """``e`` as a product of irreducible factors over Q, numerator and denominator, by
+    python-flint (sympy's ``factor`` took minutes on the conditions of a recipe drawing a
+    perpendicular as ``line_through``): sines, cosines and other atoms are generators;
+    anything else (a float, a radical of a symbol) falls back to ``sp.factor``."""
+    import flint
+
+    num, den = sp.fraction(sp.together(e))
+    roots = [a for a in num.atoms(sp.Pow) | den.atoms(sp.Pow) if not a.exp.is_Integer]
+    if roots or num.atoms(sp.Float) | den.atoms(sp.Float):
+        return sp.factor(e)
+    atoms = sorted(num.atoms(sp.sin, sp.cos) | den.atoms(sp.sin, sp.cos),
+                   key=sp.default_sort_key)
+    dummies = [sp.Dummy(f"g{i}") for i in range(len(atoms))]
+    sub = dict(zip(atoms, dummies))
+    num, den = num.xreplace(sub), den.xreplace(sub)
+    gens = sorted(num.free_symbols | den.free_symbols, key=str)
+    if not gens:
+        return e
+    ctx = flint.fmpq_mpoly_ctx.get(tuple(str(g) for g in gens), "lex")
+    back = {d: a for a, d in sub.items()}
+
+    def one(x: sp.Expr) -> sp.Expr:
+        poly = sp.Poly(x, *gens, domain="QQ")
+        q = ctx.from_dict({m: flint.fmpq(int(c.p), int(c.q)) for m, c in poly.terms()})
+        c, factors = q.factor()
+        out = sp.Rational(int(c.p), int(c.q))
+        for f, k in factors:
+            term = sp.Add(*(sp.Rational(int(v.p), int(v.q)) * sp.Mul(*(g**i for g, i in
+                          zip(gens, m))) for m, v in f.to_dict().items()))
+            out *= term.xreplace(back) ** int(k)
+        return out
+
+    return one(num) / one(den)
+
+
 def _sign(e: sp.Expr, intervals: Mapping) -> tuple[int, int] | None:
     got = None
     try:
         got = sign_of(e, intervals)
         if got is None and sp.count_ops(e) <= _MAX_FACTOR_NODES:
-            got = sign_of(sp.factor(e), intervals)
+            got = sign_of(_factor(e), intervals)
     except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError,
             sp.PolynomialError):
         return None
