@@ -171,3 +171,22 @@ def test_a_bare_refuted_row_is_not_reported_as_refuted() -> None:
 
     row = CheckRow("x", "claim", 1, ProofResult(Status.REFUTED, "no reason", 0.0))
     assert row.status is Status.UNDECIDED
+
+
+def test_steps_built_on_a_step_that_exists_nowhere_are_refuted() -> None:  # item 2
+    """The 0/0 hidden in a let: V1 is vacuous, and so is every step made from it (circle1,
+    the break points B12, B13, B14): none is PROVED, each says where it comes from."""
+    from graspcompass.construction.language import paper_text
+
+    text = paper_text().replace("V1 = point_from_lengths OMX1 OY1 (-1, -1)",
+                                f"let z = {Z}/{Z}\nV1 = point_from_lengths OMX1 OY1 (-z, -1)")
+    r = check_program(parse(text), "paper")
+    rows = {(row.kind, row.name): row for row in r.rows}
+    for name in ("V1", "circle1", "B12", "B13", "B14"):
+        row = rows[("step", name)]
+        assert row.status is Status.REFUTED and row.reason, name
+    assert "built on V1" in rows[("step", "B12")].reason
+    assert rows[("target", "V1")].status is Status.REFUTED
+    assert rows[("target", "circle1")].status is Status.REFUTED
+    assert rows[("step", "circle2")].status is Status.PROVED  # the rest stands
+    assert r.exit_status == 1

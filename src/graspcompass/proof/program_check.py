@@ -536,6 +536,16 @@ def check_program(program: Program, against: str | None = None,
         t1 = time.perf_counter()
         line = _line(program, s.name)
         stmt = statements[s.name]
+        gone = [n for n in s.inputs if n in vacuous]
+        if gone:  # built on a step that exists nowhere: it exists nowhere either
+            why = "; ".join(dict.fromkeys(  # the first step that exists nowhere, once
+                vacuous[n] if vacuous[n].startswith("built on ") else
+                f"built on {n}, which exists at no point of the model ({vacuous[n]})"
+                for n in gone))
+            vacuous[s.name] = why
+            return CheckRow(s.name, "step", line, ProofResult(
+                Status.REFUTED, "degenerate for every parameter: it exists at no point of "
+                "the model", time.perf_counter() - t1, detail=why, hypotheses=hyps))
         ops, replaced = operation_conditions(s.op, [env[n] for n in s.inputs], s.obj)
         own = decide([*stmt.conditions, *ops], cond1_file, tie)
         if s.op in _TWO_POINTS and own.extra:
