@@ -95,6 +95,9 @@ def _factor(e: sp.Expr) -> sp.Expr:
     anything else (a float, a radical of a symbol) falls back to ``sp.factor``."""
     import flint
 
+    fast = _factor_in_ring(e)
+    if fast is not None:
+        return fast
     num, den = sp.fraction(sp.together(e))
     roots = [a for a in num.atoms(sp.Pow) | den.atoms(sp.Pow) if not a.exp.is_Integer]
     if roots or num.atoms(sp.Float) | den.atoms(sp.Float):
@@ -122,6 +125,40 @@ def _factor(e: sp.Expr) -> sp.Expr:
         return out
 
     return one(num) / one(den)
+
+
+def _factor_in_ring(e: sp.Expr) -> sp.Expr | None:
+    """:func:`_factor` through the model's ring (its structural conversion is much faster
+    than expanding a sympy expression); None outside the ring."""
+    import flint
+
+    from .certify_algebra import ring
+
+    R = ring()
+    try:
+        num, dens = R.frac(e)
+    except (ValueError, TypeError, KeyError, ArithmeticError, NotImplementedError):
+        return None
+    names = tuple(f"g{i}" for i in range(len(R.gens)))
+    ctx = flint.fmpq_mpoly_ctx.get(names, "lex")
+
+    def factored(p: Any) -> sp.Expr:
+        if not p:
+            return sp.Integer(0)
+        q = ctx.from_dict({m: flint.fmpq(int(c.numerator), int(c.denominator))
+                           for m, c in p.terms()})
+        c, factors = q.factor()
+        out = sp.Rational(int(c.p), int(c.q))
+        for f, k in factors:
+            back = R.R.from_dict({m: R.R.domain(int(v.p), int(v.q))
+                                  for m, v in f.to_dict().items()})
+            out *= R.expr(back) ** int(k)
+        return out
+
+    den = sp.Integer(1)
+    for f, k in dens.items():
+        den *= factored(f) ** k
+    return factored(num) / den
 
 
 def _sign(e: sp.Expr, intervals: Mapping) -> tuple[int, int] | None:
