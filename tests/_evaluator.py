@@ -203,6 +203,30 @@ def _on(p, obj):
     return _small(_dot(_sub(p, obj[1]), _sub(p, obj[1])) - obj[2])
 
 
+def _concyclic(pts) -> bool:
+    """On one circle or one line: the distinct points (coincident ones are one point);
+    three or fewer always are; else the line or the circle through the first three
+    distinct ones must hold every other."""
+    distinct = []
+    for p in pts:
+        if not any(_small(p[0] - q[0]) and _small(p[1] - q[1]) for q in distinct):
+            distinct.append(p)
+    if len(distinct) <= 3:
+        return True
+    p, q, r = distinct[:3]
+    if _small(_cross(_sub(q, p), _sub(r, p))):  # collinear: the line pq is the only one
+        return all(_small(_cross(_sub(q, p), _sub(s, p))) for s in distinct)
+    # circumcentre from |c - p|² = |c - q|² = |c - r|² (two linear equations)
+    a1, b1 = 2 * (q[0] - p[0]), 2 * (q[1] - p[1])
+    a2, b2 = 2 * (r[0] - p[0]), 2 * (r[1] - p[1])
+    c1 = q[0] ** 2 + q[1] ** 2 - p[0] ** 2 - p[1] ** 2
+    c2 = r[0] ** 2 + r[1] ** 2 - p[0] ** 2 - p[1] ** 2
+    det = a1 * b2 - a2 * b1
+    centre = ((c1 * b2 - c2 * b1) / det, (a1 * c2 - a2 * c1) / det)
+    r2 = _dot(_sub(p, centre), _sub(p, centre))
+    return all(_small(_dot(_sub(s, centre), _sub(s, centre)) - r2) for s in distinct)
+
+
 def _claim(body: str, env: dict) -> bool:
     words = body.split()
     kind = words[0]
@@ -211,6 +235,8 @@ def _claim(body: str, env: dict) -> bool:
         return all(_small(_cross(_sub(b, a), _sub(c, a)))
                    for i, a in enumerate(pts) for j, b in enumerate(pts)
                    for k, c in enumerate(pts) if i < j < k)
+    if kind == "concyclic":
+        return _concyclic([env[w] for w in words[1:]])
     if kind == "concurrent":
         lines = [env[w] for w in words[1:]]
         for i in range(len(lines)):

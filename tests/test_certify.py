@@ -273,3 +273,26 @@ def test_symbolic_recipe_proved(friction):
     assert any("φ1+ξ1" in s for s in by["X1"].result.implied)
     assert not by["X1"].result.conditions
     assert "condition (1)" in by["V1"].result.hypotheses
+
+
+@pytest.mark.parametrize("angles", [
+    {"phi1": "3*pi/5"},                      # 108°: sin 108° = cos 18°, not nested radicals
+    {"phi1": "3*pi/7"},                      # no radicals: generators sin(π/7), cos(π/7)
+    {"phi1": "6/5"},                         # radians, with ξ1 = π/4
+    {"phi1": "6/5", "xi1": "1/2"},           # φ1 ± ξ1 = 17/10, 7/10 rad: by the addition formula
+    {"phi1": "6/5", "mu1": "1/2", "xi1": None},
+])
+def test_typed_angles_proved(angles):
+    """Issue 19 item 7: certify at φ = 108° ran past 200 s; on the new kernel it was fast
+    but UNDECIDED, the paper's model writing sin 108° with nested radicals (and sin(φ + ξ)
+    as a new generator) where the grasp uses trig.sincos.  Every step holds there: the
+    construction is the paper's, checked independently by the catalogue."""
+    from graspcompass import PRESETS
+
+    params = dict(PRESETS["fig6"]["params"])
+    params.update(angles)
+    params = {k: v for k, v in params.items() if v is not None}
+    certs = certify(internal_force_diagram(Grasp(**params)))
+    bad = [(c.step, c.result.status.value) for c in certs
+           if c.result.status not in (Status.PROVED, Status.GIVEN)]
+    assert not bad

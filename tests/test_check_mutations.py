@@ -109,6 +109,38 @@ FILES = [
      "X = meet l m\nclaim on X l", "vacuous"),
     ("param a > 0\nA = point (0, 0)\nB = point (a, 0)\nl = line_through A B\n"
      "m = line_with_direction B (1, 0)\nX = meet l m\nclaim on X l", "degenerate"),
+    # -- concyclic: one circle or one line, as a set of points
+    (SQ + "claim concyclic A B C D", "true"),
+    (SQ + "claim concyclic A B C M", "false"),
+    (SQ + "claim concyclic A B C D M", "false"),
+    (SQ + "claim concyclic A B A M", "true"),
+    (SQ + "claim concyclic A M C A M", "true"),
+    (SQ + "MM = midpoint A A\nclaim concyclic MM B C D", "true"),
+    (SQ + "MM = midpoint A A\nclaim concyclic MM B C M", "false"),
+    (GR + "F = foot O side1\nclaim concyclic O P1 F C", "true"),
+    (GR + "F = foot O side1\nclaim concyclic O P1 F X1", "false"),
+    # -- a hidden 0/0 in a let
+    (GR + f"let k = x1*{Z}/{Z}\nclaim sign k > 0", "vacuous"),
+    (GR + f"let k = {Z}/(x1*{Z})\nP = point (k, 0)\nclaim P == point(1/x1, 0)", "vacuous"),
+    (GR + "let k = (x1 - x2)/(x1 - x2)\nclaim sign k == 1", "true"),
+    # -- a radicand negative on the whole model
+    (GR + "let r = sqrt(-x1 - y)\nclaim sign r >= 0", "vacuous"),
+    (AN + "claim sign sqrt(cos(phi1)**2 - 2) > 0", "vacuous"),
+    (GR + "R = point (sqrt(-(x1 - x2)**2 - 1), 0)\nclaim on R xa", "vacuous"),
+    # -- an intersection that never exists
+    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
+     "B = point (0, 2*a)\nl = line_with_direction B (1, 0)\n"
+     "P = intersect_line_circle l c (0)\nclaim on P c", "vacuous"),
+    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
+     "E = point (4*a, 0)\nF = point (5*a, 0)\nc2 = circle_through E F\n"
+     "P = intersect_circles c c2 (0)\nclaim on P c2", "vacuous"),
+    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nB = point (2*a, 0)\n"
+     "c = circle_through O A\nc2 = circle_through O B\n"
+     "P = intersect_circles c c2 (0)\nclaim on P c", "vacuous"),
+    # -- a claim under a hypothesis that is false where the claim needs it
+    (GR + "claim sign 1/sqrt(cos(phi1) - mu1*sin(phi1)) > 0 under condition1", "vacuous"),
+    (GR + "claim sign sqrt(mu1*sin(phi1) - cos(phi1)) >= 0 under condition1", "true"),
+    (GR + "claim sign mu1*sin(phi1) - cos(phi1) == 0 under condition1", "false"),
 ]
 
 
@@ -134,6 +166,9 @@ def test_mutation(text: str, kind: str) -> None:
     row = report.claims[-1]
     if kind != "true":
         assert row.status is not Status.PROVED, (row.name, row.result)
+    for r in report.rows:  # REFUTED: a counterexample or a stated exact reason, never bare
+        if r.status is Status.REFUTED:
+            assert r.counterexample is not None or r.reason, (r.name, r.result)
     params = params_of(text)
     rng = random.Random(19)
     for i, claim_row in enumerate(report.claims):
@@ -148,5 +183,6 @@ def test_mutation(text: str, kind: str) -> None:
 
 
 def test_the_suite_is_large_enough() -> None:
-    assert len(FILES) >= 40
-    assert sum(k != "true" for _, k in FILES) >= 25
+    assert len(FILES) >= 60
+    assert sum(k != "true" for _, k in FILES) >= 38
+    assert sum("concyclic" in t for t, _ in FILES) >= 9

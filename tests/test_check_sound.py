@@ -94,3 +94,99 @@ def test_prove_sign_refuses_an_empty_interval_and_a_0_over_0() -> None:  # items
 def test_an_unreducible_claim_is_a_verdict_not_a_crash() -> None:  # item 7
     row = _last(HEAD + "claim sign sin(phi1 + 1) > -2\n")
     assert row.status in (Status.PROVED, Status.UNDECIDED)
+
+
+# -- item 2, last sentence: the replay at typed angles, and check --against paper ---------------
+def _zero_over_zero_recipe() -> str:
+    from graspcompass.construction.language import paper_text
+
+    text = paper_text()
+    old = "V1 = point_from_lengths OMX1 OY1 (-1, -1)"
+    assert old in text
+    return text.replace(old, f"V1 = point_from_lengths OMX1 OY1 (-1*{Z}/{Z}, -1*{Z}/{Z})")
+
+
+@pytest.mark.parametrize("phi1", ["108deg", "3*pi/7", "1.2", "60deg", "2*pi/3", "5/4", "pi/2"])
+def test_the_replay_refuses_a_hidden_0_over_0_at_every_typed_angle(phi1: str) -> None:
+    """Before the new kernel the replay returned a value at 108°, 3π/7, 1.2 rad and refused
+    the same 0/0 at 60° only: Z = sin² + cos² − 1 is 0 at every angle, so Z/Z is nowhere."""
+    from graspcompass import PRESETS, Grasp, cli
+    from graspcompass.construction.language import replay
+    from graspcompass.errors import InputError
+
+    text = _zero_over_zero_recipe()
+    params = dict(PRESETS["fig6"]["params"], phi1=phi1)
+    with pytest.raises((InputError, ArithmeticError, ValueError), match="V1"):
+        replay(parse(text), Grasp(**params))
+    with pytest.raises(SystemExit) as info:  # the command line: one line, exit 2
+        import tempfile
+        from pathlib import Path
+
+        with tempfile.TemporaryDirectory() as d:
+            f = Path(d) / "zz.gc"
+            f.write_text(text)
+            raise SystemExit(cli.main(["steps", str(f), "--phi1", phi1]))
+    assert info.value.code == 2
+
+
+def test_check_against_paper_proves_nothing_about_a_0_over_0_v1(tmp_path, capsys) -> None:
+    from graspcompass import cli
+
+    f = tmp_path / "zz.gc"
+    f.write_text(_zero_over_zero_recipe())
+    status = cli.main(["check", str(f), "--against", "paper", "-q", "--json"])
+    out = capsys.readouterr()
+    assert status != 0
+    if out.out.strip():  # a report: none of the objects made from V1 is PROVED
+        import json
+
+        doc = json.loads(out.out)
+        rows = {r["name"]: r["status"] for k in ("steps", "targets") for r in doc[k]}
+        for name in ("V1", "circle1", "B12", "B13", "B14"):
+            assert rows.get(name) != "PROVED", name
+    else:  # refused: one line naming the step, exit 2
+        assert status == 2 and "V1" in out.err and len(out.err.strip().splitlines()) == 1
+
+
+# -- item 5: a REFUTED row carries a counterexample or a stated exact reason --------------------
+def test_a_target_of_the_wrong_kind_is_refuted_with_a_stated_reason() -> None:
+    from graspcompass.construction.language import paper_text
+
+    text = paper_text()
+    head = text[: text.index("# -- the circles")]
+    old = "V1 = point_from_lengths OMX1 OY1 (-1, -1)"
+    r = check_program(parse(head.replace(old, "V1 = line_through O P1")), "paper")
+    row = next(t for t in r.targets if t.name == "V1")
+    assert row.status is Status.REFUTED and row.counterexample is None
+    assert row.reason and "Line" in row.reason and "every" in row.reason
+    assert row.record()["reason"] == row.reason
+    from graspcompass.proof.program_report import to_markdown, to_table
+
+    assert row.reason[:40] in to_table(r) and "none: " in to_markdown(r)
+
+
+def test_a_bare_refuted_row_is_not_reported_as_refuted() -> None:
+    from graspcompass.proof.program_check import CheckRow
+    from graspcompass.proof.prove import ProofResult
+
+    row = CheckRow("x", "claim", 1, ProofResult(Status.REFUTED, "no reason", 0.0))
+    assert row.status is Status.UNDECIDED
+
+
+def test_steps_built_on_a_step_that_exists_nowhere_are_refuted() -> None:  # item 2
+    """The 0/0 hidden in a let: V1 is vacuous, and so is every step made from it (circle1,
+    the break points B12, B13, B14): none is PROVED, each says where it comes from."""
+    from graspcompass.construction.language import paper_text
+
+    text = paper_text().replace("V1 = point_from_lengths OMX1 OY1 (-1, -1)",
+                                f"let z = {Z}/{Z}\nV1 = point_from_lengths OMX1 OY1 (-z, -1)")
+    r = check_program(parse(text), "paper")
+    rows = {(row.kind, row.name): row for row in r.rows}
+    for name in ("V1", "circle1", "B12", "B13", "B14"):
+        row = rows[("step", name)]
+        assert row.status is Status.REFUTED and row.reason, name
+    assert "built on V1" in rows[("step", "B12")].reason
+    assert rows[("target", "V1")].status is Status.REFUTED
+    assert rows[("target", "circle1")].status is Status.REFUTED
+    assert rows[("step", "circle2")].status is Status.PROVED  # the rest stands
+    assert r.exit_status == 1

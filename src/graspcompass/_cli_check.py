@@ -85,8 +85,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     c.add_argument("--steps", action="store_true",
                    help="list every step in the table (default: only the steps not proved)")
     c.add_argument("--timeout", type=_seconds, default=DEFAULT_TIMEOUT, metavar="S",
-                   help=f"stop after S seconds with exit status 3 (default {DEFAULT_TIMEOUT:g}; "
-                        "a file can make the symbolic replay arbitrarily long)")
+                   help=f"stop after S seconds (default {DEFAULT_TIMEOUT:g}; a file can make the "
+                        "symbolic replay arbitrarily long): the verdicts reached by then are "
+                        "kept, the rest are UNDECIDED (timed out, exit status 3)")
     c.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
                    help="no progress bar")
 
@@ -126,8 +127,9 @@ def _draw(program: Any, report: Any, path: Path) -> str:
 def run(args: argparse.Namespace) -> int:
     """Run ``graspcompass check``; returns the report's exit status (0, 1 or 3).
 
-    A check that runs longer than ``--timeout`` seconds stops with one line on
-    stderr and exit status 3 (undecided).
+    A check that runs longer than ``--timeout`` seconds keeps the verdicts
+    reached by then; the rest are UNDECIDED (timed out: one line on stderr, exit
+    status 3 unless something is REFUTED).
 
     Raises
     ------
@@ -150,6 +152,7 @@ def run(args: argparse.Namespace) -> int:
     text, shown = read_file(args.file)
     from .construction.language import parse
     from .progress import Progress
+    from .proof._budget import TIMED_OUT
     from .proof.program_check import check_program
     from .proof.program_report import to_json, to_markdown, to_table
 
@@ -158,13 +161,16 @@ def run(args: argparse.Namespace) -> int:
     from ._deadline import deadline
 
     stop = args.timeout
-    alarm = deadline(stop, lambda: CheckTimeout(f"the check took longer than {stop:g} s "
-                                                "(--timeout)"))
+    # the check keeps every verdict reached within --timeout; this alarm, a little
+    # later, only stops a run that the check's own budget could not interrupt
+    alarm = deadline(stop + max(5.0, stop / 10),
+                     lambda: CheckTimeout(f"the check took longer than {stop:g} s (--timeout)"))
     bar_size = len(program.steps) + len(program.claims)
     try:
         with alarm, Progress(bar_size, "check", quiet=quiet) as bar:
             report = check_program(program, args.against,
-                                   progress=lambda done, total, name: bar.update(note=name))
+                                   progress=lambda done, total, name: bar.update(note=name),
+                                   timeout=stop)
     except CheckTimeout as exc:
         print(f"graspcompass: {exc}: nothing decided", file=sys.stderr)
         return 3
@@ -172,6 +178,10 @@ def run(args: argparse.Namespace) -> int:
         with writing(markdown):
             markdown.write_text(to_markdown(report), encoding="utf-8")
     print(to_json(report) if args.json else to_table(report, steps=args.steps))
+    late = sum(r.result.method == TIMED_OUT for r in report.rows)
+    if late:
+        print(f"graspcompass: {late} of {len(report.rows)} rows timed out after {stop:g} s "
+              "(--timeout): UNDECIDED; the other verdicts stand", file=sys.stderr)
     if draw is not None:
         with writing(draw):
             note = _draw(program, report, draw)

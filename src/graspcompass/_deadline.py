@@ -2,12 +2,15 @@
 
 Used by ``graspcompass check --timeout`` and by the tests' hang detection
 (``tests/_hang.py``).  Off the main thread, or without ``SIGALRM`` (Windows), it
-does nothing.
+does nothing.  Deadlines nest: an inner block gets the earlier of its own bound
+and the outer one's, the exception of whichever bound is reached, and the outer
+alarm is re-armed for the time it has left when the inner block ends.
 
 Examples
 --------
 >>> with deadline(5.0, lambda: TimeoutError("too slow")):
-...     pass
+...     with deadline(1.0, lambda: TimeoutError("inner too slow")):
+...         pass
 """
 
 from __future__ import annotations
@@ -15,9 +18,12 @@ from __future__ import annotations
 import contextlib
 import signal
 import threading
+import time
 from collections.abc import Callable, Iterator
 
 __all__ = ["deadline"]
+
+_EARLY = 0.005  # an alarm may ring this much before the monotonic clock agrees
 
 
 @contextlib.contextmanager
@@ -27,14 +33,24 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
             threading.main_thread():  # pragma: no cover
         yield
         return
+    now = time.monotonic()
+    end = now + seconds
+    previous = signal.getsignal(signal.SIGALRM)
+    outer_left = signal.getitimer(signal.ITIMER_REAL)[0]
+    outer_end = now + outer_left if outer_left > 0 else None
 
-    def _ring(*_: object) -> None:
+    def _ring(signum: int, frame: object) -> None:
+        if time.monotonic() < end - _EARLY and callable(previous):
+            previous(signum, frame)  # the outer bound came first: its exception
         raise error()
 
-    previous = signal.signal(signal.SIGALRM, _ring)
-    signal.setitimer(signal.ITIMER_REAL, seconds)
+    signal.signal(signal.SIGALRM, _ring)
+    signal.setitimer(signal.ITIMER_REAL,
+                     max(min(seconds, outer_left) if outer_end is not None else seconds, 1e-4))
     try:
         yield
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+        if outer_end is not None:
+            signal.setitimer(signal.ITIMER_REAL, max(outer_end - time.monotonic(), 1e-4))

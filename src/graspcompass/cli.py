@@ -193,6 +193,10 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--certify", action="store_true",
                    help="also certify the symbolic construction (every admissible grasp) and, "
                    "if grasp options are given, that grasp's construction")
+    v.add_argument("--timeout", type=_cli_check._seconds, default=None, metavar="S",
+                   help="stop after S seconds for the whole run (catalogue and --certify; "
+                        "default: no limit): the verdicts reached by then are kept, the rest "
+                        "are UNDECIDED (timed out, exit status 1)")
     _add_grasp_options(v)
     quiet_option(v, "no progress bar")
 
@@ -355,13 +359,16 @@ def _cmd_explore(args: argparse.Namespace) -> int:
     return _cli_export.run_explore(args, grasp_from_args(args))
 
 
-def _certify_table(title: str, c: Construction) -> tuple[str, bool]:
+def _certify_table(title: str, c: Construction, budget: Any = None) -> tuple[str, bool]:
     from . import proof
 
-    certs = proof.certify(c)
+    certs = proof.certify(c, budget=budget)
     lines = [title]
+    from .proof._budget import TIMED_OUT
+
     for cert in certs:
-        lines.append(f"{cert.step:9} {cert.result.status.value:9} {'; '.join(cert.facts)}")
+        what = TIMED_OUT if cert.result.method == TIMED_OUT else "; ".join(cert.facts)
+        lines.append(f"{cert.step:9} {cert.result.status.value:9} {what}")
     return "\n".join(lines), all(x.result.holds for x in certs)
 
 
@@ -374,8 +381,14 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
                          or args.preset != "fig6"):
         grasp_from_args(args)  # a bad grasp option is refused before the long run
-    reports = proof.run_catalogue(quiet=args.quiet or args.json)
+    from .proof._budget import TIMED_OUT, Budget
+
+    budget = Budget(args.timeout)
+    if args.certify:  # the symbolic construction is made before the clock starts
+        symbolic = internal_force_diagram(Grasp.symbolic("mu"))
+    reports = proof.run_catalogue(quiet=args.quiet or args.json, budget=budget)
     status = proof.exit_status(reports)
+    late = sum(r.result.method == TIMED_OUT for r in reports)
     if markdown is not None:
         with writing(markdown):
             markdown.write_text(proof.to_markdown(reports))
@@ -386,15 +399,19 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     if args.certify:
         out = sys.stderr if args.json else sys.stdout
         text, ok = _certify_table("certify: the symbolic construction (all admissible grasps)",
-                                  internal_force_diagram(Grasp.symbolic("mu")))
+                                  symbolic, budget)
         print("\n" + text, file=out)
         given = any(getattr(args, k, None) is not None for k in _PARAMS)
         if given or args.preset != "fig6":
             t2, ok2 = _certify_table(f"certify: {args.preset} with the options given",
-                                     internal_force_diagram(grasp_from_args(args)))
+                                     internal_force_diagram(grasp_from_args(args)), budget)
             print("\n" + t2, file=out)
             ok = ok and ok2
         status = status or (0 if ok else 1)
+        late += sum(TIMED_OUT in line for line in text.splitlines())
+    if late:
+        print(f"graspcompass: {late} claims or steps timed out after {args.timeout:g} s "
+              "(--timeout): UNDECIDED; the other verdicts stand", file=sys.stderr)
     return status
 
 

@@ -264,6 +264,12 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
             raise DegenerateStepError(
                 f"{program.file}:{s.line}:1: step {s.name} = {s.op} {' '.join(s.inputs)} is "
                 f"degenerate: {exc}", s.name, s.line, *(env[n] for n in s.inputs)) from exc
+        except ZeroDivisionError as exc:  # a divisor that is 0 modulo sin² + cos² = 1
+            raise DegenerateStepError(
+                f"{program.file}:{s.line}:1: step {s.name} = {s.op} {' '.join(s.inputs)} "
+                "divides by an expression that is 0 for every value of the parameters "
+                "(0/0: it exists nowhere)", s.name, s.line,
+                *(env[n] for n in s.inputs)) from exc
         env[s.name] = step.obj
         steps.append(step)
     return Construction(tuple(steps), grasp if not isinstance(grasp, Mapping) else None,

@@ -70,7 +70,7 @@ HYPOTHESES: Mapping[str, str] = {
 _ENVELOPE = "envelope"
 _RELATIONS = ("==", "!=", ">=", "<=", ">", "<")
 _CLAIM_KINDS = {"collinear": ("point", 3), "concurrent": ("line", 3),
-                "perpendicular": ("line", 2), "parallel": ("line", 2)}
+                "concyclic": ("point", 4), "perpendicular": ("line", 2), "parallel": ("line", 2)}
 _KEYWORDS = frozenset({"param", "hypothesis", "let", "claim", "ref", "role", "key", "optional",
                        "under", "sign", "on", *_CLAIM_KINDS, "point", "pi", "deg"})
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:-[A-Za-z0-9_]+)*")
@@ -402,7 +402,7 @@ class _Checker:
                                ("under", i))
         if kind in _CLAIM_KINDS or kind == "on":
             need, least = _CLAIM_KINDS.get(kind, (None, 2))
-            many = kind in ("collinear", "concurrent")
+            many = kind in ("collinear", "concurrent", "concyclic")
             if len(terms) < least or (not many and len(terms) != least):
                 raise _Problem(f"claim {kind} takes {'at least ' * many}{least} names, got "
                                f"{len(terms)}", ("term", len(terms)))

@@ -33,6 +33,7 @@ from ..construction import Construction, Step
 from ..construction.protocol import replay
 from ..geometry import GeometryError
 from ..geometry.exact import decide_sign, decide_zero
+from ._budget import TIMED_OUT, Budget
 from .certify_algebra import classify, ring
 from .certify_facts import GIVEN_OPS, Fact, facts_for
 from .certify_paper import PaperModel, model_at, paper_model
@@ -241,8 +242,15 @@ def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: Paper
 
 
 def certify(construction: Construction,
-            progress: Callable[[int, int], None] | None = None) -> list[StepCertificate]:
+            progress: Callable[[int, int], None] | None = None,
+            timeout: float | None = None, budget: Budget | None = None
+            ) -> list[StepCertificate]:
     """Prove that every step of ``construction`` is the paper's (§3.3, (28)-(39), (A4)-(A8)).
+
+    ``timeout`` bounds the whole run (seconds, ``None``: no limit): the
+    certificates made by then are kept, every later step is UNDECIDED with the
+    method :data:`~graspcompass.proof._budget.TIMED_OUT`; ``budget`` shares one
+    budget with the caller instead.
 
     Examples
     --------
@@ -256,8 +264,12 @@ def certify(construction: Construction,
     symbolic = any(sp.sympify(v).free_symbols for v in model.values.values())
     env: dict[str, Any] = {}
     out = []
+    budget = budget if budget is not None else Budget(timeout)
     for i, step in enumerate(construction.steps):
-        facts, result = _certify_step(construction, step, env, model, symbolic)
+        facts, result = budget.run(
+            lambda step=step: _certify_step(construction, step, env, model, symbolic),
+            lambda: ([], ProofResult(Status.UNDECIDED, TIMED_OUT, 0.0, hypotheses=_HYP,
+                                     detail=f"--timeout {budget.seconds:g} s")))
         out.append(StepCertificate(step.name, tuple(f.text for f in facts), result))
         env[step.name] = step.obj
         if progress:

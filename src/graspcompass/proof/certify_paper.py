@@ -23,6 +23,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..geometry.trig import sincos
 from . import paper
 
 __all__ = ["SIDES", "PaperModel", "model_at", "paper_model"]
@@ -55,7 +56,13 @@ class PaperModel:
     numeric: bool
 
     def _v(self, expr: sp.Expr) -> sp.Expr:
-        return sp.sympify(expr).xreplace(dict(self.values))  # internal: the model's
+        vals = dict(self.values)
+        e = sp.sympify(expr)  # internal: the model's
+        if not self.numeric:  # sin, cos of a typed angle as the grasp writes them (trig.sincos)
+            e = e.replace(sp.sin, lambda a: _sincos(a, vals)[0])
+            e = e.replace(sp.cos, lambda a: _sincos(a, vals)[1])
+            e = e.replace(sp.tan, lambda a: _div(*_sincos(a, vals)))
+        return e.xreplace(vals)
 
     # -- data (§2.2.1, Fig. 2) -------------------------------------------------
     @property
@@ -149,6 +156,30 @@ class PaperModel:
     def k(self, n: int, theta: Any) -> sp.Expr:
         """k_n(θ) = S_n sin θ − C_n cos θ, eq. (27)."""
         return self.S(n) * sp.sin(theta) - self.C(n) * sp.cos(theta)
+
+
+def _sincos(angle: sp.Expr, vals: Mapping[sp.Symbol, sp.Expr]) -> tuple[sp.Expr, sp.Expr]:
+    """sin, cos of ``angle`` at the grasp's values as the grasp writes them
+    (:func:`~graspcompass.geometry.trig.sincos`); a sum φ ± ξ whose value is not a
+    rational multiple of π (6/5 + 1/2) by the addition formula, so that its
+    generators are those of φ and ξ."""
+    v = angle.xreplace(dict(vals))
+    if v.free_symbols or not v.is_number:
+        return sp.sin(v), sp.cos(v)
+    if (v / sp.pi).is_Rational:
+        return sincos(v)
+    if v.could_extract_minus_sign():  # sin(−ξ) = −sin ξ: the generators of ξ
+        s, c = _sincos(-angle, vals)
+        return -s, c
+    if not angle.is_Add:
+        return sincos(v)
+    first, rest = angle.as_two_terms()
+    (sa, ca), (sb, cb) = _sincos(first, vals), _sincos(rest, vals)
+    return sa * cb + ca * sb, ca * cb - sa * sb
+
+
+def _div(s: sp.Expr, c: sp.Expr) -> sp.Expr:
+    return s / c
 
 
 def _mu_form(xi: sp.Expr, mu: sp.Expr) -> bool:

@@ -59,6 +59,7 @@ from .. import symbols as S
 from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
+from ._budget import TIMED_OUT, Budget
 from .certify_paper import PaperModel, model_at
 from .program_conditions import decide, distinct, operation_conditions, tie_mu
 from .program_decide import (
@@ -127,13 +128,31 @@ class CheckRow:
         """Parameter name -> exact value where the file contradicts the statement."""
         return self.result.counterexample
 
+    @property
+    def reason(self) -> str | None:
+        """Why a REFUTED row has no counterexample: the exact reason (``None`` otherwise)."""
+        if self.status is not Status.REFUTED or self.counterexample is not None:
+            return None
+        return self.result.detail or None
+
+    def __post_init__(self) -> None:
+        """REFUTED comes with a counterexample or a stated exact reason, never bare: a bare
+        one is UNDECIDED (an internal guard; every REFUTED row above states one)."""
+        r = self.result
+        if r.status is Status.REFUTED and r.counterexample is None and not r.detail:
+            object.__setattr__(self, "result", ProofResult(
+                Status.UNDECIDED, "refuted without a counterexample or a stated reason: "
+                "not reported as refuted", r.seconds, hypotheses=r.hypotheses,
+                conditions=r.conditions, implied=r.implied))
+
     def record(self) -> dict[str, Any]:
         """JSON-ready: name, status, hypotheses, conditions, counterexample, seconds, ..."""
         r = self.result
         return {"name": self.name, "status": r.status.value, "line": self.line,
                 "hypotheses": list(r.hypotheses), "conditions": list(r.conditions),
                 "implied": list(r.implied), "counterexample": r.counterexample,
-                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail}
+                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail,
+                "reason": self.reason}
 
 
 @dataclass(frozen=True)
@@ -385,9 +404,14 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
     except CheckError:
         have = ()
     if len(have) != len(want):
+        what = {2: "a point", 3: "a circle", 1: "a number"}[len(want)]
         return CheckRow(name, "target", _line(program, name), ProofResult(
             Status.REFUTED, f"the file's {name} is a {type(obj).__name__}; the paper's is "
-            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps))
+            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps,
+            detail=f"no counterexample needed: the file's {name} is a {type(obj).__name__} "
+            f"for every value of the parameters (the kind of an object does not depend on "
+            f"them) and the paper's {name} is {what}, so they differ at every point of the "
+            f"model"))
     implied: list[str] = []
     extra: list[str] = []
     for n in _ancestors(program, [name]):
@@ -434,7 +458,8 @@ def _distinct_ends(program: Program, c: Construction, s: Any, own: Any,
 
 # -- the whole file -----------------------------------------------------------------------
 def check_program(program: Program, against: str | None = None,
-                  progress: Callable[[int, int, str], None] | None = None) -> ProgramReport:
+                  progress: Callable[[int, int, str], None] | None = None,
+                  timeout: float | None = None) -> ProgramReport:
     """Certify the steps, prove the claims and (``against="paper"``) grade the objects.
 
     Parameters
@@ -448,6 +473,11 @@ def check_program(program: Program, against: str | None = None,
         for every grasp satisfying condition (1) and μ = tan ξ (22).
     progress : callable, optional
         Called as ``progress(done, total, name)`` after each row.
+    timeout : float, optional
+        Seconds for the whole check (``None``: no limit).  Every verdict reached
+        before the limit is kept; each row not decided by then (and every row when
+        the replay itself does not end in time) is UNDECIDED, its method
+        :data:`~graspcompass.proof._budget.TIMED_OUT`.
 
     Returns
     -------
@@ -473,7 +503,20 @@ def check_program(program: Program, against: str | None = None,
     if against == "paper" and not targets:
         raise CheckError(f"{program.file}: no object is named like a point of the paper "
                          f"({', '.join(PAPER_TARGETS)}): nothing to grade")
-    c = replay(program)
+    budget = Budget(timeout)
+
+    def late(name: str, kind: str, line: int) -> Callable[[], CheckRow]:
+        return lambda: CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, TIMED_OUT, 0.0, detail=f"--timeout {timeout:g} s",
+            hypotheses=_hypotheses(program, _COND1 in program.hypotheses)))
+
+    c = budget.run(lambda: replay(program), lambda: None)
+    if c is None:  # the replay itself ran out of time: every row is timed out
+        rows = [late(st.name, "step", st.line)() for st in program.steps]
+        claims = [late(_text(cl), "claim", cl.line)() for cl in program.claims]
+        tg = [late(t, "target", _line(program, t))() for t in targets]
+        return ProgramReport(program.file, tuple(rows), tuple(claims), tuple(tg), against,
+                             time.perf_counter() - t0, None)
     env = {s.name: s.obj for s in c.steps}
     made = set(env)
     targets = [t for t in targets if t in made]  # an optional step may be left out
@@ -487,10 +530,22 @@ def check_program(program: Program, against: str | None = None,
     statements = {st.name: st for st in program.steps}
     vacuous: dict[str, str] = {}
     plain_conds: dict[str, tuple[list[str], list[str]]] = {}
-    for s in c.steps:
+
+    def step_row(s: Any) -> CheckRow:
+        """One step's row; the shared tables are written only once it is complete."""
         t1 = time.perf_counter()
         line = _line(program, s.name)
         stmt = statements[s.name]
+        gone = [n for n in s.inputs if n in vacuous]
+        if gone:  # built on a step that exists nowhere: it exists nowhere either
+            why = "; ".join(dict.fromkeys(  # the first step that exists nowhere, once
+                vacuous[n] if vacuous[n].startswith("built on ") else
+                f"built on {n}, which exists at no point of the model ({vacuous[n]})"
+                for n in gone))
+            vacuous[s.name] = why
+            return CheckRow(s.name, "step", line, ProofResult(
+                Status.REFUTED, "degenerate for every parameter: it exists at no point of "
+                "the model", time.perf_counter() - t1, detail=why, hypotheses=hyps))
         ops, replaced = operation_conditions(s.op, [env[n] for n in s.inputs], s.obj)
         own = decide([*stmt.conditions, *ops], cond1_file, tie)
         if s.op in _TWO_POINTS and own.extra:
@@ -503,41 +558,50 @@ def check_program(program: Program, against: str | None = None,
             implied, extra = implied + own.implied, extra + own.extra
         except ValueError as exc:
             vacuous[s.name] = str(exc)
-            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
+            return CheckRow(s.name, "step", line, ProofResult(
                 Status.REFUTED, "degenerate for every parameter: it exists at no point of "
-                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps)))
-        else:
-            step_conds[s.name] = (implied, extra)
-            if cond1_file:  # for claims not under condition1: the same, without (1)
-                try:
-                    imp0, ext0 = step_conditions(s, False, replaced, tie)
-                    own0 = decide([*stmt.conditions, *ops], False, tie)
-                    plain_conds[s.name] = (imp0 + own0.implied, ext0 + own0.extra)
-                except ValueError:
-                    plain_conds[s.name] = (implied, extra)
-            given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
-            step_rows.append(CheckRow(s.name, "step", line, ProofResult(
-                Status.GIVEN if given and not s.inputs else Status.PROVED,
-                "defined where its conditions hold (the kernel's non-degeneracy conditions)",
-                time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
-                implied=tuple(implied))))
+                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps))
+        plain = (implied, extra)
+        if cond1_file:  # for claims not under condition1: the same, without (1)
+            try:
+                imp0, ext0 = step_conditions(s, False, replaced, tie)
+                own0 = decide([*stmt.conditions, *ops], False, tie)
+                plain = (imp0 + own0.implied, ext0 + own0.extra)
+            except ValueError:
+                pass
+        step_conds[s.name] = (implied, extra)
+        plain_conds[s.name] = plain
+        given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
+        return CheckRow(s.name, "step", line, ProofResult(
+            Status.GIVEN if given and not s.inputs else Status.PROVED,
+            "defined where its conditions hold (the kernel's non-degeneracy conditions)",
+            time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
+            implied=tuple(implied)))
+
+    for s in c.steps:
+        line = _line(program, s.name)
+        step_rows.append(budget.run(lambda s=s: step_row(s), late(s.name, "step", line)))
         done += 1
         if progress:
             progress(done, total, s.name)
     claim_rows = []
     for cl in program.claims:
         use = step_conds if _COND1 in cl.under or not cond1_file else plain_conds
-        claim_rows.append(_guarded(_text(cl), "claim", cl.line, hyps, lambda cl=cl, use=use:
-                                   _check_claim(program, cl, env, use, vacuous)))
+        claim_rows.append(budget.run(
+            lambda cl=cl, use=use: _guarded(_text(cl), "claim", cl.line, hyps, lambda: (
+                _check_claim(program, cl, env, use, vacuous))),
+            late(_text(cl), "claim", cl.line)))
         done += 1
         if progress:
             progress(done, total, claim_rows[-1].name)
     target_rows = []
     if model is not None:
         for name in targets:
-            target_rows.append(_guarded(name, "target", _line(program, name), hyps,
-                                        lambda name=name: _check_target(
-                                            program, name, env, model, step_conds, vacuous)))
+            line = _line(program, name)
+            target_rows.append(budget.run(
+                lambda name=name, line=line: _guarded(name, "target", line, hyps, lambda: (
+                    _check_target(program, name, env, model, step_conds, vacuous))),
+                late(name, "target", line)))
             done += 1
             if progress:
                 progress(done, total, name)

@@ -45,6 +45,7 @@ __all__ = [
     "DOMAIN_WORDS",
     "CheckError",
     "claim_zeros",
+    "concyclic_zeros",
     "coords",
     "nonzero",
     "not_concurrent_at",
@@ -125,6 +126,8 @@ def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], li
         a = objs[0]
         return [Point(b.x - a.x, b.y - a.y).cross(Point(c.x - a.x, c.y - a.y))
                 for b, c in itertools.combinations(objs[1:], 2)], []
+    if claim.kind == "concyclic":
+        return concyclic_zeros(objs), []
     if claim.kind == "parallel":
         return [objs[0].direction.cross(objs[1].direction)], []
     if claim.kind == "perpendicular":
@@ -132,6 +135,19 @@ def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], li
     if claim.kind == "concurrent":
         return _concurrent_zeros(objs)
     raise CheckError(f"unknown claim kind {claim.kind!r}")  # pragma: no cover - parser checks
+
+
+def concyclic_zeros(points: list[Point]) -> list[sp.Expr]:
+    """Points on one circle or one line: the rows ``(x² + y², x, y, 1)`` have rank ≤ 3,
+    every 4 × 4 minor vanishes (any repetition: a repeated point adds a repeated row).
+
+    A null vector ``(a, b, c, d)`` is the curve ``a(x² + y²) + bx + cy + d = 0``: a line
+    when ``a = 0``, else a circle through the points; with at most three distinct points
+    some such curve always exists (a line through two, the circle or line through three).
+    """
+    rows = [[p.x**2 + p.y**2, p.x, p.y, 1] for p in points]
+    return [sp.Matrix([rows[i] for i in quad]).det(method="berkowitz")
+            for quad in itertools.combinations(range(len(rows)), 4)]
 
 
 def _concurrent_zeros(lines: list[Line]) -> tuple[list[sp.Expr], list[sp.Expr]]:

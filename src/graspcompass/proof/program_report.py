@@ -41,6 +41,8 @@ def to_json(report: ProgramReport) -> str:
 
 
 def _cx(row: CheckRow) -> str:
+    if row.reason is not None:
+        return "none: " + row.reason
     if row.counterexample == {}:
         return "false as the file stands (it has no parameters)"
     return ", ".join(f"{k} = {v}" for k, v in (row.counterexample or {}).items())
@@ -98,7 +100,7 @@ def to_table(report: ProgramReport, steps: bool = False) -> str:
     if other:
         lines.append("\nrefuted without a counterexample (false or undefined at every point of "
                      "the model)")
-        lines += [f"  {_short(r.name)}: {r.result.detail or r.result.method}" for r in other]
+        lines += [f"  {_short(r.name)}: {r.reason}" for r in other]
     lines.append(f"\n{_counts(report)}; {report.seconds:.1f} s")
     return "\n".join(lines)
 

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..progress import Progress
+from ._budget import TIMED_OUT, Budget
 from .catalogue import CLAIMS, Claim, check, session
 from .prove import ProofResult, Status
 
@@ -44,12 +45,22 @@ class ClaimReport:
         return rec
 
 
-def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False) -> list[ClaimReport]:
-    """Check every claim, with a progress bar on a terminal unless ``quiet``."""
+def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False,
+                  timeout: float | None = None, budget: Budget | None = None
+                  ) -> list[ClaimReport]:
+    """Check every claim, with a progress bar on a terminal unless ``quiet``.
+
+    ``timeout`` (seconds, ``None``: no limit) bounds the whole run, or ``budget``
+    shares one with the caller: the verdicts reached by then are kept, every
+    later claim is UNDECIDED with the method
+    :data:`~graspcompass.proof._budget.TIMED_OUT`.
+    """
     out = []
+    budget = budget if budget is not None else Budget(timeout)
     with session(), Progress(len(claims), "verify", quiet=quiet) as bar:
         for c in claims:
-            out.append(ClaimReport(c, check(c)))
+            out.append(ClaimReport(c, budget.run(lambda c=c: check(c), lambda: ProofResult(
+                Status.UNDECIDED, TIMED_OUT, 0.0, detail=f"--timeout {budget.seconds:g} s"))))
             bar.update(note=c.id)
     return out
 
