@@ -90,10 +90,57 @@ def one_line(text: str, first: bool = True) -> str:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit status 2, no usage block)."""
+    """argparse with one-line errors (exit status 2, no usage block).
+
+    An option that takes a value also takes one that starts with ``-``:
+    ``--p2 -50mm,0``, ``--phi1 -pi/4+pi`` and ``--x1 --`` read as
+    ``--p2=-50mm,0``, ``--phi1=-pi/4+pi`` and ``--x1=--`` (plain argparse
+    reads only negative numbers that way).  A value that is itself one of the
+    command's options (``--output -q``) is left an option.
+    """
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {one_line(message, first=False)} (see --help)\n")
+
+    def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
+                         namespace: argparse.Namespace | None = None
+                         ) -> tuple[argparse.Namespace, list[str]]:
+        argv = list(sys.argv[1:] if args is None else args)
+        return super().parse_known_args(self._join_dash_values(argv), namespace)
+
+    def _join_dash_values(self, argv: list[str]) -> list[str]:
+        """``--opt -value`` as ``--opt=-value`` for this parser's one-value options."""
+        takes_value = {s for s, a in self._option_string_actions.items()
+                       if a.nargs is None and s.startswith("--")}
+        nested = any(isinstance(a, argparse._SubParsersAction) for a in self._actions)
+        out: list[str] = []
+        i = 0
+        while i < len(argv):
+            token = argv[i]
+            if token == "--" or (nested and not token.startswith("-")):
+                return out + argv[i:]  # the rest belongs to positionals or a sub-command
+            if token in takes_value and i + 1 < len(argv) and self._dash_value(argv[i + 1]):
+                out.append(f"{token}={argv[i + 1]}")
+                i += 2
+                continue
+            out.append(token)
+            i += 1
+        return out
+
+    def _dash_value(self, token: str) -> bool:
+        """Whether ``token`` is a value starting with ``-`` rather than an option."""
+        if token == "--":
+            return True
+        if not token.startswith("-") or token.startswith("--") or len(token) < 2:
+            return False
+        return token[:2] not in self._option_string_actions
+
+    def _get_values(self, action: argparse.Action, arg_strings: list[str]) -> Any:
+        if action.option_strings and action.nargs is None and arg_strings == ["--"]:
+            value = self._get_value(action, "--")  # argparse would drop it and give a list
+            self._check_value(action, value)
+            return value
+        return super()._get_values(action, arg_strings)  # type: ignore[misc]
 
 
 def _add_grasp_options(p: argparse.ArgumentParser) -> None:

@@ -1,0 +1,75 @@
+"""Issue 22: tried as a newcomer.  Every command answers, or explains in one line.
+
+Each test names the input that failed before the fix (items 1-7 of the issue).
+"""
+
+from __future__ import annotations
+
+import argparse
+
+import pytest
+
+from graspcompass.cli import build_parser, main
+
+#: What each command needs besides the option under test (so that parsing reaches it).
+_NEEDS = {"size": ["--p1=0,0", "--p2=1,0", "--mass=1"], "plan": ["--shape=x.svg"],
+          "check": ["x.gc"]}
+
+
+def _value_options() -> list[tuple[str, str]]:
+    """Every (command, option) that takes one value."""
+    p = build_parser()
+    sub = next(a for a in p._actions if isinstance(a, argparse._SubParsersAction))
+    found = [(None, s) for a in p._actions for s in a.option_strings
+             if a.nargs is None and s.startswith("--")]
+    for name, sp in sub.choices.items():
+        found += [(name, a.option_strings[-1]) for a in sp._actions
+                  if a.option_strings and a.nargs is None]
+    return found
+
+
+def _parse(argv: list[str]) -> tuple[argparse.Namespace | None, str]:
+    import contextlib
+    import io
+
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        try:
+            return build_parser().parse_args(argv), ""
+        except SystemExit:
+            return None, err.getvalue()
+
+
+@pytest.mark.parametrize(("command", "option"), _value_options())
+@pytest.mark.parametrize("value", ["-0.05,0", "-pi/4+pi", "-1", "--", "-50mm,0;1,2"])
+def test_item1_every_value_option_takes_a_leading_dash(command, option, value):
+    """``--p2 -0.05,0`` is read as ``--p2=-0.05,0`` (argparse: "expected one argument")."""
+    head = [] if command is None else [command, *_NEEDS.get(command, [])]
+    spaced, err1 = _parse([*head, option, value])
+    joined, err2 = _parse([*head, f"{option}={value}"])
+    assert "expected one argument" not in err1, err1
+    assert err1.replace(f"{option} {value}", "") == err2.replace(f"{option}={value}", ""), \
+        (err1, err2)
+    if joined is not None:
+        assert vars(spaced) == vars(joined)
+
+
+def test_item1_an_option_as_value_stays_an_option(capsys):
+    assert main(["draw", "-o", "-q"]) == 2
+    assert "expected one argument" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv", [["k", "--x1=--"], ["k", "--x1", "--"], ["size", "--p1=--"]])
+def test_item8_double_dash_value_is_a_user_error(argv, capsys):
+    """``--x1=--`` was exit 3 (TypeError: expected a str, got list)."""
+    code = main(argv)
+    err = capsys.readouterr().err
+    assert code == 2, err
+    assert len(err.strip().splitlines()) == 1 and "internal error" not in err
+
+
+def test_item1_readme_size_without_equals(capsys):
+    argv = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
+            "--com", "25mm,0", "--mass", "1kg", "--mu", "0.3", "--g", "9.81"]
+    assert main(argv) == 0
+    assert "25.01 N per jaw" in capsys.readouterr().out
