@@ -73,3 +73,52 @@ def test_item1_readme_size_without_equals(capsys):
             "--com", "25mm,0", "--mass", "1kg", "--mu", "0.3", "--g", "9.81"]
     assert main(argv) == 0
     assert "25.01 N per jaw" in capsys.readouterr().out
+
+
+# -- item 2: a normal is a direction ----------------------------------------------------------
+_C10, _S10 = "-0.98480775301", "-0.17364817767"  # cos 10°, sin 10° to 11 digits
+
+
+@pytest.mark.parametrize("normal", [(_C10, _S10), ("-3", "0"), ("-1/2", "1/7"),
+                                    (float(_C10), float(_S10)), (-1e-30, 1e-31)])
+def test_item2_any_nonzero_normal_is_scaled_to_one(normal):
+    import sympy as sp
+
+    from graspcompass.world import place_grasp
+
+    wg = place_grasp([("0.05", "0"), ("-0.05", "0")], [normal, ("1", "0")], mu=("0.5", "0.5"),
+                     com=("0.025", "0"))
+    n = wg.normals[0]
+    if isinstance(normal[0], float):
+        length = (normal[0] ** 2 + normal[1] ** 2) ** 0.5
+        assert n == pytest.approx((normal[0] / length, normal[1] / length), rel=1e-15)
+    else:  # exact: the same direction, exactly of length one
+        gx, gy = (sp.Rational(v) for v in normal)
+        assert sp.simplify(n[0] ** 2 + n[1] ** 2 - 1) == 0
+        assert sp.simplify(n[0] * gy - n[1] * gx) == 0 and sp.simplify(n[0] / gx) > 0
+
+
+@pytest.mark.parametrize("normal", [("0", "0"), (0.0, 0.0), (0.0, -0.0)])
+def test_item2_a_zero_normal_is_refused(normal):
+    from graspcompass.world import NormalNotUnitError, place_grasp
+
+    with pytest.raises(NormalNotUnitError, match="zero vector"):
+        place_grasp([("0.05", "0"), ("-0.05", "0")], [normal, ("1", "0")], mu=("0.5", "0.5"),
+                    com=("0.025", "0"))
+
+
+def test_item2_cli_rounded_normal(capsys):
+    """``--n1=-0.98480775301,-0.17364817767`` was "not a unit vector (length 1)"."""
+    import math
+
+    argv = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n2", "1,0", "--com", "25mm,0",
+            "--mass", "1kg", "--mu", "0.3", "--g", "9.81", "--json"]
+    assert main([*argv, f"--n1={_C10},{_S10}"]) == 0
+    rounded = capsys.readouterr().out
+    c, s = math.cos(math.radians(10)), math.sin(math.radians(10))
+    assert main([*argv, f"--n1={-c!r},{-s!r}"]) == 0
+    exact = capsys.readouterr().out
+    import json
+
+    a, b = json.loads(rounded), json.loads(exact)
+    assert a["worst_squeeze_N"] == pytest.approx(b["worst_squeeze_N"], rel=1e-9)

@@ -89,8 +89,10 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     part = s.add_argument_group("the part, in one world frame (right-handed, y up)")
     part.add_argument("--p1", required=True, metavar="X,Y", help="contact of jaw 1")
     part.add_argument("--p2", required=True, metavar="X,Y", help="contact of jaw 2")
-    part.add_argument("--n1", metavar="X,Y", help="inward unit normal at jaw 1's contact")
-    part.add_argument("--n2", metavar="X,Y", help="inward unit normal at jaw 2's contact")
+    part.add_argument("--n1", metavar="X,Y",
+                      help="inward normal at jaw 1's contact (any nonzero length)")
+    part.add_argument("--n2", metavar="X,Y",
+                      help="inward normal at jaw 2's contact (any nonzero length)")
     part.add_argument("--outline", metavar="X,Y;X,Y;...",
                       help="the part's outline (vertices separated by ';'): normals of the "
                            "edges the contacts lie on, centroid as the default --com")
