@@ -122,3 +122,75 @@ def test_item2_cli_rounded_normal(capsys):
 
     a, b = json.loads(rounded), json.loads(exact)
     assert a["worst_squeeze_N"] == pytest.approx(b["worst_squeeze_N"], rel=1e-9)
+
+
+# -- item 3: what each command needs comes with the install the README names ----------------
+def _project() -> dict:
+    from pathlib import Path
+
+    tomllib = pytest.importorskip("tomllib")
+    return tomllib.loads((Path(__file__).parents[1] / "pyproject.toml").read_text())["project"]
+
+
+def _names(requirements: list[str]) -> set[str]:
+    import re
+
+    return {re.split(r"[<>=!\[ ;]", r, maxsplit=1)[0].lower() for r in requirements}
+
+
+def test_item3_outline_readers_come_with_the_main_install():
+    """``plan --shape`` and ``size --shape`` failed after ``pip install .`` ([outlines])."""
+    assert {"svgelements", "ezdxf", "shapely"} <= _names(_project()["dependencies"])
+
+
+def test_item3_crosscheck_and_mp4_name_their_extra(monkeypatch, capsys):
+    """crosscheck asked for the *test* extra; MP4 needed a system ffmpeg."""
+    import importlib.util
+
+    extras = _project()["optional-dependencies"]
+    assert "scipy" in _names(extras["crosscheck"]) and "imageio-ffmpeg" in _names(extras["mp4"])
+    assert {"scipy", "imageio-ffmpeg"} <= _names(extras["test"])  # tested in CI
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "scipy" else real(name, *a))
+    assert main(["crosscheck", "--grasps", "1", "--thetas", "1"]) == 2
+    assert "pip install 'graspcompass[crosscheck]'" in capsys.readouterr().err
+
+
+def test_item3_readme_names_the_extra_of_each_command():
+    from pathlib import Path
+
+    readme = (Path(__file__).parents[1] / "README.md").read_text()
+    for line in readme.splitlines():
+        if line.startswith("$ graspcompass crosscheck"):
+            assert "graspcompass[crosscheck]" in line
+        if line.startswith("$ graspcompass") and ".mp4" in line:
+            assert "graspcompass[mp4]" in line
+
+
+def test_item3_cli_writes_an_mp4(tmp_path, capsys):
+    """``animate … .mp4`` through the mp4 extra's ffmpeg; the file read back by ffmpeg."""
+    imageio_ffmpeg = pytest.importorskip("imageio_ffmpeg", reason="the test extra brings it")
+    out = tmp_path / "s.mp4"
+    assert main(["animate", "--kind", "sweep", "--frames", "5", "--dpi", "20", "--fps", "5",
+                 "-q", "-o", str(out)]) == 0, capsys.readouterr().err
+    frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(out))
+    assert frames == 5 and seconds == pytest.approx(1.0, abs=0.05)
+
+
+# -- item 4: animate takes a FILE where draw, steps and export do ---------------------------
+def test_item4_animate_takes_a_file(tmp_path, monkeypatch, capsys):
+    """``animate mine.gc`` answered "unknown preset 'mine.gc'"."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["recipe", "-o", "mine.gc", "-q"]) == 0
+    assert main(["animate", "mine.gc", "--frames-per-step", "1", "--dpi", "20", "-q"]) == 0
+    assert (tmp_path / "mine-construction.gif").stat().st_size > 0
+    assert main(["animate", "table1a", "--kind", "sweep", "--frames", "2", "--dpi", "20",
+                 "-q"]) == 0
+    assert (tmp_path / "table1a-sweep.gif").exists()
+    capsys.readouterr()
+    assert main(["animate", "nosuch.gc"]) == 2
+    err = capsys.readouterr().err
+    assert "--file" in err and "neither a preset" in err and len(err.splitlines()) == 1
+    assert main(["animate", "mine.gc", "--file", "mine.gc"]) == 2
+    assert "two construction files" in capsys.readouterr().err

@@ -133,11 +133,24 @@ def quiet_option(p: argparse.ArgumentParser, text: str = "print nothing but erro
     p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=text)
 
 
-def _preset(name: str) -> str:
-    if name == argparse.SUPPRESS or name in PRESETS:
+def _preset_or_file(name: str) -> str:
+    """An argparse ``type``: a preset's name, or a construction file (as ``draw FILE``)."""
+    import os
+
+    if name is argparse.SUPPRESS or name in PRESETS or name == "-" or os.path.lexists(name):
         return name
-    raise argparse.ArgumentTypeError(f"unknown preset {name!r}; choose one of "
-                                     f"{', '.join(sorted(PRESETS))}")
+    raise argparse.ArgumentTypeError(
+        f"{name!r} is neither a preset ({', '.join(sorted(PRESETS))}) nor a file: give a "
+        "preset, or a construction file (FILE or --file FILE)")
+
+
+class _PresetOrFile(argparse.Action):
+    """Stores a preset's name as ``preset``, a file's as ``file`` (as ``draw FILE``: beside
+    ``--file`` it is refused as two files)."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: Any, option_string: str | None = None) -> None:
+        setattr(namespace, "preset" if values in PRESETS else "file", values)
 
 
 class _Checked(argparse.Action):
@@ -161,13 +174,15 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         "animate", help="animate the construction, the force sweep or the turning object",
         description="Write an animation: the ruler-and-compass construction step by step "
                     "(§3.3), the external force sweeping round (Fig. 3) or the object turning "
-                    "under gravity (Fig. 1), as GIF, MP4 (needs ffmpeg) or HTML.",
+                    "under gravity (Fig. 1), as GIF, MP4 (pip install 'graspcompass[mp4]', or a "
+                    "system ffmpeg) or HTML.",
         epilog="limits: every option is checked before any work; the output folder must "
                f"exist; an animation has at most {MAX_PIXELS:.0e} pixels in all its drawn frames "
                "(lower --dpi or --frames). exit status: 0, or 2 for a user error.")
-    p.add_argument("preset", nargs="?", type=_preset, default=argparse.SUPPRESS,
-                   metavar="PRESET", help=f"a preset ({', '.join(sorted(PRESETS))}); same as "
-                                          "--preset")
+    p.add_argument("target", nargs="?", type=_preset_or_file, default=argparse.SUPPRESS,
+                   metavar="PRESET|FILE",
+                   help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
+                        "construction file ('-' reads stdin; same as --file)", action=_PresetOrFile)
     add_grasp_options(p)
     _cli_file.add_file_options(p, positional=False)
     p.add_argument("--kind", choices=KINDS, default="construction",

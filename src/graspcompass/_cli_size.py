@@ -50,9 +50,9 @@ def add_outline_options(group: Any, *, shape_required: bool) -> None:
     """``--shape``, ``--shape-unit`` and ``--com``: the part's outline from a drawing and
     its centre of mass, as ``graspcompass size`` and ``graspcompass plan`` read them."""
     group.add_argument("--shape", required=shape_required, metavar="FILE",
-                       help="the part's outline from a drawing: an SVG or DXF file (the "
-                            "optional extra graspcompass[outlines]); the closed shape of "
-                            "largest area, curves flattened, in the drawing's units")
+                       help="the part's outline from a drawing: an SVG or DXF file; the "
+                            "closed shape of largest area, curves flattened, in the "
+                            "drawing's units")
     group.add_argument("--shape-unit", metavar="LENGTH",
                        help="with --shape: the length of one drawing unit when the file "
                             "does not say (default: SVG 96 per inch, DXF mm)")

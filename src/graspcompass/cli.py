@@ -41,7 +41,7 @@ from . import (
 from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
 from ._output import check_folder, check_target, writing
-from .errors import GraspCompassError, OutputError
+from .errors import GraspCompassError, InputError, OutputError
 from .presets import PRESETS
 
 if TYPE_CHECKING:  # the model (sympy, numpy) is loaded by the commands that use it
@@ -446,6 +446,10 @@ def _cmd_verify(args: argparse.Namespace) -> int:
 
 
 def _cmd_crosscheck(args: argparse.Namespace) -> int:
+    import importlib.util
+
+    if importlib.util.find_spec("scipy") is None:
+        raise InputError("crosscheck needs scipy: pip install 'graspcompass[crosscheck]'")
     from .proof.crosscheck import run_crosscheck
 
     if args.grasps * args.thetas > CROSSCHECK_RUNS:

@@ -6,8 +6,8 @@ specification) or a DXF file (``ezdxf``: closed ``LWPOLYLINE``/``POLYLINE``
 with bulges, ``CIRCLE``, ``ELLIPSE``, closed ``SPLINE``), flattens its curves to
 chords, and returns a :class:`shapely.Polygon` in metres in a right-handed
 frame with y up, ready for :func:`graspcompass.place_grasp` (``outline=``) and
-``graspcompass size --shape FILE``.  Both libraries are the optional extra
-``graspcompass[outlines]``.
+``graspcompass size --shape FILE``.  Both libraries come with the main install
+(``pip install graspcompass``; the extra ``graspcompass[outlines]`` names them too).
 
 Frames and units
     SVG's y-axis points down: y is negated, so the part is seen as drawn.  SVG
@@ -68,7 +68,11 @@ MAX_VERTICES = 200_000
 
 
 class MissingExtraError(InputError):
-    """Reading SVG or DXF needs the optional extra ``graspcompass[outlines]``."""
+    """Reading SVG or DXF needs svgelements or ezdxf, which the main install brings.
+
+    (Raised where they were removed: ``pip install 'graspcompass[outlines]'`` brings them
+    back.)
+    """
 
 
 def _unit_length(unit: str | None, default: float) -> float:
