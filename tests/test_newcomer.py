@@ -194,3 +194,24 @@ def test_item4_animate_takes_a_file(tmp_path, monkeypatch, capsys):
     assert "--file" in err and "neither a preset" in err and len(err.splitlines()) == 1
     assert main(["animate", "mine.gc", "--file", "mine.gc"]) == 2
     assert "two construction files" in capsys.readouterr().err
+
+
+# -- item 5: each exit status has one meaning ------------------------------------------------
+def test_item5_exit_status_3_is_undecided_everywhere(capsys):
+    """3 was "undecided" in the README and check's docs and "a bug" in ``--help``."""
+    import re
+    from pathlib import Path
+
+    from graspcompass.cli import EXIT_STATUSES
+
+    assert "undecided" in EXIT_STATUSES[3] and "bug" not in EXIT_STATUSES[3]
+    assert "bug" in EXIT_STATUSES[4]
+    assert main(["--help"]) == 0
+    top = capsys.readouterr().out
+    assert re.search(r"^\s+3\s+undecided", top, re.M) and re.search(r"^\s+4\s+an internal", top,
+                                                                     re.M)
+    assert main(["check", "--help"]) == 0
+    assert "3 something undecided" in capsys.readouterr().out
+    root = Path(__file__).parents[1]
+    for text in ((root / "README.md").read_text(), (root / "docs" / "security.md").read_text()):
+        assert not re.search(r"\b3\b[^.|\n]{0,20}\bbug", text), "3 named a bug"

@@ -5,10 +5,11 @@ the construction, writes the diagram to ``./graspcompass-out/`` and prints the
 protocol with exact coordinates.
 
 Exit statuses (:data:`EXIT_STATUSES`): 0 done; 1 a check found a problem
-(``verify``, ``crosscheck``); 2 a user error: a bad option or value, an input
-refused, an output that cannot be written, with one line on stderr and never a
-traceback; 3 an internal error (a bug), also one line (``GRASPCOMPASS_DEBUG=1``
-shows the traceback); 130 interrupted.  Every option value is checked before
+(``verify``, ``crosscheck``, ``check``: refuted); 2 a user error: a bad option
+or value, an input refused, an output that cannot be written, with one line on
+stderr and never a traceback; 3 undecided (``check``: a claim neither proved
+nor refuted, or ``--timeout`` reached); 4 an internal error (a bug), also one
+line (``GRASPCOMPASS_DEBUG=1`` shows the traceback); 130 interrupted.  Every option value is checked before
 any work starts, and every output path before anything is computed: a missing
 folder is refused (only the main job's ``--out`` folder itself is made, and
 it says so).
@@ -53,10 +54,11 @@ __all__ = ["EXIT_STATUSES", "build_parser", "console", "grasp_from_args", "main"
 #: What each exit status of ``graspcompass`` means.
 EXIT_STATUSES = {
     0: "done",
-    1: "a check found a problem (verify, crosscheck)",
+    1: "a check found a problem (verify, crosscheck; check: a claim refuted)",
     2: "a user error: a bad option or value, an input refused, an output that cannot be "
        "written (one line on stderr)",
-    3: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
+    3: "undecided (check: a claim neither proved nor refuted, or --timeout reached)",
+    4: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
        "traceback)",
     130: "interrupted",
 }
@@ -476,7 +478,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     their status, and a user error (a :class:`ValueError`, which includes every
     :class:`~graspcompass.errors.GraspCompassError`, or an :class:`OSError`) is
     one line on stderr and status 2.  Anything else is a bug: one line and
-    status 3 (``GRASPCOMPASS_DEBUG=1`` re-raises it, with the traceback).
+    status 4 (``GRASPCOMPASS_DEBUG=1`` re-raises it, with the traceback); status 3
+    is ``check``'s "undecided".
     """
     try:
         args = build_parser().parse_args(argv)
@@ -502,7 +505,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise
         print(f"graspcompass: internal error: {type(exc).__name__}: {_message(exc)} (a bug; "
               "please report it with the command line)", file=sys.stderr)
-        return 3
+        return 4
 
 
 def console() -> NoReturn:
