@@ -215,3 +215,52 @@ def test_item5_exit_status_3_is_undecided_everywhere(capsys):
     root = Path(__file__).parents[1]
     for text in ((root / "README.md").read_text(), (root / "docs" / "security.md").read_text()):
         assert not re.search(r"\b3\b[^.|\n]{0,20}\bbug", text), "3 named a bug"
+
+
+# -- item 6: exact inputs print the exact values, rounded once --------------------------------
+def _table1a_k(theta, x1="2"):
+    """k_n(θ) of Table I(a) from first principles: φ = π/2 makes tan(φ ± ξ) = ∓1/μ.
+
+    S_n = ∓D/2 ± y tan(side n), C_n = x tan(side n) (eqs. (28)-(39)), k_n = S_n sin θ − C_n cos θ.
+    """
+    import sympy as sp
+
+    x1, x2, y, mu1, mu2 = sp.Rational(x1), sp.Integer(2), sp.Integer(1), sp.Integer(1), \
+        sp.Rational(6, 5)
+    tan = {1: -1 / mu1, 2: -1 / mu2, 3: 1 / mu1, 4: 1 / mu2}
+    half = (x1 + x2) / 2
+    S = {1: -half + y * tan[1], 3: -half + y * tan[3], 2: half - y * tan[2], 4: half - y * tan[4]}
+    C = {1: x2 * tan[1], 3: x2 * tan[3], 2: x1 * tan[2], 4: x1 * tan[4]}
+    return [S[n] * sp.sin(theta) - C[n] * sp.cos(theta) for n in (1, 2, 3, 4)]
+
+
+@pytest.mark.parametrize("x1", ["2", "1e-30"])
+def test_item6_k_json_is_the_exact_value_rounded(x1, capsys):
+    """``--json`` gave 1.06e-16 and -1.4999999999999998 where the values are 0 and -3/2."""
+    import json
+
+    import sympy as sp
+
+    thetas = "0,pi/2,pi,3*pi/2,30deg,1,7*pi/12,atan(2/3),atan2(-5,3)"
+    assert main(["k", "--preset", "table1a", "--x1", x1, "--theta", thetas, "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    angles = [0, sp.pi / 2, sp.pi, 3 * sp.pi / 2, sp.pi / 6, sp.Integer(1), 7 * sp.pi / 12,
+              sp.atan(sp.Rational(2, 3)), sp.atan2(-5, 3)]
+    for row, th in zip(rows, angles, strict=True):
+        ks = [sp.nsimplify(v) if v.is_Rational else v for v in _table1a_k(th, x1)]
+        expected = [float(sp.N(v, 50)) + 0.0 for v in ks]
+        assert row["k"] == expected, (th, row["k"], expected)
+        top = max([*ks, sp.Integer(0)], key=lambda v: sp.N(v, 50))
+        assert row["k_grasp"] == float(sp.N(top, 50)) + 0.0
+        assert row["F_int"] == float(sp.N(top / (sp.Rational(x1) + 2), 50)) + 0.0
+        assert row["theta_deg"] == float(sp.N(th * 180 / sp.pi, 50))
+    if x1 == "2":
+        assert rows[7]["k"][0] == 0.0  # k1(atan(2/3)) = 0 exactly (tan θ = C1/S1)
+
+
+def test_item6_k_table_prints_exact_zero(capsys):
+    """The table printed k4 = -4.97074e-42 where the value is 0."""
+    assert main(["k", "--preset", "table1a", "--theta", "atan(2/3)"]) == 0
+    assert capsys.readouterr().out.splitlines()[2].split()[2] == "0"  # k1
+    assert main(["k", "--preset", "table1a", "--theta", "pi/2", "--x1", "1e-30"]) == 0
+    assert capsys.readouterr().out.splitlines()[2].split()[4] == "-5e-31"  # not -1.22e-16
