@@ -264,3 +264,58 @@ def test_item6_k_table_prints_exact_zero(capsys):
     assert capsys.readouterr().out.splitlines()[2].split()[2] == "0"  # k1
     assert main(["k", "--preset", "table1a", "--theta", "pi/2", "--x1", "1e-30"]) == 0
     assert capsys.readouterr().out.splitlines()[2].split()[4] == "-5e-31"  # not -1.22e-16
+
+
+# -- item 7: hints that save a user ----------------------------------------------------------
+@pytest.mark.parametrize(("argv", "hint"), [
+    (["k", "--phi1", "90"], "a number without a unit is in radians: for 90 degrees write 90deg"),
+    (["k", "--xi2", "30"], "for 30 degrees write 30deg"),
+    (["k", "--mu1", "0,5"], "the decimal separator is a point"),
+    (["size", "--p1=0,0", "--p2=1,0", "--n1=1,0", "--n2=-1,0", "--com=0.5,0", "--mass", "1,5",
+      "--mu", "0.3"], "decimal separator"),
+])
+def test_item7_refusals_say_what_to_type(argv, hint, capsys):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert hint in err and len(err.splitlines()) == 1, err
+
+
+def test_item7_no_hint_where_it_would_mislead(capsys):
+    assert main(["k", "--phi1", "200"]) == 2  # 200deg is refused too
+    assert "deg" not in capsys.readouterr().err
+
+
+def test_item7_explore_without_display_points_to_html(monkeypatch, capsys):
+    monkeypatch.delenv("DISPLAY", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    import matplotlib
+
+    monkeypatch.setattr(matplotlib, "get_backend", lambda: "agg")
+    assert main(["explore"]) == 2
+    assert "export --format html" in capsys.readouterr().err
+
+
+def test_item7_every_command_has_a_description():
+    p = build_parser()
+    sub = next(a for a in p._actions if isinstance(a, argparse._SubParsersAction))
+    assert all(sp.description for sp in sub.choices.values()), [
+        n for n, sp in sub.choices.items() if not sp.description]
+
+
+@pytest.mark.parametrize("columns", [60, 80, 100, 160])
+def test_item7_verify_table_fits_the_terminal(columns, monkeypatch, capsys):
+    """The table was about 450 characters wide."""
+    monkeypatch.setenv("COLUMNS", str(columns))
+    assert main(["verify", "-q"]) == 0
+    out = capsys.readouterr().out
+    assert max(len(line) for line in out.splitlines()) <= columns
+    for word in ("eq5", "PROVED", "REFUTED", "hypotheses", "polynomial reduction"):
+        assert word in out
+
+
+def test_item7_verify_table_keeps_every_word(monkeypatch, capsys):
+    from graspcompass._cli_verify import table
+    from graspcompass.proof import run_catalogue, to_table
+
+    reports = run_catalogue(quiet=True)
+    assert sorted(table(reports, 70).split()) == sorted(to_table(reports).split())

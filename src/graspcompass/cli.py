@@ -9,10 +9,10 @@ Exit statuses (:data:`EXIT_STATUSES`): 0 done; 1 a check found a problem
 or value, an input refused, an output that cannot be written, with one line on
 stderr and never a traceback; 3 undecided (``check``: a claim neither proved
 nor refuted, or ``--timeout`` reached); 4 an internal error (a bug), also one
-line (``GRASPCOMPASS_DEBUG=1`` shows the traceback); 130 interrupted.  Every option value is checked before
-any work starts, and every output path before anything is computed: a missing
-folder is refused (only the main job's ``--out`` folder itself is made, and
-it says so).
+line (``GRASPCOMPASS_DEBUG=1`` shows the traceback); 130 interrupted.  Every
+option value is checked before any work starts, and every output path before
+anything is computed: a missing folder is refused (only the main job's
+``--out`` folder itself is made, and it says so).
 """
 
 from __future__ import annotations
@@ -178,7 +178,13 @@ def build_parser() -> argparse.ArgumentParser:
                    help="print nothing but errors")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
-    d = sub.add_parser("draw", help="draw the diagram to a PNG, SVG or PDF file")
+    d = sub.add_parser(
+        "draw", help="draw the diagram to a PNG, SVG or PDF file",
+        description="Draw the internal force diagram (Fig. 6): the friction cones, the "
+                    "construction of V1-V4 (§3.3), the four circles and their outer envelope, "
+                    "with the computer plot of k_grasp over the paper's recipe; or the "
+                    "drawing of a construction file, or the state after one step.",
+        epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(d)
     _cli_file.add_file_options(d)
     d.add_argument("-o", "--output", metavar="FILE",
@@ -192,7 +198,11 @@ def build_parser() -> argparse.ArgumentParser:
                         "the paper's recipe)")
     quiet_option(d)
 
-    s = sub.add_parser("steps", help="print the construction protocol")
+    s = sub.add_parser(
+        "steps", help="print the construction protocol",
+        description="Print the construction protocol of §3.3 (or of a construction file): "
+                    "each step's name, instrument, the paper's reference and its exact value.",
+        epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(s)
     _cli_file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
@@ -218,7 +228,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
 
-    sub.add_parser("presets", help="list the built-in grasps of the paper")
+    sub.add_parser("presets", help="list the built-in grasps of the paper",
+                   description="List the built-in grasps of the paper (Fig. 6, Table I "
+                               "(a)-(c)), for --preset.")
     _register_animate(sub, _add_grasp_options)
     _cli_export.register(sub, _add_grasp_options)
     _cli_worksheet.register(sub, _add_grasp_options)
@@ -247,6 +259,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     x = sub.add_parser(
         "crosscheck", help="closed form vs scipy linprog on random grasps",
+        description="Compare the closed form k_grasp(θ) (eq. (25)) with the least internal "
+                    "force found by scipy's linprog on random grasps and directions "
+                    "(needs scipy: pip install 'graspcompass[crosscheck]').",
         epilog=f"limits: --grasps × --thetas at most {CROSSCHECK_RUNS} linprog problems. "
                "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.")
     x.add_argument("--grasps", type=bounded(int, 1, CROSSCHECK_GRASPS), default=20,
@@ -431,7 +446,9 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     if args.json:
         print(proof.to_json(reports))
     elif not args.markdown or not args.quiet:
-        print(proof.to_table(reports))
+        from ._cli_verify import table
+
+        print(table(reports))
     if args.certify:
         out = sys.stderr if args.json else sys.stdout
         text, ok = _certify_table("certify: the symbolic construction (all admissible grasps)",

@@ -154,6 +154,9 @@ def _fail(text: str, why: str) -> ExpressionError:
 
 
 def _refuse(text: str, found: str) -> ExpressionError:
+    if found == "tuple":  # a comma between numbers: 0,5 written for 0.5
+        return _fail(text, "a comma is not part of a number: the decimal separator is a point "
+                           "(0.5, not 0,5)")
     return _fail(text, f"{_ALLOWED} (found {found})")
 
 
