@@ -17,7 +17,12 @@ import signal
 import threading
 from collections.abc import Callable, Iterator
 
-__all__ = ["deadline"]
+__all__ = ["OutOfTime", "deadline"]
+
+
+class OutOfTime(BaseException):
+    """A command ran past its ``--timeout``.  A :class:`BaseException`, like
+    :class:`KeyboardInterrupt`, so that no ``except Exception`` on the way swallows it."""
 
 
 @contextlib.contextmanager

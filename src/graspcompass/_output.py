@@ -24,6 +24,7 @@ the folder '...missing' does not exist (create it first)
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import stat
@@ -181,6 +182,11 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
         if isinstance(exc, (OutputError, BrokenPipeError)):
             raise
         raise _fail(os.fspath(path), _reason(exc)) from None
+    except BaseException:  # out of time, interrupted: no half-written file either
+        if not existed and os.path.isfile(path):
+            with contextlib.suppress(OSError):
+                os.unlink(path)
+        raise
 
 
 def write_output(path: str | os.PathLike[str], produce: Callable[[], str | bytes]) -> Path:

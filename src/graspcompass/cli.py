@@ -18,6 +18,7 @@ anything is computed: a missing folder is refused (only the main job's
 from __future__ import annotations
 
 import argparse
+import contextlib
 import gc
 import json
 import os
@@ -155,6 +156,24 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
         g.add_argument(f"--{name}", metavar="EXPR", help=f"set {name}")
 
 
+#: The commands that take ``--timeout`` (``check`` has its own, ``explore`` is a window).
+TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan", "verify",
+         "crosscheck")
+
+
+def _seconds(text: str) -> float:
+    from ._cli_check import _seconds as check_seconds
+
+    return check_seconds(text)
+
+
+def _add_timeout(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
+                   help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
+                        f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
+                        "the work arbitrarily long)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``graspcompass`` command."""
     p = _Parser(
@@ -271,6 +290,8 @@ def build_parser() -> argparse.ArgumentParser:
     x.add_argument("--seed", type=bounded(int, 0, 2**63 - 1), default=0,
                    help="random seed, 0 to 2**63 - 1 (0)")
     quiet_option(x, "no progress bar")
+    for name in TIMED:
+        _add_timeout(sub.choices[name])
     return p
 
 
@@ -502,10 +523,19 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 2
+    from ._deadline import OutOfTime, deadline
+
+    seconds = getattr(args, "timeout", None) if args.command in TIMED else None
+    alarm = contextlib.nullcontext() if seconds is None else deadline(
+        seconds, lambda: OutOfTime(f"the command took longer than {seconds:g} s (--timeout "
+                                   "S allows more): its input makes too much work"))
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), alarm:
             warnings.simplefilter("ignore", SyntaxWarning)  # from text the parser refuses
             return _COMMANDS[args.command](args)
+    except OutOfTime as exc:
+        print(f"graspcompass: error: {exc}", file=sys.stderr)
+        return 2
     except BrokenPipeError:  # e.g. piped into head: stop quietly
         _silence_stdout()
         return 0
