@@ -110,3 +110,37 @@ def test_read_file_of_a_non_name(path):
 
     with pytest.raises(WrongTypeError, match="file name"):
         read_bounded(path, 100)
+
+
+def test_a_far_centre_of_mass_is_sized_in_floats_not_factored(capsys):
+    """``size --com 1e300,0`` spent minutes in factorint (square roots of 2000-bit numbers).
+
+    The squeeze is m·g·max|V_n|/D (eq. (17)) and V_n is linear in x1, x2 (eqs. (28)-(39)):
+    with the centre of mass at a distance c ≫ D it grows as c (up to terms of relative size
+    D/c).  So the float answer at c = 1e300 is 1e260 times the exact one at c = 1e40.
+    """
+    import json
+
+    base = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
+            "--mass", "1", "--mu", "0.3", "--json"]
+    with no_hang("size --com 1e300", 30):
+        assert main([*base, "--com", "1e300,0"]) == 0
+    far = json.loads(capsys.readouterr().out)["worst_squeeze_N"]
+    assert main([*base, "--com", "1e40,0"]) == 0  # 133 bits: the exact path
+    near = json.loads(capsys.readouterr().out)["worst_squeeze_N"]
+    assert far / near == pytest.approx(1e260, rel=1e-9)
+
+
+def test_non_finite_results_are_refused_before_printing(capsys):
+    """``size --mass 1e308`` printed "inf N per jaw … nan×"; --json wrote Infinity and NaN."""
+    base = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
+            "--com", "25mm,0", "--mass", "1e308", "--mu", "0.3"]
+    _one_line_refusal(capsys, base, "beyond double precision")
+    _one_line_refusal(capsys, [*base, "--json"], "beyond double precision")
+    _one_line_refusal(capsys, ["k", "--theta=1e308"], "beyond double precision")
+
+
+def test_draw_step_minus_one_is_out_of_range(capsys):
+    """``draw --step=-1`` was accepted while 47 was refused as out of 0-46."""
+    _one_line_refusal(capsys, ["draw", "--step=-1", "-o", os.devnull, "--format", "png"],
+                      "0 to 46")

@@ -272,8 +272,11 @@ def run(args: argparse.Namespace) -> int:
                               f"squeeze_infinite_friction_{args.per}_N":
                                   lm.squeeze_infinite_friction,
                               f"max_force_{args.per}_N": lm.force_limit, "message": lm.message}
+    from ._output import finite_record
+
+    finite_record(record, "give the mass, the lengths or the accelerations in other units")
     if args.json:
-        print(json.dumps(record, indent=1))
+        print(json.dumps(record, indent=1, allow_nan=False))
         return 0
     print(_text(record, s, lm))
     return 0

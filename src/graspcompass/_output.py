@@ -31,10 +31,11 @@ import stat
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from .errors import OutputError
 
-__all__ = ["check_folder", "check_target", "write_output", "writing"]
+__all__ = ["check_folder", "check_target", "finite_record", "write_output", "writing"]
 
 
 def _fail(path: object, why: str) -> OutputError:
@@ -204,3 +205,26 @@ def write_output(path: str | os.PathLike[str], produce: Callable[[], str | bytes
         else:
             p.write_text(data, encoding="utf-8")
     return p
+
+
+def finite_record(record: Any, advice: str, where: str = "") -> None:
+    """Refuse a result holding a float that is not finite, before anything is printed.
+
+    ``record`` is a JSON-like value (dicts, lists, numbers, text); the first
+    ``inf`` or ``nan`` raises :class:`~graspcompass.errors.NonFiniteValueError`
+    naming its key and ``advice`` (JSON has no infinities: ``json.dumps`` would
+    write ``Infinity``, which is not JSON).
+    """
+    import math
+
+    from .errors import NonFiniteValueError
+
+    if isinstance(record, float) and not math.isfinite(record):
+        raise NonFiniteValueError(f"{where or 'a result'} is {record}, beyond double precision: "
+                                  f"{advice}")
+    if isinstance(record, dict):
+        for key, value in record.items():
+            finite_record(value, advice, f"{where}.{key}" if where else str(key))
+    elif isinstance(record, (list, tuple)):
+        for i, value in enumerate(record):
+            finite_record(value, advice, f"{where}[{i}]")

@@ -392,7 +392,7 @@ def _cmd_draw(args: argparse.Namespace) -> int:
     path = check_target(name)
     made = _cli_file.construction(args, lambda: grasp_from_args(args))
     c = made.construction
-    if args.step is not None and not -len(c) <= args.step < len(c):
+    if args.step is not None and not 0 <= args.step < len(c):
         raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
                          f"steps, 0 to {len(c) - 1}")
     title = None if made.paper else Path(made.shown).name + (
