@@ -5,6 +5,7 @@ Each test names the sample that broke docs/security.md's promise before the fix.
 
 from __future__ import annotations
 
+import math
 import os
 import warnings
 from decimal import Decimal
@@ -144,3 +145,148 @@ def test_draw_step_minus_one_is_out_of_range(capsys):
     """``draw --step=-1`` was accepted while 47 was refused as out of 0-46."""
     _one_line_refusal(capsys, ["draw", "--step=-1", "-o", os.devnull, "--format", "png"],
                       "0 to 46")
+
+
+# -- drawings: SVG and DXF ------------------------------------------------------------------
+_PLAIN = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" '
+          'viewBox="0 0 100 60"><rect x="10" y="10" width="80" height="40"/></svg>')
+
+
+def _nested_use(levels: int) -> str:
+    defs = ['<rect id="u0" x="0" y="0" width="10" height="10"/>']
+    defs += [f'<g id="u{i}"><use href="#u{i - 1}"/><use href="#u{i - 1}"/></g>'
+             for i in range(1, levels)]
+    return ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+            f'viewBox="0 0 100 100"><defs>{"".join(defs)}</defs><use href="#u{levels - 1}"/>'
+            '</svg>')
+
+
+def _read(path, **kw):
+    from graspcompass.outlines import read_outline
+
+    with no_hang(str(path), 30):
+        return read_outline(path, **kw)
+
+
+def test_nested_use_is_counted_before_it_is_expanded(tmp_path):
+    """1.3 KB of 17 nested ``<use>`` ran past 90 s and 3 GB in ``plan --shape``."""
+    p = tmp_path / "nested.svg"
+    p.write_text(_nested_use(17))
+    assert len(p.read_bytes()) < 1500
+    with pytest.raises(InputTooLargeError, match="<use>"):
+        _read(p)
+    p.write_text(_nested_use(4))  # 8 copies of the square, all at one place: still read
+    assert _read(p).area == pytest.approx(1e-4)  # 10 mm × 10 mm
+    p.write_text('<svg xmlns="http://www.w3.org/2000/svg"><g id="a"><use href="#a"/></g>'
+                 '<rect width="1" height="1"/></svg>')
+    with pytest.raises(InputError, match="itself"):
+        _read(p)
+
+
+@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-be", "utf-16-le", "utf-8-sig",
+                                      "utf-32"])
+def test_entities_are_refused_in_any_encoding(encoding, tmp_path):
+    """A UTF-16 SVG with an internal ``<!ENTITY>`` passed the byte test."""
+    body = _PLAIN.replace('height="40"', 'height="&a;"')
+    for dtd in ('<!DOCTYPE svg [<!ENTITY a "40">]>',
+                '<!DOCTYPE svg [<!ENTITY % p "<!ENTITY a \'40\'>"> %p;]>'):
+        text = f'<?xml version="1.0" encoding="{encoding.upper()}"?>{dtd}{body}'
+        p = tmp_path / "e.svg"
+        p.write_bytes(text.encode(encoding))
+        with pytest.raises(InputError, match="entities"):
+            _read(p)
+
+
+@pytest.mark.parametrize("encoding", ["utf-8", "utf-16", "utf-16-be", "utf-32"])
+def test_an_svg_reads_the_same_in_every_encoding(encoding, tmp_path):
+    """The UTF-16 file was read 0.54 ppm larger (``width="…mm"`` read from raw bytes)."""
+    p = tmp_path / "p.svg"
+    p.write_bytes((f'<?xml version="1.0" encoding="{encoding.upper()}"?>'
+                   '<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" '
+                   '"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd">' + _PLAIN
+                   ).encode(encoding))
+    poly = _read(p)
+    assert poly.area == 0.08 * 0.04 and poly.bounds == (0.01, -0.05, 0.09, -0.01)
+
+
+@pytest.mark.parametrize("shape", ['<circle cx="0" cy="0" r="1e300"/>',
+                                   '<rect width="1" height="1" transform="scale(1e300)"/>',
+                                   '<rect width="1e400" height="1"/>'])
+def test_svg_coordinates_beyond_the_budget(shape, tmp_path):
+    """A circle of radius 1e300: ``cannot convert float NaN to integer`` (a ValueError)."""
+    p = tmp_path / "big.svg"
+    p.write_text(f'<svg xmlns="http://www.w3.org/2000/svg">{shape}</svg>')
+    with pytest.raises(InputError, match=r"drawing units|not finite|no closed shape"):
+        _read(p)
+
+
+def test_chords_are_counted_before_they_are_made(tmp_path):
+    """200 arcs in 4 KB with tolerance=1e-9 flattened for over 30 s (checked after)."""
+    arcs = "M 0 0 " + " ".join(f"A 1 1 0 0 1 {i + 1} 0" for i in range(200)) + " L 200 -50 Z"
+    p = tmp_path / "arcs.svg"
+    p.write_text(f'<svg xmlns="http://www.w3.org/2000/svg"><path d="{arcs}"/></svg>')
+    assert len(p.read_bytes()) < 4096
+    with pytest.raises(InputTooLargeError, match="vertices"):
+        _read(p, tolerance=1e-9)
+
+
+def _dxf(tmp_path, units=None, radius=10.0, bulges=None):
+    ezdxf = pytest.importorskip("ezdxf")
+    doc = ezdxf.new()
+    if units is not None:
+        doc.header["$INSUNITS"] = units
+    msp = doc.modelspace()
+    if bulges is None:
+        msp.add_circle((0, 0), radius)
+    else:
+        msp.add_lwpolyline([(0, 0, 0, 0, bulges[0]), (10, 0, 0, 0, bulges[1]), (10, 10),
+                            (0, 10)], format="xyseb", close=True)
+    path = tmp_path / "part.dxf"
+    doc.saveas(path)
+    return path
+
+
+@pytest.mark.parametrize("units", [-5, -1, 999, 25])
+def test_dxf_units_that_are_no_length_are_refused(units, tmp_path):
+    """$INSUNITS −5 gave contacts at 6e20 mm (negative indexing); −1 exit 3; 999 a ValueError."""
+    with pytest.raises(InputError, match=r"\$INSUNITS"):
+        _read(_dxf(tmp_path, units))
+
+
+def test_dxf_units_that_are_lengths_are_read(tmp_path):
+    area = {4: 1e-6, 5: 1e-4, 6: 1.0, 1: 0.0254**2}  # mm, cm, m, in: a circle of radius 10
+    for units, unit2 in area.items():
+        got = _read(_dxf(tmp_path, units)).area
+        assert got == pytest.approx(math.pi * 100 * unit2, rel=1e-3)
+
+
+@pytest.mark.parametrize("radius", [1e308, 1e300, 1e13])
+def test_dxf_huge_circle_is_refused_not_flattened(radius, tmp_path):
+    """A DXF circle of radius 1e308 (83 bytes of entity) hung."""
+    with pytest.raises(InputError, match=r"drawing units|not finite"):
+        _read(_dxf(tmp_path, 4, radius))
+
+
+@pytest.mark.parametrize("bulges", [(math.nan, 0.0), (1e300, 0.0), (math.inf, math.nan)])
+def test_dxf_bad_bulges_are_one_named_error(bulges, tmp_path, capfd):
+    """NaN or 1e300 bulges printed ezdxf's warnings: more than one stderr line."""
+    from graspcompass.errors import GraspCompassError
+
+    with pytest.raises(GraspCompassError):
+        _read(_dxf(tmp_path, 4, bulges=bulges))
+    assert capfd.readouterr().err == ""
+
+
+@pytest.mark.parametrize("unit", ["1e300m", "1e-300m"])
+def test_outline_of_infinite_or_zero_area_is_refused(unit, tmp_path):
+    """``unit="1e300m"`` gave an outline of infinite area, ``"1e-300m"`` one of none."""
+    p = tmp_path / "p.svg"
+    p.write_text(_PLAIN.replace(' width="100mm" height="60mm"', ""))
+    with pytest.raises(InputError, match="across"):
+        _read(p, unit=unit)
+
+
+@pytest.mark.parametrize("path", [None, b"x.svg", 3])
+def test_read_outline_of_a_non_name(path):
+    with pytest.raises(WrongTypeError):
+        _read(path)
