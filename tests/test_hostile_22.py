@@ -290,3 +290,14 @@ def test_outline_of_infinite_or_zero_area_is_refused(unit, tmp_path):
 def test_read_outline_of_a_non_name(path):
     with pytest.raises(WrongTypeError):
         _read(path)
+
+
+def test_animation_frames_are_bounded_before_drawing(tmp_path, capsys):
+    """``animate --fps 120 --hold 60 --frames-per-step 120 --dpi 10`` was within the pixel
+    budget with tens of thousands of frames, each kept until the file is written."""
+    out = tmp_path / "x.gif"
+    with no_hang("animate", 60):
+        _one_line_refusal(capsys, ["animate", "--fps", "120", "--hold", "60", "--pause", "60",
+                                   "--caption-seconds", "60", "--frames-per-step", "120",
+                                   "--dpi", "10", "-o", str(out)], "frames; at most 20000")
+    assert not out.exists()

@@ -38,10 +38,31 @@ from typing import Any
 from . import _cli_file
 from .presets import PRESETS
 
-__all__ = ["KINDS", "MAIN_ANIMATION", "MAIN_DPI", "MAIN_FIGSIZE", "MAX_DPI", "MAX_FPS",
-           "MAX_FRAMES", "MAX_FRAMES_PER_STEP", "MAX_PIXELS", "MAX_SECONDS", "MAX_WEIGHT",
-           "MIN_DPI", "MIN_FPS", "MIN_LECTURE_DPI", "MIN_WEIGHT", "QUALITY_NAMES", "bounded",
-           "main_animation", "quiet_option", "register", "run", "write_main_animation"]
+__all__ = [
+    "KINDS",
+    "MAIN_ANIMATION",
+    "MAIN_DPI",
+    "MAIN_FIGSIZE",
+    "MAX_ANIMATION_FRAMES",
+    "MAX_DPI",
+    "MAX_FPS",
+    "MAX_FRAMES",
+    "MAX_FRAMES_PER_STEP",
+    "MAX_PIXELS",
+    "MAX_SECONDS",
+    "MAX_WEIGHT",
+    "MIN_DPI",
+    "MIN_FPS",
+    "MIN_LECTURE_DPI",
+    "MIN_WEIGHT",
+    "QUALITY_NAMES",
+    "bounded",
+    "main_animation",
+    "quiet_option",
+    "register",
+    "run",
+    "write_main_animation",
+]
 
 #: The kinds of animation.
 KINDS = ("construction", "sweep", "orientation")
@@ -57,6 +78,9 @@ MAX_FRAMES, MAX_FRAMES_PER_STEP = 3600, 120
 MIN_WEIGHT, MAX_WEIGHT = 1e-6, 1e6
 #: Most pixels in all the frames of one animation (about two minutes of drawing).
 MAX_PIXELS = 2_000_000_000
+#: Most frames of one animation, stills included (each is kept until the file is written;
+#: the lecture quality's construction has about 4,500).
+MAX_ANIMATION_FRAMES = 20_000
 #: The presets of ``--quality`` (the keys of :data:`graspcompass.render.theme.QUALITIES`).
 QUALITY_NAMES = ("standard", "lecture")
 #: Least ``--dpi`` with ``--quality lecture``: its 12.8-inch frame is then 1280 pixels wide.
@@ -178,7 +202,8 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                     "system ffmpeg) or HTML.",
         epilog="limits: every option is checked before any work; the output folder must "
                f"exist; an animation has at most {MAX_PIXELS:.0e} pixels in all its drawn frames "
-               "(lower --dpi or --frames). exit status: 0, or 2 for a user error.")
+               f"(lower --dpi or --frames) and at most {MAX_ANIMATION_FRAMES} frames in all. "
+               "exit status: 0, or 2 for a user error.")
     p.add_argument("target", nargs="?", type=_preset_or_file, default=argparse.SUPPRESS,
                    metavar="PRESET|FILE",
                    help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
@@ -294,6 +319,11 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
             f"the animation would draw {anim.drawn_frames} frames of {round(width)}×"
             f"{round(height)} pixels ({pixels:.2e} in all); at most {MAX_PIXELS:.0e}: lower "
             "--dpi or --frames")
+    if anim.frame_count > MAX_ANIMATION_FRAMES:
+        raise InputTooLargeError(
+            f"the animation would have {anim.frame_count} frames; at most "
+            f"{MAX_ANIMATION_FRAMES}: lower --fps, --hold, --pause, --caption-seconds, "
+            "--frames-per-step or --frames")
     with writing(path):
         anim.save(path, fps=fps, quiet=quiet)
     if not quiet:
