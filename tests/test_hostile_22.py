@@ -301,3 +301,64 @@ def test_animation_frames_are_bounded_before_drawing(tmp_path, capsys):
                                    "--caption-seconds", "60", "--frames-per-step", "120",
                                    "--dpi", "10", "-o", str(out)], "frames; at most 20000")
     assert not out.exists()
+
+
+# -- errors that are not the named ones: Point and batch through the one boundary -------------
+@pytest.mark.parametrize(("value", "error"), [
+    (1j, "ComplexValueError"), (sp.I, "ComplexValueError"), (sp.oo, "NonFiniteValueError"),
+    (sp.zoo, "NonFiniteValueError"), (sp.nan, "NonFiniteValueError"), (None, "WrongTypeError"),
+    (True, "WrongTypeError"), (b"1", "WrongTypeError"), (2**5000, "InputTooLargeError"),
+    ("1/0", "ExpressionError")])
+def test_point_takes_coordinates_through_the_boundary(value, error):
+    """``Point(1j, 0)``, ``I``, ``oo``, ``zoo``, ``nan`` passed; None, True, bytes: TypeError."""
+    from graspcompass.geometry import Point
+
+    with pytest.raises(GraspCompassError) as info:
+        Point(value, 0)
+    assert type(info.value).__name__ == error or error in {
+        c.__name__ for c in type(info.value).__mro__}
+
+
+_HALF = math.pi / 2
+_GRASP = (1.0, 1.0, 0.5, _HALF, _HALF, 0.5, 0.5)
+
+
+@pytest.mark.parametrize(("x1", "error"), [
+    ("1", WrongTypeError), (None, WrongTypeError), ([[1.0], [1.0, 2.0]], WrongTypeError),
+    ([None], WrongTypeError), (["1"], WrongTypeError), (1j, "ComplexValueError"),
+    ([1j], "ComplexValueError"), (sp.Symbol("a"), WrongTypeError), (object(), WrongTypeError)])
+def test_batch_refusals_are_named(x1, error):
+    """``batch`` raised TypeError/ValueError for strings, None, ragged lists, complex values."""
+    from graspcompass import batch
+
+    with pytest.raises(GraspCompassError) as info:
+        batch.worst_squeeze(x1, *_GRASP[1:], 1.0)
+    names = {c.__name__ for c in type(info.value).__mro__}
+    assert (error if isinstance(error, str) else error.__name__) in names
+
+
+def test_batch_takes_exact_python_numbers_as_floats():
+    from graspcompass import batch
+
+    exact = batch.worst_squeeze(Fraction(1, 1), Decimal("1"), sp.Rational(1, 2), *_GRASP[3:],
+                                1.0)
+    assert exact == batch.worst_squeeze(*_GRASP, 1.0)
+
+
+def test_batch_broadcast_is_sized_before_it_is_made():
+    """A (100000, 1) × (1, 100000) broadcast allocated 74 GiB."""
+    from graspcompass import batch
+
+    col, row = np.ones((100_000, 1)), np.ones((1, 100_000))
+    with no_hang("broadcast", 10), pytest.raises(InputTooLargeError, match="broadcast"):
+        batch.worst_squeeze(col, row, *_GRASP[2:], 1.0)
+    with pytest.raises(InputError, match="do not broadcast"):
+        batch.k_grasp(np.zeros(3), np.ones(4), *_GRASP[1:])
+
+
+def test_batch_mixed_array_libraries_are_named():
+    xs = pytest.importorskip("array_api_strict")
+    from graspcompass import batch
+
+    with pytest.raises(WrongTypeError, match="mix array libraries"):
+        batch.worst_squeeze(xs.asarray([1.0]), np.asarray([1.0]), *_GRASP[2:], 1.0)

@@ -78,14 +78,17 @@ array([2.        , 2.83333333])
 from __future__ import annotations
 
 import math
+import numbers
+from decimal import Decimal
 from typing import Any
 
 import numpy as np
 
-from ..errors import ComplexValueError, InputError, WrongTypeError
+from ..errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
 from . import _envelope
 
 __all__ = [
+    "MAX_ARRAY_SIZE",
     "PARAMETERS",
     "InvalidGraspsError",
     "closed_form",
@@ -330,10 +333,86 @@ def _refuse(xp: Any, p: list, ok: Any) -> None:
         "select the valid ones with graspcompass.batch.valid", index, count, reason)
 
 
+#: Most entries of a list argument, and of a broadcast the arguments do not hold already
+#: (as :data:`graspcompass.inputs.MAX_ARRAY_SIZE`).
+MAX_ARRAY_SIZE = 10_000_000
+
+
+def _nested_size(value: list | tuple) -> int:
+    """The entries a nested list would have, from the lengths of its first elements."""
+    size, item = 1, value
+    for _ in range(32):
+        if not isinstance(item, (list, tuple)):
+            break
+        size *= len(item)
+        if not item:
+            break
+        item = item[0]
+    return size
+
+
+def _outside(v: Any, name: str) -> Any:
+    """One argument through the input boundary: numbers, lists of them, or arrays.
+
+    Python numbers that are not floats (``Fraction``, ``Decimal``, sympy numbers) become
+    floats through :func:`graspcompass.inputs.real_value` (bounded, real); text, ``None``
+    and other objects are refused with a named error; a list is sized before it is copied
+    and must not be ragged.  ``nan`` and infinities stay: they are invalid grasps.
+    """
+    if isinstance(v, (bool, np.bool_)):
+        raise WrongTypeError(f"{name}: expected numbers, got a bool")
+    if isinstance(v, (complex, np.complexfloating)):
+        raise ComplexValueError(f"{name}: expected real numbers, got {v!r}")
+    if isinstance(v, (int, float, np.number)):
+        return v
+    if isinstance(v, (list, tuple)):
+        n = _nested_size(v)
+        if n > MAX_ARRAY_SIZE:
+            raise InputTooLargeError(f"{name}: a list of about {n} values; at most "
+                                     f"{MAX_ARRAY_SIZE} (give an array)")
+        try:
+            return np.asarray(v)
+        except (ValueError, TypeError, OverflowError):
+            raise WrongTypeError(f"{name}: expected numbers, got a ragged or mixed list") \
+                from None
+    if isinstance(v, (str, bytes, dict, set, type(None))):
+        raise WrongTypeError(f"{name}: expected numbers or an array, got "
+                             f"{type(v).__name__} {str(v)[:40]!r}")
+    if isinstance(v, (numbers.Real, Decimal)) or type(v).__module__.startswith("sympy"):
+        from ..inputs import real_value  # loads sympy: only for such values
+
+        exact = real_value(v, name)
+        if getattr(exact, "free_symbols", None):
+            raise WrongTypeError(f"{name}: expected numbers, got the expression {exact}")
+        return float(exact)
+    if not hasattr(v, "shape") or not hasattr(v, "dtype"):
+        raise WrongTypeError(f"{name}: expected numbers or an array, got {type(v).__name__}")
+    return v
+
+
 def _prepare(values: tuple, extra: tuple = (), extra_names: tuple = ()) -> tuple:
-    xp = _namespace(*values, *extra)
-    arrs = _floats(xp, values + extra, PARAMETERS + extra_names)
-    return xp, arrs[:7], arrs[7:]
+    names = PARAMETERS + extra_names
+    values = tuple(_outside(v, n) for v, n in zip(values + extra, names))
+    try:
+        xp = _namespace(*values)
+    except TypeError as exc:
+        raise WrongTypeError(f"the arguments mix array libraries or are not arrays: "
+                             f"{str(exc)[:120]}") from None
+    arrs = _floats(xp, values, names)
+    shapes = [tuple(a.shape) for a in arrs]
+    try:
+        shape = np.broadcast_shapes(*shapes)
+    except (ValueError, TypeError):  # dask's unknown sizes are None: not checked here
+        if any(None in s or any(isinstance(d, float) for d in s) for s in shapes):
+            return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
+        raise InputError("the arguments do not broadcast together: shapes "
+                         + ", ".join(f"{n} {s}" for n, s in zip(names, shapes))) from None
+    size, largest = math.prod(shape), max((math.prod(s) for s in shapes), default=1)
+    if size > MAX_ARRAY_SIZE and size > largest and not _is(xp, "dask"):
+        raise InputTooLargeError(
+            f"the arguments broadcast to shape {shape}, {size} grasps, from arrays of at most "
+            f"{largest}: beyond {MAX_ARRAY_SIZE} the caller makes the full-size arrays")
+    return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
 
 
 def _check_mode(on_invalid: str) -> None:

@@ -24,10 +24,17 @@ Conditions = frozenset  # frozenset[sympy.Expr]: each expression is assumed != 0
 
 
 def _outside(value: object, name: str) -> object:
-    """Text and floats from a caller go through the input boundary (safe parse, finite)."""
-    if isinstance(value, (str, float)):
-        return real_value(value, name)
-    return value
+    """A coordinate from a caller goes through the input boundary (:func:`real_value`).
+
+    Everything that is not a sympy expression (text, floats, ints, ``None``, bools,
+    bytes, complex numbers, Fractions, Decimals, numpy scalars) and every sympy atom
+    (``I``, ``oo``, ``zoo``, ``nan``, a big Integer) is checked there: named errors, never a
+    TypeError from sympify.  Compound sympy expressions are the kernel's own results
+    (code, which is trusted) and pass as they are: the kernel makes millions of points.
+    """
+    if isinstance(value, sp.Basic) and not (value.is_Atom and not value.is_Symbol):
+        return value
+    return real_value(value, name)
 
 
 def _merge(*objs: object) -> frozenset:
