@@ -362,3 +362,52 @@ def test_batch_mixed_array_libraries_are_named():
 
     with pytest.raises(WrongTypeError, match="mix array libraries"):
         batch.worst_squeeze(xs.asarray([1.0]), np.asarray([1.0]), *_GRASP[2:], 1.0)
+
+
+# -- wrong answers accepted: an exactly-zero denominator in disguise ---------------------------
+#: sqrt(5 + 2√6) = √2 + √3, so this divides by exactly 0.
+DISGUISED = "1/(sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6)))"
+
+
+def test_disguised_zero_denominator_is_refused_at_the_boundary(capsys):
+    """Accepted by ``Point``, ``Grasp`` and ``k --theta`` (a row at 1.2e129 degrees)."""
+    from graspcompass.errors import NonFiniteValueError
+    from graspcompass.geometry import Point
+
+    assert sp.sqrtdenest(sp.sqrt(5 + 2 * sp.sqrt(6))) == sp.sqrt(2) + sp.sqrt(3)  # the premise
+    for make in (lambda: real_value(DISGUISED, "x1"), lambda: Point(DISGUISED, 0),
+                 lambda: Grasp(**{**Grasp.preset("table1a").params, "x1": DISGUISED})):
+        with pytest.raises(GraspCompassError, match="exactly 0"):
+            make()
+    with pytest.raises(NonFiniteValueError):
+        real_value(sp.Integer(1) / (sp.sqrt(2) + sp.sqrt(3) - sp.sqrt(5 + 2 * sp.sqrt(6))), "y")
+    _one_line_refusal(capsys, ["k", "--theta", DISGUISED], "exactly 0")
+    assert real_value("1/(sqrt(2)+sqrt(3))", "x") == 1 / (sp.sqrt(2) + sp.sqrt(3))  # kept
+
+
+def test_disguised_zero_is_not_negative(capsys):
+    """``--external-force`` of a zero in disguise: "a magnitude cannot be negative"."""
+    from graspcompass.inputs import force_value
+
+    assert force_value("sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6))") == 0
+    assert main(["k", "--theta", "0", "--external-force",
+                 "sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6))", "--json"]) == 0
+    assert '"F_int": 0.0' in capsys.readouterr().out
+
+
+@pytest.mark.xfail(strict=True, reason="the safe parser (expr.py's grammar, not this "
+                   "helper's to change) accepts the disguised zero; the input boundary "
+                   "(inputs.real_value) refuses it")
+def test_parser_refuses_a_disguised_zero_denominator():
+    from graspcompass.expr import parse_exact
+
+    with pytest.raises(GraspCompassError):
+        parse_exact(DISGUISED)
+
+
+@pytest.mark.xfail(strict=True, reason="a construction file's let values are read by "
+                   "construction/language.py (not this helper's to change), which does not "
+                   "pass them through inputs.exact_denominators")
+def test_a_file_refuses_a_disguised_zero_denominator(tmp_path, capsys):
+    (tmp_path / "z.gc").write_text(f"let z = {DISGUISED}\nO = point (z, 0)\n")
+    assert main(["steps", str(tmp_path / "z.gc")]) == 2

@@ -129,7 +129,9 @@ def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
         raise InputTooLargeError(f"--theta is longer than {MAX_TEXT} characters")
     n = count_angles(text)
     if n <= EXACT_ANGLES:
-        exact = parse_angles(text)
+        from .inputs import exact_denominators
+
+        exact = [exact_denominators(v, "--theta") for v in parse_angles(text)]
         floats = np.array([_float(v) for v in exact], dtype=float)
     elif n > MAX_ANGLES:
         many = f"{n}" if n < 2 * MAX_ANGLES else f"more than {2 * MAX_ANGLES}"
