@@ -411,3 +411,69 @@ def test_parser_refuses_a_disguised_zero_denominator():
 def test_a_file_refuses_a_disguised_zero_denominator(tmp_path, capsys):
     (tmp_path / "z.gc").write_text(f"let z = {DISGUISED}\nO = point (z, 0)\n")
     assert main(["steps", str(tmp_path / "z.gc")]) == 2
+
+
+def test_second_intersection_needs_a_common_point(tmp_path, capsys):
+    """``second_intersection c d C`` with C on neither circle gave a point; check certified it."""
+    f = tmp_path / "si.gc"
+    f.write_text("A = point (0, 0)\nB = point (2, 0)\nC = point (5, 5)\n"
+                 "c = circle_through A B\nd = circle_through B A\nE = second_intersection c d C\n")
+    _one_line_refusal(capsys, ["steps", str(f)], "is not on the circle")
+    assert main(["check", str(f), "-q"]) != 0
+    capsys.readouterr()
+    f.write_text(f.read_text().replace("C = point (5, 5)", "C = point (1, sqrt(3))"))
+    assert main(["steps", str(f)]) == 0  # (1, √3) is on both: the other point is (1, −√3)
+    assert "(1, -sqrt(3))" in capsys.readouterr().out
+
+
+def test_an_envelope_step_without_its_points_is_a_user_error(tmp_path, capsys):
+    """An ``envelope`` step in a user file: exit 3 (``KeyError: 'V1'``)."""
+    f = tmp_path / "env.gc"
+    f.write_text("O = point (0, 0)\nA = point (1, 0)\nB = point (0, 1)\n"
+                 "c1 = circle_on_diameter O A\nc2 = circle_on_diameter O B\n"
+                 "P = second_intersection c1 c2 O\ne = envelope c1 c2 P\n")
+    _one_line_refusal(capsys, ["steps", str(f)], "V1, V2, V3, V4 missing")
+
+
+@pytest.mark.parametrize("kind", ["MultiPolygon", "LineString", "Point", "LinearRing"])
+def test_place_grasp_names_a_shapely_outline_that_is_no_polygon(kind):
+    """A MultiPolygon, LineString or Point outline raised TypeError."""
+    from shapely import geometry as g
+
+    from graspcompass.world import OutlineError, place_grasp
+
+    box = g.box(-2, -4, 2, 4)
+    outline = {"MultiPolygon": g.MultiPolygon([box, g.box(5, 5, 6, 6)]),
+               "LineString": g.LineString([(0, 0), (1, 1)]), "Point": g.Point(0, 0),
+               "LinearRing": box.exterior}[kind]
+    with pytest.raises(OutlineError, match=kind):
+        place_grasp([(2, 1), (-2, 1)], outline=outline, mu=(1, 1))
+
+
+@pytest.mark.parametrize("names", [("A",), ("A", "B", "C"), None, "AB"])
+def test_place_grasp_names_must_be_a_pair(names):
+    """``names=("A",)`` raised IndexError."""
+    from graspcompass.world import place_grasp
+
+    with pytest.raises(InputError, match="names"):
+        place_grasp([(2, 1), (-2, 1)], [(-1, 0), (1, 0)], mu=(1, 1), com=(0, 0), names=names)
+
+
+@pytest.mark.parametrize("text", [None, b"1", 3])
+def test_parsers_refuse_what_is_not_text_with_a_named_error(text):
+    """``parse_exact`` given bytes or None raised a plain TypeError."""
+    from graspcompass.errors import NotTextError
+    from graspcompass.expr import parse_angles, parse_exact
+
+    for parse in (parse_exact, parse_angles):
+        with pytest.raises(NotTextError):  # a WrongTypeError, and still a TypeError
+            parse(text)
+
+
+@pytest.mark.xfail(strict=True, reason="construction/language.py (not this helper's to change) "
+                   "raises a plain TypeError for a file text that is not a str")
+def test_language_parse_refuses_what_is_not_text_with_a_named_error():
+    from graspcompass.construction.language import parse
+
+    with pytest.raises(GraspCompassError):
+        parse(b"O = point (0, 0)")

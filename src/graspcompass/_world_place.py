@@ -113,6 +113,9 @@ def place_grasp(
     """
     if at_vertex not in ("refuse", "bisector"):
         raise InputError(f"at_vertex: expected 'refuse' or 'bisector', got {at_vertex!r}")
+    if isinstance(names, (str, bytes)) or not isinstance(names, Sequence) or len(names) != 2:
+        raise InputError(f"names: expected the two contacts' names, a pair such as "
+                         f"('A', 'B'), got {str(names)[:40]!r}")
     na, nb = (str(names[0]), str(names[1]))
     if na == nb:
         raise InputError(f"names: the two contacts need different names, got {na!r} twice")
