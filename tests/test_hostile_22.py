@@ -477,3 +477,42 @@ def test_language_parse_refuses_what_is_not_text_with_a_named_error():
 
     with pytest.raises(GraspCompassError):
         parse(b"O = point (0, 0)")
+
+
+# -- refusals that gave a false reason ---------------------------------------------------------
+_BRACKET = os.path.join(os.path.dirname(__file__), "..", "docs", "_static", "outlines",
+                        "bracket.svg")
+
+
+@pytest.mark.parametrize("extra", [["--mass", "1e308"], ["--mass", "1", "--g", "1e308"]])
+def test_plan_overflow_is_not_called_no_force_closure(extra, capsys):
+    """"none of the 190 pairs is force-closure" for huge masses: they are, the squeeze
+    overflows."""
+    err = _one_line_refusal(capsys, ["plan", "--shape", _BRACKET, "--mu", "0.5",
+                                     "--samples", "40", *extra], "beyond double precision")
+    assert "none of the" not in err
+
+
+def test_a_huge_value_is_not_called_symbolic(tmp_path, capsys):
+    """``--set a=1e300`` was refused as "the construction is symbolic"."""
+    f = tmp_path / "t.gc"
+    f.write_text("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n")
+    err = _one_line_refusal(capsys, ["draw", str(f), "--set", "a=1e300", "-o",
+                                     str(tmp_path / "t.png")], "beyond double precision")
+    assert "symbolic" not in err
+    from graspcompass import internal_force_diagram
+    from graspcompass.layout import numeric_objects
+
+    with pytest.raises(ValueError, match="symbolic"):  # a symbolic one still says so
+        numeric_objects(internal_force_diagram(Grasp.symbolic("mu")))
+
+
+def test_a_virtual_file_system_is_not_a_full_disk(capsys):
+    """``-o /proc/x`` was refused as "no space left on the device"."""
+    if not os.path.isdir("/proc") or os.statvfs("/proc").f_blocks:
+        pytest.skip("no /proc without blocks here")
+    err = _one_line_refusal(capsys, ["export", "--format", "svg", "-o", "/proc/x.svg"],
+                            "virtual file system")
+    assert "space" not in err
+    if os.path.exists("/dev/full"):
+        _one_line_refusal(capsys, ["draw", "-o", "/dev/full", "--format", "png"], "no space")

@@ -78,11 +78,15 @@ def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> 
     if not writable:
         raise _fail(shown, f"no permission to write in the folder {str(d)!r}")
     try:
-        full = os.statvfs(d).f_bavail == 0
+        fs = os.statvfs(d)
+        full, virtual = fs.f_blocks > 0 and fs.f_bavail == 0, fs.f_blocks == 0
     except (OSError, AttributeError):  # pragma: no cover - no statvfs (not POSIX)
-        full = False
+        full = virtual = False
     if full:
         raise _fail(shown, "no space left on the device")
+    if virtual and path is not None and not os.path.lexists(path):  # /proc, /sys: no storage
+        raise _fail(shown, f"the folder {str(d)!r} is on a virtual file system (such as /proc "
+                           "or /sys), where no new file can be made")
     return d
 
 
