@@ -27,7 +27,11 @@ class OutOfTime(BaseException):
 
 @contextlib.contextmanager
 def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[None]:
-    """Raise ``error()`` inside the block if it is still running after ``seconds``."""
+    """Raise ``error()`` inside the block if it is still running after ``seconds``.
+
+    Alarms nest: inside a block with an earlier alarm this one does nothing; inside one
+    with a later alarm, the enclosing alarm gets back what is left of its time on exit.
+    """
     if not hasattr(signal, "setitimer") or threading.current_thread() is not \
             threading.main_thread():  # pragma: no cover
         yield
@@ -36,6 +40,13 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
     def _ring(*_: object) -> None:
         raise error()
 
+    outer = signal.getitimer(signal.ITIMER_REAL)[0]
+    if 0 < outer <= seconds:  # an enclosing alarm rings first: leave it in charge
+        yield
+        return
+    import time
+
+    start = time.monotonic()
     previous = signal.signal(signal.SIGALRM, _ring)
     signal.setitimer(signal.ITIMER_REAL, seconds)
     try:
@@ -43,3 +54,5 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+        if outer > 0:  # an enclosing alarm: give it back what is left of its time
+            signal.setitimer(signal.ITIMER_REAL, max(outer - (time.monotonic() - start), 1e-3))

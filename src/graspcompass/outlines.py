@@ -60,7 +60,7 @@ from ._outline_checks import (
     chord_budget,
     svg_utf8,
 )
-from .errors import InputError, InputTooLargeError, WrongTypeError
+from .errors import GraspCompassError, InputError, InputTooLargeError, WrongTypeError
 from .world import OutlineError
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_OUTLINE_BYTES", "MissingExtraError", "read_outline"]
@@ -134,6 +134,17 @@ def _svg_rings(data: bytes, tolerance: float, where: str
     except Exception as exc:  # a malformed file: svgelements raises many kinds
         raise InputError(f"not a readable SVG file: {type(exc).__name__}: "
                          f"{str(exc)[:120]}") from None
+    try:
+        return _svg_shape_rings(shapes, tolerance, where, Close, Line, Move, Path)
+    except (GraspCompassError, MemoryError):
+        raise
+    except Exception as exc:  # svgelements on degenerate shapes (a zero scale, ...)
+        raise InputError(f"{where}: cannot read the SVG's shapes: {type(exc).__name__}: "
+                         f"{str(exc)[:120]}") from None
+
+
+def _svg_shape_rings(shapes: list, tolerance: float, where: str, Close: Any, Line: Any,
+                     Move: Any, Path: Any) -> list[tuple[str, list[tuple[float, float]]]]:
     boxes = [Path(s).bbox() for s in shapes]
     boxes = [b for b in boxes if b is not None]
     check_coordinates([v for b in boxes for v in b], where)
@@ -212,6 +223,11 @@ def _dxf_rings(data: bytes, tolerance: float, where: str
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             return _dxf_read(data, tolerance, where, ezdxf, dxfpath, recover)
+    except (GraspCompassError, MemoryError):
+        raise
+    except Exception as exc:  # ezdxf on degenerate entities
+        raise InputError(f"{where}: cannot read the DXF's entities: {type(exc).__name__}: "
+                         f"{str(exc)[:120]}") from None
     finally:
         log.setLevel(level)
         log.propagate = log_propagates
