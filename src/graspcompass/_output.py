@@ -79,7 +79,8 @@ def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> 
         raise _fail(shown, f"no permission to write in the folder {str(d)!r}")
     try:
         fs = os.statvfs(d)
-        full, virtual = fs.f_blocks > 0 and fs.f_bavail == 0, fs.f_blocks == 0
+        blocks = getattr(fs, "f_blocks", None)  # 0: a virtual file system (/proc, /sys)
+        full, virtual = fs.f_bavail == 0 and blocks != 0, blocks == 0
     except (OSError, AttributeError):  # pragma: no cover - no statvfs (not POSIX)
         full = virtual = False
     if full:
