@@ -8,7 +8,7 @@ unicode names).  ``main(argv)`` runs in-process in a fresh working folder, and
 for every case the test asserts:
 
 * the exit status is one the command documents (:data:`graspcompass.cli.EXIT_STATUSES`:
-  0, 2, and 1 for ``verify``/``crosscheck``); status 3, an internal error, is a bug;
+  0, 2, and 1 for ``verify``/``crosscheck``); status 4, an internal error, is a bug;
 * on status 2: nothing on stdout, exactly one line on stderr, no traceback;
 * no file appears except at the output path the command line names (or the
   command's default name), and none at all when the command fails;
@@ -43,7 +43,7 @@ SEED = int(os.environ.get("GRASPCOMPASS_FUZZ_SEED",
 
 #: Without a display ``explore`` is refused at once; with one it would open a window.
 HEADLESS = not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
-#: Exit statuses each command documents (3, an internal error, is never acceptable here).
+#: Exit statuses each command documents (4, an internal error, is never acceptable here).
 STATUSES = {"verify": {0, 1, 2}, "crosscheck": {0, 1, 2}}
 DEFAULT_STATUSES = {0, 2}
 COMMANDS = ("draw", "steps", "k", "presets", "animate", "export", "explore", "verify",

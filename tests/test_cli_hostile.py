@@ -291,12 +291,12 @@ def test_main_returns_instead_of_exiting(capsys):
     assert main(["--bogus"]) == 2
 
 
-def test_internal_error_is_one_line_status_3(capsys, monkeypatch):
+def test_internal_error_is_one_line_status_4(capsys, monkeypatch):
     def broken(args):
         raise TypeError("a bug\nwith two lines")
 
     monkeypatch.setitem(cli._COMMANDS, "presets", broken)
-    assert main(["presets"]) == 3
+    assert main(["presets"]) == 4
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "internal error: TypeError: a bug" in err
 

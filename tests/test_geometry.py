@@ -210,7 +210,9 @@ def test_python_numbers_become_sympy_numbers():
     assert isinstance(p.x, sympy.Integer) and isinstance(p.y, sympy.Integer)
     assert Point(Fraction(1, 3), 0).x == R(1, 3)
     assert isinstance(Point(0.5, 0).x, sympy.Float)
-    with pytest.raises(TypeError):
+    from graspcompass.errors import WrongTypeError
+
+    with pytest.raises(WrongTypeError):  # issue 22: a named error, no longer a TypeError
         Point(True, 0)
 
 

@@ -313,8 +313,10 @@ def test_float_grasp_defects_found_by_the_property_tests() -> None:
     with pytest.raises(InvalidGraspError, match="symbolic"):
         Grasp(**{**FLOAT, "phi1": t})  # floats and a symbol: accepted, then TypeError in k
     with pytest.raises(NonFiniteValueError, match="double precision") as info:
-        Grasp(**{**FLOAT, "mu1": 10**400})  # exact θ then compared nan: TypeError
+        Grasp(**{**FLOAT, "mu1": 10**330})  # exact θ then compared nan: TypeError
     assert isinstance(info.value, InvalidGraspError)
+    with pytest.raises(InvalidGraspError, match="1329 bits"):  # issue 22: ints as text are
+        Grasp(**{**FLOAT, "mu1": 10**400})  # bounded (MAX_INT_BITS), before any work
     with pytest.raises(InputError, match="not a number"):
         Grasp.preset("table1a").contact_forces(0.3, t)  # TypeError from float(t)
     with pytest.raises(TypeError):  # still a TypeError, as documented before

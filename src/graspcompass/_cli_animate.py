@@ -38,10 +38,31 @@ from typing import Any
 from . import _cli_file
 from .presets import PRESETS
 
-__all__ = ["KINDS", "MAIN_ANIMATION", "MAIN_DPI", "MAIN_FIGSIZE", "MAX_DPI", "MAX_FPS",
-           "MAX_FRAMES", "MAX_FRAMES_PER_STEP", "MAX_PIXELS", "MAX_SECONDS", "MAX_WEIGHT",
-           "MIN_DPI", "MIN_FPS", "MIN_LECTURE_DPI", "MIN_WEIGHT", "QUALITY_NAMES", "bounded",
-           "main_animation", "quiet_option", "register", "run", "write_main_animation"]
+__all__ = [
+    "KINDS",
+    "MAIN_ANIMATION",
+    "MAIN_DPI",
+    "MAIN_FIGSIZE",
+    "MAX_ANIMATION_FRAMES",
+    "MAX_DPI",
+    "MAX_FPS",
+    "MAX_FRAMES",
+    "MAX_FRAMES_PER_STEP",
+    "MAX_PIXELS",
+    "MAX_SECONDS",
+    "MAX_WEIGHT",
+    "MIN_DPI",
+    "MIN_FPS",
+    "MIN_LECTURE_DPI",
+    "MIN_WEIGHT",
+    "QUALITY_NAMES",
+    "bounded",
+    "main_animation",
+    "quiet_option",
+    "register",
+    "run",
+    "write_main_animation",
+]
 
 #: The kinds of animation.
 KINDS = ("construction", "sweep", "orientation")
@@ -57,6 +78,9 @@ MAX_FRAMES, MAX_FRAMES_PER_STEP = 3600, 120
 MIN_WEIGHT, MAX_WEIGHT = 1e-6, 1e6
 #: Most pixels in all the frames of one animation (about two minutes of drawing).
 MAX_PIXELS = 2_000_000_000
+#: Most frames of one animation, stills included (each is kept until the file is written;
+#: the lecture quality's construction has about 4,500).
+MAX_ANIMATION_FRAMES = 20_000
 #: The presets of ``--quality`` (the keys of :data:`graspcompass.render.theme.QUALITIES`).
 QUALITY_NAMES = ("standard", "lecture")
 #: Least ``--dpi`` with ``--quality lecture``: its 12.8-inch frame is then 1280 pixels wide.
@@ -133,11 +157,24 @@ def quiet_option(p: argparse.ArgumentParser, text: str = "print nothing but erro
     p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=text)
 
 
-def _preset(name: str) -> str:
-    if name == argparse.SUPPRESS or name in PRESETS:
+def _preset_or_file(name: str) -> str:
+    """An argparse ``type``: a preset's name, or a construction file (as ``draw FILE``)."""
+    import os
+
+    if name is argparse.SUPPRESS or name in PRESETS or name == "-" or os.path.lexists(name):
         return name
-    raise argparse.ArgumentTypeError(f"unknown preset {name!r}; choose one of "
-                                     f"{', '.join(sorted(PRESETS))}")
+    raise argparse.ArgumentTypeError(
+        f"{name!r} is neither a preset ({', '.join(sorted(PRESETS))}) nor a file: give a "
+        "preset, or a construction file (FILE or --file FILE)")
+
+
+class _PresetOrFile(argparse.Action):
+    """Stores a preset's name as ``preset``, a file's as ``file`` (as ``draw FILE``: beside
+    ``--file`` it is refused as two files)."""
+
+    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
+                 values: Any, option_string: str | None = None) -> None:
+        setattr(namespace, "preset" if values in PRESETS else "file", values)
 
 
 class _Checked(argparse.Action):
@@ -161,13 +198,16 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         "animate", help="animate the construction, the force sweep or the turning object",
         description="Write an animation: the ruler-and-compass construction step by step "
                     "(§3.3), the external force sweeping round (Fig. 3) or the object turning "
-                    "under gravity (Fig. 1), as GIF, MP4 (needs ffmpeg) or HTML.",
+                    "under gravity (Fig. 1), as GIF, MP4 (pip install 'graspcompass[mp4]', or a "
+                    "system ffmpeg) or HTML.",
         epilog="limits: every option is checked before any work; the output folder must "
                f"exist; an animation has at most {MAX_PIXELS:.0e} pixels in all its drawn frames "
-               "(lower --dpi or --frames). exit status: 0, or 2 for a user error.")
-    p.add_argument("preset", nargs="?", type=_preset, default=argparse.SUPPRESS,
-                   metavar="PRESET", help=f"a preset ({', '.join(sorted(PRESETS))}); same as "
-                                          "--preset")
+               f"(lower --dpi or --frames) and at most {MAX_ANIMATION_FRAMES} frames in all. "
+               "exit status: 0, or 2 for a user error.")
+    p.add_argument("target", nargs="?", type=_preset_or_file, default=argparse.SUPPRESS,
+                   metavar="PRESET|FILE",
+                   help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
+                        "construction file ('-' reads stdin; same as --file)", action=_PresetOrFile)
     add_grasp_options(p)
     _cli_file.add_file_options(p, positional=False)
     p.add_argument("--kind", choices=KINDS, default="construction",
@@ -279,6 +319,11 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
             f"the animation would draw {anim.drawn_frames} frames of {round(width)}×"
             f"{round(height)} pixels ({pixels:.2e} in all); at most {MAX_PIXELS:.0e}: lower "
             "--dpi or --frames")
+    if anim.frame_count > MAX_ANIMATION_FRAMES:
+        raise InputTooLargeError(
+            f"the animation would have {anim.frame_count} frames; at most "
+            f"{MAX_ANIMATION_FRAMES}: lower --fps, --hold, --pause, --caption-seconds, "
+            "--frames-per-step or --frames")
     with writing(path):
         anim.save(path, fps=fps, quiet=quiet)
     if not quiet:

@@ -13,6 +13,13 @@ before any of them is computed:
   says so, and the rows are written in chunks as they are computed, so a
   million rows stream out instead of piling up.
 
+On the exact path every number printed is the exact value rounded to the
+nearest double (:func:`rounded_rows`): ``k_n(θ) = S_n sin θ − C_n cos θ``
+(eqs. (18)-(21), (27)) evaluated from the exact S_n, C_n and θ at
+:data:`DIGITS` digits, a value that small next to |V_n| settled exactly (an
+exact zero prints 0, not ``-4.97e-42``; −3/2 prints −1.5, not
+``-1.4999999999999998``).
+
 Every number printed is finite: a grasp or an angle whose values overflow a
 double is refused with one line (exit status 2).
 """
@@ -41,6 +48,8 @@ __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_a
 MAX_TEXT = MAX_LIST_LENGTH
 #: Rows computed and written at a time on the float path.
 CHUNK = 20_000
+#: Digits of the evaluation the exact path's printed doubles are rounded from.
+DIGITS = 60
 
 _JSON_RECORD = (' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
                 '"F_int": %r, "limiting": %d}')
@@ -121,7 +130,9 @@ def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
         raise InputTooLargeError(f"--theta is longer than {MAX_TEXT} characters")
     n = count_angles(text)
     if n <= EXACT_ANGLES:
-        exact = parse_angles(text)
+        from .inputs import exact_denominators
+
+        exact = [exact_denominators(v, "--theta") for v in parse_angles(text)]
         floats = np.array([_float(v) for v in exact], dtype=float)
     elif n > MAX_ANGLES:
         many = f"{n}" if n < 2 * MAX_ANGLES else f"more than {2 * MAX_ANGLES}"
@@ -228,14 +239,12 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
                   f"for at most {EXACT_ANGLES} angles)", file=sys.stderr)
         _stream(args, g, t, fe_float, out)
         return 0
-    ks, kg, fint = _values(g, t, fe_float)
-    lim = _limiting(ks, kg)
+    _check_range(g, fe_float)
     records = []
-    for i, th in enumerate(exact):
+    for th, (deg, ks, kg, fint, lim) in zip(exact, rounded_rows(g, exact, fe)):
         rec: dict[str, Any] = {
-            "theta": str(th), "theta_deg": float(np.degrees(t[i])),
-            "k": [float(v) for v in ks[:, i]], "k_grasp": float(kg[i]), "F_int": float(fint[i]),
-            "limiting": int(lim[i]),
+            "theta": str(th), "theta_deg": deg, "k": ks, "k_grasp": kg, "F_int": fint,
+            "limiting": lim,
         }
         if args.exact:
             rec["k_exact"] = [str(v) for v in g.k(th)]
@@ -254,6 +263,60 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
             print(f"θ = {r['theta']}: k_grasp = {r['k_grasp_exact']}, F_int = {r['F_int_exact']}",
                   file=out)
     return 0
+
+
+def rounded_rows(g: Any, thetas: list[sp.Expr], fe: sp.Expr
+                 ) -> Iterator[tuple[float, list[float], float, float, int]]:
+    """``(θ in degrees, [k1..k4], k_grasp, F_int, limiting n)`` per exact θ, rounded from exact.
+
+    ``k_n(θ) = S_n sin θ − C_n cos θ`` (eqs. (18)-(21)) is evaluated at
+    :data:`DIGITS` digits from the exact S_n, C_n (eqs. (28)-(39)) and θ and
+    rounded once to a double; a value below ``10**-(DIGITS - 15)·|V_n|``, where
+    those digits could be cancellation, is computed exactly and its zero
+    decided by :func:`graspcompass.geometry.exact.decide_zero` (an exact zero
+    is 0).  Rounding is monotone, so ``k_grasp = max(k1..k4, 0)`` (eq. (25)) is
+    the rounded exact maximum; ``F_int = k_grasp·F_e/(x1 + x2)`` (eq. (17)) is
+    rounded from the same digits.
+
+    Raises
+    ------
+    NonFiniteValueError
+        For a value beyond the largest double.
+    """
+    import mpmath
+
+    from .geometry.exact import canon, decide_zero
+
+    with mpmath.workdps(DIGITS + 10):
+        def mp(value: Any) -> Any:
+            return mpmath.mpf(sp.N(value, DIGITS + 10))
+
+        S, C = [mp(v) for v in g.S], [mp(v) for v in g.C]
+        norm = [abs(a) + abs(b) for a, b in zip(S, C)]
+        scale, tiny = mp(fe / g.D), mpmath.mpf(10) ** (15 - DIGITS)
+        for th in thetas:
+            t = mp(th)
+            s, c = mpmath.sin(t), mpmath.cos(t)
+            ks = [S[n] * s - C[n] * c for n in range(4)]
+            exact_ks: list[Any] = [None] * 4
+            for n in range(4):
+                if abs(ks[n]) <= tiny * norm[n]:
+                    exact_ks[n] = canon(g.S[n] * sp.sin(th) - g.C[n] * sp.cos(th))
+                    ks[n] = mpmath.mpf(0) if decide_zero(exact_ks[n]) else mp(exact_ks[n])
+            best = max(range(4), key=lambda n: ks[n])
+            top = ks[best] if ks[best] > 0 else mpmath.mpf(0)
+            values = [_double(v) for v in (*ks, top, top * scale, t * 180 / mpmath.pi)]
+            yield values[6], values[:4], values[4], values[5], best + 1 if top > 0 else 0
+
+
+def _double(value: Any) -> float:
+    """The double nearest ``value`` (an mpmath number), refused beyond the largest one."""
+    out = float(value)
+    if not math.isfinite(out):
+        raise NonFiniteValueError("a value of k_n, k_grasp, F_int or θ in degrees is beyond "
+                                  "double precision (1.8e308): give the lengths, the force "
+                                  "or the angles in other units")
+    return out + 0.0  # -0.0 prints as 0
 
 
 def table(rows: list[list[str]], head: list[str]) -> str:

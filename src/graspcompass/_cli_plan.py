@@ -194,6 +194,9 @@ def run(args: argparse.Namespace) -> int:
                          tilt=args.tilt, exact=args.exact, tol=tol)
     record = plan.to_dict(args.top)
     record["shape"] = args.shape
+    from ._output import finite_record
+
+    finite_record(record, "give the mass or the drawing's unit in other units")
     if draw is not None:
         from ._output import writing
         from .render.output import save_figure
@@ -203,7 +206,7 @@ def run(args: argparse.Namespace) -> int:
             save_figure(figure_plan(plan, top=min(args.top, 10)), draw)
         record["drawing"] = str(draw)
     if args.json:
-        print(json.dumps(record, indent=1))
+        print(json.dumps(record, indent=1, allow_nan=False))
         return 0
     print(_text(record))
     if draw is not None:

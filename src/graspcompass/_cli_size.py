@@ -50,9 +50,9 @@ def add_outline_options(group: Any, *, shape_required: bool) -> None:
     """``--shape``, ``--shape-unit`` and ``--com``: the part's outline from a drawing and
     its centre of mass, as ``graspcompass size`` and ``graspcompass plan`` read them."""
     group.add_argument("--shape", required=shape_required, metavar="FILE",
-                       help="the part's outline from a drawing: an SVG or DXF file (the "
-                            "optional extra graspcompass[outlines]); the closed shape of "
-                            "largest area, curves flattened, in the drawing's units")
+                       help="the part's outline from a drawing: an SVG or DXF file; the "
+                            "closed shape of largest area, curves flattened, in the "
+                            "drawing's units")
     group.add_argument("--shape-unit", metavar="LENGTH",
                        help="with --shape: the length of one drawing unit when the file "
                             "does not say (default: SVG 96 per inch, DXF mm)")
@@ -89,8 +89,10 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     part = s.add_argument_group("the part, in one world frame (right-handed, y up)")
     part.add_argument("--p1", required=True, metavar="X,Y", help="contact of jaw 1")
     part.add_argument("--p2", required=True, metavar="X,Y", help="contact of jaw 2")
-    part.add_argument("--n1", metavar="X,Y", help="inward unit normal at jaw 1's contact")
-    part.add_argument("--n2", metavar="X,Y", help="inward unit normal at jaw 2's contact")
+    part.add_argument("--n1", metavar="X,Y",
+                      help="inward normal at jaw 1's contact (any nonzero length)")
+    part.add_argument("--n2", metavar="X,Y",
+                      help="inward normal at jaw 2's contact (any nonzero length)")
     part.add_argument("--outline", metavar="X,Y;X,Y;...",
                       help="the part's outline (vertices separated by ';'): normals of the "
                            "edges the contacts lie on, centroid as the default --com")
@@ -270,8 +272,11 @@ def run(args: argparse.Namespace) -> int:
                               f"squeeze_infinite_friction_{args.per}_N":
                                   lm.squeeze_infinite_friction,
                               f"max_force_{args.per}_N": lm.force_limit, "message": lm.message}
+    from ._output import finite_record
+
+    finite_record(record, "give the mass, the lengths or the accelerations in other units")
     if args.json:
-        print(json.dumps(record, indent=1))
+        print(json.dumps(record, indent=1, allow_nan=False))
         return 0
     print(_text(record, s, lm))
     return 0

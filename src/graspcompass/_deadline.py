@@ -21,7 +21,13 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 
-__all__ = ["deadline"]
+__all__ = ["OutOfTime", "deadline"]
+
+
+class OutOfTime(BaseException):
+    """A command ran past its ``--timeout``.  A :class:`BaseException`, like
+    :class:`KeyboardInterrupt`, so that no ``except Exception`` on the way swallows it."""
+
 
 _EARLY = 0.005  # an alarm may ring this much before the monotonic clock agrees
 

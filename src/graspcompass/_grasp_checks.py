@@ -33,6 +33,13 @@ if TYPE_CHECKING:
     from .grasp import Grasp
 
 
+def _degrees_hint(angle: Any, most: int) -> str:
+    """The hint for an angle typed in degrees without its unit (``90`` for ``90deg``)."""
+    if angle.is_Rational and 3 < angle <= most:
+        return (f"; a number without a unit is in radians: for {angle} degrees write "
+                f"{angle}deg")
+    return ""
+
 def _length_checks(g: Grasp) -> list[tuple[Any, ...]]:
     """The domain of x1, x2: ``x1 + x2 > 0`` for a grasp of numbers (issue 13 §1).
 
@@ -77,7 +84,7 @@ def _friction(i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
         if decide_sign(bound) in sign:
             raise InvalidGraspError(
                 f"contact {i}: the friction cone half angle ξ{i} = {_fmt_angle(x)} "
-                f"must be {words} (0 < ξ < π/2)"
+                f"must be {words} (0 < ξ < π/2){_degrees_hint(x, 90)}"
             )
     if x.free_symbols:
         return sp.tan(x), x  # a symbol: tan(xi) is one generator
@@ -95,9 +102,10 @@ def _validate(g: Grasp) -> None:
         q = _pi_multiple(phi)
         if q is not None and 0 < q <= 1:
             continue  # 0 < φ ≤ π, decided in rationals
+        hint = _degrees_hint(phi, 180)
         checks += [
-            (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π)"),
-            (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π)",
+            (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π){hint}"),
+            (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π){hint}",
              phi),
         ]
     assumed: list[sp.Basic] = []

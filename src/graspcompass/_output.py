@@ -24,16 +24,18 @@ the folder '...missing' does not exist (create it first)
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import stat
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from .errors import OutputError
 
-__all__ = ["check_folder", "check_target", "write_output", "writing"]
+__all__ = ["check_folder", "check_target", "finite_record", "write_output", "writing"]
 
 
 def _fail(path: object, why: str) -> OutputError:
@@ -76,11 +78,16 @@ def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> 
     if not writable:
         raise _fail(shown, f"no permission to write in the folder {str(d)!r}")
     try:
-        full = os.statvfs(d).f_bavail == 0
+        fs = os.statvfs(d)
+        blocks = getattr(fs, "f_blocks", None)  # 0: a virtual file system (/proc, /sys)
+        full, virtual = fs.f_bavail == 0 and blocks != 0, blocks == 0
     except (OSError, AttributeError):  # pragma: no cover - no statvfs (not POSIX)
-        full = False
+        full = virtual = False
     if full:
         raise _fail(shown, "no space left on the device")
+    if virtual and path is not None and not os.path.lexists(path):  # /proc, /sys: no storage
+        raise _fail(shown, f"the folder {str(d)!r} is on a virtual file system (such as /proc "
+                           "or /sys), where no new file can be made")
     return d
 
 
@@ -181,6 +188,11 @@ def writing(path: str | os.PathLike[str]) -> Iterator[None]:
         if isinstance(exc, (OutputError, BrokenPipeError)):
             raise
         raise _fail(os.fspath(path), _reason(exc)) from None
+    except BaseException:  # out of time, interrupted: no half-written file either
+        if not existed and os.path.isfile(path):
+            with contextlib.suppress(OSError):
+                os.unlink(path)
+        raise
 
 
 def write_output(path: str | os.PathLike[str], produce: Callable[[], str | bytes]) -> Path:
@@ -198,3 +210,26 @@ def write_output(path: str | os.PathLike[str], produce: Callable[[], str | bytes
         else:
             p.write_text(data, encoding="utf-8")
     return p
+
+
+def finite_record(record: Any, advice: str, where: str = "") -> None:
+    """Refuse a result holding a float that is not finite, before anything is printed.
+
+    ``record`` is a JSON-like value (dicts, lists, numbers, text); the first
+    ``inf`` or ``nan`` raises :class:`~graspcompass.errors.NonFiniteValueError`
+    naming its key and ``advice`` (JSON has no infinities: ``json.dumps`` would
+    write ``Infinity``, which is not JSON).
+    """
+    import math
+
+    from .errors import NonFiniteValueError
+
+    if isinstance(record, float) and not math.isfinite(record):
+        raise NonFiniteValueError(f"{where or 'a result'} is {record}, beyond double precision: "
+                                  f"{advice}")
+    if isinstance(record, dict):
+        for key, value in record.items():
+            finite_record(value, advice, f"{where}.{key}" if where else str(key))
+    elif isinstance(record, (list, tuple)):
+        for i, value in enumerate(record):
+            finite_record(value, advice, f"{where}[{i}]")

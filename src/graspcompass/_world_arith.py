@@ -23,11 +23,10 @@ from .errors import SymbolicValueError, WrongTypeError
 from .geometry.exact import canon, decide_sign
 from .inputs import real_value
 
-__all__ = ["ON_OUTLINE_TOL", "UNIT_TOL"]
+__all__ = ["ON_OUTLINE_TOL"]
 
-#: Floats: a normal is unit when ``|n·n - 1| <= UNIT_TOL``; a contact is on the outline
-#: (at a vertex) when within ``ON_OUTLINE_TOL`` times the outline's size.
-UNIT_TOL = 1e-9
+#: Floats: a contact is on the outline (at a vertex) when within ``ON_OUTLINE_TOL`` times
+#: the outline's size.
 ON_OUTLINE_TOL = 1e-9
 
 Vec = tuple[Any, Any]

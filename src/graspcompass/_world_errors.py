@@ -21,7 +21,11 @@ class CoincidentContactsError(WorldGraspError):
 
 
 class NormalNotUnitError(WorldGraspError):
-    """A given normal is not a unit vector (floats: within 1e-9)."""
+    """A given normal has no direction: the zero vector, or a float one of infinite length.
+
+    (Any other length is scaled to 1, exactly for exact input; the name is kept from
+    when only unit normals were taken.)
+    """
 
 
 class FrictionConeError(WorldGraspError):

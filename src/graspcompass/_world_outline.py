@@ -53,6 +53,10 @@ def _outline(outline: Any, exact: bool) -> _Outline:
     from shapely.geometry import Polygon
     from shapely.geometry.polygon import orient
 
+    if hasattr(outline, "geom_type") and not isinstance(outline, Polygon):
+        raise OutlineError(f"the outline must be one shapely Polygon, got a "
+                           f"{outline.geom_type}" + (" (pick one of its polygons)" if "Multi"
+                                                      in str(outline.geom_type) else ""))
     if isinstance(outline, Polygon):
         if outline.is_empty or not outline.is_valid or outline.area <= 0:
             raise OutlineError("the outline is not a valid polygon with area (shapely "

@@ -16,7 +16,6 @@ from typing import Any
 import sympy as sp
 
 from ._world_arith import (
-    UNIT_TOL,
     Vec,
     _as_kind,
     _c,
@@ -68,7 +67,8 @@ def place_grasp(
     contacts : pair of (x, y)
         The two contact points in the world frame (right-handed).
     normals : pair of (x, y) or None, optional
-        Their inward unit normals (pointing into the object); an entry may be
+        Their inward normals (pointing into the object), of any nonzero length
+        (scaled to 1, exactly for exact input); an entry may be
         None when ``outline`` is given (the outline's edge normal is taken).
     mu, xi : pair, optional
         The friction of each contact as the coefficient μ or the cone half angle
@@ -113,6 +113,9 @@ def place_grasp(
     """
     if at_vertex not in ("refuse", "bisector"):
         raise InputError(f"at_vertex: expected 'refuse' or 'bisector', got {at_vertex!r}")
+    if isinstance(names, (str, bytes)) or not isinstance(names, Sequence) or len(names) != 2:
+        raise InputError(f"names: expected the two contacts' names, a pair such as "
+                         f"('A', 'B'), got {str(names)[:40]!r}")
     na, nb = (str(names[0]), str(names[1]))
     if na == nb:
         raise InputError(f"names: the two contacts need different names, got {na!r} twice")
@@ -171,21 +174,36 @@ def _normals(pts: list[Vec], nrm: list, out: _Outline | None, at_vertex: str,
                                  "outline the contact lies on")
             result.append(edge_n)
             continue
-        n = (_as_kind(n[0], exact), _as_kind(n[1], exact))
-        nn = _dot(n, n)
-        unit = _sign(nn - 1, True) == 0 if exact else abs(nn - 1) <= UNIT_TOL
-        if not unit:
-            raise NormalNotUnitError(
-                f"contact {name} at {_pt(p)}: its normal {_pt(n)} is not a unit vector "
-                f"(length {_fmt(math.sqrt(float(nn)))}); divide it by its length")
-        if not exact:
-            n = _scaled(n, 1 / math.sqrt(nn), False)
+        n = _unit(n, p, name, exact)
         if out is not None and _sign(_dot(n, edge_n), exact) != 1:
             raise NormalOutwardError(
                 f"contact {name} at {_pt(p)}: its normal {_pt(n)} points out of the outline "
                 f"(the outline's inward normal there is {_pt(edge_n)})")
         result.append(n)
     return result
+
+
+def _unit(n: Vec, p: Vec, name: str, exact: bool) -> Vec:
+    """The direction ``n`` as a unit vector: a normal of any nonzero length, scaled exactly.
+
+    A zero normal, or one whose length is not a finite float, is refused
+    (:class:`NormalNotUnitError`).
+    """
+    n = (_as_kind(n[0], exact), _as_kind(n[1], exact))
+    if exact:
+        nn = canon(_dot(n, n))
+        if _sign(nn, True) != 1:
+            raise NormalNotUnitError(f"contact {name} at {_pt(p)}: its normal {_pt(n)} is the "
+                                     "zero vector, which has no direction")
+        if _sign(nn - 1, True) == 0:
+            return n
+        return _scaled(n, 1 / _sqrt(nn, True), True)
+    length = math.hypot(n[0], n[1])
+    if not math.isfinite(length) or length == 0:
+        raise NormalNotUnitError(f"contact {name} at {_pt(p)}: its normal {_pt(n)} "
+                                 f"{'is the zero vector' if length == 0 else 'is not finite'}"
+                                 ", which has no direction")
+    return (n[0] / length, n[1] / length)
 
 
 def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,

@@ -5,18 +5,20 @@ the construction, writes the diagram to ``./graspcompass-out/`` and prints the
 protocol with exact coordinates.
 
 Exit statuses (:data:`EXIT_STATUSES`): 0 done; 1 a check found a problem
-(``verify``, ``crosscheck``); 2 a user error: a bad option or value, an input
-refused, an output that cannot be written, with one line on stderr and never a
-traceback; 3 an internal error (a bug), also one line (``GRASPCOMPASS_DEBUG=1``
-shows the traceback); 130 interrupted.  Every option value is checked before
-any work starts, and every output path before anything is computed: a missing
-folder is refused (only the main job's ``--out`` folder itself is made, and
-it says so).
+(``verify``, ``crosscheck``, ``check``: refuted); 2 a user error: a bad option
+or value, an input refused, an output that cannot be written, with one line on
+stderr and never a traceback; 3 undecided (``check``: a claim neither proved
+nor refuted, or ``--timeout`` reached); 4 an internal error (a bug), also one
+line (``GRASPCOMPASS_DEBUG=1`` shows the traceback); 130 interrupted.  Every
+option value is checked before any work starts, and every output path before
+anything is computed: a missing folder is refused (only the main job's
+``--out`` folder itself is made, and it says so).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import gc
 import json
 import os
@@ -41,7 +43,7 @@ from . import (
 from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
 from ._cli_animate import register as _register_animate
 from ._output import check_folder, check_target, writing
-from .errors import GraspCompassError, OutputError
+from .errors import GraspCompassError, InputError, OutputError
 from .presets import PRESETS
 
 if TYPE_CHECKING:  # the model (sympy, numpy) is loaded by the commands that use it
@@ -53,10 +55,11 @@ __all__ = ["EXIT_STATUSES", "build_parser", "console", "grasp_from_args", "main"
 #: What each exit status of ``graspcompass`` means.
 EXIT_STATUSES = {
     0: "done",
-    1: "a check found a problem (verify, crosscheck)",
+    1: "a check found a problem (verify, crosscheck; check: a claim refuted)",
     2: "a user error: a bad option or value, an input refused, an output that cannot be "
        "written (one line on stderr)",
-    3: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
+    3: "undecided (check: a claim neither proved nor refuted, or --timeout reached)",
+    4: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
        "traceback)",
     130: "interrupted",
 }
@@ -90,10 +93,57 @@ def one_line(text: str, first: bool = True) -> str:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit status 2, no usage block)."""
+    """argparse with one-line errors (exit status 2, no usage block).
+
+    An option that takes a value also takes one that starts with ``-``:
+    ``--p2 -50mm,0``, ``--phi1 -pi/4+pi`` and ``--x1 --`` read as
+    ``--p2=-50mm,0``, ``--phi1=-pi/4+pi`` and ``--x1=--`` (plain argparse
+    reads only negative numbers that way).  A value that is itself one of the
+    command's options (``--output -q``) is left an option.
+    """
 
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {one_line(message, first=False)} (see --help)\n")
+
+    def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
+                         namespace: argparse.Namespace | None = None
+                         ) -> tuple[argparse.Namespace, list[str]]:
+        argv = list(sys.argv[1:] if args is None else args)
+        return super().parse_known_args(self._join_dash_values(argv), namespace)
+
+    def _join_dash_values(self, argv: list[str]) -> list[str]:
+        """``--opt -value`` as ``--opt=-value`` for this parser's one-value options."""
+        takes_value = {s for s, a in self._option_string_actions.items()
+                       if a.nargs is None and s.startswith("--")}
+        nested = any(isinstance(a, argparse._SubParsersAction) for a in self._actions)
+        out: list[str] = []
+        i = 0
+        while i < len(argv):
+            token = argv[i]
+            if token == "--" or (nested and not token.startswith("-")):
+                return out + argv[i:]  # the rest belongs to positionals or a sub-command
+            if token in takes_value and i + 1 < len(argv) and self._dash_value(argv[i + 1]):
+                out.append(f"{token}={argv[i + 1]}")
+                i += 2
+                continue
+            out.append(token)
+            i += 1
+        return out
+
+    def _dash_value(self, token: str) -> bool:
+        """Whether ``token`` is a value starting with ``-`` rather than an option."""
+        if token == "--":
+            return True
+        if not token.startswith("-") or token.startswith("--") or len(token) < 2:
+            return False
+        return token[:2] not in self._option_string_actions
+
+    def _get_values(self, action: argparse.Action, arg_strings: list[str]) -> Any:
+        if action.option_strings and action.nargs is None and arg_strings == ["--"]:
+            value = self._get_value(action, "--")  # argparse would drop it and give a list
+            self._check_value(action, value)
+            return value
+        return super()._get_values(action, arg_strings)  # type: ignore[misc]
 
 
 def _add_grasp_options(p: argparse.ArgumentParser) -> None:
@@ -104,6 +154,24 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
                    help="start from one of the paper's examples (default: fig6)")
     for name in _PARAMS:
         g.add_argument(f"--{name}", metavar="EXPR", help=f"set {name}")
+
+
+#: The commands that take ``--timeout`` (``check`` has its own, ``explore`` is a window).
+TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan", "verify",
+         "crosscheck")
+
+
+def _seconds(text: str) -> float:
+    from ._cli_check import _seconds as check_seconds
+
+    return check_seconds(text)
+
+
+def _add_timeout(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
+                   help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
+                        f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
+                        "the work arbitrarily long)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -129,7 +197,13 @@ def build_parser() -> argparse.ArgumentParser:
                    help="print nothing but errors")
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
-    d = sub.add_parser("draw", help="draw the diagram to a PNG, SVG or PDF file")
+    d = sub.add_parser(
+        "draw", help="draw the diagram to a PNG, SVG or PDF file",
+        description="Draw the internal force diagram (Fig. 6): the friction cones, the "
+                    "construction of V1-V4 (§3.3), the four circles and their outer envelope, "
+                    "with the computer plot of k_grasp over the paper's recipe; or the "
+                    "drawing of a construction file, or the state after one step.",
+        epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(d)
     _cli_file.add_file_options(d)
     d.add_argument("-o", "--output", metavar="FILE",
@@ -143,7 +217,11 @@ def build_parser() -> argparse.ArgumentParser:
                         "the paper's recipe)")
     quiet_option(d)
 
-    s = sub.add_parser("steps", help="print the construction protocol")
+    s = sub.add_parser(
+        "steps", help="print the construction protocol",
+        description="Print the construction protocol of §3.3 (or of a construction file): "
+                    "each step's name, instrument, the paper's reference and its exact value.",
+        epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(s)
     _cli_file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
@@ -169,7 +247,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
 
-    sub.add_parser("presets", help="list the built-in grasps of the paper")
+    sub.add_parser("presets", help="list the built-in grasps of the paper",
+                   description="List the built-in grasps of the paper (Fig. 6, Table I "
+                               "(a)-(c)), for --preset.")
     _register_animate(sub, _add_grasp_options)
     _cli_export.register(sub, _add_grasp_options)
     _cli_worksheet.register(sub, _add_grasp_options)
@@ -202,6 +282,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     x = sub.add_parser(
         "crosscheck", help="closed form vs scipy linprog on random grasps",
+        description="Compare the closed form k_grasp(θ) (eq. (25)) with the least internal "
+                    "force found by scipy's linprog on random grasps and directions "
+                    "(needs scipy: pip install 'graspcompass[crosscheck]').",
         epilog=f"limits: --grasps × --thetas at most {CROSSCHECK_RUNS} linprog problems. "
                "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.")
     x.add_argument("--grasps", type=bounded(int, 1, CROSSCHECK_GRASPS), default=20,
@@ -211,6 +294,8 @@ def build_parser() -> argparse.ArgumentParser:
     x.add_argument("--seed", type=bounded(int, 0, 2**63 - 1), default=0,
                    help="random seed, 0 to 2**63 - 1 (0)")
     quiet_option(x, "no progress bar")
+    for name in TIMED:
+        _add_timeout(sub.choices[name])
     return p
 
 
@@ -311,7 +396,7 @@ def _cmd_draw(args: argparse.Namespace) -> int:
     path = check_target(name)
     made = _cli_file.construction(args, lambda: grasp_from_args(args))
     c = made.construction
-    if args.step is not None and not -len(c) <= args.step < len(c):
+    if args.step is not None and not 0 <= args.step < len(c):
         raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
                          f"steps, 0 to {len(c) - 1}")
     title = None if made.paper else Path(made.shown).name + (
@@ -395,7 +480,9 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     if args.json:
         print(proof.to_json(reports))
     elif not args.markdown or not args.quiet:
-        print(proof.to_table(reports))
+        from ._cli_verify import table
+
+        print(table(reports))
     if args.certify:
         out = sys.stderr if args.json else sys.stdout
         text, ok = _certify_table("certify: the symbolic construction (all admissible grasps)",
@@ -416,6 +503,10 @@ def _cmd_verify(args: argparse.Namespace) -> int:
 
 
 def _cmd_crosscheck(args: argparse.Namespace) -> int:
+    import importlib.util
+
+    if importlib.util.find_spec("scipy") is None:
+        raise InputError("crosscheck needs scipy: pip install 'graspcompass[crosscheck]'")
     from .proof.crosscheck import run_crosscheck
 
     if args.grasps * args.thetas > CROSSCHECK_RUNS:
@@ -442,16 +533,26 @@ def main(argv: Sequence[str] | None = None) -> int:
     their status, and a user error (a :class:`ValueError`, which includes every
     :class:`~graspcompass.errors.GraspCompassError`, or an :class:`OSError`) is
     one line on stderr and status 2.  Anything else is a bug: one line and
-    status 3 (``GRASPCOMPASS_DEBUG=1`` re-raises it, with the traceback).
+    status 4 (``GRASPCOMPASS_DEBUG=1`` re-raises it, with the traceback); status 3
+    is ``check``'s "undecided".
     """
     try:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 2
+    from ._deadline import OutOfTime, deadline
+
+    seconds = getattr(args, "timeout", None) if args.command in TIMED else None
+    alarm = contextlib.nullcontext() if seconds is None else deadline(
+        seconds, lambda: OutOfTime(f"the command took longer than {seconds:g} s (--timeout "
+                                   "S allows more): its input makes too much work"))
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(), alarm:
             warnings.simplefilter("ignore", SyntaxWarning)  # from text the parser refuses
             return _COMMANDS[args.command](args)
+    except OutOfTime as exc:
+        print(f"graspcompass: error: {exc}", file=sys.stderr)
+        return 2
     except BrokenPipeError:  # e.g. piped into head: stop quietly
         _silence_stdout()
         return 0
@@ -468,7 +569,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise
         print(f"graspcompass: internal error: {type(exc).__name__}: {_message(exc)} (a bug; "
               "please report it with the command line)", file=sys.stderr)
-        return 3
+        return 4
 
 
 def console() -> NoReturn:

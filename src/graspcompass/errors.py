@@ -24,6 +24,7 @@ __all__ = [
     "InputError",
     "InputTooLargeError",
     "NonFiniteValueError",
+    "NotTextError",
     "OutputError",
     "SymbolicValueError",
     "WrongTypeError",
@@ -48,6 +49,13 @@ class NonFiniteValueError(InputError):
 
 class WrongTypeError(InputError):
     """A value of a kind that cannot be a number here (``None``, ``True``, a dict, ...)."""
+
+
+class NotTextError(WrongTypeError, TypeError):
+    """Something other than text where text is read (``parse_exact(None)``, bytes).
+
+    Also a :class:`TypeError`, as Python raises for the wrong type of argument.
+    """
 
 
 class InputTooLargeError(InputError):

@@ -40,7 +40,7 @@ import mpmath
 import sympy
 from sympy.core.evalf import evalf as _evalf
 
-from .errors import ComplexValueError, InputError
+from .errors import ComplexValueError, InputError, NotTextError
 from .limits import (  # the limits, stated once
     MAX_ANGLES,
     MAX_ARGUMENT_BITS,
@@ -176,6 +176,9 @@ def _fail(text: str, why: str) -> ExpressionError:
 
 
 def _refuse(text: str, found: str) -> ExpressionError:
+    if found == "tuple":  # a comma between numbers: 0,5 written for 0.5
+        return _fail(text, "a comma is not part of a number: the decimal separator is a point "
+                           "(0.5, not 0,5)")
     return _fail(text, f"{_ALLOWED} (found {found})")
 
 
@@ -456,7 +459,7 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
            inherited: Mapping[str, tuple[Condition, ...]] | None = None,
            out: list[Condition] | None = None) -> sympy.Expr:
     if not isinstance(text, str):
-        raise TypeError(f"expected a str, got {type(text).__name__}")
+        raise NotTextError(f"expected a str, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
         raise _fail(text, f"the text is longer than {MAX_LENGTH} characters")
     body, degrees = _split_unit(text)
@@ -675,7 +678,7 @@ def parse_angles(text: str) -> list[sympy.Expr]:
     [0, pi/4, pi/2, 3*pi/4, pi/6, pi/4]
     """
     if not isinstance(text, str):
-        raise TypeError(f"expected a str, got {type(text).__name__}")
+        raise NotTextError(f"expected a str, got {type(text).__name__}")
     if len(text) > _MAX_LIST_LENGTH:
         raise _fail(text, f"the list is longer than {_MAX_LIST_LENGTH} characters")
     if not text.strip():

@@ -74,11 +74,14 @@ from .errors import (
     WrongTypeError,
 )
 from .expr import ExpressionError, parse_exact, real_sign
+from .limits import MAX_INT_BITS
 
 __all__ = [
     "MAX_ARRAY_SIZE",
     "MAX_SUBSTITUTIONS",
     "angle_values",
+    "exact_denominators",
+    "exact_sign",
     "float_array",
     "float_value",
     "force_value",
@@ -121,10 +124,71 @@ def _complex(name: str, value: object, approx: object = None) -> ComplexValueErr
     return ComplexValueError(f"{name}: expected a real number, got {shown} (complex)")
 
 
+def exact_denominators(value: sp.Expr, name: str) -> sp.Expr:
+    """``value``, refused if one of its denominators is exactly zero in disguise.
+
+    The parser refuses ``1/0``; ``1/(sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6)))`` divides by
+    a number that only the kernel's exact zero test
+    (:func:`graspcompass.geometry.exact.decide_zero`, after denesting the square roots,
+    :func:`sympy.sqrtdenest`) shows to be 0.  Every power with a negative exponent whose
+    base is a number is tested; a base that cannot be decided is refused too (a value the
+    kernel could not divide by safely).
+
+    Raises
+    ------
+    NonFiniteValueError
+        The value divides by an exact zero, or by a number not shown to be nonzero.
+    """
+    if value.is_Atom or value.free_symbols:
+        return value
+    from .geometry.exact import canon, decide_zero, has_float
+
+    for node in sp.preorder_traversal(value):
+        if not (node.is_Pow and node.exp.is_negative) or node.base.is_Atom \
+                or has_float(node.base):
+            continue
+        zero = decide_zero(node.base)
+        if zero is None:
+            zero = decide_zero(canon(sp.sqrtdenest(node.base)))
+        if zero is not False:
+            what = "which is exactly 0" if zero else "which cannot be shown to be nonzero"
+            raise NonFiniteValueError(f"{name}: the value divides by {_shown(node.base)}, "
+                                      f"{what}")
+    return value
+
+
+def exact_sign(value: sp.Expr) -> int | None:
+    """The sign of a number, by the kernel's :func:`~graspcompass.geometry.exact.decide_sign`.
+
+    Its square roots are denested when that does not settle it: a zero in disguise such as
+    ``sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6))`` is 0, not the sign of rounding noise.
+    """
+    from .geometry.exact import canon, decide_sign
+
+    sign = decide_sign(value)
+    if sign is None or (sign != 0 and real_sign(value) is None):
+        denested = decide_sign(canon(sp.sqrtdenest(value)))
+        sign = denested if denested is not None else sign
+    return sign
+
+
+def _int_bits(name: str, *ints: int) -> None:
+    """Refuse integers of more than :data:`~graspcompass.limits.MAX_INT_BITS` bits."""
+    for i in ints:
+        if i.bit_length() > MAX_INT_BITS:
+            raise InputTooLargeError(f"{name}: a number of {i.bit_length()} bits; at most "
+                                     f"{MAX_INT_BITS} bits (about {MAX_INT_BITS * 3 // 10} "
+                                     "decimal digits) are allowed")
+
+
 def _sympy_value(value: sp.Basic, name: str, shown: object) -> sp.Expr:
-    """Check a sympy object: an expression, finite, not complex."""
-    if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase):
+    """Check a sympy object: an expression, finite, not complex, of bounded size."""
+    if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase) or value.has(
+            sp.AccumBounds):
         raise WrongTypeError(f"{name}: expected a number, got {_kind(value)} {_shown(shown)}")
+    for atom in value.atoms(sp.Rational):
+        _int_bits(name, int(atom.p), int(atom.q))
+    exact_denominators(value, name)
     if value.has(*_NOT_FINITE):
         raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(shown)}")
     real = value.is_extended_real
@@ -184,7 +248,7 @@ def real_value(value: Any, name: str) -> sp.Expr:
     """
     if isinstance(value, str):
         try:
-            return parse_exact(value)
+            return exact_denominators(parse_exact(value), name)
         except ExpressionError as exc:
             raise _renamed(exc, name) from None
     if isinstance(value, (bool, np.bool_)) or value is None:
@@ -192,14 +256,21 @@ def real_value(value: Any, name: str) -> sp.Expr:
     if isinstance(value, sp.Basic):
         return _sympy_value(value, name, value)
     if isinstance(value, (numbers.Integral, np.integer)):
+        _int_bits(name, int(value))
         return sp.Integer(int(value))
     if isinstance(value, (Fraction, numbers.Rational)):
+        _int_bits(name, int(value.numerator), int(value.denominator))
         return sp.Rational(int(value.numerator), int(value.denominator))
     if isinstance(value, (float, np.floating)):
         return sp.Float(float_value(value, name))
     if isinstance(value, Decimal):
         if not value.is_finite():
             raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(value)}")
+        digits, exponent = value.as_tuple()[1:]
+        if (len(digits) + abs(int(exponent))) * 3.33 > MAX_INT_BITS:  # before 10**exponent
+            raise InputTooLargeError(f"{name}: the Decimal {_shown(value)} has more than "
+                                     f"{MAX_INT_BITS} bits; at most {MAX_INT_BITS} bits "
+                                     f"(about {MAX_INT_BITS * 3 // 10} decimal digits)")
         exact = Fraction(value)
         return sp.Rational(exact.numerator, exact.denominator)
     if isinstance(value, (complex, np.complexfloating)):
@@ -236,10 +307,26 @@ def float_value(value: Any, name: str) -> float:
     """
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (float, np.floating)):
         raise WrongTypeError(f"{name}: expected a float, got {_kind(value)} {_shown(value)}")
-    out = float(value)
+    with np.errstate(over="ignore", invalid="ignore"):  # a long double beyond a double: inf
+        out = float(value)
     if not math.isfinite(out):
         raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(out)}")
     return out
+
+
+def _nested_size(value: list | tuple) -> int:
+    """The entries a nested list would have, from the lengths of its first elements."""
+    size, item = 1, value
+    for _ in range(32):
+        if not isinstance(item, (list, tuple)):
+            break
+        size *= len(item)
+        if not item:
+            break
+        item = item[0]
+    if isinstance(item, np.ndarray):
+        size *= item.size
+    return size
 
 
 def float_array(value: Any, name: str) -> np.ndarray:
@@ -279,8 +366,9 @@ def float_array(value: Any, name: str) -> np.ndarray:
     ...     print(err)
     theta: expected finite numbers, got theta[1] = nan
     """
-    if isinstance(value, (list, tuple)) and len(value) > MAX_ARRAY_SIZE:
-        raise InputTooLargeError(f"{name}: more than {MAX_ARRAY_SIZE} values ({len(value)})")
+    if isinstance(value, (list, tuple)) and _nested_size(value) > MAX_ARRAY_SIZE:
+        raise InputTooLargeError(f"{name}: more than {MAX_ARRAY_SIZE} values (a list of "
+                                 f"about {_nested_size(value)}), refused before it is copied")
     if not isinstance(value, np.ndarray):
         if not isinstance(value, (list, tuple)):
             raise WrongTypeError(f"{name}: expected an array of floats, got {_kind(value)}")
@@ -372,7 +460,10 @@ def force_value(value: Any, name: str = "external_force") -> sp.Expr | float:
         negative = out < 0  # type: ignore[operator]
     else:
         out = real_value(value, name)
-        negative = not out.free_symbols and real_sign(out) == -1  # type: ignore[union-attr]
+        sign = None if out.free_symbols else exact_sign(out)  # type: ignore[union-attr]
+        negative = sign == -1
+        if sign == 0:
+            out = sp.Integer(0)
     if negative:
         raise InputError(f"{name}: a magnitude cannot be negative, got {_shown(value)}")
     return out

@@ -76,11 +76,24 @@ def numeric_objects(construction: Any) -> dict[str, Any]:
         try:
             out[s.name] = evaluate(s.obj)
         except (ValueError, TypeError) as exc:
+            if not _symbolic(s.obj):
+                raise ValueError(
+                    f"cannot draw {s.name!r}: a value of it is beyond double precision "
+                    "(1.8e308): give the construction's values in other units") from None
             raise ValueError(
                 f"cannot draw {s.name!r}: the construction is symbolic ({exc}); substitute "
                 "numbers for the symbols first (Grasp.subs)"
             ) from exc
     return out
+
+
+def _symbolic(obj: Any, depth: int = 0) -> bool:
+    """Whether a construction object (a point, line, circle, number) holds a symbol."""
+    if hasattr(obj, "free_symbols"):
+        return bool(obj.free_symbols)
+    if depth > 3 or not hasattr(obj, "__dict__"):
+        return False
+    return any(_symbolic(v, depth + 1) for v in vars(obj).values())
 
 
 def shape_extent(shape: Any) -> Box | None:

@@ -14,9 +14,9 @@ Examples
 
 from __future__ import annotations
 
-__all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "MAX_ARGUMENT_BITS", "MAX_BITS",
-           "MAX_DEPTH", "MAX_EXPONENT", "MAX_LENGTH", "MAX_LIST_LENGTH", "MAX_NODES",
-           "MAX_WORK_BITS"]
+__all__ = ["COMMAND_SECONDS", "EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES",
+           "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT", "MAX_INT_BITS",
+           "MAX_LENGTH", "MAX_LIST_LENGTH", "MAX_NODES", "MAX_WORK_BITS"]
 
 #: Longest text :func:`~graspcompass.expr.parse_exact` reads.
 MAX_LENGTH = 200
@@ -46,3 +46,10 @@ MAX_LIST_LENGTH = 10 * MAX_LENGTH
 EXACT_ANGLES = 1000
 #: ``graspcompass k --exact``: most angles given exact values.
 EXACT_VALUES = 72
+#: Default ``--timeout`` (seconds) of every command that replays a construction or checks
+#: (``check`` has its own, 600 s): the time budget of one command line, known before the
+#: work starts, whatever its files and values make it do.
+COMMAND_SECONDS = 120.0
+#: Most bits of a Python ``int`` (or the numerator and denominator of a Fraction or an
+#: exact Decimal) taken as a value: as :data:`MAX_BITS`, which text is held to.
+MAX_INT_BITS = MAX_BITS

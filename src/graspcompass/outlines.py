@@ -6,8 +6,8 @@ specification) or a DXF file (``ezdxf``: closed ``LWPOLYLINE``/``POLYLINE``
 with bulges, ``CIRCLE``, ``ELLIPSE``, closed ``SPLINE``), flattens its curves to
 chords, and returns a :class:`shapely.Polygon` in metres in a right-handed
 frame with y up, ready for :func:`graspcompass.place_grasp` (``outline=``) and
-``graspcompass size --shape FILE``.  Both libraries are the optional extra
-``graspcompass[outlines]``.
+``graspcompass size --shape FILE``.  Both libraries come with the main install
+(``pip install graspcompass``; the extra ``graspcompass[outlines]`` names them too).
 
 Frames and units
     SVG's y-axis points down: y is negated, so the part is seen as drawn.  SVG
@@ -52,7 +52,15 @@ from pathlib import Path
 from typing import Any
 
 from ._infiles import read_bounded
-from .errors import InputError, InputTooLargeError
+from ._outline_checks import (
+    MAX_VERTICES,
+    check_coordinates,
+    check_extent,
+    check_use_expansion,
+    chord_budget,
+    svg_utf8,
+)
+from .errors import GraspCompassError, InputError, InputTooLargeError, WrongTypeError
 from .world import OutlineError
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_OUTLINE_BYTES", "MissingExtraError", "read_outline"]
@@ -63,12 +71,14 @@ MAX_OUTLINE_BYTES = 5_000_000
 DEFAULT_TOLERANCE = 1e-4
 _METRES = {"m": 1.0, "cm": 0.01, "mm": 0.001, "um": 1e-6, "in": 0.0254, "ft": 0.3048}
 _UNIT = re.compile(r"\s*([0-9]*\.?[0-9]+(?:[eE][-+]?\d+)?)\s*(m|cm|mm|um|in|ft)\s*")
-#: Most vertices of a flattened outline.
-MAX_VERTICES = 200_000
 
 
 class MissingExtraError(InputError):
-    """Reading SVG or DXF needs the optional extra ``graspcompass[outlines]``."""
+    """Reading SVG or DXF needs svgelements or ezdxf, which the main install brings.
+
+    (Raised where they were removed: ``pip install 'graspcompass[outlines]'`` brings them
+    back.)
+    """
 
 
 def _unit_length(unit: str | None, default: float) -> float:
@@ -110,26 +120,41 @@ def _polygon(rings: list[tuple[str, list[tuple[float, float]]]], where: str,
 
 
 # -- SVG ------------------------------------------------------------------------------------
-def _svg_rings(data: bytes, tolerance: float) -> list[tuple[str, list[tuple[float, float]]]]:
+def _svg_rings(data: bytes, tolerance: float, where: str
+               ) -> list[tuple[str, list[tuple[float, float]]]]:
     try:
         from svgelements import SVG, Close, Line, Move, Path, Shape
     except ImportError:
         raise MissingExtraError("reading SVG needs the optional extra graspcompass[outlines] "
                                 "(pip install 'graspcompass[outlines]')") from None
-    head = data[:4096].lower()
-    if b"<!entity" in data.lower() or (b"<!doctype" in head and b"[" in head):
-        raise InputError("the SVG declares entities (a DOCTYPE with an internal subset): "
-                         "refused")
+    check_use_expansion(data, where)  # data: svg_utf8's, without a DTD
     try:
         svg = SVG.parse(io.BytesIO(data))
         shapes = [e for e in svg.elements() if isinstance(e, Shape)]
     except Exception as exc:  # a malformed file: svgelements raises many kinds
         raise InputError(f"not a readable SVG file: {type(exc).__name__}: "
                          f"{str(exc)[:120]}") from None
+    try:
+        return _svg_shape_rings(shapes, tolerance, where, Close, Line, Move, Path)
+    except (GraspCompassError, MemoryError):
+        raise
+    except Exception as exc:  # svgelements on degenerate shapes (a zero scale, ...)
+        raise InputError(f"{where}: cannot read the SVG's shapes: {type(exc).__name__}: "
+                         f"{str(exc)[:120]}") from None
+
+
+def _svg_shape_rings(shapes: list, tolerance: float, where: str, Close: Any, Line: Any,
+                     Move: Any, Path: Any) -> list[tuple[str, list[tuple[float, float]]]]:
     boxes = [Path(s).bbox() for s in shapes]
     boxes = [b for b in boxes if b is not None]
+    check_coordinates([v for b in boxes for v in b], where)
     size = max((max(b[2] - b[0], b[3] - b[1]) for b in boxes), default=1.0) or 1.0
     step = max(tolerance * size, 1e-12)
+    budget = chord_budget(where)
+    for shape in shapes:  # every segment's chords counted before any point is made
+        for seg in Path(shape).segments():
+            if not isinstance(seg, (Move, Close)):
+                budget.take(1 if isinstance(seg, Line) else _chords(seg, step))
     rings = []
     for k, shape in enumerate(shapes):
         name = str(shape.id) if getattr(shape, "id", None) else f"shape {k + 1}"
@@ -146,14 +171,19 @@ def _svg_rings(data: bytes, tolerance: float) -> list[tuple[str, list[tuple[floa
                 break
             elif isinstance(seg, Line):
                 pts.append((float(seg.end.x), float(seg.end.y)))
-            else:  # a curve: chords of sagitta <= step (a radius of at least length/2π,
-                # the tightest arc of that length: chord c with c²/(8R) <= step)
-                length = float(seg.length(error=1e-6))
-                chord = math.sqrt(4 * step * max(length, step) / math.pi)
-                n = max(2, min(10_000, math.ceil(length / chord) + 1))
+            else:
+                n = _chords(seg, step)
                 pts += [(float(p.x), float(p.y)) for p in
                         (seg.point(i / n) for i in range(1, n + 1))]
     return rings
+
+
+def _chords(seg: Any, step: float) -> int:
+    """Chords of sagitta <= step for a curve (a radius of at least length/2π, the tightest
+    arc of that length: chord c with c²/(8R) <= step)."""
+    length = float(seg.length(error=1e-6))
+    chord = math.sqrt(4 * step * max(length, step) / math.pi)
+    return max(2, min(10_000, math.ceil(length / chord) + 1))
 
 
 _WIDTH = re.compile(rb"<svg\b[^>]*?\bwidth\s*=\s*[\"']\s*[0-9.eE+-]+\s*(mm|cm|m)?\s*[\"']",
@@ -166,14 +196,14 @@ def _svg_px(data: bytes) -> float:
     other with its inch, so that either reads exactly."""
     from svgelements import Length
 
-    m = _WIDTH.search(data[:65536])
+    m = _WIDTH.search(data[:65536])  # data: svg_utf8's, so UTF-16 reads the same
     if m is not None and m.group(1) is not None:
         return 0.001 / float(Length("1mm").value(ppi=96))
     return 0.0254 / 96
 
 
 # -- DXF ------------------------------------------------------------------------------------
-def _dxf_rings(data: bytes, tolerance: float
+def _dxf_rings(data: bytes, tolerance: float, where: str
                ) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
     try:
         import ezdxf
@@ -182,12 +212,39 @@ def _dxf_rings(data: bytes, tolerance: float
     except ImportError:
         raise MissingExtraError("reading DXF needs the optional extra graspcompass[outlines] "
                                 "(pip install 'graspcompass[outlines]')") from None
+    import logging
+    import warnings
+
+    log = logging.getLogger("ezdxf")
+    level, log_propagates = log.level, log.propagate
+    log.setLevel(logging.CRITICAL + 1)  # its warnings would be more lines on stderr
+    log.propagate = False
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return _dxf_read(data, tolerance, where, ezdxf, dxfpath, recover)
+    except (GraspCompassError, MemoryError):
+        raise
+    except Exception as exc:  # ezdxf on degenerate entities
+        raise InputError(f"{where}: cannot read the DXF's entities: {type(exc).__name__}: "
+                         f"{str(exc)[:120]}") from None
+    finally:
+        log.setLevel(level)
+        log.propagate = log_propagates
+
+
+def _dxf_read(data: bytes, tolerance: float, where: str, ezdxf: Any, dxfpath: Any,
+              recover: Any) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
     try:
         doc, _ = recover.read(io.BytesIO(data))
     except Exception as exc:  # ezdxf raises DXFStructureError and others
         raise InputError(f"not a readable DXF file: {type(exc).__name__}: "
                          f"{str(exc)[:120]}") from None
-    insunits = int(doc.header.get("$INSUNITS", 0) or 0)
+    try:
+        insunits = int(doc.header.get("$INSUNITS", 0) or 0)
+    except (TypeError, ValueError):
+        raise InputError(f"{where}: $INSUNITS {doc.header.get('$INSUNITS')!r} is not a unit "
+                         "code") from None
     entities = []
     for e in doc.modelspace():
         kind = e.dxftype()
@@ -204,13 +261,18 @@ def _dxf_rings(data: bytes, tolerance: float
             continue
     size = 1.0
     boxes = [p.control_vertices() for _, p in paths]
+    check_coordinates([c for b in boxes for v in b for c in (v.x, v.y)], where)
     if any(boxes):
         xs = [v.x for b in boxes for v in b]
         ys = [v.y for b in boxes for v in b]
         size = max(max(xs) - min(xs), max(ys) - min(ys)) or 1.0
     rings = []
+    budget = chord_budget(where)
     for handle, p in paths:
-        pts = [(float(v.x), float(v.y)) for v in p.flattening(max(tolerance * size, 1e-12))]
+        pts = []
+        for v in p.flattening(max(tolerance * size, 1e-12)):  # counted as they are made
+            budget.take(1)
+            pts.append((float(v.x), float(v.y)))
         if len(pts) > 1 and pts[0] == pts[-1]:
             pts.pop()
         if len(pts) > 2:
@@ -251,7 +313,11 @@ def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
         :class:`~graspcompass.errors.InputTooLargeError` for a file or an outline
         beyond the limits.
     """
-    if not (isinstance(tolerance, (int, float)) and 1e-9 <= tolerance <= 0.1):
+    if not isinstance(path, (str, os.PathLike)):
+        raise WrongTypeError(f"path: expected a file name (str or pathlib.Path), got "
+                             f"{type(path).__name__}")
+    if isinstance(tolerance, bool) or not (isinstance(tolerance, (int, float))
+                                           and 1e-9 <= tolerance <= 0.1):
         raise InputError(f"tolerance {tolerance!r} must be a number from 1e-9 to 0.1")
     suffix = Path(path).suffix.lower()
     if suffix not in (".svg", ".dxf"):
@@ -259,18 +325,34 @@ def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
     data = read_bounded(path, MAX_OUTLINE_BYTES)
     where = str(path)
     if suffix == ".svg":
-        rings = _svg_rings(data, tolerance)
+        data = svg_utf8(data)
+        rings = _svg_rings(data, tolerance, where)
         scale = _unit_length(unit, _svg_px(data))
         poly = _polygon(rings, where, element)
     else:
-        rings, insunits = _dxf_rings(data, tolerance)
+        rings, insunits = _dxf_rings(data, tolerance, where)
         from ezdxf import units as dxfunits
 
         if insunits:
-            scale = dxfunits.conversion_factor(insunits, dxfunits.M)
+            scale = _dxf_scale(insunits, where, dxfunits)
         else:
             scale = _unit_length(unit, 0.001)
         poly = _polygon(rings, where, element)
     from shapely import affinity
 
+    x0, y0, x1, y1 = poly.bounds
+    check_extent(max(x1 - x0, y1 - y0) * scale, where)  # nor infinite nor zero area
     return affinity.scale(poly, xfact=scale, yfact=scale, origin=(0, 0))
+
+
+def _dxf_scale(insunits: int, where: str, dxfunits: Any) -> float:
+    """Metres per unit of the DXF's ``$INSUNITS`` code (1 to 24), or InputError."""
+    try:
+        scale = float(dxfunits.conversion_factor(insunits, dxfunits.M)) if 0 < insunits <= 24 \
+            else math.nan
+    except (TypeError, ValueError, IndexError, KeyError):
+        scale = math.nan
+    if not (math.isfinite(scale) and scale > 0):
+        raise InputError(f"{where}: $INSUNITS {insunits} is not a length unit this reader "
+                         "knows (1 to 24, see the DXF reference): give unit=, --shape-unit")
+    return scale

@@ -78,14 +78,17 @@ array([2.        , 2.83333333])
 from __future__ import annotations
 
 import math
+import numbers
+from decimal import Decimal
 from typing import Any
 
 import numpy as np
 
-from ..errors import ComplexValueError, InputError, WrongTypeError
+from ..errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
 from . import _envelope
 
 __all__ = [
+    "MAX_ARRAY_SIZE",
     "PARAMETERS",
     "InvalidGraspsError",
     "closed_form",
@@ -203,7 +206,7 @@ def _sincos(xp: Any, x: Any) -> tuple[Any, Any]:
         return _sincos_numpy(np.asarray(x), s_tab, c_tab)
     shape = x.shape
     flat = xp.reshape(x, (-1,))
-    with np.errstate(invalid="ignore"):  # nan -> an arbitrary index; d stays nan
+    with np.errstate(all="ignore"):  # nan -> an arbitrary index; d stays nan
         j = xp.round(flat * _envelope._INV_H)
         i = _astype(xp, j, xp.int64) & (_envelope.M - 1)
     d = (flat - j * _envelope._H_HI) - j * _envelope._H_LO
@@ -222,7 +225,7 @@ def _sincos_numpy(x: np.ndarray, s_tab: np.ndarray, c_tab: np.ndarray
     shape, x = x.shape, x.reshape(-1)
     j = np.multiply(x, _envelope._INV_H)
     np.rint(j, out=j)  # = round half to even, as xp.round
-    with np.errstate(invalid="ignore"):
+    with np.errstate(all="ignore"):
         i = j.astype(np.int64)
     np.bitwise_and(i, _envelope.M - 1, out=i)
     d = np.multiply(j, _envelope._H_HI)
@@ -261,7 +264,7 @@ def _core(xp: Any, p: list) -> tuple[list, list, Any]:
     n2, d2, n4, d4 = _sides(xp, phi2, mu2)
     D = x1 + x2
     h = D * 0.5
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with np.errstate(all="ignore"):
         t1, t2, t3, t4 = n1 / d1, n2 / d2, n3 / d3, n4 / d4
         S = [y * t1 - h, h - y * t2, y * t3 - h, h - y * t4]
         C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
@@ -330,10 +333,86 @@ def _refuse(xp: Any, p: list, ok: Any) -> None:
         "select the valid ones with graspcompass.batch.valid", index, count, reason)
 
 
+#: Most entries of a list argument, and of a broadcast the arguments do not hold already
+#: (as :data:`graspcompass.inputs.MAX_ARRAY_SIZE`).
+MAX_ARRAY_SIZE = 10_000_000
+
+
+def _nested_size(value: list | tuple) -> int:
+    """The entries a nested list would have, from the lengths of its first elements."""
+    size, item = 1, value
+    for _ in range(32):
+        if not isinstance(item, (list, tuple)):
+            break
+        size *= len(item)
+        if not item:
+            break
+        item = item[0]
+    return size
+
+
+def _outside(v: Any, name: str) -> Any:
+    """One argument through the input boundary: numbers, lists of them, or arrays.
+
+    Python numbers that are not floats (``Fraction``, ``Decimal``, sympy numbers) become
+    floats through :func:`graspcompass.inputs.real_value` (bounded, real); text, ``None``
+    and other objects are refused with a named error; a list is sized before it is copied
+    and must not be ragged.  ``nan`` and infinities stay: they are invalid grasps.
+    """
+    if isinstance(v, (bool, np.bool_)):
+        raise WrongTypeError(f"{name}: expected numbers, got a bool")
+    if isinstance(v, (complex, np.complexfloating)):
+        raise ComplexValueError(f"{name}: expected real numbers, got {v!r}")
+    if isinstance(v, (int, float, np.number)):
+        return v
+    if isinstance(v, (list, tuple)):
+        n = _nested_size(v)
+        if n > MAX_ARRAY_SIZE:
+            raise InputTooLargeError(f"{name}: a list of about {n} values; at most "
+                                     f"{MAX_ARRAY_SIZE} (give an array)")
+        try:
+            return np.asarray(v)
+        except (ValueError, TypeError, OverflowError):
+            raise WrongTypeError(f"{name}: expected numbers, got a ragged or mixed list") \
+                from None
+    if isinstance(v, (str, bytes, dict, set, type(None))):
+        raise WrongTypeError(f"{name}: expected numbers or an array, got "
+                             f"{type(v).__name__} {str(v)[:40]!r}")
+    if isinstance(v, (numbers.Real, Decimal)) or type(v).__module__.startswith("sympy"):
+        from ..inputs import real_value  # loads sympy: only for such values
+
+        exact = real_value(v, name)
+        if getattr(exact, "free_symbols", None):
+            raise WrongTypeError(f"{name}: expected numbers, got the expression {exact}")
+        return float(exact)
+    if not hasattr(v, "shape") or not hasattr(v, "dtype"):
+        raise WrongTypeError(f"{name}: expected numbers or an array, got {type(v).__name__}")
+    return v
+
+
 def _prepare(values: tuple, extra: tuple = (), extra_names: tuple = ()) -> tuple:
-    xp = _namespace(*values, *extra)
-    arrs = _floats(xp, values + extra, PARAMETERS + extra_names)
-    return xp, arrs[:7], arrs[7:]
+    names = PARAMETERS + extra_names
+    values = tuple(_outside(v, n) for v, n in zip(values + extra, names))
+    try:
+        xp = _namespace(*values)
+    except TypeError as exc:
+        raise WrongTypeError(f"the arguments mix array libraries or are not arrays: "
+                             f"{str(exc)[:120]}") from None
+    arrs = _floats(xp, values, names)
+    shapes = [tuple(a.shape) for a in arrs]
+    try:
+        shape = np.broadcast_shapes(*shapes)
+    except (ValueError, TypeError):  # dask's unknown sizes are None: not checked here
+        if any(None in s or any(isinstance(d, float) for d in s) for s in shapes):
+            return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
+        raise InputError("the arguments do not broadcast together: shapes "
+                         + ", ".join(f"{n} {s}" for n, s in zip(names, shapes))) from None
+    size, largest = math.prod(shape), max((math.prod(s) for s in shapes), default=1)
+    if size > MAX_ARRAY_SIZE and size > largest and not _is(xp, "dask"):
+        raise InputTooLargeError(
+            f"the arguments broadcast to shape {shape}, {size} grasps, from arrays of at most "
+            f"{largest}: beyond {MAX_ARRAY_SIZE} the caller makes the full-size arrays")
+    return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
 
 
 def _check_mode(on_invalid: str) -> None:
@@ -358,6 +437,21 @@ def _blocks(xp: Any, arrays: list) -> list[list] | None:
 
 
 # -- the public functions --------------------------------------------------------------------
+def _quiet(fn: Any) -> Any:
+    """Run ``fn`` without numpy's floating-point warnings: a nan or an infinity given is an
+    invalid grasp (or, for θ, gives nan), said by the result or by InvalidGraspsError,
+    never by a RuntimeWarning on stderr."""
+    import functools
+
+    @functools.wraps(fn)
+    def quiet(*args: Any, **kwargs: Any) -> Any:
+        with np.errstate(all="ignore"):
+            return fn(*args, **kwargs)
+
+    return quiet
+
+
+@_quiet
 def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
           margin: float = 0.0) -> Any:
     """Which grasps lie in the domain of the method: condition (1) and the ranges.
@@ -397,6 +491,7 @@ def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
     return xp.broadcast_to(ok, np.broadcast_shapes(*(tuple(a.shape) for a in p)))
 
 
+@_quiet
 def closed_form(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
                 on_invalid: str = "raise") -> tuple[Any, Any]:
     """``S_n`` and ``C_n`` of eqs. (28)-(39), ``V_n = (S_n, C_n)`` (30), (33), of many grasps.
@@ -437,6 +532,7 @@ def closed_form(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: A
     return S, C
 
 
+@_quiet
 def k(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
       on_invalid: str = "raise") -> Any:
     """The lower limits ``k_n(θ) = S_n sin θ − C_n cos θ`` (eqs. (27), (32)) of many grasps.
@@ -474,6 +570,7 @@ def _k_grasp(xp: Any, theta: Any, p: list, on_invalid: str) -> tuple[Any, Any, l
     return _nan_where(xp, ok, kg), ok, p
 
 
+@_quiet
 def k_grasp(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
             on_invalid: str = "raise") -> Any:
     """The least internal-force parameter ``max(k_1, k_2, k_3, k_4, 0)`` (eq. (25)).
@@ -494,6 +591,7 @@ def k_grasp(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any
     return _k_grasp(xp, t, p, on_invalid)[0]
 
 
+@_quiet
 def internal_force(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any,
                    mu2: Any, external_force: Any = 1.0, *, on_invalid: str = "raise") -> Any:
     """The least internal force ``F_int = k_grasp(θ)/(x1 + x2) · F_e`` (eq. (17)).
@@ -513,6 +611,7 @@ def internal_force(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, m
     return kg / (p[0] + p[1]) * fe
 
 
+@_quiet
 def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any,
                   mass: Any, *, g: Any = 9.80665, accel: Any = 0.0, safety: Any = 1.0,
                   per: str = "jaw", on_invalid: str = "raise") -> Any:
@@ -568,7 +667,7 @@ def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
 def _squeeze(xp: Any, p: list, m: Any, g: Any, a: Any, sf: Any, factor: float
              ) -> tuple[Any, Any]:
     S, C, ok = _core(xp, p)
-    with np.errstate(over="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):
         r2 = None
         for Sn, Cn in zip(S, C):
             v = Sn * Sn + Cn * Cn

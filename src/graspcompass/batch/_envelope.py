@@ -210,7 +210,7 @@ class EnvelopeTable:
     def _small(self, t: np.ndarray) -> np.ndarray:
         """k_grasp at a few angles (those the fast loop left as nan), with temporaries."""
         out = np.full(t.shape, np.nan)
-        with np.errstate(invalid="ignore"):
+        with np.errstate(all="ignore"):
             ok = np.abs(t) <= THETA_MAX  # nan: False
         hi, lo = _reduce(t[ok])
         i, d = self._index(hi)
@@ -220,7 +220,7 @@ class EnvelopeTable:
         out[ok] = a + d * (b + d * (a * -0.5 + d * (b * (-1.0 / 6.0))))
         bad = np.flatnonzero(np.isnan(out))  # break points, |θ| > THETA_MAX, nan, inf
         if bad.size:
-            with np.errstate(invalid="ignore"):
+            with np.errstate(all="ignore"):
                 out[bad] = direct_k_grasp(self.S, self.C, t[bad])
         return out
 
@@ -228,7 +228,7 @@ class EnvelopeTable:
         """k_grasp (eq. (25)) at the angles ``t``, a float64 array; nan and ±inf give nan."""
         flat = np.ascontiguousarray(t, dtype=float).reshape(-1)
         out = np.empty(flat.shape)
-        with np.errstate(invalid="ignore"):  # inf − inf for θ = ±inf (then the direct path)
+        with np.errstate(all="ignore"):  # inf − inf for θ = ±inf (then the direct path)
             self._loop(flat, out, max(1, min(CHUNK, flat.size)))
         return out.reshape(np.shape(t))
 

@@ -316,7 +316,7 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     ------
     EnvelopeError
         If an exact ``Bnm`` is not at the break angle computed from the V_n (a
-        construction that does not match its own V_n).
+        construction that does not match its own V_n), or a V_n is missing.
 
     Examples
     --------
@@ -333,6 +333,11 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     >>> round(sum(float(a.theta_end - a.theta_start) for a in env.arcs) / math.pi, 12)
     2.0
     """
+    missing = [f"V{n}" for n in (1, 2, 3, 4) if not isinstance(objects.get(f"V{n}"), Point)]
+    if missing:
+        raise EnvelopeError(f"the envelope is drawn from the four points V1..V4 (eq. (25)): "
+                            f"{', '.join(missing)} missing (a step with role V n, or named "
+                            "so, for each of them)")
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
     numeric = any(has_float(c) for v in V for c in (v.x, v.y))
     for dps in _PRECISIONS:  # exact V_n of very different sizes need more digits

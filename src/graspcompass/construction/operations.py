@@ -154,6 +154,37 @@ def _line_circle(line: Line, circle: Circle, branch: sp.Expr) -> Point:
                    f"the line {line} and the circle {circle}", line, circle)
 
 
+def _second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
+    """:func:`graspcompass.geometry.second_intersection`, once ``known`` is on both circles.
+
+    The kernel's mirror image of ``known`` in the line of centres is the second common
+    point only when ``known`` is a common point: a point on neither circle would give a
+    point on neither.  A point shown to be off a circle (exactly; floats to 1e-12 of the
+    circle's size) is refused with :class:`~graspcompass.geometry.NoIntersectionError`;
+    one with symbols is taken (the certifier of ``check`` decides it for all parameters).
+    """
+    from ..geometry.exact import Frac, NotAFraction, canon, decide_zero, has_float
+
+    for c in (c1, c2):
+        values = (known.x, known.y, c.center.x, c.center.y, c.radius2)
+        if any(v.free_symbols for v in values):
+            continue
+        try:
+            kx, ky, cx, cy, r2 = (Frac.of(v) for v in values)
+            if (((kx - cx) * (kx - cx) + (ky - cy) * (ky - cy)) - r2).is_zero():
+                continue
+        except NotAFraction:
+            pass
+        power = canon((known.x - c.center.x) ** 2 + (known.y - c.center.y) ** 2 - c.radius2)
+        scale = 0.0
+        if has_float(power):
+            scale = abs(float(c.radius2)) + float(c.center.x) ** 2 + float(c.center.y) ** 2
+        if decide_zero(power, scale) is False:
+            raise NoIntersectionError(f"{known} is not on the circle {c}: second_intersection "
+                                      "needs a common point of the two circles")
+    return geo.second_intersection(c1, c2, known)
+
+
 def _circles(c1: Circle, c2: Circle, branch: sp.Expr) -> Point:
     return _branch(geo.intersect_circles(c1, c2), branch,
                    f"the circles {c1} and {c2}", c1, c2)
@@ -209,7 +240,7 @@ _ALL = (
     _op("intersect_circles", _circles, "mark", "circle circle", "branch", "point",
         "{name}: where {0} crosses {1} (branch {p0})", None, "point",
         "A common point of two circles; branch 0 lies left of the line of centres."),
-    _op("second_intersection", geo.second_intersection, "mark", "circle circle point", "",
+    _op("second_intersection", _second_intersection, "mark", "circle circle point", "",
         "point", "{name}: the second common point of {0} and {1} (besides {2})",
         "Mirror[{2}, Line[Center[{0}], Center[{1}]]]", "point",
         "The other common point of two circles through a known one (break points, §3.3)."),

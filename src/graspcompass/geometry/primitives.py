@@ -24,10 +24,21 @@ Conditions = frozenset  # frozenset[sympy.Expr]: each expression is assumed != 0
 
 
 def _outside(value: object, name: str) -> object:
-    """Text and floats from a caller go through the input boundary (safe parse, finite)."""
-    if isinstance(value, (str, float)):
-        return real_value(value, name)
-    return value
+    """A coordinate from a caller goes through the input boundary (:func:`real_value`).
+
+    Everything that is not a sympy expression (text, floats, ints, ``None``, bools,
+    bytes, complex numbers, Fractions, Decimals, numpy scalars) is checked there, and so
+    is a sympy atom that is no real number (``I``, ``oo``, ``zoo``, ``nan``): named errors,
+    never a TypeError from sympify.  Other sympy values are the kernel's own results
+    (code, which is trusted; its rationals may exceed the bounds of outside integers) and
+    pass as they are: the kernel makes millions of points.
+    """
+    if isinstance(value, sp.Basic):
+        if value.is_Atom and not value.is_Symbol and not value.is_Rational and (
+                value.is_extended_real is not True or value.is_finite is not True):
+            return real_value(value, name)
+        return value
+    return real_value(value, name)
 
 
 def _merge(*objs: object) -> frozenset:

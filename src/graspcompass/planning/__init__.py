@@ -63,7 +63,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, InputTooLargeError
+from ..errors import InputError, InputTooLargeError, NonFiniteValueError
 from ..sizing.core import NotForceClosureError
 from ..world import OutlineError
 from ._exact import DEFAULT_TOL, Load
@@ -473,8 +473,14 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
         squeeze = _tilted(fr, mu_, load) * factor
     # condition (1) with the float path's margin (a cone side within 1e-12 rad of the other
     # contact is not force-closure: its squeeze would be ~1e16 N, rounding noise)
-    fc = np.isfinite(squeeze) & batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"],
-                                            mu_, mu_, margin=1e-12)
+    valid = batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
+                        margin=1e-12)
+    overflow = valid & np.isinf(squeeze)
+    if overflow.any():  # force-closure pairs whose squeeze is beyond a double: say so
+        raise NonFiniteValueError(
+            f"the squeeze of {int(overflow.sum())} force-closure pairs is beyond double "
+            "precision (1.8e308 N): give the mass, g or the acceleration in other units")
+    fc = np.isfinite(squeeze) & valid
     squeeze = np.where(fc, squeeze, np.nan)
     if not fc.any():
         need = _least_mu_hint(fr)

@@ -594,7 +594,9 @@ def explore(grasp: Grasp | None = None) -> Explorer:
     backend = matplotlib.get_backend()
     if not _interactive(backend):
         raise ValueError(f"cannot open the explorer window: matplotlib's backend {backend!r} "
-                         "cannot show windows (no display?); in Jupyter use explore_notebook()")
+                         "cannot show windows (no display?): graspcompass export --format html -o "
+                         "explorer.html writes the same explorer as one offline web page; in "
+                         "Jupyter use explore_notebook()")
     fig = plt.figure(figsize=(11, 7.5))
     ex = Explorer(grasp, fig=fig)
     plt.show()

@@ -248,13 +248,31 @@ class Timeline:
 
 
 def find_ffmpeg() -> str:
-    """The ``ffmpeg`` program (rcParams ``animation.ffmpeg_path``) or FFmpegNotFoundError."""
+    """The ``ffmpeg`` program, or :class:`FFmpegNotFoundError`.
+
+    rcParams ``animation.ffmpeg_path`` when set to another program than its
+    default ``ffmpeg``; else the one of the ``mp4`` extra (``pip install
+    'graspcompass[mp4]'``: the ``imageio-ffmpeg`` wheel, which carries an ffmpeg
+    build) if installed; else ``ffmpeg`` on the PATH.
+    """
     import matplotlib as mpl
 
-    exe = shutil.which(str(mpl.rcParams["animation.ffmpeg_path"]))
+    chosen = str(mpl.rcParams["animation.ffmpeg_path"])
+    if chosen == "ffmpeg":
+        try:
+            import imageio_ffmpeg
+        except ImportError:
+            pass
+        else:
+            try:
+                return str(imageio_ffmpeg.get_ffmpeg_exe())
+            except RuntimeError:  # the wheel has no binary for this platform
+                pass
+    exe = shutil.which(chosen)
     if exe is None:
-        raise FFmpegNotFoundError("cannot write MP4: ffmpeg is not installed (install it, e.g. "
-                                  "apt-get install ffmpeg, or write .gif or .html)")
+        raise FFmpegNotFoundError("cannot write MP4: no ffmpeg (pip install "
+                                  "'graspcompass[mp4]', or a system ffmpeg; or write .gif or "
+                                  ".html)")
     return exe
 
 

@@ -75,6 +75,23 @@ def _sqrt(v: Any, exact: bool) -> Any:
     return canon(sp.sqrt(v)) if exact else math.sqrt(v)
 
 
+#: Most bits of a numerator or denominator in an exact sizing: beyond it (a centre of mass at
+#: 1e300 m) the square roots |V_n| = sqrt(S_n² + C_n²) would factor numbers of thousands of
+#: bits, so the sizing takes the float path (to its stated accuracy) instead.
+MAX_EXACT_BITS = 256
+
+
+def _within_exact_budget(values: list[Any]) -> bool:
+    """Whether every rational in ``values`` has at most :data:`MAX_EXACT_BITS` bits."""
+    for v in values:
+        if not isinstance(v, sp.Basic):
+            continue
+        for r in v.atoms(sp.Rational):
+            if max(int(r.p).bit_length(), int(r.q).bit_length()) > MAX_EXACT_BITS:
+                return False
+    return True
+
+
 def _cmp(a: Any, b: Any, exact: bool) -> int:
     """The sign of ``a - b`` (exact when possible)."""
     if exact:
@@ -170,6 +187,8 @@ def _read_case(wg: WorldGrasp, mass: Any, g: Any, gravity: Any, tilt: Any, accel
         t = _positive(angle_value(tilt, "tilt"), "the tilt", strict=False)
     raw = [m, gv, sf, A, *(avec or ()), *(gdir or ()), *(() if t is None else (t,))]
     exact = wg.exact and not any(isinstance(v, float) or has_float(v) for v in raw)
+    if exact and not _within_exact_budget([*raw, *wg.grasp.S, *wg.grasp.C]):
+        exact = False  # square roots of such numbers would factor them: the float path
     if gdir is not None:
         n2 = gdir[0] ** 2 + gdir[1] ** 2
         if _cmp(n2, 0, exact) <= 0:
