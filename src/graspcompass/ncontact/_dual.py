@@ -1,0 +1,211 @@
+"""Vertices and recession directions of the dual polyhedron ``{u : a_r·u <= b_r}``.
+
+The LP of a linear effort in standard form, ``min c'·x, A x = b', x >= 0`` (the
+edge weights, plus one slack per sign constraint), has the dual
+``max b'·u, A^T u <= c'``.  Its vertices are the **dual-feasible bases**: d
+independent tight constraints whose solution satisfies all the others.  Exactly:
+
+* ``D(S)``: the determinant of the d constraint normals of a subset S, in
+  canonical form, cached (each is shared by many bases and rays);
+* the slack of constraint k at the basic solution of B is ``E(B ∪ k) / D(B)`` up
+  to the parity of the row order, with ``E`` the (d+1) × (d+1) determinant with
+  the right-hand sides, expanded along that column into the cached ``D``;
+* every sign is :func:`~graspcompass.ncontact._signs.sign` (``decide_sign``); the
+  float values only choose the order in which the constraints are tried (the most
+  violated first), never a result.
+
+The float path does the same with numpy and a relative tolerance.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass
+
+import numpy as np
+import sympy as sp
+
+from ..geometry.exact import approx, canon
+from ._signs import det, sign
+from .errors import DegenerateGraspError
+
+__all__ = ["DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices"]
+
+#: Relative tolerance of the float path (feasibility, rank, duplicates).
+TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class DualVertex:
+    """A basic feasible solution ``u`` of the dual and its basis (constraint indices)."""
+
+    u: tuple
+    basis: tuple[int, ...]
+
+
+class _Dets:
+    """Cached exact determinants of subsets of the constraint normals."""
+
+    def __init__(self, rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> None:
+        self.rows, self.rhs = rows, rhs
+        self.d = len(rows[0])
+        self._D: dict[tuple, sp.Expr] = {}
+        self._sD: dict[tuple, int] = {}
+        self._sE: dict[tuple, int] = {}
+
+    def D(self, s: tuple) -> sp.Expr:
+        v = self._D.get(s)
+        if v is None:
+            v = self._D[s] = canon(det([list(self.rows[i]) for i in s]))
+        return v
+
+    def sD(self, s: tuple) -> int:
+        v = self._sD.get(s)
+        if v is None:
+            v = self._sD[s] = sign(self.D(s), f"the determinant of constraints {s}")
+        return v
+
+    def sE(self, s: tuple) -> int:
+        """Sign of det [rows | rhs] of the (d+1) constraints s (sorted), by its last column."""
+        v = self._sE.get(s)
+        if v is None:
+            d = self.d
+            total = sp.Integer(0)
+            for t, r in enumerate(s):
+                if self.rhs[r] != 0:
+                    total += (-1) ** (t + d) * self.rhs[r] * self.D(s[:t] + s[t + 1:])
+            v = self._sE[s] = sign(canon(total), f"a slack of constraints {s}")
+        return v
+
+    def slack_sign(self, basis: tuple, k: int) -> int:
+        s = tuple(sorted((*basis, k)))
+        parity = sum(1 for b in basis if b > k) % 2
+        return (-1) ** parity * self.sE(s) * self.sD(basis)
+
+    def solve(self, basis: tuple) -> tuple:
+        rows = [list(self.rows[i]) for i in basis]
+        D = self.D(basis)
+        out = []
+        for t in range(self.d):
+            m = [[*r[:t], self.rhs[i], *r[t + 1:]] for r, i in zip(rows, basis)]
+            out.append(canon(det(m) / D))
+        return tuple(out)
+
+
+def _float_rows(rows, rhs) -> tuple[np.ndarray, np.ndarray]:
+    A = np.array([[float(approx(v, 20)) for v in r] for r in rows], dtype=float)
+    b = np.array([float(approx(v, 20)) for v in rhs], dtype=float)
+    return A, b
+
+
+def _float_solutions(A: np.ndarray, b: np.ndarray):
+    """All d-subsets, their float solutions and slacks (nan for singular ones)."""
+    R, d = A.shape
+    combos = np.array(list(itertools.combinations(range(R), d)), dtype=int).reshape(-1, d)
+    M = A[combos]
+    dets = np.linalg.det(M)
+    scale = np.prod(np.linalg.norm(M, axis=2), axis=1)
+    ok = np.abs(dets) > 1e-12 * np.maximum(scale, 1e-300)
+    U = np.full((len(combos), d), np.nan)
+    if ok.any():
+        U[ok] = np.linalg.solve(M[ok], b[combos[ok]][..., None])[..., 0]
+    slack = b[None, :] - U @ A.T
+    tol = TOL * (np.linalg.norm(A, axis=1)[None, :] * np.linalg.norm(U, axis=1)[:, None]
+                 + np.abs(b)[None, :] + 1e-300)
+    return combos, ok, U, slack, tol
+
+
+def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> list[DualVertex]:
+    """Every dual-feasible basis of ``{u : rows·u <= rhs}`` with its exact solution.
+
+    Raises
+    ------
+    DegenerateGraspError
+        When the normals have rank < d (the polyhedron has no vertex).
+    UndecidedSignError
+        When a sign cannot be decided exactly.
+    """
+    dets = _Dets(rows, rhs)
+    A, b = _float_rows(rows, rhs)
+    combos, ok, _U, slack, _ = _float_solutions(A, b)
+    R = len(rows)
+    out: list[DualVertex] = []
+    rank_full = False
+    for ci, row in enumerate(combos):
+        basis = tuple(int(v) for v in row)
+        if dets.sD(basis) == 0:
+            continue
+        rank_full = True
+        others = [k for k in range(R) if k not in basis]
+        if ok[ci]:  # most violated first: an infeasible basis is refuted by one exact sign
+            others.sort(key=lambda k: slack[ci, k])
+        if all(dets.slack_sign(basis, k) >= 0 for k in others):
+            out.append(DualVertex(dets.solve(basis), basis))
+    if not rank_full:
+        raise DegenerateGraspError("the edge wrenches do not span the three dimensions of "
+                                   "planar wrenches (all lines of action concurrent or "
+                                   "parallel): the grasp cannot resist some loads at all")
+    return out
+
+
+def exact_rays(rows: list[list[sp.Expr]]) -> list[tuple]:
+    """Extreme rays ``r`` of the cone ``{r : rows·r <= 0}`` (pointed; exact).
+
+    Each is a generalised cross product of d - 1 independent normals; its dot
+    product with another normal is a d × d determinant of the same cache.
+    """
+    d = len(rows[0])
+    dets = _Dets(rows, [sp.Integer(0)] * len(rows))
+    R = len(rows)
+    found: list[tuple] = []
+    for S in itertools.combinations(range(R), d - 1):
+        r = []
+        for t in range(d):
+            m = [list(rows[i][:t]) + list(rows[i][t + 1:]) for i in S]
+            r.append(canon((-1) ** t * det(m)))
+        if all(sign(v, "a recession direction") == 0 for v in r):
+            continue
+        signs = []
+        for k in range(R):
+            if k in S:
+                continue
+            s = tuple(sorted((*S, k)))
+            pos = sum(1 for i in S if i < k)
+            signs.append((-1) ** pos * dets.sD(s))
+        if all(s == 0 for s in signs):
+            raise DegenerateGraspError("the dual polyhedron contains a line (rank < 3)")
+        for sg in (1, -1):
+            if all(sg * s <= 0 for s in signs):
+                found.append(tuple(sg * v for v in r))
+    return found
+
+
+def float_vertices(A: np.ndarray, b: np.ndarray) -> list[DualVertex]:
+    """The float path of :func:`exact_vertices` (relative tolerance :data:`TOL`)."""
+    combos, ok, U, slack, tol = _float_solutions(A, b)
+    if not ok.any():
+        raise DegenerateGraspError("the edge wrenches do not span the three dimensions of "
+                                   "planar wrenches (rank < 3)")
+    feas = ok & np.all(slack >= -tol, axis=1)
+    return [DualVertex(tuple(U[i].tolist()), tuple(combos[i].tolist()))
+            for i in np.flatnonzero(feas)]
+
+
+def float_rays(A: np.ndarray) -> list[tuple]:
+    """The float path of :func:`exact_rays`."""
+    R, d = A.shape
+    found = []
+    for S in itertools.combinations(range(R), d - 1):
+        sub = A[list(S)]
+        r = np.array([(-1) ** t * np.linalg.det(np.delete(sub, t, axis=1)) if d > 2 else
+                      (-1) ** t * sub[0, 1 - t] for t in range(d)])
+        nr = np.linalg.norm(r)
+        if nr <= 1e-12 * np.prod(np.linalg.norm(sub, axis=1)):
+            continue
+        r = r / nr
+        dots = A @ r
+        tol = TOL * np.linalg.norm(A, axis=1)
+        for sg in (1, -1):
+            if np.all(sg * dots <= tol):
+                found.append(tuple((sg * r).tolist()))
+    return found
