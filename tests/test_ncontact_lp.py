@@ -1,0 +1,116 @@
+"""The n-contact model against an LP written in the test (scipy HiGHS): values and arcs.
+
+Random grasps n = 3…6 (seeded numpy), four efforts (sum of normal forces, a
+designated pair, custom weights, the largest normal force), with and without force
+closure; n = 2 with the paper's k (and its k >= 0).  The model's float path must give
+the LP's value (relative 1e-9) where the LP is feasible and +inf exactly where it
+is infeasible (the feasible arc).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+pytest.importorskip("scipy")
+
+from _ncontact_lp import force_closure, lp_value, random_contacts  # noqa: E402
+
+from graspcompass.grasp import Grasp  # noqa: E402
+from graspcompass.ncontact import NContactGrasp  # noqa: E402
+
+THETA_720 = np.linspace(0.0, 2 * math.pi, 720, endpoint=False) + 1e-3  # off the grid's ties
+REL = 1e-9
+
+
+def _efforts(rng, n):
+    return ["sum-normal", f"pair:{1 + n // 2},1", [float(v) for v in rng.uniform(0.5, 2.0, n)],
+            "max-normal"]
+
+
+def _compare(contacts, effort, thetas, com=(0.0, 0.0)):
+    g = NContactGrasp(contacts, com=com, effort=effort)
+    got = g.k(thetas)
+    want = np.array([lp_value(contacts, t, effort, com) for t in thetas])
+    fin = np.isfinite(want)
+    assert np.array_equal(np.isfinite(got), fin), (
+        f"feasible arcs differ at θ = {thetas[np.isfinite(got) != fin][:5]}")
+    rel = np.abs(got[fin] - want[fin]) / np.maximum(1.0, np.abs(want[fin]))
+    assert rel.size == 0 or rel.max() <= REL, rel.max()
+    return g, fin
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_720_directions_against_the_lp(seed):
+    """720 θ, each of the four efforts; seeds 0-3: n = 3…6 around the object, 4-5: n = 4, 6
+    on an arc (not in force closure)."""
+    rng = np.random.default_rng(20261202 + seed)
+    n = 3 + seed % 4 if seed < 4 else 2 * seed - 4
+    contacts = random_contacts(rng, n, closure=seed < 4)
+    for effort in _efforts(rng, n):
+        g, fin = _compare(contacts, effort, THETA_720)
+        assert g.force_closure == force_closure(contacts)
+        if g.force_closure:
+            assert fin.all()
+
+
+@pytest.mark.parametrize("block", range(4))
+def test_many_grasps_few_directions(block):
+    """40 grasps per block (160 in all), 12 θ each, four efforts, closure and not."""
+    rng = np.random.default_rng(777 + block)
+    thetas = rng.uniform(0, 2 * math.pi, 12)
+    closures = 0
+    for k in range(40):
+        n = 3 + k % 4
+        contacts = random_contacts(rng, n, closure=k % 3 != 2)
+        com = tuple(rng.uniform(-0.2, 0.2, 2))
+        for effort in _efforts(rng, n):
+            g, _ = _compare(contacts, effort, thetas, com=com)
+        closures += g.force_closure
+    assert 0 < closures < 40  # both kinds were met
+
+
+def test_feasible_arc_matches_the_sampled_lp():
+    """Without force closure the arc where v < inf is the arc where the LP is feasible."""
+    rng = np.random.default_rng(5)
+    seen = 0
+    for _ in range(30):
+        contacts = random_contacts(rng, 3, closure=False)
+        g = NContactGrasp(contacts)
+        if g.force_closure:
+            continue
+        arc = g.arc()
+        if arc is None:
+            continue
+        seen += 1
+        lo, hi = arc
+        assert 0 < hi - lo <= math.pi + 1e-12
+        inside = (THETA_720 - lo) % (2 * math.pi) <= hi - lo
+        feasible = np.array([math.isfinite(lp_value(contacts, t, "sum-normal"))
+                             for t in THETA_720])
+        near = np.minimum(np.abs((THETA_720 - lo + math.pi) % (2 * math.pi) - math.pi),
+                          np.abs((THETA_720 - hi + math.pi) % (2 * math.pi) - math.pi)) < 1e-9
+        assert np.array_equal(inside[~near], feasible[~near])
+        if seen == 6:
+            break
+    assert seen >= 3
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_two_contacts_paper_effort_against_the_lp(seed):
+    """n = 2, the paper's k with k >= 0 (eq. (25)), 720 θ, random grasps of the paper's frame."""
+    rng = np.random.default_rng(99 + seed)
+    x1, x2 = rng.uniform(0.5, 2.0, 2)
+    y = rng.uniform(0.0, 2.0)
+    phi1, phi2 = rng.uniform(1.2, 1.9, 2)
+    mu1, mu2 = rng.uniform(0.3, 1.2, 2)
+    g = Grasp(float(x1), float(x2), float(y), float(phi1), float(phi2), mu1=float(mu1),
+              mu2=float(mu2))
+    h = NContactGrasp.from_grasp(g)
+    contacts = [(c.p[0], c.p[1], c.n[0], c.n[1], float(c.mu)) for c in h.contacts]
+    want = np.array([lp_value(contacts, t, "paper") for t in THETA_720])
+    got = h.k(THETA_720)
+    assert np.allclose(got, want, rtol=REL, atol=REL)
+    assert np.allclose(got, g.k_grasp(THETA_720), rtol=1e-12, atol=1e-12)
