@@ -16,10 +16,9 @@ import pytest
 
 pytest.importorskip("scipy")
 
-from _ncontact_lp import force_closure, lp_value, random_contacts  # noqa: E402
-
-from graspcompass.grasp import Grasp  # noqa: E402
-from graspcompass.ncontact import NContactGrasp  # noqa: E402
+from _ncontact_lp import force_closure, lp_value, random_contacts
+from graspcompass.grasp import Grasp
+from graspcompass.ncontact import NContactGrasp
 
 THETA_720 = np.linspace(0.0, 2 * math.pi, 720, endpoint=False) + 1e-3  # off the grid's ties
 REL = 1e-9
