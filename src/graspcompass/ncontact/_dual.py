@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import sympy as sp
@@ -29,7 +30,7 @@ from ..geometry.exact import approx, canon
 from ._signs import det, sign
 from .errors import DegenerateGraspError
 
-__all__ = ["DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices"]
+__all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices"]
 
 #: Relative tolerance of the float path (feasibility, rank, duplicates).
 TOL = 1e-9
@@ -37,13 +38,33 @@ TOL = 1e-9
 
 @dataclass(frozen=True)
 class DualVertex:
-    """A basic feasible solution ``u`` of the dual and its basis (constraint indices)."""
+    """A basic feasible solution of the dual and its basis (constraint indices).
+
+    Attributes
+    ----------
+    u : tuple
+        Float path: the solution.  Exact path: the Cramer numerators of its first
+        two coordinates (the solution is ``u / W``), polynomials in the kernel's
+        generators: no quotient is ever reduced on the way.
+    basis : tuple of int
+        The d tight constraints of the basis.
+    W : number
+        The common denominator, the basis determinant ``D(B)`` (1 on the float path).
+    tight : frozenset
+        Every constraint tight at the solution (degenerate vertices have more than d).
+    cone : tuple or None
+        The cone of load directions e on which this basis is also primal feasible
+        (optimal), ``(start, end)``; None when it has no interior (exact path only).
+    """
 
     u: tuple
     basis: tuple[int, ...]
+    W: Any = 1
+    tight: frozenset = frozenset()
+    cone: Any = None
 
 
-class _Dets:
+class Dets:
     """Cached exact determinants of subsets of the constraint normals."""
 
     def __init__(self, rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> None:
@@ -82,14 +103,36 @@ class _Dets:
         parity = sum(1 for b in basis if b > k) % 2
         return (-1) ** parity * self.sE(s) * self.sD(basis)
 
-    def solve(self, basis: tuple) -> tuple:
+    def numerators(self, basis: tuple, coords: int = 2) -> tuple:
+        """Cramer numerators of the first ``coords`` coordinates (the solution is them / D)."""
         rows = [list(self.rows[i]) for i in basis]
-        D = self.D(basis)
         out = []
-        for t in range(self.d):
+        for t in range(coords):
             m = [[*r[:t], self.rhs[i], *r[t + 1:]] for r, i in zip(rows, basis)]
-            out.append(canon(det(m) / D))
+            out.append(canon(det(m)))
         return tuple(out)
+
+    def primal_cone(self, basis: tuple) -> Any:
+        """The directions e where the basis is primal feasible: ``x_B(e) >= 0``.
+
+        ``x_B = M^{-1} (-e, 0, ...)`` with M the basis' constraint normals as columns,
+        so ``x_t >= 0`` iff ``m_t · e <= 0`` with ``m_t = sign(D) (adj M)[t, 0:2]``
+        (cofactors: (d-1) × (d-1) minors, polynomials).
+        """
+        from ._hull import feasible_cone
+        from .polygon import exact_sgn
+
+        sD = self.sD(basis)
+        ms = []
+        for t in range(self.d):
+            rest = [self.rows[r] for j, r in enumerate(basis) if j != t]
+            m = []
+            for k in (0, 1):
+                minor = [[v for c, v in enumerate(row) if c != k] for row in rest]
+                m.append(canon(sD * (-1) ** (t + k) * det(minor)))
+            if any(exact_sgn(v, "a cofactor") != 0 for v in m):
+                ms.append(tuple(m))
+        return feasible_cone(ms, exact_sgn)
 
 
 def _float_rows(rows, rhs) -> tuple[np.ndarray, np.ndarray]:
@@ -115,8 +158,9 @@ def _float_solutions(A: np.ndarray, b: np.ndarray):
     return combos, ok, U, slack, tol
 
 
-def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> list[DualVertex]:
-    """Every dual-feasible basis of ``{u : rows·u <= rhs}`` with its exact solution.
+def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr],
+                   dets: Dets | None = None) -> list[DualVertex]:
+    """Every dual-feasible basis of ``{u : rows·u <= rhs}``, exactly, with its primal cone.
 
     Raises
     ------
@@ -125,9 +169,10 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> list[DualVe
     UndecidedSignError
         When a sign cannot be decided exactly.
     """
-    dets = _Dets(rows, rhs)
+    dets = dets or Dets(rows, rhs)
     A, b = _float_rows(rows, rhs)
-    combos, ok, _U, slack, _ = _float_solutions(A, b)
+    combos, ok, _U, slack, tol = _float_solutions(A, b)
+    tol_scale = tol.max(axis=1) / TOL
     R = len(rows)
     out: list[DualVertex] = []
     rank_full = False
@@ -137,10 +182,24 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> list[DualVe
             continue
         rank_full = True
         others = [k for k in range(R) if k not in basis]
-        if ok[ci]:  # most violated first: an infeasible basis is refuted by one exact sign
-            others.sort(key=lambda k: slack[ci, k])
-        if all(dets.slack_sign(basis, k) >= 0 for k in others):
-            out.append(DualVertex(dets.solve(basis), basis))
+        if ok[ci]:  # most violated first: an infeasible basis is refuted by one exact sign,
+            # and among the clearly violated ones those whose determinant is already known
+            def key(k: int, ci: int = ci, basis: tuple = basis) -> tuple:
+                known = tuple(sorted((*basis, k))) in dets._sE
+                return (not (known and slack[ci, k] < -1e-6 * tol_scale[ci]), slack[ci, k])
+            others.sort(key=key)
+        tight = set(basis)
+        for k in others:
+            s = dets.slack_sign(basis, k)
+            if s < 0:
+                break
+            if s == 0:
+                tight.add(k)
+        else:
+            s0 = dets.sD(basis)  # W = |D| > 0: homogeneous coordinates with a positive weight
+            nums = tuple(canon(s0 * v) for v in dets.numerators(basis))
+            out.append(DualVertex(nums, basis, canon(s0 * dets.D(basis)), frozenset(tight),
+                                  dets.primal_cone(basis)))
     if not rank_full:
         raise DegenerateGraspError("the edge wrenches do not span the three dimensions of "
                                    "planar wrenches (all lines of action concurrent or "
@@ -148,14 +207,14 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr]) -> list[DualVe
     return out
 
 
-def exact_rays(rows: list[list[sp.Expr]]) -> list[tuple]:
+def exact_rays(rows: list[list[sp.Expr]], dets: Dets | None = None) -> list[tuple]:
     """Extreme rays ``r`` of the cone ``{r : rows·r <= 0}`` (pointed; exact).
 
     Each is a generalised cross product of d - 1 independent normals; its dot
     product with another normal is a d × d determinant of the same cache.
     """
     d = len(rows[0])
-    dets = _Dets(rows, [sp.Integer(0)] * len(rows))
+    dets = dets or Dets(rows, [sp.Integer(0)] * len(rows))
     R = len(rows)
     found: list[tuple] = []
     for S in itertools.combinations(range(R), d - 1):

@@ -18,19 +18,23 @@ Sgn = Callable[[Any, str], int]
 
 
 def _cross(o: Sequence, a: Sequence, b: Sequence) -> Any:
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    """det [o; a; b] of homogeneous points (X, Y, W): the orientation when all W > 0."""
+    return (o[0] * (a[1] * b[2] - a[2] * b[1]) - o[1] * (a[0] * b[2] - a[2] * b[0])
+            + o[2] * (a[0] * b[1] - a[1] * b[0]))
 
 
 def hull(points: Sequence[Sequence], sgn: Sgn) -> list[int]:
     """Indices of the strict vertices of the convex hull, counter-clockwise.
 
+    Points are homogeneous ``(X, Y, W)`` with W > 0 (no quotient is formed).
     Andrew's monotone chain; equal points count once (the first index), points on
     an edge are not vertices.  One point gives ``[i]``, a segment its two ends.
     """
     def cmp(i: int, j: int) -> int:
-        s = sgn(points[i][0] - points[j][0], "a difference of x coordinates")
+        a, b = points[i], points[j]
+        s = sgn(a[0] * b[2] - b[0] * a[2], "a difference of x coordinates")
         if s == 0:
-            s = sgn(points[i][1] - points[j][1], "a difference of y coordinates")
+            s = sgn(a[1] * b[2] - b[1] * a[2], "a difference of y coordinates")
         return s
 
     order = sorted(range(len(points)), key=cmp_to_key(cmp))
@@ -65,37 +69,59 @@ def feasible_cone(rays: Sequence[Sequence], sgn: Sgn) -> tuple | None:
     """The cone ``{e : e·r <= 0 for all r}`` as ``(start, end)``, counter-clockwise.
 
     Returns None when it has no interior (the rays span a half-plane or more).
-    With no rays the cone is the whole plane: ``()``.
+    With no rays the cone is the whole plane: ``()``.  Each orientation and dot
+    product of a pair of rays is decided once.
     """
     if not rays:
         return ()
-    def first(cands: Sequence[Sequence], ccw: bool) -> Sequence | None:
-        for a in cands:
+    crosses: dict[tuple[int, int], int] = {}
+    dots: dict[tuple[int, int], int] = {}
+
+    def cross(i: int, j: int) -> int:
+        if i == j:
+            return 0
+        if (j, i) in crosses:
+            return -crosses[(j, i)]
+        if (i, j) not in crosses:
+            a, r = rays[i], rays[j]
+            crosses[(i, j)] = sgn(a[0] * r[1] - a[1] * r[0], "an orientation of two directions")
+        return crosses[(i, j)]
+
+    def dot(i: int, j: int) -> int:
+        if i == j:
+            return 1
+        key = (min(i, j), max(i, j))
+        if key not in dots:
+            a, r = rays[i], rays[j]
+            dots[key] = sgn(a[0] * r[0] + a[1] * r[1], "a dot product of two directions")
+        return dots[key]
+
+    def first(ccw: bool) -> int | None:
+        for i in range(len(rays)):
             ok = True
-            for r in rays:
-                c = sgn(a[0] * r[1] - a[1] * r[0], "an orientation of recession directions")
-                c = c if ccw else -c
-                if c < 0 or (c == 0 and sgn(a[0] * r[0] + a[1] * r[1], "a dot product") < 0):
+            for j in range(len(rays)):
+                c = cross(i, j) if ccw else -cross(i, j)
+                if c < 0 or (c == 0 and dot(i, j) < 0):
                     ok = False
                     break
             if ok:
-                return a
+                return i
         return None
 
-    ra = first(rays, True)   # every ray is counter-clockwise of ra (within π)
-    rb = first(rays, False)  # every ray is clockwise of rb
-    if ra is None or rb is None:
+    ia = first(True)   # every ray is counter-clockwise of ra (within π)
+    ib = first(False)  # every ray is clockwise of rb
+    if ia is None or ib is None:
         return None
+    ra, rb = rays[ia], rays[ib]
     # the rays span [ra, rb]; the feasible cone runs from J rb to J^T ra (J: quarter turn ccw)
     start = (-rb[1], rb[0])
     end = (ra[1], -ra[0])
-    if sgn(start[0] * end[1] - start[1] * end[0], "the feasible cone's width") == 0 and \
-            sgn(start[0] * end[0] + start[1] * end[1], "the feasible cone's width") < 0:
-        # a half-plane (one ray direction): interior nonempty
-        return (start, end)
-    if sgn(start[0] * end[1] - start[1] * end[0], "the feasible cone's width") <= 0:
+    c = cross(ia, ib)  # start × end = ra × rb
+    if c == 0:
+        if ia == ib or dot(ia, ib) > 0:  # one ray direction: a half-plane
+            return (start, end)
         return None
-    return (start, end)
+    return (start, end) if c > 0 else None
 
 
 def _in_open(x: Sequence, cone: tuple, sgn: Sgn) -> bool:

@@ -45,7 +45,7 @@ def _dot(a: tuple, b: tuple) -> Any:
 
 
 def candidates(g: Any) -> tuple[list[tuple], list[tuple]]:
-    """Points q = -y_f of the candidate vertices, and their ties as "bases"."""
+    """Homogeneous points ``(X, Y, W)`` (q = -y_f) of the candidate vertices, and their ties."""
     G = [tuple(w) for w in g.wrenches()]
     ties = _ties(G)
     labels = [f"P{i + 1}{name}" for i, name, _, _ in ties]
@@ -78,7 +78,7 @@ def candidates(g: Any) -> tuple[list[tuple], list[tuple]]:
             f = canon(f)
             if exact_sgn(f, "the effort of a direction") <= 0:
                 continue  # a recession direction, not a vertex
-            points.append((canon(-d[0] / f), canon(-d[1] / f)))
+            points.append((canon(-d[0]), canon(-d[1]), f))  # q = (X, Y) / W, W = f > 0
             bases.append((labels[a], labels[b]))
     return points, bases
 
@@ -110,6 +110,6 @@ def _float(G: list[tuple], ties: list) -> tuple[list[tuple], list[tuple]]:
             f = mx.sum()
             if f <= tol:
                 continue
-            points.append((-d[0] / f, -d[1] / f))
+            points.append((-d[0] / f, -d[1] / f, 1.0))
             bases.append((a, b))
     return points, bases

@@ -89,6 +89,7 @@ class NContactGrasp:
         self.contacts = tuple(cs)
         self.effort = read_effort(effort, self.contacts)
         self._polygon: InternalForcePolygon | None = None
+        self._closure: bool | None = None
 
     @classmethod
     def from_grasp(cls, grasp: Any, effort: Any = "paper") -> NContactGrasp:
@@ -174,39 +175,41 @@ class NContactGrasp:
 
     def _build(self) -> InternalForcePolygon:
         G = [list(g) for g in self.wrenches()]
-        if self.numeric:
-            Gf = np.array(G, dtype=float)
-            rays3 = _dual.float_rays(Gf)
-        else:
-            rays3 = _dual.exact_rays(G)
-        rays = [(-r[0], -r[1]) for r in rays3]
-        if self.effort.linear:
-            rows, rhs = self.dual_system()
-            if self.numeric:
-                verts = _dual.float_vertices(np.array(rows, dtype=float),
-                                             np.array(rhs, dtype=float))
-            else:
-                verts = _dual.exact_vertices(rows, rhs)
-            points = [(-v.u[0], -v.u[1]) for v in verts]
-            bases = [v.basis for v in verts]
-        else:
+        if not self.effort.linear:
             from . import maxnormal
 
             points, bases = maxnormal.candidates(self)
-        if not points:
-            raise UnboundedEffortError("the effort can be made arbitrarily negative (its dual "
-                                       "is empty): no least effort exists")
-        if self.effort.nonnegative:
-            rays = self._nonnegative_rays()
-        return InternalForcePolygon.build(points, bases, rays, self.numeric)
-
-    def _nonnegative_rays(self) -> list[tuple]:
-        rows, _ = self.dual_system()
+            if not points:
+                raise UnboundedEffortError("no direction has a positive effort")
+            return InternalForcePolygon.build(points, bases, self._q_rays(G), self.numeric)
+        rows, rhs = self.dual_system()
         if self.numeric:
-            r4 = _dual.float_rays(np.array(rows, dtype=float))
+            verts = _dual.float_vertices(np.array(rows, dtype=float), np.array(rhs, dtype=float))
+            if not verts:
+                raise self._unbounded()
+            pts = [(-v.u[0], -v.u[1], 1.0) for v in verts]
+            rays = self._q_rays(rows)
+            return InternalForcePolygon.build(pts, [v.basis for v in verts], rays, True)
+        dets = _dual.Dets(rows, rhs)
+        verts = _dual.exact_vertices(rows, rhs, dets)
+        if not verts:
+            raise self._unbounded()
+        return InternalForcePolygon.from_cones(verts, self._q_rays(rows, dets))
+
+    @staticmethod
+    def _unbounded() -> UnboundedEffortError:
+        return UnboundedEffortError("the effort can be made arbitrarily negative (its dual "
+                                    "is empty): no least effort exists")
+
+    def _q_rays(self, rows: list, dets: Any = None) -> list[tuple]:
+        """Recession directions of Q: minus the force part of the dual's extreme rays."""
+        if self.numeric:
+            r = _dual.float_rays(np.array(rows, dtype=float))
         else:
-            r4 = _dual.exact_rays(rows)
-        return [(-r[0], -r[1]) for r in r4]
+            r = _dual.exact_rays(rows, dets)
+        if len(rows[0]) == 3:
+            self._closure = not r  # the same cone as force closure's (rows = G)
+        return [(-v[0], -v[1]) for v in r]
 
     @property
     def force_closure(self) -> bool:
@@ -214,10 +217,12 @@ class NContactGrasp:
 
         Decided exactly: by Farkas' lemma, iff ``{r : G^T r <= 0} = {0}``.
         """
-        G = [list(g) for g in self.wrenches()]
-        if self.numeric:
-            return not _dual.float_rays(np.array(G, dtype=float))
-        return not _dual.exact_rays(G)
+        if self._closure is None:
+            if self.effort.linear and not self.effort.nonnegative:
+                self.polygon()
+            else:
+                self._q_rays([list(g) for g in self.wrenches()])
+        return self._closure
 
     def vertices(self) -> list[Point]:
         """The vertices of Q, counter-clockwise."""

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cmp_to_key
 from typing import Any
 
 import numpy as np
@@ -28,21 +29,47 @@ from ._signs import sign
 __all__ = ["Candidate", "InternalForcePolygon"]
 
 
-@dataclass(frozen=True)
+@dataclass
 class Candidate:
-    """A point q = -u_f of a dual vertex, with the bases (or ties) that give it.
+    """A point q of Q's candidates, in homogeneous form ``q = (X, Y) / W`` (W > 0 exactly).
 
     Attributes
     ----------
-    q : tuple
-        Its coordinates (exact or float).
-    bases : tuple of tuple of int
-        The dual bases (constraint indices of the LP, see
-        :meth:`graspcompass.ncontact.NContactGrasp.constraint_labels`) giving q.
+    X, Y, W : number
+        Homogeneous coordinates (exact polynomials in the kernel's generators, or
+        floats with W = 1): quotients are reduced only when :attr:`q` is asked for.
+    bases : tuple
+        The dual bases (constraint indices, see
+        :meth:`graspcompass.ncontact.NContactGrasp.constraint_labels`) giving q;
+        for ``"max-normal"`` the two ties of its line.
     """
 
-    q: tuple
+    X: Any
+    Y: Any
+    W: Any
     bases: tuple
+    _q: tuple | None = field(default=None, repr=False)
+    _f: tuple | None = field(default=None, repr=False)
+
+    @property
+    def q(self) -> tuple:
+        """The coordinates ``(X/W, Y/W)`` (canonical form on the exact path)."""
+        if self._q is None:
+            if isinstance(self.W, float) or self.W == 1:
+                self._q = (self.X, self.Y)
+            else:
+                self._q = (canon(self.X / self.W), canon(self.Y / self.W))
+        return self._q
+
+    def floats(self) -> tuple[float, float]:
+        """``q`` in double precision (20-digit evaluations of X, Y, W)."""
+        if self._f is None:
+            if isinstance(self.W, float):
+                self._f = (self.X / self.W, self.Y / self.W)
+            else:
+                w = approx(self.W, 25)
+                self._f = (float(approx(self.X, 25) / w), float(approx(self.Y, 25) / w))
+        return self._f
 
 
 def float_sgn(scale: float):
@@ -90,29 +117,76 @@ class InternalForcePolygon:
     @classmethod
     def build(cls, points: list[tuple], bases: list[tuple], rays: list[tuple],
               numeric: bool) -> InternalForcePolygon:
-        """Q from the dual vertices' projections, their bases and Q's recession directions."""
+        """Q as the hull of homogeneous points ``(X, Y, W)``, W > 0 (float path, max-normal)."""
         if numeric:
-            scale = max([1.0] + [abs(float(v)) for p in points for v in p])
+            scale = max([1.0] + [abs(float(v)) for p in points for v in p[:2]])
             sgn = float_sgn(scale)
         else:
             sgn = exact_sgn
         groups: list[list[int]] = []
         for i, p in enumerate(points):
             for g in groups:
-                q = points[g[0]]
-                if sgn(p[0] - q[0], "a difference") == 0 and sgn(p[1] - q[1], "a difference") == 0:
+                if _equal(points[g[0]], p, sgn):
                     g.append(i)
                     break
             else:
                 groups.append([i])
-        cands = [Candidate(points[g[0]], tuple(bases[i] for i in g)) for g in groups]
+        cands = [Candidate(*points[g[0]], tuple(bases[i] for i in g)) for g in groups]
         rays = [r for r in rays if sgn(r[0], "a ray") != 0 or sgn(r[1], "a ray") != 0]
         cone = _hull.feasible_cone(rays, sgn)
-        h = _hull.hull([c.q for c in cands], sgn) if cands else []
+        h = _hull.hull([(c.X, c.Y, c.W) for c in cands], sgn) if cands else []
         if rays:
+            hp = [(cands[j].X, cands[j].Y, cands[j].W) for j in h]
             h = [i for k, i in enumerate(h) if cone is not None and
-                 _hull.open_cones_meet(_normal_cone([cands[j].q for j in h], k), cone, sgn)]
+                 _hull.open_cones_meet(_normal_cone(hp, k), cone, sgn)]
         return cls(cands, h, rays, cone, numeric)
+
+    @classmethod
+    def from_cones(cls, verts: list, rays: list[tuple]) -> InternalForcePolygon:
+        """Q from exact dual vertices with their primal cones (no hull, no quotient).
+
+        A dual vertex projects to a vertex of Q iff one of its bases is optimal on
+        an open cone of directions (primal and dual feasible there); the vertices
+        are ordered counter-clockwise by those cones.  The others are redundant.
+        """
+        sgn = exact_sgn
+        groups: list[dict] = []  # the dual vertices: bases with the same solution
+        for v in verts:
+            for g in groups:
+                if set(v.basis) <= g["tight"]:
+                    g["members"].append(v)
+                    break
+            else:
+                groups.append({"tight": v.tight, "members": [v]})
+        active, passive = [], []
+        for g in groups:
+            cones = [m.cone for m in g["members"] if m.cone is not None]
+            (active if cones else passive).append((g, cones[0] if cones else None))
+        active.sort(key=cmp_to_key(lambda a, b: _direction_cmp(a[1][0], b[1][0], sgn)))
+
+        def cand(g: dict) -> Candidate:
+            m = g["members"][0]
+            return Candidate(-m.u[0], -m.u[1], m.W, tuple(x.basis for x in g["members"]))
+
+        cands: list[Candidate] = []
+        for g, _ in active:
+            c = cand(g)
+            if cands and _close(cands[-1], c) and _equal_h(cands[-1], c, sgn):
+                cands[-1].bases += c.bases
+                continue
+            cands.append(c)
+        if len(cands) > 1 and _close(cands[0], cands[-1]) and _equal_h(cands[0], cands[-1], sgn):
+            cands[0].bases += cands.pop().bases
+        nv = len(cands)
+        for g, _ in passive:
+            c = cand(g)
+            same = [d for d in cands if _close(d, c) and _equal_h(d, c, sgn)]
+            if same:
+                same[0].bases += c.bases
+            else:
+                cands.append(c)
+        rays = [r for r in rays if sgn(r[0], "a ray") != 0 or sgn(r[1], "a ray") != 0]
+        return cls(cands, list(range(nv)), rays, _hull.feasible_cone(rays, sgn), False)
 
     # -- what it holds ----------------------------------------------------------------
     @property
@@ -137,9 +211,8 @@ class InternalForcePolygon:
     def float_vertices(self) -> np.ndarray:
         """The vertices as an array of shape (m, 2) of doubles (correctly rounded)."""
         if self._floats is None:
-            qs = [self.candidates[i].q for i in self.vertex_index]
-            self._floats = np.array([[float(v) if self.numeric else float(approx(v, 20))
-                                      for v in q] for q in qs], dtype=float).reshape(-1, 2)
+            self._floats = np.array([self.candidates[i].floats() for i in self.vertex_index],
+                                    dtype=float).reshape(-1, 2)
         return self._floats
 
     def _float_rays(self) -> np.ndarray:
@@ -183,13 +256,14 @@ class InternalForcePolygon:
                 return sp.oo, None
         best, arg = None, None
         for k, i in enumerate(self.vertex_index):
-            q = self.candidates[i].q
-            val = canon(q[0] * e[0] + q[1] * e[1])
-            if best is None or exact_sgn(val - best, "a difference of k values") > 0:
-                best, arg = val, k
+            c = self.candidates[i]
+            num = canon(c.X * e[0] + c.Y * e[1])  # q·e = num / W, W > 0
+            if best is None or exact_sgn(num * best[1] - best[0] * c.W,
+                                         "a difference of k values") > 0:
+                best, arg = (num, c.W), k
         if best is None:
             return sp.oo, None
-        return canon(best * external_force), arg
+        return canon(best[0] * external_force / best[1]), arg
 
     def arc(self) -> tuple[float, float] | None:
         """The closed arc of θ (radians, ``lo <= hi < lo + 2π``) where the load can be held.
@@ -211,16 +285,49 @@ class InternalForcePolygon:
         return (lo, hi)
 
 
+def _equal(a: tuple, b: tuple, sgn: Any) -> bool:
+    """Homogeneous points ``(X, Y, W)`` equal (W > 0)."""
+    return (sgn(a[0] * b[2] - b[0] * a[2], "a difference") == 0
+            and sgn(a[1] * b[2] - b[1] * a[2], "a difference") == 0)
+
+
+def _equal_h(a: Candidate, b: Candidate, sgn: Any) -> bool:
+    return _equal((a.X, a.Y, a.W), (b.X, b.Y, b.W), sgn)
+
+
+def _close(a: Candidate, b: Candidate) -> bool:
+    """Within 1e-9 in double precision: only then is the exact (costly) equality tried.
+
+    Points further apart are distinct: their 25-digit interval evaluations differ.
+    """
+    (ax, ay), (bx, by) = a.floats(), b.floats()
+    return abs(ax - bx) + abs(ay - by) <= 1e-9 * (1 + abs(ax) + abs(ay))
+
+
+def _half(v: tuple, sgn: Any) -> int:
+    sy = sgn(v[1], "a direction")
+    return 0 if sy > 0 or (sy == 0 and sgn(v[0], "a direction") > 0) else 1
+
+
+def _direction_cmp(a: tuple, b: tuple, sgn: Any) -> int:
+    """Order of two directions by polar angle in [0, 2π)."""
+    ha, hb = _half(a, sgn), _half(b, sgn)
+    if ha != hb:
+        return ha - hb
+    return -sgn(a[0] * b[1] - a[1] * b[0], "an orientation")
+
+
 def _normal_cone(poly: list[tuple], k: int) -> tuple:
-    """The cone of outward normals at vertex k of a convex polygon (ccw), ``(start, end)``."""
+    """The cone of outward normals at vertex k of a convex polygon (ccw, homogeneous)."""
     m = len(poly)
     if m == 1:
         return ()
+
+    def edge(a: tuple, b: tuple) -> tuple:  # direction of b - a, scaled by W_a W_b > 0
+        return (b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2])
     if m == 2:
-        a, b = poly[k], poly[1 - k]
-        u = (b[0] - a[0], b[1] - a[1])
+        u = edge(poly[k], poly[1 - k])
         return ((-u[1], u[0]), (u[1], -u[0]))
-    p, v, nx = poly[k - 1], poly[k], poly[(k + 1) % m]
-    e1 = (v[0] - p[0], v[1] - p[1])
-    e2 = (nx[0] - v[0], nx[1] - v[1])
+    e1 = edge(poly[k - 1], poly[k])
+    e2 = edge(poly[k], poly[(k + 1) % m])
     return ((e1[1], -e1[0]), (e2[1], -e2[0]))
