@@ -31,7 +31,7 @@ def _same_point(a, b):
 def _candidate_set_is_V_and_O(grasp):
     h = NContactGrasp.from_grasp(grasp)
     Q = h.polygon()
-    pts = [c.q for c in Q.candidates]
+    pts = [c.q for c in Q.all_candidates()]
     V = [tuple(v) for v in grasp.V]
     for v in V:  # every V_n of eqs. (28)-(39) is a dual vertex ...
         assert any(_same_point(p, v) for p in pts), (v, pts)
@@ -48,7 +48,7 @@ def test_presets_reproduce_V1_to_V4_exactly(name):
     # the basis of V_n: the side of k_n plus both sides of the other contact (labels P1±, P2±)
     labels = h.constraint_labels()
     for n, v in enumerate(g.V, start=1):
-        cand = next(c for c in Q.candidates if _same_point(c.q, tuple(v)))
+        cand = next(c for c in Q.all_candidates() if _same_point(c.q, tuple(v)))
         names = {labels[r] for r in cand.bases[0]}
         other = {"P2+", "P2-"} if n in (1, 3) else {"P1+", "P1-"}
         assert other <= names, (n, names)
@@ -159,7 +159,7 @@ def test_exact_vertices_match_cdd_gmp_on_rational_grasps():
     for _ in range(40):
         n = rng.choice([3, 4])
         contacts = _rational_contacts(rng, n)
-        g = NContactGrasp([tuple(str(v) for v in c) for c in contacts])
+        g = NContactGrasp([tuple(str(v) for v in c) for c in contacts], exhaustive=True)
         try:
             Q = g.polygon()
         except Exception as exc:  # degenerate random draws (rank < 3)
@@ -167,8 +167,11 @@ def test_exact_vertices_match_cdd_gmp_on_rational_grasps():
             continue
         verts, rays = _cdd_points(contacts)
         mine = {(Fraction(int(p[0].p), int(p[0].q)), Fraction(int(p[1].p), int(p[1].q)))
-                for p in (c.q for c in Q.candidates)}
+                for p in (c.q for c in Q.all_candidates())}
         assert mine == set(verts)  # the same dual vertices, projected
+        screened = NContactGrasp(g.contacts).polygon()  # float screen + exact tiling
+        assert [c.q for c in screened.candidates[:len(screened.vertex_index)]] == \
+            [c.q for c in Q.candidates[:len(Q.vertex_index)]]
         assert g.force_closure == (not rays)
         if not rays:
             want = _fraction_hull(verts)

@@ -30,7 +30,8 @@ from ..geometry.exact import approx, canon
 from ._signs import det, sign
 from .errors import DegenerateGraspError
 
-__all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices"]
+__all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices",
+           "screened_vertices", "verify_basis"]
 
 #: Relative tolerance of the float path (feasibility, rank, duplicates).
 TOL = 1e-9
@@ -205,6 +206,67 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr],
                                    "planar wrenches (all lines of action concurrent or "
                                    "parallel): the grasp cannot resist some loads at all")
     return out
+
+
+def _float_cone_has_interior(A: np.ndarray, basis: tuple) -> bool:
+    """Float screen: is the basis primal feasible on an open cone of directions?"""
+    M = A[list(basis)].T
+    try:
+        m = np.linalg.inv(M)[:, :2]
+    except np.linalg.LinAlgError:
+        return False
+    m = m[np.linalg.norm(m, axis=1) > 1e-12 * np.abs(m).max()]
+    # sample the circle finely: an open cone of width > 1e-6 rad contains a sample
+    t = np.linspace(0, 2 * np.pi, 20001)
+    e = np.stack([np.cos(t), np.sin(t)])
+    return bool(np.any(np.all(m @ e < -1e-12, axis=0)))
+
+
+def screened_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr], dets: Dets
+                      ) -> tuple[list[DualVertex], list[tuple]]:
+    """The bases that float arithmetic finds dual feasible and optimal on an open cone.
+
+    Returns ``(active, passive)``: the active ones verified exactly (dual
+    feasibility by exact slack signs, the primal cone exactly); the passive ones
+    (float-feasible, not active) as bare bases, for :func:`verify_basis` later.
+    The float screen decides nothing by itself: the caller certifies that the
+    exact cones of the active bases tile the feasible directions
+    (:func:`graspcompass.ncontact.polygon.tiles`), else falls back to
+    :func:`exact_vertices`.
+    """
+    A, b = _float_rows(rows, rhs)
+    combos, ok, _U, slack, tol = _float_solutions(A, b)
+    feas = ok & np.all(slack >= -1e-6 * (tol / TOL), axis=1)
+    active, passive = [], []
+    for ci in np.flatnonzero(feas):
+        basis = tuple(int(v) for v in combos[ci])
+        if _float_cone_has_interior(A, basis):
+            v = verify_basis(dets, basis)
+            if v is None or v.cone is None:
+                return [], []  # the screen was wrong: the caller enumerates exactly
+            active.append(v)
+        else:
+            passive.append(basis)
+    return active, passive
+
+
+def verify_basis(dets: Dets, basis: tuple) -> DualVertex | None:
+    """The exact dual vertex of a basis, or None when it is singular or infeasible."""
+    if dets.sD(basis) == 0:
+        return None
+    tight = set(basis)
+    for k in range(len(dets.rows)):
+        if k in basis:
+            continue
+        s = dets.slack_sign(basis, k)
+        if s < 0:
+            return None
+        if s == 0:
+            tight.add(k)
+    s0 = dets.sD(basis)
+    nums = tuple(canon(s0 * v) for v in dets.numerators(basis))
+    return DualVertex(nums, basis, canon(s0 * dets.D(basis)), frozenset(tight),
+                      dets.primal_cone(basis))
 
 
 def exact_rays(rows: list[list[sp.Expr]], dets: Dets | None = None) -> list[tuple]:

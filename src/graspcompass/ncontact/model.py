@@ -30,7 +30,7 @@ from . import _dual
 from .contact import Contact, read_contact
 from .effort import read_effort
 from .errors import InvalidContactError, UnboundedEffortError
-from .polygon import InternalForcePolygon
+from .polygon import InternalForcePolygon, tiles
 
 __all__ = ["NContactGrasp"]
 
@@ -53,6 +53,13 @@ class NContactGrasp:
     effort : str or sequence, optional
         ``"sum-normal"`` (default), ``"pair:I,J"``, ``"paper"`` (n = 2),
         ``"max-normal"``, or custom weights (:mod:`~graspcompass.ncontact.effort`).
+    exhaustive : bool, optional
+        Exact path: decide every one of the C(2n, 3) bases exactly.  By default the
+        bases are screened in double precision and the result is *certified*: the
+        exact primal cones of the verified bases must tile the directions that can
+        be held (else the exhaustive enumeration runs).  Q and v(θ) are exact
+        either way; only the list of redundant dual vertices depends on the screen
+        (a basis the screen finds infeasible by more than 1e-6 is not listed).
 
     Examples
     --------
@@ -64,7 +71,7 @@ class NContactGrasp:
     """
 
     def __init__(self, contacts: Sequence[Any], com: Any = (0, 0),
-                 effort: Any = "sum-normal") -> None:
+                 effort: Any = "sum-normal", *, exhaustive: bool = False) -> None:
         if isinstance(contacts, (str, bytes)) or not isinstance(contacts, Sequence):
             raise InvalidContactError("contacts: expected a sequence of contacts")
         if not 2 <= len(contacts) <= MAX_CONTACTS:
@@ -90,6 +97,8 @@ class NContactGrasp:
         self.effort = read_effort(effort, self.contacts)
         self._polygon: InternalForcePolygon | None = None
         self._closure: bool | None = None
+        self.exhaustive = bool(exhaustive)
+        self._dets: Any = None
 
     @classmethod
     def from_grasp(cls, grasp: Any, effort: Any = "paper") -> NContactGrasp:
@@ -190,11 +199,22 @@ class NContactGrasp:
             pts = [(-v.u[0], -v.u[1], 1.0) for v in verts]
             rays = self._q_rays(rows)
             return InternalForcePolygon.build(pts, [v.basis for v in verts], rays, True)
-        dets = _dual.Dets(rows, rhs)
+        dets = self._dets = _dual.Dets(rows, rhs)
+        if not self.exhaustive:  # float screen, certified by the exact tiling of the cones
+            active, passive = _dual.screened_vertices(rows, rhs, dets)
+            cones = [v.cone for v in active]
+            if tiles(cones, ()):  # every load direction is held: Q is bounded, no rays
+                return InternalForcePolygon.from_cones(active, [], (dets, passive))
+            rays = self._q_rays(rows, dets)
+            Q = InternalForcePolygon.from_cones(active, rays, (dets, passive))
+            if tiles(cones, Q.cone):
+                return Q
+        else:
+            rays = self._q_rays(rows, dets)
         verts = _dual.exact_vertices(rows, rhs, dets)
         if not verts:
             raise self._unbounded()
-        return InternalForcePolygon.from_cones(verts, self._q_rays(rows, dets))
+        return InternalForcePolygon.from_cones(verts, rays)
 
     @staticmethod
     def _unbounded() -> UnboundedEffortError:
@@ -218,10 +238,9 @@ class NContactGrasp:
         Decided exactly: by Farkas' lemma, iff ``{r : G^T r <= 0} = {0}``.
         """
         if self._closure is None:
-            if self.effort.linear and not self.effort.nonnegative:
-                self.polygon()
-            else:
-                self._q_rays([list(g) for g in self.wrenches()])
+            shared = (self.effort.linear and not self.effort.nonnegative and not self.numeric
+                      and self._polygon is not None)
+            self._q_rays([list(g) for g in self.wrenches()], self._dets if shared else None)
         return self._closure
 
     def vertices(self) -> list[Point]:

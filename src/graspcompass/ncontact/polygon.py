@@ -11,6 +11,7 @@ on the closed arc where ``e·r <= 0`` for all r.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from functools import cmp_to_key
@@ -112,6 +113,7 @@ class InternalForcePolygon:
     cone: tuple | None
     numeric: bool
     _floats: np.ndarray = field(default=None, repr=False)  # type: ignore[assignment]
+    _pending: tuple | None = field(default=None, repr=False)
 
     # -- construction -------------------------------------------------------------
     @classmethod
@@ -142,7 +144,8 @@ class InternalForcePolygon:
         return cls(cands, h, rays, cone, numeric)
 
     @classmethod
-    def from_cones(cls, verts: list, rays: list[tuple]) -> InternalForcePolygon:
+    def from_cones(cls, verts: list, rays: list[tuple],
+                   pending: tuple | None = None) -> InternalForcePolygon:
         """Q from exact dual vertices with their primal cones (no hull, no quotient).
 
         A dual vertex projects to a vertex of Q iff one of its bases is optimal on
@@ -178,15 +181,41 @@ class InternalForcePolygon:
         if len(cands) > 1 and _close(cands[0], cands[-1]) and _equal_h(cands[0], cands[-1], sgn):
             cands[0].bases += cands.pop().bases
         nv = len(cands)
-        for g, _ in passive:
-            c = cand(g)
-            same = [d for d in cands if _close(d, c) and _equal_h(d, c, sgn)]
+        out = cls(cands, list(range(nv)), rays, _hull.feasible_cone(rays, sgn), False)
+        out._add_passive([g["members"] for g, _ in passive])
+        out._pending = pending
+        return out
+
+    def _add_passive(self, groups: list[list]) -> None:
+        """Add dual vertices that are optimal on no open cone (redundant, or equal to a vertex)."""
+        for members in groups:
+            m = members[0]
+            c = Candidate(-m.u[0], -m.u[1], m.W, tuple(x.basis for x in members))
+            same = [d for d in self.candidates if _close(d, c) and _equal_h(d, c, exact_sgn)]
             if same:
                 same[0].bases += c.bases
             else:
-                cands.append(c)
-        rays = [r for r in rays if sgn(r[0], "a ray") != 0 or sgn(r[1], "a ray") != 0]
-        return cls(cands, list(range(nv)), rays, _hull.feasible_cone(rays, sgn), False)
+                self.candidates.append(c)
+
+    def _resolve(self) -> None:
+        """Decide exactly the float-screened passive bases (on the first ask for them)."""
+        if self._pending is None:
+            return
+        from ._dual import verify_basis
+
+        dets, bases = self._pending
+        self._pending = None
+        found = [v for v in (verify_basis(dets, b) for b in bases) if v is not None]
+        groups: list[list] = []
+        for v in found:
+            for g in groups:
+                if set(v.basis) <= g[0].tight:
+                    g.append(v)
+                    break
+            else:
+                groups.append([v])
+        known = {b for c in self.candidates for b in c.bases}
+        self._add_passive([g for g in groups if not {x.basis for x in g} & known])
 
     # -- what it holds ----------------------------------------------------------------
     @property
@@ -205,8 +234,14 @@ class InternalForcePolygon:
 
         In Table I(c) of the paper, V_4 = (4/7, 10/7) lies inside the triangle V_1 V_2 V_3.
         """
+        self._resolve()
         keep = set(self.vertex_index)
         return [c for i, c in enumerate(self.candidates) if i not in keep]
+
+    def all_candidates(self) -> list[Candidate]:
+        """Every distinct projected dual vertex: the vertices first, then the redundant ones."""
+        self._resolve()
+        return list(self.candidates)
 
     def float_vertices(self) -> np.ndarray:
         """The vertices as an array of shape (m, 2) of doubles (correctly rounded)."""
@@ -331,3 +366,28 @@ def _normal_cone(poly: list[tuple], k: int) -> tuple:
     e1 = edge(poly[k - 1], poly[k])
     e2 = edge(poly[k], poly[(k + 1) % m])
     return ((e1[1], -e1[0]), (e2[1], -e2[0]))
+
+
+def _same_direction(a: tuple, b: tuple) -> bool:
+    return (exact_sgn(a[0] * b[1] - a[1] * b[0], "an orientation") == 0
+            and exact_sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0)
+
+
+def tiles(cones: list[tuple], feasible: tuple | None) -> bool:
+    """Whether exact cones ``(start, end)`` tile the feasible directions end to end.
+
+    ``feasible`` is ``()`` for all directions (force closure) or the feasible
+    cone.  When they do, the bases of the cones are optimal for every direction
+    that can be held, so Q is the hull of their points and nothing is missing:
+    the certificate of the float-screened enumeration.
+    """
+    if feasible is None or not cones:
+        return False
+    order = sorted(cones, key=cmp_to_key(lambda a, b: _direction_cmp(a[0], b[0], exact_sgn)))
+    for a, b in itertools.pairwise(order):
+        if not _same_direction(a[1], b[0]):
+            return False
+    if feasible == ():
+        return _same_direction(order[-1][1], order[0][0]) and len(order) >= 2
+    fs, fe = feasible
+    return _same_direction(order[0][0], fs) and _same_direction(order[-1][1], fe)
