@@ -254,3 +254,46 @@ def test_bound_on_vertices():
             g = NContactGrasp(random_contacts(rng, n), effort="sum-normal")
             assert len(g.vertices()) <= 4 * n - 4
     assert list(itertools.islice(itertools.count(), 1))  # keep itertools used
+
+
+def _cli(capsys, *argv):
+    from graspcompass.cli import main
+
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_cli_k_with_contacts_json(capsys):
+    import json
+
+    status, out, err = _cli(capsys, "k", "--contact", "1,0,-1,0,1/2", "--contact=-1,0,1,0,1/2",
+                            "--contact=0,-1,0,1,1/2", "--theta", "0,90deg", "--json")
+    assert status == 0, err
+    rows = json.loads(out)
+    assert [r["theta"] for r in rows] == ["0", "pi/2"]
+    # by hand: a downward load needs N3 + μ(N1 + N2) >= 1, so N1 + N2 + N3 >= 1 (μ < 1), = 1
+    # with the bottom contact alone
+    assert rows[0]["k"] == pytest.approx(1.0, rel=1e-12)
+    assert set(rows[0]["tight"]) >= {"P3+", "P3-"}
+
+
+def test_cli_k_with_contacts_null_where_not_held(capsys):
+    import json
+
+    status, out, err = _cli(capsys, "k", "--contact", "1,0,-1,0,1/2", "--contact=0,-1,0,1,1/2",
+                            "--effort", "sum-normal", "--theta", "0,pi", "--json")
+    assert status == 0, err
+    rows = json.loads(out)
+    assert rows[0]["k"] is not None and rows[1]["k"] is None  # nothing pulls the object down
+
+
+@pytest.mark.parametrize("argv", [["--contact", "1,0,-1,0,1/2"],
+                                  ["--contact", "1,0,-1,0,1/2", "--contact", "1,2"],
+                                  ["--contact", "1,0,-1,0,1/2", "--contact", "0,1,0,-1,x"],
+                                  ["--contact", "1,0,0,0,1", "--contact", "0,1,0,-1,1"],
+                                  ["--contact", "1,0,-1,0,1", "--contact", "0,1,0,-1,1",
+                                   "--effort", "pair:1,7"]])
+def test_cli_k_with_contacts_refuses_bad_input(capsys, argv):
+    status, _out, err = _cli(capsys, "k", *argv)
+    assert status == 2 and err.count("\n") == 1 and "error" in err

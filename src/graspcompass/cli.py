@@ -168,6 +168,9 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--exact", action="store_true",
                    help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
+    from ._cli_ncontact import add_options as _add_ncontact
+
+    _add_ncontact(k)
 
     sub.add_parser("presets", help="list the built-in grasps of the paper")
     _register_animate(sub, _add_grasp_options)
@@ -332,6 +335,10 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 def _cmd_k(args: argparse.Namespace) -> int:
     from . import _cli_k
 
+    if getattr(args, "contact", None):
+        from . import _cli_ncontact
+
+        return _cli_ncontact.run(args)
     return _cli_k.run(args, lambda: grasp_from_args(args))
 
 

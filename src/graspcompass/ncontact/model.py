@@ -159,7 +159,7 @@ class NContactGrasp:
         """Names of the dual constraints: ``"P1+"``, ``"P1-"``, ..., ``"effort>=0"``."""
         labels = [f"P{i + 1}{'+' if s > 0 else '-'}" for i, s, _ in self.edges()]
         if self.effort.linear and self.effort.nonnegative:
-            labels.append("effort>=0")
+            labels.append("k>=0" if self.effort.name == "paper" else "effort>=0")
         return labels
 
     def dual_system(self) -> tuple[list[list[Any]], list[Any]]:
