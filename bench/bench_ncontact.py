@@ -19,31 +19,35 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
-from _ncontact_lp import lp_value  # noqa: E402
-
-from graspcompass.geometry.exact import clear_caches  # noqa: E402
-from graspcompass.ncontact import NContactGrasp  # noqa: E402
+from _ncontact_lp import lp_value
+from graspcompass.geometry.exact import clear_caches
+from graspcompass.ncontact import NContactGrasp
 
 SIX = [("1", "0", "175deg", "1/2"), ("1/2", "9/10", "247deg", "2/5"),
        ("-1/2", "9/10", "301deg", "3/5"), ("-1", "1/10", "358deg", "1/2"),
        ("-2/5", "-9/10", "61deg", "7/10"), ("3/5", "-4/5", "118deg", "1/3")]
 
 
-def exact_six(effort: str = "sum-normal", repeat: int = 3) -> tuple[float, NContactGrasp]:
+def exact_six(effort: str = "sum-normal", repeat: int = 3,
+              exhaustive: bool = False) -> tuple[float, NContactGrasp]:
+    """Best time of Q (vertices, v(θ) ready) from the contacts' text, caches cleared."""
     best = math.inf
     for _ in range(repeat):
         clear_caches()
         t0 = time.perf_counter()
-        g = NContactGrasp(SIX, effort=effort)
+        g = NContactGrasp(SIX, effort=effort, exhaustive=exhaustive)
         g.polygon()
         best = min(best, time.perf_counter() - t0)
     return best, g
 
 
+def timed(f):
+    t0 = time.perf_counter()
+    r = f()
+    return time.perf_counter() - t0, r
+
+
 def float_vs_lp(n_theta: int = 100_000, n_lp: int = 400) -> tuple[float, float]:
-    fl = [(float(x.split("/")[0]) / (float(x.split("/")[1]) if "/" in x else 1.0)
-           if isinstance(x, str) and "deg" not in x else x) for x in SIX[0]]
-    del fl
     contacts = []
     for x, y, a, m in SIX:
         def val(s: str) -> float:
@@ -70,12 +74,20 @@ def float_vs_lp(n_theta: int = 100_000, n_lp: int = 400) -> tuple[float, float]:
 def main() -> None:
     t, g = exact_six()
     Q = g.polygon()
+    tc, closure = timed(lambda: g.force_closure)
+    tr, red = timed(lambda: Q.redundant)
     print(f"exact Q, n = 6, angles in degrees, sum-normal: {t:.3f} s (best of 3, caches "
-          f"cleared); {len(Q.vertices)} vertices, {len(Q.redundant)} redundant, "
-          f"force closure {g.force_closure}")
+          f"cleared; float screen + exact tiling certificate); {len(Q.vertices)} vertices; "
+          f"then force closure ({closure}) {tc:.3f} s, the {len(red)} redundant dual "
+          f"vertices {tr:.3f} s")
+    te, ge = exact_six(repeat=1, exhaustive=True)
+    print(f"exact Q, n = 6, exhaustive (every one of the 220 bases decided exactly): {te:.3f} s; "
+          f"{len(ge.polygon().vertices)} vertices")
     t2, g2 = exact_six("pair:1,4", repeat=1)
     print(f"exact Q, n = 6, angles in degrees, pair:1,4: {t2:.3f} s; "
           f"{len(g2.polygon().vertices)} vertices")
+    t3, _v = timed(lambda: g.k("pi/5"))
+    print(f"exact v(π/5) from Q: {t3 * 1e3:.1f} ms")
     build, per_theta, per_lp = float_vs_lp()
     print(f"float path, n = 6: Q built in {build * 1e3:.2f} ms; v(θ) {per_theta * 1e9:.0f} ns "
           f"per θ (100 000 θ at once); scipy HiGHS LP {per_lp * 1e3:.3f} ms per θ; "
