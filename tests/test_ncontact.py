@@ -297,3 +297,29 @@ def test_cli_k_with_contacts_null_where_not_held(capsys):
 def test_cli_k_with_contacts_refuses_bad_input(capsys, argv):
     status, _out, err = _cli(capsys, "k", *argv)
     assert status == 2 and err.count("\n") == 1 and "error" in err
+
+
+def test_draw_ncontact_figure(tmp_path):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from graspcompass.render.ncontact import draw_ncontact
+
+    g = NContactGrasp([(1, 0, -1, 0, "1/2"), (0, -1, 0, 1, "1/2"), ("-1/2", "-1/2", "40deg",
+                                                                   "3/10")])
+    fig = draw_ncontact(g)
+    ax = fig.axes[0]
+    assert len(ax.patches) >= len(g.vertices())  # a Thales circle per vertex (and arrows)
+    assert "no force closure" in ax.get_title()
+    fig.savefig(tmp_path / "n.png")
+    assert (tmp_path / "n.png").stat().st_size > 10_000
+
+
+def test_cli_draw_with_contacts(capsys, tmp_path):
+    out = tmp_path / "n.svg"
+    status, stdout, err = _cli(capsys, "draw", "--contact", "1,0,180deg,1/2",
+                               "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
+                               "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "-o", str(out))
+    assert status == 0, err
+    assert out.read_text().lstrip().startswith("<?xml") and "wrote" in stdout

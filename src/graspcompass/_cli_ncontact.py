@@ -24,7 +24,7 @@ import numpy as np
 from ._cli_k import _fe, _split_items, read_angles, table
 from .errors import InputError
 
-__all__ = ["add_options", "run"]
+__all__ = ["add_options", "draw", "run"]
 
 _HEAD = ["θ", "deg", "k", "F", "tight"]
 
@@ -104,4 +104,35 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
             else f"θ in [{math.degrees(arc[0]):.6g}°, {math.degrees(arc[1]):.6g}°]")
     print(f"{g.n} contacts, effort {g.effort.name}: Q has {len(V)} vertices; force closure: "
           f"{closure}; the load is held for {held}", file=out)
+    return 0
+
+
+def draw(args: argparse.Namespace) -> int:
+    """``graspcompass draw --contact ...``: the n-contact diagram to a PNG, SVG or PDF file."""
+    from pathlib import Path
+
+    from ._output import check_target, writing
+
+    name = args.output if args.output is not None else f"ncontact.{args.format or 'png'}"
+    fmt = args.format or Path(name).suffix.lower().lstrip(".")
+    if fmt not in ("png", "svg", "pdf"):
+        raise InputError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf file "
+                         "name or --format")
+    if args.step is not None:
+        raise InputError("--step: the n-contact diagram has no construction steps yet")
+    path = check_target(name)
+    g = grasp_from_args(args)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from .render.ncontact import draw_ncontact
+
+    fig = draw_ncontact(g)
+    with writing(path):
+        fig.savefig(path, format=fmt, dpi=110)
+    plt.close(fig)
+    if not args.quiet:
+        print(f"wrote {path}")
     return 0

@@ -142,6 +142,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
                         "the paper's recipe)")
     quiet_option(d)
+    from ._cli_ncontact import add_options as _add_ncontact_draw
+
+    _add_ncontact_draw(d)
 
     s = sub.add_parser("steps", help="print the construction protocol")
     _add_grasp_options(s)
@@ -301,6 +304,10 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
+    if getattr(args, "contact", None):
+        from . import _cli_ncontact
+
+        return _cli_ncontact.draw(args)
     stem = _cli_file.output_stem(args, args.preset)
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
