@@ -19,9 +19,6 @@ import math
 import sys
 from typing import IO, Any
 
-import numpy as np
-
-from ._cli_k import _fe, _split_items, read_angles, table
 from .errors import InputError
 
 __all__ = ["add_options", "draw", "run"]
@@ -45,6 +42,8 @@ def add_options(p: argparse.ArgumentParser) -> None:
 
 
 def _values(text: str, name: str, counts: tuple[int, ...]) -> list[str]:
+    from ._cli_k import _split_items
+
     if len(text) > 2000:
         raise InputError(f"{name} is longer than 2000 characters")
     items = [v.strip() for v in _split_items(text)]
@@ -69,6 +68,10 @@ def grasp_from_args(args: argparse.Namespace) -> Any:
 
 def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     """Run ``graspcompass k --contact ...``; returns the exit status (0)."""
+    import numpy as np
+
+    from ._cli_k import _fe, read_angles, table
+
     out = sys.stdout if out is None else out
     _, fe = _fe(args.external_force)
     exact, t = read_angles(args.theta)
