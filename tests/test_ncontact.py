@@ -323,3 +323,33 @@ def test_cli_draw_with_contacts(capsys, tmp_path):
                                "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "-o", str(out))
     assert status == 0, err
     assert out.read_text().lstrip().startswith("<?xml") and "wrote" in stdout
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.floats(-1.5, 1.5), st.floats(-1.5, 1.5), st.floats(0, 6.283),
+                          st.floats(0.1, 1.0)), min_size=3, max_size=5),
+       st.floats(0, 6.283))
+def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
+    """Primal check from first principles: nonnegative edge weights, the contact forces
+    balance the load F_e e(θ) (force and moment about O), and their effort is v(θ)."""
+    from graspcompass.ncontact import NContactError
+
+    try:
+        g = NContactGrasp([(x, y, a, m) for x, y, a, m in raw])
+        v = g.k(theta)
+    except NContactError:
+        return  # degenerate draws (rank < 3)
+    if not math.isfinite(v):
+        return
+    r = g.forces(theta)
+    assert all(w >= -1e-9 for w in r["weights"].values())
+    fx = sum(f[0] for f in r["forces"])
+    fy = sum(f[1] for f in r["forces"])
+    tz = sum(c.p[0] * f[1] - c.p[1] * f[0] for c, f in zip(g.contacts, r["forces"]))
+    scale = 1 + sum(abs(w) for w in r["weights"].values()) * (1 + max(
+        math.hypot(*c.p) for c in g.contacts))
+    assert abs(fx + math.sin(theta)) <= 1e-8 * scale
+    assert abs(fy - math.cos(theta)) <= 1e-8 * scale
+    assert abs(tz) <= 1e-8 * scale
+    normal = sum(f[0] * c.n[0] + f[1] * c.n[1] for c, f in zip(g.contacts, r["forces"]))
+    assert abs(normal - v) <= 1e-8 * scale

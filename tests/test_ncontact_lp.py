@@ -113,3 +113,44 @@ def test_two_contacts_paper_effort_against_the_lp(seed):
     got = h.k(THETA_720)
     assert np.allclose(got, want, rtol=REL, atol=REL)
     assert np.allclose(got, g.k_grasp(THETA_720), rtol=1e-12, atol=1e-12)
+
+
+def test_paper_effort_where_k_geq_0_is_active():
+    """Two-contact grasps whose Q has the vertex O (the "0" of eq. (25) active on an arc)."""
+    rng = np.random.default_rng(2026)
+    found = 0
+    for _ in range(300):
+        x1, x2 = rng.uniform(0.3, 2.0, 2)
+        y = rng.uniform(0.0, 2.5)
+        phi1, phi2 = rng.uniform(0.9, 2.3, 2)
+        mu1, mu2 = rng.uniform(0.2, 1.5, 2)
+        try:
+            g = Grasp(float(x1), float(x2), float(y), float(phi1), float(phi2),
+                      mu1=float(mu1), mu2=float(mu2))
+        except ValueError:
+            continue
+        h = NContactGrasp.from_grasp(g)
+        V = h.polygon().float_vertices()
+        if not np.any(np.all(np.abs(V) < 1e-12, axis=1)):
+            continue
+        found += 1
+        contacts = [(c.p[0], c.p[1], c.n[0], c.n[1], float(c.mu)) for c in h.contacts]
+        t = THETA_720[::4]
+        want = np.array([lp_value(contacts, x, "paper") for x in t])
+        got = h.k(t)
+        assert np.allclose(got, want, rtol=REL, atol=REL)
+        assert np.any(np.abs(got) < 1e-12)  # the arc where no squeeze is needed
+        if found == 3:
+            break
+    assert found >= 1
+
+
+def test_regression_normal_cone_sharing_the_feasible_cone_start():
+    """Two contacts at one point: a vertex of Q whose normal cone starts where the feasible
+    cone starts (hypothesis found the float path dropping it; the LP says 0.84 at θ = 0)."""
+    raw = [(0.0, 0.0, 1.0, 1.0), (0.0, 0.0, 2.0, 0.5), (0.0, 1.0, 0.0, 1.0)]
+    contacts = [(x, y, math.cos(a), math.sin(a), m) for x, y, a, m in raw]
+    _compare(contacts, "sum-normal", THETA_720[::3])
+    exact = NContactGrasp([(0, 0, 1, 1), (0, 0, 2, "1/2"), (0, 1, 0, 1)])
+    assert np.allclose(exact.k(THETA_720[::3]), NContactGrasp(raw).k(THETA_720[::3]),
+                       rtol=1e-12, equal_nan=True)

@@ -59,20 +59,23 @@ def optimal_forces(g: Any, theta: Any, fe: Any) -> dict[str, Any]:
         if not np.isfinite(val):
             return {**none, "effort": float("inf")}
         V = Q.float_vertices()
-        k = int(np.argmax(V[:, 0] * e[0] + V[:, 1] * e[1]))
+        vals = V[:, 0] * e[0] + V[:, 1] * e[1]
+        tol = 1e-9 * (1 + np.abs(V).max())
+        ks = [int(i) for i in np.argsort(-vals) if vals[i] >= vals.max() - tol]  # ties
     else:
         s, c = sincos(t)
         e = (s, -c)
         val, k = Q.support_exact(t, fe)
         if k is None:
             return {**none, "effort": sp.oo}
-    cand = Q.candidates[Q.vertex_index[k]]
+        ks = [k]
     d = len(rows[0])
     zero = 0.0 if numeric else sp.Integer(0)
     b = [-fe * e[0], -fe * e[1]] + [zero] * (d - 2)
     if not numeric:
         b = [canon(v) for v in b]
-    for basis in cand.bases:
+    for basis, cand in ((b, c) for c in (Q.candidates[Q.vertex_index[k]] for k in ks)
+                        for b in c.bases):
         cols = [list(rows[r]) for r in basis]
         if numeric:
             M = np.array(cols, dtype=float).T

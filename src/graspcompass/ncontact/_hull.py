@@ -141,10 +141,10 @@ def _same(a: Sequence, b: Sequence, sgn: Sgn) -> bool:
 def open_cones_meet(c1: tuple, c2: tuple, sgn: Sgn) -> bool:
     """Whether the interiors of two planar cones ``(start, end)`` of width <= π meet.
 
-    ``()`` is the whole plane.  Two open arcs of length <= π meet iff one holds the
-    other's start, or they have the same ends.
+    ``()`` is the whole plane.  Two open arcs of positive length meet iff one holds
+    the other's start, or they start in the same direction.
     """
     if c1 == () or c2 == ():
         return True
     return (_in_open(c2[0], c1, sgn) or _in_open(c1[0], c2, sgn)
-            or (_same(c1[0], c2[0], sgn) and _same(c1[1], c2[1], sgn)))
+            or _same(c1[0], c2[0], sgn))
