@@ -115,6 +115,7 @@ class InternalForcePolygon:
     _floats: np.ndarray = field(default=None, repr=False)  # type: ignore[assignment]
     _pending: tuple | None = field(default=None, repr=False)
     _alpha: np.ndarray | None = field(default=None, repr=False)
+    _support_index: list | None = field(default=None, repr=False)
     _order: np.ndarray | None = field(default=None, repr=False)
 
     # -- construction -------------------------------------------------------------
@@ -123,10 +124,8 @@ class InternalForcePolygon:
               numeric: bool) -> InternalForcePolygon:
         """Q as the hull of homogeneous points ``(X, Y, W)``, W > 0 (float path, max-normal)."""
         if numeric:
-            scale = max([1.0] + [abs(float(v)) for p in points for v in p[:2]])
-            sgn = float_sgn(scale)
-        else:
-            sgn = exact_sgn
+            return cls._build_float(points, bases, rays)
+        sgn = exact_sgn
         groups: list[list[int]] = []
         for i, p in enumerate(points):
             for g in groups:
@@ -144,6 +143,51 @@ class InternalForcePolygon:
             h = [i for k, i in enumerate(h) if cone is not None and
                  _hull.open_cones_meet(_normal_cone(hp, k), cone, sgn)]
         return cls(cands, h, rays, cone, numeric)
+
+    @classmethod
+    def _build_float(cls, points: list[tuple], bases: list[tuple],
+                     rays: list[tuple]) -> InternalForcePolygon:
+        """The float path: relative tolerances per predicate, never a global one.
+
+        Near-collinear points are dropped only when within 1e-12 of the relative
+        orientation (their support values differ by less than that); v(θ) on the
+        feasible arc is the max over every hull point (the vertices reported are
+        those whose normal cone meets the open feasible cone).
+        """
+        P = np.array([(float(p[0]) / float(p[2]), float(p[1]) / float(p[2])) for p in points],
+                     dtype=float).reshape(-1, 2)
+        scale = max(1.0, float(np.abs(P).max()) if P.size else 1.0)
+        groups: list[list[int]] = []
+        for i in range(len(P)):
+            for g in groups:
+                if np.abs(P[g[0]] - P[i]).max() <= 1e-13 * scale:
+                    g.append(i)
+                    break
+            else:
+                groups.append([i])
+        cands = [Candidate(float(P[g[0], 0]), float(P[g[0], 1]), 1.0,
+                           tuple(bases[i] for i in g)) for g in groups]
+        h = _float_hull(np.array([(c.X, c.Y) for c in cands]).reshape(-1, 2))
+        unit = []
+        for r in rays:
+            n = math.hypot(float(r[0]), float(r[1]))
+            if n > 1e-12:
+                unit.append((float(r[0]) / n, float(r[1]) / n))
+        sgn = float_sgn(1.0)  # unit vectors: 1e-10 absolute
+        cone = _hull.feasible_cone(unit, sgn)
+        keep = h
+        if unit:
+            hp = [(cands[j].X, cands[j].Y, 1.0) for j in h]
+            keep = []
+            for k, i in enumerate(h):
+                nc = _normal_cone(hp, k)
+                if nc != ():
+                    nc = tuple(tuple(np.asarray(v) / (np.hypot(*v) or 1.0)) for v in nc)
+                if cone is not None and _hull.open_cones_meet(nc, cone, sgn):
+                    keep.append(i)
+        out = cls(cands, keep, unit, cone, True)
+        out._support_index = h
+        return out
 
     @classmethod
     def from_cones(cls, verts: list, rays: list[tuple],
@@ -281,6 +325,9 @@ class InternalForcePolygon:
 
     def _support_float(self, t: np.ndarray, fe: float) -> Any:
         V, R = self.float_vertices(), self._float_rays()
+        if R.size and self._support_index is not None:  # every hull point, not only vertices
+            V = np.array([self.candidates[i].floats() for i in self._support_index],
+                         dtype=float).reshape(-1, 2)
         flat = t.reshape(-1)
         E = np.empty((flat.size, 2))
         np.sin(flat, out=E[:, 0])
@@ -415,3 +462,28 @@ def tiles(cones: list[tuple], feasible: tuple | None) -> bool:
         return _same_direction(order[-1][1], order[0][0]) and len(order) >= 2
     fs, fe = feasible
     return _same_direction(order[0][0], fs) and _same_direction(order[-1][1], fe)
+
+
+def _float_hull(P: np.ndarray) -> list[int]:
+    """Strict convex hull (ccw indices) of float points, orientation relative to 1e-12."""
+    m = len(P)
+    if m <= 2:
+        return list(range(m)) if m < 2 or np.any(P[0] != P[1]) else [0]
+    order = sorted(range(m), key=lambda i: (P[i, 0], P[i, 1]))
+
+    def turn(o: int, a: int, b: int) -> bool:
+        u, w = P[a] - P[o], P[b] - P[o]
+        c = u[0] * w[1] - u[1] * w[0]
+        return c > 1e-12 * math.hypot(*u) * math.hypot(*w)
+
+    def chain(seq: list[int]) -> list[int]:
+        out: list[int] = []
+        for i in seq:
+            while len(out) >= 2 and not turn(out[-2], out[-1], i):
+                out.pop()
+            out.append(i)
+        return out
+
+    lower, upper = chain(order), chain(order[::-1])
+    h = lower[:-1] + upper[:-1]
+    return h if len(h) >= 2 else [order[0], order[-1]]
