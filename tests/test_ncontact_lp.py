@@ -18,7 +18,7 @@ pytest.importorskip("scipy")
 
 from _ncontact_lp import force_closure, lp_value, random_contacts
 from graspcompass.grasp import Grasp
-from graspcompass.ncontact import NContactGrasp
+from graspcompass.ncontact import NContactError, NContactGrasp
 
 THETA_720 = np.linspace(0.0, 2 * math.pi, 720, endpoint=False) + 1e-3  # off the grid's ties
 REL = 1e-9
@@ -154,3 +154,25 @@ def test_regression_normal_cone_sharing_the_feasible_cone_start():
     exact = NContactGrasp([(0, 0, 1, 1), (0, 0, 2, "1/2"), (0, 1, 0, 1)])
     assert np.allclose(exact.k(THETA_720[::3]), NContactGrasp(raw).k(THETA_720[::3]),
                        rtol=1e-12, equal_nan=True)
+
+
+def test_degenerate_grid_grasps_against_the_lp():
+    """Contacts on a half-unit grid with normals at multiples of 45°: coincident points,
+    parallel edges, collinear dual vertices (the float path's tolerances are stressed)."""
+    rng = np.random.default_rng(31)
+    done = 0
+    for _ in range(80):
+        n = int(rng.integers(2, 6))
+        contacts = []
+        for _ in range(n):
+            a = float(rng.integers(0, 8)) * math.pi / 4
+            contacts.append((float(rng.integers(-2, 3)) / 2, float(rng.integers(-2, 3)) / 2,
+                             math.cos(a), math.sin(a), float(rng.choice([0.25, 0.5, 1.0]))))
+        thetas = rng.uniform(0, 2 * math.pi, 6)
+        for effort in ["sum-normal", "max-normal", f"pair:1,{n}"]:
+            try:
+                _compare(contacts, effort, thetas)
+            except NContactError:  # rank < 3: no vertex
+                continue
+            done += 1
+    assert done >= 100

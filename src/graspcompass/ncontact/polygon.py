@@ -469,7 +469,16 @@ def _float_hull(P: np.ndarray) -> list[int]:
     m = len(P)
     if m <= 2:
         return list(range(m)) if m < 2 or np.any(P[0] != P[1]) else [0]
-    order = sorted(range(m), key=lambda i: (P[i, 0], P[i, 1]))
+    tol = 1e-12 * max(1.0, float(np.abs(P).max()))
+
+    def cmp(i: int, j: int) -> int:  # x within tol counts as equal: ties go by y
+        dx = P[i, 0] - P[j, 0]
+        if abs(dx) > tol:
+            return -1 if dx < 0 else 1
+        dy = P[i, 1] - P[j, 1]
+        return 0 if dy == 0 else (-1 if dy < 0 else 1)
+
+    order = sorted(range(m), key=cmp_to_key(cmp))
 
     def turn(o: int, a: int, b: int) -> bool:
         u, w = P[a] - P[o], P[b] - P[o]
