@@ -353,3 +353,22 @@ def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
     assert abs(tz) <= 1e-8 * scale
     normal = sum(f[0] * c.n[0] + f[1] * c.n[1] for c, f in zip(g.contacts, r["forces"]))
     assert abs(normal - v) <= 1e-8 * scale
+
+
+def test_cli_k_with_contacts_exact(capsys):
+    import json
+
+    status, out, err = _cli(capsys, "k", "--contact", "1,0,180deg,1/2",
+                            "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
+                            "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "--theta", "0",
+                            "--exact", "--external-force", "2", "--json")
+    assert status == 0, err
+    row = json.loads(out)[0]
+    from _ncontact_lp import lp_value  # the LP written in the tests
+
+    s3 = math.sqrt(3) / 2
+    contacts = [(1, 0, -1, 0, 0.5), (-0.5, s3, 0.5, -s3, 0.5), (-0.5, -s3, 0.5, s3, 0.5)]
+    want = lp_value(contacts, 0.0, "sum-normal")
+    assert float(sp.sympify(row["k_exact"])) == pytest.approx(want, rel=1e-9)
+    assert decide_zero(sp.sympify(row["F_exact"]) - 2 * sp.sympify(row["k_exact"]))
+    assert row["F"] == pytest.approx(2 * row["k"])

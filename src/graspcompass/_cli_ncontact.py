@@ -5,10 +5,11 @@ nonzero vector, or one angle: ``X,Y,ANGLE,MU``) and its friction coefficient, as
 exact text (``sqrt(3)/2``, ``60deg``, ``1.2`` = 6/5).  ``--effort`` chooses what is
 minimised (``paper``: the paper's k, n = 2; ``sum-normal``; ``pair:I,J``;
 ``max-normal``), ``--com X,Y`` the centre of mass (default the origin).  One row
-per θ of ``--theta`` (as for the two-contact ``k``): the least effort for the load
-``F_e e(θ)`` at the centre of mass, null (JSON) or ``-`` where it cannot be held,
-and the tight cone edges at the optimum.  A value starting with ``-`` needs the
-``--contact=-1,0,1,0,1/2`` form.
+per θ of ``--theta`` (as for the two-contact ``k``): the least effort k for a unit
+load e(θ) at the centre of mass and F = k F_e for ``--external-force`` F_e, null
+(JSON) or ``-`` where the load cannot be held, and the tight cone edges at the
+optimum; ``--exact`` adds the exact values (at most ``EXACT_VALUES`` angles).  A
+value starting with ``-`` needs the ``--contact=-1,0,1,0,1/2`` form.
 """
 
 from __future__ import annotations
@@ -73,9 +74,18 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     from ._cli_k import _fe, read_angles, table
 
     out = sys.stdout if out is None else out
-    _, fe = _fe(args.external_force)
+    fe_exact, fe = _fe(args.external_force)
     exact, t = read_angles(args.theta)
+    from .limits import EXACT_VALUES
+
+    want_exact = bool(getattr(args, "exact", False))
+    if want_exact and (exact is None or len(exact) > EXACT_VALUES):
+        raise InputError(f"--exact computes exact values for at most {EXACT_VALUES} angles; "
+                         f"--theta gives {t.size}")
     g = grasp_from_args(args)
+    if want_exact and g.numeric:
+        raise InputError("--exact needs exact contacts (no value of --contact may be a float "
+                         "written with an exponent)")
     Q = g.polygon()
     with np.errstate(all="ignore"):
         k = np.asarray(Q.support(t), dtype=float).reshape(-1)
@@ -93,6 +103,10 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
                         "k": float(k[i]) if held else None,
                         "F": float(k[i] * fe) if held else None,
                         "tight": tight[arg[i]].split() if held and tight else None})
+        if want_exact:
+            kx = Q.support_exact(exact[i])[0]
+            records[-1]["k_exact"] = str(kx)
+            records[-1]["F_exact"] = str(kx * fe_exact)
     if args.json:
         print(json.dumps(records, indent=1), file=out)
         return 0
@@ -101,6 +115,9 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
              f"{r['F']:.6g}" if r["F"] is not None else "-",
              " ".join(r["tight"]) if r["tight"] else "-"] for r in records]
     print(table(rows, _HEAD), file=out)
+    if want_exact:
+        for r in records:
+            print(f"θ = {r['theta']}: k = {r['k_exact']}, F = {r['F_exact']}", file=out)
     arc = Q.arc()
     closure = "yes" if g.force_closure else "no"
     held = ("every direction" if arc == (0.0, 2 * math.pi) else "no open arc" if arc is None
