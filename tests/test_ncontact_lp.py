@@ -176,3 +176,32 @@ def test_degenerate_grid_grasps_against_the_lp():
                 continue
             done += 1
     assert done >= 100
+
+
+def test_worst_direction_against_the_lp():
+    """max_θ v(θ) = max |q| (three-jaw gripper sizing): the LP at the returned θ gives it, and
+    no θ of a 360-point grid needs more."""
+    rng = np.random.default_rng(12)
+    checked = 0
+    for n in (3, 4, 3, 4, 5):
+        contacts = random_contacts(rng, n)
+        g = NContactGrasp(contacts)
+        if not g.force_closure:
+            continue
+        checked += 1
+        value, theta = g.worst(2.0)
+        assert lp_value(contacts, theta, "sum-normal") * 2.0 == pytest.approx(value, rel=1e-9)
+        grid = np.array([lp_value(contacts, t, "sum-normal") for t in THETA_720[::2]])
+        assert grid.max() * 2.0 <= value * (1 + 1e-9)
+    assert checked >= 2
+
+
+def test_worst_exact_matches_float():
+    exact = NContactGrasp([("1", "0", "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+                           ("-1/2", "-sqrt(3)/2", "60deg", "1/2")])
+    s3 = math.sqrt(3) / 2
+    flt = NContactGrasp([(1.0, 0, -1, 0, 0.5), (-0.5, s3, 0.5, -s3, 0.5),
+                         (-0.5, -s3, 0.5, s3, 0.5)])
+    (ve, te), (vf, _) = exact.worst(), flt.worst()
+    assert float(ve) == pytest.approx(vf, rel=1e-12)
+    assert float(exact.k(te)) == pytest.approx(float(ve), rel=1e-12)

@@ -16,6 +16,7 @@ paper's effort, Q = conv{V_1, ..., V_4, O} (eqs. (25), (27)-(39)).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import Any
 
@@ -30,7 +31,7 @@ from . import _dual
 from .contact import Contact, read_contact
 from .effort import read_effort
 from .errors import InvalidContactError, UnboundedEffortError
-from .polygon import InternalForcePolygon, tiles
+from .polygon import InternalForcePolygon, exact_sgn, tiles
 
 __all__ = ["NContactGrasp"]
 
@@ -258,6 +259,37 @@ class NContactGrasp:
     def arc(self) -> tuple[float, float] | None:
         """The closed arc of θ where the load can be held (see ``InternalForcePolygon.arc``)."""
         return self.polygon().arc()
+
+    def worst(self, external_force: Any = 1) -> tuple[Any, Any]:
+        """The largest least effort over all load directions and a direction that needs it.
+
+        ``max_θ v(θ) = F_e max_q |q|`` (the support function's maximum is the farthest
+        vertex): the worst squeeze of a three-jaw gripper over all orientations of the
+        part.  Returns ``(value, θ)``; exact ``(F_e sqrt(|q|²), θ)`` with θ a float
+        (radians) on the exact path, ``(inf, None)`` without force closure of the loads.
+        """
+        Q = self.polygon()
+        fe = force_value(external_force)
+        if not Q.bounded:
+            return (float("inf") if self.numeric else sp.oo), None
+        best, arg = None, None
+        for i in Q.vertex_index:
+            c = Q.candidates[i]
+            if self.numeric:
+                r2 = c.X * c.X + c.Y * c.Y
+                if best is None or r2 > best:
+                    best, arg = r2, c
+            else:
+                r2 = (c.X * c.X + c.Y * c.Y, c.W * c.W)  # |q|² = num / den
+                if best is None or exact_sgn(r2[0] * best[1] - best[0] * r2[1],
+                                             "a difference of squared lengths") > 0:
+                    best, arg = r2, c
+        qx, qy = arg.floats()
+        theta = math.atan2(qy, qx) + math.pi / 2  # e(θ) = (sin θ, -cos θ) along q
+        theta %= 2 * math.pi
+        if self.numeric:
+            return float(fe) * math.sqrt(best), theta
+        return canon(fe) * sp.sqrt(canon(best[0] / best[1])), theta
 
     def forces(self, theta: Any, external_force: Any = 1) -> dict[str, Any]:
         """The contact forces at the optimum for one θ and the tight edges.
