@@ -11,7 +11,6 @@ on the closed arc where ``e·r <= 0`` for all r.
 
 from __future__ import annotations
 
-import itertools
 import math
 from dataclasses import dataclass, field
 from functools import cmp_to_key
@@ -445,23 +444,53 @@ def _same_direction(a: tuple, b: tuple) -> bool:
 
 
 def tiles(cones: list[tuple], feasible: tuple | None) -> bool:
-    """Whether exact cones ``(start, end)`` tile the feasible directions end to end.
+    """Whether exact cones ``(start, end)`` cover the feasible directions.
 
     ``feasible`` is ``()`` for all directions (force closure) or the feasible
-    cone.  When they do, the bases of the cones are optimal for every direction
-    that can be held, so Q is the hull of their points and nothing is missing:
-    the certificate of the float-screened enumeration.
+    cone.  When they do, every direction that can be held has an optimal basis among
+    the cones' bases, so Q is the hull of their points and nothing is missing: the
+    certificate of the float-screened enumeration.  The cones are swept in the order
+    of their float start angles; each step (the next start lies in the arc covered so
+    far) is decided exactly, so a wrong float order can only make the check fail.
     """
     if feasible is None or not cones:
         return False
-    order = sorted(cones, key=cmp_to_key(lambda a, b: _direction_cmp(a[0], b[0], exact_sgn)))
-    for a, b in itertools.pairwise(order):
-        if not _same_direction(a[1], b[0]):
-            return False
-    if feasible == ():
-        return _same_direction(order[-1][1], order[0][0]) and len(order) >= 2
-    fs, fe = feasible
-    return _same_direction(order[0][0], fs) and _same_direction(order[-1][1], fe)
+    full = feasible == ()
+    s0 = cones[0][0] if full else feasible[0]
+    halves: dict[int, int] = {}
+
+    def half(v: tuple) -> int:  # 0: in [s0, s0 + π), 1: in [s0 + π, s0 + 2π)
+        key = id(v)
+        if key not in halves:
+            c = exact_sgn(s0[0] * v[1] - s0[1] * v[0], "an orientation")
+            d = exact_sgn(s0[0] * v[0] + s0[1] * v[1], "a dot product") if c == 0 else 0
+            halves[key] = 0 if c > 0 or (c == 0 and d > 0) else 1
+        return halves[key]
+
+    def rel(a: tuple, b: tuple) -> int:  # compare angles measured from s0 in [0, 2π)
+        ha, hb = half(a), half(b)
+        if ha != hb:
+            return ha - hb
+        return -exact_sgn(a[0] * b[1] - a[1] * b[0], "an orientation")
+
+    def angle(v: tuple) -> float:
+        f = [float(approx(x, 20)) for x in (*v, *s0)]
+        return (math.atan2(f[1], f[0]) - math.atan2(f[3], f[2])) % (2 * math.pi)
+
+    order = sorted(cones, key=lambda c: angle(c[0]))
+    if not _same_direction(order[0][0], s0):
+        return False
+    reach = order[0][1]
+    for c in order[1:]:
+        if rel(c[0], reach) > 0:
+            return False  # a gap (or a wrong float order)
+        if full and rel(c[1], c[0]) <= 0:
+            return True  # this cone runs past s0: the whole circle is covered
+        if rel(c[1], reach) > 0:
+            reach = c[1]
+    if full:
+        return _same_direction(reach, s0)
+    return _same_direction(reach, feasible[1])
 
 
 def _float_hull(P: np.ndarray) -> list[int]:
