@@ -230,8 +230,8 @@ def screened_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr], dets: Dets
     feasibility by exact slack signs, the primal cone exactly); the passive ones
     (float-feasible, not active) as bare bases, for :func:`verify_basis` later.
     The float screen decides nothing by itself: the caller certifies that the
-    exact cones of the active bases tile the feasible directions
-    (:func:`graspcompass.ncontact.polygon.tiles`), else falls back to
+    exact cones of the active bases cover the feasible directions
+    (:func:`graspcompass.ncontact.polygon.covers`), else falls back to
     :func:`exact_vertices`.
     """
     A, b = _float_rows(rows, rhs)

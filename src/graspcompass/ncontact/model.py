@@ -31,7 +31,7 @@ from . import _dual
 from .contact import Contact, read_contact
 from .effort import read_effort
 from .errors import InvalidContactError, UnboundedEffortError
-from .polygon import InternalForcePolygon, exact_sgn, tiles
+from .polygon import InternalForcePolygon, covers, exact_sgn
 
 __all__ = ["NContactGrasp"]
 
@@ -57,7 +57,7 @@ class NContactGrasp:
     exhaustive : bool, optional
         Exact path: decide every one of the C(2n, 3) bases exactly.  By default the
         bases are screened in double precision and the result is *certified*: the
-        exact primal cones of the verified bases must tile the directions that can
+        exact primal cones of the verified bases must cover the directions that can
         be held (else the exhaustive enumeration runs).  Q and v(θ) are exact
         either way; only the list of redundant dual vertices depends on the screen
         (a basis the screen finds infeasible by more than 1e-6 is not listed).
@@ -201,14 +201,14 @@ class NContactGrasp:
             rays = self._q_rays(rows)
             return InternalForcePolygon.build(pts, [v.basis for v in verts], rays, True)
         dets = self._dets = _dual.Dets(rows, rhs)
-        if not self.exhaustive:  # float screen, certified by the exact tiling of the cones
+        if not self.exhaustive:  # float screen, certified by the exact coverage of the cones
             active, passive = _dual.screened_vertices(rows, rhs, dets)
             cones = [v.cone for v in active]
-            if tiles(cones, ()):  # every load direction is held: Q is bounded, no rays
+            if covers(cones, ()):  # every load direction is held: Q is bounded, no rays
                 return InternalForcePolygon.from_cones(active, [], (dets, passive))
             rays = self._q_rays(rows, dets)
             Q = InternalForcePolygon.from_cones(active, rays, (dets, passive))
-            if tiles(cones, Q.cone):
+            if covers(cones, Q.cone):
                 return Q
         else:
             rays = self._q_rays(rows, dets)

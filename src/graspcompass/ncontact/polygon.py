@@ -26,7 +26,7 @@ from ..inputs import angle_values, force_value
 from . import _hull
 from ._signs import sign
 
-__all__ = ["Candidate", "InternalForcePolygon"]
+__all__ = ["Candidate", "InternalForcePolygon", "covers", "exact_sgn", "float_sgn"]
 
 
 @dataclass
@@ -443,7 +443,7 @@ def _same_direction(a: tuple, b: tuple) -> bool:
             and exact_sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0)
 
 
-def tiles(cones: list[tuple], feasible: tuple | None) -> bool:
+def covers(cones: list[tuple], feasible: tuple | None) -> bool:
     """Whether exact cones ``(start, end)`` cover the feasible directions.
 
     ``feasible`` is ``()`` for all directions (force closure) or the feasible
