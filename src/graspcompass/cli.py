@@ -216,6 +216,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
                         "the paper's recipe)")
     quiet_option(d)
+    from ._cli_ncontact import add_options as _add_ncontact_draw
+
+    _add_ncontact_draw(d)
 
     s = sub.add_parser(
         "steps", help="print the construction protocol",
@@ -246,6 +249,9 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--exact", action="store_true",
                    help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
+    from ._cli_ncontact import add_options as _add_ncontact
+
+    _add_ncontact(k)
 
     sub.add_parser("presets", help="list the built-in grasps of the paper",
                    description="List the built-in grasps of the paper (Fig. 6, Table I "
@@ -387,6 +393,10 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
+    if getattr(args, "contact", None):
+        from . import _cli_ncontact
+
+        return _cli_ncontact.draw(args)
     stem = _cli_file.output_stem(args, args.preset)
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
@@ -421,6 +431,10 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 def _cmd_k(args: argparse.Namespace) -> int:
     from . import _cli_k
 
+    if getattr(args, "contact", None):
+        from . import _cli_ncontact
+
+        return _cli_ncontact.run(args)
     return _cli_k.run(args, lambda: grasp_from_args(args))
 
 

@@ -1,0 +1,105 @@
+"""The contact forces at the optimum for one θ (the slip diagnosis, generalised).
+
+On the arc of θ where a vertex q_B of Q is the maximiser, the primal basic
+solution of its basis B is optimal (complementary slackness): the weights of the
+tight edges solve ``A_B x = (-F_e e(θ), 0, [0])``; the other edges carry nothing.
+For n = 2 and the paper's effort the tight edges of V_n are the cone side named
+in k_n and both sides of the other contact (the sides on which (8)-(11) is tight).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import sympy as sp
+
+from ..geometry.exact import canon
+from ..geometry.trig import sincos
+from ..inputs import angle_values
+from ._signs import det
+from .errors import NContactError
+from .polygon import exact_sgn
+
+__all__ = ["optimal_forces"]
+
+
+def _solve_exact(cols: list[list[sp.Expr]], b: list[sp.Expr]) -> list[sp.Expr] | None:
+    d = len(b)
+    M = [[cols[t][r] for t in range(d)] for r in range(d)]  # columns are the constraint rows
+    D = canon(det(M))
+    if exact_sgn(D, "a basis determinant") == 0:
+        return None
+    out = []
+    for t in range(d):
+        m = [[*row[:t], b[r], *row[t + 1:]] for r, row in enumerate(M)]
+        out.append(canon(det(m) / D))
+    return out
+
+
+def optimal_forces(g: Any, theta: Any, fe: Any) -> dict[str, Any]:
+    """See :meth:`graspcompass.ncontact.NContactGrasp.forces`."""
+    if not g.effort.linear:
+        raise NContactError("the optimal forces of the effort 'max-normal' are not available "
+                            "yet (only its values and Q)")
+    t = angle_values(theta)
+    Q = g.polygon()
+    rows, _ = g.dual_system()
+    labels = g.constraint_labels()
+    n_edges = 2 * g.n
+    edges = g.edges()
+    numeric = g.numeric or isinstance(t, (float, np.ndarray))
+    if isinstance(t, np.ndarray):
+        raise NContactError("forces() takes one θ at a time")
+    none = {"effort": None, "vertex": None, "basis": None, "weights": None, "forces": None}
+    if numeric:
+        tf = float(t)
+        e = (np.sin(tf), -np.cos(tf))
+        val = Q.support(tf, float(fe))
+        if not np.isfinite(val):
+            return {**none, "effort": float("inf")}
+        V = Q.float_vertices()
+        vals = V[:, 0] * e[0] + V[:, 1] * e[1]
+        tol = 1e-9 * (1 + np.abs(V).max())
+        ks = [int(i) for i in np.argsort(-vals) if vals[i] >= vals.max() - tol]  # ties
+    else:
+        s, c = sincos(t)
+        e = (s, -c)
+        val, k = Q.support_exact(t, fe)
+        if k is None:
+            return {**none, "effort": sp.oo}
+        ks = [k]
+    d = len(rows[0])
+    zero = 0.0 if numeric else sp.Integer(0)
+    b = [-fe * e[0], -fe * e[1]] + [zero] * (d - 2)
+    if not numeric:
+        b = [canon(v) for v in b]
+    for basis, cand in ((b, c) for c in (Q.candidates[Q.vertex_index[k]] for k in ks)
+                        for b in c.bases):
+        cols = [list(rows[r]) for r in basis]
+        if numeric:
+            M = np.array(cols, dtype=float).T
+            try:
+                x = np.linalg.solve(M, np.array(b, dtype=float))
+            except np.linalg.LinAlgError:
+                continue
+            if np.any(x < -1e-9 * (1 + np.abs(x).max())):
+                continue
+            x = [max(v, 0.0) for v in x.tolist()]
+        else:
+            x = _solve_exact(cols, b)
+            if x is None or any(exact_sgn(v, "an edge weight") < 0 for v in x):
+                continue
+        weights = {labels[r]: x[i] for i, r in enumerate(basis) if r < n_edges}
+        forces = []
+        for i in range(g.n):
+            fx = fy = zero
+            for j, (ci, _, dj) in enumerate(edges):
+                if ci == i and labels[j] in weights:
+                    fx = fx + weights[labels[j]] * dj[0]
+                    fy = fy + weights[labels[j]] * dj[1]
+            forces.append((fx, fy) if numeric else (canon(fx), canon(fy)))
+        return {"effort": val, "vertex": cand.q, "basis": [labels[r] for r in basis],
+                "weights": weights, "forces": forces}
+    raise NContactError("no basis of the optimal vertex gives nonnegative edge weights "
+                        "(a degenerate case): please report the grasp")
