@@ -156,8 +156,9 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
         g.add_argument(f"--{name}", metavar="EXPR", help=f"set {name}")
 
 
-#: The commands that take ``--timeout`` (``check`` has its own, ``explore`` is a window).
-TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan", "verify",
+#: The commands that take ``--timeout`` (``check`` and ``verify`` have their own, which
+#: keep the verdicts reached in time; ``explore`` is a window).
+TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
          "crosscheck")
 
 

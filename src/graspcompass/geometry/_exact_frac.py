@@ -24,6 +24,7 @@ from ._exact_ring import (
     _ring,
     reduce_poly,
     reduce_roots,
+    uses_opaque,
 )
 
 
@@ -157,8 +158,10 @@ class Frac:
         if reduce_poly(R, self.n).is_zero():
             raise ZeroDivisionError("division by zero")
         n, d = self.d, self.n
-        if R.roots and not R.opaque:
-            n, d = _clear_roots(R, reduce_roots(R, n), reduce_roots(R, d))
+        if R.roots:
+            n, d = reduce_roots(R, n), reduce_roots(R, d)
+            if not uses_opaque(R, n, d):
+                n, d = _clear_roots(R, n, d)
         return Frac(R, n, d)
 
     def is_zero(self) -> bool | None:

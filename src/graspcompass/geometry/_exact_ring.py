@@ -70,7 +70,9 @@ class Ring:
         self.zero = self.ctx.constant(0)
         self.index = {g: i for i, g in enumerate(symbols)}
         self.quad, self.roots = _quadratic(self)
-        self.opaque = any(g.is_number and _gen_key(g)[0] != 0 for g in symbols)
+        #: the numeric generators that are no prime square roots (sin, cos, other atoms)
+        self.opaque = tuple(i for i, g in enumerate(symbols)
+                            if g.is_number and _gen_key(g)[0] != 0)
         self.free = any(g.free_symbols for g in symbols)  # symbols: not a number
         self.root_primes = (tuple(int(g.base) for g in symbols)
                             if all(_gen_key(g)[0] == 0 for g in symbols) else None)
@@ -240,7 +242,7 @@ def _reduce(R: Ring, n, d) -> tuple:
         raise ZeroDivisionError("division by zero")
     if R.roots:
         n, d = reduce_roots(R, n), reduce_roots(R, d)
-        if not R.opaque:
+        if not uses_opaque(R, n, d):
             n, d = _clear_roots(R, n, d)
     if n.is_zero():
         return R.zero, R.one
@@ -261,6 +263,15 @@ def _reduce(R: Ring, n, d) -> tuple:
     if d.is_constant():
         return n / d.leading_coefficient(), R.one
     return _normalise(n, d)
+
+
+def uses_opaque(R: Ring, *polys: flint.fmpq_mpoly) -> bool:
+    """Whether a polynomial uses one of R's opaque generators (a sine, a cosine, an atom):
+    then the square roots stay in the denominator (clearing them by conjugates multiplies
+    the size by two per root, and is canonical only in a field of radicals)."""
+    if not R.opaque:
+        return False
+    return any(p.degrees()[i] for p in polys for i in R.opaque)
 
 
 def reduce_roots(R: Ring, p: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
@@ -301,7 +312,7 @@ def _clear_roots(R: Ring, n, d) -> tuple:
         d2 = reduce_roots(R, d * conj)
         if d2.is_zero():
             continue
-        if R.opaque and not _clearly_nonzero(R, conj):
+        if R.opaque and uses_opaque(R, conj) and not _clearly_nonzero(R, conj):
             continue
         n, d = reduce_roots(R, n * conj), d2
     return n, d

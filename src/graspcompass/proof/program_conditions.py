@@ -31,6 +31,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
 import sympy as sp
@@ -380,9 +381,17 @@ def distinct(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool:
     nums = [sp.fraction(e)[0] for e in exprs]
     if any(n.is_number and n != 0 for n in nums):
         return True
-    k = sp.Integer(1)
+    # k ≠ 0 exactly when each of its distinct irreducible factors is (python-flint's
+    # factors, each once): the same denominators recur in many assumed expressions, and
+    # their plain product made 1 − t·k run to hundreds of terms (seconds of Buchberger)
+    bases: dict[sp.Expr, None] = {}
     for e in assumed:
-        k *= sp.fraction(sp.together(_expand_trig(sp.sympify(e))))[0]
+        num = sp.fraction(sp.together(_expand_trig(sp.sympify(e))))[0]
+        for f in sp.Mul.make_args(_factor(num)):
+            base = f.base if f.is_Pow and f.exp.is_Integer and f.exp > 0 else f
+            if not base.is_number:
+                bases[base] = None
+    k = sp.Mul(*bases)
     free = set().union(*(n.free_symbols for n in nums)) | k.free_symbols
     for s in (S.x1, S.x2, S.mu1, S.mu2):
         if s in free:
@@ -396,15 +405,25 @@ def distinct(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool:
     sub: dict[sp.Basic, sp.Symbol] = {}
     rels = []
     for ang in angles:
-        s_, c_ = sp.Dummy(f"s_{ang}"), sp.Dummy(f"c_{ang}")
+        s_, c_ = sp.Symbol(f"_s_{ang}"), sp.Symbol(f"_c_{ang}")  # not Dummy: remembered
         sub[sp.sin(ang)], sub[sp.cos(ang)] = s_, c_
         rels.append(s_**2 + c_**2 - 1)
-    t = sp.Dummy("t")
+    t = sp.Symbol("_t")
     polys = [n.xreplace(sub) for n in nums] + rels + [1 - t * k.xreplace(sub)]
     gens = [t, *sorted({g for p in polys for g in p.free_symbols} - {t}, key=str)]
     if len(gens) > 12 or sp.count_ops(k) > 2000:
         return False
+    return _unit_ideal(tuple(polys), tuple(gens))
+
+
+@lru_cache(maxsize=256)
+def _unit_ideal(polys: tuple[sp.Expr, ...], gens: tuple[sp.Symbol, ...]) -> bool:
+    """Whether the polynomials generate the unit ideal (their Gröbner basis is [1]).
+
+    Remembered: the circles of a construction ask the same question again for each pair
+    of centres (B12, B13, B14 all start from circle 1), and sympy's Buchberger takes
+    seconds on each."""
     try:
-        return list(sp.groebner(polys, *gens, order="grevlex").exprs) == [1]
+        return list(sp.groebner(list(polys), *gens, order="grevlex").exprs) == [1]
     except (sp.PolynomialError, ValueError, TypeError, ArithmeticError, NotImplementedError):
         return False
