@@ -85,6 +85,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
+from ..inputs import _nested_size  # the entries of a nested list, before it is copied
 from . import _envelope
 
 __all__ = [
@@ -337,18 +338,6 @@ def _refuse(xp: Any, p: list, ok: Any) -> None:
 #: (as :data:`graspcompass.inputs.MAX_ARRAY_SIZE`).
 MAX_ARRAY_SIZE = 10_000_000
 
-
-def _nested_size(value: list | tuple) -> int:
-    """The entries a nested list would have, from the lengths of its first elements."""
-    size, item = 1, value
-    for _ in range(32):
-        if not isinstance(item, (list, tuple)):
-            break
-        size *= len(item)
-        if not item:
-            break
-        item = item[0]
-    return size
 
 
 def _outside(v: Any, name: str) -> Any:

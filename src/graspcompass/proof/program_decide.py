@@ -297,19 +297,24 @@ def _sample(program: Program, rng: random.Random) -> dict[str, sp.Expr]:
         if f"phi{i}" in names:
             pt[f"phi{i}"] = sp.pi * sp.Rational(rng.randint(1, 12), 12)
     for p in program.params:
-        if p.name in pt:
-            continue
-        if p.domain == "angle":
-            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 12), 12)
-        elif p.domain == "half_angle":
-            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 5), 12)
-        elif p.domain == "nonnegative" and rng.random() < 0.2:
-            pt[p.name] = sp.Integer(0)
-        elif p.domain == "real":
-            pt[p.name] = rng.choice(_LENGTHS) * rng.choice((-1, 1))
-        else:
-            pt[p.name] = rng.choice(_LENGTHS)
+        if p.name not in pt:
+            pt[p.name] = grid_value(p.domain, rng)
     return pt
+
+
+def grid_value(domain: str, rng: random.Random) -> sp.Expr:
+    """An exact sample of a parameter of the given domain: an angle in steps of π/12, a
+    half angle below π/2, a length of :data:`_LENGTHS` (0 one time in five where it may be,
+    either sign for a real)."""
+    if domain == "angle":
+        return sp.pi * sp.Rational(rng.randint(1, 12), 12)
+    if domain == "half_angle":
+        return sp.pi * sp.Rational(rng.randint(1, 5), 12)
+    if domain == "nonnegative" and rng.random() < 0.2:
+        return sp.Integer(0)
+    if domain == "real":
+        return rng.choice(_LENGTHS) * rng.choice((-1, 1))
+    return rng.choice(_LENGTHS)
 
 
 def _admissible(program: Program, pt: Mapping[str, sp.Expr]) -> bool:

@@ -47,14 +47,13 @@ from ..geometry.exact import decide_sign
 from ..geometry.trig import sincos
 from .model import violations
 from .program_conditions import operation_conditions
+from .program_decide import grid_value
 
 __all__ = ["conditions_hold", "find", "sign_score", "value_at"]
 
 _MODEL = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
 _GRID_MUS = tuple(sp.Rational(n, d) for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15),
                                                   (1, 1), (7, 24), (15, 8)))
-_GRID_LENGTHS = tuple(sp.Rational(n, d) for n, d in ((1, 2), (1, 1), (3, 2), (2, 1), (3, 1),
-                                                      (7, 5), (5, 3), (1, 3)))
 _FAILURES = (GeometryError, InputError, ArithmeticError, ValueError, TypeError, KeyError,
              AttributeError, NotImplementedError, RecursionError)
 
@@ -112,18 +111,8 @@ def _pyth_mu(rng: random.Random) -> sp.Rational:
 def _grid(program: Program, rng: random.Random) -> dict[str, sp.Expr]:
     pt: dict[str, sp.Expr] = {}
     for p in program.params:
-        if p.name in ("mu1", "mu2", "xi1", "xi2"):
-            continue
-        if p.domain == "angle":
-            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 12), 12)
-        elif p.domain == "half_angle":
-            pt[p.name] = sp.pi * sp.Rational(rng.randint(1, 5), 12)
-        elif p.domain == "nonnegative" and rng.random() < 0.2:
-            pt[p.name] = sp.Integer(0)
-        elif p.domain == "real":
-            pt[p.name] = rng.choice(_GRID_LENGTHS) * rng.choice((-1, 1))
-        else:
-            pt[p.name] = rng.choice(_GRID_LENGTHS)
+        if p.name not in ("mu1", "mu2", "xi1", "xi2"):
+            pt[p.name] = grid_value(p.domain, rng)
     _friction(program, pt, rng.choice(_GRID_MUS), rng.choice(_GRID_MUS))
     return pt
 
