@@ -133,10 +133,12 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
     seg = clip_segment(a, b, box)
     if seg is None or math.dist(a, b) < 1e-9 * span:
         return ax.plot([a[0]], [a[1]], marker="|", color=color, ms=4, lw=0)
-    tail = "<" if math.dist(seg[0], a) < 1e-12 * span else "-"
-    head = ">" if math.dist(seg[1], b) < 1e-12 * span else "-"
+    tail = math.dist(seg[0], a) < 1e-12 * span  # an arrow head only where the length ends
+    head = math.dist(seg[1], b) < 1e-12 * span  # inside the view ("<--" is no style)
+    style = {(True, True): "<->", (True, False): "<-", (False, True): "->",
+             (False, False): "-"}[tail, head]
     arrow = ax.annotate("", seg[1], xytext=seg[0], annotation_clip=False, zorder=2.4,
-                        arrowprops=dict(arrowstyle=f"{tail}-{head}", color=color,
+                        arrowprops=dict(arrowstyle=style, color=color,
                                         lw=hl.get("lw", theme.thin_width), shrinkA=0,
                                         shrinkB=0, mutation_scale=7))
     return [arrow]
