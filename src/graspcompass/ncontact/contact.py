@@ -22,18 +22,22 @@ from ..inputs import real_value
 from ._signs import sign
 from .errors import InvalidContactError
 
-__all__ = ["Contact", "read_contact"]
+__all__ = ["Contact", "read_contact", "read_number"]
 
 
-def _read(value: Any, name: str) -> sp.Expr:
+def read_number(value: Any, name: str,
+                error: type[InputError] = InvalidContactError) -> sp.Expr:
+    """``value`` through the input boundary (:func:`graspcompass.inputs.real_value`), a
+    number without symbols; anything refused is raised again as ``error`` (the contacts'
+    and the efforts' named errors)."""
     try:
         v = real_value(value, name)
     except InputError as exc:
-        raise InvalidContactError(str(exc)) from None
+        raise error(str(exc)) from None
     if v.free_symbols:
-        raise InvalidContactError(f"{name}: symbols are not supported by the n-contact model, "
-                                  f"got {v}")
+        raise error(f"{name}: symbols are not supported by the n-contact model, got {v}")
     return v
+
 
 
 @dataclass(frozen=True)
@@ -131,7 +135,7 @@ def read_contact(spec: Any, index: int) -> Contact:
                                   "friction as mu or as xi (exactly one of each)")
     if "x" not in d or "y" not in d:
         raise InvalidContactError(f"{where}: the point needs x and y")
-    vals = {k: _read(v, f"{where}: {k}") for k, v in d.items()}
+    vals = {k: read_number(v, f"{where}: {k}") for k, v in d.items()}
     numeric = any(has_float(v) for v in vals.values())
     if "angle" in vals:
         a = vals["angle"]

@@ -22,9 +22,8 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import InputError
 from ..geometry.exact import canon, has_float
-from ..inputs import real_value
+from .contact import read_number
 from .errors import EffortError
 
 __all__ = ["EFFORTS", "Effort", "read_effort"]
@@ -58,13 +57,7 @@ class Effort:
 
 
 def _num(v: Any, name: str) -> sp.Expr:
-    try:
-        x = real_value(v, name)
-    except InputError as exc:
-        raise EffortError(str(exc)) from None
-    if x.free_symbols:
-        raise EffortError(f"{name}: symbols are not supported, got {x}")
-    return x
+    return read_number(v, name, EffortError)
 
 
 def read_effort(spec: Any, contacts: tuple) -> Effort:
