@@ -9,11 +9,28 @@ from its canonical form in integer balls.  Private to
 
 from __future__ import annotations
 
+import flint
 import sympy as sp
 
 from ._exact_bounds import _IV_PREC, _balls, _clearly_nonzero, _float_sign, _intervals
 from ._exact_canon import canon, free, has_float, sym
-from ._exact_ring import _MEMO, reduce_poly
+from ._exact_ring import _MEMO, Ring, reduce_poly
+
+#: Above this many terms a symbolic numerator is not handed to sympy's assumptions
+#: (they settle small sums such as ``(x + 1)**2`` with ``x > 0``; on the long
+#: numerators of a symbolic construction they only take time to answer None).
+_ASSUME_TERMS = 8
+
+
+def _positive_terms(R: Ring, n: flint.fmpq_mpoly) -> bool:
+    """Every term of ``n`` is a positive rational times powers of positive symbols, so
+    ``n > 0`` wherever the symbols' assumptions hold (and ``n ≠ 0``)."""
+    pos = [g.is_Symbol and g.is_positive is True for g in R.symbols]
+    for m, c in n.to_dict().items():
+        if c <= 0 or any(e and not pos[i] for i, e in enumerate(m[:R.ngens])):
+            return False
+    return True
+
 
 #: Digits used to separate a non-zero exact number from zero before an exact test.
 _PREC = 40
@@ -52,10 +69,15 @@ def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
     hit = _MEMO.get(expr)
     if hit is not None:  # a canonical number: 0 when its numerator reduces to 0
         R, n, _ = hit
-        if reduce_poly(R, n).is_zero():
+        n = reduce_poly(R, n)
+        if n.is_zero():
             return True
         if not R.free and _clearly_nonzero(R, n):
             return False
+        if R.free and _positive_terms(R, n):
+            return False
+        if R.free and len(n) > _ASSUME_TERMS:
+            return None  # not 0 modulo the relations; too long to ask the assumptions
     if free(expr):
         reduced = canon(expr)
         if reduced == 0:

@@ -11,6 +11,7 @@ every denominator it meets.  No gcd, no ``expand`` of sympy trees, no
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import sympy as sp
@@ -73,11 +74,20 @@ class RingForm:
 
     def as_expr(self, p: Any) -> sp.Expr:
         """The polynomial ``p`` as a sympy expression (roots written as ``sqrt``)."""
-        e = p.as_expr() if hasattr(p, "as_expr") else sp.sympify(p)  # internal: ring element
-        back = {self.ring.symbols[i]: r for i, _, r in self.roots}
-        back.update({self.ring.symbols[i]: g for i, g in enumerate(self.gens) if i not in
-                     {r[0] for r in self.roots}})
-        return e.xreplace(back)
+        if not hasattr(p, "as_expr"):
+            return sp.sympify(p)  # internal: a ground number
+        return p.as_expr(*self._back)
+
+    @cached_property
+    def _back(self) -> tuple[sp.Expr, ...]:
+        """The expression of each generator (a root's ``w`` as its ``sqrt``), in order:
+        :meth:`as_expr` writes them in directly instead of substituting afterwards."""
+        back = [*self.ring.symbols] if self.gens else [sp.Integer(1)]
+        for i, g in enumerate(self.gens):
+            back[i] = g
+        for i, _, r in self.roots:
+            back[i] = r
+        return tuple(back)
 
     def describe_relations(self) -> str:
         """The relations in words."""

@@ -24,6 +24,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ._flint import factor_list
 from .prove import CONDITION_1, sign_of
 from .reduce import reduce_expr
 
@@ -324,7 +325,7 @@ def classify(poly: Any) -> tuple[list[tuple[str, str]], list[str]]:
         raise ValueError(f"the condition {_text(poly)} ≠ 0 is false for every parameter")
     if whole is not None:
         return [(f"{_text(_primitive(poly))} ≠ 0", whole)], []
-    factors = [f for f, _ in poly.factor_list()[1]] if len(poly.terms()) <= 40 else [poly]
+    factors = [f for f, _ in factor_list(poly)[1]] if len(poly.terms()) <= 40 else [poly]
     for f in factors:
         why = _classify_factor(f)
         if why == "identically zero":  # pragma: no cover - the product would reduce to 0

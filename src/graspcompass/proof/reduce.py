@@ -35,6 +35,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ..errors import GraspCompassError
+from ._flint import factor_list
 from ._ring import RingForm, to_ring
 from .model import outside_expr
 
@@ -79,8 +80,9 @@ class Reduction:
 
     Attributes
     ----------
-    remainder : sympy.Expr
-        Normal form of the numerator modulo the relations (0 proves the identity).
+    remainder_poly : PolyElement or int
+        Normal form of the numerator modulo the relations, in the ring of ``form``
+        (0 proves the identity); :attr:`remainder` is the same as an expression.
     denominator_poly : PolyElement
         The product of every denominator met (no cancellation), in the ring of ``form``;
         :attr:`denominator` is the same as an expression.
@@ -94,11 +96,20 @@ class Reduction:
         The ring of the reduction.
     """
 
-    remainder: sp.Expr
+    remainder_poly: Any = field(repr=False)
     denominator_poly: Any = field(repr=False)
     factors: tuple[sp.Expr, ...] = ()
     certificate: dict[str, Any] | None = field(default=None, compare=False)
     form: RingForm | None = field(default=None, repr=False, compare=False)
+
+    @cached_property
+    def remainder(self) -> sp.Expr:
+        """The normal form of the numerator as an expression (built on demand: a
+        non-zero normal form can be long, and a zero test does not need it)."""
+        p = self.remainder_poly
+        if not p:
+            return sp.Integer(0)
+        return self.form.as_expr(p) if self.form is not None else sp.sympify(p)
 
     @cached_property
     def denominator(self) -> sp.Expr:
@@ -110,7 +121,12 @@ class Reduction:
     @property
     def is_zero(self) -> bool:
         """True when the expression vanishes identically (where defined)."""
-        return self.remainder == 0
+        if not self.remainder_poly:
+            return True
+        # a root's generator written back as its sqrt may let sympy cancel what the
+        # ring keeps apart (sqrt(5*a**2) is sqrt(5)*a for a > 0): only then is the
+        # expression built
+        return bool(self.form is not None and self.form.roots and self.remainder == 0)
 
 
 #: Normal form of a denominator -> its irreducible factors: by content (the ring's
@@ -135,7 +151,7 @@ def _irreducible(p: Any) -> list[Any]:
             if h.is_ground:
                 return [p]
             return [p.exquo(h), *_irreducible(h)]
-    return [f for f, _ in p.factor_list()[1]]
+    return [f for f, _ in factor_list(p)[1]]
 
 
 def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
@@ -194,13 +210,13 @@ def _reduce(expr: sp.Expr) -> Reduction:
     (num, den), dens = form.values[0], form.denominators[0]
     factors = _factors(form, dens, expr)
     if not num:
-        return Reduction(sp.Integer(0), den, factors,
+        return Reduction(0, den, factors,
                          form.certificate(num, [R0 * 0 for R0 in form.relations]), form)
     if not form.relations:
-        return Reduction(form.as_expr(num), den, factors, None, form)
+        return Reduction(num, den, factors, None, form)
     quotients, rem = num.div(form.relations)
     cert = form.certificate(num, quotients) if not rem else None
-    return Reduction(form.as_expr(rem) if rem else sp.Integer(0), den, factors, cert, form)
+    return Reduction(rem, den, factors, cert, form)
 
 
 def is_identically_zero(expr: sp.Expr) -> bool:

@@ -92,7 +92,20 @@ def _interval_pieces(form: sp.Expr, intervals: Intervals):
     return (lo + left, hi + left), pieces, left
 
 
+#: ``_trig`` by content: (the sine or cosine, the intervals as items) -> its answer.
+_TRIG_MEMO: dict[tuple, tuple[Sign, dict] | None] = {}
+
+
 def _trig(f: sp.Expr, intervals: Intervals) -> tuple[Sign, dict] | None:
+    key = (f, tuple(intervals.items()))
+    if key not in _TRIG_MEMO:
+        if len(_TRIG_MEMO) > 4096:
+            _TRIG_MEMO.clear()
+        _TRIG_MEMO[key] = _trig_sign(f, intervals)
+    return _TRIG_MEMO[key]
+
+
+def _trig_sign(f: sp.Expr, intervals: Intervals) -> tuple[Sign, dict] | None:
     got = _interval_pieces(f.args[0], intervals)
     if got is None:
         return None
@@ -176,12 +189,14 @@ def sign_reason(f: Any, intervals: Intervals = CONDITION_1) -> tuple[Sign, dict]
             out = _mul(out, b[0])
         return out, {"type": "pow", "base": b[1], "exp": int(f.exp), "sign": list(out)}
     if f.is_Mul or f.is_Add:
-        parts = [sign_reason(a, intervals) for a in f.args]
-        if any(p is None for p in parts):
-            return None
-        acc: Sign | None = parts[0][0]  # type: ignore[index]
-        for p in parts[1:]:
-            acc = _mul(acc, p[0]) if f.is_Mul else _add(acc, p[0])  # type: ignore
+        parts = []
+        acc: Sign | None = None
+        for a in f.args:  # the first part of unknown sign settles it: no more work
+            p = sign_reason(a, intervals)
+            if p is None:
+                return None
+            parts.append(p)
+            acc = p[0] if acc is None else _mul(acc, p[0]) if f.is_Mul else _add(acc, p[0])
             if acc is None:
                 return None
         kind = "mul" if f.is_Mul else "add"
