@@ -267,56 +267,59 @@ def decide(conditions: Iterable[Condition], cond1: bool,
         model, ``"e ≥ 0"`` kept as conditions.
     """
     out = Decided()
+    ties = tuple(sorted(tie.items(), key=str)) if tie else ()
+    for rel, e in dict.fromkeys(conditions):
+        for bucket, text in _decide_one(rel, sp.sympify(e), cond1, ties):
+            # internal: conditions the parser and the kernel made
+            mine = getattr(out, bucket)
+            if text not in mine:
+                mine.append(text)
+    return out
+
+
+@lru_cache(maxsize=4096)
+def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple
+                ) -> tuple[tuple[str, str], ...]:
+    """One condition of :func:`decide`: ``((bucket, text), ...)`` with bucket one of
+    implied, false, extra.  Remembered by content: the conditions of a step recur in
+    every step and claim built on it."""
     intervals = CONDITION_1 if cond1 else _DOMAIN_INTERVALS
     why = "condition (1)" if cond1 else "the domains"
-    for rel, e in dict.fromkeys(conditions):
-        e = sp.sympify(e)  # internal: conditions the parser and the kernel made
-        if tie:
-            e = e.xreplace(tie)
-        text = f"{e} {_WORD[rel]}"
-        z = _zero(e)
-        if z:
-            (out.implied if rel == ">=" else out.false).append(
-                text + " (identically zero)" if rel == ">=" else text)
-            continue
-        s = _sign(e, intervals)
-        if s is not None:
-            lo, hi = s
-            holds = {"!=": lo > 0 or hi < 0, ">=": lo >= 0, ">": lo > 0}[rel]
-            fails = {"!=": lo == hi == 0, ">=": hi < 0, ">": hi <= 0}[rel]
-            if holds:
-                out.implied.append(f"{text} (sign from {why})")
-                continue
-            if fails and not cond1:  # false on the domains alone: false on the whole model
-                out.false.append(text)
-                continue
-            if fails:
-                out.false.append(text)
-                continue
-        if rel in (">=", ">") and _positive_sum(-e, intervals):  # negative everywhere
-            out.false.append(text)
-            continue
-        if rel in (">=", ">") and _positive_sum(e, intervals):
-            out.implied.append(f"{text} (a positive sum of squares and signs from {why})")
-            continue
-        if rel == "!=" and _ring_nonzero(e):
-            out.implied.append(f"{text} (a positive polynomial of x1, x2, μ modulo "
-                               "sin² + cos² = 1)")
-            continue
-        if rel == "!=":
-            split = _classified(e, cond1)
-            if split is False:
-                out.false.append(text)
-                continue
-            if split is not None:
-                out.implied += [t for t in split[0] if t not in out.implied]
-                out.extra += [t for t in split[1] if t not in out.extra]
-                continue
-        if e.is_number and not e.free_symbols and z is False:
-            out.implied.append(f"{text} (a number)")
-            continue
-        out.extra.append(text)
-    return out
+    if ties:
+        e = e.xreplace(dict(ties))
+    z = _zero(e)
+
+    def text() -> str:  # printed only where the answer shows it (sympy prints slowly)
+        return f"{e} {_WORD[rel]}"
+
+    if z:
+        return ((("implied", text() + " (identically zero)") if rel == ">=" else
+                 ("false", text())),)
+    s = _sign(e, intervals)
+    if s is not None:
+        lo, hi = s
+        holds = {"!=": lo > 0 or hi < 0, ">=": lo >= 0, ">": lo > 0}[rel]
+        fails = {"!=": lo == hi == 0, ">=": hi < 0, ">": hi <= 0}[rel]
+        if holds:
+            return (("implied", f"{text()} (sign from {why})"),)
+        if fails:  # false on the domains (or on (1)): false on the whole model
+            return (("false", text()),)
+    if rel in (">=", ">") and _positive_sum(-e, intervals):  # negative everywhere
+        return (("false", text()),)
+    if rel in (">=", ">") and _positive_sum(e, intervals):
+        return (("implied", f"{text()} (a positive sum of squares and signs from {why})"),)
+    if rel == "!=" and _ring_nonzero(e):
+        return (("implied", f"{text()} (a positive polynomial of x1, x2, μ modulo "
+                            "sin² + cos² = 1)"),)
+    if rel == "!=":
+        split = _classified(e, cond1)
+        if split is False:
+            return (("false", text()),)
+        if split is not None:
+            return (*(("implied", t) for t in split[0]), *(("extra", t) for t in split[1]))
+    if e.is_number and not e.free_symbols and z is False:
+        return (("implied", f"{text()} (a number)"),)
+    return (("extra", text()),)
 
 
 def _norm2(p: Point) -> sp.Expr:

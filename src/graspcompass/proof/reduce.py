@@ -35,7 +35,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ..errors import GraspCompassError
-from ._flint import factor_list
+from ._flint import divide, factor_list
 from ._ring import RingForm, to_ring
 from .model import outside_expr
 
@@ -214,7 +214,13 @@ def _reduce(expr: sp.Expr) -> Reduction:
                          form.certificate(num, [R0 * 0 for R0 in form.relations]), form)
     if not form.relations:
         return Reduction(num, den, factors, None, form)
-    quotients, rem = num.div(form.relations)
+    # roots (outer, then inner) before sin² + cos² − 1: see _flint.divide
+    npairs = len(form.pairs)
+    order = [*range(npairs, len(form.relations)), *range(npairs)]
+    qs, rem = divide(num, [form.relations[i] for i in order])
+    quotients = [R0 * 0 for R0 in form.relations]
+    for i, q in zip(order, qs):
+        quotients[i] = q
     cert = form.certificate(num, quotients) if not rem else None
     return Reduction(rem, den, factors, cert, form)
 
