@@ -129,6 +129,15 @@ def _iv_text(form: sp.Expr, iv: tuple[Any, Any]) -> str:
 
 def _interval_hypotheses(intervals: Intervals) -> tuple[list[str], list[Any]]:
     """Names of the interval hypotheses, and the extra relations they add to the model."""
+    items = tuple((k, tuple(v)) for k, v in intervals.items())
+    names, rels = _interval_hypotheses_of(items)
+    return list(names), list(rels)
+
+
+@functools.lru_cache(maxsize=512)
+def _interval_hypotheses_of(items: tuple) -> tuple[tuple[str, ...], tuple[Any, ...]]:
+    """:func:`_interval_hypotheses` by content (the catalogue asks again per claim)."""
+    intervals = dict(items)
     names, rels = [], []
     if any(CONDITION_1.get(k) == tuple(v) for k, v in intervals.items()):
         names.append(CONDITION_1_NAME)
@@ -141,7 +150,7 @@ def _interval_hypotheses(intervals: Intervals) -> tuple[list[str], list[Any]]:
             names.append(_iv_text(k, v))
             rels += [sp.StrictGreaterThan(k, v[0], evaluate=False),
                      sp.StrictLessThan(k, v[1], evaluate=False)]
-    return names, rels
+    return tuple(names), tuple(rels)
 
 
 def _context(assumptions: Sequence[Any], domains: Mapping | None,
