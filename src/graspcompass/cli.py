@@ -229,6 +229,9 @@ def build_parser() -> argparse.ArgumentParser:
     _add_grasp_options(s)
     _cli_file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
+    from ._cli_ncontact import add_options as _add_ncontact_steps
+
+    _add_ncontact_steps(s)
 
     k = sub.add_parser(
         "k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
@@ -394,11 +397,12 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
-    if getattr(args, "contact", None):
-        from . import _cli_ncontact
+    from . import _cli_ncontact
 
+    if _cli_ncontact.wants_contacts(args) and args.step is None:
         return _cli_ncontact.draw(args)
-    stem = _cli_file.output_stem(args, args.preset)
+    stem = ("ncontact-steps" if _cli_ncontact.wants_contacts(args) else
+            _cli_file.output_stem(args, args.preset))
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
     if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
@@ -430,11 +434,9 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 
 
 def _cmd_k(args: argparse.Namespace) -> int:
-    from . import _cli_k
+    from . import _cli_k, _cli_ncontact
 
-    if getattr(args, "contact", None):
-        from . import _cli_ncontact
-
+    if _cli_ncontact.wants_contacts(args):
         return _cli_ncontact.run(args)
     return _cli_k.run(args, lambda: grasp_from_args(args))
 

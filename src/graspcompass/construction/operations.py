@@ -281,4 +281,4 @@ _ALL = _ALL + _NCONTACT
 OPERATIONS: Mapping[str, Operation] = MappingProxyType({op.name: op for op in _ALL})
 
 #: Roles of the n-contact vertex recipe (issue 25), kept apart from the paper's.
-ROLES = ROLES + ("cost_point", "cost_line", "transfer", "image", "vertex")
+ROLES = (*ROLES, "edge", "cost_point", "cost_line", "transfer", "image")
