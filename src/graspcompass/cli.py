@@ -283,6 +283,10 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--certify", action="store_true",
                    help="also certify the symbolic construction (every admissible grasp) and, "
                    "if grasp options are given, that grasp's construction")
+    v.add_argument("--ncontact", action="store_true",
+                   help="also prove the n-contact claims (docs/ncontact.md): V1..V4 as dual "
+                        "vertices of the n-contact LP, their dual feasibility, complementary "
+                        "slackness, the shorter recipe (about 30 s more)")
     v.add_argument("--timeout", type=_cli_check._seconds, default=None, metavar="S",
                    help="stop after S seconds for the whole run (catalogue and --certify; "
                         "default: no limit): the verdicts reached by then are kept, the rest "
@@ -488,7 +492,10 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     budget = Budget(args.timeout)
     if args.certify:  # the symbolic construction is made before the clock starts
         symbolic = internal_force_diagram(Grasp.symbolic("mu"))
-    reports = proof.run_catalogue(quiet=args.quiet or args.json, budget=budget)
+    from .proof.catalogue import CLAIMS, ncontact_extra
+
+    claims = (*CLAIMS, *ncontact_extra()) if args.ncontact else CLAIMS
+    reports = proof.run_catalogue(claims, quiet=args.quiet or args.json, budget=budget)
     status = proof.exit_status(reports)
     late = sum(r.result.method == TIMED_OUT for r in reports)
     if markdown is not None:
