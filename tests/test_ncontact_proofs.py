@@ -43,3 +43,12 @@ def test_v1_formula_dual_feasibility_and_slackness_proved() -> None:
         r = check(by[cid])
         assert r.status is Status.PROVED and "condition (1)" in r.hypotheses, cid
     assert _dual(3, -1).status is Status.REFUTED
+
+
+def test_three_fingers_symbolic_vertex_constructed_and_dual_feasible() -> None:
+    by = {c.id: c for c in ncontact_extra()}
+    r = check(by["nc3-constructed"])
+    assert r.status is Status.PROVED and any("mu1**2" in c for c in r.conditions)
+    d = check(by["nc3-dual"])
+    assert d.status is Status.PROVED and any("π/3" in h for h in d.hypotheses)
+    assert check(by["nc3-vertex"]).status is Status.PROVED

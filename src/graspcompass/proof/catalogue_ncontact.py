@@ -15,6 +15,11 @@ written here from first principles: edges along the cone sides of §2.2.2, costs
   (the arc of V_n) the least effort is ``V_n·e(θ)``, eqs. (31)-(32);
 * ``nc2-short``: the shorter recipe (recipes/short.gc) constructs these V_n
   (the checker's proof of its claims, under (1) and y ≠ 0);
+* ``nc3-*`` (three contacts, symbolic): three fingers 120° apart at radius r with
+  friction μ and the sum of the normal forces: the vertex of {both edges at P1,
+  edge − at P2} is (1, (3 − √3μ)/(3μ + √3)) (Cramer), the three-force recipe replayed
+  with the kernel constructs it (if μ² ≠ 1/3), it is dual feasible for ξ < π/3, and
+  complementary slackness holds;
 * ``table1c-V4-redundant``: in Table I(c), V4 = (4/7, 10/7) lies strictly inside the
   triangle V1V2V3 (exact orientation signs), so V4·e < max(V1·e, V2·e, V3·e) for every
   e ≠ 0 and circle 4 never reaches the envelope of Fig. 7(c).
@@ -165,6 +170,99 @@ def _table1c() -> ProofResult:
     return redundant_inside(V)
 
 
+# -- three contacts: three fingers 120° apart on a circle of radius r (x1), friction μ (mu1),
+# the sum of the normal forces; the vertex of the basis {both edges at P1, edge - at P2}
+_R3 = sp.sqrt(3)
+#: The stated vertex (derived by hand from the velocity image: R = T1 + ..., turned).
+Q3 = (sp.Integer(1), (3 - _R3 * mu1) / (3 * mu1 + _R3))
+_XI_60 = "ξ < π/3 (μ < √3)"
+
+
+def _three_fingers() -> list[tuple]:
+    """(contact, point, edge direction) of the six edges: P_i = r u_i, n_i = -u_i, d = n ± μ J n."""
+    us = [(sp.Integer(1), sp.Integer(0)), (-sp.Rational(1, 2), _R3 / 2),
+          (-sp.Rational(1, 2), -_R3 / 2)]
+    out = []
+    for i, (ux, uy) in enumerate(us):
+        nx, ny = -ux, -uy
+        for sg in (1, -1):
+            out.append((i, (x1 * ux, x1 * uy), (nx - sg * mu1 * ny, ny + sg * mu1 * nx)))
+    return out
+
+
+_B3 = (0, 1, 3)
+
+
+@cache
+def _basis3() -> tuple:
+    E = _three_fingers()
+
+    def g(j: int) -> sp.Matrix:
+        _, (px, py), (dx, dy) = E[j]
+        return sp.Matrix([dx, dy, px * dy - py * dx])
+
+    G = sp.Matrix.hstack(*[g(j) for j in _B3])
+    yb = G.T.LUsolve(sp.Matrix([1, 1, 1])).applyfunc(lambda v: sp.factor(sp.simplify(v)))
+    slacks = [sp.factor(sp.simplify(1 - (g(j).T * yb)[0])) for j in range(6) if j not in _B3]
+    return G, yb, slacks
+
+
+def _nc3_formula() -> ProofResult:
+    t0 = time.perf_counter()
+    _, yb, _ = _basis3()
+    return conjunction([], "Cramer's rule on the basis vs the stated vertex", t0,
+                       [prove_identity(-yb[i], Q3[i]) for i in range(2)])
+
+
+def _nc3_constructed() -> ProofResult:
+    """The three-force recipe replayed with the kernel (symbolic r, μ)."""
+    from .. import geometry as geo
+    from ..construction.operations import OPERATIONS
+    from ..geometry import Point
+
+    t0 = time.perf_counter()
+    E = _three_fingers()
+    par, turn = OPERATIONS["parallel_to_points"].function, OPERATIONS["quarter_turn"].function
+    O = Point(0, 0)  # noqa: E741 - the paper's name
+    P1, P2 = Point(*E[0][1]), Point(*E[2][1])
+    T1, T2 = Point(0, 1), Point(-_R3 / 2, -sp.Rational(1, 2))  # J^T n_i, n_i = -u_i
+    edge = geo.line_with_direction(P2, Point(*E[3][2]))
+    cost = geo.parallel(edge, T2)
+    image = geo.meet(cost, par(P1, P2, T1))
+    R = geo.meet(par(P1, O, T1), par(P2, O, image))
+    q = turn(R, O)
+    return conjunction([], "kernel replay (meets, parallels, quarter turn) vs the stated vertex",
+                       t0, [prove_identity(q.x, Q3[0]), prove_identity(q.y, Q3[1])])
+
+
+def _nc3_dual(s: int = 1) -> ProofResult:
+    from .signs import CONDITION_1
+
+    t0 = time.perf_counter()
+    _, _, slacks = _basis3()
+    iv = dict(CONDITION_1)
+    iv[xi1] = (0, sp.pi / 3)
+    iv[sp.pi / 3 - xi1] = (0, sp.pi / 3)
+    den = 1 / (3 * mu1 + _R3)
+    witnesses = [[12, mu1, den],
+                 [3, _R3 * mu1 + 1, 2 * sp.sin(sp.pi / 3 - xi1), 1 / sp.cos(xi1), den],
+                 [3 * _R3, mu1 ** 2 + 1, den]]
+    parts = [prove_sign(e, s, witness=w, intervals=iv, assumptions=[mu1 < _R3])
+             for e, w in zip(slacks, witnesses)]
+    return conjunction([], "the three other edges' slacks > 0 (witnesses)", t0, parts)
+
+
+def _nc3_cs() -> ProofResult:
+    t0 = time.perf_counter()
+    G, _, _ = _basis3()
+    parts = []
+    for ex, ey in ((1, 0), (0, 1)):
+        a = G.LUsolve(sp.Matrix([-ex, -ey, 0])).applyfunc(lambda v: sp.factor(sp.simplify(v)))
+        parts.append(prove_identity(a[0] + a[1] + a[2], Q3[0] * ex + Q3[1] * ey))
+    return conjunction([], "primal value on the basis = q·e (linear in e: two identities)",
+                       t0, parts)
+
+
 def ncontact_claims() -> list[Claim]:
     """The claims of the n-contact extension, in order."""
     out: list[Claim] = []
@@ -185,6 +283,19 @@ def ncontact_claims() -> list[Claim]:
     out.append(Claim("nc2-short", "recipes/short.gc", "the shorter recipe (four parallels and a "
                      "quarter turn a vertex) constructs V1..V4 of (28)-(39)", _short,
                      printed=False, hypotheses=(H1, "y ≠ 0")))
+    three = "three fingers 120° apart at radius r, friction μ, the sum of the normal forces"
+    out.append(Claim("nc3-vertex", "docs/ncontact.md", f"{three}: the dual vertex of the basis "
+                     "{both edges at P1, edge − at P2} is q = (1, (3 − √3μ)/(3μ + √3))",
+                     _nc3_formula, printed=False, hypotheses=()))
+    out.append(Claim("nc3-constructed", "docs/ncontact.md, recipe", f"{three}: the three-force "
+                     "recipe (cost line, two parallels, a quarter turn) constructs that q",
+                     _nc3_constructed, printed=False, hypotheses=()))
+    out.append(Claim("nc3-dual", "docs/ncontact.md", f"{three}: the basis is dual feasible "
+                     "(the other three edges' slacks > 0) for ξ < π/3", _nc3_dual,
+                     printed=False, hypotheses=(_XI_60,)))
+    out.append(Claim("nc3-cs", "docs/ncontact.md", f"{three}: complementary slackness: the "
+                     "primal solution on the basis costs q·e for every e (so the least effort "
+                     "is q·e(θ) wherever it is >= 0)", _nc3_cs, printed=False, hypotheses=()))
     out.append(Claim("table1c-V4-redundant", "§4.2, Table I(c), Fig. 7(c)",
                      "in Table I(c), V4 = (4/7, 10/7) lies strictly inside the triangle V1V2V3, "
                      "so circle 4 never touches the envelope of Fig. 7(c)",
@@ -196,4 +307,5 @@ def ncontact_claims() -> list[Claim]:
 def wrong_claims() -> dict[str, Any]:
     """Deliberately false variants (for the tests): each must be REFUTED."""
     return {"dual-sign": lambda: _dual(1, -1),
-            "inside-V1": lambda: redundant_inside(table1c_vertices(), inner=0)}
+            "inside-V1": lambda: redundant_inside(table1c_vertices(), inner=0),
+            "nc3-dual-sign": lambda: _nc3_dual(-1)}
