@@ -135,3 +135,33 @@ def test_contacts_file_errors_exit_2(tmp_path, capsys, text, what) -> None:
     assert cli.main(["steps", "--contacts", str(f)]) == 2
     err = capsys.readouterr().err
     assert what in err and err.count("\n") == 1
+
+
+def test_size_three_jaws_worst_squeeze_against_the_lp(capsys) -> None:
+    """size --contact: F_e max|q| with F_e = m g; the LP on 720 θ never needs more and
+    comes within 1e-4 (the grid's spacing) of it."""
+    import json
+    import math
+
+    pytest.importorskip("scipy")
+    from _ncontact_lp import SweepLP
+
+    args = ["size", "--mass", "500g", "--json"] + [f"--contact={','.join(c)}" for c in THREE]
+    assert cli.main(args) == 0
+    rec = json.loads(capsys.readouterr().out)
+    load = 0.5 * 9.80665
+    s3 = math.sqrt(3) / 2
+    flt = [(1.0, 0.0, -1.0, 0.0, 0.5), (-0.5, s3, 0.5, -s3, 0.5), (-0.5, -s3, 0.5, s3, 0.5)]
+    grid = SweepLP(flt, "sum-normal")(np.linspace(0, 2 * math.pi, 720, endpoint=False))
+    assert rec["load_N"] == pytest.approx(load, rel=1e-12)
+    assert grid.max() * load <= rec["worst_N"] * (1 + 1e-9)
+    assert grid.max() * load == pytest.approx(rec["worst_N"], rel=1e-4)
+    # the farthest vertex by hand: q = (7 - 4√3, 3√3 - 4) (three-force basis)
+    assert rec["max_q"] == pytest.approx(math.hypot(7 - 4 * math.sqrt(3), 3 * math.sqrt(3) - 4),
+                                         rel=1e-12)
+
+
+def test_size_contact_refuses_two_jaw_options(capsys) -> None:
+    args = ["size", "--mass", "1", "--p1", "0,0"] + [f"--contact={','.join(c)}" for c in THREE]
+    assert cli.main(args) == 2
+    assert "--p1 is for two jaws" in capsys.readouterr().err
