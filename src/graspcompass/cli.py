@@ -18,7 +18,6 @@ anything is computed: a missing folder is refused (only the main job's
 from __future__ import annotations
 
 import argparse
-import contextlib
 import gc
 import json
 import os
@@ -157,7 +156,7 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
 
 
 #: The commands that take ``--timeout`` (``check`` and ``verify`` have their own, which
-#: keep the verdicts reached in time; ``explore`` is a window).
+#: keep the verdicts reached in time; ``explore``'s bounds the work before its window opens).
 TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
          "crosscheck")
 
@@ -168,11 +167,11 @@ def _seconds(text: str) -> float:
     return check_seconds(text)
 
 
-def _add_timeout(p: argparse.ArgumentParser) -> None:
+def _add_timeout(p: argparse.ArgumentParser, what: str = "") -> None:
     p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
                    help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
                         f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
-                        "the work arbitrarily long)")
+                        f"the work arbitrarily long){'; ' + what if what else ''}")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -303,6 +302,8 @@ def build_parser() -> argparse.ArgumentParser:
     quiet_option(x, "no progress bar")
     for name in TIMED:
         _add_timeout(sub.choices[name])
+    _add_timeout(sub.choices["explore"], "until the window opens (reading a file, the first "
+                 "drawing); the window itself stays open as long as you like")
     return p
 
 
@@ -555,12 +556,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 2
-    from ._deadline import OutOfTime, deadline
+    from ._deadline import OutOfTime, command_deadline
 
-    seconds = getattr(args, "timeout", None) if args.command in TIMED else None
-    alarm = contextlib.nullcontext() if seconds is None else deadline(
-        seconds, lambda: OutOfTime(f"the command took longer than {seconds:g} s (--timeout "
-                                   "S allows more): its input makes too much work"))
+    alarm = command_deadline(getattr(args, "timeout", None) if args.command in TIMED else None)
     try:
         with warnings.catch_warnings(), alarm:
             warnings.simplefilter("ignore", SyntaxWarning)  # from text the parser refuses

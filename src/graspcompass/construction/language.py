@@ -57,7 +57,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import TYPE_CHECKING, Any
 
-from ..errors import InputError
+from ..errors import InputError, NotTextError
 from ..geometry import GeometryError
 from ..geometry.exact import has_float
 from ._lang_lines import (
@@ -171,7 +171,8 @@ def parse(text: str, file: str = "<text>") -> Program:
     graspcompass.construction.program.ConstructionSyntaxError: f.gc:1:18: unknown name 'A' ...
     """
     if not isinstance(text, str):
-        raise TypeError(f"expected the text of a construction file, got {type(text).__name__}")
+        raise NotTextError(f"expected the text of a construction file (a str), got "
+                           f"{type(text).__name__}")
     lines = text.split("\n")
     if len(lines) > MAX_LINES:
         raise ConstructionSyntaxError(f"more than {MAX_LINES} lines", file, MAX_LINES + 1, 1)
