@@ -447,6 +447,17 @@ def test_a_file_refuses_a_disguised_zero_denominator(tmp_path, capsys):
         _one_line_refusal(capsys, ["steps", str(tmp_path / "z.gc")], "exactly 0")
 
 
+def test_a_builder_refuses_a_disguised_zero_denominator():
+    """The same value given from Python (a sympy expression) to the construction builder."""
+    from graspcompass.construction.program import ConstructionBuilder
+
+    zero = sp.sqrt(2) + sp.sqrt(3) - sp.sqrt(5 + 2 * sp.sqrt(6))
+    b = ConstructionBuilder()
+    with pytest.raises(GraspCompassError, match="exactly 0"):
+        b.let("z", 1 / zero)
+    b.let("w", 1 / (zero + sp.Rational(1, 7)))  # 7: kept
+
+
 @pytest.mark.parametrize("lets", [
     ["let a = (t+1)**64", "let b = (a+1)**64"],  # degree 4096
     ["let a = (t+1)**8", "let b = (a+1)**8", "let c = (b+1)**8"],  # 512
