@@ -238,8 +238,9 @@ class _Reader:
         """Refuse a value whose polynomial would be too large to compute with exactly:
         degree over :data:`MAX_DEGREE`, or more than :data:`MAX_TERMS` possible terms
         (``C(n + degree, n)`` in ``n`` names), known before anything is expanded."""
-        if degree == 0:
-            return
+        if degree == 0 or (degree <= MAX_DEGREE and math.comb(len(self.symbols) + degree, degree)
+                           <= MAX_TERMS):
+            return  # within the budget whatever names the value uses
         names = sorted(map(str, value.free_symbols))
         shown = ", ".join(names)
         if degree > MAX_DEGREE:
@@ -517,17 +518,18 @@ def _degree(value: sympy.Expr) -> int:
     ``b**(p/q)`` ``|p|`` times its base's (a root counted as the power it clears to), and
     a function of a symbolic argument its argument's degree (at least 1).
     """
-    if not value.free_symbols:
-        return 0
     if value.is_Symbol:
         return 1
+    if value.is_Atom:
+        return 0
     if value.is_Add:
         return max(_degree(t) for t in value.args)
     if value.is_Mul:
         return sum(_degree(f) for f in value.args)
     if value.is_Pow and value.exp.is_Rational:
         return _degree(value.base) * abs(int(value.exp.p))
-    return max(1, *(_degree(a) for a in value.args))
+    inner = max(_degree(a) for a in value.args)
+    return max(1, inner) if inner or value.free_symbols else 0
 
 
 def _too_many_nodes(value: sympy.Expr, most: int = MAX_NODES) -> bool:
