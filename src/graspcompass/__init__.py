@@ -25,9 +25,9 @@ from typing import TYPE_CHECKING
 from ._lazy import attach
 
 if TYPE_CHECKING:
+    from .boundary.errors import GraspCompassError, InputError
+    from .boundary.expr import ExpressionError, parse_exact
     from .construction import Construction, Step, internal_force_diagram
-    from .errors import GraspCompassError, InputError
-    from .expr import ExpressionError, parse_exact
     from .geometry import Circle, GeometryError, Line, Point
     from .grasp import FrozenGraspError, Grasp, InvalidGraspError
     from .presets import PRESETS

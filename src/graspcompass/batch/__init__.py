@@ -84,8 +84,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
-from ..inputs import _nested_size  # the entries of a nested list, before it is copied
+from ..boundary.errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
+from ..boundary.inputs import _nested_size  # the entries of a nested list, before it is copied
 from . import _envelope
 
 __all__ = [
@@ -368,7 +368,7 @@ def _outside(v: Any, name: str) -> Any:
         raise WrongTypeError(f"{name}: expected numbers or an array, got "
                              f"{type(v).__name__} {str(v)[:40]!r}")
     if isinstance(v, (numbers.Real, Decimal)) or type(v).__module__.startswith("sympy"):
-        from ..inputs import real_value  # loads sympy: only for such values
+        from ..boundary.inputs import real_value  # loads sympy: only for such values
 
         exact = real_value(v, name)
         if getattr(exact, "free_symbols", None):
@@ -460,7 +460,7 @@ def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
         Also require every inequality of (1) to hold by more than
         ``margin · |bound|`` (rad); ``margin=1e-12`` refuses what the float path
         of :class:`graspcompass.Grasp` refuses
-        (:data:`graspcompass._floatpath.FLOAT_MARGIN`).
+        (:data:`graspcompass.grasp._floatpath.FLOAT_MARGIN`).
 
     Returns
     -------

@@ -57,7 +57,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import TYPE_CHECKING, Any
 
-from ..errors import InputError
+from ..boundary.errors import InputError
 from ..geometry import GeometryError
 from ..geometry.exact import has_float
 from ._lang_lines import (

@@ -19,10 +19,10 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from ..boundary.inputs import angle_values, force_value
 from ..geometry import Point
 from ..geometry.exact import approx, canon
 from ..geometry.trig import sincos
-from ..inputs import angle_values, force_value
 from . import _hull
 from ._signs import sign
 

@@ -34,7 +34,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
-from ..errors import GraspCompassError
+from ..boundary.errors import GraspCompassError
 from ._flint import divide, factor_list
 from ._ring import RingForm, to_ring
 from .model import outside_expr

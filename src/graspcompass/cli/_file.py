@@ -2,7 +2,7 @@
 
 ``graspcompass draw FILE.gc`` (or ``--file FILE.gc``; ``-`` reads stdin) reads a
 file of the construction language (``docs/language.md``) with the bounded
-reader of ``check`` (:func:`graspcompass._cli_check.read_file`), parses it and
+reader of ``check`` (:func:`graspcompass.cli._check.read_file`), parses it and
 replays it (:func:`graspcompass.construction.language.replay`) in place of the
 paper's recipe.  Its parameters get their values so:
 
@@ -176,7 +176,7 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
         parameter without a value, a ``--set`` the file does not take, a value
         outside its parameter's domain, a degenerate step; one line, exit 2.
     """
-    from ._cli_check import read_file
+    from ._check import read_file
 
     name = file_name(args)
     sets = getattr(args, "set", None) or []
@@ -184,14 +184,14 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
         if sets:
             raise ValueError(f"--set {sets[0][0]}=...: --set gives values to the parameters "
                              "of a construction file; give the file (FILE or --file)")
-        from .construction import internal_force_diagram
+        from ..construction import internal_force_diagram
 
         return FileConstruction(internal_force_diagram(grasp()), True, "paper.gc")
     if len(sets) > MAX_SETS:
         raise ValueError(f"at most {MAX_SETS} --set options, got {len(sets)}")
     text, shown = read_file(name)
-    from .construction.language import paper_program, parse, replay
-    from .expr import ExpressionError, parse_exact
+    from ..boundary.expr import ExpressionError, parse_exact
+    from ..construction.language import paper_program, parse, replay
 
     program = parse(text, shown)
     declared = [p.name for p in program.params]

@@ -41,9 +41,9 @@ counter-clockwise from the world's negative y-axis, so the world's gravity
 ``(0, -1)`` is at θ = 0.  A paper-frame θ is the world angle ``θ + β``, β the
 angle of the paper's x-axis in the world frame (:attr:`WorldGrasp.beta`).
 
-The code: the errors are in ``_world_errors``, :class:`WorldGrasp` in
-``_world_grasp``, :func:`place_grasp` in ``_world_place``, the outlines in
-``_world_outline`` and the exact-or-float helpers in ``_world_arith``; the public
+The code: the errors are in ``world._errors``, :class:`WorldGrasp` in
+``world._grasp``, :func:`place_grasp` in ``world._place``, the outlines in
+``world._outline`` and the exact-or-float helpers in ``world._arith``; the public
 names are importable from here and the classes are documented and pickled as this
 module's.
 
@@ -59,7 +59,8 @@ True
 
 from __future__ import annotations
 
-from ._world_errors import (
+from ..grasp import Grasp  # noqa: F401  (the examples)
+from ._errors import (
     CenterOfMassError,
     CoincidentContactsError,
     ContactOffOutlineError,
@@ -70,9 +71,8 @@ from ._world_errors import (
     VertexContactError,
     WorldGraspError,
 )
-from ._world_grasp import WorldGrasp
-from ._world_place import place_grasp
-from .grasp import Grasp  # noqa: F401  (the examples)
+from ._grasp import WorldGrasp
+from ._place import place_grasp
 
 __all__ = [
     "CenterOfMassError",

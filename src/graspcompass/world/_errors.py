@@ -9,7 +9,7 @@ pickled as :mod:`graspcompass.world`'s.
 
 from __future__ import annotations
 
-from .grasp import InvalidGraspError
+from ..grasp import InvalidGraspError
 
 
 class WorldGraspError(InvalidGraspError):

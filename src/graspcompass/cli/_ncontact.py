@@ -20,7 +20,7 @@ import math
 import sys
 from typing import IO, Any
 
-from .errors import InputError
+from ..boundary.errors import InputError
 
 __all__ = ["add_options", "draw", "run"]
 
@@ -43,7 +43,7 @@ def add_options(p: argparse.ArgumentParser) -> None:
 
 
 def _values(text: str, name: str, counts: tuple[int, ...]) -> list[str]:
-    from ._cli_k import _split_items
+    from ._k import _split_items
 
     if len(text) > 2000:
         raise InputError(f"{name} is longer than 2000 characters")
@@ -56,7 +56,7 @@ def _values(text: str, name: str, counts: tuple[int, ...]) -> list[str]:
 
 def grasp_from_args(args: argparse.Namespace) -> Any:
     """The :class:`~graspcompass.ncontact.NContactGrasp` of the options."""
-    from .ncontact import NContactGrasp
+    from ..ncontact import NContactGrasp
 
     if len(args.contact) < 2:
         raise InputError("--contact: give at least two contacts")
@@ -71,12 +71,12 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     """Run ``graspcompass k --contact ...``; returns the exit status (0)."""
     import numpy as np
 
-    from ._cli_k import _fe, read_angles, table
+    from ._k import _fe, read_angles, table
 
     out = sys.stdout if out is None else out
     fe_exact, fe = _fe(args.external_force)
     exact, t = read_angles(args.theta)
-    from .limits import EXACT_VALUES
+    from ..boundary.limits import EXACT_VALUES
 
     want_exact = bool(getattr(args, "exact", False))
     if want_exact and (exact is None or len(exact) > EXACT_VALUES):
@@ -131,7 +131,7 @@ def draw(args: argparse.Namespace) -> int:
     """``graspcompass draw --contact ...``: the n-contact diagram to a PNG, SVG or PDF file."""
     from pathlib import Path
 
-    from ._output import check_target, writing
+    from ..boundary._output import check_target, writing
 
     name = args.output if args.output is not None else f"ncontact.{args.format or 'png'}"
     fmt = args.format or Path(name).suffix.lower().lstrip(".")
@@ -147,7 +147,7 @@ def draw(args: argparse.Namespace) -> int:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .render.ncontact import draw_ncontact
+    from ..render.ncontact import draw_ncontact
 
     fig = draw_ncontact(g)
     with writing(path):

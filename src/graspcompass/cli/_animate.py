@@ -7,7 +7,7 @@
 step by step, the external force sweeping round (Fig. 3), or the object
 turning under gravity (Fig. 1).  matplotlib is imported only when it runs.
 ``--file FILE.gc [--set NAME=EXPR]`` animates the construction of a file of the
-construction language (:mod:`graspcompass._cli_file`); ``sweep`` and
+construction language (:mod:`graspcompass.cli._file`); ``sweep`` and
 ``orientation`` need the paper's four circles and take the paper's recipe only.
 
 ``--quality lecture`` is for a projector (:data:`~graspcompass.render.theme.QUALITIES`):
@@ -35,8 +35,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from . import _cli_file
-from .presets import PRESETS
+from ..presets import PRESETS
+from . import _file
 
 __all__ = [
     "KINDS",
@@ -209,7 +209,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
                         "construction file ('-' reads stdin; same as --file)", action=_PresetOrFile)
     add_grasp_options(p)
-    _cli_file.add_file_options(p, positional=False)
+    _file.add_file_options(p, positional=False)
     p.add_argument("--kind", choices=KINDS, default="construction",
                    help="what to animate (default: construction)")
     p.add_argument("-o", "--output", metavar="FILE",
@@ -275,26 +275,26 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
         for an animation beyond :data:`MAX_PIXELS`, and the errors of the grasp and
         the construction; the command line prints them on one line.
     """
-    from ._output import check_target, writing
-    from .render.timeline import check_output
+    from ..boundary._output import check_target, writing
+    from ..render.timeline import check_output
 
-    stem = _cli_file.output_stem(args, args.preset)
+    stem = _file.output_stem(args, args.preset)
     name = args.output if args.output is not None else f"{stem}-{args.kind}.gif"
     check_output(name)
     path = check_target(name)
-    from .errors import InputTooLargeError
-    from .render.anim_physics import animate_orientation, animate_sweep
-    from .render.animate import animate_construction
-    from .render.theme import QUALITIES, THEMES
+    from ..boundary.errors import InputTooLargeError
+    from ..render.anim_physics import animate_orientation, animate_sweep
+    from ..render.animate import animate_construction
+    from ..render.theme import QUALITIES, THEMES
 
     quiet = getattr(args, "quiet", False)
     q = QUALITIES[getattr(args, "quality", "standard")]
     fps = q.fps if getattr(args, "fps", None) is None else args.fps
     dpi = q.dpi if getattr(args, "dpi", None) is None else args.dpi
     theme = THEMES[args.theme]
-    made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
+    made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
     if args.kind != "construction":
-        _cli_file.paper_only(made, f"animate --kind {args.kind}")
+        _file.paper_only(made, f"animate --kind {args.kind}")
     c = made.construction
     anim: Any
     if args.kind == "construction":
@@ -338,7 +338,7 @@ def main_animation(construction: Any) -> Any:
     8 frames per step at 20 fps, :data:`MAIN_FIGSIZE` inches at :data:`MAIN_DPI` dpi:
     640 × 720 pixels, the captions laid out whole under the diagram.
     """
-    from .render.animate import animate_construction
+    from ..render.animate import animate_construction
 
     return animate_construction(construction, figsize=MAIN_FIGSIZE, dpi=MAIN_DPI)
 

@@ -39,7 +39,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from .geometry.exact import approx
+from ..geometry.exact import approx
 
 __all__ = [
     "FLOAT_MARGIN",

@@ -19,9 +19,9 @@ from typing import Any
 
 import sympy as sp
 
-from .errors import SymbolicValueError, WrongTypeError
-from .geometry.exact import canon, decide_sign
-from .inputs import real_value
+from ..boundary.errors import SymbolicValueError, WrongTypeError
+from ..boundary.inputs import real_value
+from ..geometry.exact import canon, decide_sign
 
 __all__ = ["ON_OUTLINE_TOL"]
 

@@ -58,10 +58,10 @@ def run(args: argparse.Namespace) -> int:
     OutputError
         For a path of ``-o`` that cannot be written (checked before any work).
     """
-    from ._output import check_target, writing
+    from ..boundary._output import check_target, writing
 
     path = None if args.output is None else check_target(args.output)
-    from .construction.language import paper_text
+    from ..construction.language import paper_text
 
     text = paper_text()
     if path is None:

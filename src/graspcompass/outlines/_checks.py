@@ -33,7 +33,7 @@ import math
 import re
 from typing import Any
 
-from .errors import InputError, InputTooLargeError
+from ..boundary.errors import InputError, InputTooLargeError
 
 __all__ = ["EXTENT_METRES", "MAX_COORDINATE", "MAX_SVG_ELEMENTS", "MAX_VERTICES",
            "check_coordinates", "check_extent", "check_use_expansion", "chord_budget",

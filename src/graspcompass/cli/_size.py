@@ -37,8 +37,8 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from .errors import InputError
-from .sizing.units import split_unit
+from ..boundary.errors import InputError
+from ..sizing.units import split_unit
 
 __all__ = ["add_outline_options", "read_pair", "register", "run"]
 
@@ -206,11 +206,11 @@ def _check_cheap(args: argparse.Namespace) -> None:
 
 
 def _pair_values(text: str, option: str, kind: str | None) -> tuple[Any, Any]:
-    from .sizing.units import acceleration_value, length_value
+    from ..sizing.units import acceleration_value, length_value
 
     x, y = (p.strip() for p in _split(text))
     if kind is None:
-        from .expr import ExpressionError, parse_exact
+        from ..boundary.expr import ExpressionError, parse_exact
 
         try:
             return parse_exact(x), parse_exact(y)
@@ -231,8 +231,8 @@ def run(args: argparse.Namespace) -> int:
         :func:`~graspcompass.place_grasp` refuses: one line on stderr, exit 2.
     """
     _check_cheap(args)
-    from .sizing import NotForceClosureError, force_closure, least_mu, size_gripper
-    from .world import FrictionConeError, place_grasp
+    from ..sizing import NotForceClosureError, force_closure, least_mu, size_gripper
+    from ..world import FrictionConeError, place_grasp
 
     contacts = [_pair_values(args.p1, "--p1", "length"), _pair_values(args.p2, "--p2", "length")]
     mu = (args.mu, args.mu) if args.mu is not None else (args.mu1, args.mu2)
@@ -246,7 +246,7 @@ def run(args: argparse.Namespace) -> int:
         _pair_values(v, f"--outline vertex {i + 1}", "length")
         for i, v in enumerate(args.outline.split(";"))]
     if args.shape is not None:
-        from .outlines import read_outline
+        from ..outlines import read_outline
 
         outline = read_outline(args.shape, unit=args.shape_unit)
     com = None if args.com is None else _pair_values(args.com, "--com", "length")
@@ -272,7 +272,7 @@ def run(args: argparse.Namespace) -> int:
                               f"squeeze_infinite_friction_{args.per}_N":
                                   lm.squeeze_infinite_friction,
                               f"max_force_{args.per}_N": lm.force_limit, "message": lm.message}
-    from ._output import finite_record
+    from ..boundary._output import finite_record
 
     finite_record(record, "give the mass, the lengths or the accelerations in other units")
     if args.json:

@@ -3,7 +3,7 @@
 ``graspcompass export --format ggb|tikz|svg|json|png|pdf -o FILE`` writes the
 construction of the grasp in one of :data:`graspcompass.export.FORMATS`;
 ``graspcompass explore`` opens the interactive explorer window.  Both take a
-construction file (``export FILE.gc``, :mod:`graspcompass._cli_file`): ``export``
+construction file (``export FILE.gc``, :mod:`graspcompass.cli._file`): ``export``
 writes any file's construction (GeoGebra without sliders unless it is the
 paper's recipe); ``--format html`` and ``explore`` redraw the paper's recipe
 live and refuse a file with other steps.  The module
@@ -19,7 +19,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
-from . import _cli_file
+from . import _file
 
 __all__ = ["register", "run_explore", "run_export"]
 
@@ -57,7 +57,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         epilog="The folder of -o must exist; the path is checked before any work. "
                "exit status: 0, or 2 for a user error.")
     add_grasp_options(e)
-    _cli_file.add_file_options(e)
+    _file.add_file_options(e)
     e.add_argument("--format", choices=_FORMATS,
                    help="file format (default: from the extension of -o)")
     e.add_argument("-o", "--output", metavar="FILE",
@@ -78,15 +78,15 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         description="A window with sliders for x1, x2, y, φ1, φ2, μ1, μ2 and draggable P1 and "
                     "P2; the construction, circles, envelope and worst/best case follow live.")
     add_grasp_options(x)
-    _cli_file.add_file_options(x)
+    _file.add_file_options(x)
 
 
 def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
-    from .export import guess_format
+    from ..export import guess_format
 
     if args.output is None:
         fmt = args.format or "svg"
-        return fmt, Path(f"{_cli_file.output_stem(args, args.preset)}.{_EXT[fmt]}")
+        return fmt, Path(f"{_file.output_stem(args, args.preset)}.{_EXT[fmt]}")
     return (args.format or guess_format(args.output)), args.output
 
 
@@ -95,7 +95,7 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
 
     ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
     called once the output is checked (the command line reads its options then).
-    With a construction file (:mod:`graspcompass._cli_file`) the file is
+    With a construction file (:mod:`graspcompass.cli._file`) the file is
     replayed instead of the paper's recipe.
 
     Raises
@@ -106,24 +106,24 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
         :class:`~graspcompass.errors.OutputError` for a path that cannot be
         written (checked before any work).
     """
-    from ._output import check_target, writing
+    from ..boundary._output import check_target, writing
 
     fmt, path = _format_and_path(args)
     if args.fragment and fmt != "tikz":
         raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
     path = check_target(path)
-    from .export import export
-    from .export.tikz import write_tikz
+    from ..export import export
+    from ..export.tikz import write_tikz
 
-    made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
+    made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
     if fmt == "html":
-        _cli_file.paper_only(made, "export --format html (the explorer page)")
+        _file.paper_only(made, "export --format html (the explorer page)")
     c = made.construction
     title = args.title
     if fmt == "ggb" and not made.paper:
         if title is None and c.grasp is not None:
             title = c.grasp.title
-        c = _cli_file.without_sliders(made)
+        c = _file.without_sliders(made)
     if args.step is not None:
         if not -len(c) <= args.step < len(c):
             raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
@@ -149,11 +149,11 @@ def run_explore(args: argparse.Namespace, grasp: Any) -> int:
         a construction file that is not the paper's recipe (the explorer
         redraws the recipe as the sliders move).
     """
-    if _cli_file.file_name(args) is not None or getattr(args, "set", None):
-        made = _cli_file.construction(args, grasp if callable(grasp) else lambda: grasp)
-        _cli_file.paper_only(made, "explore")
+    if _file.file_name(args) is not None or getattr(args, "set", None):
+        made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
+        _file.paper_only(made, "explore")
         grasp = made.construction.grasp
-    from .render.explorer import explore
+    from ..render.explorer import explore
 
     explore(grasp() if callable(grasp) else grasp)
     return 0

@@ -111,17 +111,17 @@ def run(args: argparse.Namespace, grasp: Any = None) -> int:
         :class:`~graspcompass.errors.OutputError` for a path that cannot be
         written (checked before any work).
     """
-    from ._output import check_target, writing
+    from ..boundary._output import check_target, writing
 
     name = args.output if args.output is not None else f"{args.preset}-worksheet.pdf"
     if Path(name).suffix.lower() != ".pdf":
         raise ValueError(f"a worksheet is a PDF: name the output FILE.pdf, got {name!r}")
     path = check_target(name)
-    from .construction import internal_force_diagram
-    from .render.handdrawing import worksheet_pages
+    from ..construction import internal_force_diagram
+    from ..render.handdrawing import worksheet_pages
 
     if grasp is None:
-        from .cli import grasp_from_args
+        from . import grasp_from_args
 
         grasp = grasp_from_args(args)
     ws = worksheet_pages(internal_force_diagram(grasp), steps=args.steps, given=args.given,

@@ -29,26 +29,18 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NoReturn
 
-from . import (
-    __version__,
-    _cli_check,
-    _cli_export,
-    _cli_file,
-    _cli_plan,
-    _cli_recipe,
-    _cli_size,
-    _cli_worksheet,
-    limits,
-)
-from ._cli_animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
-from ._cli_animate import register as _register_animate
-from ._output import check_folder, check_target, writing
-from .errors import GraspCompassError, InputError, OutputError
-from .presets import PRESETS
+from .. import __version__
+from ..boundary import limits
+from ..boundary._output import check_folder, check_target, writing
+from ..boundary.errors import GraspCompassError, InputError, OutputError
+from ..presets import PRESETS
+from . import _check, _export, _file, _plan, _recipe, _size, _worksheet
+from ._animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
+from ._animate import register as _register_animate
 
 if TYPE_CHECKING:  # the model (sympy, numpy) is loaded by the commands that use it
-    from .construction import Construction
-    from .grasp import Grasp
+    from ..construction import Construction
+    from ..grasp import Grasp
 
 __all__ = ["EXIT_STATUSES", "build_parser", "console", "grasp_from_args", "main"]
 
@@ -163,7 +155,7 @@ TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
 
 
 def _seconds(text: str) -> float:
-    from ._cli_check import _seconds as check_seconds
+    from ._check import _seconds as check_seconds
 
     return check_seconds(text)
 
@@ -206,7 +198,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "drawing of a construction file, or the state after one step.",
         epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(d)
-    _cli_file.add_file_options(d)
+    _file.add_file_options(d)
     d.add_argument("-o", "--output", metavar="FILE",
                    help="output file, in an existing folder (default: PRESET.png, or the "
                         "construction file's name with .png)")
@@ -217,7 +209,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
                         "the paper's recipe)")
     quiet_option(d)
-    from ._cli_ncontact import add_options as _add_ncontact_draw
+    from ._ncontact import add_options as _add_ncontact_draw
 
     _add_ncontact_draw(d)
 
@@ -227,7 +219,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "each step's name, instrument, the paper's reference and its exact value.",
         epilog="exit status: 0, or 2 for a user error.")
     _add_grasp_options(s)
-    _cli_file.add_file_options(s)
+    _file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
 
     k = sub.add_parser(
@@ -250,7 +242,7 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--exact", action="store_true",
                    help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
     k.add_argument("--json", action="store_true", help="print JSON")
-    from ._cli_ncontact import add_options as _add_ncontact
+    from ._ncontact import add_options as _add_ncontact
 
     _add_ncontact(k)
 
@@ -258,12 +250,12 @@ def build_parser() -> argparse.ArgumentParser:
                    description="List the built-in grasps of the paper (Fig. 6, Table I "
                                "(a)-(c)), for --preset.")
     _register_animate(sub, _add_grasp_options)
-    _cli_export.register(sub, _add_grasp_options)
-    _cli_worksheet.register(sub, _add_grasp_options)
-    _cli_recipe.register(sub, _add_grasp_options)
-    _cli_check.register(sub, _add_grasp_options)
-    _cli_size.register(sub, _add_grasp_options)
-    _cli_plan.register(sub, _add_grasp_options)
+    _export.register(sub, _add_grasp_options)
+    _worksheet.register(sub, _add_grasp_options)
+    _recipe.register(sub, _add_grasp_options)
+    _check.register(sub, _add_grasp_options)
+    _size.register(sub, _add_grasp_options)
+    _plan.register(sub, _add_grasp_options)
 
     v = sub.add_parser(
         "verify", help="machine-check every claim of the paper (symbolic)",
@@ -280,7 +272,7 @@ def build_parser() -> argparse.ArgumentParser:
     v.add_argument("--certify", action="store_true",
                    help="also certify the symbolic construction (every admissible grasp) and, "
                    "if grasp options are given, that grasp's construction")
-    v.add_argument("--timeout", type=_cli_check._seconds, default=None, metavar="S",
+    v.add_argument("--timeout", type=_check._seconds, default=None, metavar="S",
                    help="stop after S seconds for the whole run (catalogue and --certify; "
                         "default: no limit): the verdicts reached by then are kept, the rest "
                         "are UNDECIDED (timed out, exit status 1)")
@@ -313,7 +305,7 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
     grasp would give: text the parser refuses is refused before the model
     (and numpy) is loaded.
     """
-    from .expr import ExpressionError, parse_exact
+    from ..boundary.expr import ExpressionError, parse_exact
 
     given = {k: getattr(args, k) for k in _PARAMS if getattr(args, k, None) is not None}
     for name, text in given.items():
@@ -321,7 +313,7 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
             parse_exact(text)
         except ExpressionError as exc:
             raise type(exc)(f"{name}: {exc}") from None
-    from .grasp import Grasp
+    from ..grasp import Grasp
 
     params: dict[str, Any] = dict(PRESETS[args.preset]["params"])
     for i in ("1", "2"):  # a given mu replaces the preset's xi and vice versa
@@ -337,8 +329,8 @@ def grasp_from_args(args: argparse.Namespace) -> Grasp:
 
 def protocol_table(c: Construction) -> str:
     """The protocol as a text table with exact values."""
-    from ._cli_k import table
-    from .construction import describe
+    from ..construction import describe
+    from ._k import table
 
     rows = [[str(s.index), s.name, s.instrument, s.ref, describe(s.obj)] for s in c.steps]
     return table(rows, ["#", "name", "instrument", "paper", "exact value"])
@@ -346,7 +338,7 @@ def protocol_table(c: Construction) -> str:
 
 def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
           overlay: bool, title: str | None = None) -> Path:
-    from .render import figure_diagram, save_figure
+    from ..render import figure_diagram, save_figure
 
     fig = figure_diagram(c, step=step, overlay=overlay, title=title)
     save_figure(fig, path, format=fmt)
@@ -375,8 +367,8 @@ def _cmd_main(args: argparse.Namespace) -> int:
     out = _out_folder(args.out, args.quiet)
     png, svg, steps, gif = (check_target(out / name) for name in (
         "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", MAIN_ANIMATION))
-    from .construction import internal_force_diagram, to_records
-    from .grasp import Grasp
+    from ..construction import internal_force_diagram, to_records
+    from ..grasp import Grasp
 
     c = internal_force_diagram(Grasp.preset("fig6"))
     _draw(c, png, None, None, True)
@@ -395,17 +387,17 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 def _cmd_draw(args: argparse.Namespace) -> int:
     if getattr(args, "contact", None):
-        from . import _cli_ncontact
+        from . import _ncontact
 
-        return _cli_ncontact.draw(args)
-    stem = _cli_file.output_stem(args, args.preset)
+        return _ncontact.draw(args)
+    stem = _file.output_stem(args, args.preset)
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
     if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
         raise ValueError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf "
                          "file name or --format")
     path = check_target(name)
-    made = _cli_file.construction(args, lambda: grasp_from_args(args))
+    made = _file.construction(args, lambda: grasp_from_args(args))
     c = made.construction
     if args.step is not None and not 0 <= args.step < len(c):
         raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
@@ -419,9 +411,9 @@ def _cmd_draw(args: argparse.Namespace) -> int:
 
 
 def _cmd_steps(args: argparse.Namespace) -> int:
-    from .construction import to_records
+    from ..construction import to_records
 
-    c = _cli_file.construction(args, lambda: grasp_from_args(args)).construction
+    c = _file.construction(args, lambda: grasp_from_args(args)).construction
     if args.json:
         print(json.dumps(to_records(c), indent=1))
     else:
@@ -430,13 +422,13 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 
 
 def _cmd_k(args: argparse.Namespace) -> int:
-    from . import _cli_k
+    from . import _k
 
     if getattr(args, "contact", None):
-        from . import _cli_ncontact
+        from . import _ncontact
 
-        return _cli_ncontact.run(args)
-    return _cli_k.run(args, lambda: grasp_from_args(args))
+        return _ncontact.run(args)
+    return _k.run(args, lambda: grasp_from_args(args))
 
 
 def _cmd_presets(args: argparse.Namespace) -> int:
@@ -446,25 +438,25 @@ def _cmd_presets(args: argparse.Namespace) -> int:
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
-    from ._cli_animate import run
+    from ._animate import run
 
     return run(args, lambda: grasp_from_args(args))
 
 
 def _cmd_export(args: argparse.Namespace) -> int:
-    return _cli_export.run_export(args, lambda: grasp_from_args(args))
+    return _export.run_export(args, lambda: grasp_from_args(args))
 
 
 def _cmd_explore(args: argparse.Namespace) -> int:
-    return _cli_export.run_explore(args, grasp_from_args(args))
+    return _export.run_explore(args, grasp_from_args(args))
 
 
 def _certify_table(title: str, c: Construction, budget: Any = None) -> tuple[str, bool]:
-    from . import proof
+    from .. import proof
 
     certs = proof.certify(c, budget=budget)
     lines = [title]
-    from .proof._budget import TIMED_OUT
+    from ..proof._budget import TIMED_OUT
 
     for cert in certs:
         what = TIMED_OUT if cert.result.method == TIMED_OUT else "; ".join(cert.facts)
@@ -474,14 +466,14 @@ def _certify_table(title: str, c: Construction, budget: Any = None) -> tuple[str
 
 def _cmd_verify(args: argparse.Namespace) -> int:
     markdown = check_target(args.markdown) if args.markdown is not None else None
-    from . import proof
-    from .construction import internal_force_diagram
-    from .grasp import Grasp
+    from .. import proof
+    from ..construction import internal_force_diagram
+    from ..grasp import Grasp
 
     if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
                          or args.preset != "fig6"):
         grasp_from_args(args)  # a bad grasp option is refused before the long run
-    from .proof._budget import TIMED_OUT, Budget
+    from ..proof._budget import TIMED_OUT, Budget
 
     budget = Budget(args.timeout)
     if args.certify:  # the symbolic construction is made before the clock starts
@@ -495,7 +487,7 @@ def _cmd_verify(args: argparse.Namespace) -> int:
     if args.json:
         print(proof.to_json(reports))
     elif not args.markdown or not args.quiet:
-        from ._cli_verify import table
+        from ._verify import table
 
         print(table(reports))
     if args.certify:
@@ -522,7 +514,7 @@ def _cmd_crosscheck(args: argparse.Namespace) -> int:
 
     if importlib.util.find_spec("scipy") is None:
         raise InputError("crosscheck needs scipy: pip install 'graspcompass[crosscheck]'")
-    from .proof.crosscheck import run_crosscheck
+    from ..proof.crosscheck import run_crosscheck
 
     if args.grasps * args.thetas > CROSSCHECK_RUNS:
         raise ValueError(f"--grasps × --thetas = {args.grasps * args.thetas} linprog problems; "
@@ -536,9 +528,9 @@ def _cmd_crosscheck(args: argparse.Namespace) -> int:
 _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
              "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
              "crosscheck": _cmd_crosscheck, "export": _cmd_export, "explore": _cmd_explore,
-             "worksheet": _cli_worksheet.run, "recipe": _cli_recipe.run,
-             "check": _cli_check.run, "size": _cli_size.run,
-             "plan": _cli_plan.run}
+             "worksheet": _worksheet.run, "recipe": _recipe.run,
+             "check": _check.run, "size": _size.run,
+             "plan": _plan.run}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -555,7 +547,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 2
-    from ._deadline import OutOfTime, deadline
+    from ..boundary._deadline import OutOfTime, deadline
 
     seconds = getattr(args, "timeout", None) if args.command in TIMED else None
     alarm = contextlib.nullcontext() if seconds is None else deadline(

@@ -62,12 +62,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from .errors import NonFiniteValueError, SymbolicValueError
-from .geometry.exact import canon, decide_sign
-from .inputs import angle_values
+from ..boundary.errors import NonFiniteValueError, SymbolicValueError
+from ..boundary.inputs import angle_values
+from ..geometry.exact import canon, decide_sign
 
 if TYPE_CHECKING:
-    from .grasp import Grasp
+    from ..grasp import Grasp
 
 __all__ = ["INEQUALITIES", "SLIP_DTYPE", "TIE_TOL", "Inequality", "Slip", "SlipInterval",
            "slip", "slip_intervals", "zero_force_intervals"]
@@ -423,7 +423,7 @@ def _envelope(grasp: Grasp) -> Any:
     if any(v.free_symbols for v in grasp.params.values()):
         raise SymbolicValueError("the θ-intervals of a symbolic grasp depend on its values; "
                                  "substitute values first (Grasp.subs)")
-    from .construction import internal_force_diagram
+    from ..construction import internal_force_diagram
     return internal_force_diagram(grasp)["envelope"]
 
 

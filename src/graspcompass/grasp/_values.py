@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from .errors import (
+from ..boundary.errors import (
     ComplexValueError,
     GraspCompassError,
     InputError,
@@ -25,9 +25,9 @@ from .errors import (
     SymbolicValueError,
     WrongTypeError,
 )
-from .expr import ExpressionError
-from .geometry.exact import has_float
-from .inputs import angle_values, real_value
+from ..boundary.expr import ExpressionError
+from ..boundary.inputs import angle_values, real_value
+from ..geometry.exact import has_float
 
 
 class FrozenGraspError(dataclasses.FrozenInstanceError):

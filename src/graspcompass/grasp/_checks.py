@@ -15,8 +15,10 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
+from ..geometry.exact import canon, decide_sign, has_float
+from ..geometry.trig import tan_exact
 from ._floatpath import FLOAT_MARGIN, condition_1_margins
-from ._grasp_values import (
+from ._values import (
     InvalidGraspError,
     NonFiniteParameterError,
     _exact_kind,
@@ -26,11 +28,9 @@ from ._grasp_values import (
     _rounded_tan,
     _value,
 )
-from .geometry.exact import canon, decide_sign, has_float
-from .geometry.trig import tan_exact
 
 if TYPE_CHECKING:
-    from .grasp import Grasp
+    from . import Grasp
 
 
 def _degrees_hint(angle: Any, most: int) -> str:
@@ -171,7 +171,7 @@ def _check_float_margins(g: Grasp) -> None:
 
     The float construction's X_n, Y_n, V_n scale like 1/cos(φ ± ξ) (eqs.
     (28)-(39)) and carry a relative error of about ε/|cos(φ ± ξ)|; below a
-    margin of :data:`~graspcompass._floatpath.FLOAT_MARGIN` (1e-12) of the
+    margin of :data:`~graspcompass.grasp._floatpath.FLOAT_MARGIN` (1e-12) of the
     bound, double precision cannot resolve them (see :mod:`._floatpath`).
     """
     if not g.numeric or any(v.free_symbols for v in g.params.values()):

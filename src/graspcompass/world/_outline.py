@@ -21,7 +21,9 @@ import dataclasses
 import math
 from typing import Any
 
-from ._world_arith import (
+from ..boundary.errors import WrongTypeError
+from ..geometry.exact import canon
+from ._arith import (
     ON_OUTLINE_TOL,
     Vec,
     _as_kind,
@@ -35,9 +37,7 @@ from ._world_arith import (
     _sub,
     _vec,
 )
-from ._world_errors import ContactOffOutlineError, OutlineError, VertexContactError
-from .errors import WrongTypeError
-from .geometry.exact import canon
+from ._errors import ContactOffOutlineError, OutlineError, VertexContactError
 
 __all__: list[str] = []
 

@@ -16,11 +16,11 @@ from typing import Any
 
 import sympy as sp
 
-from ._world_arith import Vec, _c, _dot, _no_symbols, _sign, _sqrt, _sub, _vec
-from .errors import InputError
-from .geometry.exact import has_float
-from .grasp import Grasp
-from .inputs import real_value
+from ..boundary.errors import InputError
+from ..boundary.inputs import real_value
+from ..geometry.exact import has_float
+from ..grasp import Grasp
+from ._arith import Vec, _c, _dot, _no_symbols, _sign, _sqrt, _sub, _vec
 
 __all__ = ["WorldGrasp"]
 

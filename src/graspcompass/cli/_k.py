@@ -36,11 +36,11 @@ from typing import IO, Any
 import numpy as np
 import sympy as sp
 
-from .errors import InputTooLargeError, NonFiniteValueError
-from .expr import _split_unit, parse_angles, parse_exact
-from .geometry.numeric import to_float
-from .inputs import force_value
-from .limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
+from ..boundary.errors import InputTooLargeError, NonFiniteValueError
+from ..boundary.expr import _split_unit, parse_angles, parse_exact
+from ..boundary.inputs import force_value
+from ..boundary.limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
+from ..geometry.numeric import to_float
 
 __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
 
@@ -130,7 +130,7 @@ def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
         raise InputTooLargeError(f"--theta is longer than {MAX_TEXT} characters")
     n = count_angles(text)
     if n <= EXACT_ANGLES:
-        from .inputs import exact_denominators
+        from ..boundary.inputs import exact_denominators
 
         exact = [exact_denominators(v, "--theta") for v in parse_angles(text)]
         floats = np.array([_float(v) for v in exact], dtype=float)
@@ -285,7 +285,7 @@ def rounded_rows(g: Any, thetas: list[sp.Expr], fe: sp.Expr
     """
     import mpmath
 
-    from .geometry.exact import canon, decide_zero
+    from ..geometry.exact import canon, decide_zero
 
     with mpmath.workdps(DIGITS + 10):
         def mp(value: Any) -> Any:

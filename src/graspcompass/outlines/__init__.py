@@ -51,8 +51,10 @@ import re
 from pathlib import Path
 from typing import Any
 
-from ._infiles import read_bounded
-from ._outline_checks import (
+from ..boundary._infiles import read_bounded
+from ..boundary.errors import GraspCompassError, InputError, InputTooLargeError, WrongTypeError
+from ..world import OutlineError
+from ._checks import (
     MAX_VERTICES,
     check_coordinates,
     check_extent,
@@ -60,8 +62,6 @@ from ._outline_checks import (
     chord_budget,
     svg_utf8,
 )
-from .errors import GraspCompassError, InputError, InputTooLargeError, WrongTypeError
-from .world import OutlineError
 
 __all__ = ["DEFAULT_TOLERANCE", "MAX_OUTLINE_BYTES", "MissingExtraError", "read_outline"]
 

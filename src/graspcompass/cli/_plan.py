@@ -24,9 +24,9 @@ import json
 from collections.abc import Callable
 from typing import Any
 
-from ._cli_size import add_outline_options, read_pair
-from .errors import InputError, InputTooLargeError
-from .sizing.units import split_unit
+from ..boundary.errors import InputError, InputTooLargeError
+from ..sizing.units import split_unit
+from ._size import add_outline_options, read_pair
 
 __all__ = ["MAX_SAMPLES", "register", "run"]
 
@@ -124,8 +124,8 @@ def _number(text: str, option: str, kind: str | None, low: float, strict: bool) 
     """A finite float from an option's text (with units of ``kind``), at least ``low``."""
     import math
 
-    from .expr import ExpressionError, parse_exact
-    from .sizing.units import acceleration_value, length_value, mass_value
+    from ..boundary.expr import ExpressionError, parse_exact
+    from ..sizing.units import acceleration_value, length_value, mass_value
 
     if kind is None:
         try:
@@ -158,7 +158,7 @@ def run(args: argparse.Namespace) -> int:
     _check_cheap(args)
     draw = None
     if args.draw is not None:
-        from ._output import check_target
+        from ..boundary._output import check_target
 
         draw = check_target(args.draw)
     mass = _number(args.mass, "--mass", "mass", 0, True)
@@ -170,7 +170,7 @@ def run(args: argparse.Namespace) -> int:
     tol = _number(args.tol, "--tol", None, 0, True)
     gravity = None
     if args.gravity is not None:
-        from ._cli_size import _pair_values
+        from ._size import _pair_values
 
         try:
             gravity = tuple(float(v) for v in _pair_values(args.gravity, "--gravity", None))
@@ -179,14 +179,14 @@ def run(args: argparse.Namespace) -> int:
                              ) from None
     com = None
     if args.com is not None:
-        from ._cli_size import _pair_values
+        from ._size import _pair_values
 
         try:
             com = tuple(float(v) for v in _pair_values(args.com, "--com", "length"))
         except TypeError:
             raise InputError(f"--com: expected two real lengths, got {args.com!r}") from None
-    from .outlines import read_outline
-    from .planning import plan_contacts
+    from ..outlines import read_outline
+    from ..planning import plan_contacts
 
     outline = read_outline(args.shape, unit=args.shape_unit)
     plan = plan_contacts(outline, mu=mu, mass=mass, samples=args.samples, com=com, g=g,
@@ -194,13 +194,13 @@ def run(args: argparse.Namespace) -> int:
                          tilt=args.tilt, exact=args.exact, tol=tol)
     record = plan.to_dict(args.top)
     record["shape"] = args.shape
-    from ._output import finite_record
+    from ..boundary._output import finite_record
 
     finite_record(record, "give the mass or the drawing's unit in other units")
     if draw is not None:
-        from ._output import writing
-        from .render.output import save_figure
-        from .render.planning import figure_plan
+        from ..boundary._output import writing
+        from ..render.output import save_figure
+        from ..render.planning import figure_plan
 
         with writing(draw):
             save_figure(figure_plan(plan, top=min(args.top, 10)), draw)

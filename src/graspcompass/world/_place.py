@@ -15,7 +15,12 @@ from typing import Any
 
 import sympy as sp
 
-from ._world_arith import (
+from ..boundary.errors import InputError
+from ..boundary.inputs import real_value
+from ..geometry.exact import canon, has_float
+from ..geometry.trig import sincos
+from ..grasp import Grasp, InvalidGraspError
+from ._arith import (
     Vec,
     _as_kind,
     _c,
@@ -31,20 +36,15 @@ from ._world_arith import (
     _sub,
     _vec,
 )
-from ._world_errors import (
+from ._errors import (
     CoincidentContactsError,
     FrictionConeError,
     NormalNotUnitError,
     NormalOutwardError,
     WorldGraspError,
 )
-from ._world_grasp import WorldGrasp
-from ._world_outline import _Outline, _outline, _outline_normal, _vertices
-from .errors import InputError
-from .geometry.exact import canon, has_float
-from .geometry.trig import sincos
-from .grasp import Grasp, InvalidGraspError
-from .inputs import real_value
+from ._grasp import WorldGrasp
+from ._outline import _Outline, _outline, _outline_normal, _vertices
 
 __all__ = ["place_grasp"]
 

@@ -9,8 +9,8 @@ given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
 
 :class:`Grasp` and its documentation live here; the code is in private modules
 (every name stays importable from here): the errors and the input boundary of the
-parameters (``_grasp_values``), the validation and condition (1)
-(``_grasp_checks``), the float path and the forces of §2.3 (``_grasp_forces``).
+parameters (``grasp._values``), the validation and condition (1)
+(``grasp._checks``), the float path and the forces of §2.3 (``grasp._forces``).
 """
 
 from __future__ import annotations
@@ -22,9 +22,14 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from . import _grasp_forces as _forces
-from ._floatpath import side_floats
-from ._grasp_checks import (
+from ..boundary.errors import NonFiniteValueError
+from ..boundary.inputs import angle_values, force_value, real_value, substitutions  # noqa: F401
+from ..geometry import Point
+from ..geometry.exact import canon, decide_sign, has_float  # noqa: F401
+from ..geometry.trig import sincos
+from ..presets import PRESETS
+from . import _forces
+from ._checks import (
     _angles_pass,  # noqa: F401
     _check,  # noqa: F401
     _check_doubles,
@@ -33,7 +38,8 @@ from ._grasp_checks import (
     _length_checks,  # noqa: F401
     _validate,
 )
-from ._grasp_values import (
+from ._floatpath import side_floats
+from ._values import (
     _HALF_MAX,  # noqa: F401
     _PARAMETER_ERRORS,  # noqa: F401
     ComplexParameterError,
@@ -54,12 +60,6 @@ from ._grasp_values import (
     _sympy,
     _value,
 )
-from .errors import NonFiniteValueError
-from .geometry import Point
-from .geometry.exact import canon, decide_sign, has_float  # noqa: F401
-from .geometry.trig import sincos
-from .inputs import angle_values, force_value, real_value, substitutions  # noqa: F401
-from .presets import PRESETS
 
 __all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
            "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",
@@ -208,7 +208,7 @@ class Grasp:
 
         ``friction="xi"`` gives the friction by ξ1, ξ2; ``"mu"`` by μ1, μ2.
         """
-        from . import symbols as s
+        from .. import symbols as s
 
         if friction not in ("xi", "mu"):
             raise InvalidGraspError(f"friction must be 'xi' or 'mu', got {friction!r}")

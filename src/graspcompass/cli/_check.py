@@ -102,8 +102,8 @@ def read_file(name: str) -> tuple[str, str]:
     graspcompass.errors.InputError
         A file that cannot be read, or is not UTF-8 text.
     """
-    from ._infiles import read_bounded
-    from .errors import InputError
+    from ..boundary._infiles import read_bounded
+    from ..boundary.errors import InputError
 
     data = read_bounded(name, MAX_FILE_BYTES)
     try:
@@ -113,8 +113,8 @@ def read_file(name: str) -> tuple[str, str]:
 
 
 def _draw(program: Any, report: Any, path: Path) -> str:
-    from .render import save_figure
-    from .render.grading import figure_counterexample
+    from ..render import save_figure
+    from ..render.grading import figure_counterexample
 
     row = next((r for r in (*report.targets, *report.claims)
                 if r.kind == "target" and r.counterexample), None)
@@ -139,7 +139,7 @@ def run(args: argparse.Namespace) -> int:
         ``FILE:LINE:COL: what``), an output that cannot be written, ``--draw``
         without ``--against paper``; the command line prints one line, exit 2.
     """
-    from ._output import check_target, writing
+    from ..boundary._output import check_target, writing
 
     markdown = check_target(args.markdown) if args.markdown is not None else None
     draw = check_target(args.draw) if args.draw is not None else None
@@ -150,15 +150,15 @@ def run(args: argparse.Namespace) -> int:
         if draw.suffix.lower() not in (".png", ".svg", ".pdf"):
             raise ValueError(f"--draw writes .png, .svg or .pdf, got {str(draw)!r}")
     text, shown = read_file(args.file)
-    from .construction.language import parse
-    from .progress import Progress
-    from .proof._budget import TIMED_OUT
-    from .proof.program_check import check_program
-    from .proof.program_report import to_json, to_markdown, to_table
+    from ..construction.language import parse
+    from ..progress import Progress
+    from ..proof._budget import TIMED_OUT
+    from ..proof.program_check import check_program
+    from ..proof.program_report import to_json, to_markdown, to_table
 
     program = parse(text, shown)
     quiet = getattr(args, "quiet", False) or args.json
-    from ._deadline import deadline
+    from ..boundary._deadline import deadline
 
     stop = args.timeout
     # the check keeps every verdict reached within --timeout; this alarm, a little

@@ -43,7 +43,7 @@ def fit_line(line: str, cols: int) -> str:
 
 def table(reports: Sequence[Any], cols: int | None = None) -> str:
     """The verify report as :func:`graspcompass.proof.to_table` has it, fitted to ``cols``."""
-    from .proof import to_table
+    from ..proof import to_table
 
     cols = width() if cols is None else max(MIN_WIDTH, cols)
     rows = [(r.claim.id, r.claim.ref, r.result.status.value, f"{r.result.seconds:.2f}",

@@ -1,7 +1,7 @@
 """The float path of a grasp's closed form and the forces of §2.3.
 
 ``g._floats()`` gives S_n, C_n of eqs. (28)-(39) as doubles correct to about one
-ulp (:func:`~graspcompass._floatpath.closed_form_floats`); ``k_grasp`` of eq. (25)
+ulp (:func:`~graspcompass.grasp._floatpath.closed_form_floats`); ``k_grasp`` of eq. (25)
 evaluates many float angles through the envelope table of
 :mod:`graspcompass.batch`; ``F_T`` (13), ``F_N`` (15), the contact forces (16) and
 ``F_int`` (17) are exact for an exact θ and arrays for a float or numpy θ.  The
@@ -17,15 +17,15 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
+from ..batch import _envelope
+from ..boundary.errors import InputError, NonFiniteValueError, SymbolicValueError
+from ..boundary.inputs import angle_values, force_value, real_value
+from ..geometry.exact import canon, decide_sign
 from ._floatpath import closed_form_floats
-from ._grasp_values import _HALF_MAX, _double, _finite, _is_numeric, _sympy
-from .batch import _envelope
-from .errors import InputError, NonFiniteValueError, SymbolicValueError
-from .geometry.exact import canon, decide_sign
-from .inputs import angle_values, force_value, real_value
+from ._values import _HALF_MAX, _double, _finite, _is_numeric, _sympy
 
 if TYPE_CHECKING:
-    from .grasp import Grasp
+    from . import Grasp
 
 
 def _closed_form_doubles(g: Grasp) -> tuple[np.ndarray, np.ndarray]:
