@@ -23,6 +23,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ._lazy import attach
+from ._version import __version__
 
 if TYPE_CHECKING:
     from .boundary.errors import GraspCompassError, InputError
@@ -33,7 +34,6 @@ if TYPE_CHECKING:
     from .presets import PRESETS
     from .world import WorldGrasp, WorldGraspError, place_grasp
 
-__version__ = "0.1.0"
 
 __all__ = [
     "PRESETS",

@@ -27,20 +27,30 @@ import textwrap
 import warnings
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
-from .. import __version__
+from .._version import __version__
 from ..boundary import limits
 from ..boundary._output import check_folder, check_target, writing
-from ..boundary.errors import GraspCompassError, InputError, OutputError
+from ..boundary.errors import GraspCompassError, OutputError
 from ..presets import PRESETS
-from . import _check, _export, _file, _plan, _recipe, _size, _worksheet
-from ._animate import MAIN_ANIMATION, bounded, quiet_option, write_main_animation
+from . import _check, _crosscheck, _export, _file, _plan, _recipe, _size, _verify, _worksheet
+from ._animate import MAIN_ANIMATION, quiet_option, write_main_animation
 from ._animate import register as _register_animate
+from ._common import (  # noqa: F401  (MAX_MESSAGE: cli's names of before the split)
+    MAX_MESSAGE,
+    TIMED,
+    _add_grasp_options,
+    _add_timeout,
+    _Parser,
+    grasp_from_args,
+    one_line,
+    protocol_table,
+)
+from ._crosscheck import CROSSCHECK_GRASPS, CROSSCHECK_RUNS, CROSSCHECK_THETAS  # noqa: F401
 
 if TYPE_CHECKING:  # the model (sympy, numpy) is loaded by the commands that use it
     from ..construction import Construction
-    from ..grasp import Grasp
 
 __all__ = ["EXIT_STATUSES", "build_parser", "console", "grasp_from_args", "main"]
 
@@ -55,116 +65,9 @@ EXIT_STATUSES = {
        "traceback)",
     130: "interrupted",
 }
-#: Bounds of ``crosscheck``: random grasps, θ grid size, and their product (linprog runs).
-CROSSCHECK_GRASPS, CROSSCHECK_THETAS, CROSSCHECK_RUNS = 200, 3600, 36_000
-
-_PARAMS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
 _FORMATS = ("png", "svg", "pdf")
 
 
-#: Longest error message printed (exact values can have thousands of digits).
-MAX_MESSAGE = 400
-
-
-def one_line(text: str, first: bool = True) -> str:
-    """``text`` on one line, unprintable characters escaped, cut at :data:`MAX_MESSAGE`.
-
-    Parameters
-    ----------
-    text : str
-        A message.
-    first : bool, optional
-        Keep only the first line (exception messages); otherwise escape the
-        line breaks too (argparse messages quoting the command line).
-    """
-    lines = text.strip().splitlines() if first else [text.strip()]
-    line = "".join(c if c.isprintable() else repr(c)[1:-1] for c in (lines[0] if lines else ""))
-    if len(line) > MAX_MESSAGE:
-        line = f"{line[:MAX_MESSAGE - 40]} ... ({len(line)} characters in all)"
-    return line
-
-
-class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit status 2, no usage block).
-
-    An option that takes a value also takes one that starts with ``-``:
-    ``--p2 -50mm,0``, ``--phi1 -pi/4+pi`` and ``--x1 --`` read as
-    ``--p2=-50mm,0``, ``--phi1=-pi/4+pi`` and ``--x1=--`` (plain argparse
-    reads only negative numbers that way).  A value that is itself one of the
-    command's options (``--output -q``) is left an option.
-    """
-
-    def error(self, message: str) -> NoReturn:
-        self.exit(2, f"{self.prog}: error: {one_line(message, first=False)} (see --help)\n")
-
-    def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
-                         namespace: argparse.Namespace | None = None
-                         ) -> tuple[argparse.Namespace, list[str]]:
-        argv = list(sys.argv[1:] if args is None else args)
-        return super().parse_known_args(self._join_dash_values(argv), namespace)
-
-    def _join_dash_values(self, argv: list[str]) -> list[str]:
-        """``--opt -value`` as ``--opt=-value`` for this parser's one-value options."""
-        takes_value = {s for s, a in self._option_string_actions.items()
-                       if a.nargs is None and s.startswith("--")}
-        nested = any(isinstance(a, argparse._SubParsersAction) for a in self._actions)
-        out: list[str] = []
-        i = 0
-        while i < len(argv):
-            token = argv[i]
-            if token == "--" or (nested and not token.startswith("-")):
-                return out + argv[i:]  # the rest belongs to positionals or a sub-command
-            if token in takes_value and i + 1 < len(argv) and self._dash_value(argv[i + 1]):
-                out.append(f"{token}={argv[i + 1]}")
-                i += 2
-                continue
-            out.append(token)
-            i += 1
-        return out
-
-    def _dash_value(self, token: str) -> bool:
-        """Whether ``token`` is a value starting with ``-`` rather than an option."""
-        if token == "--":
-            return True
-        if not token.startswith("-") or token.startswith("--") or len(token) < 2:
-            return False
-        return token[:2] not in self._option_string_actions
-
-    def _get_values(self, action: argparse.Action, arg_strings: list[str]) -> Any:
-        if action.option_strings and action.nargs is None and arg_strings == ["--"]:
-            value = self._get_value(action, "--")  # argparse would drop it and give a list
-            self._check_value(action, value)
-            return value
-        return super()._get_values(action, arg_strings)  # type: ignore[misc]
-
-
-def _add_grasp_options(p: argparse.ArgumentParser) -> None:
-    g = p.add_argument_group(
-        "grasp", "a preset, optionally with parameters overridden; values are exact "
-        "expressions such as sqrt(3)/2, pi/3, 60deg or 1.2 (= 6/5)")
-    g.add_argument("--preset", default="fig6", choices=sorted(PRESETS),
-                   help="start from one of the paper's examples (default: fig6)")
-    for name in _PARAMS:
-        g.add_argument(f"--{name}", metavar="EXPR", help=f"set {name}")
-
-
-#: The commands that take ``--timeout`` (``check`` and ``verify`` have their own, which
-#: keep the verdicts reached in time; ``explore`` is a window).
-TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
-         "crosscheck")
-
-
-def _seconds(text: str) -> float:
-    from ._check import _seconds as check_seconds
-
-    return check_seconds(text)
-
-
-def _add_timeout(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
-                   help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
-                        f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
-                        "the work arbitrarily long)")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -257,83 +160,12 @@ def build_parser() -> argparse.ArgumentParser:
     _size.register(sub, _add_grasp_options)
     _plan.register(sub, _add_grasp_options)
 
-    v = sub.add_parser(
-        "verify", help="machine-check every claim of the paper (symbolic)",
-        description="Check every claim of the paper for general symbolic parameters under "
-        "condition (1) (and μ = tan ξ where both appear); print each claim's status, "
-        "hypotheses and non-degeneracy conditions.",
-        epilog="exit status: 0 when every claim is decided (none UNDECIDED) and every REFUTED "
-        "claim names a correction that is PROVED (with --certify: and every construction "
-        "step holds); 1 otherwise; 2 for a usage error.")
-    v.add_argument("--json", action="store_true",
-                   help="print the results as JSON (with hypotheses, conditions, certificates)")
-    v.add_argument("--markdown", metavar="FILE",
-                   help="write the report as a Markdown page (its folder must exist)")
-    v.add_argument("--certify", action="store_true",
-                   help="also certify the symbolic construction (every admissible grasp) and, "
-                   "if grasp options are given, that grasp's construction")
-    v.add_argument("--timeout", type=_check._seconds, default=None, metavar="S",
-                   help="stop after S seconds for the whole run (catalogue and --certify; "
-                        "default: no limit): the verdicts reached by then are kept, the rest "
-                        "are UNDECIDED (timed out, exit status 1)")
-    _add_grasp_options(v)
-    quiet_option(v, "no progress bar")
-
-    x = sub.add_parser(
-        "crosscheck", help="closed form vs scipy linprog on random grasps",
-        description="Compare the closed form k_grasp(θ) (eq. (25)) with the least internal "
-                    "force found by scipy's linprog on random grasps and directions "
-                    "(needs scipy: pip install 'graspcompass[crosscheck]').",
-        epilog=f"limits: --grasps × --thetas at most {CROSSCHECK_RUNS} linprog problems. "
-               "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.")
-    x.add_argument("--grasps", type=bounded(int, 1, CROSSCHECK_GRASPS), default=20,
-                   metavar="N", help=f"random grasps, 1 to {CROSSCHECK_GRASPS} (20)")
-    x.add_argument("--thetas", type=bounded(int, 1, CROSSCHECK_THETAS), default=36,
-                   metavar="M", help=f"θ grid size, 1 to {CROSSCHECK_THETAS} (36)")
-    x.add_argument("--seed", type=bounded(int, 0, 2**63 - 1), default=0,
-                   help="random seed, 0 to 2**63 - 1 (0)")
-    quiet_option(x, "no progress bar")
+    _verify.register(sub, _add_grasp_options)
+    _crosscheck.register(sub)
     for name in TIMED:
         _add_timeout(sub.choices[name])
     return p
 
-
-def grasp_from_args(args: argparse.Namespace) -> Grasp:
-    """The grasp named by ``--preset`` with any parameter options applied.
-
-    Each option's text is read by the safe parser first, with the message the
-    grasp would give: text the parser refuses is refused before the model
-    (and numpy) is loaded.
-    """
-    from ..boundary.expr import ExpressionError, parse_exact
-
-    given = {k: getattr(args, k) for k in _PARAMS if getattr(args, k, None) is not None}
-    for name, text in given.items():
-        try:
-            parse_exact(text)
-        except ExpressionError as exc:
-            raise type(exc)(f"{name}: {exc}") from None
-    from ..grasp import Grasp
-
-    params: dict[str, Any] = dict(PRESETS[args.preset]["params"])
-    for i in ("1", "2"):  # a given mu replaces the preset's xi and vice versa
-        if f"mu{i}" in given:
-            params.pop(f"xi{i}", None)
-        if f"xi{i}" in given:
-            params.pop(f"mu{i}", None)
-    params.update(given)
-    if not given:
-        return Grasp.preset(args.preset)
-    return Grasp(**params)
-
-
-def protocol_table(c: Construction) -> str:
-    """The protocol as a text table with exact values."""
-    from ..construction import describe
-    from ._k import table
-
-    rows = [[str(s.index), s.name, s.instrument, s.ref, describe(s.obj)] for s in c.steps]
-    return table(rows, ["#", "name", "instrument", "paper", "exact value"])
 
 
 def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
@@ -451,83 +283,10 @@ def _cmd_explore(args: argparse.Namespace) -> int:
     return _export.run_explore(args, grasp_from_args(args))
 
 
-def _certify_table(title: str, c: Construction, budget: Any = None) -> tuple[str, bool]:
-    from .. import proof
-
-    certs = proof.certify(c, budget=budget)
-    lines = [title]
-    from ..proof._budget import TIMED_OUT
-
-    for cert in certs:
-        what = TIMED_OUT if cert.result.method == TIMED_OUT else "; ".join(cert.facts)
-        lines.append(f"{cert.step:9} {cert.result.status.value:9} {what}")
-    return "\n".join(lines), all(x.result.holds for x in certs)
-
-
-def _cmd_verify(args: argparse.Namespace) -> int:
-    markdown = check_target(args.markdown) if args.markdown is not None else None
-    from .. import proof
-    from ..construction import internal_force_diagram
-    from ..grasp import Grasp
-
-    if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
-                         or args.preset != "fig6"):
-        grasp_from_args(args)  # a bad grasp option is refused before the long run
-    from ..proof._budget import TIMED_OUT, Budget
-
-    budget = Budget(args.timeout)
-    if args.certify:  # the symbolic construction is made before the clock starts
-        symbolic = internal_force_diagram(Grasp.symbolic("mu"))
-    reports = proof.run_catalogue(quiet=args.quiet or args.json, budget=budget)
-    status = proof.exit_status(reports)
-    late = sum(r.result.method == TIMED_OUT for r in reports)
-    if markdown is not None:
-        with writing(markdown):
-            markdown.write_text(proof.to_markdown(reports))
-    if args.json:
-        print(proof.to_json(reports))
-    elif not args.markdown or not args.quiet:
-        from ._verify import table
-
-        print(table(reports))
-    if args.certify:
-        out = sys.stderr if args.json else sys.stdout
-        text, ok = _certify_table("certify: the symbolic construction (all admissible grasps)",
-                                  symbolic, budget)
-        print("\n" + text, file=out)
-        given = any(getattr(args, k, None) is not None for k in _PARAMS)
-        if given or args.preset != "fig6":
-            t2, ok2 = _certify_table(f"certify: {args.preset} with the options given",
-                                     internal_force_diagram(grasp_from_args(args)), budget)
-            print("\n" + t2, file=out)
-            ok = ok and ok2
-        status = status or (0 if ok else 1)
-        late += sum(TIMED_OUT in line for line in text.splitlines())
-    if late:
-        print(f"graspcompass: {late} claims or steps timed out after {args.timeout:g} s "
-              "(--timeout): UNDECIDED; the other verdicts stand", file=sys.stderr)
-    return status
-
-
-def _cmd_crosscheck(args: argparse.Namespace) -> int:
-    import importlib.util
-
-    if importlib.util.find_spec("scipy") is None:
-        raise InputError("crosscheck needs scipy: pip install 'graspcompass[crosscheck]'")
-    from ..proof.crosscheck import run_crosscheck
-
-    if args.grasps * args.thetas > CROSSCHECK_RUNS:
-        raise ValueError(f"--grasps × --thetas = {args.grasps * args.thetas} linprog problems; "
-                         f"at most {CROSSCHECK_RUNS}")
-    r = run_crosscheck(args.grasps, args.thetas, args.seed, quiet=args.quiet)
-    print(f"{r.grasps} random grasps × {r.thetas} directions: largest |k_grasp − linprog| = "
-          f"{r.max_abs_diff:.3e}")
-    return 0 if r.max_abs_diff < 1e-7 else 1
-
 
 _COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
-             "presets": _cmd_presets, "animate": _cmd_animate, "verify": _cmd_verify,
-             "crosscheck": _cmd_crosscheck, "export": _cmd_export, "explore": _cmd_explore,
+             "presets": _cmd_presets, "animate": _cmd_animate, "verify": _verify.run,
+             "crosscheck": _crosscheck.run, "export": _cmd_export, "explore": _cmd_explore,
              "worksheet": _worksheet.run, "recipe": _recipe.run,
              "check": _check.run, "size": _size.run,
              "plan": _plan.run}

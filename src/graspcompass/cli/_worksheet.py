@@ -121,7 +121,7 @@ def run(args: argparse.Namespace, grasp: Any = None) -> int:
     from ..render.handdrawing import worksheet_pages
 
     if grasp is None:
-        from . import grasp_from_args
+        from ._common import grasp_from_args
 
         grasp = grasp_from_args(args)
     ws = worksheet_pages(internal_force_diagram(grasp), steps=args.steps, given=args.given,

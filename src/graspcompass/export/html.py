@@ -49,7 +49,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .. import __version__, labelling
+from .. import labelling
+from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
 from ..palette import PALETTE

@@ -109,7 +109,7 @@ from typing import Any
 
 from sympy.polys.polyerrors import BasePolynomialError
 
-from .. import __version__
+from .._version import __version__
 from ..boundary.errors import GraspCompassError
 from ..construction.protocol import Construction
 from . import _json_limits as _limits
