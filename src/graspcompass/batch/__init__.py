@@ -86,7 +86,7 @@ import numpy as np
 
 from ..boundary.errors import ComplexValueError, InputError, InputTooLargeError, WrongTypeError
 from ..boundary.inputs import _nested_size  # the entries of a nested list, before it is copied
-from . import _envelope
+from ..grasp import _envelope
 
 __all__ = [
     "MAX_ARRAY_SIZE",

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from ..batch import _envelope
+from . import _envelope
 from ..boundary.errors import InputError, NonFiniteValueError, SymbolicValueError
 from ..boundary.inputs import angle_values, force_value, real_value
 from ..geometry.exact import canon, decide_sign
