@@ -17,10 +17,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import sympy as sp
 
-from . import _envelope
 from ..boundary.errors import InputError, NonFiniteValueError, SymbolicValueError
 from ..boundary.inputs import angle_values, force_value, real_value
 from ..geometry.exact import canon, decide_sign
+from . import _envelope
 from ._floatpath import closed_form_floats
 from ._values import _HALF_MAX, _double, _finite, _is_numeric, _sympy
 
