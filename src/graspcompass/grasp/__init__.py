@@ -106,6 +106,35 @@ class Grasp:
     graspcompass.grasp.InvalidGraspError: contact 2: the friction coefficient μ2 = -1 must be ...
     """
 
+    # The attributes, set once by __init__ (a Grasp is frozen): exact sympy numbers, or
+    # floats on the numeric path (:attr:`numeric`); the types checkers read (issue 21).
+    #: Contact coordinates: ``P1 = (x1, y)``, ``P2 = (-x2, y)``.
+    x1: Any
+    x2: Any
+    y: Any
+    #: Normal directions φ1, φ2 (§2.2.1).
+    phi1: Any
+    phi2: Any
+    #: Friction: coefficients μi and cone half angles ξi (tan ξi = μi, eq. (22)).
+    mu1: Any
+    mu2: Any
+    xi1: Any
+    xi2: Any
+    #: sin φi and cos φi, exact without nested radicals (or floats).
+    s1: Any
+    c1: Any
+    s2: Any
+    c2: Any
+    #: The part's outline (drawing only) and a title, or None.
+    shape: tuple | None
+    title: str | None
+    #: True on the float path (a float among the parameters).
+    numeric: bool
+    #: Conditions assumed for symbols that could not be decided.
+    assumptions: tuple
+    _given: tuple[str, str]
+    _SC: Any
+
     def __init__(
         self,
         x1: Any,
