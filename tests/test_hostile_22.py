@@ -113,7 +113,7 @@ def test_a_huge_long_double_leaks_no_warning():
 
 @pytest.mark.parametrize("path", [None, b"x.gc", 3])
 def test_read_file_of_a_non_name(path):
-    from graspcompass._infiles import read_bounded
+    from graspcompass.boundary._infiles import read_bounded
 
     with pytest.raises(WrongTypeError, match="file name"):
         read_bounded(path, 100)

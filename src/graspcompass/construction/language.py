@@ -58,7 +58,7 @@ from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..errors import InputError, NotTextError
+from ..boundary.errors import InputError, NotTextError
 from ..geometry import GeometryError
 from ..geometry.exact import has_float
 from ._lang_lines import (

@@ -29,10 +29,10 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as _model
-from ..errors import InputError
-from ..expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
+from ..boundary.errors import InputError
+from ..boundary.expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
+from ..boundary.inputs import exact_denominators
 from ..geometry import GeometryError
-from ..inputs import exact_denominators
 from .operations import OPERATIONS, ROLES
 
 __all__ = [

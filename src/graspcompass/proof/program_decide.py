@@ -31,10 +31,10 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..boundary.errors import InputError
 from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
-from ..errors import InputError
 from ..geometry import Circle, GeometryError, Line, Point
 from ..geometry.exact import decide_sign, decide_zero
 from .certify_algebra import _full_text, _positive, _primitive, _text, classify, ring

@@ -599,7 +599,7 @@ def explore(grasp: Grasp | None = None, *, timeout: float | None = None) -> Expl
     import matplotlib
     from matplotlib import pyplot as plt
 
-    from .._deadline import command_deadline
+    from ..boundary._deadline import command_deadline
 
     backend = matplotlib.get_backend()
     if not _interactive(backend):
