@@ -43,7 +43,7 @@ def size_ncontact(grasp: Any, mass: Any, g: Any = "9.80665", accel: Any = None,
     graspcompass.ncontact.UnboundedEffortError
         Without force closure (some orientation cannot be held at any squeeze).
     """
-    from ..inputs import real_value
+    from ..boundary.inputs import real_value
     from ..ncontact import UnboundedEffortError
 
     m = float(mass_value(mass, "--mass"))
