@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["ncontact_k"]
+__all__ = ["ncontact_k", "ncontact_worst"]
 
 _TOL = 1e-9
 
@@ -39,6 +39,20 @@ def _rows(contacts: np.ndarray, weights: np.ndarray, com: np.ndarray) -> tuple:
     c = (weights[..., None] * np.ones(2)) * np.einsum("...k,...sk->...s", nrm, d)
     shape = (*G.shape[:-3], G.shape[-3] * 2)
     return G.reshape((*shape, 3)), c.reshape(shape)
+
+
+def _q_rays(G: np.ndarray) -> np.ndarray:
+    """Per grasp and pair of rows, both signs: is it a recession direction of the dual whose
+    force part is non-zero (a direction in which Q is unbounded)?  Shape (..., 2·pairs)."""
+    m = G.shape[-2]
+    pairs = np.array(list(itertools.combinations(range(m), 2)))
+    r = np.cross(G[..., pairs[:, 0], :], G[..., pairs[:, 1], :])
+    r = r / np.maximum(np.linalg.norm(r, axis=-1, keepdims=True), 1e-300)
+    dots = np.einsum("...jk,...pk->...pj", G, r)
+    gn = np.linalg.norm(G, axis=-1)[..., None, :]
+    moving = np.linalg.norm(r[..., :2], axis=-1) > 1e-12
+    return np.concatenate([np.all(sg * dots <= _TOL * gn, axis=-1) & moving
+                           for sg in (1.0, -1.0)], axis=-1)
 
 
 def ncontact_k(contacts: Any, theta: Any, effort: Any = "sum-normal", com: Any = (0.0, 0.0),
@@ -112,3 +126,34 @@ def ncontact_k(contacts: Any, theta: Any, effort: Any = "sum-normal", com: Any =
         unbounded |= np.any(ray[..., None] & hit, axis=-2)
     out = np.where(unbounded | ~np.isfinite(val), math.inf, val) * external_force
     return out.reshape(val.shape[:-1] + th.shape)
+
+
+def ncontact_worst(contacts: Any, effort: Any = "sum-normal", com: Any = (0.0, 0.0),
+                   external_force: float = 1.0) -> np.ndarray:
+    """``F_e max_q |q|`` per grasp (the worst direction's least effort): shape ``(...)``.
+
+    ``inf`` without force closure.  The maximum of |q| over Q is reached at a vertex and
+    every dual-feasible basic solution lies in Q, so the maximum over them is it.
+    """
+    P = np.asarray(contacts, dtype=float)
+    if P.ndim < 2 or P.shape[-1] != 5 or P.shape[-2] < 2:
+        raise ValueError(f"contacts: expected shape (..., n >= 2, 5), got {P.shape}")
+    n = P.shape[-2]
+    w = (np.ones(P.shape[:-1]) if isinstance(effort, str) and effort == "sum-normal" else
+         np.broadcast_to(np.asarray(effort, dtype=float), P.shape[:-1]))
+    comb = np.broadcast_to(np.asarray(com, dtype=float), (*P.shape[:-2], 2))
+    G, c = _rows(P, w, comb)
+    combos = np.array(list(itertools.combinations(range(2 * n), 3)))
+    A = G[..., combos, :]
+    scale = np.prod(np.linalg.norm(A, axis=-1), axis=-1)
+    ok = np.abs(np.linalg.det(A)) > 1e-12 * scale
+    y = np.linalg.solve(np.where(ok[..., None, None], A, np.eye(3)),
+                        c[..., combos][..., None])[..., 0]
+    slack = c[..., None, :] - np.einsum("...jk,...ck->...cj", G, y)
+    tol = _TOL * (1.0 + np.abs(c)[..., None, :] + np.linalg.norm(G, axis=-1)[..., None, :]
+                  * np.linalg.norm(y, axis=-1)[..., None])
+    feas = ok & np.all(slack >= -tol, axis=-1)
+    r2 = np.where(feas, y[..., 0] ** 2 + y[..., 1] ** 2, -np.inf).max(axis=-1)
+    held = ~np.any(_q_rays(G), axis=-1)
+    return np.where(held & np.isfinite(r2), np.sqrt(np.maximum(r2, 0.0)), math.inf) * \
+        external_force
