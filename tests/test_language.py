@@ -64,6 +64,8 @@ J = intersect_circles c1 c3 (0)    # x = 1, left of A->B: y = +sqrt(3)
 K = second_intersection c1 c3 J
 s = signed_length A B l
 V = point_from_lengths s s (-1, a)
+Pq = parallel_to_points A B C      # through C along B - A = (2, 0)
+T = quarter_turn B C               # B - C = (2, -2) turned clockwise: (-2, -2), plus C
 """
 EXPECTED = {
     "A": Point(0, 0), "B": Point(2, 0), "C": Point(0, 2),
@@ -73,7 +75,7 @@ EXPECTED = {
     "X": Point(-2, 0), "R": Point(0, -2), "c1": Circle(Point(0, 0), 4),
     "c2": Circle(Point(1, 0), 1), "c3": Circle(Point(2, 0), 4), "I0": Point(2, 0),
     "I1": Point(-2, 0), "J": Point(1, sqrt(3)), "K": Point(1, -sqrt(3)), "s": sp.Integer(2),
-    "V": Point(-2, 6),
+    "V": Point(-2, 6), "Pq": Line(Point(0, 2), Point(2, 0)), "T": Point(-2, 0),
 }
 PRESETS = ("fig6", "table1a", "table1b", "table1c")
 
@@ -100,6 +102,7 @@ def test_every_operation_of_the_kernel_has_a_record():
                 "circle_through", "circle_on_diameter", "intersect_line_circle",
                 "intersect_circles", "second_intersection", "signed_length",
                 "point_from_lengths"}
+    expected |= {"parallel_to_points", "quarter_turn"}  # issue 25: the n-contact recipe
     assert set(OPERATIONS) == expected
     assert all(OPS[k] is op.function for k, op in OPERATIONS.items())
     for op in OPERATIONS.values():
