@@ -13,12 +13,14 @@ from .boundary.limits import (
     MAX_ANGLES,
     MAX_ARGUMENT_BITS,
     MAX_BITS,
+    MAX_DEGREE,
     MAX_DEPTH,
     MAX_EXPONENT,
     MAX_INT_BITS,
     MAX_LENGTH,
     MAX_LIST_LENGTH,
     MAX_NODES,
+    MAX_TERMS,
     MAX_WORK_BITS,
 )
 
@@ -29,11 +31,13 @@ __all__ = [
     "MAX_ANGLES",
     "MAX_ARGUMENT_BITS",
     "MAX_BITS",
+    "MAX_DEGREE",
     "MAX_DEPTH",
     "MAX_EXPONENT",
     "MAX_INT_BITS",
     "MAX_LENGTH",
     "MAX_LIST_LENGTH",
     "MAX_NODES",
+    "MAX_TERMS",
     "MAX_WORK_BITS",
 ]

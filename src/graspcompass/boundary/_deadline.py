@@ -21,7 +21,7 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 
-__all__ = ["OutOfTime", "deadline"]
+__all__ = ["OutOfTime", "command_deadline", "deadline"]
 
 
 class OutOfTime(BaseException):
@@ -60,3 +60,12 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
         signal.signal(signal.SIGALRM, previous)
         if outer_end is not None:
             signal.setitimer(signal.ITIMER_REAL, max(outer_end - time.monotonic(), 1e-4))
+
+
+def command_deadline(seconds: float | None) -> contextlib.AbstractContextManager[None]:
+    """The ``--timeout`` of a command: :class:`OutOfTime` after ``seconds`` (None: none)."""
+    if seconds is None:
+        return contextlib.nullcontext()
+    return deadline(seconds, lambda: OutOfTime(
+        f"the command took longer than {seconds:g} s (--timeout S allows more): its input "
+        "makes too much work"))

@@ -10,6 +10,8 @@ evaluated, node by node (:class:`_Reader`), each intermediate value checked agai
 from __future__ import annotations
 
 import ast
+import functools
+import math
 import operator
 import re
 from collections.abc import Callable, Mapping
@@ -23,10 +25,12 @@ from .errors import ComplexValueError, InputError
 from .limits import (  # the limits, stated once
     MAX_ARGUMENT_BITS,
     MAX_BITS,
+    MAX_DEGREE,
     MAX_DEPTH,
     MAX_EXPONENT,
     MAX_LENGTH,
     MAX_NODES,
+    MAX_TERMS,
     MAX_WORK_BITS,
 )
 
@@ -185,7 +189,45 @@ class _Reader:
         if _too_many_nodes(value):
             raise _fail(self.text, f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
                         "out at length); simplify the text")
+        self._degree_at_most(_degree(value), value)
         return value
+
+    def _degree_at_most(self, degree: int, value: sympy.Expr) -> None:
+        """Refuse a value whose polynomial would be too large to compute with exactly:
+        degree over :data:`MAX_DEGREE`, or more than :data:`MAX_TERMS` possible terms
+        (``C(n + degree, n)`` in ``n`` names), known before anything is expanded."""
+        if degree == 0 or (degree <= MAX_DEGREE and math.comb(len(self.symbols) + degree, degree)
+                           <= MAX_TERMS):
+            return  # within the budget whatever names the value uses
+        names = sorted(map(str, value.free_symbols))
+        shown = ", ".join(names)
+        if degree > MAX_DEGREE:
+            raise _fail(self.text, f"the value would have degree {degree} in {shown}, more "
+                        f"than {MAX_DEGREE} (too costly to compute exactly)")
+        terms = math.comb(len(names) + degree, degree)
+        if terms > MAX_TERMS:
+            raise _fail(self.text, f"the value would have degree {degree} in {len(names)} names "
+                        f"({shown}): up to {terms} terms, more than {MAX_TERMS} (too costly to "
+                        "compute exactly)")
+
+    def _divisor(self, value: sympy.Expr) -> None:
+        """Refuse dividing by a number that is 0, also in disguise.
+
+        ``sqrt(2) + sqrt(3) - sqrt(5 + 2*sqrt(6))`` is 0 although no finite evaluation
+        shows it: where :func:`real_sign` cannot tell, the square roots are denested
+        (:func:`sympy.sqrtdenest`) and the sign decided again.  A symbolic divisor
+        becomes a condition instead (:meth:`_condition`).
+        """
+        if value.free_symbols or value.is_Rational:
+            return  # a condition, or 1/0 (zoo, refused by read)
+        sign = real_sign(value)
+        if sign is None and not _has_function(value):
+            sign = _algebraic_sign(value)
+        if sign == 0:
+            raise _fail(self.text, f"the value is not finite (division by {_short(value)}, "
+                        "which is exactly 0)")
+        if sign is None:
+            self._sign(value, value)  # raises: cannot decide the sign
 
     def _node(self, node: ast.AST) -> sympy.Expr:
         if isinstance(node, ast.Constant):
@@ -205,8 +247,7 @@ class _Reader:
             left, right = self.read(node.left), self.read(node.right)
             if isinstance(node.op, ast.Div):
                 self._condition("!=", right)
-            if isinstance(node.op, ast.Div) and _has_function(right) and not self._nonzero(right):
-                raise _fail(self.text, "the value is not finite (division by zero)")
+                self._divisor(right)
             return _BINOPS[type(node.op)](left, right)
         if isinstance(node, ast.Call):
             return self._call(node)
@@ -348,6 +389,7 @@ class _Reader:
         if abs(exponent.p) > MAX_EXPONENT or exponent.q > MAX_EXPONENT:
             raise _fail(self.text, f"exponents p/q with |p| or q larger than {MAX_EXPONENT} are "
                         "refused (they could take forever to compute)")
+        self._degree_at_most(_degree(base) * abs(exponent.p), base)
         if _max_bits(base) * abs(exponent.p) > MAX_BITS:
             raise _fail(self.text, "the power is too large to compute exactly (more than "
                         f"{MAX_BITS} bits)")
@@ -357,10 +399,10 @@ class _Reader:
             self._condition(">" if exponent < 0 else ">=", base)
         elif exponent < 0:
             self._condition("!=", base)
+        if exponent < 0:
+            self._divisor(base)
         self.depth -= 1
         if _has_function(base):  # as for functions: no sign queries through nested functions
-            if exponent < 0 and not self._nonzero(base):
-                raise _fail(self.text, "the value is not finite (division by zero)")
             return sympy.Pow(base, exponent, evaluate=False)
         return base**exponent
 
@@ -394,6 +436,58 @@ def _clearly_inside_unit(value: sympy.Expr) -> bool:
 
 def _has_function(value: sympy.Expr) -> bool:
     return bool(value.atoms(sympy.Function))
+
+
+#: Most distinct square roots in a number whose zero test needs its minimal polynomial.
+_MINPOLY_ROOTS = 6
+
+
+def _algebraic_sign(value: sympy.Expr) -> int | None:
+    """0 if a number of square roots that no evaluation can tell from 0 is 0, 2 if it is
+    shown nonzero (sign unknown), None if neither can be shown within the budget.
+
+    Every square root is denested (:func:`sympy.sqrtdenest`) and the value expanded, which
+    shows most zeros in disguise; then, for a value with at most :data:`_MINPOLY_ROOTS`
+    distinct roots and no ``pi``, its minimal polynomial decides: it is ``x`` exactly when
+    the value is 0.
+    """
+    roots = {p for p in sympy.preorder_traversal(value)
+             if p.is_Pow and p.exp.is_Rational and p.exp.q == 2}
+    try:
+        denested = sympy.expand(value.xreplace({r: sympy.sqrtdenest(r) for r in roots}))
+        if denested == 0:
+            return 0
+        sign = real_sign(denested)
+        if sign is not None:
+            return sign
+        if len(roots) > _MINPOLY_ROOTS or value.has(sympy.pi):
+            return None
+        x = sympy.Dummy("x")
+        return 0 if sympy.minimal_polynomial(value, x) == x else 2
+    except (*_SYMPY_FAILURES, NotImplementedError):
+        return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _degree(value: sympy.Expr) -> int:
+    """An upper bound on the degree of ``value`` in its symbols, read from its tree.
+
+    A sum has the largest degree of its terms, a product the sum of its factors', a power
+    ``b**(p/q)`` ``|p|`` times its base's (a root counted as the power it clears to), and
+    a function of a symbolic argument its argument's degree (at least 1).
+    """
+    if value.is_Symbol:
+        return 1
+    if value.is_Atom:
+        return 0
+    if value.is_Add:
+        return max(_degree(t) for t in value.args)
+    if value.is_Mul:
+        return sum(_degree(f) for f in value.args)
+    if value.is_Pow and value.exp.is_Rational:
+        return _degree(value.base) * abs(int(value.exp.p))
+    inner = max(_degree(a) for a in value.args)
+    return max(1, inner) if inner or value.free_symbols else 0
 
 
 def _too_many_nodes(value: sympy.Expr, most: int = MAX_NODES) -> bool:

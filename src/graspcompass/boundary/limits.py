@@ -15,13 +15,21 @@ Examples
 from __future__ import annotations
 
 __all__ = ["COMMAND_SECONDS", "EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES",
-           "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEPTH", "MAX_EXPONENT", "MAX_INT_BITS",
-           "MAX_LENGTH", "MAX_LIST_LENGTH", "MAX_NODES", "MAX_WORK_BITS"]
+           "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEGREE", "MAX_DEPTH", "MAX_EXPONENT",
+           "MAX_INT_BITS", "MAX_LENGTH", "MAX_LIST_LENGTH", "MAX_NODES", "MAX_TERMS",
+           "MAX_WORK_BITS"]
 
 #: Longest text :func:`~graspcompass.expr.parse_exact` reads.
 MAX_LENGTH = 200
 #: Largest ``|p|`` and ``q`` of an exponent ``p/q`` (``10**10**10`` and ``2**(1/65)`` are refused).
 MAX_EXPONENT = 64
+#: Highest degree a value may have in the names it uses (parameters, and let values through
+#: theirs), counted on its tree before anything is expanded: a chain of ``let`` values such
+#: as ``(t + 1)**64`` five deep would be a polynomial of degree 64**5 for the replay.
+MAX_DEGREE = 64
+#: Most terms a value's polynomial could have, ``C(n + d, n)`` for degree ``d`` in ``n``
+#: names (``(a + b + c + d + 1)**64`` could have 814,385): a bound known before expanding.
+MAX_TERMS = 20_000
 #: Most nested function calls and powers (``sqrt(sqrt(...))`` 17 deep is refused).
 MAX_DEPTH = 16
 #: Most bits of any integer (numerator or denominator) in a value or an intermediate

@@ -18,7 +18,6 @@ anything is computed: a missing folder is refused (only the main job's
 from __future__ import annotations
 
 import argparse
-import contextlib
 import gc
 import json
 import os
@@ -164,6 +163,8 @@ def build_parser() -> argparse.ArgumentParser:
     _crosscheck.register(sub)
     for name in TIMED:
         _add_timeout(sub.choices[name])
+    _add_timeout(sub.choices["explore"], "until the window opens (reading a file, the first "
+                 "drawing); the window itself stays open as long as you like")
     return p
 
 
@@ -306,12 +307,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else 2
-    from ..boundary._deadline import OutOfTime, deadline
+    from ..boundary._deadline import OutOfTime, command_deadline
 
-    seconds = getattr(args, "timeout", None) if args.command in TIMED else None
-    alarm = contextlib.nullcontext() if seconds is None else deadline(
-        seconds, lambda: OutOfTime(f"the command took longer than {seconds:g} s (--timeout "
-                                   "S allows more): its input makes too much work"))
+    alarm = command_deadline(getattr(args, "timeout", None) if args.command in TIMED else None)
     try:
         with warnings.catch_warnings(), alarm:
             warnings.simplefilter("ignore", SyntaxWarning)  # from text the parser refuses

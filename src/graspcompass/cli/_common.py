@@ -118,7 +118,7 @@ def _add_grasp_options(p: argparse.ArgumentParser) -> None:
 
 
 #: The commands that take ``--timeout`` (``check`` and ``verify`` have their own, which
-#: keep the verdicts reached in time; ``explore`` is a window).
+#: keep the verdicts reached in time; ``explore``'s bounds the work before its window opens).
 TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
          "crosscheck")
 
@@ -129,11 +129,11 @@ def _seconds(text: str) -> float:
     return check_seconds(text)
 
 
-def _add_timeout(p: argparse.ArgumentParser) -> None:
+def _add_timeout(p: argparse.ArgumentParser, what: str = "") -> None:
     p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
                    help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
                         f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
-                        "the work arbitrarily long)")
+                        f"the work arbitrarily long){'; ' + what if what else ''}")
 
 
 def grasp_from_args(args: argparse.Namespace) -> Grasp:

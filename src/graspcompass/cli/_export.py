@@ -149,11 +149,16 @@ def run_explore(args: argparse.Namespace, grasp: Any) -> int:
         a construction file that is not the paper's recipe (the explorer
         redraws the recipe as the sliders move).
     """
-    if _file.file_name(args) is not None or getattr(args, "set", None):
-        made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
-        _file.paper_only(made, "explore")
-        grasp = made.construction.grasp
+    from ..boundary._deadline import command_deadline
+
+    seconds = getattr(args, "timeout", None)
+    with command_deadline(seconds):  # the work before the window: a file, a grasp
+        if _file.file_name(args) is not None or getattr(args, "set", None):
+            made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
+            _file.paper_only(made, "explore")
+            grasp = made.construction.grasp
+        grasp = grasp() if callable(grasp) else grasp
     from ..render.explorer import explore
 
-    explore(grasp() if callable(grasp) else grasp)
+    explore(grasp, timeout=seconds)
     return 0
