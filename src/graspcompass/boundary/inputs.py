@@ -173,7 +173,7 @@ def exact_sign(value: sp.Expr) -> int | None:
 
 
 def _int_bits(name: str, *ints: int) -> None:
-    """Refuse integers of more than :data:`~graspcompass.limits.MAX_INT_BITS` bits."""
+    """Refuse integers of more than :data:`~graspcompass.boundary.limits.MAX_INT_BITS` bits."""
     for i in ints:
         if i.bit_length() > MAX_INT_BITS:
             raise InputTooLargeError(f"{name}: a number of {i.bit_length()} bits; at most "
