@@ -40,6 +40,7 @@ imports nothing from the package but :mod:`graspcompass.expr` and
 
 Examples
 --------
+>>> from graspcompass.errors import ComplexValueError, NonFiniteValueError
 >>> real_value("1.2", "x1"), real_value("108deg", "phi1"), real_value(3, "y")
 (6/5, 3*pi/5, 3)
 >>> try:
