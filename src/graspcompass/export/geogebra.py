@@ -32,7 +32,7 @@ import io
 import math
 import zipfile
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import quoteattr
 
 from .. import labelling
@@ -41,6 +41,9 @@ from ..geometry.numeric import to_float
 from ..palette import rgb
 from ._ggb_defs import SLIDERS, definition, ggb_label
 from ._scene import build_scene, label_tex
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 
@@ -156,7 +159,7 @@ def _label_offsets(scene: Any, frame: tuple[float, float, float]) -> dict[str, t
     return out
 
 
-def _view(construction: Any, scene: Any) -> list[str]:
+def _view(construction: Construction, scene: Any) -> list[str]:
     # the one view box of every picture (layout.view_box, objects chosen by role)
     x0, y0, scale = _frame(scene.box)
     return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
@@ -169,7 +172,7 @@ def _view(construction: Any, scene: Any) -> list[str]:
             "</euclidianView>"]
 
 
-def ggb_xml(construction: Any, title: str | None = None) -> str:
+def ggb_xml(construction: Construction, title: str | None = None) -> str:
     """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
 
     Raises
@@ -220,7 +223,7 @@ def _has_symbols(v: Any) -> bool:
     return bool(getattr(v, "free_symbols", ()))
 
 
-def to_ggb(construction: Any, title: str | None = None) -> bytes:
+def to_ggb(construction: Construction, title: str | None = None) -> bytes:
     """The ``.ggb`` archive (zip bytes) of ``construction``.
 
     Examples
@@ -237,7 +240,7 @@ def to_ggb(construction: Any, title: str | None = None) -> bytes:
     return buf.getvalue()
 
 
-def write_ggb(construction: Any, path: Any, title: str | None = None) -> Path:
+def write_ggb(construction: Construction, path: Any, title: str | None = None) -> Path:
     """Write :func:`to_ggb` to ``path``; returns the path.
 
     Raises

@@ -47,13 +47,16 @@ import re
 import sys
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .. import labelling
 from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
 from ..palette import PALETTE
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
 
@@ -93,7 +96,7 @@ def _params(grasp: Grasp) -> dict[str, float]:
     return {k: _float(p[k], k) for k in _PARAMS}
 
 
-def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
+def page_data(construction: Construction, title: str | None = None) -> dict[str, Any]:
     """The JSON data the page starts from.
 
     Parameters
@@ -148,7 +151,7 @@ def _html_escape(text: str) -> str:
             .replace('"', "&quot;"))
 
 
-def to_html(construction: Any, title: str | None = None) -> str:
+def to_html(construction: Construction, title: str | None = None) -> str:
     """The self-contained explorer page of ``construction`` (one HTML document).
 
     The closed form (27)-(39), the envelope (25) and F_int (17) are computed in
@@ -176,7 +179,7 @@ def to_html(construction: Any, title: str | None = None) -> str:
     return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], web_file("explorer.html"))
 
 
-def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
+def write_html(construction: Construction, path: Any, title: str | None = None) -> Path:
     """Write the interactive web explorer of ``construction`` to ``path``.
 
     One HTML file that works offline (``file://``) and in any browser: sliders

@@ -14,9 +14,12 @@ one path of exact circular arcs (``arc[start angle, delta angle, radius]``).
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["to_tikz", "write_tikz"]
 
@@ -80,7 +83,7 @@ def _envelope_path(scene: Scene) -> str:
     return "\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"
 
 
-def to_tikz(construction: Any, standalone: bool = True, title: str | None = None) -> str:
+def to_tikz(construction: Construction, standalone: bool = True, title: str | None = None) -> str:
     """TikZ code of ``construction`` (numeric parameters).
 
     Parameters
@@ -166,7 +169,7 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
     return "\n".join(out) + "\n"
 
 
-def write_tikz(construction: Any, path: Any, standalone: bool = True,
+def write_tikz(construction: Construction, path: Any, standalone: bool = True,
                title: str | None = None) -> Path:
     """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path.
 
