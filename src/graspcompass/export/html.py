@@ -75,7 +75,7 @@ def web_file(name: str) -> str:
     """The text of one of :data:`WEB_FILES`, read from the installed package."""
     if name not in WEB_FILES:
         raise ValueError(f"unknown web file {name!r}; one of {', '.join(WEB_FILES)}")
-    return resources.files("graspcompass.export").joinpath("_web", name).read_text("utf-8")
+    return resources.files("graspcompass.export").joinpath("_web").joinpath(name).read_text("utf-8")
 
 
 def _float(v: Any, name: str) -> float:
