@@ -174,6 +174,22 @@ def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
             detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
 
 
+class _Later(dict):  # type: ignore[type-arg]
+    """A step's conditions without condition (1), worked out when a claim first asks."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._thunks: dict[str, Callable[[], tuple[list[str], list[str]]]] = {}
+
+    def later(self, name: str, thunk: Callable[[], tuple[list[str], list[str]]]) -> None:
+        self._thunks[name] = thunk
+
+    def get(self, name: str, default: Any = None) -> Any:
+        if name not in self and name in self._thunks:
+            self[name] = self._thunks.pop(name)()
+        return super().get(name, default)
+
+
 def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
                  step_conds: Mapping[str, tuple[list[str], list[str]]],
                  vacuous: Mapping[str, str] | None = None) -> CheckRow:
@@ -443,7 +459,7 @@ def check_program(program: Program, against: str | None = None,
     tie = tie_mu(p.name for p in program.params)
     statements = {st.name: st for st in program.steps}
     vacuous: dict[str, str] = {}
-    plain_conds: dict[str, tuple[list[str], list[str]]] = {}
+    plain_conds = _Later()
 
     def step_row(s: Any) -> CheckRow:
         """One step's row; the shared tables are written only once it is complete."""
@@ -475,16 +491,20 @@ def check_program(program: Program, against: str | None = None,
             return CheckRow(s.name, "step", line, ProofResult(
                 Status.REFUTED, "degenerate for every parameter: it exists at no point of "
                 "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps))
-        plain = (implied, extra)
-        if cond1_file:  # for claims not under condition1: the same, without (1)
-            try:
-                imp0, ext0 = step_conditions(s, False, replaced, tie)
-                own0 = decide([*stmt.conditions, *ops], False, tie)
-                plain = (imp0 + own0.implied, ext0 + own0.extra)
-            except ValueError:
-                pass
         step_conds[s.name] = (implied, extra)
-        plain_conds[s.name] = plain
+        if cond1_file:  # for claims not under condition1: the same, without (1), decided
+            def plain(s: Any = s, stmt: Any = stmt, ops: Any = ops, replaced: Any = replaced,
+                      mine: tuple[list[str], list[str]] = (implied, extra)
+                      ) -> tuple[list[str], list[str]]:
+                try:  # only when such a claim is built on the step
+                    imp0, ext0 = step_conditions(s, False, replaced, tie)
+                    own0 = decide([*stmt.conditions, *ops], False, tie)
+                    return imp0 + own0.implied, ext0 + own0.extra
+                except ValueError:
+                    return mine
+            plain_conds.later(s.name, plain)
+        else:
+            plain_conds[s.name] = (implied, extra)
         given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
         return CheckRow(s.name, "step", line, ProofResult(
             Status.GIVEN if given and not s.inputs else Status.PROVED,
