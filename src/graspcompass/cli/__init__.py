@@ -123,6 +123,9 @@ def build_parser() -> argparse.ArgumentParser:
     _add_grasp_options(s)
     _file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
+    from ._ncontact import add_options as _add_ncontact_steps
+
+    _add_ncontact_steps(s)
 
     k = sub.add_parser(
         "k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
@@ -219,11 +222,12 @@ def _cmd_main(args: argparse.Namespace) -> int:
 
 
 def _cmd_draw(args: argparse.Namespace) -> int:
-    if getattr(args, "contact", None):
-        from . import _ncontact
+    from . import _ncontact
 
+    if _ncontact.wants_contacts(args) and args.step is None:
         return _ncontact.draw(args)
-    stem = _file.output_stem(args, args.preset)
+    stem = ("ncontact-steps" if _ncontact.wants_contacts(args) else
+            _file.output_stem(args, args.preset))
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
     if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
@@ -255,11 +259,9 @@ def _cmd_steps(args: argparse.Namespace) -> int:
 
 
 def _cmd_k(args: argparse.Namespace) -> int:
-    from . import _k
+    from . import _k, _ncontact
 
-    if getattr(args, "contact", None):
-        from . import _ncontact
-
+    if _ncontact.wants_contacts(args):
         return _ncontact.run(args)
     return _k.run(args, lambda: grasp_from_args(args))
 

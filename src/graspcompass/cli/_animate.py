@@ -210,6 +210,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                         "construction file ('-' reads stdin; same as --file)", action=_PresetOrFile)
     add_grasp_options(p)
     _file.add_file_options(p, positional=False)
+    from ._ncontact import add_options as _add_ncontact
+
+    _add_ncontact(p)
     p.add_argument("--kind", choices=KINDS, default="construction",
                    help="what to animate (default: construction)")
     p.add_argument("-o", "--output", metavar="FILE",

@@ -58,6 +58,9 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                "exit status: 0, or 2 for a user error.")
     add_grasp_options(e)
     _file.add_file_options(e)
+    from ._ncontact import add_options as _add_ncontact
+
+    _add_ncontact(e)
     e.add_argument("--format", choices=_FORMATS,
                    help="file format (default: from the extension of -o)")
     e.add_argument("-o", "--output", metavar="FILE",

@@ -180,6 +180,18 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
 
     name = file_name(args)
     sets = getattr(args, "set", None) or []
+    from ._ncontact import wants_contacts
+
+    if wants_contacts(args):
+        if name is not None:
+            raise ValueError("--contact and a construction file: give one (the n-contact "
+                             "recipe is written from the contacts)")
+        from ..construction.language import parse, replay
+        from ..construction.ncontact_recipe import ncontact_recipe
+        from ._ncontact import grasp_from_args as contacts_grasp
+
+        program = parse(ncontact_recipe(contacts_grasp(args)), "<contacts>")
+        return FileConstruction(replay(program), False, "ncontact.gc")
     if name is None:
         if sets:
             raise ValueError(f"--set {sets[0][0]}=...: --set gives values to the parameters "

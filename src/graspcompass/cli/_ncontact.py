@@ -22,7 +22,7 @@ from typing import IO, Any
 
 from ..boundary.errors import InputError
 
-__all__ = ["add_options", "draw", "run"]
+__all__ = ["add_options", "contacts_file", "draw", "grasp_from_args", "run", "wants_contacts"]
 
 _HEAD = ["θ", "deg", "k", "F", "tight"]
 
@@ -40,6 +40,47 @@ def add_options(p: argparse.ArgumentParser) -> None:
                         "(default for more), pair:I,J or max-normal")
     g.add_argument("--com", default="0,0", metavar="X,Y",
                    help="centre of mass (default: 0,0)")
+    g.add_argument("--contacts", metavar="FILE",
+                   help="a contacts file: one contact X,Y,NX,NY,MU (or X,Y,ANGLE,MU) a line, "
+                        "'#' starts a comment; 'com X,Y' and 'effort NAME' lines are allowed")
+
+
+def contacts_file(name: str) -> tuple[list[str], str | None, str | None]:
+    """``(contact texts, com text, effort)`` of a contacts file (bounded, UTF-8).
+
+    Raises
+    ------
+    graspcompass.errors.InputError
+        A file that cannot be read, or a line that is neither a contact, ``com X,Y``
+        nor ``effort NAME`` (``FILE:LINE: what``).
+    """
+    from ._check import read_file
+
+    text, shown = read_file(name)
+    contacts: list[str] = []
+    com = effort = None
+    for i, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        word, _, rest = line.partition(" ")
+        if word == "com":
+            com = rest.strip()
+        elif word == "effort":
+            effort = rest.strip()
+        elif "," in line:
+            contacts.append(line)
+        else:
+            raise InputError(f"{shown}:{i}: expected a contact X,Y,NX,NY,MU, 'com X,Y' or "
+                             f"'effort NAME', got {line[:40]!r}")
+    if not contacts:
+        raise InputError(f"{shown}: no contact in the file")
+    return contacts, com, effort
+
+
+def wants_contacts(args: argparse.Namespace) -> bool:
+    """True when the options describe an n-contact grasp (``--contact`` or ``--contacts``)."""
+    return bool(getattr(args, "contact", None) or getattr(args, "contacts", None))
 
 
 def _values(text: str, name: str, counts: tuple[int, ...]) -> list[str]:
@@ -58,12 +99,20 @@ def grasp_from_args(args: argparse.Namespace) -> Any:
     """The :class:`~graspcompass.ncontact.NContactGrasp` of the options."""
     from ..ncontact import NContactGrasp
 
-    if len(args.contact) < 2:
+    texts, com_text, effort = list(args.contact or []), None, None
+    if getattr(args, "contacts", None):
+        if texts:
+            raise InputError("give the contacts either with --contact or in --contacts FILE, "
+                             "not both")
+        texts, com_text, effort = contacts_file(args.contacts)
+    if len(texts) < 2:
         raise InputError("--contact: give at least two contacts")
     contacts = [tuple(_values(t, f"--contact {i + 1}", (4, 5)))
-                for i, t in enumerate(args.contact)]
-    com = tuple(_values(args.com, "--com", (2,)))
-    effort = args.effort or ("paper" if len(contacts) == 2 else "sum-normal")
+                for i, t in enumerate(texts)]
+    if com_text is not None and args.com != "0,0":
+        raise InputError("--com and a 'com' line of the contacts file: give one")
+    com = tuple(_values(com_text or args.com, "--com", (2,)))
+    effort = args.effort or effort or ("paper" if len(contacts) == 2 else "sum-normal")
     return NContactGrasp(contacts, com=com, effort=effort)
 
 
@@ -138,8 +187,6 @@ def draw(args: argparse.Namespace) -> int:
     if fmt not in ("png", "svg", "pdf"):
         raise InputError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf file "
                          "name or --format")
-    if args.step is not None:
-        raise InputError("--step: the n-contact diagram has no construction steps yet")
     path = check_target(name)
     g = grasp_from_args(args)
     import matplotlib

@@ -82,6 +82,10 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    help=f"contact points along the outline, 3 to {MAX_SAMPLES} (default 120)")
     s.add_argument("--top", type=int, default=5, metavar="K",
                    help=f"how many of the best pairs to print, 1 to {_MAX_TOP} (default 5)")
+    s.add_argument("--jaws", type=int, choices=(2, 3, 4), default=2,
+                   help="jaws of the gripper (default 2); 3 or 4: rank sets of sampled contacts "
+                        "by the worst total squeeze over all orientations, F_e max|q| "
+                        "(docs/ncontact.md; --per, --gravity, --tilt, --exact do not apply)")
     s.add_argument("--json", action="store_true", help="print a JSON object")
     s.add_argument("--draw", metavar="FILE", help="also draw the outline, the best pairs with "
                    "their friction cones and a heat map of the squeeze (PNG, SVG or PDF; the "
@@ -187,6 +191,28 @@ def run(args: argparse.Namespace) -> int:
             raise InputError(f"--com: expected two real lengths, got {args.com!r}") from None
     from ..outlines import read_outline
     from ..planning import plan_contacts
+
+    if args.jaws > 2:
+        if args.gravity is not None or args.tilt is not None or args.per != "jaw":
+            raise InputError("--gravity, --tilt and --per are for two jaws; --jaws 3 ranks by "
+                             "the worst total squeeze over all orientations")
+        from ..planning.ncontact import plan_jaws
+
+        rec = plan_jaws(read_outline(args.shape, unit=args.shape_unit), args.jaws, mu=mu,
+                        load=mass * (g + accel) * safety, samples=args.samples, com=com,
+                        top=args.top)
+        if args.json:
+            print(json.dumps(rec, indent=1, allow_nan=False))
+            return 0
+        print(f"{args.shape}: {rec['samples']} contacts sampled, {rec['sets']} sets of "
+              f"{args.jaws}, {rec['force_closure_sets']} force-closure with μ = {mu:.4g}; "
+              f"load {rec['load_N']:.6g} N; total squeeze (sum of the normal forces) that "
+              "holds the part in every orientation")
+        for p in rec["top"]:
+            cs = "  ".join("(" + ", ".join(f"{v * 1e3:.3f}" for v in q) + ")"
+                           for q in p["contacts_m"])
+            print(f"{p['rank']:>4}  {cs}  {p['squeeze_N']:.4g} N")
+        return 0
 
     outline = read_outline(args.shape, unit=args.shape_unit)
     plan = plan_contacts(outline, mu=mu, mass=mass, samples=args.samples, com=com, g=g,

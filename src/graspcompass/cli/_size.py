@@ -87,8 +87,15 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                "exit status: 0; 2 for a user error, including a grasp that is not "
                "force-closure (squeezing harder cannot hold the part).")
     part = s.add_argument_group("the part, in one world frame (right-handed, y up)")
-    part.add_argument("--p1", required=True, metavar="X,Y", help="contact of jaw 1")
-    part.add_argument("--p2", required=True, metavar="X,Y", help="contact of jaw 2")
+    part.add_argument("--p1", metavar="X,Y", help="contact of jaw 1 (required unless --contact)")
+    part.add_argument("--p2", metavar="X,Y", help="contact of jaw 2 (required unless --contact)")
+    part.add_argument("--contact", action="append", metavar="X,Y,NX,NY,MU",
+                      help="n jaws or fingers (three-jaw grippers, hands): one contact a time "
+                           "(point, inward normal or one angle, μ); the worst squeeze over all "
+                           "orientations is F_e max|q| (docs/ncontact.md)")
+    part.add_argument("--contacts", metavar="FILE", help="the --contact lines in a file")
+    part.add_argument("--effort", metavar="NAME", help="with --contact: sum-normal (default), "
+                      "max-normal or pair:I,J")
     part.add_argument("--n1", metavar="X,Y",
                       help="inward normal at jaw 1's contact (any nonzero length)")
     part.add_argument("--n2", metavar="X,Y",
@@ -220,6 +227,34 @@ def _pair_values(text: str, option: str, kind: str | None) -> tuple[Any, Any]:
     return read(x, f"{option} x"), read(y, f"{option} y")
 
 
+def _run_ncontact(args: argparse.Namespace) -> int:
+    """``size --contact ...``: the worst squeeze of n jaws over all orientations."""
+    from ..sizing.ncontact import size_ncontact
+    from ._ncontact import grasp_from_args
+
+    for opt in ("p1", "p2", "n1", "n2", "outline", "shape", "gravity", "tilt", "accel_vector",
+                "max_force", "mu", "mu1", "mu2"):
+        if getattr(args, opt, None) is not None:
+            raise InputError(f"--{opt.replace('_', '-')} is for two jaws; with --contact give "
+                             "μ in each contact")
+    if args.per != "jaw":
+        raise InputError("--per is for two jaws; with --contact the effort says what is summed")
+    ns = argparse.Namespace(contact=args.contact, contacts=args.contacts,
+                            com=args.com or "0,0", effort=args.effort or "sum-normal")
+    rec = size_ncontact(grasp_from_args(ns), args.mass, g=args.g, accel=args.accel,
+                        safety=args.safety)
+    if args.json:
+        print(json.dumps(rec, indent=1, allow_nan=False))
+        return 0
+    what = {"sum-normal": "sum of the normal forces", "max-normal": "largest normal force"}
+    print(f"{rec['contacts']} contacts, effort {rec['effort']} "
+          f"({what.get(rec['effort'], 'the named normal forces')}): worst squeeze "
+          f"{rec['worst_N']:.6g} N over all orientations (load {rec['load_N']:.6g} N "
+          f"× max|q| = {rec['max_q']:.6g}), at θ = {rec['theta_deg']:.2f}° "
+          "(the load's direction from the part's -y axis)")
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
     """Run ``graspcompass size``; returns the exit status (0).
 
@@ -230,6 +265,11 @@ def run(args: argparse.Namespace) -> int:
         (:class:`~graspcompass.sizing.NotForceClosureError`) or that
         :func:`~graspcompass.place_grasp` refuses: one line on stderr, exit 2.
     """
+    if args.contact or args.contacts:
+        return _run_ncontact(args)
+    if args.p1 is None or args.p2 is None:
+        raise InputError("the following arguments are required: --p1, --p2 (or --contact, "
+                         "once per contact)")
     _check_cheap(args)
     from ..sizing import NotForceClosureError, force_closure, least_mu, size_gripper
     from ..world import FrictionConeError, place_grasp

@@ -95,6 +95,11 @@ def register(sub: Any, _add_grasp_options: Callable[[argparse.ArgumentParser], N
                    help="print the results as JSON (with hypotheses, conditions, certificates)")
     v.add_argument("--markdown", metavar="FILE",
                    help="write the report as a Markdown page (its folder must exist)")
+    v.add_argument("--ncontact", action="store_true",
+                   help="also prove the n-contact claims (docs/ncontact.md): V1..V4 as dual "
+                        "vertices of the n-contact LP, their dual feasibility, complementary "
+                        "slackness, the shorter recipe, a symbolic three-finger grasp (about "
+                        "20 s more)")
     v.add_argument("--certify", action="store_true",
                    help="also certify the symbolic construction (every admissible grasp) and, "
                    "if grasp options are given, that grasp's construction")
@@ -133,7 +138,10 @@ def run(args: argparse.Namespace) -> int:
     budget = Budget(args.timeout)
     if args.certify:  # the symbolic construction is made before the clock starts
         symbolic = internal_force_diagram(Grasp.symbolic("mu"))
-    reports = proof.run_catalogue(quiet=args.quiet or args.json, budget=budget)
+    from ..proof.catalogue import CLAIMS, ncontact_extra
+
+    claims = (*CLAIMS, *ncontact_extra()) if args.ncontact else CLAIMS
+    reports = proof.run_catalogue(claims, quiet=args.quiet or args.json, budget=budget)
     status = proof.exit_status(reports)
     late = sum(r.result.method == TIMED_OUT for r in reports)
     if markdown is not None:

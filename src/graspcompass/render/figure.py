@@ -104,7 +104,7 @@ def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme
     role = getattr(step, "role", "")
     if role == "axis":
         kw: dict[str, Any] = dict(color=theme.axis_color, lw=theme.line_width * 0.8, zorder=2)
-    elif step.op == "perpendicular":
+    elif step.op == "perpendicular" or role in ("transfer", "cost_line"):
         kw = dict(color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2)), zorder=2.5)
     else:
         kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
