@@ -232,6 +232,46 @@ def test_tikz_of_the_presets_compiles_with_pdflatex(preset, tmp_path):
 
 
 @NEEDS_TEX
+@pytest.mark.parametrize("title", [None, "Mine: 100% {x_1} & $#~^\\ φ = π/3, √3 ≈ 1.7 ✓"])
+def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tmp_path):
+    """A page cut to the picture (not Letter or A4), its title (escaped: any text) above and
+    a legend of the styles below, compiled without an overfull box (issue 23)."""
+    own = internal_force_diagram(Grasp(x1="6/5", x2="3/10", y="2/5", phi1="61*pi/180",
+                                       phi2="118*pi/180", xi1="67*pi/180", xi2="49*pi/180"))
+    tex = tmp_path / "own.tex"
+    tex.write_text(to_tikz(own, title=title), encoding="utf-8")
+    pdf = _pdflatex(tex)
+    log = tex.with_suffix(".log").read_text("latin-1")
+    # again with the PDF objects uncompressed, to read the page's MediaBox from the bytes
+    r = subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error",
+                        "-jobname=plain", "\\pdfobjcompresslevel=0\\input{own.tex}"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout[-2000:]
+    assert "Overfull" not in log and "mktexpk" not in log  # no bitmap font either
+    boxes = re.findall(rb"/MediaBox\s*\[\s*([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)",
+                       (tmp_path / "plain.pdf").read_bytes())
+    assert len(boxes) == 1
+    w, h = float(boxes[0][2]) - float(boxes[0][0]), float(boxes[0][3]) - float(boxes[0][1])
+    # 11 cm of picture + 0.4 cm + a 4 pt border each side; taller for the title and legend
+    assert w == pytest.approx(11.4 / 2.54 * 72 + 8, abs=2.0)
+    assert w + 1 < h < 792 and (w, h) != (612, 792)
+    text = tex.read_text("utf-8")
+    head = re.search(r"\{\\large\\bfseries (.*)\\par\}", text).group(1)
+    if title is None:  # a grasp of one's own gets its values as title
+        assert head.startswith("A two-point grasp: x1 = 6/5")
+    else:
+        assert r"100\% \{x\_{}1\} \& \$\#\~{}\^{}\textbackslash{}" in head
+        assert r"$\varphi$ = $\pi$/3, $\sqrt{3}$ $\approx$ 1.7 ?" in head
+    for entry in ("perpendicular to a side", "signed length", "break point", "envelope",
+                  "friction cone"):
+        assert entry in text
+    if shutil.which("pdftoppm"):  # the page as a picture: something is drawn on it
+        subprocess.run(["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path,
+                       check=True, timeout=60)
+        assert list(tmp_path.glob("page*.png"))
+
+
+@NEEDS_TEX
 def test_tikz_fragment_compiles_inside_a_document(fig6, tmp_path):
     (tmp_path / "pic.tex").write_text(to_tikz(fig6, standalone=False), encoding="utf-8")
     doc = tmp_path / "doc.tex"
