@@ -6,8 +6,8 @@ document is standalone without the ``standalone`` class (which Debian ships in
 and shipped out on a page cut to that box with a 4 pt border, as the class does, so
 the document compiles with Debian's ``texlive-latex-base`` and ``texlive-pictures``,
 with no overfull box and no Letter or A4 page round it.  The labels have a white
-background, so that the envelope and the lines do not run through them.  Every step of the protocol is
-one commented block: its index, name, kernel operation, instrument, the
+background, so that the envelope and the lines do not run through them.  Every
+step of the protocol is one commented block: its index, name, kernel operation, instrument, the
 paper's reference, its caption, the exact value (sympy text) and then the
 TikZ code with the value as a decimal with 12 significant digits.  The points
 are ``\\coordinate``\\ s named after the steps (``O_M`` -> ``OM``); points
@@ -98,7 +98,8 @@ _LEGEND = (
     (r"\fill[cone] (0,-0.1) rectangle (0.6,0.1);", "friction cone"),
     (r"\draw[perp] (0,0) -- (0.6,0);", "perpendicular to a side"),
     (r"\draw[length] (0,0) -- (0.6,0);", r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$"),
-    (r"\draw[thales, draw=gccircle1] (0,0) -- (0.6,0);", r"circle on $OV_n$: $k_n(\theta)$, eq. (31)"),
+    (r"\draw[thales, draw=gccircle1] (0,0) -- (0.6,0);",
+     r"circle on $OV_n$: $k_n(\theta)$, eq. (31)"),
     (r"\draw[envelope, fill=none] (0,0) -- (0.6,0);", r"envelope $k_{grasp}(\theta)$, eq. (25)"),
     (r"\node[dot] at (0.3,0) {};", "point of the construction"),
     (r"\node[dot, fill=white, draw=gcpoint, minimum size=2.5pt] at (0.3,0) {};",
