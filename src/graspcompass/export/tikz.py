@@ -66,8 +66,8 @@ def tex_text(text: str) -> str:
 
     Examples
     --------
-    >>> tex_text("P1 = (√3/2, 1/2), φ = π/3 & 50%")
-    'P1 = ($\\sqrt{3}$/2, 1/2), $\\varphi$ = $\\pi$/3 \\& 50\\%'
+    >>> print(tex_text("P1 = (√3/2, 1/2), φ = π/3 & 50%"))
+    P1 = ($\\sqrt{3}$/2, 1/2), $\\varphi$ = $\\pi$/3 \\& 50\\%
     """
     out = []
     i = 0
