@@ -22,7 +22,7 @@ from typing import Any
 
 from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
 
-__all__ = ["to_tikz", "write_tikz"]
+__all__ = ["tex_text", "to_tikz", "write_tikz"]
 
 _WIDTH_CM = 11.0
 #: TikZ anchor of a label on the side ``(dx, dy)`` of its point (:attr:`Scene.labels`).
