@@ -24,8 +24,8 @@ from hypothesis import HealthCheck, given, settings
 
 from conftest import PRESET_NAMES, closed_form_SC, exact_params, float_params
 from graspcompass import Grasp, internal_force_diagram, parse_exact
-from graspcompass._cli_export import register, run_explore, run_export
 from graspcompass.cli import _add_grasp_options
+from graspcompass.cli._export import register, run_explore, run_export
 from graspcompass.construction import diagram_specs, replay
 from graspcompass.export import FORMATS, SCHEMA, dumps, export, guess_format, loads
 from graspcompass.export.geogebra import ggb_xml, read_ggb_xml, to_ggb

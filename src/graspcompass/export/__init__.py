@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._lazy import attach
-from .._output import check_target, writing
+from ..boundary._output import check_target, writing
 
 if TYPE_CHECKING:
     from . import json

@@ -9,7 +9,7 @@ pictures and the paper's presets.
 
 In the page everything follows from the closed form of the paper, ported to
 JavaScript from :meth:`graspcompass.Grasp.S`, :meth:`~graspcompass.Grasp.C` and
-:func:`graspcompass._floatpath.closed_form_floats`: tan(φ ± ξ) in the μ form
+:func:`graspcompass.grasp._floatpath.closed_form_floats`: tan(φ ± ξ) in the μ form
 of eq. (23), S_n and C_n of eqs. (28)-(29) and (34)-(39), V_n = (S_n, C_n) of
 eq. (30)/(33), k_n(θ) = S_n sin θ − C_n cos θ of eq. (32), k_grasp of eq. (25)
 and F_int = k / (x1 + x2) · F_e of eq. (17).  The drawing follows §3.3: X_n,
@@ -49,7 +49,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .. import __version__, labelling
+from .. import labelling
+from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
 from ..palette import PALETTE
@@ -209,7 +210,7 @@ def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
         If ``path`` cannot be written (a missing folder, no permission), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_html(construction, title))
 

@@ -168,6 +168,6 @@ def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_svg(construction, title))

@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 from ..geometry.exact import approx, canon
-from ._signs import det, sign
+from ._signs import det, exact_sgn, sign
 from .errors import DegenerateGraspError
 
 __all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices",
@@ -121,7 +121,6 @@ class Dets:
         (cofactors: (d-1) × (d-1) minors, polynomials).
         """
         from ._hull import feasible_cone
-        from .polygon import exact_sgn
 
         sD = self.sD(basis)
         ms = []

@@ -14,9 +14,9 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from ..boundary.inputs import angle_values
 from ..geometry.exact import canon
 from ..geometry.trig import sincos
-from ..inputs import angle_values
 from ._signs import det
 from .errors import NContactError
 from .polygon import exact_sgn

@@ -296,13 +296,31 @@ def _classify_factor(p: Any) -> str | None:
     return None
 
 
-def _text(p: Any) -> str:
-    """``p`` as text; a long polynomial by its first terms and its size."""
+def _text(p: Any, most: int = 60) -> str:
+    """``p`` as text; a polynomial of more than ``most`` terms by its first terms and its
+    size."""
     R = ring()
-    if len(p.terms()) <= 60:
-        return str(R.expr(p))
+    if len(p.terms()) <= most:
+        return _full_text(p)
     head = R.R.from_dict(dict(p.terms()[:3]))
     return f"{R.expr(head)} + … ({len(p.terms())} terms, degree {sum(p.LM)})"
+
+
+def _full_text(p: Any) -> str:
+    """``p`` as text, whole (remembered: the same factors recur in many steps, and sympy's
+    printer is slow on long sums)."""
+    try:
+        return _TEXTS[p]
+    except KeyError:
+        if len(_TEXTS) > 4096:
+            _TEXTS.clear()
+        text = _TEXTS[p] = str(ring().expr(p))
+        return text
+    except TypeError:  # pragma: no cover - an unhashable element
+        return str(ring().expr(p))
+
+
+_TEXTS: dict[Any, str] = {}
 
 
 def _primitive(p: Any) -> Any:

@@ -580,8 +580,16 @@ def _interactive(backend: str) -> bool:
     return name not in {b.lower() for b in static} and "inline" not in name
 
 
-def explore(grasp: Grasp | None = None) -> Explorer:
+def explore(grasp: Grasp | None = None, *, timeout: float | None = None) -> Explorer:
     """Open the explorer in a window (pyplot); returns it after the window closes.
+
+    Parameters
+    ----------
+    grasp : Grasp, optional
+        The grasp first shown (the paper's Fig. 6 by default).
+    timeout : float, optional
+        Seconds the first drawing may take before the window opens
+        (:class:`~graspcompass._deadline.OutOfTime` after it); the window then stays.
 
     Raises
     ------
@@ -591,14 +599,17 @@ def explore(grasp: Grasp | None = None) -> Explorer:
     import matplotlib
     from matplotlib import pyplot as plt
 
+    from ..boundary._deadline import command_deadline
+
     backend = matplotlib.get_backend()
     if not _interactive(backend):
         raise ValueError(f"cannot open the explorer window: matplotlib's backend {backend!r} "
                          "cannot show windows (no display?): graspcompass export --format html -o "
                          "explorer.html writes the same explorer as one offline web page; in "
                          "Jupyter use explore_notebook()")
-    fig = plt.figure(figsize=(11, 7.5))
-    ex = Explorer(grasp, fig=fig)
+    with command_deadline(timeout):
+        fig = plt.figure(figsize=(11, 7.5))
+        ex = Explorer(grasp, fig=fig)
     plt.show()
     return ex
 

@@ -4,7 +4,7 @@
  * The page embeds its data as JSON (#gc-data): the start parameters, the steps of the
  * construction protocol (numbered as `graspcompass steps` prints them), the palette and
  * the paper's presets.  Everything is computed here from the closed form of the paper,
- * eqs. (27)-(39), ported from graspcompass.grasp / graspcompass._floatpath:
+ * eqs. (27)-(39), ported from graspcompass.grasp / graspcompass.grasp._floatpath:
  *
  *   tan(φ ± ξ) = (sin φ ± μ cos φ) / (cos φ ∓ μ sin φ)                       (23)
  *   S_n = ∓(x1 + x2)/2 ± y tan(φ ± ξ),  C_n = x_{2|1} tan(φ ± ξ)       (28)-(39)
@@ -26,7 +26,7 @@
   const PI = Math.PI;
   const TWO_PI = 2 * Math.PI;
   const NAMES = ["x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "theta"];
-  const FLOAT_MARGIN = 1e-12; // graspcompass._floatpath.FLOAT_MARGIN
+  const FLOAT_MARGIN = 1e-12; // graspcompass.grasp._floatpath.FLOAT_MARGIN
   const MERGE = 1e-13; // break angles closer than this are one (envelope._FLOAT_MERGE)
 
   // ------------------------------------------------------------------------------------
