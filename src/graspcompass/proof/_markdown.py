@@ -50,7 +50,7 @@ def md_text(text: Any) -> str:
 
 
 def _side(text: str) -> sp.Expr | None:
-    from ..expr import parse_exact
+    from ..boundary.expr import parse_exact
 
     names = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", text)) - _FUNCTIONS
     if any(not re.fullmatch(r"[A-Za-z]+[0-9]*(_[A-Za-z0-9]+)?", n) for n in names):
