@@ -267,7 +267,9 @@ def test_step_navigator(page: Page, fig6: Construction) -> None:
 
     def expect(i: int) -> None:
         s = steps[i]
-        assert shown() == (f"Step {s.index} / {len(steps) - 1}", s.caption, s.ref)
+        # the caption with its subscripts set as subscripts (k_grasp -> k<sub>grasp</sub>)
+        caption = re.sub(r"([A-Za-z])_\{?([A-Za-z0-9]+)\}?", r"\1\2", s.caption)
+        assert shown() == (f"Step {s.index} / {len(steps) - 1}", caption, s.ref)
         assert page.get("step") == i
 
     expect(len(steps) - 1)

@@ -105,6 +105,13 @@ def test_buttons_use_svg_icons_not_rare_glyphs(fresh: Any) -> None:
     assert fresh.inner_text("#gc-play").strip() == "play"
 
 
+def test_captions_set_subscripts(fresh: Any) -> None:
+    """The last step's caption, "... the polar graph of k_grasp(θ)", shows k with the
+    subscript "grasp", not an underscore."""
+    html = fresh.evaluate("document.getElementById('gc-caption-text').innerHTML")
+    assert "k<sub>grasp</sub>(θ)" in html and "_" not in html
+
+
 def test_no_debug_line(fresh: Any) -> None:
     assert not re.search(r"\d ms\b", fresh.inner_text("body"))
 

@@ -1086,11 +1086,26 @@
     if (h && h.textContent !== text) h.textContent = text;
   }
 
+  /** Put ``text`` into ``el`` with "k_grasp", "O_M", "X_{1}" as subscripts (DOM nodes,
+   * never HTML parsing): captions read as the paper prints them, not with underscores. */
+  function setSubscripted(el, text) {
+    el.textContent = "";
+    const re = /([A-Za-z])_(\{[^}]*\}|[A-Za-z0-9]+)/g;
+    let at = 0, m;
+    while ((m = re.exec(text)) !== null) {
+      el.appendChild(document.createTextNode(text.slice(at, m.index + 1)));
+      const sub = document.createElement("sub");
+      sub.textContent = m[2].replace(/^\{|\}$/g, "");
+      el.appendChild(sub);
+      at = m.index + m[0].length;
+    }
+    el.appendChild(document.createTextNode(text.slice(at)));
+  }
   let shownPlaying = null;
   function renderStep() {
     const s = DATA.steps[state.step];
     $("gc-stepno").textContent = `Step ${s.index} / ${lastStep}`;
-    $("gc-caption-text").textContent = s.caption;
+    setSubscripted($("gc-caption-text"), s.caption);
     $("gc-ref").textContent = s.ref;
     $("gc-instrument").textContent = s.instrument;
     $("gc-first").disabled = $("gc-prev").disabled = state.step === 0;
