@@ -4,8 +4,8 @@ Each statement the tutorial makes in words is recomputed here from the paper's f
 or read from the paper's text (/work/shared/paper is not needed: the quotes are here):
 §2.2.1 puts x1 > 0, x2 > 0, y ≥ 0; §2.2.2 calls ξ_i the apex angle; (12) makes F_T
 = L†M, the minimum-norm solution; and which contact slips depends on θ (on Fig. 6,
-contact 2 for θ between about 21° and 172°, by k2 up to about 120°), from k_n(θ) = S_n sin θ − C_n cos θ (32)
-with S_n, C_n of eqs. (28)-(39) written out again.
+contact 2 for θ between about 21° and 172°, by k2 up to about 120°), from
+k_n(θ) = S_n sin θ − C_n cos θ (32) with S_n, C_n of eqs. (28)-(39) written out again.
 """
 
 from __future__ import annotations
