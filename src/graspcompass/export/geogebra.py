@@ -17,7 +17,8 @@ four circles and the envelope
 ``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25)).  Each object carries its
 step's caption (``<caption>``), shown in GeoGebra's construction protocol, whose
 navigation bar (play, protocol button) is switched on; the key steps (V_n, the
-circles, the envelope) are breakpoints of the protocol's navigation.  Labels are the step names, except ``x-axis`` -> ``axisX``,
+circles, the envelope) are breakpoints of the protocol's navigation.  Labels are
+the step names, except ``x-axis`` -> ``axisX``,
 ``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.  The view is the one view box
 of every picture (:func:`graspcompass.layout.view_box`), the colours the one palette
 (:mod:`graspcompass.palette`), and each point's name sits where the one label placement
@@ -241,8 +242,10 @@ def ggb_xml(construction: Any, title: str | None = None) -> str:
         if grasp is not None and s.role == "cone_side" and s.n and s.n[0] in _SIDE:
             i = 1 if s.n[0] in (1, 3) else 2
             sides_done[i] += 1
-            if sides_done[i] == 2:  # the cone once both its sides exist
-                out += _cone(i)
+            contacts = {t.n[0]: ggb_label(t.name) for t in construction.steps
+                        if t.role == "contact" and t.n}
+            if sides_done[i] == 2 and {1, 2} <= set(contacts):  # once both sides exist
+                out += _cone(i, contacts)
     out += ["</construction>", "</geogebra>"]
     return "\n".join(out) + "\n"
 
@@ -270,34 +273,42 @@ def _transfer(s: Any, steps: dict[str, Any]) -> list[str] | None:
         return None
     a, b = (steps.get(n) for n in s.inputs)
     if (a is None or b is None or a.op != "signed_length" or b.op != "signed_length"
-            or tuple(sp.sympify(p) for p in s.params[:2]) != (-1, -1)
-            or steps.get(a.inputs[2], None) is None or steps.get(b.inputs[2]) is None
-            or a.inputs[2] != "x-axis" or b.inputs[2] != "y-axis" or b.inputs[0] != "O"):
+            or tuple(sp.sympify(p) for p in s.params[:2]) != (-1, -1)):
+        return None
+    ax, ay, o = (steps.get(n) for n in (a.inputs[2], b.inputs[2], b.inputs[0]))
+    # the axes and the origin by role and value (roles as data, never names)
+    if (ax is None or ay is None or o is None or ax.role != "axis" or ay.role != "axis"
+            or tuple(map(sp.sympify, ax.params)) != (1, 0)
+            or tuple(map(sp.sympify, ay.params)) != (0, 1)
+            or o.op != "point" or any(sp.sympify(p) != 0 for p in o.params)):
         return None
     om, xn, yn = (ggb_label(n) for n in (a.inputs[0], a.inputs[1], b.inputs[1]))
+    org, axis_x, axis_y = (ggb_label(n) for n in (b.inputs[0], a.inputs[2], b.inputs[2]))
     v = ggb_label(s.name)
+    aux = f"V{s.n[0]}" if s.n else v  # the helpers' labels from the role's n, not the name
     hidden = [f"<show {_a(object='true', label='false')}/>", f"<pointSize {_a(val=2)}/>",
               f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>"]
     return [
-        *_element("point", f"{v}x", f"{a.name} carried to O with the compass and reversed "
+        *_element("point", f"{aux}x", f"{a.name} carried to O with the compass and reversed "
                   f"(mirror in O): the x-coordinate of {s.name}", hidden, "Mirror",
-                  (f"Translate[{xn}, Vector[{om}, O]]", "O")),
-        *_element("conic", f"arc{v}x", f"compass circle about O through {v}x", _FAINT,
-                  "Circle", ("O", f"{v}x")),
-        *_element("point", f"{v}y", f"{yn} mirrored in O: the y-coordinate of {s.name}",
-                  hidden, "Mirror", (yn, "O")),
-        *_element("conic", f"arc{v}y", f"compass circle about O through {v}y", _FAINT,
-                  "Circle", ("O", f"{v}y")),
+                  (f"Translate[{xn}, Vector[{om}, {org}]]", org)),
+        *_element("conic", f"arc{aux}x", f"compass circle about O through {aux}x", _FAINT,
+                  "Circle", (org, f"{aux}x")),
+        *_element("point", f"{aux}y", f"{yn} mirrored in O: the y-coordinate of {s.name}",
+                  hidden, "Mirror", (yn, org)),
+        *_element("conic", f"arc{aux}y", f"compass circle about O through {aux}y", _FAINT,
+                  "Circle", (org, f"{aux}y")),
         f"<command {_a(name='Intersect')}>",
-        f"\t<input {_a(a0=f'OrthogonalLine[{v}x, axisX]', a1=f'OrthogonalLine[{v}y, axisY]')}/>",
+        f"\t<input {_a(a0=f'OrthogonalLine[{aux}x, {axis_x}]')} "
+        f"{_a(a1=f'OrthogonalLine[{aux}y, {axis_y}]')}/>",
         f"\t<output {_a(a0=v)}/>", "</command>"]
 
 
-def _cone(i: int) -> list[str]:
+def _cone(i: int, contacts: dict[int, str]) -> list[str]:
     """The friction cone at P_i (Fig. 2) as a filled triangle on its two sides, 0.6 |P1P2|
-    long, following the sliders."""
-    p = f"P{i}"
-    ends = [f"{p} + 0.6 Distance[P1, P2] UnitVector[Vector[{_SIDE[n]}]]"
+    long, following the sliders (``contacts``: the labels of P1, P2, found by role)."""
+    p, p1, p2 = contacts[i], contacts[1], contacts[2]
+    ends = [f"{p} + 0.6 Distance[{p1}, {p2}] UnitVector[Vector[{_SIDE[n]}]]"
             for n in ((1, 3) if i == 1 else (2, 4))]
     r, g, b = rgb("cone")
     style = [f"<show {_a(object='true', label='false')}/>",
