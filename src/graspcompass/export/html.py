@@ -114,7 +114,8 @@ def page_data(construction: Construction, title: str | None = None) -> dict[str,
         ``steps`` (index, name, caption, ref, instrument, key of each step),
         ``initial_step``, ``shape``, ``colors`` (:data:`graspcompass.palette.PALETTE`),
         ``presets``, ``title``, ``version``, ``labelling`` (the constants of the one label
-        placement, :func:`graspcompass.labelling.spec`, read by the page's port of it).
+        placement, :func:`graspcompass.labelling.spec`, read by the page's port of it),
+        ``untitled`` (no title given: the heading shows the grasp's values).
 
     Raises
     ------
@@ -138,6 +139,8 @@ def page_data(construction: Construction, title: str | None = None) -> dict[str,
         version=__version__, params=params, steps=steps, initial_step=len(steps) - 1,
         shape=_shape(grasp.shape), colors=dict(PALETTE), presets=presets,
         labelling=labelling.spec(),
+        # no title of its own: the page's heading gives the grasp's values instead
+        untitled=title is None and not grasp.title,
     )
 
 

@@ -4,10 +4,12 @@ Frame (§2.2.1): the origin O is the object's centre of mass, the y-axis is
 perpendicular to the line through the contacts, ``P1 = (x1, y)`` and
 ``P2 = (-x2, y)``.  The normal at P1 makes the angle φ1 clockwise, the normal
 at P2 the angle φ2 counter-clockwise, with the negative y-axis.  Friction is
-given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
+given by the coefficient μ or by the friction cone's apex angle ξ (the paper's
+term, §2.2.2: the angle between the normal and each side of the cone), tan ξ = μ
 (22).  The external force F_e acts at O along ``e(θ) = (sin θ, -cos θ)`` (26).
 
-:class:`Grasp` and its documentation live here; the code is in private modules
+The code of :class:`Grasp` is here (its documentation is on the package page,
+:mod:`graspcompass`), and in private modules
 (every name stays importable from here): the errors and the input boundary of the
 parameters (``grasp._values``), the validation and condition (1)
 (``grasp._checks``), the float path and the forces of §2.3 (``grasp._forces``).
