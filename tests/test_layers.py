@@ -303,3 +303,12 @@ def test_the_allowed_upward_edge_is_needed_and_the_kernel_is_below_the_inputs(pa
 def test_nothing_below_the_painters_imports_matplotlib(package) -> None:
     _, external = package
     assert painters_only(external) == []
+
+
+def test_modules_are_small() -> None:
+    """No module over 600 lines, the median near 150 (issue 21, the project brief)."""
+    sizes = {p: len(p.read_text(encoding="utf-8").splitlines())
+             for p in (SRC / "graspcompass").rglob("*.py")}
+    assert [str(p.relative_to(SRC)) for p, n in sizes.items() if n > 600] == []
+    median = sorted(sizes.values())[len(sizes) // 2]
+    assert median <= 200, median

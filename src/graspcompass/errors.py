@@ -1,11 +1,12 @@
-"""The package's exceptions: :mod:`graspcompass.boundary.errors` under its public path.
+"""The package's exceptions, under their public path ``graspcompass.errors``.
 
-The input boundary lives in :mod:`graspcompass.boundary` (issue 21); this module keeps
-``graspcompass.errors`` importable with every name of its ``__all__``.
+The code lives in :mod:`graspcompass.boundary.errors` (the input boundary's folder, issue 21);
+this module re-exports every name of its ``__all__`` and takes its documentation.
 """
 
 from __future__ import annotations
 
+from .boundary import errors as _home
 from .boundary.errors import (
     ComplexValueError,
     GraspCompassError,
@@ -29,3 +30,5 @@ __all__ = [
     "SymbolicValueError",
     "WrongTypeError",
 ]
+
+__doc__ = _home.__doc__  # the API page shows the module's own documentation

@@ -1,11 +1,12 @@
-"""The safe expression parser: :mod:`graspcompass.boundary.expr` under its public path.
+"""The safe expression parser, under their public path ``graspcompass.expr``.
 
-The input boundary lives in :mod:`graspcompass.boundary` (issue 21); this module keeps
-``graspcompass.expr`` importable with every name of its ``__all__``.
+The code lives in :mod:`graspcompass.boundary.expr` (the input boundary's folder, issue 21);
+this module re-exports every name of its ``__all__`` and takes its documentation.
 """
 
 from __future__ import annotations
 
+from .boundary import expr as _home
 from .boundary.expr import (
     MAX_ANGLES,
     MAX_ARGUMENT_BITS,
@@ -49,3 +50,5 @@ __all__ = [
     "to_exact",
     "tree_conditions",
 ]
+
+__doc__ = _home.__doc__  # the API page shows the module's own documentation

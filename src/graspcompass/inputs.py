@@ -1,11 +1,12 @@
-"""Reading a value from outside: :mod:`graspcompass.boundary.inputs` under its public path.
+"""Values from outside, under their public path ``graspcompass.inputs``.
 
-The input boundary lives in :mod:`graspcompass.boundary` (issue 21); this module keeps
-``graspcompass.inputs`` importable with every name of its ``__all__``.
+The code lives in :mod:`graspcompass.boundary.inputs` (the input boundary's folder, issue 21);
+this module re-exports every name of its ``__all__`` and takes its documentation.
 """
 
 from __future__ import annotations
 
+from .boundary import inputs as _home
 from .boundary.inputs import (
     MAX_ARRAY_SIZE,
     MAX_SUBSTITUTIONS,
@@ -31,3 +32,5 @@ __all__ = [
     "real_value",
     "substitutions",
 ]
+
+__doc__ = _home.__doc__  # the API page shows the module's own documentation

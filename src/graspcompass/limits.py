@@ -1,11 +1,12 @@
-"""The input limits: :mod:`graspcompass.boundary.limits` under its public path.
+"""The limits on outside input, under their public path ``graspcompass.limits``.
 
-The input boundary lives in :mod:`graspcompass.boundary` (issue 21); this module keeps
-``graspcompass.limits`` importable with every name of its ``__all__``.
+The code lives in :mod:`graspcompass.boundary.limits` (the input boundary's folder, issue 21);
+this module re-exports every name of its ``__all__`` and takes its documentation.
 """
 
 from __future__ import annotations
 
+from .boundary import limits as _home
 from .boundary.limits import (
     COMMAND_SECONDS,
     EXACT_ANGLES,
@@ -41,3 +42,5 @@ __all__ = [
     "MAX_TERMS",
     "MAX_WORK_BITS",
 ]
+
+__doc__ = _home.__doc__  # the API page shows the module's own documentation

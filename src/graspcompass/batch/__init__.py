@@ -213,7 +213,7 @@ def _refuse(xp: Any, p: list, ok: Any) -> None:
 
 
 #: Most entries of a list argument, and of a broadcast the arguments do not hold already
-#: (as :data:`graspcompass.inputs.MAX_ARRAY_SIZE`).
+#: (as :data:`graspcompass.boundary.inputs.MAX_ARRAY_SIZE`).
 MAX_ARRAY_SIZE = 10_000_000
 
 

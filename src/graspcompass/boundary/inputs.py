@@ -40,6 +40,7 @@ imports nothing from the package but :mod:`graspcompass.expr` and
 
 Examples
 --------
+>>> from graspcompass.errors import ComplexValueError, NonFiniteValueError
 >>> real_value("1.2", "x1"), real_value("108deg", "phi1"), real_value(3, "y")
 (6/5, 3*pi/5, 3)
 >>> try:
@@ -173,7 +174,7 @@ def exact_sign(value: sp.Expr) -> int | None:
 
 
 def _int_bits(name: str, *ints: int) -> None:
-    """Refuse integers of more than :data:`~graspcompass.limits.MAX_INT_BITS` bits."""
+    """Refuse integers of more than :data:`~graspcompass.boundary.limits.MAX_INT_BITS` bits."""
     for i in ints:
         if i.bit_length() > MAX_INT_BITS:
             raise InputTooLargeError(f"{name}: a number of {i.bit_length()} bits; at most "

@@ -30,8 +30,8 @@ import argparse
 import json
 import math
 import sys
-from collections.abc import Iterator
-from typing import IO, Any
+from collections.abc import Callable, Iterator
+from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
@@ -41,6 +41,9 @@ from ..boundary.expr import _split_unit, parse_angles, parse_exact
 from ..boundary.inputs import force_value
 from ..boundary.limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
 from ..geometry.numeric import to_float
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES", "count_angles", "read_angles", "run"]
 
@@ -174,7 +177,7 @@ def _fe(text: str) -> tuple[sp.Expr, float]:
     return fe, value
 
 
-def _values(g: Any, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _values(g: Grasp, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     with np.errstate(all="ignore"):
         ks = np.asarray(g.k(t), dtype=float).reshape(4, -1)
         kg = np.asarray(g.k_grasp(t), dtype=float).reshape(-1)
@@ -187,7 +190,7 @@ def _values(g: Any, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray, n
     return ks, kg, fint
 
 
-def _check_range(g: Any, fe: float) -> None:
+def _check_range(g: Grasp, fe: float) -> None:
     """Refuse a grasp whose k_n or F_int could overflow a double at some θ.
 
     Over all θ, ``|k_n(θ)| <= |V_n| = hypot(S_n, C_n)`` and ``F_int <= max |V_n| · F_e / D``.
@@ -205,7 +208,8 @@ def _limiting(ks: np.ndarray, kg: np.ndarray) -> np.ndarray:
     return np.where(kg > 0, np.argmax(ks, axis=0) + 1, 0)
 
 
-def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
+def run(args: argparse.Namespace, g: Grasp | Callable[[], Grasp], out: IO[str] | None = None
+        ) -> int:
     """Run ``graspcompass k`` for the grasp ``g``; returns the exit status (0).
 
     Parameters
@@ -265,7 +269,7 @@ def run(args: argparse.Namespace, g: Any, out: IO[str] | None = None) -> int:
     return 0
 
 
-def rounded_rows(g: Any, thetas: list[sp.Expr], fe: sp.Expr
+def rounded_rows(g: Grasp, thetas: list[sp.Expr], fe: sp.Expr
                  ) -> Iterator[tuple[float, list[float], float, float, int]]:
     """``(θ in degrees, [k1..k4], k_grasp, F_int, limiting n)`` per exact θ, rounded from exact.
 
@@ -337,14 +341,14 @@ def table(rows: list[list[str]], head: list[str]) -> str:
     return "\n".join(lines)
 
 
-def _chunks(g: Any, t: np.ndarray, fe: float) -> Iterator[tuple[np.ndarray, ...]]:
+def _chunks(g: Grasp, t: np.ndarray, fe: float) -> Iterator[tuple[np.ndarray, ...]]:
     for lo in range(0, t.size, CHUNK):
         tc = t[lo:lo + CHUNK]
         ks, kg, fint = _values(g, tc, fe)
         yield tc, ks, kg, fint, _limiting(ks, kg)
 
 
-def _stream(args: argparse.Namespace, g: Any, t: np.ndarray, fe: float, out: IO[str]) -> None:
+def _stream(args: argparse.Namespace, g: Grasp, t: np.ndarray, fe: float, out: IO[str]) -> None:
     """Write the rows of the float path chunk by chunk (a table of fixed widths, or JSON)."""
     if args.json:
         out.write("[")

@@ -309,7 +309,7 @@ def _shipped(name: str) -> str:
     here = Path(__file__).with_name("recipes") / name
     if here.is_file():
         return here.read_text("utf-8")
-    return resources.files(__package__).joinpath("recipes", name).read_text("utf-8")
+    return resources.files(__package__).joinpath("recipes").joinpath(name).read_text("utf-8")
 
 
 def example_text(name: str) -> str:

@@ -11,11 +11,14 @@ its exact value, so a browser shows them on hover.  The envelope k_grasp
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape, quoteattr
 
 from ..labelling import FONT_PT, FRAME_PT
 from ._scene import COLORS, Label, Scene, build_scene, exact_text, label_tex
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["to_svg", "write_svg"]
 
@@ -78,7 +81,7 @@ def _arc_path(scene: Scene, m: _Map) -> str:
     return " ".join(parts) + " Z"
 
 
-def to_svg(construction: Any, title: str | None = None) -> str:
+def to_svg(construction: Construction, title: str | None = None) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
 
     Examples
@@ -159,7 +162,7 @@ def to_svg(construction: Any, title: str | None = None) -> str:
     return "\n".join(out) + "\n"
 
 
-def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
+def write_svg(construction: Construction, path: Any, title: str | None = None) -> Any:
     """Write :func:`to_svg` to ``path`` (UTF-8); returns the path.
 
     Raises

@@ -4,10 +4,12 @@ Frame (§2.2.1): the origin O is the object's centre of mass, the y-axis is
 perpendicular to the line through the contacts, ``P1 = (x1, y)`` and
 ``P2 = (-x2, y)``.  The normal at P1 makes the angle φ1 clockwise, the normal
 at P2 the angle φ2 counter-clockwise, with the negative y-axis.  Friction is
-given by the coefficient μ or by the friction cone's half angle ξ, tan ξ = μ
+given by the coefficient μ or by the friction cone's apex angle ξ (the paper's
+term, §2.2.2: the angle between the normal and each side of the cone), tan ξ = μ
 (22).  The external force F_e acts at O along ``e(θ) = (sin θ, -cos θ)`` (26).
 
-:class:`Grasp` and its documentation live here; the code is in private modules
+The code of :class:`Grasp` is here (its documentation is on the package page,
+:mod:`graspcompass`), and in private modules
 (every name stays importable from here): the errors and the input boundary of the
 parameters (``grasp._values``), the validation and condition (1)
 (``grasp._checks``), the float path and the forces of §2.3 (``grasp._forces``).
@@ -17,7 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
@@ -106,34 +108,35 @@ class Grasp:
     graspcompass.grasp.InvalidGraspError: contact 2: the friction coefficient μ2 = -1 must be ...
     """
 
-    # The attributes, set once by __init__ (a Grasp is frozen): exact sympy numbers, or
-    # floats on the numeric path (:attr:`numeric`); the types checkers read (issue 21).
-    #: Contact coordinates: ``P1 = (x1, y)``, ``P2 = (-x2, y)``.
-    x1: Any
-    x2: Any
-    y: Any
-    #: Normal directions φ1, φ2 (§2.2.1).
-    phi1: Any
-    phi2: Any
-    #: Friction: coefficients μi and cone half angles ξi (tan ξi = μi, eq. (22)).
-    mu1: Any
-    mu2: Any
-    xi1: Any
-    xi2: Any
-    #: sin φi and cos φi, exact without nested radicals (or floats).
-    s1: Any
-    c1: Any
-    s2: Any
-    c2: Any
-    #: The part's outline (drawing only) and a title, or None.
-    shape: tuple | None
-    title: str | None
-    #: True on the float path (a float among the parameters).
-    numeric: bool
-    #: Conditions assumed for symbols that could not be decided.
-    assumptions: tuple
-    _given: tuple[str, str]
-    _SC: Any
+    if TYPE_CHECKING:  # the attributes, set once by __init__ (a Grasp is frozen): exact sympy
+        # numbers, or floats on the numeric path; declared for the type checker only (the
+        # API page documents them as the parameters above, issue 21)
+        # Contact coordinates: ``P1 = (x1, y)``, ``P2 = (-x2, y)``.
+        x1: Any
+        x2: Any
+        y: Any
+        # Normal directions φ1, φ2 (§2.2.1).
+        phi1: Any
+        phi2: Any
+        # Friction: coefficients μi and cone half angles ξi (tan ξi = μi, eq. (22)).
+        mu1: Any
+        mu2: Any
+        xi1: Any
+        xi2: Any
+        # sin φi and cos φi, exact without nested radicals (or floats).
+        s1: Any
+        c1: Any
+        s2: Any
+        c2: Any
+        # The part's outline (drawing only) and a title, or None.
+        shape: tuple | None
+        title: str | None
+        # True on the float path (a float among the parameters).
+        numeric: bool
+        # Conditions assumed for symbols that could not be decided.
+        assumptions: tuple
+        _given: tuple[str, str]
+        _SC: Any
 
     def __init__(
         self,
@@ -354,7 +357,7 @@ class Grasp:
         """The four lower limits ``k_n(θ) = V_n · e(θ)``, eqs. (18)-(21), (27), (32).
 
         θ goes through :func:`graspcompass.inputs.angle_values`: a float or an
-        array (of at most :data:`~graspcompass.inputs.MAX_ARRAY_SIZE` finite
+        array (of at most :data:`~graspcompass.boundary.inputs.MAX_ARRAY_SIZE` finite
         values) gives an array of shape ``(4,) + shape(θ)``; anything else (int,
         text such as ``"pi/3"``, a sympy expression) a tuple of four exact
         expressions.  ``nan`` and infinities are refused

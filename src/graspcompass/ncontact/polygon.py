@@ -201,7 +201,8 @@ class InternalForcePolygon:
                     break
             else:
                 groups.append({"tight": v.tight, "members": [v]})
-        active, passive = [], []
+        active: list[Any] = []
+        passive: list[Any] = []
         for g in groups:
             cones = [m.cone for m in g["members"] if m.cone is not None]
             (active if cones else passive).append((g, cones[0] if cones else None))

@@ -55,7 +55,7 @@ class Budget:
         left = self.left()
         return left is not None and left <= 0
 
-    def run(self, work: Callable[[], T], on_timeout: Callable[[], T]) -> T:
+    def run(self, work: Callable[..., T], on_timeout: Callable[..., T]) -> T:
         """``work()`` if it ends before the budget, else ``on_timeout()``."""
         left = self.left()
         if left is None:

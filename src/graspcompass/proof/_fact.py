@@ -27,7 +27,7 @@ class Fact:
     lhs: Any
     rhs: Any = 0
     kind: str = "eq"
-    scale: Callable[[], float] = field(default=lambda: 1.0, compare=False, repr=False)
+    scale: Callable[..., float] = field(default=lambda: 1.0, compare=False, repr=False)
 
 
 def _f(*vals: Any) -> float:

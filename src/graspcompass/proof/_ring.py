@@ -200,7 +200,7 @@ def to_ring(exprs: list[sp.Expr]) -> RingForm:
                                                               sorted(sc.const_pairs,
                                                                      key=sp.default_sort_key))})
     conv.angle_sc = {a: (R.gens[index[sp.sin(a)]], R.gens[index[sp.cos(a)]]) for a in angles}
-    root_rels = []
+    root_rels: list[Any] = []
     for i in reversed(range(len(roots))):  # inner roots first: outer radicands use them
         n, d = conv.nd(sc.roots[roots[i]])
         conv.root_info[roots[i]] = (R.gens[i], d)

@@ -101,7 +101,8 @@ class Ring:
         elif e.is_Add and (flat := self._flat_sum(e)) is not None:
             out = flat, {}
         elif e.is_Mul:
-            n, dens = R.one, {}
+            n = R.one
+            dens: dict[Any, Any] = {}
             for a in e.args:
                 n2, d2 = self._frac(a)
                 n = n * n2
@@ -146,7 +147,8 @@ class Ring:
 
     def _flat_sum(self, e: sp.Expr) -> Any:
         """An expanded polynomial in one pass (None if a term is not a monomial)."""
-        index, acc = self.index, {}
+        index = self.index
+        acc: dict[Any, Any] = {}
         dom = self.R.domain
         zero = [0] * len(self.gens)
         for term in e.args:

@@ -147,7 +147,10 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
 def draw_construction(construction: Any, step: int | None = None, ax: Axes | None = None,
                       theme: Theme = DEFAULT_THEME, labels: bool = True,
                       show_computer_plot: bool = False,
-                      highlight_last: bool = False) -> dict[str, list[Artist]]:
+                      highlight_last: bool = False,
+                      num: dict[str, Any] | None = None,
+                      box: tuple[float, float, float, float] | None = None
+                      ) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
     Parameters
@@ -169,6 +172,13 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         Also draw the numeric polar plot of k_grasp (Fig. 6(b), eq. (25)).
     highlight_last : bool
         Draw the object of the last step drawn in ``theme.highlight_color``.
+    num : dict, optional
+        ``layout.numeric_objects(construction)`` when the caller has it already (a
+        worksheet draws the same construction on two pages): computed once, passed on.
+    box : tuple of float, optional
+        ``(xmin, xmax, ymin, ymax)`` to draw instead of the one view box of every picture
+        (an enlargement of a crowded region): lines are clipped to it and the labels placed
+        in it.
 
     Returns
     -------
@@ -190,9 +200,11 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
     state = construction if step is None else construction.upto(step)
     if ax is None:
         ax = Figure(figsize=(7, 7)).add_subplot()
-    num_all = numeric_objects(construction)
+    num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
-    box = view_box(construction.grasp, num_all, roles=roles_of(construction))
+    zoomed = box is not None  # then points outside the box are not labelled
+    if box is None:
+        box = view_box(construction.grasp, num_all, roles=roles_of(construction))
     span = box[1] - box[0]
     ax.set_xlim(box[0], box[1])
     ax.set_ylim(box[2], box[3])
@@ -211,7 +223,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                 [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
                 mfc="white" if small else hl.get("color", theme.point_color),
                 mec=hl.get("color", theme.point_color), mew=0.8)
-            if not small:
+            if not small and not (zoomed and not (box[0] <= v[0] <= box[1]
+                                                  and box[2] <= v[1] <= box[3])):
                 points.append((s.name, v))
         elif s.kind == "line":
             out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
