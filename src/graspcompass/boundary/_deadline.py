@@ -20,6 +20,7 @@ import signal
 import threading
 import time
 from collections.abc import Callable, Iterator
+from types import FrameType
 
 __all__ = ["OutOfTime", "command_deadline", "deadline"]
 
@@ -45,7 +46,7 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
     outer_left = signal.getitimer(signal.ITIMER_REAL)[0]
     outer_end = now + outer_left if outer_left > 0 else None
 
-    def _ring(signum: int, frame: object) -> None:
+    def _ring(signum: int, frame: FrameType | None) -> None:
         if time.monotonic() < end - _EARLY and callable(previous):
             previous(signum, frame)  # the outer bound came first: its exception
         raise error()

@@ -49,14 +49,15 @@ def _name_max(folder: Path) -> int:
         return 255
 
 
-def check_folder(folder: str | os.PathLike[str], path: object | None = None) -> Path:
+def check_folder(folder: str | os.PathLike[str],
+                 path: str | os.PathLike[str] | None = None) -> Path:
     """``folder`` as a :class:`~pathlib.Path` if files can be written in it.
 
     Parameters
     ----------
     folder : str or path-like
         An existing folder.
-    path : object, optional
+    path : str or path-like, optional
         The file to be written there, named in the message (default: ``folder``).
 
     Raises

@@ -161,7 +161,7 @@ def ncontact_recipe(grasp: Any) -> str:
             A13 = _meet_f(P[edges[a][0]], D[a], P[edges[c][0]], D[c])
             B12 = _meet_f(W[edges[a][0]], D[a], W[edges[b][0]], D[b])
             B13 = _meet_f(W[edges[a][0]], D[a], W[edges[c][0]], D[c])
-            if None in (A12, A13, B12, B13):
+            if A12 is None or A13 is None or B12 is None or B13 is None:
                 continue
             if not (_far(A12, O, scale) and _far(A13, O, scale)):
                 continue

@@ -45,7 +45,7 @@ KINDS = ("point", "line", "circle", "number")
 #: Kinds of parameters (exact values written after the inputs).
 PARAM_KINDS = ("number", "angle", "branch")
 #: Roles a step may play in a drawing (``""``: none), set by the recipe as data.
-ROLES = ("", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
+ROLES: tuple[str, ...] = ("", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
          "Y", "S_length", "C_length", "V", "circle", "break_point", "envelope")
 
 
@@ -196,7 +196,7 @@ def _op(name: str, function: Callable[..., Any], instrument: str, inputs: str, p
                      makes, caption, ggb, draws, doc)
 
 
-_ALL = (
+_ALL: tuple[Operation, ...] = (
     _op("point", _point, "mark", "", "number number", "point",
         "{name}: a given point", "({p0}, {p1})", "point",
         "A given point (x, y), e.g. a contact P1 = (x1, y) of §2.2.1."),

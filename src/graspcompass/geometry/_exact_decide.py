@@ -237,9 +237,9 @@ def _strict_sign(reduced: sp.Expr) -> int | None:
                 return 1 if value > 0 else -1
             return None
         R, n, d = hit
-        fs = _float_sign(R, n), _float_sign(R, d)
-        if None not in fs:
-            return fs[0] * fs[1]
+        fn, fd = _float_sign(R, n), _float_sign(R, d)
+        if fn is not None and fd is not None:
+            return fn * fd
         nv, dv = _intervals(R, n, d)
     except TypeError:
         return None

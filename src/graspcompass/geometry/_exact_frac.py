@@ -205,9 +205,9 @@ class Frac:
         """
         if self.R is None:
             return 0 if self.n == 0 else (1 if self.n > 0 else -1)
-        fs = _float_sign(self.R, self.n), _float_sign(self.R, self.d)
-        if None not in fs:
-            return fs[0] * fs[1]
+        fn, fd = _float_sign(self.R, self.n), _float_sign(self.R, self.d)
+        if fn is not None and fd is not None:
+            return fn * fd
         return decide_sign(self.expr())
 
     def reduced(self) -> Frac:

@@ -139,7 +139,7 @@ def reduce_poly(R: Ring, p: flint.fmpq_mpoly) -> flint.fmpq_mpoly:
 
 
 #: Canonical expression -> (ring, numerator, denominator) of flint polynomials.
-_MEMO: dict[sp.Expr, tuple] = {}
+_MEMO: dict[sp.Expr, tuple[Ring, flint.fmpq_mpoly, flint.fmpq_mpoly]] = {}
 
 #: sqrt(m) of the square-free m met so far (sympy's evaluation of sqrt is slow).
 _SQRT: dict[int, sp.Expr] = {}

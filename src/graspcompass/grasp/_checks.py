@@ -138,8 +138,8 @@ def _validate(g: Grasp) -> None:
 def _angles_pass(g: Grasp) -> bool:
     """Condition (1) decided in rationals when every φ and ξ is a rational multiple of π
     (the common case, without building sympy expressions); False: check one by one."""
-    qs = [_pi_multiple(a) for a in (g.phi1, g.xi1, g.phi2, g.xi2)]
-    if None in qs:
+    qs = [q for q in (_pi_multiple(a) for a in (g.phi1, g.xi1, g.phi2, g.xi2)) if q is not None]
+    if len(qs) < 4:
         return False
     half, three_halves = sp.Rational(1, 2), sp.Rational(3, 2)
     for phi, xi in (qs[:2], qs[2:]):
