@@ -45,8 +45,9 @@ KINDS = ("point", "line", "circle", "number")
 #: Kinds of parameters (exact values written after the inputs).
 PARAM_KINDS = ("number", "angle", "branch")
 #: Roles a step may play in a drawing (``""``: none), set by the recipe as data.
-ROLES: tuple[str, ...] = ("", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
-         "Y", "S_length", "C_length", "V", "circle", "break_point", "envelope")
+ROLES: tuple[str, ...] = (
+    "", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
+    "Y", "S_length", "C_length", "V", "circle", "break_point", "envelope")
 
 
 def kind_of(obj: object) -> str:

@@ -9,6 +9,7 @@ lie on both circles.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import time
 
@@ -165,7 +166,7 @@ def diagram_claims(eq27_out: list[Claim]) -> list[Claim]:
         add(Claim(f"s5-collinear-{a}{b}", "§5, ref. 15",
                   f"The second intersection B{a}{b} of circles {a} and {b} and the intersection "
                   f"of cone sides {n} and {m} lie on one line through O",
-                  lambda n=n, m=m: _collinear(n, m),
+                  functools.partial(_collinear, n, m),
                   note="statics: with both contact forces on those cone sides the three forces "
                        "are concurrent, so F_e points along that line"))
     for a, b, w in ((1, 3, "P2"), (2, 4, "P1")):
@@ -174,7 +175,7 @@ def diagram_claims(eq27_out: list[Claim]) -> list[Claim]:
                   f"For two sides of the same cone (n = {a}, {b} at {side}) the second "
                   f"intersection B{a}{b} of the circles lies on the line O {w}, not on a line "
                   f"through the sides' meeting point {side}",
-                  lambda a=a, b=b: _same_contact(a, b), printed=False,
+                  functools.partial(_same_contact, a, b), printed=False,
                   ))
     return C
 

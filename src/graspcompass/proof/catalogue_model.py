@@ -7,6 +7,7 @@ the ξ variables.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import time
 from fractions import Fraction
@@ -214,8 +215,8 @@ def model_claims() -> list[Claim]:
                              * (k - P.k_mu_printed[n - 1])), printed=False, hypotheses=())
         sgn = Claim(f"eq{7 + n}-divisor-sign", f"eqs. {_INEQ[n]}, {_K[n]}, (1)",
                     f"the divisor d{n} = {DIVISOR[n]} is positive under (1) with μ = tan ξ, "
-                    f"so {_INEQ[n]} holds exactly when k > k{n}", lambda n=n: sign(
-                        with_xi(DIVISOR[n]), +1, DIV_WITNESS[n]), printed=False,
+                    f"so {_INEQ[n]} holds exactly when k > k{n}", functools.partial(
+                        _divisor_sign, n), printed=False,
                     hypotheses=("condition (1)", H22))
         factors.append(fac)
         signs.append(sgn)
@@ -252,8 +253,13 @@ def _eq23_claims() -> list[Claim]:
             f"eq23-rest-{word}", "eq. (23), other equalities",
             f"(s {pm} c μ)/(c {mp} s μ) = (s/c {pm} μ)/(1 {mp} (s/c) μ) = (tan φ {pm} tan ξ)/"
             f"(1 {mp} tan φ tan ξ) = tan(φ {pm} ξ), for i = 1, 2, where c_i ≠ 0",
-            lambda sg=sg: _eq23_rest(sg), hypotheses=("condition (1)", H22, "cos φ_i ≠ 0")))
+            functools.partial(_eq23_rest, sg), hypotheses=("condition (1)", H22, "cos φ_i ≠ 0")))
     return out
+
+
+def _divisor_sign(n: int) -> ProofResult:
+    """The divisor d_n of inequality n is positive under condition (1), μ = tan ξ."""
+    return sign(with_xi(DIVISOR[n]), +1, DIV_WITNESS[n])
 
 
 def _eq23_rest(sg: int) -> ProofResult:

@@ -28,7 +28,7 @@ written here from first principles: edges along the cone sides of §2.2.2, costs
 from __future__ import annotations
 
 import time
-from functools import cache
+from functools import cache, partial
 from typing import Any
 
 import sympy as sp
@@ -271,15 +271,15 @@ def ncontact_claims() -> list[Claim]:
         out.append(Claim(f"nc2-V{n}", "docs/ncontact.md, eqs. (28)-(39)",
                          f"the n-contact LP with the paper's k: the dual vertex of the basis "
                          f"{{side {n}, both sides at {other}}} is V{n} of (28)-(39)",
-                         lambda n=n: _formula(n), printed=False))
+                         partial(_formula, n), printed=False))
         out.append(Claim(f"nc2-V{n}-dual", "docs/ncontact.md", f"V{n}'s basis is dual "
                          "feasible: the remaining side's slack is > 0 under condition (1)",
-                         lambda n=n: _dual(n), printed=False))
+                         partial(_dual, n), printed=False))
         out.append(Claim(f"nc2-V{n}-cs", "docs/ncontact.md, eqs. (31)-(32)",
                          f"complementary slackness: the primal solution on V{n}'s basis costs "
                          f"V{n}·e for every load direction e; with the dual feasibility, "
                          f"k(θ) = V{n}·e(θ) wherever that solution is >= 0 (the arc of V{n})",
-                         lambda n=n: _cs(n), printed=False))
+                         partial(_cs, n), printed=False))
     out.append(Claim("nc2-short", "recipes/short.gc", "the shorter recipe (four parallels and a "
                      "quarter turn a vertex) constructs V1..V4 of (28)-(39)", _short,
                      printed=False, hypotheses=(H1, "y ≠ 0")))

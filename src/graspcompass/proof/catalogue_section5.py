@@ -10,6 +10,7 @@ when α = φ1 − ξ1, and strictly outside otherwise.
 
 from __future__ import annotations
 
+import functools
 import time
 from collections.abc import Callable
 
@@ -222,12 +223,12 @@ def section5_claims(eq27: list[Claim], eq24: Claim) -> list[Claim]:
             f"V{n} lies in x {lt} 0 exactly when O_M is strictly inside the friction cone at "
             f"{word}, in x {gt} 0 exactly when strictly outside, on the y-axis when O_M is on "
             f"its lower side; condition (1) suffices (0 < φ_i < π/2 is not needed)"),
-            lambda n=n: fig8_side(n))
+            functools.partial(fig8_side, n))
         fig.append(c)
         add(c)
     for case, (text, premise, goal) in FIG8_GOALS.items():
         add(Claim(f"fig8{case}", f"§5, Fig. 8({case})", text,
-                  lambda premise=premise, goal=goal: fig8_case(premise, goal, fig),
+                  functools.partial(fig8_case, premise, goal, fig),
                   depends=tuple(fig),
                   note="'otherwise' in §5 read strictly: with O_M on a cone side one of V3, "
                        "V4 is on the y-axis" if case == "c" else ""))

@@ -109,7 +109,7 @@ def _decide_symbolic(f: Fact) -> _Sym:
         if f.kind == "eq":
             ok, dens = R.equal(f.lhs, f.rhs)
             return _Sym(ok, dens)
-        n, dens = R.frac(sp.sympify(f.lhs - f.rhs))  # internal: a fact (sympy)
+        n, den_powers = R.frac(sp.sympify(f.lhs - f.rhs))  # internal: a fact (sympy)
     except ValueError:  # not a rational function of the model's generators
         if f.kind != "eq":
             return _Sym(None, [])
@@ -117,7 +117,7 @@ def _decide_symbolic(f: Fact) -> _Sym:
         return _Sym(True if r.proved else (False if r.status is Status.REFUTED else None),
                     [], "prove_identity")
     if f.kind == "nonzero":  # an assumption: listed, unless identically false
-        return _Sym(bool(R.reduce(n)), [n, *dens])
+        return _Sym(bool(R.reduce(n)), [n, *den_powers])
     return _Sym(None, [])
 
 
@@ -139,8 +139,8 @@ def _violations(pt: dict[sp.Symbol, sp.Expr]) -> list[str]:
     try:
         from .model import violations
     except ImportError:  # pragma: no cover - the model module comes with the prover core
-        violations = None
-    if violations is not None:
+        pass
+    else:
         return list(violations(pt))
     import math
 

@@ -157,7 +157,7 @@ class Ring:
                 return None
             mon = zero.copy()
             for f in factors:
-                base, k = (f.base, f.exp) if f.is_Pow else (f, 1)
+                base, k = (f.base, f.exp) if f.is_Pow else (f, sp.S.One)
                 i = index.get(base)
                 if i is None or not (k == 1 or (k.is_Integer and k > 0)):
                     return None

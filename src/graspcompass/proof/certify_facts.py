@@ -80,11 +80,11 @@ def _role_facts(step: Step, m: PaperModel) -> list[Fact] | None:
         return _point_eq(name, o, m.Px(i), "(x1, 0)" if i == 1 else "(−x2, 0)", L)
     if name == "O_M" and isinstance(o, Point):
         return _point_eq(name, o, m.O_M, "(x1 − x2)/2 (midpoint of P1x P2x)", L)
-    n = name[-1]
-    if not (len(name) >= 2 and n in "1234" and name[:-1] in (
+    digit = name[-1]
+    if not (len(name) >= 2 and digit in "1234" and name[:-1] in (
             "side", "X", "perp", "Y", "OMX", "OY", "V", "circle")):
         return _break_facts(step, m) if name[:1] == "B" else None
-    n = int(n)
+    n = int(digit)
     i, sg = SIDES[n]
     ang = f"φ{i} {'+' if sg > 0 else '−'} ξ{i}"
     kind = name[:-1]

@@ -87,10 +87,11 @@ def run_crosscheck(grasps: Sequence[Grasp] | int = 20, thetas: int = 36, seed: i
     worst, worst_at = 0.0, None
     with Progress(len(gs), "crosscheck", quiet=quiet) as bar:
         for g in gs:
-            p = [float(g.params[k]) for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")]
+            x1, x2, y, phi1, phi2, mu1, mu2 = (
+                float(g.params[k]) for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2"))
             closed = g.k_grasp(grid)
             for t, kc in zip(grid, closed):
-                d = abs(k_linprog(*p, float(t)) - kc)
+                d = abs(k_linprog(x1, x2, y, phi1, phi2, mu1, mu2, float(t)) - kc)
                 if d > worst:
                     worst, worst_at = d, (g, float(t))
             bar.update()

@@ -349,7 +349,7 @@ def _value(sym: sp.Symbol, rng: random.Random, dom: tuple[Any, Any] | None) -> s
 
 def find_counterexample(
     test: Callable[[Mapping[sp.Symbol, sp.Expr]], bool],
-    symbols: Sequence[sp.Symbol],
+    symbols: Iterable[sp.Symbol],
     assumptions: Sequence[Any] = (),
     tries: int = 60,
     seed: int = 2012,

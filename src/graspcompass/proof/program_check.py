@@ -275,9 +275,9 @@ def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
 def _paper_model(program: Program) -> PaperModel:
     names = {p.name for p in program.params}
     missing = [n for n in _PAPER_PARAMS if n not in names]
-    for i in "12":
-        if f"mu{i}" not in names and f"xi{i}" not in names:
-            missing.append(f"mu{i} (or xi{i})")
+    for d in "12":
+        if f"mu{d}" not in names and f"xi{d}" not in names:
+            missing.append(f"mu{d} (or xi{d})")
     if missing:
         raise CheckError(f"{program.file}: grading against the paper needs the parameters "
                          f"x1, x2, y, phi1, phi2 and mu1/xi1, mu2/xi2; missing: "

@@ -33,7 +33,7 @@ import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Any
+from typing import Any, Literal
 
 import sympy as sp
 
@@ -228,7 +228,7 @@ def _ring_nonzero(e: sp.Expr) -> bool:
     return bool(q) and (q.is_ground or _positive(q, R))
 
 
-def _classified(e: sp.Expr, cond1: bool) -> tuple[list[str], list[str]] | bool | None:
+def _classified(e: sp.Expr, cond1: bool) -> tuple[list[str], list[str]] | Literal[False] | None:
     """``e ≠ 0`` by the checker's classification of ring factors (the kernel's own
     conditions are stated so, in the same words): (implied, extra), False when it is
     false for every parameter, None outside the ring."""
@@ -486,7 +486,10 @@ def _distinct_in_ring(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool | 
     for _, c in k.terms():
         den = den * int(c.denominator) // math.gcd(den, int(c.denominator))
     polys.append(ctx.from_dict({(0,) * (n + 1): den}) - kz)
-    basis, ok = flint.fmpz_mpoly_vec(polys, ctx).buchberger_naive(limits=(400, 4000, 4096))
+    # python-flint's stub says a vec; with ``limits`` it returns (vec, finished)
+    done: tuple[flint.fmpz_mpoly_vec, bool] = flint.fmpz_mpoly_vec(  # type: ignore[assignment]
+        polys, ctx).buchberger_naive(limits=(400, 4000, 4096))
+    basis, ok = done
     return bool(ok) and any(g.is_constant() and g != 0 for g in basis)
 
 
@@ -527,7 +530,10 @@ def _unit_ideal(polys: tuple[sp.Expr, ...], gens: tuple[sp.Symbol, ...]) -> bool
         zs.append(ctx.from_dict({m: int(c.p) * (den // int(c.q)) for m, c in terms.items()}))
     if not zs:
         return False
-    basis, ok = flint.fmpz_mpoly_vec(zs, ctx).buchberger_naive(limits=(400, 4000, 4096))
+    # python-flint's stub says a vec; with ``limits`` it returns (vec, finished)
+    done: tuple[flint.fmpz_mpoly_vec, bool] = flint.fmpz_mpoly_vec(  # type: ignore[assignment]
+        zs, ctx).buchberger_naive(limits=(400, 4000, 4096))
+    basis, ok = done
     return bool(ok) and any(g.is_constant() and g != 0 for g in basis)
 
 

@@ -379,7 +379,7 @@ def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
     """``fails(env, point)``: the claim is false in the exact replay ``env``."""
     def fails(env: dict[str, Any], pt: Any) -> bool:
         if claim.kind == "concurrent":  # decided as it is stated: a common point
-            return not_concurrent_at([env[t.name] for t in claim.terms])
+            return not_concurrent_at([_term(t, env, {}) for t in claim.terms])  # all Refs
         zeros, nonzeros = claim_zeros(claim, env)
         if any(decide_zero(sp.sympify(n)) is not False for n in nonzeros):
             return False  # outside the claim's non-degeneracy conditions

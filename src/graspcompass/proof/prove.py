@@ -296,7 +296,8 @@ def _prove_identity(lhs: Any, rhs: Any, assumptions: Sequence[Any], intervals: I
                                               domains, subs)
     hyps = tuple((iv_names if implied else []) + ctx_names)
     bad = [e for e, r in zip(entries, reds) if not r.is_zero]
-    common = dict(hypotheses=hyps, conditions=tuple(conditions), implied=tuple(implied))
+    common: dict[str, Any] = dict(hypotheses=hyps, conditions=tuple(conditions),
+                                  implied=tuple(implied))
     if not bad:
         cert = {"kind": "identity", "entries": [r.certificate for r in reds],
                 "denominators": rows}
@@ -410,12 +411,13 @@ def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals
     if not ident.proved:
         return (Status.UNDECIDED, "the witness factorisation did not check",
                 {**common, "detail": ident.status.value})
-    reasons = [sign_reason(w, intervals) for w in witness]
-    if any(r is None or r[0][0] != r[0][1] or r[0][0] == 0 for r in reasons):
+    found = [sign_reason(w, intervals) for w in witness]
+    reasons = [r for r in found if r is not None]
+    if len(reasons) < len(found) or any(r[0][0] != r[0][1] or r[0][0] == 0 for r in reasons):
         return Status.UNDECIDED, "a witness factor has no known strict sign", common
     total = 1
     for r in reasons:
-        total *= r[0][0]  # type: ignore[index]
+        total *= r[0][0]
     if total != sign:
         return (Status.UNDECIDED, "the witness proves the opposite sign, but no point of the "
                 "model was found to show it", common)

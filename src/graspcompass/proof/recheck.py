@@ -127,7 +127,7 @@ def _entry(entry: dict[str, Any]) -> list[str]:
 
 
 #: Condition (1) and the domains of ξ, φ (§2.2) as rational multiples of π.
-_COND1 = {}
+_COND1: dict[tuple[tuple[str, int], ...], tuple[Fraction, Fraction]] = {}
 for _i in ("1", "2"):
     _COND1[((f"xi{_i}", 1),)] = (Fraction(0), Fraction(1, 2))
     _COND1[((f"phi{_i}", 1),)] = (Fraction(0), Fraction(1))

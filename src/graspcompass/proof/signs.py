@@ -172,9 +172,10 @@ def sign_reason(f: Any, intervals: Intervals = CONDITION_1) -> tuple[Sign, dict]
     if isinstance(f, (sp.sin, sp.cos)):
         return _trig(f, intervals)
     if f.is_Symbol:
-        s = _POS if f.is_positive else _NEG if f.is_negative else \
+        known: Sign | None = _POS if f.is_positive else _NEG if f.is_negative else \
             _NONNEG if f.is_nonnegative else _NONPOS if f.is_nonpositive else None
-        return None if s is None else (s, {"type": "symbol", "name": str(f), "sign": list(s)})
+        return None if known is None else (known, {"type": "symbol", "name": str(f),
+                                                   "sign": list(known)})
     if f.is_Pow and f.exp == sp.S.Half:
         b = sign_reason(f.base, intervals)
         if b is None or b[0][0] < 0:
@@ -199,6 +200,8 @@ def sign_reason(f: Any, intervals: Intervals = CONDITION_1) -> tuple[Sign, dict]
             acc = p[0] if acc is None else _mul(acc, p[0]) if f.is_Mul else _add(acc, p[0])
             if acc is None:
                 return None
+        if acc is None:  # no arguments (sympy never builds such a Mul or Add)
+            return None
         kind = "mul" if f.is_Mul else "add"
         return acc, {"type": kind, "args": [p[1] for p in parts], "sign": list(acc)}
     return None
