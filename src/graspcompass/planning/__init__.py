@@ -160,7 +160,8 @@ def _sample(ring: np.ndarray, samples: int) -> tuple[np.ndarray, np.ndarray, np.
     length = np.hypot(d[:, 0], d[:, 1])
     total = float(length.sum())
     cum = np.concatenate([[0.0], np.cumsum(length)])
-    counts = np.diff(np.round(samples * cum / total).astype(np.int64))
+    marks = np.round(samples * cum / total).astype(np.int64)
+    counts = marks[1:] - marks[:-1]
     edges = np.repeat(np.arange(len(length)), counts)
     # the j-th of n points of an edge at (j + 1/2)/n along it
     start = np.cumsum(counts) - counts
@@ -507,11 +508,9 @@ def _load(g: float, a: float, gravity: Any, tilt: Any, mass: float, sf: float, p
     """The orientations asked, read as :func:`graspcompass.size_gripper` reads them."""
     if gravity is None and tilt is None:
         return Load(g, a)
-    import types
-
     from ..sizing.core import _read_case
 
-    case = _read_case(types.SimpleNamespace(exact=False), mass, g, gravity, tilt, a, sf, per)
+    case = _read_case(None, mass, g, gravity, tilt, a, sf, per)
     gdir = (float(case.gravity[0]), float(case.gravity[1]))  # type: ignore[index]
     if case.tilt == "any":
         return Load(g, a, gdir, math.pi)

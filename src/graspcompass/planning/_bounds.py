@@ -141,9 +141,9 @@ class _Bounds:
             if ld.any_orientation:
                 U = (ux * (ld.g + ld.accel), uy * (ld.g + ld.accel))
             else:
-                gx, gy = ld.g * ld.gravity[0], ld.g * ld.gravity[1]  # type: ignore[index]
-                rho = np.clip(np.arctan2(cy * gx - cx * gy, cx * gx + cy * gy),
-                              -ld.tau, ld.tau)  # type: ignore[arg-type]
+                assert ld.gravity is not None and ld.tau is not None  # a given orientation
+                gx, gy = ld.g * ld.gravity[0], ld.g * ld.gravity[1]
+                rho = np.clip(np.arctan2(cy * gx - cx * gy, cx * gx + cy * gy), -ld.tau, ld.tau)
                 cr, sr = np.cos(rho), np.sin(rho)
                 U = (cr * gx - sr * gy + ld.accel * ux, sr * gx + cr * gy + ld.accel * uy)
             du = 1e-15 * (ld.g + ld.accel)
@@ -153,13 +153,14 @@ class _Bounds:
             l2 = (_sq_lo(l4), _sq_hi(l4))
             vu = _dot(v, Ui)
             steps, grads = [], []
-            for k, step in (("fs", (_dn(s[0] - sc), _up(s[1] - sc))),
-                            ("ft", (_dn(t[0] - tc), _up(t[1] - tc)))):
+            for key, step in (("fs", (_dn(s[0] - sc), _up(s[1] - sc))),
+                              ("ft", (_dn(t[0] - tc), _up(t[1] - tc)))):
                 # φ' = V'·U/|d| − (V·U) |d|'/|d|²,  |d|' = d·d'/|d|
-                dk = (getattr(self.d[0], k), getattr(self.d[1], k))
+                dk = (getattr(self.d[0], key), getattr(self.d[1], key))
                 lk = _div_pos(_dot(d, dk), length)
                 lk = (lk[0][None], lk[1][None])
-                grads.append(_sub(_div_pos(_dot(f[k], Ui), l4), _div_pos(_mul(vu, lk), l2)))
+                grads.append(_sub(_div_pos(_dot(f[key], Ui), l4),
+                                  _div_pos(_mul(vu, lk), l2)))
                 steps.append((step[0][None], step[1][None]))
             ok = f["strict"] & (l4[0] > 0) & (nc > 0) & np.isfinite(phic[0])
             for g_ in grads:

@@ -374,7 +374,7 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
     s_lo, t_lo = s0.ravel(), t0.ravel()
     s_hi, t_hi = s_lo + 1 / n0, t_lo + 1 / n0
     la, lb = math.hypot(*pair.ea), math.hypot(*pair.eb)
-    pruned = np.inf
+    pruned: float = np.inf
     count = 0
     certified = True
     while s_lo.size:
@@ -406,8 +406,8 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
     if poly is not None and not load.any_orientation:
         # the nearest point of the boundary of (1), if no worse: where the least is approached
         consider(*_inside(poly, np.array([best_st[0]]), np.array([best_st[1]]), nudge))
-    lower = max(0.0, min(pruned, best_v))  # q >= 0
+    least = max(0.0, min(pruned, best_v))  # q >= 0
     margin = float(cone_margin(pair, *best_st))
-    return EdgeOptimum(best_st[0], best_st[1], best_v, lower, float(tol),
-                       certified and best_v - lower <= tol * best_v, count, margin,
+    return EdgeOptimum(best_st[0], best_st[1], best_v, least, float(tol),
+                       certified and best_v - least <= tol * best_v, count, margin,
                        margin <= BOUNDARY)

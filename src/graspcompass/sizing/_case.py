@@ -155,8 +155,9 @@ class _Case:
     per: str
 
 
-def _read_case(wg: WorldGrasp, mass: Any, g: Any, gravity: Any, tilt: Any, accel: Any,
+def _read_case(wg: WorldGrasp | None, mass: Any, g: Any, gravity: Any, tilt: Any, accel: Any,
                safety: Any, per: str) -> _Case:
+    """The checked case; ``wg`` None: a load alone, in floats (the planner's)."""
     if per not in PER:
         raise SizingError(f"per: expected 'jaw' or 'total', got {per!r}")
     m = _positive(mass_value(mass, "mass"), "the mass")
@@ -186,8 +187,10 @@ def _read_case(wg: WorldGrasp, mass: Any, g: Any, gravity: Any, tilt: Any, accel
             raise SizingError("tilt: a range of tilts needs the gravity direction (gravity=...)")
         t = _positive(angle_value(tilt, "tilt"), "the tilt", strict=False)
     raw = [m, gv, sf, A, *(avec or ()), *(gdir or ()), *(() if t is None else (t,))]
-    exact = wg.exact and not any(isinstance(v, float) or has_float(v) for v in raw)
-    if exact and not _within_exact_budget([*raw, *wg.grasp.S, *wg.grasp.C]):
+    exact = wg is not None and wg.exact and not any(
+        isinstance(v, float) or has_float(v) for v in raw)
+    if exact and wg is not None and not _within_exact_budget([*raw, *wg.grasp.S,
+                                                              *wg.grasp.C]):
         exact = False  # square roots of such numbers would factor them: the float path
     if gdir is not None:
         n2 = gdir[0] ** 2 + gdir[1] ** 2

@@ -190,8 +190,10 @@ def least_mu(grasp: Any, force_limit: Any, mass: Any, *, g: Any = None, gravity:
     xi_fc = max(abs(p1 - math.pi / 2), abs(p2 - math.pi / 2))
     fcase = dataclasses.replace(
         case, exact=False, mass=float(case.mass), g=float(case.g), safety=float(case.safety),
-        A=float(case.A), accel=None if case.accel is None else tuple(map(float, case.accel)),
-        gravity=None if case.gravity is None else tuple(map(float, case.gravity)),
+        A=float(case.A),
+        accel=None if case.accel is None else (float(case.accel[0]), float(case.accel[1])),
+        gravity=None if case.gravity is None else (float(case.gravity[0]),
+                                                   float(case.gravity[1])),
         tilt=case.tilt if case.tilt in (None, "any") else float(case.tilt))
 
     def need(mu: float) -> float:

@@ -31,6 +31,7 @@ Examples
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from typing import Any
 
 from ..boundary.errors import InputError
@@ -66,7 +67,8 @@ FORCE_UNITS = {"N": (1, 1), "kN": (1000, 1), "mN": (1, 1000)}
 #: Angles: ``deg`` and ``°`` are degrees, ``rad`` radians; there is no default.
 ANGLE_UNITS = {"deg": None, "°": None, "rad": (1, 1)}
 
-_KINDS = {
+#: kind -> (unit -> SI factor p/q, None for degrees; the units it accepts, in words).
+_KINDS: dict[str, tuple[Mapping[str, tuple[int, int] | None], str]] = {
     "length": (LENGTH_UNITS, "m, cm, mm or um, or no unit for metres"),
     "mass": (MASS_UNITS, "kg, g, mg or t, or no unit for kg"),
     "acceleration": (ACCELERATION_UNITS, "m/s^2 or g (standard gravities), or no unit "
@@ -146,8 +148,9 @@ def _factor(kind: str, unit: str | None) -> Any:
         return sp.pi / 180
     if unit is None:
         return sp.Integer(1)
-    p, q = _KINDS[kind][0][unit]
-    return sp.Rational(p, q)
+    ratio = _KINDS[kind][0][unit]
+    assert ratio is not None  # only degrees have no ratio, handled above
+    return sp.Rational(*ratio)
 
 
 def _value(value: Any, kind: str, name: str) -> Any:
