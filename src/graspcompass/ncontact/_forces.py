@@ -80,15 +80,16 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
     for basis, cand in ((b, c) for c in (Q.candidates[Q.vertex_index[k]] for k in ks)
                         for b in c.bases):
         cols = [list(rows[r]) for r in basis]
+        x: list[Any] | None
         if numeric:
             M = np.array(cols, dtype=float).T
             try:
-                x = np.linalg.solve(M, np.array(b, dtype=float))
+                sol = np.linalg.solve(M, np.array(b, dtype=float))
             except np.linalg.LinAlgError:
                 continue
-            if np.any(x < -1e-9 * (1 + np.abs(x).max())):
+            if np.any(sol < -1e-9 * (1 + np.abs(sol).max())):
                 continue
-            x = [max(v, 0.0) for v in x.tolist()]
+            x = [max(v, 0.0) for v in sol.tolist()]
         else:
             x = _solve_exact(cols, b)
             if x is None or any(exact_sgn(v, "an edge weight") < 0 for v in x):

@@ -31,7 +31,7 @@ from . import _dual
 from .contact import Contact, read_contact
 from .effort import read_effort
 from .errors import InvalidContactError, UnboundedEffortError
-from .polygon import InternalForcePolygon, covers, exact_sgn
+from .polygon import Candidate, InternalForcePolygon, covers, exact_sgn
 
 __all__ = ["NContactGrasp"]
 
@@ -147,11 +147,12 @@ class NContactGrasp:
 
     def costs(self) -> list[Any]:
         """The cost ``c_j = w_i · d_j`` of a unit weight on each edge (linear efforts)."""
-        if not self.effort.linear:
+        weights = self.effort.weights  # None exactly when the effort is not linear
+        if weights is None:
             raise InvalidContactError("the effort 'max-normal' is not linear: it has no edge costs")
         out = []
         for i, _, d in self.edges():
-            w = self.effort.weights[i]
+            w = weights[i]
             c = w[0] * d[0] + w[1] * d[1]
             out.append(c if self.numeric else canon(c))
         return out
@@ -242,6 +243,7 @@ class NContactGrasp:
             shared = (self.effort.linear and not self.effort.nonnegative and not self.numeric
                       and self._polygon is not None)
             self._q_rays([list(g) for g in self.wrenches()], self._dets if shared else None)
+        assert self._closure is not None  # set by _q_rays on the three-row wrenches
         return self._closure
 
     def vertices(self) -> list[Point]:
@@ -272,7 +274,8 @@ class NContactGrasp:
         fe = force_value(external_force)
         if not Q.bounded:
             return (float("inf") if self.numeric else sp.oo), None
-        best, arg = None, None
+        best: Any = None  # |q|²: a float, or (num, den) on the exact path
+        arg: Candidate | None = None
         for i in Q.vertex_index:
             c = Q.candidates[i]
             if self.numeric:
@@ -284,6 +287,7 @@ class NContactGrasp:
                 if best is None or exact_sgn(r2[0] * best[1] - best[0] * r2[1],
                                              "a difference of squared lengths") > 0:
                     best, arg = r2, c
+        assert arg is not None  # a bounded Q has vertices
         qx, qy = arg.floats()
         theta = math.atan2(qy, qx) + math.pi / 2  # e(θ) = (sin θ, -cos θ) along q
         theta %= 2 * math.pi

@@ -106,7 +106,7 @@ class InternalForcePolygon:
     rays: list[tuple]
     cone: tuple | None
     numeric: bool
-    _floats: np.ndarray = field(default=None, repr=False)  # type: ignore[assignment]
+    _floats: np.ndarray | None = field(default=None, repr=False)
     _pending: tuple | None = field(default=None, repr=False)
     _alpha: np.ndarray | None = field(default=None, repr=False)
     _support_index: list | None = field(default=None, repr=False)
@@ -114,7 +114,7 @@ class InternalForcePolygon:
 
     # -- construction -------------------------------------------------------------
     @classmethod
-    def build(cls, points: list[tuple], bases: list[tuple], rays: list[tuple],
+    def build(cls, points: list[tuple[Any, Any, Any]], bases: list[tuple], rays: list[tuple],
               numeric: bool) -> InternalForcePolygon:
         """Q as the hull of homogeneous points ``(X, Y, W)``, W > 0 (float path, max-normal)."""
         if numeric:
@@ -206,7 +206,10 @@ class InternalForcePolygon:
         for g in groups:
             cones = [m.cone for m in g["members"] if m.cone is not None]
             (active if cones else passive).append((g, cones[0] if cones else None))
-        active.sort(key=cmp_to_key(lambda a, b: _direction_cmp(a[1][0], b[1][0], sgn)))
+        def by_cone(a: tuple[dict, tuple], b: tuple[dict, tuple]) -> int:
+            return _direction_cmp(a[1][0], b[1][0], sgn)
+
+        active.sort(key=cmp_to_key(by_cone))
 
         def cand(g: dict) -> Candidate:
             m = g["members"][0]
@@ -293,7 +296,7 @@ class InternalForcePolygon:
 
     def _normal_angles(self) -> tuple[np.ndarray, np.ndarray]:
         """Sorted polar angles where each vertex's normal cone starts, and the vertex of each."""
-        if getattr(self, "_alpha", None) is None:
+        if self._alpha is None or self._order is None:
             V = self.float_vertices()
             d = V - np.roll(V, 1, axis=0)  # edge from vertex k-1 to k; outward normal (dy, -dx)
             a = np.mod(np.arctan2(-d[:, 0], d[:, 1]), 2 * np.pi)
