@@ -308,13 +308,13 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
             hold_frames=None if hold is None else q.frames(hold, fps),
             caption_seconds=getattr(args, "caption_seconds", None))
     else:
-        look = dict(fps=fps, dpi=dpi, figsize=q.sweep_figsize,
-                    theme=theme.scaled(q.scale) if q.scale != 1 else theme)
+        look = theme.scaled(q.scale) if q.scale != 1 else theme
         if args.kind == "sweep":
             anim = animate_sweep(c, frames=args.frames, circle=getattr(args, "circle", None),
-                                 **look)
+                                 fps=fps, dpi=dpi, figsize=q.sweep_figsize, theme=look)
         else:
-            anim = animate_orientation(c, weight=args.weight, frames=args.frames, **look)
+            anim = animate_orientation(c, weight=args.weight, frames=args.frames, fps=fps,
+                                       dpi=dpi, figsize=q.sweep_figsize, theme=look)
     width, height = anim.figure.get_size_inches() * anim.figure.dpi
     pixels = anim.drawn_frames * round(width) * round(height)  # a still repeats a frame
     if pixels > MAX_PIXELS:

@@ -239,7 +239,7 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
     else:
         g = grasp() if uses_grasp else None
         for p in program.params:
-            if p.name in GRASP_PARAMS:
+            if p.name in GRASP_PARAMS and g is not None:  # g is None: no grasp parameter
                 values[p.name] = g.params[p.name]
         c = replay(program, values)
     return FileConstruction(c, is_paper, shown)

@@ -145,14 +145,14 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     tight = [" ".join(labels[r] for r in Q.candidates[Q.vertex_index[i]].bases[0]
                       if r < len(labels)) if g.effort.linear else "" for i in range(len(V))]
     names = [str(v) for v in exact] if exact is not None else [repr(float(v)) for v in t]
-    records = []
+    records: list[dict[str, Any]] = []
     for i, name in enumerate(names):
         held = math.isfinite(k[i])
         records.append({"theta": name, "theta_deg": float(np.degrees(t[i])),
                         "k": float(k[i]) if held else None,
                         "F": float(k[i] * fe) if held else None,
                         "tight": tight[arg[i]].split() if held and tight else None})
-        if want_exact:
+        if want_exact and exact is not None:
             kx = Q.support_exact(exact[i])[0]
             records[-1]["k_exact"] = str(kx)
             records[-1]["F_exact"] = str(kx * fe_exact)
@@ -169,10 +169,10 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
             print(f"θ = {r['theta']}: k = {r['k_exact']}, F = {r['F_exact']}", file=out)
     arc = Q.arc()
     closure = "yes" if g.force_closure else "no"
-    held = ("every direction" if arc == (0.0, 2 * math.pi) else "no open arc" if arc is None
+    span = ("every direction" if arc == (0.0, 2 * math.pi) else "no open arc" if arc is None
             else f"θ in [{math.degrees(arc[0]):.6g}°, {math.degrees(arc[1]):.6g}°]")
     print(f"{g.n} contacts, effort {g.effort.name}: Q has {len(V)} vertices; force closure: "
-          f"{closure}; the load is held for {held}", file=out)
+          f"{closure}; the load is held for {span}", file=out)
     return 0
 
 

@@ -201,7 +201,8 @@ class WorldGrasp:
         """The origin and axes, as floats for the numeric path."""
         if not numeric:
             return self.origin, self.ex, self.ey
-        return tuple((float(v[0]), float(v[1])) for v in (self.origin, self.ex, self.ey))
+        o, ex, ey = ((float(v[0]), float(v[1])) for v in (self.origin, self.ex, self.ey))
+        return o, ex, ey
 
 # public, documented and pickled as graspcompass.world's (which re-exports them)
 WorldGrasp.__module__ = "graspcompass.world"

@@ -139,9 +139,9 @@ def place_grasp(
             raise InputError("com: give the centre of mass, or an outline (its centroid)")
         c = out.centroid
     c = (_as_kind(c[0], exact), _as_kind(c[1], exact))
-    nrm = _normals(pts, nrm, out, at_vertex, (na, nb), exact)
+    normals = _normals(pts, nrm, out, at_vertex, (na, nb), exact)
     fric = [(kind, _as_kind(v, exact)) for kind, v in fric]
-    return _place(pts, nrm, fric, c, (na, nb), exact)
+    return _place(pts, normals, fric, c, (na, nb), exact)
 
 
 def _is_shapely(outline: Any) -> bool:
