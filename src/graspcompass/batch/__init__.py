@@ -424,10 +424,9 @@ def k(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
 def _k_grasp(xp: Any, theta: Any, p: list, on_invalid: str) -> tuple[Any, Any, list]:
     S, C, ok = _core(xp, p)
     s, c = xp.sin(theta), xp.cos(theta)
-    kg = None
-    for Sn, Cn in zip(S, C):
-        kn = Sn * s - Cn * c
-        kg = kn if kg is None else xp.maximum(kg, kn)
+    kg = S[0] * s - C[0] * c  # the largest of the four k_n
+    for Sn, Cn in zip(S[1:], C[1:]):
+        kg = xp.maximum(kg, Sn * s - Cn * c)
     kg = xp.maximum(kg, xp.asarray(0.0, dtype=kg.dtype))
     shape = np.broadcast_shapes(tuple(kg.shape), *(tuple(a.shape) for a in p))
     kg, ok = xp.broadcast_to(kg, shape), xp.broadcast_to(ok, shape)
@@ -523,7 +522,8 @@ def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
         shape = np.broadcast_shapes(*(v.shape for v in (*p, m, gg, a, sf)))
         out, ok = np.empty(math.prod(shape)), np.empty(math.prod(shape), dtype=bool)
         for lo, b in zip(range(0, out.size, _CHUNK), blocks):
-            out[lo:lo + _CHUNK], ok[lo:lo + _CHUNK] = _squeeze(xp, b[:7], *b[7:], factor)
+            bm, bg, ba, bsf = b[7:]  # the block's mass, g, acceleration, safety factor
+            out[lo:lo + _CHUNK], ok[lo:lo + _CHUNK] = _squeeze(xp, b[:7], bm, bg, ba, bsf, factor)
         out, ok = out.reshape(shape), ok.reshape(shape)
     if on_invalid == "raise":
         _refuse(xp, [xp.broadcast_to(v, shape) for v in p], ok)

@@ -351,7 +351,7 @@ def _numeric(grasp: Grasp, t: np.ndarray, tie_tol: float) -> np.ndarray:
     return out
 
 
-def _record(row: np.void) -> Slip:
+def _record(row: np.void | np.ndarray) -> Slip:
     n = int(row["n"])
     runner = int(row["runner_up"])
     return Slip(float(row["theta"]), n, tuple(int(j) for j in np.flatnonzero(row["binding"])),

@@ -157,7 +157,7 @@ def _expected(schema: dict[str, Any]) -> str:
     words = {"string": "a text", "integer": "an integer", "number": "a JSON number",
              "array": "a list", "object": "an object", "boolean": "true or false",
              "null": "null"}
-    return " or ".join(words.get(t, t) for t in types)
+    return " or ".join(words[t] if t in words else t for t in types)
 
 
 def _check(v: Any, schema: dict[str, Any], path: str) -> None:

@@ -213,14 +213,15 @@ def to_document(construction: Construction) -> dict[str, Any]:
         any step is written.
     """
     g = construction.grasp
-    grasp = None if g is None else _grasp_record(g)
+    grasp: dict[str, Any] | None = None
     if g is not None:
+        grasp = _grasp_record(g)
         _check_grasp_limits(g, grasp)
+    steps = [_record(s) for s in construction.steps]
     doc = {"schema": SCHEMA, "generator": f"graspcompass {__version__}", "grasp": grasp,
-           "skipped": [list(x) for x in construction.skipped],
-           "steps": [_record(s) for s in construction.steps]}
+           "skipped": [list(x) for x in construction.skipped], "steps": steps}
     _check(doc, DOCUMENT_SCHEMA, "")
-    for i, rec in enumerate(doc["steps"]):
+    for i, rec in enumerate(steps):
         _check(rec["value"], VALUE_SCHEMAS[rec["kind"]], f"steps[{i}].value")
     return doc
 
