@@ -57,7 +57,7 @@ import sympy as sp
 
 from .. import symbols as S
 from ..construction.language import replay
-from ..construction.program import Claim, PointValue, Program, Ref
+from ..construction.program import Claim, PointValue, Program, Ref, Value
 from ..construction.protocol import Construction
 from ._budget import TIMED_OUT, Budget
 from .certify_paper import PaperModel, model_at
@@ -308,6 +308,11 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
         if tie:
             zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
         ok, imp, ext, method = prove_zero(zeros, cond1)
+        if ok and claim.kind == "ratio":  # a ratio of lengths is >= 0
+            k = sign_expr(Claim("sign", (claim.terms[-1], Value(sp.Integer(0)))), env)
+            k_ok, k_r = prove_sign_claim(k.xreplace(tie) if tie else k, ">=", cond1)
+            ok = True if k_ok else None
+            imp = [*imp, *(k_r.implied if k_ok and k_r is not None else ())]
         if ok and any(prove_zero([n], cond1)[0] for n in nonzeros):
             ok = None  # a condition that never holds (two parallel lines): not a proof
         implied += imp
