@@ -5,6 +5,7 @@ Each claim of ``tests/corpus_geometry/*.gc`` carries its truth from geometry
 
 * the checker raises nothing (no internal error discards a file) and the language reads it;
 * a false claim is never PROVED and is REFUTED; a true claim is never REFUTED;
+* every PROVED claim holds at random points where its objects exist (the evaluator);
 * every counterexample is replayed by ``tests/_evaluator.py`` (no code shared with
   graspcompass): the objects exist there and the claim is false there.
 
@@ -13,10 +14,12 @@ The rates (true claims PROVED, median time) are measured by ``bench/bench_corpus
 
 from __future__ import annotations
 
+import random
+
 import pytest
 
 import _corpus
-from _evaluator import evaluate
+from _evaluator import evaluate, params_of, random_point
 
 FILES = _corpus.files()
 
@@ -39,3 +42,9 @@ def test_corpus_file(path):
         assert status == "REFUTED", f"claim {i + 1} is false, got {status}"
         if cx is not None:  # replayed independently: the claim is false there
             assert evaluate(text, cx)[i] is False, (i, cx)
+    rng = random.Random(path.name)
+    proved = [i for i, (_, status, _) in enumerate(record["claims"]) if status == "PROVED"]
+    for _ in range(4):  # every PROVED claim holds wherever its objects exist
+        pt = random_point(params_of(text), rng)
+        truth = evaluate(text, pt)
+        assert all(truth[i] is not False for i in proved), (pt, truth)

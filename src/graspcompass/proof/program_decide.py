@@ -195,7 +195,7 @@ def class_zeros(kind: str, objs: list[Any]) -> tuple[list[sp.Expr], list[sp.Expr
     if kind == "ratio":
         a, b, c, d, k = objs
         return [_d2(a, b) - k ** 2 * _d2(c, d)], [_d2(c, d)]
-    raise CheckError(f"unknown claim kind {claim.kind!r}")  # pragma: no cover - parser checks
+    raise CheckError(f"unknown claim kind {kind!r}")  # pragma: no cover - parser checks
 
 
 def concyclic_zeros(points: list[Point]) -> list[sp.Expr]:
@@ -301,9 +301,28 @@ def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str
                                       "denominators")
     except ValueError:  # not a rational function of the model's generators
         pass
+    fast = _fraction_zero(zeros)
+    if fast:
+        return True, [], [], ("exact fractions of polynomials (the kernel's arithmetic): "
+                              "every numerator reduces to 0 modulo the relations of its "
+                              "roots and sin² + cos² = 1, wherever the steps are defined")
     r = prove_identity(sp.Matrix(zeros), 0, intervals=CONDITION_1 if cond1 else {})
     verdict = True if r.proved else False if r.status is Status.REFUTED else None
     return verdict, list(r.implied), list(r.conditions), "prove_identity"
+
+
+def _fraction_zero(zeros: list[sp.Expr]) -> bool:
+    """Every expression is 0 as a fraction of polynomials in its generators (parameters,
+    square roots with their squares, sine and cosine with sin² + cos² = 1): an identity
+    wherever its denominators (the steps' own non-degeneracy conditions) do not vanish.
+    False means only "not shown so" (the caller goes on)."""
+    from ..construction._lang_values import _frac
+    from ..geometry.exact import NotAFraction
+
+    try:
+        return all(_frac(sp.sympify(z), {}).is_zero() is True for z in zeros)
+    except (NotAFraction, ZeroDivisionError, ValueError, TypeError):
+        return False
 
 
 def _witness(e: sp.Expr) -> list[sp.Expr]:
