@@ -37,6 +37,7 @@ from ..geometry import (
 )
 from ..geometry import constructive as _k
 from ..geometry.exact import canon, decide_zero, has_float
+from ..geometry.roots import constructed_sqrt
 from ..geometry.trig import sincos
 
 __all__ = ["bisector", "circle_compass", "circle_radius", "circumcircle", "homothety",
@@ -123,7 +124,7 @@ def bisector(a: Point, b: Point, c: Point) -> Line:
         if decide_zero(w.x) and decide_zero(w.y):
             raise CoincidentPointsError(f"an angle needs arms: {other} is its vertex {b}",
                                         other, b)
-    lu, lv = sp.sqrt(canon(u.dot(u))), sp.sqrt(canon(v.dot(v)))
+    lu, lv = constructed_sqrt(canon(u.dot(u))), constructed_sqrt(canon(v.dot(v)))
     d = Point.canonical(u.x * lv + v.x * lu, u.y * lv + v.y * lu)
     return Line(b, d, _conds(a, b, c))
 

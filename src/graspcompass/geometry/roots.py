@@ -1,0 +1,118 @@
+"""The constructed square root: √D with its perfect squares taken out on the right branch.
+
+A compass meets a line or a circle at ``(−b ± √D)/a``; the kernel takes √D ≥ 0 (branch 0 is
+``+``).  When D has a square factor f² the root is ``|f|·√(D/f²)``, and ``|f| = f`` where f
+is shown ≥ 0 for every value of the symbols (their sympy assumptions: a parameter
+``> 0`` is positive, ``real`` is real): a sign decided by :func:`decide_sign`, an even
+power, or a polynomial of degree ≤ 2 with rational coefficients whose augmented Gram
+matrix is positive semi-definite (a squared length (b₁ − a₁)² + (b₂ − a₂)², expanded);
+``|f| = −f`` where f is shown ≤ 0.  A square factor of unknown sign stays under the root,
+so the value is the same number as ``sp.sqrt(D)`` for every value of the symbols.
+
+Examples
+--------
+>>> import sympy as sp
+>>> a, b = sp.symbols("a b", real=True)
+>>> constructed_sqrt(sp.expand(3 * (a**2 + b**2)**2))
+sqrt(3)*(a**2 + b**2)
+>>> constructed_sqrt(sp.expand((a - b)**2))
+sqrt(a**2 - 2*a*b + b**2)
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .exact import decide_sign
+
+__all__ = ["constructed_sqrt", "nonnegative"]
+
+#: Radicands with more terms are left as they are (factoring them would cost more than
+#: the root saves).
+MAX_TERMS = 400
+
+
+def _gram_psd(f: sp.Expr) -> bool:
+    """f (degree ≤ 2, rational coefficients) is ≥ 0 everywhere: [[Q, l/2], [l/2, c]] ⪰ 0."""
+    gens = sorted(f.free_symbols, key=str)
+    if not gens or not all(g.is_real for g in gens):
+        return False
+    try:
+        p = sp.Poly(f, *gens)
+    except sp.PolynomialError:
+        return False
+    if p.total_degree() > 2 or not all(c.is_Rational for c in p.coeffs()):
+        return False
+    n = len(gens)
+    m = sp.zeros(n + 1, n + 1)
+    for monom, c in p.terms():
+        idx = [i for i, e in enumerate(monom) for _ in range(e)]
+        if len(idx) == 2:
+            i, j = idx
+            if i == j:
+                m[i, i] += c
+            else:
+                m[i, j] += c / 2
+                m[j, i] += c / 2
+        elif len(idx) == 1:
+            m[idx[0], n] += c / 2
+            m[n, idx[0]] += c / 2
+        else:
+            m[n, n] += c
+    # positive semi-definite: every principal minor is >= 0 (exact rationals)
+    from itertools import combinations
+
+    size = n + 1
+    if size > 9:
+        return False
+    return all(m.extract(list(s), list(s)).det() >= 0
+               for k in range(1, size + 1) for s in combinations(range(size), k))
+
+
+def nonnegative(f: sp.Expr) -> bool:
+    """``f ≥ 0`` shown for every value of its symbols (False: not shown)."""
+    if f.is_nonnegative:
+        return True
+    s = decide_sign(f)
+    if s is not None and s >= 0:
+        return True
+    return _gram_psd(f)
+
+
+def _split(d: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
+    """``(out, inside)`` with d = out²·inside and out ≥ 0, or None (nothing to take out)."""
+    try:
+        c, factors = sp.factor_list(d)
+    except (sp.PolynomialError, NotImplementedError):
+        return None
+    out, inside = sp.Integer(1), sp.sympify(c)
+    for f, m in factors:
+        half = m // 2
+        if half and nonnegative(f):
+            out *= f ** half
+        elif half and nonnegative(-f):
+            out *= (-f) ** half
+        else:
+            inside *= f ** (2 * half)
+        inside *= f ** (m % 2)
+    return (out, inside) if out != 1 else None
+
+
+def constructed_sqrt(d: sp.Expr) -> sp.Expr:
+    """√d ≥ 0 with the square factors of ``d`` of known sign taken out (see the module):
+    for d = N/D, √(f²X / (g²Y)) = (|f|/|g|)·√(X/Y)."""
+    d = sp.sympify(d)
+    if not d.free_symbols or not (d.is_Add or d.is_Mul or d.is_Pow):
+        return sp.sqrt(d)
+    if d.is_Add and len(d.args) > MAX_TERMS:
+        return sp.sqrt(d)
+    n, den = sp.fraction(sp.together(d)) if not d.is_Add or any(
+        a.is_Pow and a.exp.is_negative or a.is_Mul and any(
+            x.is_Pow and x.exp.is_negative for x in a.args) for a in d.args) else (d, 1)
+    top = _split(n) if n.free_symbols else None
+    bottom = _split(den) if sp.sympify(den).free_symbols else None
+    if top is None and bottom is None:
+        return sp.sqrt(d)
+    on, inn = top or (sp.Integer(1), n)
+    od, ind = bottom or (sp.Integer(1), den)
+    return on / od * sp.sqrt(inn / ind)
