@@ -107,8 +107,8 @@ def constructed_sqrt(d: sp.Expr) -> sp.Expr:
     if d.is_Add and len(d.args) > MAX_TERMS:
         return sp.sqrt(d)
     n, den = sp.fraction(sp.together(d)) if not d.is_Add or any(
-        a.is_Pow and a.exp.is_negative or a.is_Mul and any(
-            x.is_Pow and x.exp.is_negative for x in a.args) for a in d.args) else (d, 1)
+        (a.is_Pow and a.exp.is_negative) or (a.is_Mul and any(
+            x.is_Pow and x.exp.is_negative for x in a.args)) for a in d.args) else (d, 1)
     top = _split(n) if n.free_symbols else None
     bottom = _split(den) if sp.sympify(den).free_symbols else None
     if top is None and bottom is None:
