@@ -84,3 +84,72 @@ def summary(records: list[dict]) -> dict:
         "false_proved": sum(1 for c in false if c[1] == "PROVED"),
         "median_s": secs[len(secs) // 2] if secs else 0.0,
     }
+
+
+def sample_values(program, seed: str) -> dict:
+    """Exact values of the parameters at which every step of ``program`` is made
+    (random small fractions in the declared domains, tried until the replay succeeds)."""
+    import random
+    from fractions import Fraction
+
+    from graspcompass.construction.language import replay
+    from graspcompass.geometry import GeometryError
+
+    rng = random.Random(seed)
+    for _ in range(200):
+        vals = {}
+        for q in program.params:
+            v = Fraction(rng.randint(1, 12), rng.choice((3, 4, 5)))
+            if q.domain == "real":
+                v *= rng.choice((-1, 1))
+            if q.domain == "angle":
+                v = min(v, Fraction(3))
+            vals[q.name] = str(v)
+        try:
+            replay(program, vals)
+        except (GeometryError, ValueError, ArithmeticError):
+            continue
+        return vals
+    raise RuntimeError(f"{program.file}: no values found at which every step is made")
+
+
+def geogebra_points(data: bytes, workdir: Path) -> dict[str, tuple[float, float]] | None:
+    """Open a ``.ggb`` in the real GeoGebra under Xvfb (``--regressionFile``) and return
+    every point's coordinates as its kernel computed them; None without GeoGebra."""
+    import re
+    import shutil
+    import subprocess
+
+    geogebra, xvfb = shutil.which("geogebra"), shutil.which("xvfb-run")
+    if geogebra is None or xvfb is None:
+        return None
+    src, out = workdir / "file.ggb", workdir / "values.txt"
+    src.write_bytes(data)
+    subprocess.run([xvfb, "-a", geogebra, "--showSplash=false", f"--regressionFile={out}",
+                    str(src)], check=False, timeout=240, capture_output=True, text=True,
+                   env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"})
+    if not out.exists():
+        raise RuntimeError("GeoGebra wrote no values")
+    pts = {}
+    for m in re.finditer(r"^Point (\S+) = (.*)$", out.read_text("utf-8"), re.M):
+        nums = (m[2].split(" == ")[-1] if " == " in m[2] else m[2]).split()
+        try:
+            x, y, *z = (float(v) for v in nums)
+        except ValueError:
+            continue
+        w = z[0] if z else 1.0
+        pts[m[1]] = (x / w, y / w) if w else (float("nan"), float("nan"))
+    return pts
+
+
+def covering_files() -> list[Path]:
+    """A few corpus files that together use every operation of the language (greedy)."""
+    from graspcompass.construction.language import parse
+
+    ops = {f: {s.op for s in parse(f.read_text("utf-8"), f.name).steps} for f in files()}
+    need, out = set().union(*ops.values()), []
+    while need:
+        best = max(ops, key=lambda f: len(ops[f] & need))
+        out.append(best)
+        need -= ops[best]
+    return sorted(out)

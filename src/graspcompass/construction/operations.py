@@ -268,7 +268,7 @@ _ALL = (
         "{name}: the circle about {0} with radius {1}{2}", "Circle[{0}, Segment[{1}, {2}]]",
         "circle", "The circle about a centre with the radius of a segment AB (Euclid I.2)."),
     _op("bisector", _cls.bisector, "ruler", "point point point", "", "line",
-        "{name}: the bisector of the angle {0}{1}{2}", "AngleBisector[{0}, {1}, {2}]", "line",
+        "{name}: the bisector of the angle {0}{1}{2}", "AngularBisector[{0}, {1}, {2}]", "line",
         "The internal bisector of the angle ABC, through B."),
     _op("tangent_at", _cls.tangent_at, "ruler", "circle point", "", "line",
         "{name}: the tangent to {0} at {1}", "OrthogonalLine[{1}, Line[Center[{0}], {1}]]",
