@@ -16,9 +16,9 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
-import _corpus  # noqa: E402
-from graspcompass.construction.language import parse, replay  # noqa: E402
-from graspcompass.export.geogebra import to_ggb  # noqa: E402
+import _corpus
+from graspcompass.construction.language import parse, replay
+from graspcompass.export.geogebra import to_ggb
 
 
 def main() -> None:
