@@ -39,3 +39,11 @@ def test_every_operation_has_a_reference_entry_with_an_example():
 def test_example_is_proved(page, line, body):
     report = check_program(parse(body, f"{page}:{line}"), timeout=60)
     assert [r.result.status.value for r in report.claims] == ["PROVED"] * len(report.claims)
+
+
+def test_the_first_example_of_language_md_builds_and_proves_what_its_title_says():
+    text = (DOCS / "language.md").read_text("utf-8")
+    body = re.search(r"^```text\n(.*?)^```", text, re.S | re.M).group(1)
+    assert body.startswith("# Thales") and "circle_on_diameter O V" in body
+    report = check_program(parse(body, "language.md"))
+    assert [r.result.status.value for r in report.claims] == ["PROVED", "PROVED"]

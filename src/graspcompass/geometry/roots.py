@@ -79,6 +79,62 @@ def nonnegative(f: sp.Expr) -> bool:
     return _gram_psd(f)
 
 
+def _square_over_root(g: sp.Expr) -> sp.Expr | None:
+    """h ≥ 0 with h² = g, where g = g0 + g1·√R has one square root √R among its atoms
+    and h = α + β√R (α, β free of it): α² + β²R = g0, 2αβ = g1, so
+    α² = (g0 ± √(g0² − g1²R))/2 with g0² − g1²R a perfect square.  None: not found."""
+    roots = [a for a in g.atoms(sp.Pow) if a.exp == sp.Rational(1, 2) and a.base.free_symbols]
+    if len(roots) != 1:
+        return None
+    s = roots[0]
+    r = s.base
+    t = sp.Dummy("t")
+    try:
+        p = sp.Poly(sp.expand(g.xreplace({s: t})), t)
+    except sp.PolynomialError:
+        return None
+    if p.degree() > 2:
+        return None
+    c = p.all_coeffs()[::-1] + [0, 0]
+    g0, g1 = sp.expand(c[0] + c[2] * r), sp.expand(c[1])
+    if g1 == 0:
+        return None
+    w = _poly_sqrt(sp.expand(g0 ** 2 - g1 ** 2 * r))
+    if w is None:
+        return None
+    for a2 in ((g0 + w) / 2, (g0 - w) / 2):
+        root = _poly_sqrt(sp.expand(a2))
+        if root is None or root == 0:
+            continue
+        for alpha in (root, -root):
+            beta = sp.cancel(g1 / (2 * alpha))
+            h = alpha + beta * s
+            if sp.expand(h ** 2 - g).xreplace({s: t}).subs(t ** 2, r) == 0 or sp.expand(
+                    (sp.expand(h ** 2) - g).subs(s ** 2, r)) == 0:
+                if nonnegative(h):
+                    return h
+                if nonnegative(-h):
+                    return -h
+    return None
+
+
+def _poly_sqrt(e: sp.Expr) -> sp.Expr | None:
+    """A polynomial q with q² = e (either sign), or None when e is not a perfect square."""
+    if e == 0:
+        return sp.Integer(0)
+    try:
+        c, factors = sp.factor_list(e)
+    except (sp.PolynomialError, NotImplementedError):
+        return None
+    rc = sp.sqrt(sp.sympify(c))
+    if any(m % 2 for _, m in factors) or not rc.is_Rational:
+        return None
+    out = rc
+    for f, m in factors:
+        out *= f ** (m // 2)
+    return out
+
+
 def _split(d: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
     """``(out, inside)`` with d = out²·inside and out ≥ 0, or None (nothing to take out)."""
     try:
@@ -112,7 +168,15 @@ def constructed_sqrt(d: sp.Expr) -> sp.Expr:
     top = _split(n) if n.free_symbols else None
     bottom = _split(den) if sp.sympify(den).free_symbols else None
     if top is None and bottom is None:
+        if den == 1 and d.is_Add:
+            h = _square_over_root(d)
+            if h is not None:
+                return h
         return sp.sqrt(d)
     on, inn = top or (sp.Integer(1), n)
     od, ind = bottom or (sp.Integer(1), den)
+    if sp.sympify(ind) == 1 and sp.sympify(inn).is_Add:
+        h = _square_over_root(sp.expand(inn))
+        if h is not None:
+            return on / od * h
     return on / od * sp.sqrt(inn / ind)
