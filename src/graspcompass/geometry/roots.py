@@ -141,7 +141,8 @@ def _split(d: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
         c, factors = sp.factor_list(d)
     except (sp.PolynomialError, NotImplementedError):
         return None
-    out, inside = sp.Integer(1), sp.sympify(c)
+    out, inside, apart = sp.Integer(1), sp.sympify(c), sp.Integer(1)
+    odd = [f for f, m in factors if m % 2]
     for f, m in factors:
         half = m // 2
         if half and nonnegative(f):
@@ -150,7 +151,12 @@ def _split(d: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
             out *= (-f) ** half
         else:
             inside *= f ** (2 * half)
-        inside *= f ** (m % 2)
+        if m % 2 and len(odd) > 1 and f.free_symbols and nonnegative(f):
+            apart *= sp.sqrt(f)  # √(f·g) = √f·√g for f ≥ 0: one root per factor
+        elif m % 2:
+            inside *= f
+    if apart != 1:
+        return out * apart, inside
     return (out, inside) if out != 1 else None
 
 
