@@ -189,11 +189,11 @@ def _class_definition(step: Any, steps: dict[str, Any], ins: tuple[str, ...]
         return Definition("point", "Rotate", (ins[0], ggb_number(params[0]), ins[1]))
     if op == "homothety":
         return Definition("point", "Dilate", (ins[0], ggb_number(params[0]), ins[1]))
-    if op == "radical_axis":
-        c1, c2 = (f"Center[{c}]" for c in ins)
+    if op == "radical_axis":  # (C1 − C2)·X = −(power difference)/2: the kernel's scale,
+        c1, c2 = (f"Center[{c}]" for c in ins)  # so a point on it keeps its parameter
         return Definition("line", exp=(
-            f"2 (x({c2}) - x({c1})) x + 2 (y({c2}) - y({c1})) y = Radius[{ins[0]}]^2 - "
-            f"Radius[{ins[1]}]^2 + x({c2})^2 + y({c2})^2 - x({c1})^2 - y({c1})^2"))
+            f"(x({c1}) - x({c2})) x + (y({c1}) - y({c2})) y = -(Radius[{ins[0]}]^2 - "
+            f"Radius[{ins[1]}]^2 + x({c2})^2 + y({c2})^2 - x({c1})^2 - y({c1})^2) / 2"))
     k = int(params[0]) if params else 0
     if op == "intersect_circles":
         one, two = (f"Intersect[{ins[0]}, {ins[1]}, {i}]" for i in (1, 2))
