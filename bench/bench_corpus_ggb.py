@@ -25,9 +25,11 @@ def main() -> None:
     good = 0
     for path in _corpus.files():
         program = parse(path.read_text("utf-8"), path.name)
-        c = replay(program, _corpus.sample_values(program, path.name))
-        with tempfile.TemporaryDirectory() as tmp:
-            pts = _corpus.geogebra_points(to_ggb(c), Path(tmp))
+        values = _corpus.sample_values(program, path.name)
+        c = replay(program, values)
+        with tempfile.TemporaryDirectory() as tmp:  # sliders for its parameters, Prove
+            pts = _corpus.geogebra_points(to_ggb(c, program=program, values=values),
+                                          Path(tmp))
         if pts is None:
             print("GeoGebra or xvfb-run is not installed")
             return

@@ -6,6 +6,8 @@ definition).  A few files that together use every operation are opened in GeoGeb
 under Xvfb (``--regressionFile``, as ``tests/test_export.py`` does): each point GeoGebra
 computes from the commands (intersections on the kernel's branch, rotations,
 homotheties, the radical axis, tangents, free points on paths) is the kernel's point.
+The file's parameters are GeoGebra sliders on which its given points depend, and each
+claim GeoGebra's prover states is a ``Prove``/``ProveDetails`` pair.
 ``bench/bench_corpus_ggb.py`` opens all of them.
 """
 
@@ -24,8 +26,20 @@ FILES = _corpus.files()
 
 def _export(path):
     program = parse(path.read_text("utf-8"), path.name)
-    c = replay(program, _corpus.sample_values(program, path.name))
-    return c, to_ggb(c)
+    values = _corpus.sample_values(program, path.name)
+    c = replay(program, values)
+    return c, to_ggb(c, program=program, values=values)
+
+
+def test_a_files_parameters_are_sliders_and_its_claims_prove_commands():
+    path = _corpus.CORPUS / "06_simson.gc"
+    program = parse(path.read_text("utf-8"), path.name)
+    xml = read_ggb_xml(_export(path)[1])
+    for p in program.params:
+        assert f'<element type="numeric" label="{p.name}">' in xml
+    assert '<expression label="C" exp="((p), (q))" type="point"/>' in xml  # on the sliders
+    assert xml.count('<command name="Prove">') == 2  # both collinear claims
+    assert '<input a0="AreCollinear[D, E, F]"/>' in xml and "ProveDetails" in xml
 
 
 def test_every_corpus_file_exports_to_ggb():
