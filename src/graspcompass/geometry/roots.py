@@ -95,7 +95,7 @@ def _square_over_root(g: sp.Expr) -> sp.Expr | None:
         return None
     if p.degree() > 2:
         return None
-    c = p.all_coeffs()[::-1] + [0, 0]
+    c = [*p.all_coeffs()[::-1], 0, 0]
     g0, g1 = sp.expand(c[0] + c[2] * r), sp.expand(c[1])
     if g1 == 0:
         return None
