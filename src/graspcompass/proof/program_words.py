@@ -24,13 +24,14 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Mapping
+from functools import lru_cache
 
 import sympy as sp
 
 __all__ = ["tidy"]
 
 _COND = re.compile(r"^(?P<e>.+?) (?P<rel>≠|!=|≥|>=|>) 0(?P<rest>(?: \(.*\))?)$", re.S)
-_MAX_CHARS = 600  # longer conditions are kept as they are (factoring would cost more)
+_MAX_CHARS = 300  # longer conditions are kept as they are (factoring would cost more)
 
 
 def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
@@ -60,31 +61,40 @@ def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
     return sp.Mul(*kept), dropped
 
 
+@lru_cache(maxsize=8192)
+def _one(t: str, symbols: tuple) -> tuple[str, str, str, str]:
+    """``(bucket, expression text, relation, words)`` of one condition text; bucket is
+    ``"implied"`` (every factor's sign is known), ``"extra"`` or ``"as is"``."""
+    m = _COND.match(t.replace("!=", "≠").replace(">=", "≥"))
+    if m is None:
+        return "as is", t, "", ""
+    rel = m["rel"]
+    text, words = m["e"], m["rest"].strip()[1:-1] if m["rest"] else ""
+    if len(text) <= _MAX_CHARS:
+        try:
+            e = sp.sympify(text, locals=dict(symbols))
+            f, dropped = _factored(e, rel)
+        except (sp.SympifyError, TypeError, ValueError, SyntaxError):
+            return "extra", text, rel, words
+        if f is None:
+            return "implied", f"{text} {rel} 0 (sign from the domains)", rel, words
+        if dropped:
+            text = sp.sstr(f)
+    return "extra", text, rel, words
+
+
 def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.Symbol]
          ) -> tuple[list[str], list[str]]:
     """``(extra, implied)`` tidied (see the module); texts that are not ``EXPR ≠ 0``,
     ``≥ 0`` or ``> 0`` are kept as they are."""
     implied = list(dict.fromkeys(t.replace(" != 0", " ≠ 0") for t in implied))
+    key = tuple(sorted(symbols.items()))
     groups: dict[tuple[str, str], list[str]] = {}
     for t in extra:
-        m = _COND.match(t.replace("!=", "≠").replace(">=", "≥"))
-        if m is None:
-            groups.setdefault((t, ""), [])
+        bucket, text, rel, words = _one(t, key)
+        if bucket == "implied":
+            implied.append(text)
             continue
-        rel = m["rel"]
-        text, words = m["e"], m["rest"].strip()[1:-1] if m["rest"] else ""
-        if len(text) <= _MAX_CHARS:
-            try:
-                e = sp.sympify(text, locals=dict(symbols))
-                f, dropped = _factored(e, rel)
-            except (sp.SympifyError, TypeError, ValueError, SyntaxError):
-                f, dropped = None, False
-                e = None
-            if e is not None and f is None:
-                implied.append(f"{text} {rel} 0 (sign from the domains)")
-                continue
-            if e is not None and dropped:
-                text = sp.sstr(f)
         ws = groups.setdefault((text, rel), [])
         if words and words not in ws:
             ws.append(words)
