@@ -356,12 +356,66 @@ def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
             continue
         if r.proved:
             return True, r
+    if relation in (">", ">=", "<", "<="):
+        conds = _positive_factors(e if relation[0] == ">" else -e)
+        if conds is not None:
+            return True, ProofResult(
+                Status.PROVED, "a product of positive factors: positive parameters, "
+                "square roots of non-zero radicands, squared lengths (positive "
+                "semi-definite quadratics) that do not vanish", 0.0,
+                conditions=tuple(f"{c} ≠ 0" for c in conds))
     if relation in (">=", "<="):
         ok, implied, extra, _ = prove_zero([e], cond1)
         if ok:
             return True, ProofResult(Status.PROVED, "identically zero", 0.0,
                                      conditions=tuple(extra), implied=tuple(implied))
     return None, None
+
+
+def _positive_factors(e: sp.Expr) -> list[sp.Expr] | None:
+    """``e > 0`` wherever the returned expressions are non-zero, or None (not shown).
+
+    ``e`` is split into factors (square roots kept as generators); each must be a
+    positive rational, positive by the parameters' assumptions, a square root √R
+    (> 0 where R ≠ 0: R is returned), or a polynomial shown ≥ 0 for all real values
+    (:func:`graspcompass.geometry.roots.nonnegative`, > 0 where it is non-zero: it is
+    returned), any of them to any integer power.
+    """
+    from ..geometry.roots import nonnegative
+
+    try:
+        num, den = sp.fraction(sp.together(sp.sympify(e)))
+    except (sp.PolynomialError, TypeError, ValueError):
+        return None
+    conds: list[sp.Expr] = []
+
+    def positive(part: sp.Expr) -> bool:
+        try:
+            c, factors = sp.factor_list(part)
+        except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
+            return False
+        if not (sp.sympify(c) > 0):
+            return False
+        for f, _m in factors:
+            if f.is_positive:
+                continue
+            if f.is_Pow and f.exp == sp.Rational(1, 2):
+                if not (f.base.is_positive or nonnegative(f.base)):
+                    return False
+                if not f.base.is_positive:
+                    conds.append(f.base)
+                continue
+            if f.free_symbols and not f.atoms(sp.Pow) - {a for a in f.atoms(sp.Pow)
+                                                         if a.exp.is_Integer} \
+                    and nonnegative(f):
+                conds.append(f)
+                continue
+            return False
+        return True
+
+    if positive(num) and positive(den):
+        return list(dict.fromkeys(conds))
+    return None
 
 
 # -- exact replay at sample points (counterexamples) --------------------------------------
