@@ -14,8 +14,8 @@ import math
 from typing import Any
 from xml.sax.saxutils import escape, quoteattr
 
-from ..labelling import FONT_PT, FRAME_PT
-from ._scene import COLORS, Label, Scene, build_scene, exact_text, label_tex
+from ..scene.labelling import FONT_PT, FRAME_PT
+from ..scene.picture import COLORS, Label, Scene, exact_text, label_tex, scene_of
 
 __all__ = ["to_svg", "write_svg"]
 
@@ -88,7 +88,7 @@ def to_svg(construction: Any, title: str | None = None) -> str:
     >>> text.startswith("<?xml") and 'viewBox="0 0 800' in text and 'id="envelope"' in text
     True
     """
-    scene = build_scene(construction, title)
+    scene = scene_of(construction, title)
     m = _Map(scene)
     steps = {s.name: s for s in construction.steps}
 

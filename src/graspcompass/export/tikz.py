@@ -16,7 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
+from ..scene.picture import COLORS, Scene, exact_text, label_tex, scene_of
 
 __all__ = ["to_tikz", "write_tikz"]
 
@@ -99,7 +99,7 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
     >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
     True
     """
-    scene = build_scene(construction, title)
+    scene = scene_of(construction, title)
     box = scene.box
     pad = 0.1 * (box[1] - box[0])
     out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),

@@ -41,7 +41,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from matplotlib.text import Annotation, Text
 
-from ..layout import numeric_objects, tex
+from ..scene.layout import numeric_objects, tex
 from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
 from ._anim_layout import _layout, _text_width, _wrap  # noqa: F401
 from ._anim_player import FrameAnimation

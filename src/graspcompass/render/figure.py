@@ -20,20 +20,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import Polygon, Rectangle
-from matplotlib.text import Annotation, Text
 
-from ..layout import (
-    clip_line,
-    clip_segment,
-    group_points,
-    numeric_objects,
-    roles_of,
-    shape_extent,
-    tex,
-    view_box,
-    wedge,
-)
-from .labels import place_labels
+from ..scene.layout import clip_line, clip_segment, numeric_objects, shape_extent
+from ..scene.picture import Scene, scene_of
 from .output import FORMATS, save_figure
 from .polar import draw_k_polar, figure_k_plot
 from .theme import DEFAULT_THEME, Theme
@@ -65,12 +54,12 @@ def _by_role(construction: Any, role: str) -> dict[int, str]:
     return {_n(s): s.name for s in construction.steps if getattr(s, "role", "") == role}
 
 
-def _draw_givens(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme,
+def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
                  out: dict[str, list[Artist]]) -> None:
     """The object outline and the friction cones, shaded towards the object (Fig. 2).
 
-    The cone at contact i is between the cone sides i (upper) and i + 2 (lower),
-    found by their roles (``role contact i``, ``role cone_side n``), not their names.
+    The cones are the scene's (:attr:`Scene.cones`, between the cone sides i and
+    i + 2 found by their roles), drawn once both sides are made.
     """
     grasp = construction.grasp
     ext = shape_extent(getattr(grasp, "shape", None))
@@ -81,15 +70,10 @@ def _draw_givens(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme,
         patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
                  Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
         out["object"] = [ax.add_patch(patch)]
-    contacts, sides = _by_role(construction, "contact"), _by_role(construction, "cone_side")
-    p1, p2 = (np.array(num.get(contacts.get(i, ""), (0, 0))) for i in (1, 2))
-    length = 0.6 * float(np.linalg.norm(p1 - p2))
-    for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
-        apex = num.get(contacts.get(i, ""))
-        da, db = num.get(sides.get(a, "")), num.get(sides.get(b, ""))
-        if apex is None or da is None or db is None:
+    for i, cone in enumerate(scene.cones, start=1):
+        if not scene.visible(f"cone{i}"):
             continue
-        poly = Polygon(wedge(apex, da[1], db[1], length), closed=True, facecolor=theme.cone_face,
+        poly = Polygon(np.asarray(cone), closed=True, facecolor=theme.cone_face,
                        alpha=theme.cone_alpha, edgecolor="none", zorder=1,
                        label="friction cones" if i == 1 else "_nolegend_")
         out[f"cone{i}"] = [ax.add_patch(poly)]
@@ -192,16 +176,16 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         ax = Figure(figsize=(7, 7)).add_subplot()
     num_all = numeric_objects(construction)
     num = {k: num_all[k] for k in state.names}
-    box = view_box(construction.grasp, num_all, roles=roles_of(construction))
+    scene = scene_of(construction).upto(step)
+    box = scene.box
     span = box[1] - box[0]
     ax.set_xlim(box[0], box[1])
     ax.set_ylim(box[2], box[3])
     ax.set_aspect("equal", adjustable="box")
+    ax.apply_aspect()
     out: dict[str, list[Artist]] = {}
-    _draw_givens(ax, construction, num_all, theme, out)
+    _draw_givens(ax, construction, scene, theme, out)
     last = state.steps[-1].name if highlight_last else None
-    points: list[tuple[str, tuple[float, float]]] = []
-    curves: list[np.ndarray] = []
     for s in state.steps:
         v = num[s.name]
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
@@ -211,13 +195,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                 [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
                 mfc="white" if small else hl.get("color", theme.point_color),
                 mec=hl.get("color", theme.point_color), mew=0.8)
-            if not small:
-                points.append((s.name, v))
         elif s.kind == "line":
             out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
-            seg = clip_line(v[0], v[1], box)
-            if seg is not None:
-                curves.append(np.array(seg))
         elif s.kind == "circle":
             n = _n(s)
             (cx, cy), r = v
@@ -227,12 +206,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                                 label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)"
                                 if s.role == "circle" else "_nolegend_")
             out[s.name] = [ax.add_patch(patch)]
-            t = np.linspace(0, 2 * np.pi, 100)
-            curves.append(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
         elif s.kind == "length":
             out[s.name] = _draw_length(ax, s, num, box, span, theme, hl)
-            curves += [np.array([a.xyann, a.xy]) for a in out[s.name]
-                       if isinstance(a, Annotation)]
         else:  # the envelope, eq. (25)
             xy = v.polyline()
             fill = Polygon(xy, closed=True, facecolor=theme.envelope_fill, edgecolor="none",
@@ -241,34 +216,32 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                            lw=theme.envelope_width, zorder=4, solid_joinstyle="round",
                            label=r"envelope: $k_{grasp}(\theta)$, eq. (25)")
             out[s.name] = [*line, ax.add_patch(fill)]
-            curves.append(xy)
     if show_computer_plot and construction.grasp is not None:
         out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
-    if labels and points:
-        axis_texts = [a for st in state.steps if st.role == "axis"
-                      for a in out.get(st.name, []) if isinstance(a, Text)]
-        breaks = [num[st.name] for st in state.steps if st.role == "break_point"]
-        _label_points(ax, points, curves, axis_texts, theme, out, breaks)
+    if labels:
+        _label_points(ax, scene, theme, out)
     return out
 
 
-def _label_points(ax: Axes, points: list[tuple[str, tuple[float, float]]],
-                  curves: list[np.ndarray], avoid: list[Text], theme: Theme,
-                  out: dict[str, list[Artist]],
-                  obstacles: list[tuple[float, float]] = ()) -> None:  # type: ignore[assignment]
-    """One label per group of coincident points, ``O = O_M = Y_4`` (§3.3)."""
-    where = dict(points)
-    xs = [abs(v) for _, xy in points for v in xy]
-    groups = group_points(points, 1e-9 * max(1.0, *xs))
-    groups.sort(key=lambda g: min(_LABEL_ORDER.find(n[0]) % 9 for n in g))
-    items = [(where[g[0]], "$" + " = ".join(tex(n, math=False) for n in g) + "$")
-             for g in groups]
-    texts = place_labels(ax, items, curves, avoid, obstacles=obstacles, font_size=theme.font_size,
-                         marker_size=theme.point_size, color=theme.label_color, zorder=6,
-                         bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
-    for g, text in zip(groups, texts):
-        for n in g:
-            out[n].append(text)
+_HA = {1: "left", -1: "right", 0: "center"}
+_VA = {1: "bottom", -1: "top", 0: "center"}
+
+
+def _label_points(ax: Axes, scene: Scene, theme: Theme, out: dict[str, list[Artist]]) -> None:
+    """The scene's labels (:attr:`Scene.labels`), one per group ``O = O_M = Y_4`` (§3.3).
+
+    Placed once for every painter (:func:`graspcompass.scene.labelling.place`), at
+    their offsets in points from their points; a group shows the names made so far.
+    """
+    for lab in scene.labels:
+        text = ax.annotate(f"${lab.tex()}$", lab.point, xytext=lab.offset,
+                           textcoords="offset points", ha=_HA[lab.direction[0]],
+                           va=_VA[lab.direction[1]], fontsize=theme.font_size,
+                           annotation_clip=False, color=theme.label_color, zorder=6,
+                           bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none",
+                                     alpha=0.65))
+        for n in lab.names:
+            out.setdefault(n, []).append(text)
 
 
 def figure_diagram(construction: Any, step: int | None = None, overlay: bool = True,
