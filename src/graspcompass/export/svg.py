@@ -78,8 +78,12 @@ def _arc_path(scene: Scene, m: _Map) -> str:
     return " ".join(parts) + " Z"
 
 
-def to_svg(construction: Any, title: str | None = None) -> str:
+def to_svg(construction: Any, title: str | None = None, step: int | None = None) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
+
+    ``step`` draws the picture after that step of the protocol
+    (:meth:`graspcompass.scene.picture.Scene.upto`): in the whole construction's
+    frame, nothing made after it drawn or named.
 
     Examples
     --------
@@ -88,7 +92,7 @@ def to_svg(construction: Any, title: str | None = None) -> str:
     >>> text.startswith("<?xml") and 'viewBox="0 0 800' in text and 'id="envelope"' in text
     True
     """
-    scene = scene_of(construction, title)
+    scene = scene_of(construction, title).upto(step)
     m = _Map(scene)
     steps = {s.name: s for s in construction.steps}
 
