@@ -52,15 +52,16 @@ def _check_svg(c, n: int) -> None:
     made = set(c.upto(n).names)
     names = [s.name for s in c.steps]
     root = ET.fromstring(to_svg(c, step=n).encode())
-    ids = {g.get("id") for g in root.iterfind(".//s:g", NS) if g.get("id")}
+    ids = {g.get("id").removeprefix("inset-") for g in root.iterfind(".//s:g", NS)
+           if g.get("id") and g.get("class") not in ("panel", "drawing")}
     assert ids <= made, (n, ids - made)
     for t in root.iterfind(".//s:g[@class='point']/s:text", NS):
         text = (t.text or "") + "".join(
             ("_" + (sub.text or "")) + (sub.tail or "") for sub in t)
-        parts = {p.strip() for p in text.split("=")}
+        parts = {p.strip() for p in re.split("[=,]", text)}
         by_svg = {label_tex(m).replace("{", "").replace("}", ""): m for m in names}
         assert {by_svg[p] for p in parts} <= made, (n, text)
-    cones = {p.get("id") for p in root.iterfind(".//s:polygon", NS)}
+    cones = {p.get("id").removeprefix("inset-") for p in root.iterfind(".//s:polygon", NS)}
     sides = _sides(c)
     assert cones == {k for k in ("cone1", "cone2") if sides[k] <= made}, n
 

@@ -16,7 +16,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from ..scene.picture import COLORS, Scene, exact_text, label_tex, scene_of
+from ..scene.picture import COLORS, Scene, exact_text, scene_of
 
 __all__ = ["to_tikz", "write_tikz"]
 
@@ -155,8 +155,9 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         if not small:
-            text = " = ".join(label_tex(n) for n in names)
+            text = ""
             lab = scene.label_of(names[0])
+            text = lab.tex() if lab is not None else text
             if lab is not None:
                 out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
                            f"{{${text}$}};")

@@ -27,11 +27,13 @@ import sympy as sp
 
 from ..construction.describe import describe
 from ..geometry.numeric import to_float
+from . import fit as fitting
 from . import labelling, layout
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
 
-__all__ = ["COLORS", "Arc", "Label", "Scene", "build_scene", "exact_text", "group_points",
+__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Label", "Scene", "build_scene", "exact_text",
+           "group_points",
            "label_tex", "scene_of"]
 
 XY = tuple[float, float]
@@ -39,6 +41,9 @@ Box = tuple[float, float, float, float]
 
 #: Colours of the pictures: the one palette, the PNG's too (:mod:`graspcompass.palette`).
 COLORS = PALETTE
+#: Side in points of the zoomed inset's square frame (the main one is
+#: :data:`graspcompass.scene.labelling.FRAME_PT`), its labels at the same font size.
+INSET_PT = 0.6 * labelling.FRAME_PT
 
 
 @dataclass(frozen=True)
@@ -78,10 +83,42 @@ class Label:
     point: XY = (0.0, 0.0)
     #: a thin line from the point to the label (a label set far from a crowded point)
     leader: bool = False
+    #: per name, the group of coinciding points it belongs to: names of one group are
+    #: joined by `` = ``, points apart but closer than a marker (one place to the eye)
+    #: by ``, `` (empty: all coincide)
+    groups: tuple[int, ...] = ()
+
+    def join(self, text: Any = label_tex) -> str:
+        """The names, each written by ``text``, joined as they coincide."""
+        out = text(self.names[0])
+        for i in range(1, len(self.names)):
+            same = not self.groups or self.groups[i] == self.groups[i - 1]
+            out += (" = " if same else ", ") + text(self.names[i])
+        return out
 
     def tex(self) -> str:
-        """The label's TeX math body, ``O = O_M = Y_4``."""
-        return " = ".join(label_tex(n) for n in self.names)
+        """The label's TeX math body, ``O = O_M = Y_4`` (``P_1, P_{1x}`` when only near)."""
+        return self.join()
+
+
+@dataclass(frozen=True)
+class Inset:
+    """A zoomed view of the crowded region (:func:`graspcompass.scene.fit.crowded_region`).
+
+    ``box`` ``(xmin, xmax, ymin, ymax)`` is the region in the frame of the paper;
+    ``labels`` are placed in a frame of :data:`INSET_PT` points on its side.
+    """
+
+    box: Box
+    labels: tuple[Label, ...]
+    #: the labels of the whole view when the inset is shown beside it: those of the
+    #: crowded points that break a rule there are left to the inset
+    main: tuple[Label, ...] = ()
+
+    @property
+    def zoom(self) -> float:
+        """Points per unit of the inset."""
+        return INSET_PT / (self.box[1] - self.box[0])
 
 
 @dataclass(frozen=True)
@@ -104,6 +141,8 @@ class Scene:
     made: Mapping[str, int] = field(default_factory=dict)
     #: the last step shown (None: every step)
     step: int | None = None
+    #: the zoomed view of the crowded region, if points crowd
+    inset: Inset | None = None
 
     def label_of(self, name: str) -> Label | None:
         """The label of the group of points whose first name is ``name``, or None."""
@@ -130,16 +169,25 @@ class Scene:
             kept = tuple(n for n in names if ok(n))
             if kept:
                 pts.append((kept, xy))
-        labels = []
-        for lab in self.labels:
-            kept = tuple(n for n in lab.names if ok(n))
-            if kept:
-                labels.append(replace(lab, names=kept))
+        def cut_labels(labs: tuple[Label, ...]) -> tuple[Label, ...]:
+            out = []
+            for lab in labs:
+                keep = [i for i, n in enumerate(lab.names) if ok(n)]
+                if keep:
+                    out.append(replace(lab, names=tuple(lab.names[i] for i in keep),
+                                       groups=tuple(lab.groups[i] for i in keep)
+                                       if lab.groups else ()))
+            return tuple(out)
+
+        labels = cut_labels(self.labels)
+        inset = (None if self.inset is None else
+                 replace(self.inset, labels=cut_labels(self.inset.labels),
+                         main=cut_labels(self.inset.main)))
         cones = tuple(c for i, c in enumerate(self.cones, start=1) if ok(f"cone{i}"))
         return replace(cut, lines=tuple(x for x in self.lines if ok(x[0])),
                        lengths=tuple(x for x in self.lengths if ok(x[0])),
                        circles=tuple(x for x in self.circles if ok(x[0])),
-                       points=tuple(pts), labels=tuple(labels), cones=cones,
+                       points=tuple(pts), labels=labels, cones=cones, inset=inset,
                        envelope=self.envelope if ok("envelope") else ())
 
 
@@ -242,10 +290,12 @@ def build_scene(construction: Any, title: str | None = None, box: Box | None = N
     grouped += [((n,), xy) for n, xy in inside if n in small]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
     # the break points' markers are avoided, as in the matplotlib drawing (figure.py)
-    labels = _labels(box, [g for g in grouped if g[0][0] not in small], lines, lengths, circles,
-                     envelope, [xy for names, xy in grouped if names[0] in small])
+    cusps = [a.start for a in envelope]
+    labels, inset = _labels(box, [g for g in grouped if g[0][0] not in small], lines, lengths,
+                            circles, envelope,
+                            [xy for names, xy in grouped if names[0] in small] + cusps)
     return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
-                 tuple(cones), outline, text, frozenset(small), labels, made)
+                 tuple(cones), outline, text, frozenset(small), labels, made, inset=inset)
 
 
 _SCENES: dict[int, tuple[Any, Scene]] = {}
@@ -279,34 +329,89 @@ def _arc_points(a: Arc) -> np.ndarray:
 
 def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any],
             lengths: list[Any], circles: list[Any], envelope: tuple[Arc, ...],
-            obstacles: list[XY] = ()) -> tuple[Label, ...]:  # type: ignore[assignment]
-    """The labels of ``groups`` placed as the matplotlib drawing places them, in points."""
-    s = labelling.FRAME_PT / (box[1] - box[0])
+            obstacles: list[XY]) -> tuple[tuple[Label, ...], Inset | None]:
+    """The labels of ``groups`` in the main frame and, where points crowd, in an inset.
 
-    def pt(xy: Any) -> np.ndarray:
-        a = np.asarray(xy, dtype=float).reshape(-1, 2)
-        return np.column_stack([(a[:, 0] - box[0]) * s, (a[:, 1] - box[2]) * s])
+    The main frame's labels name every point (a painter without the inset reads
+    them); :attr:`Inset.main` are those of the main frame beside the inset.
 
+    Placed by :func:`graspcompass.scene.fit.fit` in points of a frame of
+    :data:`~graspcompass.scene.labelling.FRAME_PT` (the PNG's axes).  A point of the
+    crowded region whose label breaks a rule in the main frame is named in the inset only.
+    """
+    side = labelling.FRAME_PT
+    s = side / (box[1] - box[0])
     t = np.linspace(0, 2 * np.pi, 100)
-    curves = [pt([a, b]) for _, _, a, b in lines]
-    curves += [pt(np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)]))
+    curves = [np.asarray([a, b], dtype=float) for _, _, a, b in lines]
+    curves += [np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
                for _, _, c, r in circles]
-    curves += [pt([a, b]) for _, a, b in lengths]
+    curves += [np.asarray([a, b], dtype=float) for _, a, b in lengths]
     if envelope:
-        curves.append(pt(np.vstack([_arc_points(a) for a in envelope])))
+        curves.append(np.vstack([_arc_points(a) for a in envelope]))
     order = sorted(groups, key=lambda g: labelling.label_order(g[0]))
-    texts = ["$" + " = ".join(label_tex(n) for n in names) + "$" for names, _ in order]
-    placed = labelling.place(pt([xy for _, xy in order]) if order else np.zeros((0, 2)), texts,
-                             curves=curves,
-                             frame=(0.0, 0.0, labelling.FRAME_PT, (box[3] - box[2]) * s),
-                             obstacles=pt(obstacles) if len(obstacles) else ())
-    out = []
-    for (names, xy), p in zip(order, placed):
-        x0, y0, x1, y1 = p.box
-        out.append(Label(names, (xy[0] + p.offset[0] / s, xy[1] + p.offset[1] / s), p.direction,
-                         (box[0] + x0 / s, box[2] + y0 / s, box[0] + x1 / s, box[2] + y1 / s),
-                         p.offset, xy))
-    return tuple(out)
+    anchors = [xy for _, xy in order]
+
+    def to_pt(xy: Any, frame: Box, scale: float) -> np.ndarray:
+        a = np.asarray(xy, dtype=float).reshape(-1, 2)
+        return np.column_stack([(a[:, 0] - frame[0]) * scale, (a[:, 1] - frame[2]) * scale])
+
+    region = fitting.crowded_region(to_pt(anchors, box, s), to_pt(obstacles, box, s), side)
+    within = [False] * len(order)
+    if region is not None:
+        within = [region[0] <= x <= region[2] and region[1] <= y <= region[3]
+                  for x, y in to_pt(anchors, box, s)]
+
+    def placed(frame: Box, scale: float, keep: list[bool], optional: list[bool],
+               height: float, avoid: tuple[Label, ...] = ()) -> tuple[Label, ...]:
+        idx = [i for i, k in enumerate(keep) if k]
+        # groups closer than a marker are one place to the eye: one label names them all
+        near = layout.group_points([(str(i), (anchors[i][0] * scale, anchors[i][1] * scale))
+                                    for i in idx], labelling.MARKER_PT)
+        joined = {int(g[0]): [int(j) for j in g] for g, _ in near}
+        idx = [i for i in idx if i in joined]
+        names_of = {i: tuple(n for j in joined[i] for n in order[j][0]) for i in idx}
+        group_of = {i: tuple(k for k, j in enumerate(joined[i]) for _ in order[j][0])
+                    for i in idx}
+        text_of = {i: "$" + ", ".join(" = ".join(label_tex(n) for n in order[j][0])
+                                      for j in joined[i]) + "$" for i in idx}
+        fits = fitting.fit(to_pt([anchors[i] for i in idx], frame, scale),
+                           [text_of[i] for i in idx],
+                           curves=[to_pt(c, frame, scale) for c in curves],
+                           frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
+                           obstacles=to_pt(obstacles, frame, scale),
+                           optional=[optional[i] for i in idx],
+                           avoid=[((b[0] - frame[0]) * scale, (b[1] - frame[2]) * scale,
+                                   (b[2] - frame[0]) * scale, (b[3] - frame[2]) * scale)
+                                  for b in (lab.box for lab in avoid)])
+        out = []
+        for i, p in zip(idx, fits):
+            if p is None:
+                continue
+            xy, (x0, y0, x1, y1) = order[i][1], p.box
+            out.append(Label(names_of[i],
+                             (xy[0] + p.offset[0] / scale, xy[1] + p.offset[1] / scale),
+                             p.direction, (frame[0] + x0 / scale, frame[2] + y0 / scale,
+                                           frame[0] + x1 / scale, frame[2] + y1 / scale),
+                             p.offset, xy, p.leader, group_of[i]))
+        return tuple(out)
+
+    every = [True] * len(order)
+    beside = placed(box, s, every, within, (box[3] - box[2]) * s)
+    if region is None:
+        return beside, None
+    # the labels left to the inset, set where they break the fewest rules, for the
+    # painters without the inset
+    done = {lab.names[0] for lab in beside}
+    rest = [not (within[i] and order[i][0][0] not in done) for i in range(len(order))]
+    rest = [not r for r in rest]
+    more = placed(box, s, rest, [False] * len(order), (box[3] - box[2]) * s, avoid=beside)
+    main = tuple(sorted(beside + more,
+                        key=lambda lab: labelling.label_order(lab.names)))
+    sub = (box[0] + region[0] / s, box[0] + region[2] / s,
+           box[2] + region[1] / s, box[2] + region[3] / s)
+    z = INSET_PT / (sub[1] - sub[0])
+    inside = [sub[0] <= x <= sub[1] and sub[2] <= y <= sub[3] for x, y in anchors]
+    return main, Inset(sub, placed(sub, z, inside, [False] * len(order), INSET_PT), beside)
 
 
 def exact_text(obj: Any) -> str:
