@@ -87,8 +87,8 @@ def measure(page, svg: str):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 23 open: the rule 'nearer its own point than "
-                   "any other' still fails for crowded points (338 faults over these 24 "
-                   "pictures at commit 3f73889, mostly the label of O among the break points)")
+                   "any other' still fails for crowded points (145 faults over these 24 "
+                   "pictures, mostly labels of points near O among the break points)")
 def test_svg_labels_name_their_points_in_chromium() -> None:
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
     grasps += random_grasps(20)

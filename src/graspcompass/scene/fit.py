@@ -35,7 +35,7 @@ __all__ = ["CROWD", "FITS", "MARGIN", "Fit", "crowded_region", "fit", "leader"]
 FITS = (1.0, 2.0, 3.0, 4.5, 6.5, 9.0)
 #: The crowd rule of :func:`crowded_region`: a point is crowded when ``count`` other
 #: markers lie within ``radius`` of the frame's side from it.
-CROWD: dict[str, float] = {"radius": 0.075, "count": 3, "pad": 0.3, "largest": 0.45}
+CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.45}
 #: Safety margins (points) of the rules: a label's box is grown by ``grow`` on each side
 #: (and its width by the factor ``wide``) against the others and the markers; a label must
 #: be nearer its own point than any other by ``nearer``.
@@ -160,7 +160,7 @@ def crowded_region(anchors: Sequence[tuple[float, float]], markers: Sequence[tup
     Examples
     --------
     >>> crowded_region([(0, 0), (5, 0), (0, 5), (5, 5)], [], 400.0)
-    (-27.5, -27.5, 32.5, 32.5)
+    (-8.0, -8.0, 13.0, 13.0)
     >>> crowded_region([(0, 0), (300, 0)], [], 400.0) is None
     True
     """
