@@ -423,7 +423,7 @@ def test_fuzz_parser_only_refuses_with_its_error(lines):
 
 # -- the command line module ------------------------------------------------------------------
 def _args(*argv):
-    from graspcompass import _cli_recipe
+    from graspcompass.cli import _recipe as _cli_recipe
 
     parser = argparse.ArgumentParser(prog="graspcompass")
     sub = parser.add_subparsers(dest="command")

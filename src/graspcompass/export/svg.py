@@ -12,11 +12,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape, quoteattr
 
 from ..scene.labelling import FONT_PT, FRAME_PT
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["to_svg", "write_svg"]
 
@@ -175,7 +178,8 @@ def _points(scene: Scene, m: _Map, labels: tuple[Label, ...], tip: Callable[[str
     return out
 
 
-def to_svg(construction: Any, title: str | None = None, step: int | None = None) -> str:
+def to_svg(construction: Construction, title: str | None = None,
+           step: int | None = None) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
 
     ``step`` draws the picture after that step of the protocol
@@ -246,7 +250,7 @@ def to_svg(construction: Any, title: str | None = None, step: int | None = None)
     return "\n".join(out) + "\n"
 
 
-def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
+def write_svg(construction: Construction, path: Any, title: str | None = None) -> Any:
     """Write :func:`to_svg` to ``path`` (UTF-8); returns the path.
 
     Raises
@@ -255,6 +259,6 @@ def write_svg(construction: Any, path: Any, title: str | None = None) -> Any:
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_svg(construction, title))

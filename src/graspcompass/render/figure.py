@@ -23,7 +23,7 @@ from matplotlib.patches import Polygon, Rectangle
 
 from ..scene import labelling
 from ..scene.layout import clip_line, clip_segment, numeric_objects, shape_extent
-from ..scene.picture import INSET_PT, Scene, scene_of
+from ..scene.picture import INSET_PT, Scene, build_scene, scene_of
 from .output import FORMATS, save_figure
 from .polar import draw_k_polar, figure_k_plot
 from .theme import DEFAULT_THEME, Theme
@@ -89,7 +89,7 @@ def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme
     role = getattr(step, "role", "")
     if role == "axis":
         kw: dict[str, Any] = dict(color=theme.axis_color, lw=theme.line_width * 0.8, zorder=2)
-    elif step.op == "perpendicular":
+    elif step.op == "perpendicular" or role in ("transfer", "cost_line"):
         kw = dict(color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2)), zorder=2.5)
     else:
         kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
@@ -132,7 +132,10 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
 def draw_construction(construction: Any, step: int | None = None, ax: Axes | None = None,
                       theme: Theme = DEFAULT_THEME, labels: bool = True,
                       show_computer_plot: bool = False,
-                      highlight_last: bool = False, view: str = "whole"
+                      highlight_last: bool = False,
+                      num: dict[str, Any] | None = None,
+                      box: tuple[float, float, float, float] | None = None,
+                      view: str = "whole"
                       ) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
@@ -155,6 +158,13 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         Also draw the numeric polar plot of k_grasp (Fig. 6(b), eq. (25)).
     highlight_last : bool
         Draw the object of the last step drawn in ``theme.highlight_color``.
+    num : dict, optional
+        ``layout.numeric_objects(construction)`` when the caller has it already (a
+        worksheet draws the same construction on two pages): computed once, passed on.
+    box : tuple of float, optional
+        ``(xmin, xmax, ymin, ymax)`` to draw instead of the one view box of every picture
+        (an enlargement of a crowded region): lines are clipped to it and the labels placed
+        in it.
     view : {"whole", "beside", "inset"}
         ``"whole"`` labels every point in the whole view; ``"beside"`` leaves the
         labels of the crowded points to the zoomed inset drawn beside it
@@ -181,9 +191,11 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
     state = construction if step is None else construction.upto(step)
     if ax is None:
         ax = Figure(figsize=(7, 7)).add_subplot()
-    num_all = numeric_objects(construction)
+    num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
-    scene = scene_of(construction).upto(step)
+    # an enlargement of a region (box given): its own scene, labelled in it
+    scene = (scene_of(construction) if box is None else
+             build_scene(construction, box=box)).upto(step)
     box = scene.box
     span = box[1] - box[0]
     shown = scene.labels
