@@ -39,7 +39,7 @@ from matplotlib.figure import Figure
 from PIL import Image
 
 from graspcompass import Grasp, internal_force_diagram
-from graspcompass._cli_animate import main_animation
+from graspcompass.cli._animate import main_animation
 from graspcompass.render import draw_construction
 from graspcompass.render.animate import animate_construction
 

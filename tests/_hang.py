@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from contextlib import AbstractContextManager
 
-from graspcompass._deadline import deadline
+from graspcompass.boundary._deadline import deadline
 
 
 def no_hang(what: str, seconds: float) -> AbstractContextManager[None]:

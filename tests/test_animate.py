@@ -23,8 +23,8 @@ from matplotlib.figure import Figure
 from PIL import Image
 
 from graspcompass import Grasp, internal_force_diagram
-from graspcompass._cli_animate import MAIN_ANIMATION, register, run, write_main_animation
 from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args
+from graspcompass.cli._animate import MAIN_ANIMATION, register, run, write_main_animation
 from graspcompass.render import draw_construction
 from graspcompass.render.anim_physics import (
     SLIP,

@@ -17,8 +17,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from graspcompass import Grasp, batch
-from graspcompass.batch import _envelope
 from graspcompass.errors import InputError, NonFiniteValueError
+from graspcompass.grasp import _envelope
 from graspcompass.sizing import worst_squeeze_many
 
 U = 2.0**-53

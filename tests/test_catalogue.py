@@ -202,7 +202,8 @@ def test_reports_show_hypotheses_conditions_and_certificates(reports):
     assert "condition (1)" in by["eq8-divisor-sign"]["hypotheses"]
     assert "μ_i = tan ξ_i (22)" in by["eq8-divisor-sign"]["hypotheses"]
     md, table = to_markdown(reports), to_table(reports)
-    assert "extra: cos(phi1) != 0" in md and "hypotheses" in table
+    # the Markdown writes the condition as MathJax math (issue 23), the table as text
+    assert "extra: $\\cos{\\left(\\phi_{1} \\right)} \\ne 0$" in md and "hypotheses" in table
     assert all(f"`{c.id}`" in md for c in CLAIMS)
 
 

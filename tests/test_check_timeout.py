@@ -138,7 +138,7 @@ def test_budget_refuses_a_negative_timeout() -> None:
 
 
 def test_nested_deadlines_keep_the_outer_bound() -> None:
-    from graspcompass._deadline import deadline
+    from graspcompass.boundary._deadline import deadline
 
     class Outer(BaseException):
         pass

@@ -21,9 +21,10 @@ from hypothesis import strategies as st
 
 import graspcompass
 from _hang import no_hang
-from graspcompass import _cli_k, cli
-from graspcompass._cli_animate import bounded
+from graspcompass import cli
+from graspcompass.cli import _k as _cli_k
 from graspcompass.cli import main
+from graspcompass.cli._animate import bounded
 
 SRC = str(Path(graspcompass.__file__).resolve().parents[1])
 MILLION = "0:360:0.00036deg"  # 10^6 angles, the documented maximum of parse_angles
@@ -371,7 +372,7 @@ def test_float_path_reads_ranges_like_the_parser(start, stop, step, unit, single
 
 
 def test_writing_removes_a_half_written_file_only(tmp_path):
-    from graspcompass._output import writing
+    from graspcompass.boundary._output import writing
     from graspcompass.errors import OutputError
 
     new, old = tmp_path / "new.gif", tmp_path / "old.gif"

@@ -18,7 +18,8 @@ from types import SimpleNamespace
 import pytest
 
 import graspcompass
-from graspcompass import _output, cli
+from graspcompass import cli
+from graspcompass.boundary import _output
 from graspcompass.errors import OutputError
 
 HEAVY = ("sympy", "numpy", "mpmath", "matplotlib", "scipy", "shapely")

@@ -24,8 +24,8 @@ from hypothesis import HealthCheck, given, settings
 
 from conftest import PRESET_NAMES, closed_form_SC, exact_params, float_params
 from graspcompass import Grasp, internal_force_diagram, parse_exact
-from graspcompass._cli_export import register, run_explore, run_export
 from graspcompass.cli import _add_grasp_options
+from graspcompass.cli._export import register, run_explore, run_export
 from graspcompass.construction import diagram_specs, replay
 from graspcompass.export import FORMATS, SCHEMA, dumps, export, guess_format, loads
 from graspcompass.export.geogebra import ggb_xml, read_ggb_xml, to_ggb
@@ -41,7 +41,11 @@ CONSTRUCTION_TAGS = {"command", "element", "expression", "cascell"}
 COMMAND_TAGS = {"input", "output", "outputSizes", "casMap"}
 ELEMENT_TAGS = {"show", "objColor", "labelMode", "lineStyle", "pointSize", "coords", "caption",
                 "breakpoint", "value", "slider", "animation", "layer", "fixed", "auxiliary",
-                "labelOffset"}
+                "labelOffset", "angleStyle"}
+#: Objects the .ggb adds to the protocol's steps: the friction cones and the compass
+#: transfers of V_n (issue 23).
+EXTRAS = {"cone1", "cone2", *(f"{k}V{n}{a}" for n in (1, 2, 3, 4) for k in ("", "arc")
+                              for a in "xy")}
 ROOT_TAGS = {"gui", "euclidianView", "kernel", "construction", "algebraView", "scripting"}
 
 
@@ -91,9 +95,14 @@ def test_ggb_every_object_is_defined_by_a_command_in_protocol_order(fig6):
     free = [p for p in proto if p[1] == "free"]
     # the only free objects are the seven number sliders, first
     assert [p[0] for p in free] == SLIDERS == [p[0] for p in proto[:7]]
-    for _, _, kind, _, el in free:
-        assert kind == "numeric" and el.find("slider") is not None
-    defined = proto[7:]
+    for label, _, kind, _, el in free:  # φ in degrees: angle sliders; none over the drawing
+        assert kind == ("angle" if label.startswith("φ") else "numeric")
+        assert el.find("slider") is not None and el.find("show").attrib["object"] == "false"
+    assert root.find("kernel/angleUnit").attrib["val"] == "degree"
+    assert root.find("gui/consProtNavigationBar").attrib["playButton"] == "true"
+    extras = [p for p in proto[7:] if p[0] in EXTRAS]
+    assert {p[0] for p in extras} == EXTRAS
+    defined = [p for p in proto[7:] if p[0] not in EXTRAS]
     assert [p[0] for p in defined] == [LABEL.get(n, n) for n in fig6.names]
     captions = [p[4].find("caption").attrib["val"] for p in defined]
     assert captions == [s.caption for s in fig6.steps]
@@ -102,8 +111,9 @@ def test_ggb_every_object_is_defined_by_a_command_in_protocol_order(fig6):
     # no object is a fixed coordinate pair, and each uses only earlier objects
     known = set(SLIDERS) | {"xAxis", "yAxis"}
     words = re.compile(r"[^\W\d]\w*")
-    builtins = {"sin", "cos", "abs", "x", "y", "t", "pi", "Midpoint", "Line", "Center"}
-    for label, how, what, args, _ in defined:
+    builtins = {"sin", "cos", "abs", "x", "y", "t", "pi", "Midpoint", "Line", "Center",
+                "Translate", "Vector", "OrthogonalLine", "Distance", "UnitVector"}
+    for label, how, what, args, _ in proto[7:]:
         text = " ".join(args) if how == "command" else what
         assert not re.fullmatch(r"\(\s*-?[\d.]+\s*,\s*-?[\d.]+\s*\)", text)
         assert set(words.findall(text)) - builtins <= known, (label, text)
@@ -124,9 +134,20 @@ def test_ggb_commands_follow_the_paper_recipe(fig6):
         assert d[f"Y{n}"][2:4] == ("Intersect", (f"perp{n}", "axisY"))
         assert d[f"OMX{n}"][2] == f"x(X{n}) - x(O_M)"
         assert d[f"OY{n}"][2] == f"y(Y{n}) - y(O)"
-        assert d[f"V{n}"][2] == f"(-1 * OMX{n}, -1 * OY{n})"  # V_n = (−O_M X_n, −O Y_n)
+        # V_n = (−O_M X_n, −O Y_n) by compass: O_M X_n carried to O and reversed, Y_n
+        # mirrored in O, each on its circle about O; V_n where the perpendiculars meet
+        assert d[f"V{n}x"][2:4] == ("Mirror", (f"Translate[X{n}, Vector[O_M, O]]", "O"))
+        assert d[f"V{n}y"][2:4] == ("Mirror", (f"Y{n}", "O"))
+        assert d[f"arcV{n}x"][2:4] == ("Circle", ("O", f"V{n}x"))
+        assert d[f"V{n}"][2:4] == ("Intersect", (f"OrthogonalLine[V{n}x, axisX]",
+                                                 f"OrthogonalLine[V{n}y, axisY]"))
         assert d[f"circle{n}"][2:4] == ("Circle", (f"Midpoint[O, V{n}]", "O"))
     assert d["B12"][2:4] == ("Mirror", ("O", "Line[Center[circle1], Center[circle2]]"))
+    for i, sides in ((1, (1, 3)), (2, (2, 4))):  # each cone once its sides exist (Fig. 2)
+        cmd, (arg,) = d[f"cone{i}"][2:4]
+        assert cmd == "Polygon" and arg.startswith(f"{{P{i}, P{i} + 0.6 Distance[P1, P2]")
+        order = list(d)
+        assert order.index(f"cone{i}") > max(order.index(f"side{n}") for n in sides)
     assert d["kGrasp"][2] == "CurveCartesian"
 
 
@@ -179,8 +200,8 @@ def test_real_geogebra_recomputes_the_construction_from_moved_sliders(fig6, tmp_
     new = {"x_1": 1.1, "x_2": 0.7, "y_P": 0.4, "φ_1": 1.2, "φ_2": 1.4, "μ_1": 0.9, "μ_2": 1.1}
     xml = read_ggb_xml(to_ggb(fig6))
     for label, v in new.items():
-        xml, count = re.subn(rf'(<element type="numeric" label="{label}">\s*<caption[^>]*/>\s*'
-                             r'<value val=")[^"]*"', rf'\g<1>{v!r}"', xml)
+        xml, count = re.subn(rf'(<element type="(?:numeric|angle)" label="{label}">\s*'
+                             r'<caption[^>]*/>\s*<value val=")[^"]*"', rf'\g<1>{v!r}"', xml)
         assert count == 1
     src = tmp_path / "moved.ggb"
     with zipfile.ZipFile(src, "w") as z:
@@ -229,6 +250,46 @@ def test_tikz_of_the_presets_compiles_with_pdflatex(preset, tmp_path):
     tex = tmp_path / f"{preset}.tex"
     export(internal_force_diagram(Grasp.preset(preset)), tex)
     _pdflatex(tex)
+
+
+@NEEDS_TEX
+@pytest.mark.parametrize("title", [None, "Mine: 100% {x_1} & $#~^\\ φ = π/3, √3 ≈ 1.7 ✓"])
+def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tmp_path):
+    """A page cut to the picture (not Letter or A4), its title (escaped: any text) above and
+    a legend of the styles below, compiled without an overfull box (issue 23)."""
+    own = internal_force_diagram(Grasp(x1="6/5", x2="3/10", y="2/5", phi1="61*pi/180",
+                                       phi2="118*pi/180", xi1="67*pi/180", xi2="49*pi/180"))
+    tex = tmp_path / "own.tex"
+    tex.write_text(to_tikz(own, title=title), encoding="utf-8")
+    pdf = _pdflatex(tex)
+    log = tex.with_suffix(".log").read_text("latin-1")
+    # again with the PDF objects uncompressed, to read the page's MediaBox from the bytes
+    r = subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error",
+                        "-jobname=plain", "\\pdfobjcompresslevel=0\\input{own.tex}"],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout[-2000:]
+    assert "Overfull" not in log and "mktexpk" not in log  # no bitmap font either
+    boxes = re.findall(rb"/MediaBox\s*\[\s*([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)",
+                       (tmp_path / "plain.pdf").read_bytes())
+    assert len(boxes) == 1
+    w, h = float(boxes[0][2]) - float(boxes[0][0]), float(boxes[0][3]) - float(boxes[0][1])
+    # 11 cm of picture + 0.4 cm + a 4 pt border each side; taller for the title and legend
+    assert w == pytest.approx(11.4 / 2.54 * 72 + 8, abs=2.0)
+    assert w + 1 < h < 792 and (w, h) != (612, 792)
+    text = tex.read_text("utf-8")
+    head = re.search(r"\{\\large\\bfseries (.*)\\par\}", text).group(1)
+    if title is None:  # a grasp of one's own gets its values as title
+        assert head.startswith("A two-point grasp: x1 = 6/5")
+    else:
+        assert r"100\% \{x\_{}1\} \& \$\#\~{}\^{}\textbackslash{}" in head
+        assert r"$\varphi$ = $\pi$/3, $\sqrt{3}$ $\approx$ 1.7 ?" in head
+    for entry in ("perpendicular to a side", "signed length", "break point", "envelope",
+                  "friction cone"):
+        assert entry in text
+    if shutil.which("pdftoppm"):  # the page as a picture: something is drawn on it
+        subprocess.run(["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path,
+                       check=True, timeout=60)
+        assert list(tmp_path.glob("page*.png"))
 
 
 @NEEDS_TEX

@@ -107,7 +107,7 @@ def test_animate_and_explore_of_the_paper_file_get_todays_construction(
         raise ValueError("stop here")
 
     monkeypatch.setattr(animate, "animate_construction", fake_animate)
-    monkeypatch.setattr(explorer, "explore", lambda g: seen.append(g))
+    monkeypatch.setattr(explorer, "explore", lambda g, **kw: seen.append(g))
     for extra in ((), ("--file", files["paper"])):
         assert run(capsys, "animate", "table1c", *extra, "-o", tmp_path / "x.gif")[0] == 2
     assert seen[0].steps == seen[1].steps == internal_force_diagram(

@@ -72,11 +72,13 @@ cr = circle_radius C (3)
 cs = circle_compass C A B         # radius |AB| = 2
 bs = bisector B A C               # u |v| + v |u| = (4, 4)
 ta = tangent_at c1 B              # the radius (2, 0) turned: (0, 2)
-T = tangent_point D c1 (0)        # polar x = 1, left of the ray A->D: y = +sqrt(3)
+Tp = tangent_point D c1 (0)        # polar x = 1, left of the ray A->D: y = +sqrt(3)
 rt = rotate B A (pi/2)
 ho = homothety B C (1/2)          # C + (B - C)/2
 pr = point_reflect B C            # 2C - B
 ra = radical_axis c1 c3           # x = 1
+Pq = parallel_to_points A B C      # through C along B - A = (2, 0)
+T = quarter_turn B C               # B - C = (2, -2) turned clockwise: (-2, -2), plus C
 """
 EXPECTED = {
     "A": Point(0, 0), "B": Point(2, 0), "C": Point(0, 2),
@@ -89,8 +91,9 @@ EXPECTED = {
     "V": Point(-2, 6), "P1": Point(2, 4), "P2": Point(0, 2),
     "cc": Circle(Point(1, 1), 2), "cr": Circle(Point(0, 2), 9), "cs": Circle(Point(0, 2), 4),
     "bs": Line(Point(0, 0), Point(4, 4)), "ta": Line(Point(2, 0), Point(0, 2)),
-    "T": Point(1, sqrt(3)), "rt": Point(0, 2), "ho": Point(1, 1), "pr": Point(-2, 4),
+    "Tp": Point(1, sqrt(3)), "rt": Point(0, 2), "ho": Point(1, 1), "pr": Point(-2, 4),
     "ra": Line(Point(1, 0), Point(0, 2)),
+    "Pq": Line(Point(0, 2), Point(2, 0)), "T": Point(-2, 0),
 }
 PRESETS = ("fig6", "table1a", "table1b", "table1c")
 
@@ -119,6 +122,7 @@ def test_every_operation_of_the_kernel_has_a_record():
                 "point_from_lengths", "point_on_line", "point_on_circle", "circumcircle",
                 "circle_radius", "circle_compass", "bisector", "tangent_at", "tangent_point",
                 "rotate", "homothety", "point_reflect", "radical_axis"}
+    expected |= {"parallel_to_points", "quarter_turn"}  # issue 25: the n-contact recipe
     assert set(OPERATIONS) == expected
     assert all(OPS[k] is op.function for k, op in OPERATIONS.items())
     for op in OPERATIONS.values():
@@ -442,7 +446,7 @@ def test_fuzz_parser_only_refuses_with_its_error(lines):
 
 # -- the command line module ------------------------------------------------------------------
 def _args(*argv):
-    from graspcompass import _cli_recipe
+    from graspcompass.cli import _recipe as _cli_recipe
 
     parser = argparse.ArgumentParser(prog="graspcompass")
     sub = parser.add_subparsers(dest="command")

@@ -32,8 +32,8 @@ from matplotlib.text import Annotation, Text
 from PIL import Image
 
 from graspcompass import Grasp, internal_force_diagram
-from graspcompass._cli_animate import main_animation, register, run
 from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args, main
+from graspcompass.cli._animate import main_animation, register, run
 from graspcompass.render.anim_physics import animate_sweep
 from graspcompass.render.animate import FrameAnimation, animate_construction
 

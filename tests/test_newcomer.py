@@ -314,7 +314,7 @@ def test_item7_verify_table_fits_the_terminal(columns, monkeypatch, capsys):
 
 
 def test_item7_verify_table_keeps_every_word(monkeypatch, capsys):
-    from graspcompass._cli_verify import table
+    from graspcompass.cli._verify import table
     from graspcompass.proof import run_catalogue, to_table
 
     reports = run_catalogue(quiet=True)

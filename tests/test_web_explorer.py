@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 import random
+import re
 from collections.abc import Iterator
 from importlib import resources
 from pathlib import Path
@@ -183,8 +184,25 @@ def test_start_values_are_the_closed_form(page: Page, fig6: Construction) -> Non
     assert math.isfinite(page.js("graspcompass.lastUpdateMs"))
 
 
+def user_at(page: Page, px: float, py: float) -> tuple[float, float, float]:
+    """The user coordinates under the viewport pixel (px, py) in the view now, and the
+    size of a pixel in user units."""
+    return tuple(page.js("""([px, py]) => { const b = graspcompass.board;
+        const r = b.containerObj.getBoundingClientRect();
+        const c = new JXG.Coords(JXG.COORDS_BY_SCREEN, [px - r.left, py - r.top], b).usrCoords;
+        return [c[1], c[2], 1 / b.unitX]; }""", [px, py]))
+
+
+def in_view(page: Page, name: str) -> bool:
+    x, y = page.get(name)
+    x0, y1, x1, y0 = page.js("graspcompass.board.getBoundingBox()")
+    return x0 <= x <= x1 and y0 <= y <= y1
+
+
 def test_drag_P1_with_the_mouse(page: Page) -> None:
     x0, y0 = page.js("graspcompass.toScreen('P1')")
+    # where the mouse lets go, in the view of the drag (the view refits after it)
+    ux, uy, px = user_at(page, x0 + 70, y0 - 45)
     mouse = page.page.mouse
     mouse.move(x0, y0)
     mouse.down()
@@ -192,14 +210,14 @@ def test_drag_P1_with_the_mouse(page: Page) -> None:
     mouse.up()
     # the page may still apply the last move in a later frame: read P1 once it is still
     # (two frames apart), within 2 s
-    x1, y1 = page.js("graspcompass.toScreen('P1')")
+    x1, y1 = page.get("P1")
     for _ in range(40):
         page.page.wait_for_timeout(50)
-        x2, y2 = page.js("graspcompass.toScreen('P1')")
+        x2, y2 = page.get("P1")
         if (x2, y2) == (x1, y1):
             break
         x1, y1 = x2, y2
-    assert abs(x1 - (x0 + 70)) < 1.5 and abs(y1 - (y0 - 45)) < 1.5  # P1 followed the mouse
+    assert abs(x1 - ux) < 1.5 * px and abs(y1 - uy) < 1.5 * px  # P1 followed the mouse
     p = page.params()
     assert p["x1"] > math.sqrt(3) / 2 + 0.05 and p["y"] > 0.55
     assert page.get("P2") == [-p["x2"], p["y"]]  # P2 keeps the common y
@@ -249,7 +267,9 @@ def test_step_navigator(page: Page, fig6: Construction) -> None:
 
     def expect(i: int) -> None:
         s = steps[i]
-        assert shown() == (f"Step {s.index} / {len(steps) - 1}", s.caption, s.ref)
+        # the caption with its subscripts set as subscripts (k_grasp -> k<sub>grasp</sub>)
+        caption = re.sub(r"([A-Za-z])_\{?([A-Za-z0-9]+)\}?", r"\1\2", s.caption)
+        assert shown() == (f"Step {s.index} / {len(steps) - 1}", caption, s.ref)
         assert page.get("step") == i
 
     expect(len(steps) - 1)
@@ -325,6 +345,15 @@ def python_message(params: dict[str, float]) -> str:
     return str(exc.value)
 
 
+def rounded(message: str) -> str:
+    """Python's message as the page shows it: each exact value "v ≈ r" as r, longer
+    decimals to 4 significant digits, >= and <= as ≥ and ≤."""
+    out = re.sub(r"\S+ ≈ (\S+)", r"\1", message)
+    out = re.sub(r"-?\d+\.\d{5,}(?:e[+-]?\d+)?", lambda m: f"{float(m.group()):.4g}", out,
+                 flags=re.I)
+    return out.replace(">=", "≥").replace("<=", "≤")
+
+
 def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
     assert page.page.is_hidden("#gc-error")
     # condition (1): the cone at P1 no longer contains P2
@@ -333,13 +362,13 @@ def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
     message = python_message(page.params())
     assert "condition (1)" in message
     assert page.page.is_visible("#gc-error")
-    assert page.page.inner_text("#gc-error-text") == message
+    assert page.page.inner_text("#gc-error-text") == rounded(message)
     assert page.js("graspcompass.error()") == message
     assert page.get("V1") is None
     # the other contact, through set()
     page.js("graspcompass.set({phi1: 1.2, mu1: 1.0, phi2: 3.0, mu2: 0.3})")
     message = python_message(page.params())
-    assert "contact 2" in message and page.page.inner_text("#gc-error-text") == message
+    assert "contact 2" in message and page.page.inner_text("#gc-error-text") == rounded(message)
     # back to a valid grasp
     page.js("graspcompass.set({phi2: 1.2, mu2: 1.0})")
     assert page.page.is_hidden("#gc-error") and page.get("V1") is not None
@@ -353,7 +382,7 @@ def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
     page.page.mouse.up()
     p = page.params()
     assert p["x1"] + p["x2"] < 0
-    assert page.page.inner_text("#gc-error-text") == python_message(p)
+    assert page.page.inner_text("#gc-error-text") == rounded(python_message(p))
     assert page.page.inner_text("#gc-error-text").startswith("x1 + x2 = -")
 
 

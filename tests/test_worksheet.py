@@ -21,7 +21,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 from graspcompass import Grasp, cli, internal_force_diagram
-from graspcompass import _cli_worksheet as cw
+from graspcompass.cli import _worksheet as cw
 from graspcompass.render.handdrawing import (
     Worksheet,
     given_names,

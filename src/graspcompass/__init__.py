@@ -23,17 +23,17 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ._lazy import attach
+from ._version import __version__
 
 if TYPE_CHECKING:
+    from .boundary.errors import GraspCompassError, InputError
+    from .boundary.expr import ExpressionError, parse_exact
     from .construction import Construction, Step, internal_force_diagram
-    from .errors import GraspCompassError, InputError
-    from .expr import ExpressionError, parse_exact
     from .geometry import Circle, GeometryError, Line, Point
     from .grasp import FrozenGraspError, Grasp, InvalidGraspError
     from .presets import PRESETS
     from .world import WorldGrasp, WorldGraspError, place_grasp
 
-__version__ = "0.1.0"
 
 __all__ = [
     "PRESETS",

@@ -151,7 +151,8 @@ def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None
                                           else None)
     if op not in OPERATIONS and op != _ENVELOPE:
         chk.step(toks[0][1], op, (), (), None, "", "", (), False, False, number)
-    i, inputs = 3, []
+    i = 3
+    inputs: list[str] = []
     while i < len(toks) and toks[i][0] == "word" and toks[i][1] not in _KEYWORDS and (
             arity is None or len(inputs) < arity):
         slots[("input", len(inputs))] = toks[i][2]

@@ -17,10 +17,10 @@ from typing import TYPE_CHECKING, Any
 import mpmath
 import sympy as sp
 
-from .._floatpath import mpf
-from ..errors import InputError
+from ..boundary.errors import InputError
 from ..geometry.exact import Frac, NotAFraction, canon, decide_sign, has_float
 from ..geometry.trig import sincos
+from ..grasp._floatpath import mpf
 from .program import DOMAINS, Param, Program
 
 if TYPE_CHECKING:
@@ -36,7 +36,7 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
     if grasp is None:
         return {}
     if isinstance(grasp, Mapping):
-        from ..inputs import real_value
+        from ..boundary.inputs import real_value
 
         given = {k: real_value(v, k) for k, v in grasp.items()}
     else:

@@ -38,8 +38,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from .._floatpath import mpf
-from ..errors import GraspCompassError
+from ..boundary.errors import GraspCompassError
 from ..geometry import Point, angle_of
 from ..geometry.exact import (
     Frac,
@@ -50,6 +49,7 @@ from ..geometry.exact import (
     free,
     has_float,
 )
+from ..grasp._floatpath import mpf
 
 __all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
 

@@ -291,5 +291,33 @@ _ALL = (
         "The points of equal power with respect to two circles with distinct centres."),
 )
 
+
+# -- issue 25: the vertex construction for n contacts (docs/ncontact.md) -----------------
+def _quarter_turn(p: Point, centre: Point) -> Point:
+    """``p`` turned a quarter turn clockwise about ``centre``: (x, y) -> (y, -x) about it."""
+    dx, dy = p.x - centre.x, p.y - centre.y
+    return Point.canonical(centre.x + dy, centre.y - dx)
+
+
+def _parallel_to_points(a: Point, b: Point, p: Point) -> Line:
+    """The parallel through ``p`` to the line from ``a`` to ``b`` (same orientation)."""
+    return geo.parallel(geo.line_through(a, b), p)
+
+
+_NCONTACT = (
+    _op("parallel_to_points", _parallel_to_points, "ruler", "point point point", "", "line",
+        "{name}: the parallel to {0}{1} through {2}", "Line[{2}, Vector[{0}, {1}]]", "line",
+        "The parallel through a point to the line through two points (two set squares; "
+        "the vertex recipe's transfer of p_i p_k and p_i O, docs/ncontact.md)."),
+    _op("quarter_turn", _quarter_turn, "compass", "point point", "", "point",
+        "{name}: {0} turned a quarter turn clockwise about {1}", "Rotate[{0}, -90°, {1}]",
+        "point", "A point turned a quarter turn clockwise about a centre (set square and "
+        "compass): the vertex q = J^T R of the n-contact recipe (docs/ncontact.md)."),
+)
+_ALL = _ALL + _NCONTACT
+
 #: Name -> record of every operation of the kernel.
 OPERATIONS: Mapping[str, Operation] = MappingProxyType({op.name: op for op in _ALL})
+
+#: Roles of the n-contact vertex recipe (issue 25), kept apart from the paper's.
+ROLES = (*ROLES, "edge", "cost_point", "cost_line", "transfer", "image")

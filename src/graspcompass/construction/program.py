@@ -29,8 +29,9 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as _model
-from ..errors import InputError
-from ..expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
+from ..boundary.errors import InputError
+from ..boundary.expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
+from ..boundary.inputs import exact_denominators
 from ..geometry import GeometryError
 from .operations import OPERATIONS, ROLES
 
@@ -279,6 +280,10 @@ class _Checker:
                                "declare it with param", slot)
             if text.has(sp.I, sp.zoo, sp.nan, sp.oo, -sp.oo):
                 raise _Problem(f"bad value {text}: not a finite real number", slot)
+            try:  # a number divided by a zero in disguise, as the parser refuses it
+                exact_denominators(text, "value")
+            except InputError as exc:
+                raise _Problem(f"bad value: {exc}", slot) from None
             self.pending += tree_conditions(text)
             return text
         if isinstance(text, bool) or not isinstance(text, (str, int)):

@@ -204,7 +204,7 @@ def replay(specs: Sequence[StepSpec], grasp: Any = None,
     steps = []
     # the caller's parameters and values: read at the boundary (text by the safe parser,
     # numpy arrays and other objects refused by name), never sympify'd
-    from ..inputs import real_value, substitutions
+    from ..boundary.inputs import real_value, substitutions
 
     specs = [replace(spec, params=tuple(
         p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")

@@ -139,9 +139,9 @@ def internal_force_diagram(grasp: Grasp | None = None) -> Construction:
     >>> c.step("X1").ref
     '§3.3 V1 step (1), Fig. 4(a)'
     """
-    from .language import paper_program, replay
+    from .language import paper_steps, replay
 
-    return replay(paper_program(), Grasp.preset("fig6") if grasp is None else grasp)
+    return replay(paper_steps(), Grasp.preset("fig6") if grasp is None else grasp)
 
 
 def _internal_force_diagram_from_specs(grasp: Grasp) -> Construction:

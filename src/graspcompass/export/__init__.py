@@ -26,9 +26,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._lazy import attach
-from .._output import check_target, writing
+from ..boundary._output import check_target, writing
 
 if TYPE_CHECKING:
+    from ..construction import Construction
     from . import json
     from .geogebra import read_ggb_xml, to_ggb, write_ggb
     from .json import SCHEMA, dumps, loads
@@ -80,7 +81,7 @@ def guess_format(path: Any) -> str:
     return _EXTENSIONS[suffix]
 
 
-def export(construction: Any, path: Any, format: str | None = None,
+def export(construction: Construction, path: Any, format: str | None = None,
            title: str | None = None) -> Path:
     """Write ``construction`` to ``path`` as ``format`` (default: from the extension).
 
@@ -116,7 +117,7 @@ def export(construction: Any, path: Any, format: str | None = None,
         return _write(construction, p, fmt, title)
 
 
-def _write(construction: Any, p: Path, fmt: str, title: str | None) -> Path:
+def _write(construction: Construction, p: Path, fmt: str, title: str | None) -> Path:
     from .geogebra import write_ggb
     from .json import dumps
     from .svg import write_svg

@@ -139,6 +139,13 @@ def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition
     if op == "second_intersection":
         c1, c2, known = ins
         return Definition("point", "Mirror", (known, f"Line[Center[{c1}], Center[{c2}]]"))
+    # issue 25: the n-contact vertex recipe (docs/ncontact.md)
+    if op == "parallel":  # GeoGebra's Line[point, line] is the parallel through the point
+        return Definition("line", "Line", (ins[1], ins[0]))
+    if op == "parallel_to_points":
+        return Definition("line", "Line", (ins[2], f"Vector[{ins[0]}, {ins[1]}]"))
+    if op == "quarter_turn":
+        return Definition("point", "Rotate", (ins[0], "-90°", ins[1]))
     if op == "envelope":
         k = _envelope()
         return Definition("curvecartesian", "CurveCartesian",

@@ -17,8 +17,8 @@ import sympy as sp
 from sympy.polys.polyerrors import BasePolynomialError
 
 from .. import symbols
-from ..errors import GraspCompassError, InputError
-from ..expr import parse_exact
+from ..boundary.errors import GraspCompassError, InputError
+from ..boundary.expr import parse_exact
 from ..grasp import Grasp
 from ._json_limits import (
     _MAX_NUMBER_GENERATORS_WITH_SYMBOLS,

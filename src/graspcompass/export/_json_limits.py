@@ -8,7 +8,7 @@ the errors; the errors are shown as ``graspcompass.export.json.*`` (their
 
 from __future__ import annotations
 
-from ..errors import InputError, InputTooLargeError
+from ..boundary.errors import InputError, InputTooLargeError
 
 # documented in graspcompass.export.json, which binds them again with their descriptions
 SCHEMA = "graspcompass.construction/1"

@@ -1,18 +1,24 @@
 """GeoGebra ``.ggb`` of a construction: a live construction on sliders, in protocol order.
 
 A ``.ggb`` file is a zip archive holding ``geogebra.xml``.  The construction
-written here starts with seven free number sliders ``x_1, x_2, y_P, φ_1, φ_2,
-μ_1, μ_2`` (φ in radians, μ = tan ξ), holding the grasp's values; then every
+written here starts with seven free sliders ``x_1, x_2, y_P, φ_1, φ_2, μ_1, μ_2``
+(φ angle sliders shown in degrees, μ = tan ξ), holding the grasp's values and shown in
+the Algebra view, not over the drawing; then every
 step of the protocol, in order, as a GeoGebra command (``Intersect``,
 ``OrthogonalLine``, ``ClosestPoint``, ``Midpoint``, ``Circle``, ``Mirror``,
 ``CurveCartesian``) or a dependent expression (``P1 = (x_1, y_P)``,
 ``OMX1 = x(X1) - x(O_M)``, ``V1 = (-1 * OMX1, -1 * OY1)``), never as fixed
 coordinates.  Moving a slider, or dragging P1 (which moves x_1 and y_P),
-updates the whole construction, the four circles and the envelope
+updates the whole construction, the friction cones (``Polygon`` on the cone sides,
+added once both sides exist), V_n by compass transfer (O_M X_n carried to O and
+reversed, ``Mirror[Translate[X_n, Vector[O_M, O]], O]``, and ``Mirror[Y_n, O]``, each
+on its ``Circle`` about O; V_n where the perpendiculars to the axes there meet), the
+four circles and the envelope
 ``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25)).  Each object carries its
-step's caption (``<caption>``), shown in GeoGebra's construction protocol; the
-key steps (V_n, the circles, the envelope) are breakpoints of the protocol's
-navigation.  Labels are the step names, except ``x-axis`` -> ``axisX``,
+step's caption (``<caption>``), shown in GeoGebra's construction protocol, whose
+navigation bar (play, protocol button) is switched on; the key steps (V_n, the
+circles, the envelope) are breakpoints of the protocol's navigation.  Labels are
+the step names, except ``x-axis`` -> ``axisX``,
 ``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.  The view is the one view box
 of every picture (:func:`graspcompass.layout.view_box`), the colours the one palette
 (:mod:`graspcompass.palette`), and each point's name sits where the one label placement
@@ -32,21 +38,26 @@ import io
 import math
 import zipfile
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import quoteattr
+
+import sympy as sp
 
 from .. import labelling
 from ..geometry import Line, Point
 from ..geometry.numeric import to_float
 from ..palette import rgb
 from . import _ggb_program as _prog
-from ._ggb_defs import SLIDERS, definition, ggb_label
+from ._ggb_defs import _SIDE, SLIDERS, definition, ggb_label
 from ._scene import build_scene, label_tex
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 
 _W, _H = 960, 720  # graphics view, pixels
-_LEFT = 230  # room for the sliders at the left of the view
+_LEFT = 0  # the sliders are in the Algebra view, not over the drawing (issue 23)
 _POINT_SIZE = 4  # of the labelled points (GeoGebra's pointSize, pixels)
 _RGB = {role: rgb(role) for role in ("axis", "side", "perp", "point", "envelope", "circle1",
                                      "circle2", "circle3", "circle4")}
@@ -68,17 +79,22 @@ def _slider_range(param: str, value: float) -> tuple[float, float]:
 
 
 def _sliders(grasp: Any) -> list[str]:
+    """The sliders: shown in the Algebra view only (not over the drawing); φ_1, φ_2 are
+    angle sliders, shown in degrees (GeoGebra keeps an angle's value in radians)."""
     out = []
     for i, (label, param, caption) in enumerate(SLIDERS):
         value = _f(grasp.params[param])
         lo, hi = _slider_range(param, value)
-        out += [f"<element {_a(type='numeric', label=label)}>",
-                f"\t<caption {_a(val=caption)}/>",
+        angle = param.startswith("phi")
+        extra = [f"\t<angleStyle {_a(val=3)}/>"] if angle else []  # any angle, no reflex
+        out += [f"<element {_a(type='angle' if angle else 'numeric', label=label)}>",
+                f"\t<caption {_a(val=caption.replace('(rad)', '(°)'))}/>",
                 f"\t<value {_a(val=repr(value))}/>",
                 f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
                 f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
                 f"{_a(absoluteScreenLocation='true')}/>",
-                f"\t<show {_a(object='true', label='true')}/>",
+                *extra,
+                f"\t<show {_a(object='false', label='true')}/>",
                 f"\t<labelMode {_a(val=1)}/>",
                 f"\t<animation {_a(step='0.01', speed=1, type=0, playing='false')}/>",
                 "</element>"]
@@ -157,11 +173,20 @@ def _label_offsets(scene: Any, frame: tuple[float, float, float]) -> dict[str, t
     return out
 
 
-def _view(construction: Any, scene: Any) -> list[str]:
+def _view(construction: Construction, scene: Any) -> list[str]:
     # the one view box of every picture (layout.view_box, objects chosen by role)
     x0, y0, scale = _frame(scene.box)
     return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
-            f"\t<font {_a(size=_font_px(scene.box, scale))}/>", "</gui>",
+            f"\t<font {_a(size=_font_px(scene.box, scale))}/>",
+            # the construction protocol, with its navigation bar (play, and the protocol
+            # button) under the drawing; the key steps are its breakpoints
+            f"\t<consProtColumns {_a(col0='true', col1='true', col2='false', col3='true')} "
+            f"{_a(col4='true', col5='true', col6='true')}/>",
+            f"\t<consProtocol {_a(useColors='true', addIcons='false')} "
+            f"{_a(showOnlyBreakpoints='false')}/>",
+            f"\t<consProtNavigationBar {_a(id=1, playButton='true', playDelay='2.0')} "
+            f"{_a(protButton='true', consStep='-1')}/>",
+            "</gui>",
             "<euclidianView>", f"\t<size {_a(width=_W, height=_H)}/>",
             f"\t<coordSystem {_a(xZero=repr(x0), yZero=repr(y0))}"
             f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
@@ -170,7 +195,7 @@ def _view(construction: Any, scene: Any) -> list[str]:
             "</euclidianView>"]
 
 
-def ggb_xml(construction: Any, title: str | None = None, program: Any = None,
+def ggb_xml(construction: Construction, title: str | None = None, program: Any = None,
             values: Any = None) -> str:
     """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
 
@@ -197,7 +222,7 @@ def ggb_xml(construction: Any, title: str | None = None, program: Any = None,
            'xmlns="" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
            *_view(construction, scene),
            "<kernel>", f"\t<continuous {_a(val='false')}/>", f"\t<decimals {_a(val=4)}/>",
-           f"\t<angleUnit {_a(val='radiant')}/>", f"\t<coordStyle {_a(val=0)}/>", "</kernel>",
+           f"\t<angleUnit {_a(val='degree')}/>", f"\t<coordStyle {_a(val=0)}/>", "</kernel>",
            f"<construction {_a(title=text, author='graspcompass', date='')}>"]
     if grasp is not None:
         out += _sliders(grasp)
@@ -205,12 +230,17 @@ def ggb_xml(construction: Any, title: str | None = None, program: Any = None,
     if program is not None and values is not None and grasp is None:
         out += _prog.sliders(program, values)
         live = _prog.symbolic_values(program)
+    sides_done: dict[int, int] = {1: 0, 2: 0}
     for s in construction.steps:
         d = definition(s, steps, grasp is not None)
         if s.name in live:
             d = _prog.live(d, s, live[s.name])
         label = ggb_label(s.name)
-        if d.command is None:
+        transfer = _transfer(s, steps) if grasp is not None else None
+        if transfer is not None:  # V_n by compass (Mirror, Circle), not by coordinates
+            out += transfer
+            d = type(d)("point", "Intersect")
+        elif d.command is None:
             out.append(f"<expression {_a(label=label, exp=d.exp)}"
                        + (f" {_a(type='point')}" if d.element == "point" else "") + "/>")
         else:
@@ -224,17 +254,93 @@ def ggb_xml(construction: Any, title: str | None = None, program: Any = None,
         if s.key:
             out.append(f"\t<breakpoint {_a(val='true')}/>")
         out.append("</element>")
+        if grasp is not None and s.role == "cone_side" and s.n and s.n[0] in _SIDE:
+            i = 1 if s.n[0] in (1, 3) else 2
+            sides_done[i] += 1
+            contacts = {t.n[0]: ggb_label(t.name) for t in construction.steps
+                        if t.role == "contact" and t.n}
+            if sides_done[i] == 2 and {1, 2} <= set(contacts):  # once both sides exist
+                out += _cone(i, contacts)
     if program is not None and grasp is None:
         out += _prog.claim_statements(program)
     out += ["</construction>", "</geogebra>"]
     return "\n".join(out) + "\n"
 
 
+def _element(kind: str, label: str, caption: str, style: list[str],
+             command: str | None = None, inputs: tuple[str, ...] = ()) -> list[str]:
+    """One GeoGebra object made by ``command`` (or an expression when None)."""
+    args = _a(**{f"a{i}": v for i, v in enumerate(inputs)})
+    head = ([f"<command {_a(name=command)}>", f"\t<input {args}/>",
+             f"\t<output {_a(a0=label)}/>", "</command>"] if command else [])
+    return [*head, f"<element {_a(type=kind, label=label)}>",
+            *("\t" + x for x in style), f"\t<caption {_a(val=caption)}/>", "</element>"]
+
+
+_FAINT = [f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>",
+          f"<lineStyle {_a(thickness=1, type=10)}/>"]
+
+
+def _transfer(s: Any, steps: dict[str, Any]) -> list[str] | None:
+    """V_n = (−O_M X_n, −O Y_n) (eq. (30)/(33)) built as the compass does it: O_M X_n
+    carried to O (``Translate`` by O_M → O) and reversed (``Mirror`` in O), Y_n mirrored in
+    O, each on its compass circle about O, and V_n where the perpendiculars to the axes
+    there meet.  None when the step is not such a transfer (then its expression stays)."""
+    if s.op != "point_from_lengths" or len(s.inputs) != 2:
+        return None
+    a, b = (steps.get(n) for n in s.inputs)
+    if (a is None or b is None or a.op != "signed_length" or b.op != "signed_length"
+            or tuple(sp.sympify(p) for p in s.params[:2]) != (-1, -1)):
+        return None
+    ax, ay, o = (steps.get(n) for n in (a.inputs[2], b.inputs[2], b.inputs[0]))
+    # the axes and the origin by role and value (roles as data, never names)
+    if (ax is None or ay is None or o is None or ax.role != "axis" or ay.role != "axis"
+            or tuple(map(sp.sympify, ax.params)) != (1, 0)
+            or tuple(map(sp.sympify, ay.params)) != (0, 1)
+            or o.op != "point" or any(sp.sympify(p) != 0 for p in o.params)):
+        return None
+    om, xn, yn = (ggb_label(n) for n in (a.inputs[0], a.inputs[1], b.inputs[1]))
+    org, axis_x, axis_y = (ggb_label(n) for n in (b.inputs[0], a.inputs[2], b.inputs[2]))
+    v = ggb_label(s.name)
+    aux = f"V{s.n[0]}" if s.n else v  # the helpers' labels from the role's n, not the name
+    hidden = [f"<show {_a(object='true', label='false')}/>", f"<pointSize {_a(val=2)}/>",
+              f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>"]
+    return [
+        *_element("point", f"{aux}x", f"{a.name} carried to O with the compass and reversed "
+                  f"(mirror in O): the x-coordinate of {s.name}", hidden, "Mirror",
+                  (f"Translate[{xn}, Vector[{om}, {org}]]", org)),
+        *_element("conic", f"arc{aux}x", f"compass circle about O through {aux}x", _FAINT,
+                  "Circle", (org, f"{aux}x")),
+        *_element("point", f"{aux}y", f"{yn} mirrored in O: the y-coordinate of {s.name}",
+                  hidden, "Mirror", (yn, org)),
+        *_element("conic", f"arc{aux}y", f"compass circle about O through {aux}y", _FAINT,
+                  "Circle", (org, f"{aux}y")),
+        f"<command {_a(name='Intersect')}>",
+        f"\t<input {_a(a0=f'OrthogonalLine[{aux}x, {axis_x}]')} "
+        f"{_a(a1=f'OrthogonalLine[{aux}y, {axis_y}]')}/>",
+        f"\t<output {_a(a0=v)}/>", "</command>"]
+
+
+def _cone(i: int, contacts: dict[int, str]) -> list[str]:
+    """The friction cone at P_i (Fig. 2) as a filled triangle on its two sides, 0.6 |P1P2|
+    long, following the sliders (``contacts``: the labels of P1, P2, found by role)."""
+    p, p1, p2 = contacts[i], contacts[1], contacts[2]
+    ends = [f"{p} + 0.6 Distance[{p1}, {p2}] UnitVector[Vector[{_SIDE[n]}]]"
+            for n in ((1, 3) if i == 1 else (2, 4))]
+    r, g, b = rgb("cone")
+    style = [f"<show {_a(object='true', label='false')}/>",
+             f"<objColor {_a(r=r, g=g, b=b, alpha=0.3)}/>",
+             f"<lineStyle {_a(thickness=0, type=0)}/>"]
+    return _element("polygon", f"cone{i}", f"friction cone at P{i} (given, Fig. 2): sides at "
+                    f"φ{i} ± ξ{i} from −y, {'clockwise' if i == 1 else 'counter-clockwise'}",
+                    style, "Polygon", ("{" + ", ".join([p, *ends]) + "}",))
+
+
 def _has_symbols(v: Any) -> bool:
     return bool(getattr(v, "free_symbols", ()))
 
 
-def to_ggb(construction: Any, title: str | None = None, program: Any = None,
+def to_ggb(construction: Construction, title: str | None = None, program: Any = None,
            values: Any = None) -> bytes:
     """The ``.ggb`` archive (zip bytes) of ``construction``.
 
@@ -253,7 +359,7 @@ def to_ggb(construction: Any, title: str | None = None, program: Any = None,
     return buf.getvalue()
 
 
-def write_ggb(construction: Any, path: Any, title: str | None = None, program: Any = None,
+def write_ggb(construction: Construction, path: Any, title: str | None = None, program: Any = None,
               values: Any = None) -> Path:
     """Write :func:`to_ggb` to ``path``; returns the path.
 
@@ -263,7 +369,7 @@ def write_ggb(construction: Any, path: Any, title: str | None = None, program: A
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_ggb(construction, title, program, values))
 

@@ -9,7 +9,7 @@ pictures and the paper's presets.
 
 In the page everything follows from the closed form of the paper, ported to
 JavaScript from :meth:`graspcompass.Grasp.S`, :meth:`~graspcompass.Grasp.C` and
-:func:`graspcompass._floatpath.closed_form_floats`: tan(φ ± ξ) in the μ form
+:func:`graspcompass.grasp._floatpath.closed_form_floats`: tan(φ ± ξ) in the μ form
 of eq. (23), S_n and C_n of eqs. (28)-(29) and (34)-(39), V_n = (S_n, C_n) of
 eq. (30)/(33), k_n(θ) = S_n sin θ − C_n cos θ of eq. (32), k_grasp of eq. (25)
 and F_int = k / (x1 + x2) · F_e of eq. (17).  The drawing follows §3.3: X_n,
@@ -47,12 +47,16 @@ import re
 import sys
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .. import __version__, labelling
+from .. import labelling
+from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
 from ..palette import PALETTE
+
+if TYPE_CHECKING:
+    from ..construction import Construction
 
 __all__ = ["WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
 
@@ -71,7 +75,7 @@ def web_file(name: str) -> str:
     """The text of one of :data:`WEB_FILES`, read from the installed package."""
     if name not in WEB_FILES:
         raise ValueError(f"unknown web file {name!r}; one of {', '.join(WEB_FILES)}")
-    return resources.files("graspcompass.export").joinpath("_web", name).read_text("utf-8")
+    return resources.files("graspcompass.export").joinpath("_web").joinpath(name).read_text("utf-8")
 
 
 def _float(v: Any, name: str) -> float:
@@ -92,7 +96,7 @@ def _params(grasp: Grasp) -> dict[str, float]:
     return {k: _float(p[k], k) for k in _PARAMS}
 
 
-def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
+def page_data(construction: Construction, title: str | None = None) -> dict[str, Any]:
     """The JSON data the page starts from.
 
     Parameters
@@ -110,7 +114,8 @@ def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
         ``steps`` (index, name, caption, ref, instrument, key of each step),
         ``initial_step``, ``shape``, ``colors`` (:data:`graspcompass.palette.PALETTE`),
         ``presets``, ``title``, ``version``, ``labelling`` (the constants of the one label
-        placement, :func:`graspcompass.labelling.spec`, read by the page's port of it).
+        placement, :func:`graspcompass.labelling.spec`, read by the page's port of it),
+        ``untitled`` (no title given: the heading shows the grasp's values).
 
     Raises
     ------
@@ -134,6 +139,8 @@ def page_data(construction: Any, title: str | None = None) -> dict[str, Any]:
         version=__version__, params=params, steps=steps, initial_step=len(steps) - 1,
         shape=_shape(grasp.shape), colors=dict(PALETTE), presets=presets,
         labelling=labelling.spec(),
+        # no title of its own: the page's heading gives the grasp's values instead
+        untitled=title is None and not grasp.title,
     )
 
 
@@ -147,7 +154,7 @@ def _html_escape(text: str) -> str:
             .replace('"', "&quot;"))
 
 
-def to_html(construction: Any, title: str | None = None) -> str:
+def to_html(construction: Construction, title: str | None = None) -> str:
     """The self-contained explorer page of ``construction`` (one HTML document).
 
     The closed form (27)-(39), the envelope (25) and F_int (17) are computed in
@@ -175,7 +182,7 @@ def to_html(construction: Any, title: str | None = None) -> str:
     return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], web_file("explorer.html"))
 
 
-def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
+def write_html(construction: Construction, path: Any, title: str | None = None) -> Path:
     """Write the interactive web explorer of ``construction`` to ``path``.
 
     One HTML file that works offline (``file://``) and in any browser: sliders
@@ -206,7 +213,7 @@ def write_html(construction: Any, path: Any, title: str | None = None) -> Path:
         If ``path`` cannot be written (a missing folder, no permission), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_html(construction, title))
 

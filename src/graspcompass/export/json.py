@@ -109,9 +109,9 @@ from typing import Any
 
 from sympy.polys.polyerrors import BasePolynomialError
 
-from .. import __version__
+from .._version import __version__
+from ..boundary.errors import GraspCompassError
 from ..construction.protocol import Construction
-from ..errors import GraspCompassError
 from . import _json_limits as _limits
 from . import _json_schema as _schema
 from ._json_grasp import (

@@ -1,9 +1,13 @@
 """Plain TikZ/pgf of a construction: a standalone document or a ``tikzpicture``.
 
-Only ``tikz`` (with the ``xcolor`` it loads) is needed: no TikZ library and no
-``standalone`` class, so the document compiles with Debian's
-``texlive-latex-base`` and ``texlive-pictures``.  Every step of the protocol is
-one commented block: its index, name, kernel operation, instrument, the
+Only ``tikz`` (with the ``xcolor`` it loads) is needed: no TikZ library, and the
+document is standalone without the ``standalone`` class (which Debian ships in
+``texlive-latex-extra``): the title, the picture and its legend are set in one box
+and shipped out on a page cut to that box with a 4 pt border, as the class does, so
+the document compiles with Debian's ``texlive-latex-base`` and ``texlive-pictures``,
+with no overfull box and no Letter or A4 page round it.  The labels have a white
+background, so that the envelope and the lines do not run through them.  Every
+step of the protocol is one commented block: its index, name, kernel operation, instrument, the
 paper's reference, its caption, the exact value (sympy text) and then the
 TikZ code with the value as a decimal with 12 significant digits.  The points
 are ``\\coordinate``\\ s named after the steps (``O_M`` -> ``OM``); points
@@ -14,11 +18,14 @@ one path of exact circular arcs (``arc[start angle, delta angle, radius]``).
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
+from ..scene.picture import COLORS, Scene, exact_text, scene_of
 
-__all__ = ["to_tikz", "write_tikz"]
+if TYPE_CHECKING:
+    from ..construction import Construction
+
+__all__ = ["tex_text", "to_tikz", "write_tikz"]
 
 _WIDTH_CM = 11.0
 #: TikZ anchor of a label on the side ``(dx, dy)`` of its point (:attr:`Scene.labels`).
@@ -47,6 +54,80 @@ def _comment(text: str) -> str:
     return "% " + " ".join(str(text).split())
 
 
+#: TeX of the non-ASCII characters of the grasps' titles; any other one prints as "?".
+_TEX_CHARS = {"φ": r"$\varphi$", "ϕ": r"$\varphi$", "ξ": r"$\xi$", "μ": r"$\mu$",
+              "π": r"$\pi$", "θ": r"$\theta$", "≈": r"$\approx$", "≤": r"$\le$",
+              "≥": r"$\ge$", "−": "-", "–": "--", "—": "---", "×": r"$\times$",
+              "°": r"$^\circ$", "·": r"$\cdot$", "₁": r"$_1$", "₂": r"$_2$"}
+_TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
+                "#": r"\#", "^": r"\^{}", "_": r"\_{}", "%": r"\%", "~": r"\~{}"}
+
+
+def tex_text(text: str) -> str:
+    """Any text as TeX that pdflatex typesets: its specials escaped, the paper's symbols
+    (φ, ξ, μ, π, √3, ...) in math, other non-ASCII characters as "?".
+
+    Examples
+    --------
+    >>> print(tex_text("P1 = (√3/2, 1/2), φ = π/3 & 50%"))
+    P1 = ($\\sqrt{3}$/2, 1/2), $\\varphi$ = $\\pi$/3 \\& 50\\%
+    """
+    out = []
+    i = 0
+    while i < len(text):
+        ch = text[i]
+        if ch == "√":
+            j = i + 1
+            while j < len(text) and (text[j].isascii() and text[j].isalnum()):
+                j += 1
+            out.append(f"$\\sqrt{{{text[i + 1:j]}}}$" if j > i + 1 else r"$\surd$")
+            i = j
+            continue
+        if ch in _TEX_SPECIAL:
+            out.append(_TEX_SPECIAL[ch])
+        elif ch.isascii() and ch.isprintable():
+            out.append(ch)
+        elif ch.isspace():
+            out.append(" ")
+        else:
+            out.append(_TEX_CHARS.get(ch, "?"))
+        i += 1
+    return "".join(out)
+
+
+#: The legend below a standalone picture: a sample of each style and what it draws.
+_LEGEND = (
+    (r"\draw[side] (0,0) -- (0.6,0);", "cone side, extended"),
+    (r"\fill[cone] (0,-0.1) rectangle (0.6,0.1);", "friction cone"),
+    (r"\draw[perp] (0,0) -- (0.6,0);", "perpendicular to a side"),
+    (r"\draw[length] (0,0) -- (0.6,0);", r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$"),
+    (r"\draw[thales, draw=gccircle1] (0,0) -- (0.6,0);",
+     r"circle on $OV_n$: $k_n(\theta)$, eq. (31)"),
+    (r"\draw[envelope, fill=none] (0,0) -- (0.6,0);", r"envelope $k_{grasp}(\theta)$, eq. (25)"),
+    (r"\node[dot] at (0.3,0) {};", "point of the construction"),
+    (r"\node[dot, fill=white, draw=gcpoint, minimum size=2.5pt] at (0.3,0) {};",
+     r"break point $B_{nm}$"),
+)
+
+
+def _title(scene: Scene, construction: Any) -> str:
+    """The scene's title, or for a grasp without one its parameters (a grasp of one's own)."""
+    if scene.title:
+        return scene.title
+    grasp = construction.grasp
+    if grasp is None:
+        return "The internal force diagram"
+    vals = ", ".join(f"{k} = " + str(v).replace("sqrt", "√").replace("pi", "π").replace("*", "")
+                     for k, v in grasp.params.items() if not k.startswith("mu"))
+    return "A two-point grasp: " + vals.replace("phi", "φ").replace("xi", "ξ")
+
+
+def _legend() -> str:
+    items = [f"\\mbox{{\\tikz[baseline=-0.6ex, x=1cm, y=1cm]{{{code}}}~{text}}}"
+             for code, text in _LEGEND]
+    return "{\\small " + "\\hskip 1em plus 0.5em\n".join(items) + "\\par}"
+
+
 def _styles(scene: Scene) -> list[str]:
     colors = [f"\\definecolor{{gc{k}}}{{HTML}}{{{v.lstrip('#').upper()}}}"
               for k, v in COLORS.items()]
@@ -65,8 +146,19 @@ def _styles(scene: Scene) -> list[str]:
         "  object/.style={draw=gcobject, fill=gcobjectfill, line width=0.6pt},",
         "  dot/.style={circle, fill=gcpoint, inner sep=0pt, minimum size=3pt},",
         # 8 pt in 11 cm: the ratio font / width of the placement (10 pt in 388 pt)
-        "  label/.style={inner sep=0pt, font=\\fontsize{8}{9.6}\\selectfont}]",
+        "  label/.style={inner sep=0pt, font=\\fontsize{8}{9.6}\\selectfont,",
+        "    fill=white, fill opacity=0.8, text opacity=1}]",
     ]
+
+
+def _style_defs(scene: Scene) -> list[str]:
+    """The styles as one global ``\\tikzset`` (standalone: the legend's samples use them)."""
+    lines = _styles(scene)
+    opts = lines[len(COLORS):]
+    body = "\n".join(opts).split("line cap=round,", 1)[1].rstrip("]")
+    head = opts[0].split("[", 1)[1].split("line cap=round", 1)[0]
+    return [*lines[:len(COLORS)], "\\tikzset{" + body.strip() + "}",
+            f"\\begin{{tikzpicture}}[{head}line cap=round]"]
 
 
 def _envelope_path(scene: Scene) -> str:
@@ -80,15 +172,16 @@ def _envelope_path(scene: Scene) -> str:
     return "\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"
 
 
-def to_tikz(construction: Any, standalone: bool = True, title: str | None = None) -> str:
+def to_tikz(construction: Construction, standalone: bool = True, title: str | None = None) -> str:
     """TikZ code of ``construction`` (numeric parameters).
 
     Parameters
     ----------
     construction : Construction
     standalone : bool
-        A complete ``article`` document (``\\pagestyle{empty}``) if true, else
-        only the ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
+        A complete document if true: the title, the picture and a legend of its styles
+        on one page cut to their size (no ``standalone`` class needed); else only the
+        ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
     title : str, optional
         Comment line at the top; defaults to the grasp's title.
 
@@ -99,7 +192,7 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
     >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
     True
     """
-    scene = build_scene(construction, title)
+    scene = scene_of(construction, title)
     box = scene.box
     pad = 0.1 * (box[1] - box[0])
     out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
@@ -108,10 +201,23 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
     grasp = construction.grasp
     if grasp is not None:
         out.append(_comment("grasp: " + ", ".join(f"{k} = {v}" for k, v in grasp.params.items())))
+    width = _WIDTH_CM + 0.4
     if standalone:
-        out += ["\\documentclass{article}", "\\usepackage{tikz}", "\\pagestyle{empty}",
-                "\\begin{document}", "\\noindent"]
-    out += _styles(scene)
+        out += ["\\documentclass{article}", "\\usepackage{tikz}",
+                _comment("a standalone page: title, picture and legend in one box, shipped out "
+                         "on a page of its size with a 4 pt border (as the standalone class)"),
+                "\\newsavebox{\\gcpage}", "\\begin{document}"]
+        styles = _style_defs(scene)
+        out += styles[:-1]  # the colours and styles before the box: the legend uses them
+        out += [f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
+                "\\parskip=0pt \\raggedright",
+                f"{{\\large\\bfseries {tex_text(_title(scene, construction))}"
+                "\\par}",
+                "\\smallskip{\\small Internal force diagram (Ito, Tanaka, Sasaki, Robotica 30(5), "
+                "2012), ruler-and-compass construction of Sec.~3.3\\par}\\medskip",
+                "\\hbox to \\hsize{\\hss", styles[-1]]
+    else:
+        out += _styles(scene)
     corners = f"{_xy((box[0], box[2]))} rectangle {_xy((box[1], box[3]))}"
     out += [f"\\path[use as bounding box] {corners};", f"\\clip {corners};"]
     if scene.outline is not None:
@@ -155,18 +261,25 @@ def to_tikz(construction: Any, standalone: bool = True, title: str | None = None
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         if not small:
-            text = " = ".join(label_tex(n) for n in names)
+            text = ""
             lab = scene.label_of(names[0])
+            text = lab.tex() if lab is not None else text
             if lab is not None:
                 out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
                            f"{{${text}$}};")
     out.append("\\end{tikzpicture}")
     if standalone:
-        out.append("\\end{document}")
+        out += ["\\hss}\\medskip", _legend(), "}}",
+                "\\pdfpagewidth=\\wd\\gcpage \\advance\\pdfpagewidth by 8pt",
+                "\\pdfpageheight=\\ht\\gcpage \\advance\\pdfpageheight by \\dp\\gcpage",
+                "\\advance\\pdfpageheight by 8pt",
+                "\\hoffset=-1in \\voffset=-1in",
+                "\\shipout\\vbox{\\vskip 4pt\\moveright 4pt\\box\\gcpage\\vskip 4pt}",
+                "\\end{document}"]
     return "\n".join(out) + "\n"
 
 
-def write_tikz(construction: Any, path: Any, standalone: bool = True,
+def write_tikz(construction: Construction, path: Any, standalone: bool = True,
                title: str | None = None) -> Path:
     """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path.
 
@@ -176,6 +289,6 @@ def write_tikz(construction: Any, path: Any, standalone: bool = True,
         If ``path`` cannot be written (its folder must exist; it is not made), checked
         before any work, or if the write fails (a half-written file is removed).
     """
-    from .._output import write_output
+    from ..boundary._output import write_output
 
     return write_output(path, lambda: to_tikz(construction, standalone, title))

@@ -11,7 +11,9 @@ Private to :mod:`graspcompass.geometry.exact`, which re-exports these names.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from functools import lru_cache
+from typing import Any
 
 import sympy as sp
 
@@ -105,6 +107,11 @@ def _clearly_nonzero(R, poly) -> bool:
 
 _IV_PREC = 200  # bits of the interval evaluation
 
+#: The interval of an exact number, or None: ``_exact_decide._interval``, which sets it
+#: at its import (it reduces by canon, a layer of the kernel above this module; issue 21:
+#: no import cycle).  Unset, an atan's argument is evaluated by sympy like other atoms.
+_ARGUMENT_INTERVAL: Callable[[sp.Expr], Any] | None = None
+
 
 @lru_cache(maxsize=4096)
 def _gen_interval(g: sp.Expr):
@@ -126,9 +133,7 @@ def _gen_interval(g: sp.Expr):
     if g is sp.pi:
         return iv.pi
     if isinstance(g, sp.atan) and not g.args[0].free_symbols:
-        from ._exact_decide import _interval  # above this module: canon's fraction of the argument
-
-        inner = _interval(g.args[0])
+        inner = None if _ARGUMENT_INTERVAL is None else _ARGUMENT_INTERVAL(g.args[0])
         if inner is not None:
             return iv.atan2(inner, 1)
     value = g.evalf(70)  # other atoms: sympy's own error control, widened

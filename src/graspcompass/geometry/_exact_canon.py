@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..expr import parse_exact
+from ..boundary.expr import parse_exact
 from ._exact_convert import _canon_ring
 from ._exact_ring import _MEMO, _SORTED_TERMS
 

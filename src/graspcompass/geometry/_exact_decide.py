@@ -12,6 +12,7 @@ from __future__ import annotations
 import flint
 import sympy as sp
 
+from . import _exact_bounds
 from ._exact_bounds import _IV_PREC, _balls, _clearly_nonzero, _float_sign, _intervals
 from ._exact_canon import canon, free, has_float, sym
 from ._exact_ring import _MEMO, Ring, reduce_poly
@@ -163,6 +164,9 @@ def _interval(expr: sp.Expr):
     R, n, d = hit
     nv, dv = _intervals(R, n, d)
     return nv / dv
+
+
+_exact_bounds._ARGUMENT_INTERVAL = _interval  # an atan's argument (no import cycle)
 
 
 def approx(expr: sp.Expr, dps: int = 30):

@@ -7,7 +7,7 @@ caller can say *which* inputs were degenerate, not only that something was.
 
 from __future__ import annotations
 
-from ..errors import GraspCompassError
+from ..boundary.errors import GraspCompassError
 
 __all__ = [
     "CoincidentPointsError",

@@ -13,8 +13,8 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import InputError, NonFiniteValueError
-from ..inputs import real_value, substitutions
+from ..boundary.errors import InputError, NonFiniteValueError
+from ..boundary.inputs import real_value, substitutions
 from .exact import approx, has_float
 from .exact import free as _has_symbols
 from .primitives import Circle, Line, Point

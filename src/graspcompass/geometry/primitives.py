@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from ..inputs import real_value
+from ..boundary.inputs import real_value
 from .errors import CoincidentPointsError, DegenerateCircleError, ZeroDirectionError
 from .exact import Frac, NotAFraction, canon, decide_sign, decide_zero, sym, text
 

@@ -153,7 +153,7 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     try:
         angle = sp.sympify(angle, strict=True)  # text, lists, arrays refused: never eval
     except sp.SympifyError:
-        from ..errors import WrongTypeError
+        from ..boundary.errors import WrongTypeError
 
         raise WrongTypeError(f"an angle must be a number or a sympy expression, got "
                              f"{type(angle).__name__} {str(angle)[:60]!r} (read text with "

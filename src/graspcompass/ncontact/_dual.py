@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 from ..geometry.exact import approx, canon
-from ._signs import det, sign
+from ._signs import det, exact_sgn, sign
 from .errors import DegenerateGraspError
 
 __all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices",
@@ -121,7 +121,6 @@ class Dets:
         (cofactors: (d-1) × (d-1) minors, polynomials).
         """
         from ._hull import feasible_cone
-        from .polygon import exact_sgn
 
         sD = self.sD(basis)
         ms = []
@@ -313,20 +312,25 @@ def float_vertices(A: np.ndarray, b: np.ndarray) -> list[DualVertex]:
 
 
 def float_rays(A: np.ndarray) -> list[tuple]:
-    """The float path of :func:`exact_rays`."""
+    """The float path of :func:`exact_rays` (vectorised over the (d-1)-subsets of rows)."""
     R, d = A.shape
+    combos = np.array(list(itertools.combinations(range(R), d - 1)), dtype=int)
+    if combos.size == 0:
+        return []
+    sub = A[combos]                                   # (C, d-1, d)
+    if d == 2:
+        r = np.stack([sub[:, 0, 1], -sub[:, 0, 0]], axis=1)
+    else:
+        r = np.stack([(-1) ** t * np.linalg.det(np.delete(sub, t, axis=2)) for t in range(d)],
+                     axis=1)
+    nr = np.linalg.norm(r, axis=1)
+    keep = nr > 1e-12 * np.prod(np.linalg.norm(sub, axis=2), axis=1)
+    r = r[keep] / nr[keep, None]
+    dots = r @ A.T                                    # (C', R)
+    tol = TOL * np.linalg.norm(A, axis=1)
     found = []
-    for S in itertools.combinations(range(R), d - 1):
-        sub = A[list(S)]
-        r = np.array([(-1) ** t * np.linalg.det(np.delete(sub, t, axis=1)) if d > 2 else
-                      (-1) ** t * sub[0, 1 - t] for t in range(d)])
-        nr = np.linalg.norm(r)
-        if nr <= 1e-12 * np.prod(np.linalg.norm(sub, axis=1)):
-            continue
-        r = r / nr
-        dots = A @ r
-        tol = TOL * np.linalg.norm(A, axis=1)
+    for k in range(len(r)):
         for sg in (1, -1):
-            if np.all(sg * dots <= tol):
-                found.append(tuple((sg * r).tolist()))
+            if np.all(sg * dots[k] <= tol):
+                found.append(tuple((sg * r[k]).tolist()))
     return found

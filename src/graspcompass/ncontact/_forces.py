@@ -9,17 +9,20 @@ in k_n and both sides of the other contact (the sides on which (8)-(11) is tight
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
 
+from ..boundary.inputs import angle_values
 from ..geometry.exact import canon
 from ..geometry.trig import sincos
-from ..inputs import angle_values
 from ._signs import det
 from .errors import NContactError
 from .polygon import exact_sgn
+
+if TYPE_CHECKING:
+    from .model import NContactGrasp
 
 __all__ = ["optimal_forces"]
 
@@ -37,7 +40,7 @@ def _solve_exact(cols: list[list[sp.Expr]], b: list[sp.Expr]) -> list[sp.Expr] |
     return out
 
 
-def optimal_forces(g: Any, theta: Any, fe: Any) -> dict[str, Any]:
+def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
     """See :meth:`graspcompass.ncontact.NContactGrasp.forces`."""
     if not g.effort.linear:
         raise NContactError("the optimal forces of the effort 'max-normal' are not available "

@@ -7,7 +7,7 @@ import sympy as sp
 from ..geometry.exact import canon, decide_sign
 from .errors import UndecidedSignError
 
-__all__ = ["cross2", "det", "sign"]
+__all__ = ["cross2", "det", "exact_sgn", "sign"]
 
 
 def sign(expr: sp.Expr, what: str) -> int:
@@ -46,3 +46,8 @@ def det(rows: list[list[sp.Expr]]) -> sp.Expr:
 def cross2(a: tuple, b: tuple) -> sp.Expr:
     """``a_x b_y - a_y b_x`` in canonical form (the orientation of the pair)."""
     return canon(a[0] * b[1] - a[1] * b[0])
+
+
+def exact_sgn(v: sp.Expr, what: str) -> int:
+    """:func:`sign` of a (canonicalised) expression (also :func:`.polygon.exact_sgn`)."""
+    return sign(canon(v), what)

@@ -15,10 +15,10 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import InputError
+from ..boundary.errors import InputError
+from ..boundary.inputs import real_value
 from ..geometry.exact import canon, decide_zero, has_float
 from ..geometry.trig import sincos
-from ..inputs import real_value
 from ._signs import sign
 from .errors import InvalidContactError
 

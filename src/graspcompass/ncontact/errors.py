@@ -6,7 +6,7 @@ so the command line prints them on one line with exit status 2.
 
 from __future__ import annotations
 
-from ..errors import GraspCompassError, InputError
+from ..boundary.errors import GraspCompassError, InputError
 
 __all__ = [
     "DegenerateGraspError",

@@ -14,12 +14,15 @@ signs throughout (``decide_sign``); the float path uses a tolerance.
 from __future__ import annotations
 
 import itertools
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..geometry.exact import canon
 from .polygon import exact_sgn
+
+if TYPE_CHECKING:
+    from .model import NContactGrasp
 
 __all__ = ["candidates"]
 
@@ -44,7 +47,7 @@ def _dot(a: tuple, b: tuple) -> Any:
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
-def candidates(g: Any) -> tuple[list[tuple], list[tuple]]:
+def candidates(g: NContactGrasp) -> tuple[list[tuple], list[tuple]]:
     """Homogeneous points ``(X, Y, W)`` (q = -y_f) of the candidate vertices, and their ties."""
     G = [tuple(w) for w in g.wrenches()]
     ties = _ties(G)

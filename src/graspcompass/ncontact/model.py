@@ -23,10 +23,10 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
-from ..errors import InputError
+from ..boundary.errors import InputError
+from ..boundary.inputs import force_value, real_value
 from ..geometry import Point
 from ..geometry.exact import canon
-from ..inputs import force_value, real_value
 from . import _dual
 from .contact import Contact, read_contact
 from .effort import read_effort

@@ -19,12 +19,12 @@ from typing import Any
 import numpy as np
 import sympy as sp
 
+from ..boundary.inputs import angle_values, force_value
 from ..geometry import Point
 from ..geometry.exact import approx, canon
 from ..geometry.trig import sincos
-from ..inputs import angle_values, force_value
 from . import _hull
-from ._signs import sign
+from ._signs import exact_sgn
 
 __all__ = ["Candidate", "InternalForcePolygon", "covers", "exact_sgn", "float_sgn"]
 
@@ -80,11 +80,6 @@ def float_sgn(scale: float):
         v = float(v)
         return 0 if abs(v) <= tol else (1 if v > 0 else -1)
     return sgn
-
-
-def exact_sgn(v: Any, what: str) -> int:
-    """:func:`~graspcompass.ncontact._signs.sign` of a (canonicalised) expression."""
-    return sign(canon(v), what)
 
 
 @dataclass
@@ -206,7 +201,8 @@ class InternalForcePolygon:
                     break
             else:
                 groups.append({"tight": v.tight, "members": [v]})
-        active, passive = [], []
+        active: list[Any] = []
+        passive: list[Any] = []
         for g in groups:
             cones = [m.cone for m in g["members"] if m.cone is not None]
             (active if cones else passive).append((g, cones[0] if cones else None))

@@ -63,7 +63,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, InputTooLargeError, NonFiniteValueError
+from ..boundary.errors import InputError, InputTooLargeError, NonFiniteValueError
 from ..sizing.core import NotForceClosureError
 from ..world import OutlineError
 from ._exact import DEFAULT_TOL, Load

@@ -4,7 +4,7 @@
 entry) at a time under the seconds the whole run has left: a verdict reached
 before the end is kept, and every piece not finished by then is reported as
 timed out (UNDECIDED) by the caller's ``on_timeout``.  The alarm is
-:func:`graspcompass._deadline.deadline` (POSIX, main thread); elsewhere the
+:func:`graspcompass.boundary._deadline.deadline` (POSIX, main thread); elsewhere the
 budget is checked between pieces only.
 
 Examples
@@ -22,7 +22,7 @@ import time
 from collections.abc import Callable
 from typing import TypeVar
 
-from .._deadline import deadline
+from ..boundary._deadline import deadline
 
 __all__ = ["TIMED_OUT", "Budget"]
 
@@ -55,7 +55,7 @@ class Budget:
         left = self.left()
         return left is not None and left <= 0
 
-    def run(self, work: Callable[[], T], on_timeout: Callable[[], T]) -> T:
+    def run(self, work: Callable[..., T], on_timeout: Callable[..., T]) -> T:
         """``work()`` if it ends before the budget, else ``on_timeout()``."""
         left = self.left()
         if left is None:

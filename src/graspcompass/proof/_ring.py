@@ -17,9 +17,24 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..boundary.errors import GraspCompassError
 from ..geometry.exact import fold_fractions
 
-__all__ = ["RingForm", "to_ring"]
+__all__ = ["DegenerateClaimError", "RingForm", "poly_json", "to_ring"]
+
+
+class DegenerateClaimError(GraspCompassError):
+    """An expression with a denominator that vanishes identically: 0/0 or undefined everywhere."""
+
+
+def poly_json(p: Any) -> list[list[Any]]:
+    """A sparse polynomial as JSON: ``[["p/q", [exponents...]], ...]`` (sorted)."""
+    return sorted(([f"{int(c.numerator)}/{int(c.denominator)}", list(m)] for m, c in p.terms()),
+                  key=lambda t: t[1])
+
+
+# documented and pickled with the reductions that raise it (no import cycle: issue 21)
+DegenerateClaimError.__module__ = "graspcompass.proof.reduce"
 
 _MU = {S.mu1: S.xi1, S.mu2: S.xi2}
 _TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
@@ -97,8 +112,6 @@ class RingForm:
 
     def certificate(self, num: Any, quotients: list[Any]) -> dict[str, Any]:
         """``num = sum q_i rel_i`` as JSON-ready data (see :mod:`.recheck`)."""
-        from .reduce import poly_json
-
         rels = [{"kind": "pythagoras", "angle": a, "sin": i, "cos": j} for a, i, j in self.pairs]
         rels += [{"kind": "root", "var": i, "radicand": poly_json(p)} for i, p, _ in self.roots]
         for r, p in zip(rels, self.relations):
@@ -187,7 +200,7 @@ def to_ring(exprs: list[sp.Expr]) -> RingForm:
                                                               sorted(sc.const_pairs,
                                                                      key=sp.default_sort_key))})
     conv.angle_sc = {a: (R.gens[index[sp.sin(a)]], R.gens[index[sp.cos(a)]]) for a in angles}
-    root_rels = []
+    root_rels: list[Any] = []
     for i in reversed(range(len(roots))):  # inner roots first: outer radicands use them
         n, d = conv.nd(sc.roots[roots[i]])
         conv.root_info[roots[i]] = (R.gens[i], d)
@@ -215,8 +228,6 @@ class _Converter:
 
     def _den(self, d: Any, e: sp.Expr) -> None:
         if not d:
-            from .reduce import DegenerateClaimError
-
             raise DegenerateClaimError(f"{e} divides by zero")
         if not d.is_ground:
             self.dens.append(d)

@@ -18,10 +18,14 @@ from __future__ import annotations
 from .catalogue_core import Claim, check, session, symbolic_construction
 from .catalogue_drawing import appendix_claims, diagram_claims
 from .catalogue_model import model_claims
+from .catalogue_ncontact import ncontact_claims
 from .catalogue_section5 import section5_claims
 
-__all__ = ["CLAIMS", "Claim", "build_claims", "check", "claim", "session",
-           "symbolic_construction"]
+#: The n-contact claims in the default catalogue (instant); ``verify --ncontact`` adds the rest.
+DEFAULT_NCONTACT = ("table1c-V4-redundant",)
+
+__all__ = ["CLAIMS", "DEFAULT_NCONTACT", "Claim", "build_claims", "check", "claim",
+           "ncontact_extra", "session", "symbolic_construction"]
 
 
 def build_claims() -> tuple[Claim, ...]:
@@ -32,6 +36,7 @@ def build_claims() -> tuple[Claim, ...]:
     out += diagram_claims(eq27)
     out += appendix_claims()
     out += section5_claims(eq27, eq24)
+    out += [c for c in ncontact_claims() if c.id in DEFAULT_NCONTACT]
     ids = [c.id for c in out]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
@@ -48,3 +53,8 @@ def claim(claim_id: str) -> Claim:
         if c.id == claim_id:
             return c
     raise KeyError(f"no claim {claim_id!r}")
+
+
+def ncontact_extra() -> tuple[Claim, ...]:
+    """The n-contact claims that ``verify --ncontact`` adds (docs/ncontact.md)."""
+    return tuple(c for c in ncontact_claims() if c.id not in DEFAULT_NCONTACT)

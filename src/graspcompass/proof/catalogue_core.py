@@ -153,8 +153,8 @@ def conjunction(parts: Sequence[ProofResult | Claim], method: str, t0: float,
                        f"{worst.method} {worst.detail}".strip(), **kw)
 
 
-def identity(lhs: Callable[[], Any], rhs: Callable[[], Any] | int = 0,
-             assumptions: Callable[[], Sequence[Any]] | None = None) -> Callable[[], ProofResult]:
+def identity(lhs: Callable[..., Any], rhs: Callable[..., Any] | int = 0,
+             assumptions: Callable[..., Sequence[Any]] | None = None) -> Callable[[], ProofResult]:
     """A claim runner for ``lhs == rhs`` (both built lazily)."""
     def run() -> ProofResult:
         a = list(assumptions()) if assumptions else ()
@@ -213,7 +213,7 @@ def _replay(upto: str | None):
 
     g = Grasp.symbolic("mu")
     env: dict = {}
-    steps = []
+    steps: list[Any] = []
     for spec in diagram_specs(g):
         st = run_step(spec, env, len(steps))
         env[spec.name] = st.obj

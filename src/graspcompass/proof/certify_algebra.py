@@ -101,7 +101,8 @@ class Ring:
         elif e.is_Add and (flat := self._flat_sum(e)) is not None:
             out = flat, {}
         elif e.is_Mul:
-            n, dens = R.one, {}
+            n = R.one
+            dens: dict[Any, Any] = {}
             for a in e.args:
                 n2, d2 = self._frac(a)
                 n = n * n2
@@ -146,7 +147,8 @@ class Ring:
 
     def _flat_sum(self, e: sp.Expr) -> Any:
         """An expanded polynomial in one pass (None if a term is not a monomial)."""
-        index, acc = self.index, {}
+        index = self.index
+        acc: dict[Any, Any] = {}
         dom = self.R.domain
         zero = [0] * len(self.gens)
         for term in e.args:
@@ -296,13 +298,31 @@ def _classify_factor(p: Any) -> str | None:
     return None
 
 
-def _text(p: Any) -> str:
-    """``p`` as text; a long polynomial by its first terms and its size."""
+def _text(p: Any, most: int = 60) -> str:
+    """``p`` as text; a polynomial of more than ``most`` terms by its first terms and its
+    size."""
     R = ring()
-    if len(p.terms()) <= 60:
-        return str(R.expr(p))
+    if len(p.terms()) <= most:
+        return _full_text(p)
     head = R.R.from_dict(dict(p.terms()[:3]))
     return f"{R.expr(head)} + … ({len(p.terms())} terms, degree {sum(p.LM)})"
+
+
+def _full_text(p: Any) -> str:
+    """``p`` as text, whole (remembered: the same factors recur in many steps, and sympy's
+    printer is slow on long sums)."""
+    try:
+        return _TEXTS[p]
+    except KeyError:
+        if len(_TEXTS) > 4096:
+            _TEXTS.clear()
+        text = _TEXTS[p] = str(ring().expr(p))
+        return text
+    except TypeError:  # pragma: no cover - an unhashable element
+        return str(ring().expr(p))
+
+
+_TEXTS: dict[Any, str] = {}
 
 
 def _primitive(p: Any) -> Any:

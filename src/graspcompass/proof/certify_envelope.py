@@ -19,7 +19,7 @@ from typing import Any
 import sympy as sp
 
 from ..geometry import Point
-from .certify_facts import Fact, _f
+from ._fact import Fact, _f
 from .certify_paper import PaperModel
 
 __all__ = ["envelope_facts"]

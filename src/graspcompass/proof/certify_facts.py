@@ -13,15 +13,14 @@ facts of its kernel operation (``line_through``: both points on the line).
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable
-from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
 
 from ..construction import Step
 from ..geometry import Circle, Line, Point
+from ._fact import Fact, _f
+from .certify_envelope import envelope_facts
 from .certify_paper import SIDES, PaperModel
 
 __all__ = ["GIVEN_OPS", "Fact", "facts_for"]
@@ -29,31 +28,6 @@ __all__ = ["GIVEN_OPS", "Fact", "facts_for"]
 #: Kernel operations that only record data of the problem.
 GIVEN_OPS = ("point", "line_with_direction")
 Pt = tuple[Any, Any]
-
-
-@dataclass(frozen=True)
-class Fact:
-    """One statement about a step: ``lhs == rhs`` (``kind="eq"``), ``lhs != 0``
-    (``"nonzero"``, a non-degeneracy condition) or ``lhs >= 0`` (``"nonneg"``).
-
-    ``scale`` returns the magnitude of the quantities involved (float path only).
-    """
-
-    text: str
-    lhs: Any
-    rhs: Any = 0
-    kind: str = "eq"
-    scale: Callable[[], float] = field(default=lambda: 1.0, compare=False, repr=False)
-
-
-def _f(*vals: Any) -> float:
-    out = 0.0
-    for v in vals:
-        try:
-            out += abs(float(v))
-        except (TypeError, ValueError):
-            return math.inf
-    return out
 
 
 def _xy(p: Any) -> Pt:
@@ -220,8 +194,6 @@ def _op_facts(step: Step, env: dict[str, Any], L: Any) -> list[Fact]:
 def facts_for(step: Step, env: dict[str, Any], m: PaperModel) -> list[Fact]:
     """The facts ``step`` must establish: against the paper, or of its operation."""
     if step.op == "envelope":
-        from .certify_envelope import envelope_facts
-
         return envelope_facts(step.obj, m)
     facts = _role_facts(step, m)
     return facts if facts is not None else _op_facts(step, env, m.length)

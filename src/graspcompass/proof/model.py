@@ -29,9 +29,9 @@ import numpy as np
 import sympy as sp
 
 from .. import symbols as S
-from ..errors import WrongTypeError
-from ..expr import ExpressionError, parse_exact
-from ..inputs import real_value
+from ..boundary.errors import WrongTypeError
+from ..boundary.expr import ExpressionError, parse_exact
+from ..boundary.inputs import real_value
 
 __all__ = ["CONTACTS", "find_counterexample", "nonzero_at", "outside_expr", "sample",
            "violations", "wrong_sign"]

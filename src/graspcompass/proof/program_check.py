@@ -50,7 +50,6 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass, field
 from typing import Any
 
 import sympy as sp
@@ -60,6 +59,7 @@ from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref, Value
 from ..construction.protocol import Construction
 from ._budget import TIMED_OUT, Budget
+from ._program_rows import CheckRow, ProgramReport
 from .certify_paper import PaperModel, model_at
 from .program_conditions import (
     condition_words,
@@ -99,92 +99,6 @@ PAPER_TARGETS: dict[str, str] = {
 #: The parameters a file must declare to be graded against the paper.
 _PAPER_PARAMS = ("x1", "x2", "y", "phi1", "phi2")
 _COND1 = "condition1"
-
-
-@dataclass(frozen=True)
-class CheckRow:
-    """The verdict on one step, claim or target (plain data).
-
-    Attributes
-    ----------
-    name : str
-        The step's or target's name, or the claim as written.
-    kind : str
-        ``"step"``, ``"claim"`` or ``"target"``.
-    line : int
-        Line of the file (0 for the builder).
-    result : ProofResult
-        Status, method, hypotheses, conditions (extra non-degeneracy conditions),
-        implied (conditions shown to follow), counterexample (exact text by
-        parameter name, re-checked by exact replay), seconds.
-    """
-
-    name: str
-    kind: str
-    line: int
-    result: ProofResult
-
-    @property
-    def status(self) -> Status:
-        """The verdict."""
-        return self.result.status
-
-    @property
-    def counterexample(self) -> dict[str, str] | None:
-        """Parameter name -> exact value where the file contradicts the statement."""
-        return self.result.counterexample
-
-    @property
-    def reason(self) -> str | None:
-        """Why a REFUTED row has no counterexample: the exact reason (``None`` otherwise)."""
-        if self.status is not Status.REFUTED or self.counterexample is not None:
-            return None
-        return self.result.detail or None
-
-    def __post_init__(self) -> None:
-        """REFUTED comes with a counterexample or a stated exact reason, never bare: a bare
-        one is UNDECIDED (an internal guard; every REFUTED row above states one)."""
-        r = self.result
-        if r.status is Status.REFUTED and r.counterexample is None and not r.detail:
-            object.__setattr__(self, "result", ProofResult(
-                Status.UNDECIDED, "refuted without a counterexample or a stated reason: "
-                "not reported as refuted", r.seconds, hypotheses=r.hypotheses,
-                conditions=r.conditions, implied=r.implied))
-
-    def record(self) -> dict[str, Any]:
-        """JSON-ready: name, status, hypotheses, conditions, counterexample, seconds, ..."""
-        r = self.result
-        return {"name": self.name, "status": r.status.value, "line": self.line,
-                "hypotheses": list(r.hypotheses), "conditions": list(r.conditions),
-                "implied": list(r.implied), "counterexample": r.counterexample,
-                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail,
-                "reason": self.reason}
-
-
-@dataclass(frozen=True)
-class ProgramReport:
-    """Every verdict on one file: ``steps``, ``claims`` and ``targets`` (tuples of rows)."""
-
-    file: str
-    steps: tuple[CheckRow, ...]
-    claims: tuple[CheckRow, ...]
-    targets: tuple[CheckRow, ...] = ()
-    against: str | None = None
-    seconds: float = 0.0
-    construction: Construction | None = field(default=None, compare=False, repr=False)
-
-    @property
-    def rows(self) -> tuple[CheckRow, ...]:
-        """Steps, claims and targets in that order."""
-        return self.steps + self.claims + self.targets
-
-    @property
-    def exit_status(self) -> int:
-        """0 all proved (or given), 1 something refuted, 3 something undecided."""
-        statuses = {r.status for r in self.rows}
-        if Status.REFUTED in statuses:
-            return 1
-        return 3 if Status.UNDECIDED in statuses else 0
 
 
 # -- hypotheses ---------------------------------------------------------------------------
@@ -264,6 +178,22 @@ def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
         return CheckRow(name, kind, line, ProofResult(
             Status.UNDECIDED, "the checker could not decide it", time.perf_counter() - t0,
             detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
+
+
+class _Later(dict):  # type: ignore[type-arg]
+    """A step's conditions without condition (1), worked out when a claim first asks."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._thunks: dict[str, Callable[[], tuple[list[str], list[str]]]] = {}
+
+    def later(self, name: str, thunk: Callable[[], tuple[list[str], list[str]]]) -> None:
+        self._thunks[name] = thunk
+
+    def get(self, name: str, default: Any = None) -> Any:
+        if name not in self and name in self._thunks:
+            self[name] = self._thunks.pop(name)()
+        return super().get(name, default)
 
 
 def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
@@ -552,7 +482,7 @@ def check_program(program: Program, against: str | None = None,
     tie = tie_mu(p.name for p in program.params)
     statements = {st.name: st for st in program.steps}
     vacuous: dict[str, str] = {}
-    plain_conds: dict[str, tuple[list[str], list[str]]] = {}
+    plain_conds = _Later()
 
     def step_row(s: Any) -> CheckRow:
         """One step's row; the shared tables are written only once it is complete."""
@@ -587,16 +517,20 @@ def check_program(program: Program, against: str | None = None,
             return CheckRow(s.name, "step", line, ProofResult(
                 Status.REFUTED, "degenerate for every parameter: it exists at no point of "
                 "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps))
-        plain = (implied, extra)
-        if cond1_file:  # for claims not under condition1: the same, without (1)
-            try:
-                imp0, ext0 = step_conditions(s, False, replaced, tie)
-                own0 = decide([*stmt.conditions, *ops], False, tie)
-                plain = (imp0 + own0.implied, ext0 + own0.extra)
-            except ValueError:
-                pass
         step_conds[s.name] = (implied, extra)
-        plain_conds[s.name] = plain
+        if cond1_file:  # for claims not under condition1: the same, without (1), decided
+            def plain(s: Any = s, stmt: Any = stmt, ops: Any = ops, replaced: Any = replaced,
+                      mine: tuple[list[str], list[str]] = (implied, extra)
+                      ) -> tuple[list[str], list[str]]:
+                try:  # only when such a claim is built on the step
+                    imp0, ext0 = step_conditions(s, False, replaced, tie)
+                    own0 = decide([*stmt.conditions, *ops], False, tie)
+                    return imp0 + own0.implied, ext0 + own0.extra
+                except ValueError:
+                    return mine
+            plain_conds.later(s.name, plain)
+        else:
+            plain_conds[s.name] = (implied, extra)
         given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
         return CheckRow(s.name, "step", line, ProofResult(
             Status.GIVEN if given and not s.inputs else Status.PROVED,

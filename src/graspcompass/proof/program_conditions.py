@@ -38,7 +38,7 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
-from ..expr import Condition
+from ..boundary.expr import Condition
 from ..geometry import Circle, Line, Point
 from ..geometry.exact import decide_zero
 from .signs import CONDITION_1, sign_of

@@ -31,14 +31,14 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
+from ..boundary.errors import InputError
 from ..construction.language import replay
 from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
-from ..errors import InputError
 from ..geometry import Circle, GeometryError, Line, Point
 from ..geometry.exact import decide_sign, decide_zero
 from ..geometry.trig import sincos
-from .certify_algebra import _positive, _primitive, classify, ring
+from .certify_algebra import _full_text, _positive, _primitive, _text, classify, ring
 from .model import violations
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
 
@@ -249,13 +249,13 @@ def _classified(dens: Iterable[Any], cond1: bool) -> tuple[list[str], list[str]]
             if not q:
                 raise ValueError(f"the condition {R.expr(p)} ≠ 0 is false for every parameter")
             if q.is_ground:
-                implied[f"{R.expr(p)} ≠ 0 (a non-zero constant)"] = None
+                implied[f"{_full_text(p)} ≠ 0 (a non-zero constant)"] = None
                 continue
             p = _primitive(p)
             if _positive(R.reduce(p), R):
-                implied[f"{R.expr(p)} ≠ 0 (a positive polynomial of x1, x2, μ)"] = None
+                implied[f"{_text(p, 12)} ≠ 0 (a positive polynomial of x1, x2, μ)"] = None
                 continue
-            extra[f"{R.expr(p)} ≠ 0"] = None
+            extra[f"{_full_text(p)} ≠ 0"] = None
     return list(implied), list(extra)
 
 

@@ -106,18 +106,28 @@ def to_table(report: ProgramReport, steps: bool = False) -> str:
 
 
 def to_markdown(report: ProgramReport) -> str:
-    """A Markdown page: the verdicts, then each row's hypotheses and conditions."""
-    out = [f"# Check of `{report.file}`", "",
+    """A Markdown page: the verdicts in a table, then each row's hypotheses, conditions and
+    counterexample as a definition list; text escaped, formulas as MathJax math."""
+    from ._markdown import md_counterexample, md_items, md_text
+
+    out = [f"# Check of {md_text(report.file)}", "",
            f"{_counts(report)}; {report.seconds:.1f} s"
            + (", graded against the paper" if report.against else "") + ".", "",
            "PROVED: an exact argument for every admissible parameter (hypotheses and "
            "non-degeneracy conditions below); REFUTED: a point of the model where the file, "
            "replayed exactly, contradicts the statement.", "",
-           "| kind | line | name | status | hypotheses | conditions | counterexample | s |",
-           "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+           "| kind | line | name | status | s |", "| --- | ---: | --- | --- | ---: |"]
     for r in report.rows:
-        cells = [r.kind, str(r.line), f"`{r.name}`", r.status.value,
-                 "; ".join(r.result.hypotheses), "; ".join(r.result.conditions) or "none",
-                 _cx(r) or "", f"{r.result.seconds:.2f}"]
-        out.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+        out.append(f"| {md_text(r.kind)} | {r.line} | {md_text(r.name)} | {r.status.value} | "
+                   f"{r.result.seconds:.2f} |")
+    out += ["", "## Hypotheses, conditions and counterexamples", ""]
+    for r in report.rows:
+        cx = (md_text(_cx(r)) if r.reason is not None or r.counterexample == {}
+              else md_counterexample(r.counterexample))
+        out += [f"{md_text(r.name)} (line {r.line}), {r.status.value}",
+                ": hypotheses: " + ("; ".join(md_items(r.result.hypotheses)) or "none"),
+                ": conditions: " + ("; ".join(md_items(r.result.conditions)) or "none")]
+        if cx:
+            out.append(": counterexample: " + cx)
+        out.append("")
     return "\n".join(out) + "\n"

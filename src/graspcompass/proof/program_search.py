@@ -39,9 +39,9 @@ import mpmath
 import sympy as sp
 
 from .. import symbols as S
+from ..boundary.errors import InputError
+from ..boundary.expr import Condition
 from ..construction.program import Claim, Program
-from ..errors import InputError
-from ..expr import Condition
 from ..geometry import GeometryError
 from ..geometry.exact import decide_sign
 from ..geometry.trig import sincos

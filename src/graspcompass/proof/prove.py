@@ -32,7 +32,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..expr import tree_conditions
+from ..boundary.expr import tree_conditions
 from .model import find_counterexample, nonzero_at, outside_expr, wrong_sign
 from .reduce import DegenerateClaimError, reduce_expr
 from .signs import CONDITION_1, Intervals, _interval, discharge, form_json, sign_of, sign_reason

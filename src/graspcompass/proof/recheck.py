@@ -37,7 +37,7 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..errors import GraspCompassError
+from ..boundary.errors import GraspCompassError
 
 __all__ = ["RecheckError", "problems", "recheck"]
 

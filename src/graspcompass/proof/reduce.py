@@ -34,9 +34,8 @@ from typing import Any
 import sympy as sp
 
 from .. import symbols as S
-from ..errors import GraspCompassError
 from ._flint import divide, factor_list
-from ._ring import RingForm, to_ring
+from ._ring import DegenerateClaimError, RingForm, to_ring
 from .model import outside_expr
 
 __all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero", "reduce_expr",
@@ -44,10 +43,6 @@ __all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero",
 
 #: Angle symbols of the model; any other symbol inside sin/cos/tan is added on the fly.
 ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
-
-
-class DegenerateClaimError(GraspCompassError):
-    """An expression with a denominator that vanishes identically: 0/0 or undefined everywhere."""
 
 
 def trig_to_poly(expr: sp.Expr) -> sp.Expr:
@@ -66,12 +61,6 @@ def trig_to_poly(expr: sp.Expr) -> sp.Expr:
     form = to_ring([outside_expr(expr, "expr")])  # the caller's: never sympify
     n, d = form.values[0]
     return form.as_expr(n) / form.as_expr(d)
-
-
-def poly_json(p: Any) -> list[list[Any]]:
-    """A sparse polynomial as JSON: ``[["p/q", [exponents...]], ...]`` (sorted)."""
-    return sorted(([f"{int(c.numerator)}/{int(c.denominator)}", list(m)] for m, c in p.terms()),
-                  key=lambda t: t[1])
 
 
 @dataclass(frozen=True)

@@ -115,31 +115,45 @@ def to_table(reports: Sequence[ClaimReport]) -> str:
 
 
 def to_markdown(reports: Sequence[ClaimReport]) -> str:
-    """A Markdown page for the docs: errata first, then every claim."""
+    """A Markdown page for the docs: the errata (the one section of them), a summary table
+    of every claim (id, paper, status, method, seconds), then each claim's statement,
+    hypotheses and conditions as a definition list.  Text is escaped and formulas are
+    MathJax math (:mod:`graspcompass.proof._markdown`)."""
+    from ._markdown import md_counterexample, md_items, md_text
+
     out = ["# Proof report", "",
            "Every claim of Ito, Tanaka and Sasaki (Robotica 30(5), 2012) checked by "
            "`graspcompass verify` for general symbolic parameters under the contact point "
            "conditions (1). PROVED means a symbolic proof (polynomial reduction modulo "
-           "sin² + cos² = 1, or a sign witness); REFUTED comes with exact parameter values "
-           "where the printed statement fails.", "", "## Errata: where the paper as printed "
-           "is wrong", ""]
+           "$\\sin^2 + \\cos^2 = 1$, or a sign witness); REFUTED comes with exact parameter "
+           "values where the printed statement fails.", "",
+           "## Errata: where the paper as printed is wrong", ""]
     by_id = {r.claim.id: r for r in reports}
     for r in reports:
         if r.result.status is Status.REFUTED:
             fix = by_id.get(r.claim.corrected_by or "")
-            cx = ", ".join(f"{k} = {v}" for k, v in (r.result.counterexample or {}).items())
-            out.append(f"- **{r.claim.ref}** — {r.claim.statement}: REFUTED "
-                       f"(counterexample {cx}). {r.claim.note}")
+            out.append(f"- {md_text(r.claim.ref)}: {md_text(r.claim.statement)}. REFUTED, "
+                       f"counterexample {md_counterexample(r.result.counterexample)}. "
+                       f"{md_text(r.claim.note)}")
             if fix is not None:
                 out += ["", f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
-                        f"{fix.claim.statement}", ""]
-    out += ["", "## All claims", "", "| id | paper | statement | status | hypotheses | "
-            "conditions | method | s |", "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+                        f"{md_text(fix.claim.statement)}", ""]
+    out += ["", "## All claims", "",
+            "| id | paper | status | method | s |", "| --- | --- | --- | --- | ---: |"]
     for r in reports:
-        st = r.claim.statement.replace("|", "\\|")
-        hyp = "; ".join(r.result.hypotheses).replace("|", "\\|") or "none"
-        cond = "; ".join([*(f"extra: {x}" for x in r.result.conditions),
-                          *(f"implied: {x}" for x in r.result.implied)]).replace("|", "\\|")
-        out.append(f"| `{r.claim.id}` | {r.claim.ref} | {st} | {r.result.status.value} | "
-                   f"{hyp} | {cond or 'none'} | {r.result.method} | {r.result.seconds:.2f} |")
+        method = r.result.method if len(r.result.method) <= 40 else "see below"
+        out.append(f"| `{r.claim.id}` | {md_text(r.claim.ref)} | "
+                   f"{r.result.status.value} | {md_text(method)} | "
+                   f"{r.result.seconds:.2f} |")
+    out += ["", "### Statements, hypotheses and conditions", ""]
+    for r in reports:
+        conds = [*md_items(r.result.conditions, "extra: "),
+                 *md_items(r.result.implied, "implied: ")]
+        out += [f"`{r.claim.id}` ({md_text(r.claim.ref)}), "
+                f"{r.result.status.value}",
+                f": {md_text(r.claim.statement)}",
+                ": hypotheses: " + ("; ".join(md_items(r.result.hypotheses)) or "none"),
+                ": conditions: " + ("; ".join(conds) or "none"),
+                *([": method: " + md_text(r.result.method)] if len(r.result.method) > 40
+                  else []), ""]
     return "\n".join(out) + "\n"

@@ -20,7 +20,7 @@ of a bound, or a cone side so nearly horizontal that ``cos φ ∓ μ sin φ`` lo
 more than four digits to cancellation.  The explorer then builds a
 :class:`graspcompass.Grasp`, which either refuses the grasp with the failing
 inequality or is valid, and :func:`grasp_scene` takes the correctly rounded
-S_n, C_n and sides of the float path (:mod:`graspcompass._floatpath`).
+S_n, C_n and sides of the float path (:mod:`graspcompass.grasp._floatpath`).
 
 :func:`construction_scene` is the old way, the ruler-and-compass construction
 replayed by :func:`graspcompass.internal_force_diagram`; the tests and the
@@ -162,11 +162,11 @@ def float_scene(p: dict[str, float], grid: ThetaGrid) -> Scene | None:
 def grasp_scene(grasp: Any, grid: ThetaGrid) -> Scene:
     """The scene of a valid float :class:`~graspcompass.Grasp`, correctly rounded.
 
-    S_n, C_n and the sides come from :mod:`graspcompass._floatpath` (evaluated at
+    S_n, C_n and the sides come from :mod:`graspcompass.grasp._floatpath` (evaluated at
     40 digits or more and rounded once): the path for grasps near a bound of
     condition (1), where the double evaluation of :func:`float_scene` cancels.
     """
-    from .._floatpath import closed_form_floats, side_floats
+    from ..grasp._floatpath import closed_form_floats, side_floats
 
     params = grasp.params
     S, C = closed_form_floats(params)

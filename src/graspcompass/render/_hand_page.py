@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
-from ..layout import wedge
+from ..scene.layout import wedge
 from ._hand_steps import _GREEK, _m, _n_of
 from ._hand_text import _MARGIN, _MM, _TOP, A4_MM, _width_mm
 from .theme import Theme
@@ -120,7 +120,7 @@ def _cones(ax: Axes, grasp: Any, theme: Theme, length: float) -> list[Artist]:
                 float(grasp.P1.y if i == 1 else grasp.P2.y))
         da, db = (tuple(float(v) for v in (d.x, d.y))
                   for d in (grasp.side_direction(a), grasp.side_direction(b)))
-        poly = wedge(apex, da, db, length)
+        poly = wedge(apex, da, db, 0.6 * length)  # the shading short, the sides long
         arts.append(ax.add_patch(Polygon(poly, closed=True, facecolor=theme.cone_face,
                                          alpha=theme.cone_alpha, edgecolor="none",
                                          zorder=1)))
@@ -206,5 +206,7 @@ def _intro(c: Any, given: Sequence[str]) -> str:
     if extra:
         more = "; also " + ", ".join(f"#{c.step(g).index} {_m(g)}" for g in extra)
     return ("Already drawn (steps 0-4): $O$, the x- and y-axis, $P_1$, $P_2$ and the "
-            f"friction cones with their sides{more}.  Draw the numbered steps in order with "
+            f"friction cones with their sides{more}; each side is marked with its angle "
+            "$\\varphi_i \\pm \\xi_i$ from the negative y-axis (dotted), clockwise at $P_1$ "
+            "and counter-clockwise at $P_2$ (§2.2.1).  Draw the numbered steps in order with "
             "ruler, compass and set square (numbers as printed by graspcompass steps).")

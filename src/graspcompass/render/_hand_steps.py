@@ -14,7 +14,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..layout import numeric_objects
+from ..scene.layout import numeric_objects
 
 #: Values of ``steps``: every step, or the steps of one V_n.
 STEP_CHOICES = ("all", "V1", "V2", "V3", "V4")
@@ -212,7 +212,8 @@ def _brief_block(c: Any, n: int, todo: list[Any], first: int) -> Instruction:
 
 
 def instructions_for(construction: Any, names: Sequence[str],
-                     given: Sequence[str] = ()) -> list[Instruction]:
+                     given: Sequence[str] = (),
+                     num: dict[str, Any] | None = None) -> list[Instruction]:
     """The numbered instructions for the steps ``names`` not in ``given``, in protocol order.
 
     Each carries the protocol indices of its steps (as ``graspcompass steps``
@@ -220,7 +221,8 @@ def instructions_for(construction: Any, names: Sequence[str],
     V_n, every step is an instruction.  With more, the first V_n is explained
     step by step and each further V_n is one instruction numbering its steps
     (``#18``, printed bold), and the cone sides, the feet, the circles and the
-    second intersections are grouped.
+    second intersections are grouped.  ``num`` are the numeric objects
+    (:func:`graspcompass.layout.numeric_objects`) if the caller has them.
 
     Examples
     --------
@@ -237,7 +239,8 @@ def instructions_for(construction: Any, names: Sequence[str],
     ['5–8', '9–10', '11', '12', '13', '14', '15', '16', '17', '18–23', '24–29', '30–35',
      '36–39', '40–45', '46']
     """
-    num = numeric_objects(construction)
+    if num is None:  # the caller's, when it has them (computed once per worksheet)
+        num = numeric_objects(construction)
     given = set(given)
     todo = sorted((construction.step(n) for n in names if n not in given),
                   key=lambda s: s.index)

@@ -28,6 +28,7 @@ _HEADER = 30.0  # title, scale, check bar
 _GAP = 5.0  # between the drawing and the text
 _FONTS = (7.6, 7.2)  # instructions, pt: the smaller one when it gives a larger drawing
 _LINE = 1.36  # line height, in font sizes
+_OVER = 0.3  # extra space above a line with an overline ($\overline{O_MX_1}$), in font sizes
 _NUMBER_W = 11.0  # width of the step number column, mm
 _COL_GAP = 6.0
 
@@ -142,29 +143,42 @@ def _columns(blocks: list[_Block], ncols: int) -> list[list[_Block]]:
     return cols
 
 
+def _lead(ln: list[_Word]) -> float:
+    """Height of one line in font sizes: more above a line with an overline, which mathtext
+    sets above the capitals, so that it does not cut through the line above."""
+    return _LINE + (_OVER if any("\\overline" in w for _, w, _ in ln) else 0.0)
+
+
+def _block_lines(b: _Block) -> float:
+    """Height of a block and the gap after it, in font sizes."""
+    return sum(_lead(ln) for ln in b.lines) + 0.6 * _LINE
+
+
 def _height(col: list[_Block], size: float) -> float:
-    line = size * _LINE / 72 / _MM
-    return sum(len(b.lines) + 0.6 for b in col) * line
+    return sum(_block_lines(b) for b in col) * size / 72 / _MM
 
 
 def _draw_blocks(fig: Figure, col: list[_Block], x0: float, top_mm: float,
                  size: float) -> list[str]:
     """Set one column of blocks from ``(x0, top_mm)`` down; return its lines as text."""
     W, H = A4_MM
-    line = size * _LINE / 72 / _MM
-    ascent = 0.75 * size / 72 / _MM
+    em = size / 72 / _MM  # one font size, mm
     shown = []
-    y = top_mm - ascent
+    y = top_mm - 0.75 * em
     for b in col:
-        if b.number:
-            fig.text(x0 / W, y / H, b.number, fontsize=size, weight="bold", va="baseline")
         xt = x0 + (_NUMBER_W if b.number else 0)
+        yl = y
         for j, ln in enumerate(b.lines):
+            # the first line moves down by its extra lead, each further one by its lead
+            yl -= (_lead(ln) - (_LINE if j == 0 else 0.0)) * em
+            if j == 0 and b.number:
+                fig.text(x0 / W, yl / H, b.number, fontsize=size, weight="bold",
+                         va="baseline")
             for dx, w, bold in _runs(ln, size):
-                fig.text((xt + dx) / W, (y - j * line) / H, w, fontsize=size,
+                fig.text((xt + dx) / W, yl / H, w, fontsize=size,
                          weight="bold" if bold else "normal", va="baseline")
             shown.append((b.number + " " if j == 0 and b.number else "") + _line_text(ln))
-        y -= (len(b.lines) + 0.6) * line
+        y -= _block_lines(b) * em
     return shown
 
 

@@ -52,39 +52,19 @@ from matplotlib.widgets import Slider
 
 from ..geometry import evaluate
 from ..grasp import Grasp
-from ..layout import wedge
-from ..palette import PALETTE
+from ..scene.layout import wedge
+from ..scene.palette import PALETTE
+from ._explorer_events import PARAMS, _Events, _interactive, _Slider, notebook_box
 from ._explorer_scene import GRASP_KEYS, Scene, ThetaGrid, float_scene, grasp_scene
 from ._pathtext import GlyphCache, PathText
 from .theme import DEFAULT_THEME
 
 __all__ = ["PARAMS", "Explorer", "explore", "explore_notebook"]
 
-#: Slider name, label, unit factor to the model (degrees for φ and θ).
-PARAMS = (("x1", "$x_1$", 1.0), ("x2", "$x_2$", 1.0), ("y", "$y$", 1.0),
-          ("phi1", r"$\varphi_1$ (°)", math.pi / 180), ("phi2", r"$\varphi_2$ (°)", math.pi / 180),
-          ("mu1", r"$\mu_1$", 1.0), ("mu2", r"$\mu_2$", 1.0),
-          ("theta", r"$\theta$ (°)", math.pi / 180))
-_UNIT = {p[0]: p[2] for p in PARAMS}
-_PICK_PX = 12.0
 _LABELS = ("P1", "P2", "V1", "V2", "V3", "V4")
 
 
-class _Slider(Slider):
-    """A :class:`~matplotlib.widgets.Slider` that ignores clicks on other axes at once.
-
-    Every slider sees every mouse event; a plain Slider tests a press with
-    ``Axes.contains`` (about 1 ms each, eight sliders per click), this one
-    compares ``event.inaxes`` first.  Behaviour is unchanged: a slider that is
-    not being dragged does nothing with a press outside its axes.
-    """
-
-    def ignore(self, event: Any) -> bool:
-        return super().ignore(event) or (
-            not self.drag_active and getattr(event, "inaxes", self.ax) is not self.ax)
-
-
-class Explorer:
+class Explorer(_Events):
     """The live diagram of a grasp, usable headless (``set_params``, ``drag``).
 
     A change (slider, drag, :meth:`set_params`) recomputes the picture from the
@@ -526,62 +506,18 @@ class Explorer:
         else:
             raise ValueError(f"only P1 and P2 can be dragged, not {point!r}")
 
-    def _sync_sliders(self, values: dict[str, float]) -> None:
-        self._syncing = True
-        try:
-            for k, v in values.items():
-                unit = _UNIT[k]
-                s = self.sliders[k]
-                s.set_val(min(max(float(v) / unit, s.valmin), s.valmax))
-        finally:
-            self._syncing = False
-
-    def _on_slider(self, name: str, val: float) -> None:
-        if self._syncing:
-            return
-        self.params[name] = float(val) * _UNIT[name]
-        self.update((name,))
-
-    def _press(self, event: Any) -> None:
-        if event.inaxes is not self.ax or event.button != 1:
-            return
-        for name in ("P1", "P2"):
-            px, py = self.ax.transData.transform(
-                (self.params["x1"], self.params["y"]) if name == "P1"
-                else (-self.params["x2"], self.params["y"]))
-            if math.hypot(event.x - px, event.y - py) <= _PICK_PX:
-                self._dragging = name
-                return
-
-    def _move(self, event: Any) -> None:
-        if self._dragging and event.inaxes is self.ax and event.xdata is not None:
-            self.drag(self._dragging, float(event.xdata), float(event.ydata))
-
-    def _release(self, event: Any) -> None:
-        self._dragging = None
-
-    def _key(self, event: Any) -> None:
-        if event.key == "f":
-            self.fit()
-            self.fig.canvas.draw_idle()
 
 
-def _interactive(backend: str) -> bool:
-    """Whether matplotlib's ``backend`` can show a window."""
-    try:
-        from matplotlib.backends import BackendFilter, backend_registry
-
-        static = backend_registry.list_builtin(BackendFilter.NON_INTERACTIVE)
-    except ImportError:  # matplotlib < 3.9
-        from matplotlib import rcsetup
-
-        static = rcsetup.non_interactive_bk
-    name = backend.lower()
-    return name not in {b.lower() for b in static} and "inline" not in name
-
-
-def explore(grasp: Grasp | None = None) -> Explorer:
+def explore(grasp: Grasp | None = None, *, timeout: float | None = None) -> Explorer:
     """Open the explorer in a window (pyplot); returns it after the window closes.
+
+    Parameters
+    ----------
+    grasp : Grasp, optional
+        The grasp first shown (the paper's Fig. 6 by default).
+    timeout : float, optional
+        Seconds the first drawing may take before the window opens
+        (:class:`~graspcompass._deadline.OutOfTime` after it); the window then stays.
 
     Raises
     ------
@@ -591,14 +527,17 @@ def explore(grasp: Grasp | None = None) -> Explorer:
     import matplotlib
     from matplotlib import pyplot as plt
 
+    from ..boundary._deadline import command_deadline
+
     backend = matplotlib.get_backend()
     if not _interactive(backend):
         raise ValueError(f"cannot open the explorer window: matplotlib's backend {backend!r} "
                          "cannot show windows (no display?): graspcompass export --format html -o "
                          "explorer.html writes the same explorer as one offline web page; in "
                          "Jupyter use explore_notebook()")
-    fig = plt.figure(figsize=(11, 7.5))
-    ex = Explorer(grasp, fig=fig)
+    with command_deadline(timeout):
+        fig = plt.figure(figsize=(11, 7.5))
+        ex = Explorer(grasp, fig=fig)
     plt.show()
     return ex
 
@@ -633,20 +572,4 @@ def explore_notebook(grasp: Grasp | None = None) -> Any:
     except ImportError as exc:
         raise ImportError("explore_notebook needs ipywidgets: pip install ipywidgets") from exc
     ex = Explorer(grasp, fig=Figure(figsize=(11, 7.5), dpi=80))
-    image = w.Image(format="png")
-
-    def render(*_: Any) -> None:
-        image.value = ex.png()
-
-    controls = []
-    for name, label, unit in PARAMS:
-        s = ex.sliders[name]
-        c = w.FloatSlider(value=s.val, min=s.valmin, max=s.valmax, step=(s.valmax - s.valmin) / 400,
-                          description=label.replace("$", "").replace("\\", ""))
-        c.observe(lambda ch, n=name, u=unit: (ex.set_params(**{n: ch["new"] * u}), render()),
-                  names="value")
-        controls.append(c)
-    render()
-    box = w.VBox([w.HBox([w.VBox(controls[:4]), w.VBox(controls[4:])]), image])
-    box.explorer = ex
-    return box
+    return notebook_box(ex, w)

@@ -54,7 +54,8 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from ..layout import numeric_objects, view_box
+from ..scene.layout import numeric_objects, view_box
+from . import _hand_extra as extra
 from ._hand_page import (
     _cones,
     _finish_axes,
@@ -103,7 +104,7 @@ from ._hand_text import (
     _columns,  # noqa: F401
     _draw_blocks,
     _fits,  # noqa: F401
-    _height,  # noqa: F401
+    _height,
     _layout_blocks,
     _line_text,  # noqa: F401
     _Plan,  # noqa: F401
@@ -260,10 +261,14 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     # the box draw_construction frames the same steps with, so that its labels are placed
     # in the final geometry
     box = view_box(c.grasp, num)
-    instructions = instructions_for(c, selected, gnames)
+    instructions = instructions_for(c, selected, gnames, num=num)  # num: computed once
+    ex = extra.exercise(sub, num)
+    items = [(i.number, i.text) for i in instructions]
+    if ex is not None:
+        items.append(("read", extra.exercise_text(ex)))
 
-    plans = [p for size in _FONTS for p in _plans(
-        box, [_intro(c, gnames), _rules()], [(i.number, i.text) for i in instructions], size)]
+    plans = [p for size in _FONTS for p in _plans(box, [_intro(c, gnames), _rules()], items,
+                                                  size)]
     if not plans:
         raise ValueError("the instructions do not leave room for a drawing on A4")
     # the largest drawing at the stated (rounded) scale, then the larger print
@@ -284,7 +289,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     which = ("all of §3.3" if steps == "all" else
              f"{steps} (§3.3, Fig. 4({'abcd'[int(steps[1]) - 1]}))")
     title = getattr(c.grasp, "title", None) or "A two-point grasp"
-    cone_len = min(0.45 * math.dist(num["P1"], num["P2"]), 22.0 / scale)  # at most 22 mm
+    cone_len = extra.side_length(c.grasp, box, scale)  # 25-40 mm: a ruler lies along it
     figs, axes, arts = [], [], []
     texts: list[str] = []
     bars: list[Line2D] = []
@@ -296,7 +301,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         ax = _place_axes(fig, box, scale, plan.area)
         theme = PAPER_THEME if page == 0 else DEFAULT_THEME
         out = draw_construction(sub, step=len(gnames) - 1 if page == 0 else None, ax=ax,
-                                theme=theme)
+                                theme=theme, num=num)
         for key in ("cone1", "cone2"):
             for a in out.pop(key, []):
                 a.remove()
@@ -305,7 +310,12 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
                 a.remove()
                 out[key].remove(a)
         out["cones"] = _cones(ax, c.grasp, theme, cone_len)
+        out["cone angles"] = extra.cone_angles(ax, c.grasp, cone_len) if page == 0 else []
         _finish_axes(ax, box)
+        extra.clear_labels(ax, [a for k in ("P1", "P2") for a in out.get(k, [])
+                                if isinstance(a, Text)],
+                           [a for a in out["cones"] if isinstance(a, Line2D)],
+                           out["cone angles"])
         unit_bar = _unit_bar(ax, box, scale)
         if page == 0:
             bars.append(unit_bar)
@@ -314,8 +324,15 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         else:
             _transfer_marks(ax, sub, num, theme)
             x0, top, colw = plan.columns[0]
-            sol = _layout_blocks(_solution_rows(sub, num, scale), colw, plan.font)
+            rows = _solution_rows(sub, num, scale)
+            if ex is not None:
+                out["read off"] = extra.draw_ray(ax, ex, theme, 1.15 * max(ex["k"], 0.2 * (
+                    box[1] - box[0])))
+                rows.append(("read", extra.exercise_answer(ex, scale)))
+            sol = _layout_blocks(rows, colw, plan.font)
             _draw_blocks(fig, sol, x0, top, plan.font)
+            out["inset"] = extra.page2_extras(fig, ax, sub, num, box, theme, plan.font,
+                                         (x0, top - _height(sol, plan.font) - 3, colw))
         figs.append(fig)
         axes.append(ax)
         arts.append(out)

@@ -8,7 +8,7 @@ from pathlib import Path
 
 from matplotlib.figure import Figure
 
-from .._output import check_target, writing
+from ..boundary._output import check_target, writing
 
 __all__ = ["FORMATS", "save_figure"]
 

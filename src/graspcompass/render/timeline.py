@@ -31,8 +31,8 @@ from typing import Any
 
 import numpy as np
 
-from .._output import check_folder, check_target, writing
-from ..errors import GraspCompassError
+from ..boundary._output import check_folder, check_target, writing
+from ..boundary.errors import GraspCompassError
 from ..progress import Progress
 
 __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",

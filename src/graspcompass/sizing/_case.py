@@ -26,10 +26,10 @@ from typing import Any
 
 import sympy as sp
 
-from ..errors import InputError, WrongTypeError
+from ..boundary.errors import InputError, WrongTypeError
+from ..boundary.inputs import real_value
 from ..geometry.exact import canon, decide_sign, has_float
 from ..grasp import Grasp
-from ..inputs import real_value
 from ..world import FrictionConeError, WorldGrasp
 from .units import (
     STANDARD_GRAVITY,

@@ -22,7 +22,7 @@ import dataclasses
 import math
 from typing import Any
 
-from ..inputs import real_value
+from ..boundary.inputs import real_value
 from ._case import _G, SizingError, _cmp, _f, _pair, _positive, _read_case, _world
 from ._closed import _need_float
 from ._many import _closed_form_many

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..boundary.inputs import real_value
 from ..geometry.exact import canon
-from ..inputs import real_value
 from ._case import _G, PER, SizingError, _positive
 from .units import acceleration_value, mass_value
 

@@ -33,7 +33,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ..errors import InputError
+from ..boundary.errors import InputError
 
 __all__ = [
     "ACCELERATION_UNITS",
@@ -152,8 +152,8 @@ def _factor(kind: str, unit: str | None) -> Any:
 
 def _value(value: Any, kind: str, name: str) -> Any:
     """An exact value (text, int, Fraction, sympy) or a float, in SI units."""
-    from ..expr import ExpressionError, parse_exact
-    from ..inputs import real_value
+    from ..boundary.expr import ExpressionError, parse_exact
+    from ..boundary.inputs import real_value
 
     if not isinstance(value, str):
         return real_value(value, name)  # code's numbers: SI units (angles in radians)

@@ -4,7 +4,7 @@
  * The page embeds its data as JSON (#gc-data): the start parameters, the steps of the
  * construction protocol (numbered as `graspcompass steps` prints them), the palette and
  * the paper's presets.  Everything is computed here from the closed form of the paper,
- * eqs. (27)-(39), ported from graspcompass.grasp / graspcompass._floatpath:
+ * eqs. (27)-(39), ported from graspcompass.grasp / graspcompass.grasp._floatpath:
  *
  *   tan(φ ± ξ) = (sin φ ± μ cos φ) / (cos φ ∓ μ sin φ)                       (23)
  *   S_n = ∓(x1 + x2)/2 ± y tan(φ ± ξ),  C_n = x_{2|1} tan(φ ± ξ)       (28)-(39)
@@ -26,7 +26,7 @@
   const PI = Math.PI;
   const TWO_PI = 2 * Math.PI;
   const NAMES = ["x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "theta"];
-  const FLOAT_MARGIN = 1e-12; // graspcompass._floatpath.FLOAT_MARGIN
+  const FLOAT_MARGIN = 1e-12; // graspcompass.grasp._floatpath.FLOAT_MARGIN
   const MERGE = 1e-13; // break angles closer than this are one (envelope._FLOAT_MERGE)
 
   // ------------------------------------------------------------------------------------
@@ -380,14 +380,41 @@
     last: NaN,
     pendingT0: null,
     playing: null,
+    follow: false, // true once a parameter is changed in the page (heading, outline follow)
+    title: DATA.title,
+    validP: null,
   };
   const stepIndex = {};
   DATA.steps.forEach((s) => { stepIndex[s.name] = s.index; });
   const lastStep = DATA.steps.length - 1;
 
+  /** Validate and compute; an invalid grasp keeps the last valid one drawn (state.num),
+   * while the API's model values (get, kGrasp, envelope) are null until it is valid again. */
   function recompute() {
     state.error = validate(state.p);
-    state.num = state.error ? null : compute(state.p);
+    if (!state.error) {
+      state.num = compute(state.p);
+      state.validP = Object.assign({}, state.p);
+    }
+  }
+
+  /** The object's outline now: as given until the parameters are changed in the page; then
+   * it follows the contacts (a circle: centred on the x-axis at O_M through P1 and P2; a
+   * rectangle: its sides through P1 and P2, tall enough to hold them), for the last valid
+   * grasp.  Returns ["circle", cx, r] or ["rectangle", xmin, xmax, h], or null. */
+  function shapeNow() {
+    const sh = state.shape;
+    if (!sh) return null;
+    const p = state.validP || state.p;
+    if (sh[0] === "circle") {
+      if (!state.follow) return ["circle", 0, sh[1]];
+      return ["circle", (p.x1 - p.x2) / 2, Math.hypot((p.x1 + p.x2) / 2, p.y)];
+    }
+    if (sh[0] === "rectangle") {
+      if (!state.follow) return ["rectangle", -sh[1] / 2, sh[1] / 2, sh[2]];
+      return ["rectangle", -p.x2, p.x1, Math.max(sh[2], 2.5 * p.y)];
+    }
+    return null;
   }
 
   // ------------------------------------------------------------------------------------
@@ -404,6 +431,31 @@
     pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
+  // O_M's subscript: the renderer writes the label's plain text into one text node; where
+  // it holds the marker SUB_M, the <text> gets text nodes and <tspan> subscripts instead
+  const SVG_NS = "http://www.w3.org/2000/svg";
+  const drawSub = board.renderer.updateInternalText.bind(board.renderer);
+  board.renderer.updateInternalText = function (t) {
+    drawSub(t);
+    const node = t.rendNode, text = t.plaintext;
+    if (!node || typeof text !== "string" || t.gcSubShown === text) return;
+    t.gcSubShown = text;
+    while (node.firstChild) node.removeChild(node.firstChild);
+    if (text.indexOf(SUB_M) < 0) {
+      node.appendChild(t.rendNodeText);
+      return;
+    }
+    text.split(SUB_M).forEach((part, i) => {
+      if (i > 0) {
+        const sub = document.createElementNS(SVG_NS, "tspan");
+        sub.setAttribute("baseline-shift", "-0.12em"); // within the line box
+        sub.setAttribute("font-size", "70%");
+        sub.textContent = "M";
+        node.appendChild(sub);
+      }
+      if (part) node.appendChild(document.createTextNode(part));
+    });
+  };
   // labels in the font of the other pictures: labelling.FONT_PT in a frame FRAME_PT wide
   // (at least 10 px: a page opened in a hidden frame starts with a board 0 px wide)
   const LFONT = Math.max(10, Math.round(LSPEC.font * board.canvasWidth / LSPEC.frame));
@@ -426,8 +478,11 @@
   }
   const num = (name, i) => () => (state.num && state.num[name] ? state.num[name][i] : NaN);
 
+  // Unicode has no subscript capital M: the label text carries U+2098 (ₘ) as a marker and
+  // the SVG shows a subscript "M" in its place (subscriptM, after each text update)
+  const SUB_M = "\u2098";
   const LABEL = (s) => s.replace(/(\d)/g, (d) => "₀₁₂₃₄₅₆₇₈₉"[+d])
-    .replace("_M", "ₘ").replace(/x$/, "ₓ");
+    .replace("_M", SUB_M).replace(/x$/, "ₓ");
 
   const labelled = []; // points whose labels are merged where they coincide ("O = Oₘ")
   const markers = []; // {name, el}: the unlabelled break points, which labels avoid
@@ -459,21 +514,21 @@
 
   const outline = reg(board.create("curve", [[0], [0]], {
     strokeColor: COL.object, fillColor: COL.objectfill, fillOpacity: 0.6, strokeWidth: 1.2,
-    highlight: false, fixed: true, needsRegularUpdate: false,
+    highlight: false, fixed: true,
   }), "O", { always: true, exists: () => !!state.shape });
   outline.updateDataArray = function () {
-    const sh = state.shape;
+    const sh = shapeNow();
     this.dataX = [];
     this.dataY = [];
     if (!sh) return;
     if (sh[0] === "circle") {
       for (let j = 0; j <= 128; j++) {
-        this.dataX.push(sh[1] * Math.cos(TWO_PI * j / 128));
-        this.dataY.push(sh[1] * Math.sin(TWO_PI * j / 128));
+        this.dataX.push(sh[1] + sh[2] * Math.cos(TWO_PI * j / 128));
+        this.dataY.push(sh[2] * Math.sin(TWO_PI * j / 128));
       }
     } else if (sh[0] === "rectangle") {
-      const w = sh[1] / 2, hh = sh[2] / 2;
-      this.dataX = [-w, w, w, -w, -w];
+      const hh = sh[3] / 2;
+      this.dataX = [sh[1], sh[2], sh[2], sh[1], sh[1]];
       this.dataY = [-hh, -hh, hh, hh, -hh];
     }
   };
@@ -642,7 +697,7 @@
     const b = board.getBoundingBox();
     const tol = 1e-9 * (b[2] - b[0]);
     const shown = labelled.filter((e) => entryOf.get(e.el).shown);
-    const where = shown.map((e) => getValue(e.name));
+    const where = shown.map((e) => drawValue(e.name));
     const taken = new Array(shown.length).fill(false);
     for (const e of labelled) e.group = null;
     for (let a = 0; a < shown.length; a++) {
@@ -760,14 +815,14 @@
     const pt = (p) => [(p[0] - x0) * s, (p[1] - y0) * s];
     const inside = (p) => p && p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1;
     const groups = labelled.filter((e) => e.group && entryOf.get(e.el).shown &&
-      inside(getValue(e.name)))
-      .map((e) => ({ e, names: e.group, at: getValue(e.name) }));
+      inside(drawValue(e.name)))
+      .map((e) => ({ e, names: e.group, at: drawValue(e.name) }));
     groups.sort((a, b) => GL.labelOrder(a.names, LSPEC) - GL.labelOrder(b.names, LSPEC));
     const special = extras.filter((x) => entryOf.get(x.el).shown && inside([x.el.X(), x.el.Y()]))
       .map((x) => ({ e: x, names: [x.text], at: [x.el.X(), x.el.Y()], text: x.text }));
     const texts = groups.map((g) => "$" + g.names.map(GL.tex).join(" = ") + "$");
-    const obstacles = markers.filter((m) => entryOf.get(m.el).shown && inside(getValue(m.name)))
-      .map((m) => pt(getValue(m.name)));
+    const obstacles = markers.filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
+      .map((m) => pt(drawValue(m.name)));
     const frame = [0, 0, LSPEC.frame, (y1 - y0) * s];
     lastInputs = { anchors: groups.map((g) => pt(g.at)), texts, opts: {
       curves: drawnCurves(box).map((c) => c.map(pt)), frame, obstacles } };
@@ -778,8 +833,8 @@
     const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
       spec: LSPEC, curves: lastInputs.opts.curves, frame, avoid: placed.map((p) => p.box),
       obstacles: obstacles.concat(lastInputs.anchors, unlabelled
-        .filter((m) => entryOf.get(m.el).shown && inside(getValue(m.name)))
-        .map((m) => pt(getValue(m.name)))),
+        .filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
+        .map((m) => pt(drawValue(m.name)))),
     });
     const all = groups.concat(special);
     placed.push(...more);
@@ -828,7 +883,6 @@
     for (const e of entries) {
       const idx = stepIndex[e.step];
       let show = idx !== undefined && idx <= cur;
-      if (show && !e.always && state.error) show = false;
       if (show && e.exists && !e.exists()) show = false;
       if (show !== e.shown) {
         e.el.setAttribute({ visible: show });
@@ -883,14 +937,18 @@
     range.addEventListener("input", () => {
       const t0 = performance.now();
       state.p[s.name] = parseFloat(range.value) * s.unit;
+      userChanged();
       refresh(t0, s.name);
     });
+    range.addEventListener("change", followView);
     box.addEventListener("change", () => {
       const v = parseFloat(box.value);
       if (Number.isFinite(v)) {
         const t0 = performance.now();
         state.p[s.name] = v * s.unit;
+        userChanged();
         refresh(t0, null);
+        followView();
       }
     });
     s.range = range;
@@ -900,7 +958,14 @@
   function syncControls(except) {
     for (const s of SLIDERS) {
       const v = state.p[s.name] / s.unit;
-      const r = String(Math.min(Math.max(v, s.min), s.max)), b = String(+v.toPrecision(6));
+      // the slider shows what the box shows: its range grows to take a value beyond it
+      // (y < 0 from a drag below the x-axis, a large x1), it is never clamped
+      if (Number.isFinite(v) && (v < s.min || v > s.max)) {
+        if (v < s.min) s.range.min = String((s.min = v));
+        if (v > s.max) s.range.max = String((s.max = v));
+        s.lastRange = null;
+      }
+      const r = String(v), b = String(+v.toPrecision(6));
       if (s.name !== except && r !== s.lastRange) {
         s.range.value = r;
         s.lastRange = r;
@@ -912,13 +977,25 @@
     }
   }
 
-  const f4 = (x) => (Number.isFinite(x) ? (+x.toPrecision(4)).toString() : "–");
-  const deg = (t) => f4(t / DEG) + "°";
+  /** Decimals that give 4 significant digits at ``scale`` (0 to 10). */
+  function decimalsFor(scale) {
+    if (!(scale > 0) || !Number.isFinite(scale)) return 3;
+    return Math.min(10, Math.max(0, 3 - Math.floor(Math.log10(scale))));
+  }
+  /** ``x`` to ``d`` decimals; a value within 1e-12·scale of 0 (zero to double precision,
+   * as C_4 = x_1 tan(φ_2 − ξ_2) of Fig. 6, where φ_2 = ξ_2) prints 0, and −0.000 prints 0.000. */
+  function fixed(x, d, scale) {
+    if (!Number.isFinite(x)) return "–";
+    if (Math.abs(x) <= 1e-12 * scale) return "0";
+    const t = x.toFixed(d);
+    return /^-0(\.0*)?$/.test(t) ? t.slice(1) : t.replace(/^-/, "−");
+  }
+  const deg = (t) => fixed(t / DEG, 1, 360) + "°";
   // the readouts: built once, then only their texts change
   const SUB = "₀₁₂₃₄";
   $("gc-info").innerHTML =
-    "<p id=\"gc-invalid-note\" hidden>(no diagram: the parameters violate the conditions " +
-    "of §2.2; see the message)</p><div id=\"gc-readout\">" +
+    "<p id=\"gc-invalid-note\" hidden>The parameters violate the conditions of §2.2 (see " +
+    "the message): the diagram shows the last valid grasp.</p><div id=\"gc-readout\">" +
     "<p>θ = <span data-r=\"theta\"></span>: k<sub>grasp</sub> = <span data-r=\"kgrasp\"></span>, " +
     "F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"Fint\"></span> " +
     "<small>(eqs. (25), (17))</small></p>" +
@@ -933,7 +1010,7 @@
     "<th>k<sub>n</sub>(θ)</th></tr>" +
     [1, 2, 3, 4].map((n) => `<tr style="color:${COL["circle" + n]}"><td>V${SUB[n]}</td>` +
       `<td data-r="S${n}"></td><td data-r="C${n}"></td><td data-r="k${n}"></td></tr>`).join("") +
-    "</table></div>";
+    "</table><p class=\"gc-small\" data-r=\"prec\"></p></div>";
   const readout = {};
   for (const el of $("gc-info").querySelectorAll("[data-r]")) {
     readout[el.getAttribute("data-r")] = { el, text: null };
@@ -945,43 +1022,102 @@
       r.text = text;
     }
   }
+  /** The message of graspcompass.Grasp for the page: its exact values "v ≈ r" as the rounded
+   * r alone, long decimals to 4 significant digits, >= and <= as ≥ and ≤. */
+  function roundedMessage(msg) {
+    return msg.replace(/(\S+) ≈ (\S+)/g, "$2")
+      .replace(/-?\d+\.\d{5,}(?:e[+-]?\d+)?/gi, (m) => fmtG(parseFloat(m), 4))
+      .replace(/>=/g, "≥").replace(/<=/g, "≤");
+  }
   let shownError;
   function renderInfo() {
     const q = state.num;
     if (state.error !== shownError) {
       $("gc-error").hidden = !state.error;
-      $("gc-error-text").textContent = state.error || "";
+      $("gc-error-text").textContent = state.error ? roundedMessage(state.error) : "";
       $("gc-invalid-note").hidden = !state.error;
       $("gc-readout").hidden = !!state.error;
       shownError = state.error;
     }
     if (state.error) return;
+    // lengths to 4 significant digits of the diagram's scale (the largest |V_n|, |P_i|),
+    // forces per unit F_e to 4 digits of scale / (x1 + x2): the precision the note states
+    const scale = Math.max(...q.V.map((v) => Math.hypot(v[0], v[1])), Math.hypot(...q.P1),
+      Math.hypot(...q.P2));
+    const D = state.p.x1 + state.p.x2;
+    const dl = decimalsFor(scale), df = decimalsFor(scale / D);
+    const len = (x) => fixed(x, dl, scale), force = (x) => fixed(x, df, scale / D);
+    put("prec", `Lengths to ${dl} decimal${dl === 1 ? "" : "s"}, forces to ${df}, angles ` +
+      "to 0.1°; a value within 10⁻¹² of the drawing's scale (the largest |V| or |P|) " +
+      "is zero to double precision and prints 0.");
     put("theta", deg(state.p.theta));
-    put("kgrasp", f4(q.kgrasp));
-    put("Fint", f4(q.Fint));
+    put("kgrasp", len(q.kgrasp));
+    put("Fint", force(q.Fint));
     put("wtheta", deg(q.worst.theta));
-    put("wk", f4(q.worst.k));
-    put("wF", f4(q.worst.Fint));
+    put("wk", len(q.worst.k));
+    put("wF", force(q.worst.Fint));
     put("wn", q.worst.n ? ` (V${SUB[q.worst.n]}, k = |V${SUB[q.worst.n]}|)` : "");
     put("btheta", deg(q.best.theta));
-    put("bk", f4(q.best.k));
-    put("bF", f4(q.best.Fint));
+    put("bk", len(q.best.k));
+    put("bF", force(q.best.Fint));
     for (let n = 1; n <= 4; n++) {
-      put("S" + n, f4(q.S[n - 1]));
-      put("C" + n, f4(q.C[n - 1]));
-      put("k" + n, f4(q.k[n - 1]));
+      put("S" + n, len(q.S[n - 1]));
+      put("C" + n, len(q.C[n - 1]));
+      put("k" + n, len(q.k[n - 1]));
     }
   }
 
+  /** A parameter changed in the page: the grasp is no longer the preset or the one given. */
+  function userChanged() {
+    if (state.follow) return;
+    state.follow = true;
+    const box = document.getElementById("gc-preset");
+    if (box) box.value = "";
+  }
+  const g3 = (x) => fmtG(x, 3).replace(/^-/, "−");
+  /** The heading: the given title until a parameter is changed, then the grasp's values. */
+  function renderHeading() {
+    const p = state.p;
+    const text = !state.follow && !(DATA.untitled && state.title === DATA.title) ? state.title
+      : `Your grasp: x₁ = ${g3(p.x1)}, x₂ = ${g3(p.x2)}, y = ${g3(p.y)}, ` +
+        `φ₁ = ${g3(p.phi1 / DEG)}°, φ₂ = ${g3(p.phi2 / DEG)}°, μ₁ = ${g3(p.mu1)}, ` +
+        `μ₂ = ${g3(p.mu2)}`;
+    const h = document.querySelector(".gc-header h1");
+    if (h && h.textContent !== text) h.textContent = text;
+  }
+
+  /** Put ``text`` into ``el`` with "k_grasp", "O_M", "X_{1}" as subscripts (DOM nodes,
+   * never HTML parsing): captions read as the paper prints them, not with underscores. */
+  function setSubscripted(el, text) {
+    el.textContent = "";
+    const re = /([A-Za-z])_(\{[^}]*\}|[A-Za-z0-9]+)/g;
+    let at = 0, m;
+    while ((m = re.exec(text)) !== null) {
+      el.appendChild(document.createTextNode(text.slice(at, m.index + 1)));
+      const sub = document.createElement("sub");
+      sub.textContent = m[2].replace(/^\{|\}$/g, "");
+      el.appendChild(sub);
+      at = m.index + m[0].length;
+    }
+    el.appendChild(document.createTextNode(text.slice(at)));
+  }
+  let shownPlaying = null;
   function renderStep() {
     const s = DATA.steps[state.step];
     $("gc-stepno").textContent = `Step ${s.index} / ${lastStep}`;
-    $("gc-caption-text").textContent = s.caption;
+    setSubscripted($("gc-caption-text"), s.caption);
     $("gc-ref").textContent = s.ref;
     $("gc-instrument").textContent = s.instrument;
     $("gc-first").disabled = $("gc-prev").disabled = state.step === 0;
     $("gc-next").disabled = $("gc-last").disabled = state.step === lastStep;
-    $("gc-play").textContent = state.playing ? "❚❚ pause" : "▶ play";
+    const playing = !!state.playing;
+    if (playing !== shownPlaying) {
+      // SVG icons, not glyphs (⏮, ⏭, ❚❚ are missing from many fonts)
+      $("gc-play").innerHTML = `<svg class="gc-icon" viewBox="0 0 16 16" aria-hidden="true">` +
+        `<path d="${playing ? "M3 2h4v12H3zM9 2h4v12H9z" : "M4 2v12l10-6z"}"/></svg>` +
+        `<span>${playing ? "pause" : "play"}</span>`;
+      shownPlaying = playing;
+    }
   }
 
   /** Finish an update that began at ``t0``: record how long it took (ms). */
@@ -990,13 +1126,12 @@
     state.last = dt;
     state.timings.push(dt);
     if (state.timings.length > 5000) state.timings.shift();
-    const el = $("gc-timing");
-    if (el) el.textContent = `update ${dt.toFixed(2)} ms`;
   }
 
   /** Recompute after a parameter change and redraw; ``t0`` from performance.now(). */
   function refresh(t0, fromSlider) {
     recompute();
+    renderHeading();
     P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
     P2.setPositionDirectly(JXG.COORDS_BY_USER, [-state.p.x2, state.p.y]);
     applyVisibility();
@@ -1011,6 +1146,7 @@
   // dragging P1 moves x1 and y, P2 moves x2 and y (JSXGraph redraws after the handler)
   function onDrag(which) {
     state.pendingT0 = performance.now();
+    userChanged();
     if (which === 1) {
       state.p.x1 = P1.X();
       state.p.y = P1.Y();
@@ -1021,6 +1157,7 @@
       P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
     }
     recompute();
+    renderHeading();
     applyVisibility();
     setVisualPass();
   }
@@ -1037,6 +1174,9 @@
   });
   P1.on("drag", () => onDrag(1));
   P2.on("drag", () => onDrag(2));
+  // the view follows a drag once it ends (refitting under the mouse would move the point)
+  P1.on("up", () => followView());
+  P2.on("up", () => followView());
   board.on("update", () => {
     if (state.pendingT0 !== null) {
       const t0 = state.pendingT0;
@@ -1116,11 +1256,12 @@
       scale = Math.max(scale, 2 * r);
       pts.push(q["X" + n], q["Y" + n]);
     }
-    const sh = state.shape;
+    const sh = shapeNow();
     if (sh) {
-      const w = sh[0] === "circle" ? sh[1] : sh[1] / 2, hh = sh[0] === "circle" ? sh[1] : sh[2] / 2;
-      pts.push([-w, -hh], [w, hh]);
-      scale = Math.max(scale, w, hh);
+      const [xa, xb, hh] = sh[0] === "circle" ? [sh[1] - sh[2], sh[1] + sh[2], sh[2]]
+        : [sh[1], sh[2], sh[3] / 2];
+      pts.push([xa, -hh], [xb, hh]);
+      scale = Math.max(scale, (xb - xa) / 2, hh);
     }
     const lim = 3 * (scale || 1);
     const clip = (v) => Math.min(Math.max(Number.isFinite(v) ? v : 0, -lim), lim);
@@ -1130,6 +1271,14 @@
     const cx = (Math.max(...xs) + Math.min(...xs)) / 2, cy = (Math.max(...ys) + Math.min(...ys)) / 2;
     const half = span / 2 + VIEW_MARGIN * span;
     return [cx - half, cx + half, cy - half, cy + half];
+  }
+  /** Refit the view when the diagram's box (the one rule) leaves the view, or fills less
+   * than 40 % of its width: after a drag, a slider or a typed value. */
+  function followView() {
+    const [x0, y1, x1, y0] = board.getBoundingBox();
+    const [a, b, c, d] = viewBox();
+    const w = x1 - x0, tol = 1e-6 * w;
+    if (a < x0 - tol || b > x1 + tol || c < y0 - tol || d > y1 + tol || b - a < 0.4 * w) fit();
   }
   function fit() {
     const [x0, x1, y0, y1] = viewBox();
@@ -1155,7 +1304,8 @@
     const t0 = performance.now();
     Object.assign(state.p, pr.params);
     state.shape = pr.shape;
-    document.querySelector(".gc-header h1").textContent = pr.title;
+    state.title = pr.title;
+    state.follow = false;
     refresh(t0, null);
     fit();
   });
@@ -1164,7 +1314,12 @@
   // The API for tests and embedding
   // ------------------------------------------------------------------------------------
   const PARAM_ALIASES = { θ: "theta", φ1: "phi1", φ2: "phi2", μ1: "mu1", μ2: "mu2" };
-  function getValue(name) {
+  /** Where a named point is drawn: the last valid grasp's, also while the parameters are
+   * invalid (getValue then gives null for the model's points). */
+  function drawValue(name) {
+    return getValue(name, true);
+  }
+  function getValue(name, drawing) {
     const key = PARAM_ALIASES[name] || name;
     if (NAMES.indexOf(key) >= 0) return state.p[key];
     if (key === "xi1" || key === "xi2") return Math.atan(state.p["mu" + key[2]]);
@@ -1173,7 +1328,7 @@
     if (key === "P1") return [state.p.x1, state.p.y];
     if (key === "P2") return [-state.p.x2, state.p.y];
     if (key === "O") return [0, 0];
-    const q = state.num;
+    const q = state.error && !drawing ? null : state.num;
     const known = /^(P[12]x|O_M|[XYVB]\d+|circle[1-4]|[SCk][1-4]|OMX[1-4]|OY[1-4]|H|worst|best|kgrasp|Fint)$/;
     if (!known.test(key)) throw new Error(`unknown name ${JSON.stringify(name)}`);
     if (!q) return null;
@@ -1199,6 +1354,7 @@
         }
       }
       for (const [k, v] of Object.entries(values)) state.p[PARAM_ALIASES[k] || k] = Number(v);
+      userChanged();
       refresh(t0, null);
       return state.error;
     },
@@ -1226,14 +1382,19 @@
       Object.assign({ spec: LSPEC }, opts || {})),
     /** The view box [xmin, xmax, ymin, ymax] of the one rule (layout.view_box). */
     viewBox: () => viewBox(),
+    /** The object's outline as drawn: ["circle", cx, r], ["rectangle", xmin, xmax, h] or
+     * null (it follows the contacts once a parameter is changed in the page). */
+    outline: () => shapeNow(),
+    /** Whether the objects of the step named ``name`` (e.g. "envelope", "V1") are drawn. */
+    drawn: (name) => entries.some((e) => e.step === name && e.shown),
     /** The failing inequality when the parameters are not a valid grasp, else null. */
     error: () => state.error,
     /** k_grasp(θ) (eq. (25)) and the four k_n(θ) (eq. (32)) for the current grasp. */
-    kGrasp: (theta) => (state.num ? kGraspOf(state.num.V, theta) : null),
-    k: (theta) => (state.num ? kOf(state.num.V, theta) : null),
+    kGrasp: (theta) => (state.num && !state.error ? kGraspOf(state.num.V, theta) : null),
+    k: (theta) => (state.num && !state.error ? kOf(state.num.V, theta) : null),
     /** The envelope: arcs, local maxima (the V_n on it, k = |V_n|), worst and best case. */
     envelope() {
-      const q = state.num;
+      const q = state.error ? null : state.num;
       if (!q) return null;
       return JSON.parse(JSON.stringify({ arcs: q.arcs, maxima: q.maxima, worst: q.worst,
         best: q.best }));
@@ -1250,7 +1411,7 @@
     pause: stopPlay,
     fit,
     /** The model alone (no drawing), for checks: validate(p), compute(p). */
-    model: { validate, compute, envelopeOf, fmtG, sympyFloat },
+    model: { validate, compute, envelopeOf, fmtG, sympyFloat, roundedMessage },
   };
   window.graspcompass = api;
 
@@ -1262,6 +1423,7 @@
   applyVisibility();
   renderInfo();
   renderStep();
+  renderHeading();
   fit();
   record(t0);
   document.body.setAttribute("data-ready", "1");

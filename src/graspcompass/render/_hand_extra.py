@@ -1,0 +1,282 @@
+"""The parts of a worksheet that make it readable: cone sides with their angles, labels
+clear of them, the read-off exercise (k_grasp(θ), F_int), a legend and the zoomed centre.
+
+* Each cone side is drawn long enough to lay a ruler on (25-40 mm) and marked with its
+  angle from the negative y-axis, clockwise at P1 and counter-clockwise at P2 (§2.2.1:
+  the normal makes φ_1 (CW) and φ_2 (CCW) with it, the sides φ_i ± ξ_i, ξ_i the apex
+  angle of eq. (1)).
+* The exercise: read k_grasp(θ) (eq. (25)) off the drawn envelope along e(θ) =
+  (sin θ, −cos θ) (eq. (26)), or k_n(θ) off the circle on O V_n (eq. (32)) when the
+  worksheet draws one V_n, and compute F_int = k / (x1 + x2) · F_e (eq. (17)).
+* Page 2: a legend of what is drawn and, when points crowd, the crowded region again at
+  a larger scale.
+
+Private to :mod:`graspcompass.render.handdrawing`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from matplotlib.artist import Artist
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
+from matplotlib.text import Text
+
+from ._hand_text import A4_MM
+from .figure import draw_construction
+from .theme import Theme
+
+#: Cone sides on the page: at least and at most this long, mm.
+SIDE_MM = (25.0, 40.0)
+#: Points closer than this fraction of the drawing's width crowd: page 2 shows them zoomed.
+CROWD = 0.06
+
+
+def side_length(grasp: Any, box: tuple[float, float, float, float], scale: float) -> float:
+    """Length of the drawn cone sides, units: 0.9 |P1 P2|, kept within :data:`SIDE_MM`."""
+    d = math.dist((float(grasp.P1.x), float(grasp.P1.y)), (float(grasp.P2.x), float(grasp.P2.y)))
+    return min(max(0.9 * d, SIDE_MM[0] / scale), SIDE_MM[1] / scale)
+
+
+def _deg(x: float) -> str:
+    t = f"{x:.1f}"
+    return (t[:-2] if t.endswith(".0") else t).replace("-", "−") + "°"
+
+
+def cone_angles(ax: Axes, grasp: Any, length: float, font: float = 7.0) -> list[Artist]:
+    """At each contact the negative y-axis direction (dotted, the reference of §2.2.1) and,
+    at the end of each cone side, its angle φ_i ± ξ_i from it (CW at P1, CCW at P2)."""
+    arts: list[Artist] = []
+    for i, sides in ((1, (1, 3)), (2, (2, 4))):
+        P = grasp.P1 if i == 1 else grasp.P2
+        px, py = float(P.x), float(P.y)
+        arts += ax.plot([px, px], [py, py - 0.55 * length], color="#555555", lw=0.6,
+                        ls=(0, (1, 1.5)), zorder=2.6)
+        phi, xi = float(grasp.params[f"phi{i}"]), float(grasp.params[f"xi{i}"])
+        for n, sign in zip(sides, (1, -1)):
+            d = grasp.side_direction(n)
+            dx, dy = float(d.x), float(d.y)
+            k = length / math.hypot(dx, dy)
+            end = (px + k * dx, py + k * dy)
+            sym = "+" if sign > 0 else "-"
+            label = f"$\\varphi_{i} {sym} \\xi_{i}$ = {_deg(math.degrees(phi + sign * xi))}"
+            ux, uy = dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)
+            arts.append(ax.annotate(
+                label, end, xytext=(4 * ux, 4 * uy), textcoords="offset points",
+                gid=f"side{n}",
+                ha="left" if ux > 0.3 else "right" if ux < -0.3 else "center",
+                va="bottom" if uy > 0.3 else "top" if uy < -0.3 else "center",
+                fontsize=font, zorder=6, annotation_clip=False,
+                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8)))
+            arts[-1].gc_side = (px, py, k * dx, k * dy)
+    _spread(ax, [a for a in arts if hasattr(a, "gc_side")])
+    return arts
+
+
+def _spread(ax: Axes, labels: list[Any]) -> None:
+    """Angle labels that overlap one placed before move inwards along their side (to 3/4,
+    then 1/2 of its length)."""
+    renderer = ax.figure.canvas.get_renderer()
+    placed: list[Any] = []
+    for t in labels:
+        px, py, dx, dy = t.gc_side
+        for f in (1.0, 0.75, 0.5, 0.35):
+            t.xy = (px + f * dx, py + f * dy)
+            bb = t.get_window_extent(renderer)
+            if not any(bb.overlaps(o) for o in placed):
+                break
+        placed.append(t.get_window_extent(renderer))
+
+
+def _hits(bb: Any, pts: np.ndarray) -> bool:
+    return bool(np.any((pts[:, 0] > bb.x0) & (pts[:, 0] < bb.x1)
+                       & (pts[:, 1] > bb.y0) & (pts[:, 1] < bb.y1)))
+
+
+def clear_labels(ax: Axes, labels: list[Text], lines: list[Line2D],
+                 others: list[Artist]) -> None:
+    """Move each label (an annotation in offset points) off ``lines`` (the cone sides)
+    and ``others``: the first of eight places round its point that is clear, else it stays."""
+    renderer = ax.figure.canvas.get_renderer()
+    pts = [ax.transData.transform(np.column_stack([
+        np.linspace(*ln.get_xdata()[:2], 60), np.linspace(*ln.get_ydata()[:2], 60)]))
+        for ln in lines]
+    cloud = np.vstack(pts) if pts else np.zeros((0, 2))
+    boxes = [a.get_window_extent(renderer) for a in others]
+    places = [((5, 4), "left", "bottom"), ((-5, 4), "right", "bottom"), ((0, 6), "center",
+              "bottom"), ((5, -4), "left", "top"), ((-5, -4), "right", "top"),
+              ((0, -6), "center", "top"), ((7, 0), "left", "center"),
+              ((-7, 0), "right", "center")]
+    for t in labels:
+        def clear(t: Text = t) -> bool:
+            bb = t.get_window_extent(renderer).expanded(1.05, 1.1)
+            return not _hits(bb, cloud) and not any(bb.overlaps(o) for o in boxes)
+        if clear():
+            continue
+        start = (t.xyann, t.get_ha(), t.get_va())
+        for off, ha, va in places:
+            t.xyann, _ = off, t.set_ha(ha)
+            t.set_va(va)
+            if clear():
+                break
+        else:
+            t.xyann, _ = start[0], t.set_ha(start[1])
+            t.set_va(start[2])
+        boxes.append(t.get_window_extent(renderer))
+
+
+def exercise(construction: Any, num: dict[str, Any]) -> dict[str, Any] | None:
+    """The read-off exercise: θ (a multiple of 15° near the worst orientation, where k > 0),
+    what to read (k_grasp, or k_n of the one circle drawn), its value and F_int / F_e."""
+    names = set(construction.names)
+    grasp = construction.grasp
+    D = float(grasp.x1 + grasp.x2)
+    if "envelope" in names:
+        V = [num[f"V{n}"] for n in (1, 2, 3, 4)]
+        what, n = "k_grasp", None
+    else:
+        ns = [n for n in (1, 2, 3, 4) if f"circle{n}" in names]
+        if not ns:
+            return None
+        n = ns[0]
+        V = [num[f"V{n}"]]
+        what = f"k_{n}"
+    worst = max(V, key=lambda v: math.hypot(*v))
+    # e(θ) = (sin θ, −cos θ) along V: θ = atan2(S, −C), eq. (26)
+    t_worst = math.degrees(math.atan2(worst[0], -worst[1])) % 360
+    theta = (15 * round(t_worst / 15)) % 360
+    t = math.radians(theta)
+    k = max([0.0] + [v[0] * math.sin(t) - v[1] * math.cos(t) for v in V])  # (25), (32)
+    return dict(theta=theta, what=what, n=n, k=k, F=k / D, D=D)
+
+
+def exercise_text(ex: dict[str, Any]) -> str:
+    """The instruction of page 1 (numbered "read")."""
+    th = ex["theta"]
+    if ex["n"] is None:
+        curve, sym = "the envelope", "$k_{grasp}$"
+        ref = "eq. (25)"
+    else:
+        curve, sym = f"the circle on $OV_{ex['n']}$", f"$k_{ex['n']}$"
+        ref = "eq. (32)"
+    return (f"Read off: draw the ray from $O$ at $\\theta$ = {th}° (from the negative y-axis, "
+            f"counter-clockwise: the direction $e(\\theta)$ of $F_e$, eq. (26)) to {curve}; "
+            f"its length is {sym}({th}°) [{ref}].  Compute "
+            f"$F_{{int}} = k\\,/\\,(x_1 + x_2) \\cdot F_e$ [eq. (17)].")
+
+
+def exercise_answer(ex: dict[str, Any], scale: float) -> str:
+    sym = "k_{grasp}" if ex["n"] is None else f"k_{ex['n']}"
+    return (f"Read off at $\\theta$ = {ex['theta']}°: ${sym}$ = {ex['k']:.3f} "
+            f"({ex['k'] * scale:.1f} mm on the page), so $F_{{int}}$ = {ex['k']:.3f} / "
+            f"{ex['D']:.3f} $\\cdot F_e$ = {ex['F']:.3f} $F_e$ (eqs. (25)/(32), (17)).")
+
+
+def draw_ray(ax: Axes, ex: dict[str, Any], theme: Theme, reach: float) -> list[Artist]:
+    """The ray e(θ) from O and the point read off at distance k (page 2)."""
+    t = math.radians(ex["theta"])
+    e = (math.sin(t), -math.cos(t))
+    arts = ax.plot([0, reach * e[0]], [0, reach * e[1]], color="black", lw=0.8, ls="--",
+                   zorder=4.5)
+    arts += ax.plot([ex["k"] * e[0]], [ex["k"] * e[1]], "s", ms=4, mfc="white",
+                    mec="black", mew=0.9, zorder=6)
+    return arts
+
+
+def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme,
+           font: float) -> Any:
+    """A legend of what page 2 draws, in ``where`` (x0, y0, w, h as figure fractions)."""
+    c = [theme.circle_color(n) for n in (1, 2, 3, 4)]
+    handles = [
+        Line2D([], [], color="black", lw=1.0, label="cone side (given), extended"),
+        Line2D([], [], color="#888888", lw=0.8, ls="--", label="perpendicular to a side"),
+        Line2D([], [], color=c[0], lw=0.8, marker=">", ms=4,
+               label=r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$"),
+        Line2D([], [], color=c[0], lw=0.6, ls=":", label=r"transfer to $O$: $V_n$"),
+        Line2D([], [], color=c[0], lw=1.0, ls="--", label=r"circle on $OV_n$: $k_n(\theta)$"),
+        Line2D([], [], color=theme.envelope_color, lw=2.0,
+               label=r"envelope $k_{grasp}(\theta)$"),
+        Line2D([], [], ls="none", marker="o", ms=3, mfc="white", mec="black",
+               label=r"break point $B_{nm}$"),
+        Line2D([], [], color="black", lw=0.8, ls="--", marker="s", ms=4, mfc="white",
+               label=r"ray $e(\theta)$, the value read off"),
+        Patch(facecolor=theme.cone_face, alpha=theme.cone_alpha, label="friction cone"),
+    ]
+    return fig.legend(handles=handles, loc="upper left", bbox_to_anchor=where, frameon=False,
+                      fontsize=font, title="Legend", title_fontsize=font + 0.5,
+                      handlelength=2.4, borderaxespad=0)
+
+
+def crowded_box(num: dict[str, Any], names: list[str],
+                box: tuple[float, float, float, float]) -> tuple[float, ...] | None:
+    """The square around the points that lie within :data:`CROWD` of the view's width of
+    another (not coinciding) point, padded, or None when nothing crowds."""
+    span = box[1] - box[0]
+    pts = [tuple(num[n]) for n in names if n in num]
+    crowd = []
+    for a in pts:
+        for b in pts:
+            d = math.dist(a, b)
+            if 1e-9 * span < d < CROWD * span:
+                crowd.append(a)
+                break
+    if len(crowd) < 3:
+        return None
+    # the densest part: the crowded points within 0.12 of the view of the crowded point
+    # with the most such neighbours
+    near = [[b for b in crowd if math.dist(a, b) <= 0.12 * span] for a in crowd]
+    crowd = max(near, key=len)
+    if len(crowd) < 3:
+        return None
+    xs, ys = [p[0] for p in crowd], [p[1] for p in crowd]
+    half = max(max(xs) - min(xs), max(ys) - min(ys), 0.05 * span) / 2 * 1.6
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    if half > 0.3 * span:
+        return None
+    return (cx - half, cx + half, cy - half, cy + half)
+
+
+def page2_extras(fig: Figure, ax: Axes, sub: Any, num: dict[str, Any],
+                  box: tuple[float, float, float, float], theme: Any, font: float,
+                  room: tuple[float, float, float]) -> list[Any]:
+    """Below the solution rows (``room``: x0, top, width in mm): the crowded centre at a
+    larger scale (marked on the drawing by a thin frame) and the legend."""
+    W, H = A4_MM
+    x0, top, width = room
+    height = top - 12.0
+    if height < 30:
+        return []
+    names = [s.name for s in sub.steps if s.kind == "point" and s.role != "break_point"]
+    zoom = crowded_box(num, names, box)
+    legend_w = 72.0
+    arts: list[Any] = []
+    if zoom is not None and width - legend_w >= 50:
+        side = min(height - 5, width - legend_w - 6, 80.0)
+        inset = fig.add_axes((x0 / W, (top - 5 - side) / H, side / W, side / H))
+        drawn = draw_construction(sub, ax=inset, num=num, box=zoom,
+                                  theme=theme.with_(font_size=theme.font_size * 0.85))
+        for key in ("cone1", "cone2"):  # the centre, not the given cones
+            for a in drawn.pop(key, []):
+                a.remove()
+        inset.set_xticks([])
+        inset.set_yticks([])
+        for a in inset.get_children():  # labels and arrows of points outside stay out
+            a.set_clip_on(True)
+            a.set_clip_box(inset.bbox)
+            if isinstance(a, Text) and hasattr(a, "xy"):
+                a.set_annotation_clip(True)
+        k = (box[1] - box[0]) / (zoom[1] - zoom[0])
+        inset.set_title(f"The framed centre, enlarged {k:.1f}×", fontsize=font, loc="left",
+                        pad=3)
+        arts += [inset, ax.add_patch(Rectangle((zoom[0], zoom[2]), zoom[1] - zoom[0],
+                                               zoom[3] - zoom[2], fill=False, lw=0.6,
+                                               ec="#555555", zorder=7))]
+        x0 += side + 6
+    arts.append(legend(fig, (x0 / W, (top - height) / H, legend_w / W, height / H), theme,
+                             font))
+    return arts
