@@ -78,7 +78,7 @@ def num(text: str, names: dict) -> mpmath.mpf:
         raise ValueError(f"cannot read {ast.dump(n)}")
     t = text.strip()
     scale = 1
-    if t.endswith("deg"):
+    if t.endswith("deg") and not t[:-3].rstrip().endswith(("*", "/")):
         t, scale = t[:-3], mpmath.pi / 180
     return ev(ast.parse(t, mode="eval").body) * scale
 
@@ -194,7 +194,130 @@ def _step(op, ins, vals):
         return _dot(_sub(ins[1], ins[0]), d) / mpmath.sqrt(_dot(d, d))
     if op == "point_from_lengths":
         return (vals[0] * ins[0], vals[1] * ins[1])
+    return _class_step(op, ins, vals)
+
+
+# -- a geometry class's operations (issue 24), from their definitions in docs/language.md --
+def _dist2(p, q):
+    return _dot(_sub(p, q), _sub(p, q))
+
+
+def _on_circle_or_fail(p, c):
+    if not _small(_dist2(p, c[1]) - c[2]):
+        raise Undefined("the point is not on the circle")
+
+
+def _turned(p, centre, theta):
+    u = _sub(p, centre)
+    c, s = mpmath.cos(theta), mpmath.sin(theta)
+    return (centre[0] + c * u[0] - s * u[1], centre[1] + s * u[0] + c * u[1])
+
+
+def _class_step(op, ins, vals):
+    if op == "second_intersection":
+        c1, c2, known = ins
+        pts = [_line_circle(_radical(c1, c2), c1, b) for b in (0, 1)]
+        if not (_on(known, c1) and _on(known, c2)):
+            raise Undefined("the known point is not common to the circles")
+        far = [p for p in pts if not (_small(p[0] - known[0]) and _small(p[1] - known[1]))]
+        return far[0] if far else pts[0]
+    if op == "point_on_line":
+        ln = ins[0]
+        return (ln[1][0] + vals[0] * ln[2][0], ln[1][1] + vals[0] * ln[2][1])
+    if op == "point_on_circle":
+        _on_circle_or_fail(ins[1], ins[0])
+        return _turned(ins[1], ins[0][1], 2 * mpmath.atan(vals[0]))
+    if op == "circumcircle":
+        p, q, r = ins
+        if _small(_cross(_sub(q, p), _sub(r, p))):
+            raise Undefined("collinear points")
+        m = mpmath.matrix([[2 * (q[0] - p[0]), 2 * (q[1] - p[1])],
+                           [2 * (r[0] - p[0]), 2 * (r[1] - p[1])]])
+        rhs = mpmath.matrix([_dot(q, q) - _dot(p, p), _dot(r, r) - _dot(p, p)])
+        x = mpmath.lu_solve(m, rhs)
+        centre = (x[0], x[1])
+        return _circle(centre, _dist2(p, centre))
+    if op == "circle_radius":
+        return _circle(ins[0], vals[0] ** 2)
+    if op == "circle_compass":
+        return _circle(ins[0], _dist2(ins[1], ins[2]))
+    if op == "bisector":
+        a, b, c = ins
+        u, v = _sub(a, b), _sub(c, b)
+        if _small(_dot(u, u)) or _small(_dot(v, v)):
+            raise Undefined("an angle without an arm")
+        nu, nv = mpmath.sqrt(_dot(u, u)), mpmath.sqrt(_dot(v, v))
+        return _line(b, (u[0] / nu + v[0] / nv, u[1] / nu + v[1] / nv))
+    if op == "tangent_at":
+        c, p = ins
+        _on_circle_or_fail(p, c)
+        r = _sub(p, c[1])
+        return _line(p, (-r[1], r[0]))
+    if op == "tangent_point":
+        p, c = ins
+        o = c[1]
+        thales = _circle(((p[0] + o[0]) / 2, (p[1] + o[1]) / 2), _dist2(p, o) / 4)
+        pts = [_line_circle(_radical(c, thales), c, b) for b in (0, 1)]
+        if _small(_dist2(pts[0], pts[1])) and len(vals) and int(vals[0]) == 1:
+            raise Undefined("one tangent only")
+        left = [q for q in pts if _cross(_sub(p, o), _sub(q, o)) > 0]
+        right = [q for q in pts if q not in left]
+        return (left + right)[int(vals[0])]
+    if op == "rotate":
+        return _turned(ins[0], ins[1], vals[0])
+    if op == "homothety":
+        p, c = ins
+        return (c[0] + vals[0] * (p[0] - c[0]), c[1] + vals[0] * (p[1] - c[1]))
+    if op == "point_reflect":
+        p, c = ins
+        return (2 * c[0] - p[0], 2 * c[1] - p[1])
+    if op == "radical_axis":
+        return _radical(ins[0], ins[1])
     raise ValueError(f"the evaluator does not know {op}")
+
+
+def _angle_mod_pi(a, b, c):
+    """The directed angle from ray BA to ray BC, reduced to [0, pi)."""
+    u, v = _sub(a, b), _sub(c, b)
+    if _small(_dot(u, u)) or _small(_dot(v, v)):
+        raise Undefined("an angle without an arm")
+    return mpmath.atan2(_cross(u, v), _dot(u, v)) % mpmath.pi
+
+
+def _same_mod_pi(x, y) -> bool:
+    d = (x - y) % mpmath.pi
+    return d < mpmath.mpf(10) ** -30 or mpmath.pi - d < mpmath.mpf(10) ** -30
+
+
+def _class_claim(kind, words, value, env):
+    if kind == "congruent":
+        a, b, c, d = (env[w] for w in words)
+        return _small(mpmath.sqrt(_dist2(a, b)) - mpmath.sqrt(_dist2(c, d)))
+    if kind == "equal_angles":
+        p = [env[w] for w in words]
+        return _same_mod_pi(_angle_mod_pi(*p[:3]), _angle_mod_pi(*p[3:]))
+    if kind == "angles":
+        p = [env[w] for w in words]
+        total = sum(_angle_mod_pi(*p[i:i + 3]) for i in range(0, len(p), 3))
+        return _same_mod_pi(total, num(value, env))
+    if kind == "tangent":
+        a, b = env[words[0]], env[words[1]]
+        if a[0] == "circle" and b[0] == "circle":
+            d = mpmath.sqrt(_dist2(a[1], b[1]))
+            if _small(d):
+                raise Undefined("concentric circles")
+            r1, r2 = mpmath.sqrt(a[2]), mpmath.sqrt(b[2])
+            return _small(d - r1 - r2) or _small(d - abs(r1 - r2))
+        ln, c = (a, b) if a[0] == "line" else (b, a)
+        f = _foot(c[1], ln)
+        return _small(mpmath.sqrt(_dist2(f, c[1])) - mpmath.sqrt(c[2]))
+    if kind == "ratio":
+        a, b, c, d = (env[w] for w in words)
+        cd = mpmath.sqrt(_dist2(c, d))
+        if _small(cd):
+            raise Undefined("a ratio to a zero length")
+        return _small(mpmath.sqrt(_dist2(a, b)) / cd - num(value, env))
+    raise ValueError(f"the evaluator does not know the claim {kind}")
 
 
 def _on(p, obj):
@@ -237,6 +360,11 @@ def _claim(body: str, env: dict) -> bool:
                    for k, c in enumerate(pts) if i < j < k)
     if kind == "concyclic":
         return _concyclic([env[w] for w in words[1:]])
+    if kind in ("congruent", "equal_angles", "tangent"):
+        return _class_claim(kind, words[1:], None, env)
+    if kind in ("ratio", "angles"):
+        head, _, value = body.partition("==")
+        return _class_claim(kind, head.split()[1:], value.strip(), env)
     if kind == "concurrent":
         lines = [env[w] for w in words[1:]]
         for i in range(len(lines)):
@@ -312,7 +440,10 @@ def evaluate(text: str, point: dict) -> list[bool | None]:
                      and not w.isdigit()][: {"point": 0, "line_with_direction": 1,
                                              "line_at_angle": 1, "point_from_lengths": 2,
                                              "signed_length": 3, "intersect_line_circle": 2,
-                                             "intersect_circles": 2}.get(op, 2)]
+                                             "intersect_circles": 2, "point_on_line": 1,
+                                             "circumcircle": 3, "circle_radius": 1,
+                                             "circle_compass": 3, "bisector": 3,
+                                             "second_intersection": 3}.get(op, 2)]
         if any(n in broken for n in ins_names):
             broken.add(name)
             continue

@@ -284,9 +284,15 @@ def test_concurrency_through_a_doubled_line_is_never_refuted() -> None:
 
 
 def test_an_undecidable_sign_is_undecided_not_proved() -> None:
-    """(a − 1)² + 1 > 0 is true, but no factor has a sign of its own: UNDECIDED, exit 3."""
-    r = check_program(parse(BASE + "claim sign a**2 - 2*a + 2 > 0\n"))
+    """a⁴ − a + 1 > 0 is true, but no factor has a sign of its own and it is no square
+    sum of degree 2: UNDECIDED, exit 3.  (a − 1)² + 1 > 0, a positive semi-definite
+    quadratic, is PROVED where it does not vanish (issue 24), the condition stated."""
+    r = check_program(parse(BASE + "claim sign a**4 - a + 1 > 0\n"))
     assert r.claims[0].status is Status.UNDECIDED and r.exit_status == 3
+    r = check_program(parse(BASE + "claim sign a**2 - 2*a + 2 > 0\n"))
+    assert r.claims[0].status is Status.PROVED
+    assert r.claims[0].result.conditions == ("a**2 - 2*a + 2 ≠ 0",) or any(
+        "a**2 - 2*a + 2" in t for t in r.claims[0].result.implied)
 
 
 def test_a_step_degenerate_for_every_parameter_is_refused() -> None:
@@ -334,7 +340,7 @@ def files(tmp_path: Path) -> dict[str, Path]:
     out = {}
     for name, text in {"good.gc": HEAD, "wrong.gc": _mutated("X1 = meet side1 x-axis",
                                                              "X1 = meet side3 x-axis"),
-                       "undecided.gc": BASE + "claim sign a**2 - 2*a + 2 > 0\n",
+                       "undecided.gc": BASE + "claim sign a**4 - a + 1 > 0\n",
                        "syntax.gc": "A = point (0, 0)\nB = midpoint A Q\n"}.items():
         (tmp_path / name).write_text(text)
         out[name] = tmp_path / name

@@ -73,11 +73,12 @@ def test_fig6_labels_around_O_apart() -> None:
     """The clause of issue 12 §4: O = O_M = Y4, P1x = V4, Y1, X1 ... readable."""
     c = internal_force_diagram(Grasp.preset("fig6"))
     boxes, _ = _svg_labels(to_svg(c))
-    assert "O" in boxes
-    near = [n for n, b in boxes.items() if n != "O"
-            and abs(b[0] - boxes["O"][0]) < 120 and abs(b[1] - boxes["O"][1]) < 120]
+    o = "O" if "O" in boxes else "inset-O"  # named in the zoomed inset where they crowd
+    assert o in boxes
+    near = [n for n, b in boxes.items() if n != o
+            and abs(b[0] - boxes[o][0]) < 120 and abs(b[1] - boxes[o][1]) < 120]
     assert near  # labels crowd around O, and none covers O's
-    assert all(_overlap(boxes["O"], boxes[n]) == 0.0 for n in near)
+    assert all(_overlap(boxes[o], boxes[n]) == 0.0 for n in near)
 
 
 def test_tikz_labels_have_the_svg_anchors(construction) -> None:
@@ -90,6 +91,9 @@ def test_tikz_labels_have_the_svg_anchors(construction) -> None:
     for lab in scene.labels:
         g = root.find(f".//s:g[@id='{lab.names[0]}']", NS)
         t, c = g.find("s:text", NS), g.find("s:circle", NS)
+        if t is None:  # named in the SVG's zoomed inset only
+            assert scene.inset is not None and lab not in scene.inset.main
+            continue
         dx = side[t.get("text-anchor")]
         f = float(t.get("font-size"))
         mid = float(t.get("y")) + 0.3 * f - 0.675 * f  # centre of the placement's box
@@ -102,7 +106,7 @@ def test_tikz_labels_have_the_svg_anchors(construction) -> None:
         assert node.group(1) == ANCHORS[lab.direction]
         assert (float(node.group(2)), float(node.group(3))) == pytest.approx(lab.at, abs=1e-9)
         found += 1
-    assert found >= 10
+    assert found >= 8
 
 
 def _tex(names: tuple[str, ...]) -> str:

@@ -64,6 +64,19 @@ J = intersect_circles c1 c3 (0)    # x = 1, left of A->B: y = +sqrt(3)
 K = second_intersection c1 c3 J
 s = signed_length A B l
 V = point_from_lengths s s (-1, a)
+D = point (4, 0)
+P1 = point_on_line m (2)          # (0, 2) + 2 (1, 1)
+P2 = point_on_circle c1 B (1)     # B turned by 2 atan 1 = pi/2
+cc = circumcircle A B C           # centre (1, 1), r^2 = 2
+cr = circle_radius C (3)
+cs = circle_compass C A B         # radius |AB| = 2
+bs = bisector B A C               # u |v| + v |u| = (4, 4)
+ta = tangent_at c1 B              # the radius (2, 0) turned: (0, 2)
+Tp = tangent_point D c1 (0)        # polar x = 1, left of the ray A->D: y = +sqrt(3)
+rt = rotate B A (pi/2)
+ho = homothety B C (1/2)          # C + (B - C)/2
+pr = point_reflect B C            # 2C - B
+ra = radical_axis c1 c3           # x = 1
 Pq = parallel_to_points A B C      # through C along B - A = (2, 0)
 T = quarter_turn B C               # B - C = (2, -2) turned clockwise: (-2, -2), plus C
 """
@@ -75,7 +88,12 @@ EXPECTED = {
     "X": Point(-2, 0), "R": Point(0, -2), "c1": Circle(Point(0, 0), 4),
     "c2": Circle(Point(1, 0), 1), "c3": Circle(Point(2, 0), 4), "I0": Point(2, 0),
     "I1": Point(-2, 0), "J": Point(1, sqrt(3)), "K": Point(1, -sqrt(3)), "s": sp.Integer(2),
-    "V": Point(-2, 6), "Pq": Line(Point(0, 2), Point(2, 0)), "T": Point(-2, 0),
+    "V": Point(-2, 6), "P1": Point(2, 4), "P2": Point(0, 2),
+    "cc": Circle(Point(1, 1), 2), "cr": Circle(Point(0, 2), 9), "cs": Circle(Point(0, 2), 4),
+    "bs": Line(Point(0, 0), Point(4, 4)), "ta": Line(Point(2, 0), Point(0, 2)),
+    "Tp": Point(1, sqrt(3)), "rt": Point(0, 2), "ho": Point(1, 1), "pr": Point(-2, 4),
+    "ra": Line(Point(1, 0), Point(0, 2)),
+    "Pq": Line(Point(0, 2), Point(2, 0)), "T": Point(-2, 0),
 }
 PRESETS = ("fig6", "table1a", "table1b", "table1c")
 
@@ -101,7 +119,9 @@ def test_every_operation_of_the_kernel_has_a_record():
                 "perpendicular", "parallel", "foot", "midpoint", "meet", "reflect",
                 "circle_through", "circle_on_diameter", "intersect_line_circle",
                 "intersect_circles", "second_intersection", "signed_length",
-                "point_from_lengths"}
+                "point_from_lengths", "point_on_line", "point_on_circle", "circumcircle",
+                "circle_radius", "circle_compass", "bisector", "tangent_at", "tangent_point",
+                "rotate", "homothety", "point_reflect", "radical_axis"}
     expected |= {"parallel_to_points", "quarter_turn"}  # issue 25: the n-contact recipe
     assert set(OPERATIONS) == expected
     assert all(OPS[k] is op.function for k, op in OPERATIONS.items())

@@ -212,6 +212,9 @@ def _page_labels(page: Any, preset: str, step: int) -> list[tuple[tuple[str, ...
             if lab["names"][0] not in ("H", "worst", "best")]
 
 
+@pytest.mark.xfail(strict=True, reason="issue 23: the scene places its labels by "
+                   "graspcompass.scene.fit (hard rules, leaders, inset); the page still runs "
+                   "the JavaScript port of labelling.place: to be ported (web half, issue 23b)")
 @pytest.mark.parametrize("preset", PRESETS)
 def test_page_labels_as_the_svg_and_tikz(explorer: Any, preset: str) -> None:
     c = internal_force_diagram(Grasp.preset(preset))

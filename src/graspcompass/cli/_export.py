@@ -135,6 +135,12 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     with writing(path):
         if fmt == "tikz" and args.fragment:
             write_tikz(c, path, standalone=False, title=title)
+        elif (fmt == "ggb" and not made.paper and made.program is not None and c.grasp is None
+              and args.step is None and all(p.name in (made.values or {})
+                                            for p in made.program.params)):
+            from ..export.geogebra import write_ggb  # the file's sliders and Prove per claim
+
+            write_ggb(c, path, title, made.program, made.values)
         else:
             export(c, path, fmt, title=title)
     if not getattr(args, "quiet", False):

@@ -137,6 +137,9 @@ class FileConstruction:
     construction: Any
     paper: bool
     shown: str
+    #: The parsed file and its parameters' values (sliders and claims of a .ggb).
+    program: Any = None
+    values: Any = None
 
 
 def paper_only(made: FileConstruction, what: str) -> None:
@@ -242,7 +245,7 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
             if p.name in GRASP_PARAMS and g is not None:  # g is None: no grasp parameter
                 values[p.name] = g.params[p.name]
         c = replay(program, values)
-    return FileConstruction(c, is_paper, shown)
+    return FileConstruction(c, is_paper, shown, program, dict(values))
 
 
 def without_sliders(made: FileConstruction) -> Any:

@@ -22,6 +22,7 @@ from .program import (
     _NAME,
     _RELATIONS,
     _TOKEN,
+    _VALUE_CLAIMS,
     _Checker,
     _Problem,
 )
@@ -225,6 +226,16 @@ def _claim(body: str, chk: _Checker, number: int, err: Any) -> None:
     try:
         if not words:
             raise _Problem("an empty claim", "kind")
+        if words[0] in _VALUE_CLAIMS:
+            head, eq, value = rest.partition("==")
+            if not eq or not value.strip():
+                raise _Problem(f"write claim {words[0]} NAMES... == VALUE", "kind")
+            offs = [mm.start() + start + 1 for mm in re.finditer(r"\S+", head)]
+            for i, o in enumerate(offs[1:]):
+                slots[("term", i)] = slots[("input", i)] = o
+            slots[("term", len(offs) - 1)] = start + len(head) + 3
+            chk.claim(words[0], [*head.split()[1:], value.strip()], "==", under, number)
+            return
         if words[0] in (*_CLAIM_KINDS, "on"):
             offs = [mm.start() + start + 1 for mm in re.finditer(r"\S+", rest)]
             for i, o in enumerate(offs[1:]):

@@ -37,6 +37,7 @@ import sympy as sp
 from .. import geometry as geo
 from ..geometry import Circle, Line, NoIntersectionError, Point
 from ..geometry.trig import sincos
+from . import _ops_class as _cls
 
 __all__ = ["KINDS", "OPERATIONS", "PARAM_KINDS", "ROLES", "Operation", "kind_of"]
 
@@ -251,6 +252,44 @@ _ALL: tuple[Operation, ...] = (
     _op("point_from_lengths", _from_lengths, "compass", "number number", "number number",
         "point", "{name}: the point ({p0}·{0}, {p1}·{1})", "({p0} * {0}, {p1} * {1})", "point",
         "The point (sx·a, sy·b) from two lengths: V_n = (−O_M X_n, −O Y_n), eq. (30)/(33)."),
+    # -- a geometry class's operations (issue 24) -----------------------------------------
+    _op("point_on_line", _cls.point_on_line, "mark", "line", "number", "point",
+        "{name}: a point of {0} (parameter {p0})", None, "point",
+        "The point P + t·d of a line through P along d: a free point of the line."),
+    _op("point_on_circle", _cls.point_on_circle, "mark", "circle point", "number", "point",
+        "{name}: a point of {0} ({1} turned by 2 atan {p0})", None, "point",
+        "A point of a circle: its point A turned about the centre by θ, tan(θ/2) = t."),
+    _op("circumcircle", _cls.circumcircle, "compass", "point point point", "", "circle",
+        "{name}: the circle through {0}, {1} and {2}", "Circle[{0}, {1}, {2}]", "circle",
+        "The circle through three points that are not collinear."),
+    _op("circle_radius", _cls.circle_radius, "compass", "point", "number", "circle",
+        "{name}: the circle about {0} with radius {p0}", "Circle[{0}, {p0}]", "circle",
+        "The circle with a centre and a radius r ≠ 0."),
+    _op("circle_compass", _cls.circle_compass, "compass", "point point point", "", "circle",
+        "{name}: the circle about {0} with radius {1}{2}", "Circle[{0}, Segment[{1}, {2}]]",
+        "circle", "The circle about a centre with the radius of a segment AB (Euclid I.2)."),
+    _op("bisector", _cls.bisector, "ruler", "point point point", "", "line",
+        "{name}: the bisector of the angle {0}{1}{2}", "AngularBisector[{0}, {1}, {2}]", "line",
+        "The internal bisector of the angle ABC, through B."),
+    _op("tangent_at", _cls.tangent_at, "ruler", "circle point", "", "line",
+        "{name}: the tangent to {0} at {1}", "OrthogonalLine[{1}, Line[Center[{0}], {1}]]",
+        "line", "The tangent to a circle at its point: perpendicular to the radius."),
+    _op("tangent_point", _cls.tangent_point, "mark", "point circle", "branch", "point",
+        "{name}: the point of contact of a tangent from {0} to {1} (branch {p0})", None,
+        "point", "Where a tangent from an outside point touches a circle; branch 0 lies "
+        "left of the ray from the centre to the point."),
+    _op("rotate", _cls.rotate, "compass", "point point", "angle", "point",
+        "{name}: {0} turned about {1} by {p0}", "Rotate[{0}, {p0}, {1}]", "point",
+        "A point turned about a centre by an angle (radians, counter-clockwise)."),
+    _op("homothety", _cls.homothety, "ruler", "point point", "number", "point",
+        "{name}: the image of {0} by the homothety of centre {1}, ratio {p0}",
+        "Dilate[{0}, {p0}, {1}]", "point", "C + k(P − C): the homothety of centre C, ratio k."),
+    _op("point_reflect", _cls.point_reflect, "compass", "point point", "", "point",
+        "{name}: the reflection of {0} in the point {1}", "Mirror[{0}, {1}]", "point",
+        "2C − P: the reflection in a point (a half turn about it)."),
+    _op("radical_axis", _cls.radical_axis, "ruler", "circle circle", "", "line",
+        "{name}: the radical axis of {0} and {1}", "RadicalAxis[{0}, {1}]", "line",
+        "The points of equal power with respect to two circles with distinct centres."),
 )
 
 

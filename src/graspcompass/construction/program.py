@@ -71,9 +71,13 @@ HYPOTHESES: Mapping[str, str] = {
 _ENVELOPE = "envelope"
 _RELATIONS = ("==", "!=", ">=", "<=", ">", "<")
 _CLAIM_KINDS = {"collinear": ("point", 3), "concurrent": ("line", 3),
-                "concyclic": ("point", 4), "perpendicular": ("line", 2), "parallel": ("line", 2)}
+                "concyclic": ("point", 4), "perpendicular": ("line", 2), "parallel": ("line", 2),
+                "congruent": ("point", 4), "equal_angles": ("point", 6), "tangent": (None, 2)}
+#: Claims of names followed by ``== VALUE``: a ratio of lengths, a sum of directed angles.
+_VALUE_CLAIMS = {"ratio": 4, "angles": 3}
 _KEYWORDS = frozenset({"param", "hypothesis", "let", "claim", "ref", "role", "key", "optional",
-                       "under", "sign", "on", *_CLAIM_KINDS, "point", "pi", "deg"})
+                       "under", "sign", "on", *_CLAIM_KINDS, *_VALUE_CLAIMS, "point", "pi",
+                       "deg"})
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:-[A-Za-z0-9_]+)*")
 _TOKEN = re.compile(r"""\s*(?:(?P<string>"(?:[^"\\\n]|\\.)*")|(?P<word>[A-Za-z_][A-Za-z0-9_]*
     (?:-[A-Za-z0-9_]+)*)|(?P<int>\d+)|(?P<rel>==|!=|>=|<=|>|<|=)|(?P<open>\())""", re.X)
@@ -405,7 +409,9 @@ class _Checker:
             if h not in self.hypotheses:
                 raise _Problem(f"unknown hypothesis {h!r} (declare it: hypothesis {h})",
                                ("under", i))
-        if kind in _CLAIM_KINDS or kind == "on":
+        if kind in _VALUE_CLAIMS:
+            c = self._value_claim(kind, terms, under, line)
+        elif kind in _CLAIM_KINDS or kind == "on":
             need, least = _CLAIM_KINDS.get(kind, (None, 2))
             many = kind in ("collinear", "concurrent", "concyclic")
             if len(terms) < least or (not many and len(terms) != least):
@@ -414,6 +420,11 @@ class _Checker:
             for i, t in enumerate(terms):
                 self._input(t, need if kind != "on" else ("point" if i == 0 else None),
                             f"claim {kind}", i)
+            if kind == "tangent" and (sorted(self.kinds[t] for t in terms) not in (
+                    ["circle", "line"], ["circle", "circle"])):
+                raise _Problem("claim tangent takes a line and a circle or two circles, got "
+                               f"the {self.kinds[terms[0]]} {terms[0]!r} and the "
+                               f"{self.kinds[terms[1]]} {terms[1]!r}", ("term", 0))
             if kind == "on" and self.kinds[terms[1]] not in ("line", "circle"):
                 raise _Problem(f"wrong kind of input: claim on takes a line or a circle as "
                                f"input 2, got the {self.kinds[terms[1]]} {terms[1]!r}",
@@ -440,6 +451,24 @@ class _Checker:
                            f"{', '.join(_CLAIM_KINDS)}", "kind")
         self.claims.append(c)
         return c
+
+    def _value_claim(self, kind: str, terms: tuple, under: tuple, line: int) -> Claim:
+        """``ratio A B C D == k`` (|AB| = k·|CD|), ``angles A B C [D E F ...] == a`` (the
+        directed angles ABC + DEF + ... ≡ a mod π)."""
+        *names, value = terms
+        group = _VALUE_CLAIMS[kind]
+        if not names or len(names) % group or (kind == "ratio" and len(names) != 4):
+            what = "4 names" if kind == "ratio" else "names in groups of three (A B C: the "\
+                "angle at B)"
+            raise _Problem(f"claim {kind} takes {what} before ==, got {len(names)}",
+                           ("term", len(names)))
+        for i, t in enumerate(names):
+            self._input(t, "point", f"claim {kind}", i)
+        self.pending = []
+        v = self.term(value, ("term", len(names)))
+        if not isinstance(v, Value):
+            raise _Problem(f"claim {kind} compares with a value after ==", ("term", len(names)))
+        return Claim(kind, (*(Ref(t) for t in names), v), "==", under, line, self._pending())
 
     def program(self, file: str) -> Program:
         return Program(tuple(self.params), tuple(self.hypotheses), tuple(self.lets),
@@ -482,7 +511,10 @@ def _format(p: Program) -> str:
         parts.append(_quote(s.caption))
         out.append(" ".join(parts))
     for c in p.claims:
-        if c.kind in ("equal", "sign"):
+        if c.kind in _VALUE_CLAIMS:
+            line = (f"claim {c.kind} " + " ".join(_term(t) for t in c.terms[:-1]) + " == "
+                    + _term(c.terms[-1]))
+        elif c.kind in ("equal", "sign"):
             body = f"{_term(c.terms[0])} {c.relation} {_term(c.terms[1])}"
             line = f"claim {'sign ' * (c.kind == 'sign')}{body}"
         else:

@@ -115,7 +115,7 @@ def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition
     if op == "point":
         if with_grasp and role == "contact" and n in (1, 2):  # the contacts, by role
             return Definition("point", exp="(x_1, y_P)" if n == 1 else "(-x_2, y_P)")
-        if all(sp.sympify(p) == 0 for p in step.params):
+        if with_grasp and all(sp.sympify(p) == 0 for p in step.params):
             return Definition("point", "Intersect", ("xAxis", "yAxis"))
         return Definition("point", exp=_pair(*step.params))
     if op == "line_with_direction":
@@ -150,4 +150,75 @@ def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition
         k = _envelope()
         return Definition("curvecartesian", "CurveCartesian",
                           (f"({k}) sin(t)", f"-({k}) cos(t)", "t", "0", "2 pi"), var="t")
+    made = _class_definition(step, steps, ins)
+    if made is not None:
+        return made
     raise ValueError(f"no GeoGebra definition for the operation {op!r} of step {name!r}")
+
+
+def _left_of(a: str, b: str, p: str) -> str:
+    """GeoGebra text: the point p lies left of the directed line from a to b."""
+    return (f"(x({b}) - x({a})) (y({p}) - y({a})) - (y({b}) - y({a})) (x({p}) - x({a})) > 0")
+
+
+def _branch(first: str, second: str, test: str) -> Definition:
+    """The kernel's branch among GeoGebra's two intersections: ``first`` if ``test`` (in
+    the point ``_P_``), else ``second``."""
+    return Definition("point", "If", (test.replace("_P_", first), first, second))
+
+
+def _class_definition(step: Any, steps: dict[str, Any], ins: tuple[str, ...]
+                      ) -> Definition | None:
+    """The operations of a geometry class (issue 24) and the intersections, branch by
+    branch as the kernel takes them (``If`` between GeoGebra's two intersection points)."""
+    op = step.op
+    params = tuple(step.params)
+    simple = {
+        "parallel": ("line", "Line", (ins[1], ins[0]) if len(ins) == 2 else ins),
+        "reflect": ("point", "Mirror", ins),
+        "circle_through": ("conic", "Circle", ins),
+        "circumcircle": ("conic", "Circle", ins),
+        "circle_compass": ("conic", "Circle", (ins[0], f"Segment[{ins[1]}, {ins[2]}]")
+                           if len(ins) == 3 else ins),
+        "bisector": ("line", "AngularBisector", ins),
+        "tangent_at": ("line", "OrthogonalLine", (ins[1], f"Line[Center[{ins[0]}], {ins[1]}]")
+                       if len(ins) == 2 else ins),
+        "point_reflect": ("point", "Mirror", ins),
+        "point_on_line": ("point", "Point", ins[:1]),
+        "point_on_circle": ("point", "Point", ins[:1]),
+    }
+    if op in simple:
+        kind, cmd, args = simple[op]
+        return Definition(kind, cmd, tuple(args))
+    if op == "circle_radius":
+        return Definition("conic", "Circle", (ins[0], ggb_number(params[0])))
+    if op == "rotate":
+        return Definition("point", "Rotate", (ins[0], ggb_number(params[0]), ins[1]))
+    if op == "homothety":
+        return Definition("point", "Dilate", (ins[0], ggb_number(params[0]), ins[1]))
+    if op == "radical_axis":  # (C1 − C2)·X = −(power difference)/2: the kernel's scale,
+        c1, c2 = (f"Center[{c}]" for c in ins)  # so a point on it keeps its parameter
+        return Definition("line", exp=(
+            f"(x({c1}) - x({c2})) x + (y({c1}) - y({c2})) y = -(Radius[{ins[0]}]^2 - "
+            f"Radius[{ins[1]}]^2 + x({c2})^2 + y({c2})^2 - x({c1})^2 - y({c1})^2) / 2"))
+    k = int(params[0]) if params else 0
+    if op == "intersect_circles":
+        one, two = (f"Intersect[{ins[0]}, {ins[1]}, {i}]" for i in (1, 2))
+        first, second = (one, two) if k == 0 else (two, one)
+        test = _left_of(f"Center[{ins[0]}]", f"Center[{ins[1]}]", "_P_")
+        return _branch(first, second, test if k == 0 else test.replace("> 0", "< 0"))
+    if op == "tangent_point":
+        polar = f"Polar[{ins[0]}, {ins[1]}]"
+        one, two = (f"Intersect[{polar}, {ins[1]}, {i}]" for i in (1, 2))
+        test = _left_of(f"Center[{ins[1]}]", ins[0], "_P_")
+        return _branch(one, two, test if k == 0 else test.replace("> 0", "< 0"))
+    if op == "intersect_line_circle":
+        # branch 0 lies further along the line's direction (the kernel's, at export)
+        line = steps[step.inputs[0]].obj
+        dx, dy = (ggb_number(sp.sympify(v).evalf(17)) for v in (line.direction.x,
+                                                               line.direction.y))
+        one, two = (f"Intersect[{ins[0]}, {ins[1]}, {i}]" for i in (1, 2))
+        sign = ">" if k == 0 else "<"
+        test = f"(x({one}) - x({two})) ({dx}) + (y({one}) - y({two})) ({dy}) {sign} 0"
+        return Definition("point", "If", (test, one, two))
+    return None

@@ -47,6 +47,7 @@ from .. import labelling
 from ..geometry import Line, Point
 from ..geometry.numeric import to_float
 from ..palette import rgb
+from . import _ggb_program as _prog
 from ._ggb_defs import _SIDE, SLIDERS, definition, ggb_label
 from ._scene import build_scene, label_tex
 
@@ -194,8 +195,13 @@ def _view(construction: Construction, scene: Any) -> list[str]:
             "</euclidianView>"]
 
 
-def ggb_xml(construction: Construction, title: str | None = None) -> str:
+def ggb_xml(construction: Construction, title: str | None = None, program: Any = None,
+            values: Any = None) -> str:
     """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
+
+    With the construction file's ``program`` and its parameters' ``values`` (the
+    replay's), the parameters are sliders and each claim is a ``Prove``
+    (:mod:`graspcompass.export._ggb_program`).
 
     Raises
     ------
@@ -220,9 +226,15 @@ def ggb_xml(construction: Construction, title: str | None = None) -> str:
            f"<construction {_a(title=text, author='graspcompass', date='')}>"]
     if grasp is not None:
         out += _sliders(grasp)
+    live = {}
+    if program is not None and values is not None and grasp is None:
+        out += _prog.sliders(program, values)
+        live = _prog.symbolic_values(program)
     sides_done: dict[int, int] = {1: 0, 2: 0}
     for s in construction.steps:
         d = definition(s, steps, grasp is not None)
+        if s.name in live:
+            d = _prog.live(d, s, live[s.name])
         label = ggb_label(s.name)
         transfer = _transfer(s, steps) if grasp is not None else None
         if transfer is not None:  # V_n by compass (Mirror, Circle), not by coordinates
@@ -249,6 +261,8 @@ def ggb_xml(construction: Construction, title: str | None = None) -> str:
                         if t.role == "contact" and t.n}
             if sides_done[i] == 2 and {1, 2} <= set(contacts):  # once both sides exist
                 out += _cone(i, contacts)
+    if program is not None and grasp is None:
+        out += _prog.claim_statements(program)
     out += ["</construction>", "</geogebra>"]
     return "\n".join(out) + "\n"
 
@@ -326,7 +340,8 @@ def _has_symbols(v: Any) -> bool:
     return bool(getattr(v, "free_symbols", ()))
 
 
-def to_ggb(construction: Construction, title: str | None = None) -> bytes:
+def to_ggb(construction: Construction, title: str | None = None, program: Any = None,
+           values: Any = None) -> bytes:
     """The ``.ggb`` archive (zip bytes) of ``construction``.
 
     Examples
@@ -339,11 +354,13 @@ def to_ggb(construction: Construction, title: str | None = None) -> bytes:
     buf = io.BytesIO()
     with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
         z.writestr("geogebra_javascript.js", "function ggbOnInit() {}\n")
-        z.writestr("geogebra.xml", ggb_xml(construction, title).encode("utf-8"))
+        z.writestr("geogebra.xml", ggb_xml(construction, title, program, values)
+                   .encode("utf-8"))
     return buf.getvalue()
 
 
-def write_ggb(construction: Construction, path: Any, title: str | None = None) -> Path:
+def write_ggb(construction: Construction, path: Any, title: str | None = None, program: Any = None,
+              values: Any = None) -> Path:
     """Write :func:`to_ggb` to ``path``; returns the path.
 
     Raises
@@ -354,7 +371,7 @@ def write_ggb(construction: Construction, path: Any, title: str | None = None) -
     """
     from ..boundary._output import write_output
 
-    return write_output(path, lambda: to_ggb(construction, title))
+    return write_output(path, lambda: to_ggb(construction, title, program, values))
 
 
 def read_ggb_xml(source: Any) -> str:

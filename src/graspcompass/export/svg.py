@@ -11,11 +11,12 @@ its exact value, so a browser shows them on hover.  The envelope k_grasp
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape, quoteattr
 
-from ..labelling import FONT_PT, FRAME_PT
-from ._scene import COLORS, Label, Scene, build_scene, exact_text, label_tex
+from ..scene.labelling import FONT_PT, FRAME_PT
+from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
 
 if TYPE_CHECKING:
     from ..construction import Construction
@@ -28,6 +29,10 @@ _MARGIN_TOP = 40.0
 #: (:data:`graspcompass.labelling.FONT_PT` in :data:`~graspcompass.labelling.FRAME_PT`).
 _FONT = FONT_PT * _SIZE / FRAME_PT
 _ANCHOR = {1: "start", -1: "end", 0: "middle"}
+#: The inset's side and its gap to the diagram, in user units: the font keeps its size
+#: (:data:`graspcompass.scene.picture.INSET_PT` points of the placement).
+_INSET = INSET_PT * _SIZE / FRAME_PT
+_GAP = 24.0
 
 
 def _label_svg(name: str) -> str:
@@ -40,27 +45,52 @@ def _label_svg(name: str) -> str:
 
 
 class _Map:
-    def __init__(self, scene: Scene) -> None:
-        self.x0, self.x1, self.y0, self.y1 = scene.box
-        self.s = _SIZE / (self.x1 - self.x0)
+    """Frame of the paper -> SVG user units: ``box`` onto a square ``size`` at ``(left, top)``."""
 
-    def __call__(self, xy: tuple[float, float]) -> str:
-        return f"{(xy[0] - self.x0) * self.s:.3f},{(self.y1 - xy[1]) * self.s + _MARGIN_TOP:.3f}"
+    def __init__(self, box: tuple[float, float, float, float], size: float = _SIZE,
+                 left: float = 0.0, top: float = _MARGIN_TOP) -> None:
+        self.x0, self.x1, self.y0, self.y1 = box
+        self.s = size / (self.x1 - self.x0)
+        self.left, self.top = left, top
+
+    def xy(self, p: tuple[float, float]) -> tuple[float, float]:
+        return ((p[0] - self.x0) * self.s + self.left, (self.y1 - p[1]) * self.s + self.top)
+
+    def __call__(self, p: tuple[float, float]) -> str:
+        x, y = self.xy(p)
+        return f"{x:.3f},{y:.3f}"
+
+
+#: The white halo round a label's glyphs (SVG paint order: the stroke under the fill).
+_HALO = 'paint-order="stroke" stroke="white" stroke-width="3.2" stroke-linejoin="round"'
 
 
 def _label_text(lab: Label, m: _Map, label: str) -> str:
     """The ``<text>`` of a label at its place (:attr:`Scene.labels`): its side of the point.
 
     The placement's box is ``1.35`` font sizes high; the baseline sits ``0.3`` of
-    the font size above its bottom (room for the subscripts).
+    the font size above its bottom (room for the subscripts).  A white halo keeps
+    the curves behind it from running through the glyphs.
     """
-    x, y = (float(v) for v in m(lab.at).split(","))
+    x, y = m.xy(lab.at)
     dy = lab.direction[1]
     h = 1.35 * _FONT
     bottom = y if dy == 1 else y + h if dy == -1 else y + h / 2  # SVG's y points down
     return (f'<text x="{x:.3f}" y="{bottom - 0.3 * _FONT:.3f}" '
             f'text-anchor="{_ANCHOR[lab.direction[0]]}" font-size="{_FONT:.2f}" '
-            f'font-style="italic">{label}</text>')
+            f'font-style="italic" {_HALO}>{label}</text>')
+
+
+def _leader(lab: Label, m: _Map) -> str:
+    """A thin line from the point to its label's box, for a label set far from it."""
+    if not lab.leader:
+        return ""
+    (x0, y0, x1, y1) = lab.box
+    px, py = lab.point
+    near = (min(max(px, x0), x1), min(max(py, y0), y1))
+    a, b = m.xy(lab.point), m.xy(near)
+    return (f'<line class="leader" x1="{a[0]:.3f}" y1="{a[1]:.3f}" x2="{b[0]:.3f}" '
+            f'y2="{b[1]:.3f}" stroke="{COLORS["point"]}" stroke-width="0.6"/>')
 
 
 def _arc_path(scene: Scene, m: _Map) -> str:
@@ -81,18 +111,92 @@ def _arc_path(scene: Scene, m: _Map) -> str:
     return " ".join(parts) + " Z"
 
 
-def to_svg(construction: Construction, title: str | None = None) -> str:
+def _drawing(scene: Scene, m: _Map, tip: Callable[[str], str], pre: str) -> list[str]:
+    """The object, the cones, the envelope, the lines, lengths and circles in ``m``."""
+    out = []
+    if scene.outline is not None:
+        kind, dims = scene.outline
+        style = f'fill="{COLORS["objectfill"]}" stroke="{COLORS["object"]}" stroke-width="1.2"'
+        if kind == "circle":
+            cx, cy = m.xy((0, 0))
+            out.append(f'<circle id="{pre}object" cx="{cx:.3f}" cy="{cy:.3f}" '
+                       f'r="{dims[0] * m.s:.3f}" {style}/>')
+        else:
+            w, h = dims
+            x, y = m.xy((-w / 2, h / 2))
+            out.append(f'<rect id="{pre}object" x="{x:.3f}" y="{y:.3f}" width="{w * m.s:.3f}" '
+                       f'height="{h * m.s:.3f}" {style}/>')
+    path = _arc_path(scene, m)
+    if path:
+        out.append(f'<g id="{pre}envelope" class="envelope">{tip("envelope")}<path d="{path}" '
+                   f'fill="{COLORS["fill"]}" fill-opacity="0.35" stroke="{COLORS["envelope"]}" '
+                   'stroke-width="3" stroke-linejoin="round"/></g>')
+    for i, cone in enumerate(scene.cones, start=1):  # over the envelope's light filling
+        pts = " ".join(m(p) for p in cone)
+        out.append(f'<polygon id="{pre}cone{i}" points="{pts}" fill="{COLORS["cone"]}" '
+                   'fill-opacity="0.35" stroke="none"/>')
+    for name, role, a, b in scene.lines:
+        dash = ' stroke-dasharray="6,3"' if role == "perp" else ""
+        width = 1.0 if role == "perp" else 1.4
+        (x0, y0), (x1, y1) = m.xy(a), m.xy(b)
+        out.append(f'<g id={quoteattr(pre + name)} class="line {role}">{tip(name)}<line '
+                   f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
+                   f'stroke="{COLORS[role]}" stroke-width="{width}"{dash}/></g>')
+    for name, a, b in scene.lengths:
+        (x0, y0), (x1, y1) = m.xy(a), m.xy(b)
+        out.append(f'<g id={quoteattr(pre + name)} class="length">{tip(name)}<line '
+                   f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
+                   f'stroke="{COLORS["length"]}" stroke-width="0.8" marker-end="url(#head)"/></g>')
+    for name, n, c, r in scene.circles:
+        x, y = m.xy(c)
+        out.append(f'<g id={quoteattr(pre + name)} class="circle">{tip(name)}<circle '
+                   f'cx="{x:.3f}" cy="{y:.3f}" r="{r * m.s:.3f}" fill="none" '
+                   f'stroke="{COLORS.get(f"circle{n}", "black")}" stroke-width="1.4" '
+                   'stroke-dasharray="8,4"/></g>')
+    return out
+
+
+def _points(scene: Scene, m: _Map, labels: tuple[Label, ...], tip: Callable[[str], str],
+            pre: str, box: tuple[float, float, float, float]) -> list[str]:
+    """The markers of the points in ``box`` and the ``labels``, each with a halo."""
+    by_name = {lab.names[0]: lab for lab in labels}
+    out = []
+    for names, xy in scene.points:
+        if not (box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]):
+            continue
+        x, y = m.xy(xy)
+        small = names[0] in scene.small
+        marker = (f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{2.2 if small else 3.2}" '
+                  f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')
+        lab = by_name.get(names[0])
+        text = ""
+        if lab is not None and not small:
+            text = _leader(lab, m) + _label_text(
+                lab, m, lab.join(_label_svg))
+        out.append(f'<g id={quoteattr(pre + names[0])} class="point">{tip(names[0])}{marker}'
+                   f'{text}</g>')
+    return out
+
+
+def to_svg(construction: Construction, title: str | None = None,
+           step: int | None = None) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
+
+    ``step`` draws the picture after that step of the protocol
+    (:meth:`graspcompass.scene.picture.Scene.upto`): in the whole construction's
+    frame, nothing made after it drawn or named.  Where points crowd, a zoomed
+    inset of their region (:attr:`Scene.inset`) stands right of the diagram, with
+    the labels that have no room in the whole view.
 
     Examples
     --------
     >>> from graspcompass import Grasp, internal_force_diagram
     >>> text = to_svg(internal_force_diagram(Grasp.preset("fig6")))
-    >>> text.startswith("<?xml") and 'viewBox="0 0 800' in text and 'id="envelope"' in text
+    >>> text.startswith("<?xml") and 'viewBox="0 0 ' in text and 'id="envelope"' in text
     True
     """
-    scene = build_scene(construction, title)
-    m = _Map(scene)
+    scene = scene_of(construction, title).upto(step)
+    m = _Map(scene.box)
     steps = {s.name: s for s in construction.steps}
 
     def tip(name: str) -> str:
@@ -100,61 +204,45 @@ def to_svg(construction: Construction, title: str | None = None) -> str:
         text = f"{s.index} {name}: {s.caption} [{s.ref}] = {exact_text(s.obj)}"
         return f"<title>{escape(text)}</title>"
 
+    inset = scene.inset
+    width = _SIZE + (_GAP + _INSET if inset is not None else 0.0)
     height = _SIZE + _MARGIN_TOP
     out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {_SIZE:.0f} '
-           f'{height:.0f}" width="160mm" height="{160 * height / _SIZE:.1f}mm" '
-           'font-family="DejaVu Serif, Times, serif">',
+           f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {width:.0f} '
+           f'{height:.0f}" width="{160 * width / _SIZE:.1f}mm" '
+           f'height="{160 * height / _SIZE:.1f}mm" font-family="DejaVu Serif, Times, serif">',
            f"<title>{escape(scene.title or 'internal force diagram')}</title>",
-           f'<rect x="0" y="0" width="{_SIZE:.0f}" height="{height:.0f}" fill="white"/>',
+           f'<rect x="0" y="0" width="{width:.0f}" height="{height:.0f}" fill="white"/>',
            f'<text x="{_SIZE / 2:.0f}" y="26" text-anchor="middle" font-size="17">'
-           f"{escape(scene.title)}</text>"]
-    if scene.outline is not None:
-        kind, dims = scene.outline
-        style = f'fill="{COLORS["objectfill"]}" stroke="{COLORS["object"]}" stroke-width="1.2"'
-        if kind == "circle":
-            out.append(f'<circle id="object" cx="{m((0, 0)).split(",")[0]}" '
-                       f'cy="{m((0, 0)).split(",")[1]}" r="{dims[0] * m.s:.3f}" {style}/>')
-        else:
-            w, h = dims
-            x, y = m((-w / 2, h / 2)).split(",")
-            out.append(f'<rect id="object" x="{x}" y="{y}" width="{w * m.s:.3f}" '
-                       f'height="{h * m.s:.3f}" {style}/>')
-    for i, cone in enumerate(scene.cones, start=1):
-        pts = " ".join(m(p) for p in cone)
-        out.append(f'<polygon id="cone{i}" points="{pts}" fill="{COLORS["cone"]}" '
-                   'fill-opacity="0.35" stroke="none"/>')
-    path = _arc_path(scene, m)
-    if path:
-        out.append(f'<g id="envelope" class="envelope">{tip("envelope")}<path d="{path}" '
-                   f'fill="{COLORS["fill"]}" fill-opacity="0.35" stroke="{COLORS["envelope"]}" '
-                   'stroke-width="3" stroke-linejoin="round"/></g>')
-    for name, role, a, b in scene.lines:
-        dash = ' stroke-dasharray="6,3"' if role == "perp" else ""
-        width = 1.0 if role == "perp" else 1.4
-        (x0, y0), (x1, y1) = m(a).split(","), m(b).split(",")
-        out.append(f'<g id={quoteattr(name)} class="line {role}">{tip(name)}<line x1="{x0}" '
-                   f'y1="{y0}" x2="{x1}" y2="{y1}" stroke="{COLORS[role]}" '
-                   f'stroke-width="{width}"{dash}/></g>')
-    for name, a, b in scene.lengths:
-        (x0, y0), (x1, y1) = m(a).split(","), m(b).split(",")
-        out.append(f'<g id={quoteattr(name)} class="length">{tip(name)}<line x1="{x0}" y1="{y0}" '
-                   f'x2="{x1}" y2="{y1}" stroke="{COLORS["length"]}" stroke-width="0.8" '
-                   'marker-end="url(#head)"/></g>')
-    for name, n, c, r in scene.circles:
-        x, y = m(c).split(",")
-        out.append(f'<g id={quoteattr(name)} class="circle">{tip(name)}<circle cx="{x}" cy="{y}" '
-                   f'r="{r * m.s:.3f}" fill="none" stroke="{COLORS.get(f"circle{n}", "black")}" '
-                   'stroke-width="1.4" stroke-dasharray="8,4"/></g>')
-    for names, xy in scene.points:
-        x, y = m(xy).split(",")
-        small = names[0] in scene.small
-        label = " = ".join(_label_svg(n) for n in names)
-        marker = (f'<circle cx="{x}" cy="{y}" r="{2.2 if small else 3.2}" '
-                  f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')
-        lab = scene.label_of(names[0])
-        text = "" if small or lab is None else _label_text(lab, m, label)
-        out.append(f'<g id={quoteattr(names[0])} class="point">{tip(names[0])}{marker}{text}</g>')
+           f"{escape(scene.title)}</text>",
+           '<g class="panel" id="main">']
+    out += _drawing(scene, m, tip, "")
+    if inset is not None:
+        (a, b), (c, d) = m.xy((inset.box[0], inset.box[3])), m.xy((inset.box[1], inset.box[2]))
+        out.append(f'<rect class="region" x="{a:.3f}" y="{b:.3f}" width="{c - a:.3f}" '
+                   f'height="{d - b:.3f}" fill="none" stroke="{COLORS["axis"]}" '
+                   'stroke-width="0.8" stroke-dasharray="3,2"/>')
+    out += _points(scene, m, scene.labels if inset is None else inset.main, tip, "", scene.box)
+    out.append("</g>")
+    if inset is not None:
+        left = _SIZE + _GAP
+        z = _Map(inset.box, _INSET, left, _MARGIN_TOP)
+        out.append(f'<clipPath id="inset-clip"><rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" '
+                   f'width="{_INSET:.3f}" height="{_INSET:.3f}"/></clipPath>')
+        out.append('<g class="panel" id="inset">'
+                   '<g id="inset-drawing" class="drawing" clip-path="url(#inset-clip)">'
+                   f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+                   f'height="{_INSET:.3f}" fill="white"/>')
+        out += _drawing(scene, z, tip, "inset-")
+        out.append("</g>")
+        out += _points(scene, z, inset.labels, tip, "inset-", inset.box)
+        out.append(f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+                   f'height="{_INSET:.3f}" fill="none" stroke="{COLORS["axis"]}" '
+                   'stroke-width="0.8"/>')
+        out.append(f'<text x="{left + _INSET / 2:.1f}" y="{_MARGIN_TOP + _INSET + 22:.1f}" '
+                   f'text-anchor="middle" font-size="14">the dashed square, '
+                   f'{z.s / m.s:.1f}'
+                   '× larger</text></g>')
     out.insert(2, '<defs><marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
                'markerWidth="6" markerHeight="6" orient="auto-start-reverse">'
                f'<path d="M0,0 L10,5 L0,10 z" fill="{COLORS["length"]}"/></marker></defs>')

@@ -20,7 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ._scene import COLORS, Scene, build_scene, exact_text, label_tex
+from ..scene.picture import COLORS, Scene, exact_text, scene_of
 
 if TYPE_CHECKING:
     from ..construction import Construction
@@ -192,7 +192,7 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
     True
     """
-    scene = build_scene(construction, title)
+    scene = scene_of(construction, title)
     box = scene.box
     pad = 0.1 * (box[1] - box[0])
     out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
@@ -261,8 +261,9 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         if not small:
-            text = " = ".join(label_tex(n) for n in names)
+            text = ""
             lab = scene.label_of(names[0])
+            text = lab.tex() if lab is not None else text
             if lab is not None:
                 out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
                            f"{{${text}$}};")

@@ -26,6 +26,7 @@ from .errors import (
 )
 from .exact import Frac, NotAFraction, canon, decide_sign, decide_zero, has_float
 from .primitives import Circle, Line, Point, _merge
+from .roots import constructed_sqrt
 
 __all__ = [
     "circle_on_diameter",
@@ -267,7 +268,7 @@ def intersect_line_circle(line: Line, circle: Circle) -> tuple[Point, ...]:
         return ()
     if sign is None:
         conds |= {disc}
-    root = sp.sqrt(disc)
+    root = constructed_sqrt(disc)
     ts = (-b / a,) if sign == 0 else ((-b + root) / a, (-b - root) / a)
     p = line.point
     return tuple(Point.canonical(p.x + t * d.x, p.y + t * d.y, conds) for t in ts)

@@ -42,7 +42,9 @@ def signed_length(start: Point, end: Point, line: Line) -> sp.Expr:
     -2
     """
     d = line.direction
-    return canon((end - start).dot(d) / sp.sqrt(d.dot(d)))
+    from .roots import constructed_sqrt
+
+    return canon((end - start).dot(d) / constructed_sqrt(canon(d.dot(d))))
 
 
 @lru_cache(maxsize=1)

@@ -56,12 +56,18 @@ import sympy as sp
 
 from .. import symbols as S
 from ..construction.language import replay
-from ..construction.program import Claim, PointValue, Program, Ref
+from ..construction.program import Claim, PointValue, Program, Ref, Value
 from ..construction.protocol import Construction
 from ._budget import TIMED_OUT, Budget
 from ._program_rows import CheckRow, ProgramReport
 from .certify_paper import PaperModel, model_at
-from .program_conditions import decide, distinct, operation_conditions, tie_mu
+from .program_conditions import (
+    condition_words,
+    decide,
+    distinct,
+    operation_conditions,
+    tie_mu,
+)
 from .program_decide import (
     DOMAIN_WORDS,
     CheckError,
@@ -238,6 +244,11 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
         if tie:
             zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
         ok, imp, ext, method = prove_zero(zeros, cond1)
+        if ok and claim.kind == "ratio":  # a ratio of lengths is >= 0
+            k = sign_expr(Claim("sign", (claim.terms[-1], Value(sp.Integer(0)))), env)
+            k_ok, k_r = prove_sign_claim(k.xreplace(tie) if tie else k, ">=", cond1)
+            ok = True if k_ok else None
+            imp = [*imp, *(k_r.implied if k_ok and k_r is not None else ())]
         if ok and any(prove_zero([n], cond1)[0] for n in nonzeros):
             ok = None  # a condition that never holds (two parallel lines): not a proof
         implied += imp
@@ -360,6 +371,18 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
                 {"cond1": True, "names": _ancestors(program, [name])})
 
 
+def _worded(out: Any, ops: list, words: list[str], cond1: bool, tie: Any) -> Any:
+    """``out`` (decided conditions of the values) with each of the operation's own
+    conditions ``ops`` decided and followed by what it says (``words``)."""
+    for i, cond in enumerate(ops):
+        d = decide([cond], cond1, tie)
+        say = f" ({words[i]})" if i < len(words) else ""
+        for bucket in ("implied", "false", "extra"):
+            mine = getattr(out, bucket)
+            mine += [t + say for t in getattr(d, bucket) if t + say not in mine]
+    return out
+
+
 def _line(program: Program, name: str) -> int:
     return next((s.line for s in program.steps if s.name == name), 0)
 
@@ -477,9 +500,12 @@ def check_program(program: Program, against: str | None = None,
                 Status.REFUTED, "degenerate for every parameter: it exists at no point of "
                 "the model", time.perf_counter() - t1, detail=why, hypotheses=hyps))
         ops, replaced = operation_conditions(s.op, [env[n] for n in s.inputs], s.obj)
-        own = decide([*stmt.conditions, *ops], cond1_file, tie)
+        own = _worded(decide(stmt.conditions, cond1_file, tie), ops,
+                      condition_words(s.op, s.inputs), cond1_file, tie)
         if s.op in _TWO_POINTS and own.extra:
-            _distinct_ends(program, c, s, own, decide(ops[:1], cond1_file, tie).extra)
+            _distinct_ends(program, c, s, own, _worded(
+                decide((), cond1_file, tie), ops[:1], condition_words(s.op, s.inputs),
+                cond1_file, tie).extra)
         try:
             implied, extra = step_conditions(s, cond1_file, replaced, tie)
             if own.false:
@@ -539,5 +565,22 @@ def check_program(program: Program, against: str | None = None,
             done += 1
             if progress:
                 progress(done, total, name)
+    symbols = {p.name: p.symbol for p in program.params}
+    step_rows, claim_rows, target_rows = ([_tidy(r, symbols) for r in rows] for rows in (
+        step_rows, claim_rows, target_rows))
     return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
                          against, time.perf_counter() - t0, c)
+
+
+def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
+    """The row with its conditions factored, merged, discharged and worded
+    (:func:`~graspcompass.proof.program_words.tidy`)."""
+    from dataclasses import replace
+
+    from .program_words import tidy
+
+    r = row.result
+    if not r.conditions and not r.implied:
+        return row
+    extra, implied = tidy(r.conditions, r.implied, symbols)
+    return replace(row, result=replace(r, conditions=tuple(extra), implied=tuple(implied)))

@@ -371,7 +371,38 @@ def operation_conditions(op: str, inputs: list[Any], obj: Any
         c1, c2, _ = inputs
         n = Point(c2.center.x - c1.center.x, c2.center.y - c1.center.y)
         return [("!=", _norm2(n))], []
+    if op in ("circle_radius", "circle_compass"):
+        return [("!=", obj.radius2)], []
+    if op == "radical_axis":
+        c1, c2 = inputs
+        return [("!=", _norm2(Point(c2.center.x - c1.center.x, c2.center.y - c1.center.y)))], []
+    if op == "tangent_point":
+        from ..construction._ops_class import polar
+
+        p, circle = inputs
+        d = _disc(polar(p, circle), circle)
+        return [(">=", d)], [d]
     return [], []
+
+
+def condition_words(op: str, names: tuple[str, ...]) -> list[str]:
+    """What each condition of :func:`operation_conditions` says, in geometric words
+    (as GCLC prints them), in the same order."""
+    a, b = (*names, "?", "?")[:2]
+    return {
+        "line_through": [f"{a} and {b} are distinct"],
+        "line_with_direction": ["the direction is not zero"],
+        "circle_through": [f"{b} is not the centre {a}"],
+        "circle_on_diameter": [f"{a} and {b} are distinct"],
+        "intersect_line_circle": [f"the line {a} meets the circle {b}"],
+        "intersect_circles": [f"the centres of {a} and {b} differ",
+                              f"the circles {a} and {b} meet"],
+        "second_intersection": [f"the centres of {a} and {b} differ"],
+        "circle_radius": ["the radius is not 0"],
+        "circle_compass": [f"{b} and {names[2] if len(names) > 2 else '?'} are distinct"],
+        "radical_axis": [f"the centres of {a} and {b} differ"],
+        "tangent_point": [f"{a} is not inside the circle {b}"],
+    }.get(op, [])
 
 
 def distinct(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool:

@@ -37,6 +37,7 @@ from ..construction.program import Claim, PointValue, Program, Ref
 from ..construction.protocol import Construction
 from ..geometry import Circle, GeometryError, Line, Point
 from ..geometry.exact import decide_sign, decide_zero
+from ..geometry.trig import sincos
 from .certify_algebra import _full_text, _positive, _primitive, _text, classify, ring
 from .model import violations
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
@@ -134,7 +135,67 @@ def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], li
         return [objs[0].direction.dot(objs[1].direction)], []
     if claim.kind == "concurrent":
         return _concurrent_zeros(objs)
-    raise CheckError(f"unknown claim kind {claim.kind!r}")  # pragma: no cover - parser checks
+    return class_zeros(claim.kind, objs)
+
+
+def _vec(a: Point, b: Point) -> Point:
+    return Point(b.x - a.x, b.y - a.y)
+
+
+def _d2(a: Point, b: Point) -> sp.Expr:
+    v = _vec(a, b)
+    return v.x ** 2 + v.y ** 2
+
+
+def _angle(a: Point, b: Point, c: Point) -> tuple[sp.Expr, sp.Expr]:
+    """The directed angle ABC (from ray BA to ray BC) as the complex number
+    conj(A − B)(C − B) = u·v + i u×v: its argument is the angle, its modulus |u||v|."""
+    u, v = _vec(b, a), _vec(b, c)
+    return u.dot(v), u.cross(v)
+
+
+def class_zeros(kind: str, objs: list[Any]) -> tuple[list[sp.Expr], list[sp.Expr]]:
+    """The claims of a geometry class (issue 24), as polynomials that must vanish:
+
+    * ``congruent A B C D``: |AB|² − |CD|² (lengths are ≥ 0, so equal squares suffice);
+    * ``equal_angles A B C D E F``: the directed angles ABC ≡ DEF (mod π): with
+      z = conj(A − B)(C − B), w likewise, Im(z·conj(w)) = 0, the arms of non-zero length;
+    * ``angles A B C ... == a``: Σ ABC ≡ a (mod π): Im(Π z · e^(−ia)) = 0;
+    * ``tangent l c``: the line-circle discriminant vanishes (one common point);
+      ``tangent c1 c2``: (d² − r1² − r2²)² − 4 r1² r2² = 0, d = |O1O2| ≠ 0
+      (d = r1 + r2 or d = |r1 − r2|);
+    * ``ratio A B C D == k``: |AB|² − k²|CD|², |CD| ≠ 0 (and k ≥ 0, proved by the checker).
+    """
+    if kind == "congruent":
+        a, b, c, d = objs
+        return [_d2(a, b) - _d2(c, d)], []
+    if kind == "equal_angles":
+        (x1, y1), (x2, y2) = _angle(*objs[:3]), _angle(*objs[3:])
+        return [y1 * x2 - x1 * y2], [_d2(objs[0], objs[1]), _d2(objs[1], objs[2]),
+                                     _d2(objs[3], objs[4]), _d2(objs[4], objs[5])]
+    if kind == "angles":
+        *pts, value = objs
+        re_, im_ = sp.Integer(1), sp.Integer(0)
+        nonzeros = []
+        for i in range(0, len(pts), 3):
+            x, y = _angle(*pts[i:i + 3])
+            re_, im_ = re_ * x - im_ * y, re_ * y + im_ * x
+            nonzeros += [_d2(pts[i], pts[i + 1]), _d2(pts[i + 1], pts[i + 2])]
+        s, c = sincos(sp.sympify(value))
+        return [im_ * c - re_ * s], nonzeros
+    if kind == "tangent":
+        a, b = objs
+        if isinstance(a, Circle) and isinstance(b, Circle):
+            d2 = _d2(a.center, b.center)
+            return [(d2 - a.radius2 - b.radius2) ** 2 - 4 * a.radius2 * b.radius2], [d2]
+        line, circle = (a, b) if isinstance(a, Line) else (b, a)
+        dd = line.direction
+        w = _vec(circle.center, line.point)
+        return [dd.dot(w) ** 2 - dd.dot(dd) * (w.dot(w) - circle.radius2)], []
+    if kind == "ratio":
+        a, b, c, d, k = objs
+        return [_d2(a, b) - k ** 2 * _d2(c, d)], [_d2(c, d)]
+    raise CheckError(f"unknown claim kind {kind!r}")  # pragma: no cover - parser checks
 
 
 def concyclic_zeros(points: list[Point]) -> list[sp.Expr]:
@@ -240,9 +301,28 @@ def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str
                                       "denominators")
     except ValueError:  # not a rational function of the model's generators
         pass
+    fast = _fraction_zero(zeros)
+    if fast:
+        return True, [], [], ("exact fractions of polynomials (the kernel's arithmetic): "
+                              "every numerator reduces to 0 modulo the relations of its "
+                              "roots and sin² + cos² = 1, wherever the steps are defined")
     r = prove_identity(sp.Matrix(zeros), 0, intervals=CONDITION_1 if cond1 else {})
     verdict = True if r.proved else False if r.status is Status.REFUTED else None
     return verdict, list(r.implied), list(r.conditions), "prove_identity"
+
+
+def _fraction_zero(zeros: list[sp.Expr]) -> bool:
+    """Every expression is 0 as a fraction of polynomials in its generators (parameters,
+    square roots with their squares, sine and cosine with sin² + cos² = 1): an identity
+    wherever its denominators (the steps' own non-degeneracy conditions) do not vanish.
+    False means only "not shown so" (the caller goes on)."""
+    from ..construction._lang_values import _frac
+    from ..geometry.exact import NotAFraction
+
+    try:
+        return all(_frac(sp.sympify(z), {}).is_zero() is True for z in zeros)
+    except (NotAFraction, ZeroDivisionError, ValueError, TypeError):
+        return False
 
 
 def _witness(e: sp.Expr) -> list[sp.Expr]:
@@ -276,12 +356,66 @@ def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
             continue
         if r.proved:
             return True, r
+    if relation in (">", ">=", "<", "<="):
+        conds = _positive_factors(e if relation[0] == ">" else -e)
+        if conds is not None:
+            return True, ProofResult(
+                Status.PROVED, "a product of positive factors: positive parameters, "
+                "square roots of non-zero radicands, squared lengths (positive "
+                "semi-definite quadratics) that do not vanish", 0.0,
+                conditions=tuple(f"{c} ≠ 0" for c in conds))
     if relation in (">=", "<="):
         ok, implied, extra, _ = prove_zero([e], cond1)
         if ok:
             return True, ProofResult(Status.PROVED, "identically zero", 0.0,
                                      conditions=tuple(extra), implied=tuple(implied))
     return None, None
+
+
+def _positive_factors(e: sp.Expr) -> list[sp.Expr] | None:
+    """``e > 0`` wherever the returned expressions are non-zero, or None (not shown).
+
+    ``e`` is split into factors (square roots kept as generators); each must be a
+    positive rational, positive by the parameters' assumptions, a square root √R
+    (> 0 where R ≠ 0: R is returned), or a polynomial shown ≥ 0 for all real values
+    (:func:`graspcompass.geometry.roots.nonnegative`, > 0 where it is non-zero: it is
+    returned), any of them to any integer power.
+    """
+    from ..geometry.roots import nonnegative
+
+    try:
+        num, den = sp.fraction(sp.together(sp.sympify(e)))
+    except (sp.PolynomialError, TypeError, ValueError):
+        return None
+    conds: list[sp.Expr] = []
+
+    def positive(part: sp.Expr) -> bool:
+        try:
+            c, factors = sp.factor_list(part)
+        except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
+            return False
+        if not (sp.sympify(c) > 0):
+            return False
+        for f, _m in factors:
+            if f.is_positive:
+                continue
+            if f.is_Pow and f.exp == sp.Rational(1, 2):
+                if not (f.base.is_positive or nonnegative(f.base)):
+                    return False
+                if not f.base.is_positive:
+                    conds.append(f.base)
+                continue
+            if f.free_symbols and not f.atoms(sp.Pow) - {a for a in f.atoms(sp.Pow)
+                                                         if a.exp.is_Integer} \
+                    and nonnegative(f):
+                conds.append(f)
+                continue
+            return False
+        return True
+
+    if positive(num) and positive(den):
+        return list(dict.fromkeys(conds))
+    return None
 
 
 # -- exact replay at sample points (counterexamples) --------------------------------------
@@ -383,6 +517,9 @@ def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
         zeros, nonzeros = claim_zeros(claim, env)
         if any(decide_zero(sp.sympify(n)) is not False for n in nonzeros):
             return False  # outside the claim's non-degeneracy conditions
+        if claim.kind == "ratio" and decide_sign(sp.sympify(_term(
+                claim.terms[-1], env, _lengths(env)))) == -1:
+            return True  # a negative ratio of lengths
         return any(nonzero(z) for z in zeros)
     return fails
 

@@ -20,7 +20,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
-from ..layout import wedge
+from ..scene.layout import wedge
 from ._hand_steps import _GREEK, _m, _n_of
 from ._hand_text import _MARGIN, _MM, _TOP, A4_MM, _width_mm
 from .theme import Theme

@@ -14,7 +14,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from ..layout import numeric_objects
+from ..scene.layout import numeric_objects
 
 #: Values of ``steps``: every step, or the steps of one V_n.
 STEP_CHOICES = ("all", "V1", "V2", "V3", "V4")

@@ -31,7 +31,7 @@ from matplotlib.patches import FancyArrowPatch, Rectangle
 from matplotlib.text import Text
 from matplotlib.transforms import Affine2D
 
-from ..layout import numeric_objects
+from ..scene.layout import numeric_objects
 from .animate import FrameAnimation
 from .figure import draw_construction
 from .labels import place_labels

@@ -41,7 +41,8 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch
 from matplotlib.text import Annotation, Text
 
-from ..layout import numeric_objects, tex
+from ..scene.layout import numeric_objects, tex
+from ..scene.picture import scene_of
 from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
 from ._anim_layout import _layout, _text_width, _wrap  # noqa: F401
 from ._anim_player import FrameAnimation
@@ -111,6 +112,11 @@ class ConstructionAnimation(FrameAnimation):
         self._items: list[list[tuple[Artist, str, dict[str, Any]]]] = [[] for _ in steps]
         self._shared: list[tuple[Artist, list[tuple[int, str]], dict[str, Any]]] = []
         seen: set[int] = set()
+        made = scene_of(construction).made
+        for cone in ("cone1", "cone2"):  # a friction cone appears once both its sides exist
+            if cone in arts and cone in made:
+                seen.update(id(a) for a in arts[cone])
+                self._items[made[cone]] += [(a, "cone", _snap(a)) for a in arts[cone]]
         for s in steps:
             for a in arts.get(s.name, []):
                 if id(a) in seen:
@@ -124,7 +130,7 @@ class ConstructionAnimation(FrameAnimation):
         bg = ax.get_facecolor()
         self._dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text" if r == "label" else
                                                                "graphics"], self.dim)
-                      if r != "fill" else self.dim
+                      if r not in ("fill", "cone") else self.dim
                       for items in self._items for a, r, sn in items]
         self._shared_dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text"], self.dim)
                              for a, _, sn in self._shared]
@@ -270,9 +276,10 @@ class ConstructionAnimation(FrameAnimation):
                 k += 1
         for (a, parts, snap), f in zip(self._shared, self._shared_dimf):
             _restore(a, snap)
-            shown = [p for i, p in parts if i <= st.step or hold]
-            made = min(i for i, _ in parts)
-            if not shown or (st.step == made and st.kind == "draw" and st.progress < 0.6):
+            # a name is shown once its point is marked (the stroke of its step is done)
+            done = st.kind != "draw" or st.progress >= 1.0
+            shown = [p for i, p in parts if i < st.step or hold or (i == st.step and done)]
+            if not shown:
                 a.set_visible(False)
                 continue
             a.set_text("$" + " = ".join(shown) + "$")
@@ -285,6 +292,9 @@ class ConstructionAnimation(FrameAnimation):
 
     def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Any, kind: str,
                      p: float, raw: float) -> None:
+        if role == "cone":  # after the stroke of its second side
+            a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
+            return
         if role not in ("fill", "label"):
             pulse = 1.0 + 0.5 * math.sin(math.pi * raw) if kind == "pause" else 1.0
             _tint(a, snap, self.theme.highlight_color, (1.0 if role == "marker" else 1.6) * pulse)
@@ -297,7 +307,7 @@ class ConstructionAnimation(FrameAnimation):
             a.set_markersize(snap["ms"] * p * (1.0 + 0.8 * math.sin(math.pi * p)))
             self._draw_aid(step, p)
         elif role == "label":
-            a.set_visible(snap["visible"] and p >= 0.6)
+            a.set_visible(snap["visible"] and p >= 1.0)  # after its object's stroke
         elif role == "line" and len(snap["data"][0]) == 2:  # the ruler, from its anchor
             (x0, x1), (y0, y1) = snap["data"]
             ax_, ay_ = next((v for v in (self._num[n] for n in step.inputs)

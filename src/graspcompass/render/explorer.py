@@ -52,8 +52,8 @@ from matplotlib.widgets import Slider
 
 from ..geometry import evaluate
 from ..grasp import Grasp
-from ..layout import wedge
-from ..palette import PALETTE
+from ..scene.layout import wedge
+from ..scene.palette import PALETTE
 from ._explorer_events import PARAMS, _Events, _interactive, _Slider, notebook_box
 from ._explorer_scene import GRASP_KEYS, Scene, ThetaGrid, float_scene, grasp_scene
 from ._pathtext import GlyphCache, PathText

@@ -20,20 +20,10 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import Polygon, Rectangle
-from matplotlib.text import Annotation, Text
 
-from ..layout import (
-    clip_line,
-    clip_segment,
-    group_points,
-    numeric_objects,
-    roles_of,
-    shape_extent,
-    tex,
-    view_box,
-    wedge,
-)
-from .labels import place_labels
+from ..scene import labelling
+from ..scene.layout import clip_line, clip_segment, numeric_objects, shape_extent
+from ..scene.picture import INSET_PT, Scene, build_scene, scene_of
 from .output import FORMATS, save_figure
 from .polar import draw_k_polar, figure_k_plot
 from .theme import DEFAULT_THEME, Theme
@@ -65,12 +55,12 @@ def _by_role(construction: Any, role: str) -> dict[int, str]:
     return {_n(s): s.name for s in construction.steps if getattr(s, "role", "") == role}
 
 
-def _draw_givens(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme,
+def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
                  out: dict[str, list[Artist]]) -> None:
     """The object outline and the friction cones, shaded towards the object (Fig. 2).
 
-    The cone at contact i is between the cone sides i (upper) and i + 2 (lower),
-    found by their roles (``role contact i``, ``role cone_side n``), not their names.
+    The cones are the scene's (:attr:`Scene.cones`, between the cone sides i and
+    i + 2 found by their roles), drawn once both sides are made.
     """
     grasp = construction.grasp
     ext = shape_extent(getattr(grasp, "shape", None))
@@ -81,15 +71,10 @@ def _draw_givens(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme,
         patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
                  Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
         out["object"] = [ax.add_patch(patch)]
-    contacts, sides = _by_role(construction, "contact"), _by_role(construction, "cone_side")
-    p1, p2 = (np.array(num.get(contacts.get(i, ""), (0, 0))) for i in (1, 2))
-    length = 0.6 * float(np.linalg.norm(p1 - p2))
-    for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
-        apex = num.get(contacts.get(i, ""))
-        da, db = num.get(sides.get(a, "")), num.get(sides.get(b, ""))
-        if apex is None or da is None or db is None:
+    for i, cone in enumerate(scene.cones, start=1):
+        if not scene.visible(f"cone{i}"):
             continue
-        poly = Polygon(wedge(apex, da[1], db[1], length), closed=True, facecolor=theme.cone_face,
+        poly = Polygon(np.asarray(cone), closed=True, facecolor=theme.cone_face,
                        alpha=theme.cone_alpha, edgecolor="none", zorder=1,
                        label="friction cones" if i == 1 else "_nolegend_")
         out[f"cone{i}"] = [ax.add_patch(poly)]
@@ -149,7 +134,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                       show_computer_plot: bool = False,
                       highlight_last: bool = False,
                       num: dict[str, Any] | None = None,
-                      box: tuple[float, float, float, float] | None = None
+                      box: tuple[float, float, float, float] | None = None,
+                      view: str = "whole"
                       ) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
@@ -179,6 +165,11 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         ``(xmin, xmax, ymin, ymax)`` to draw instead of the one view box of every picture
         (an enlargement of a crowded region): lines are clipped to it and the labels placed
         in it.
+    view : {"whole", "beside", "inset"}
+        ``"whole"`` labels every point in the whole view; ``"beside"`` leaves the
+        labels of the crowded points to the zoomed inset drawn beside it
+        (:attr:`graspcompass.scene.picture.Scene.inset`); ``"inset"`` draws that
+        inset: the crowded region, zoomed, with its labels.
 
     Returns
     -------
@@ -202,18 +193,22 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         ax = Figure(figsize=(7, 7)).add_subplot()
     num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
-    zoomed = box is not None  # then points outside the box are not labelled
-    if box is None:
-        box = view_box(construction.grasp, num_all, roles=roles_of(construction))
+    # an enlargement of a region (box given): its own scene, labelled in it
+    scene = (scene_of(construction) if box is None else
+             build_scene(construction, box=box)).upto(step)
+    box = scene.box
     span = box[1] - box[0]
-    ax.set_xlim(box[0], box[1])
-    ax.set_ylim(box[2], box[3])
+    shown = scene.labels
+    if view != "whole" and scene.inset is not None:
+        shown = scene.inset.main if view == "beside" else scene.inset.labels
+    lim = scene.inset.box if view == "inset" and scene.inset is not None else box
+    ax.set_xlim(lim[0], lim[1])
+    ax.set_ylim(lim[2], lim[3])
     ax.set_aspect("equal", adjustable="box")
+    ax.apply_aspect()
     out: dict[str, list[Artist]] = {}
-    _draw_givens(ax, construction, num_all, theme, out)
+    _draw_givens(ax, construction, scene, theme, out)
     last = state.steps[-1].name if highlight_last else None
-    points: list[tuple[str, tuple[float, float]]] = []
-    curves: list[np.ndarray] = []
     for s in state.steps:
         v = num[s.name]
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
@@ -223,14 +218,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                 [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
                 mfc="white" if small else hl.get("color", theme.point_color),
                 mec=hl.get("color", theme.point_color), mew=0.8)
-            if not small and not (zoomed and not (box[0] <= v[0] <= box[1]
-                                                  and box[2] <= v[1] <= box[3])):
-                points.append((s.name, v))
         elif s.kind == "line":
             out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
-            seg = clip_line(v[0], v[1], box)
-            if seg is not None:
-                curves.append(np.array(seg))
         elif s.kind == "circle":
             n = _n(s)
             (cx, cy), r = v
@@ -240,12 +229,8 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                                 label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)"
                                 if s.role == "circle" else "_nolegend_")
             out[s.name] = [ax.add_patch(patch)]
-            t = np.linspace(0, 2 * np.pi, 100)
-            curves.append(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
         elif s.kind == "length":
             out[s.name] = _draw_length(ax, s, num, box, span, theme, hl)
-            curves += [np.array([a.xyann, a.xy]) for a in out[s.name]
-                       if isinstance(a, Annotation)]
         else:  # the envelope, eq. (25)
             xy = v.polyline()
             fill = Polygon(xy, closed=True, facecolor=theme.envelope_fill, edgecolor="none",
@@ -254,46 +239,54 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
                            lw=theme.envelope_width, zorder=4, solid_joinstyle="round",
                            label=r"envelope: $k_{grasp}(\theta)$, eq. (25)")
             out[s.name] = [*line, ax.add_patch(fill)]
-            curves.append(xy)
     if show_computer_plot and construction.grasp is not None:
         out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
-    if labels and points:
-        axis_texts = [a for st in state.steps if st.role == "axis"
-                      for a in out.get(st.name, []) if isinstance(a, Text)]
-        breaks = [num[st.name] for st in state.steps if st.role == "break_point"]
-        _label_points(ax, points, curves, axis_texts, theme, out, breaks)
+    if labels:
+        _label_points(ax, shown, theme, out)
     return out
 
 
-def _label_points(ax: Axes, points: list[tuple[str, tuple[float, float]]],
-                  curves: list[np.ndarray], avoid: list[Text], theme: Theme,
-                  out: dict[str, list[Artist]],
-                  obstacles: list[tuple[float, float]] = ()) -> None:  # type: ignore[assignment]
-    """One label per group of coincident points, ``O = O_M = Y_4`` (§3.3)."""
-    where = dict(points)
-    xs = [abs(v) for _, xy in points for v in xy]
-    groups = group_points(points, 1e-9 * max(1.0, *xs))
-    groups.sort(key=lambda g: min(_LABEL_ORDER.find(n[0]) % 9 for n in g))
-    items = [(where[g[0]], "$" + " = ".join(tex(n, math=False) for n in g) + "$")
-             for g in groups]
-    texts = place_labels(ax, items, curves, avoid, obstacles=obstacles, font_size=theme.font_size,
-                         marker_size=theme.point_size, color=theme.label_color, zorder=6,
-                         bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
-    for g, text in zip(groups, texts):
-        for n in g:
-            out[n].append(text)
+_HA = {1: "left", -1: "right", 0: "center"}
+_VA = {1: "bottom", -1: "top", 0: "center"}
+
+
+def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artist]]) -> None:
+    """The scene's labels (:attr:`Scene.labels`), one per group ``O = O_M = Y_4`` (§3.3).
+
+    Placed once for every painter (:func:`graspcompass.scene.labelling.place`), at
+    their offsets in points from their points; a group shows the names made so far.
+    """
+    for lab in labels:
+        if lab.leader:  # a thin line from the point to its label set far away
+            x0, y0, x1, y1 = lab.box
+            near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
+            ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]], color=theme.label_color,
+                    lw=0.5, zorder=5.5)
+        text = ax.annotate(f"${lab.tex()}$", lab.point, xytext=lab.offset,
+                           textcoords="offset points", ha=_HA[lab.direction[0]],
+                           va=_VA[lab.direction[1]], fontsize=theme.font_size,
+                           annotation_clip=False, color=theme.label_color, zorder=6,
+                           bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none",
+                                     alpha=0.65))
+        for n in lab.names:
+            out.setdefault(n, []).append(text)
 
 
 def figure_diagram(construction: Any, step: int | None = None, overlay: bool = True,
                    title: str | None = None, figsize: tuple[float, float] = (7.0, 7.0),
-                   theme: Theme = DEFAULT_THEME, labels: bool = True) -> Figure:
+                   theme: Theme = DEFAULT_THEME, labels: bool = True,
+                   inset: bool = True) -> Figure:
     """A complete figure of the internal force diagram, as in Fig. 6 and Fig. 7.
 
     The construction (:func:`draw_construction`) in an equal-aspect frame
-    without grid, titled ``title`` or the grasp's title, with a legend; when
-    ``overlay`` is true the computer plot of Fig. 6(b) (eq. (25), evaluated
-    numerically) is drawn over the envelope as a thin contrasting curve, so
-    that the two coincide as §4.1 reports.
+    without grid, titled ``title`` or the grasp's title (a grasp without one
+    by its parameters), with a legend; when ``overlay`` is true the computer
+    plot of Fig. 6(b) (eq. (25), evaluated numerically) is drawn over the
+    finished envelope as a thin contrasting curve, so that the two coincide as
+    §4.1 reports (not over a ``step`` before the envelope).  Where points crowd
+    (:attr:`graspcompass.scene.picture.Scene.inset`) and ``inset`` is true, a
+    zoomed view of their region stands right of the diagram (the figure is
+    wider by it) with their labels.
 
     Examples
     --------
@@ -302,17 +295,92 @@ def figure_diagram(construction: Any, step: int | None = None, overlay: bool = T
     >>> fig.axes[0].get_aspect()
     1.0
     """
-    fig = Figure(figsize=figsize)
-    ax = fig.add_axes((0.08, 0.2, 0.88, 0.72))
+    scene = scene_of(construction)
+    zoom = scene.inset if inset else None
+    side = labelling.FRAME_PT / 72.0  # the placement's frame: the axes' side in inches
+    extra = INSET_PT / 72.0 + 0.9 if zoom is not None else 0.0
+    w, h = figsize
+    h += 0.4  # room for a title of two lines
+    bottom = 1.4 / h
+    fig = Figure(figsize=(w + extra, h))
+    ax = fig.add_axes((0.08 * w / (w + extra), bottom, side / (w + extra), side / h))
+    last = len(construction.steps) - 1
+    full = step is None or step % len(construction.steps) == last
     draw_construction(construction, step=step, ax=ax, theme=theme, labels=labels,
-                      show_computer_plot=overlay)
+                      show_computer_plot=overlay and full,
+                      view="beside" if zoom is not None else "whole")
     ax.grid(False)
     ax.tick_params(labelsize=theme.font_size * 0.8)
     grasp = construction.grasp
-    text = title if title is not None else (getattr(grasp, "title", None) or "")
+    text = title if title is not None else (getattr(grasp, "title", None) or _params(grasp))
+    if not full:
+        text += f"\nafter step {step % len(construction.steps)} of 0–{last}"
     ax.set_title(text, fontsize=theme.font_size * 1.05)
+    if zoom is not None:
+        left = (0.08 * w + side + 0.5) / (w + extra)
+        zs = INSET_PT / 72.0
+        zax = fig.add_axes((left, bottom + (side - zs) / h, zs / (w + extra), zs / h))
+        drawn = draw_construction(construction, step=step, ax=zax, theme=theme, labels=labels,
+                                  view="inset")
+        for arts in drawn.values():  # the length arrows too stay inside the inset
+            for a in arts:
+                patch = getattr(a, "arrow_patch", None)
+                if patch is not None:
+                    patch.set_clip_box(zax.bbox)
+                    patch.set_clip_on(True)
+        zax.set_xticks([])
+        zax.set_yticks([])
+        times = zoom.zoom * (scene.box[1] - scene.box[0]) / labelling.FRAME_PT
+        zax.set_title(f"the dashed square, {times:.1f}× larger",
+                      fontsize=theme.font_size * 0.9)
+        b = zoom.box
+        ax.add_patch(Rectangle((b[0], b[2]), b[1] - b[0], b[3] - b[2], fill=False, lw=0.8,
+                               ls=(0, (3, 2)), edgecolor=theme.axis_color, zorder=6))
     handles, names = ax.get_legend_handles_labels()
+    handles, names = [*handles, *_legend_extra(construction, step, theme)[0]], \
+        [*names, *_legend_extra(construction, step, theme)[1]]
     if handles:
         fig.legend(handles, names, loc="lower center", ncol=2, frameon=False,
                    fontsize=theme.font_size * 0.85)
     return fig
+
+
+def _params(grasp: Any) -> str:
+    """A title from a grasp's parameters: ``x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, ...``."""
+    if grasp is None:
+        return ""
+    try:
+        p = grasp.params
+        deg = {k: math.degrees(float(p[k])) for k in ("phi1", "phi2", "xi1", "xi2")}
+        return (f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
+                f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
+                f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°")
+    except (AttributeError, KeyError, TypeError, ValueError):
+        return ""
+
+
+def _legend_extra(construction: Any, step: int | None, theme: Theme
+                  ) -> tuple[list[Artist], list[str]]:
+    """Legend proxies of what has no labelled artist: the object, the dashed
+    perpendiculars, the length arrows and the break points (those drawn by ``step``)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch as PatchProxy
+
+    state = construction if step is None else construction.upto(step)
+    roles = {s.role for s in state.steps} | {s.op for s in state.steps}
+    kinds = {s.kind for s in state.steps}
+    out: list[tuple[Artist, str]] = []
+    if shape_extent(getattr(construction.grasp, "shape", None)) is not None:
+        out.append((PatchProxy(facecolor=theme.object_face, edgecolor=theme.object_edge),
+                    "the object"))
+    if "perpendicular" in roles:
+        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
+                           ls=(0, (4, 2))), "perpendiculars to the cone sides"))
+    if "length" in kinds:
+        out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
+                           marker=">", ms=4), "signed lengths $O_MX_n$, $OY_n$"))
+    if "break_point" in roles:
+        out.append((Line2D([], [], ls="none", marker="o", mfc="white",
+                           mec=theme.point_color, ms=theme.point_size * 0.6),
+                    "break points: $k_i = k_j$"))
+    return [a for a, _ in out], [t for _, t in out]

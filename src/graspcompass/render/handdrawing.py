@@ -54,7 +54,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
-from ..layout import numeric_objects, view_box
+from ..scene.layout import numeric_objects, view_box
 from . import _hand_extra as extra
 from ._hand_page import (
     _cones,

@@ -15,7 +15,7 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.text import Text
 
-from ..labelling import place
+from ..scene.labelling import place
 
 __all__ = ["place_labels"]
 

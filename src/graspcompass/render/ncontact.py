@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from ..palette import PALETTE
+from ..scene.palette import PALETTE
 
 __all__ = ["draw_ncontact"]
 

@@ -20,7 +20,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
-from ..palette import PALETTE
+from ..scene.palette import PALETTE
 
 __all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES", "Quality",
            "Theme", "contrast_ratio", "relative_luminance"]

@@ -1,0 +1,107 @@
+"""The conditions of a checked row, tidied: factored, deduplicated, discharged, in words.
+
+A row's non-degeneracy conditions come from the parser (divisors, radicands), the
+kernel (a denominator of each step) and the operations (``the circles k1 and k2
+meet``); the same expression then recurs with and without its words, as ``≠`` and
+``!=``, and with factors whose sign the domains decide (``b ≠ 0`` under ``param b > 0``,
+``t² + 1 ≠ 0``).  :func:`tidy` factors each condition (small ones), drops the factors
+of known sign (sympy's assumptions on the parameters' symbols: a ``> 0`` parameter is
+positive, a ``real`` one real), moves a condition all of whose factors have a known
+sign to the implied ones, and merges the conditions on one expression into one, with
+all their words.
+
+Examples
+--------
+>>> import sympy as sp
+>>> b = sp.Symbol("b", positive=True)
+>>> p = sp.Symbol("p", real=True)
+>>> tidy(["b**2*(p**2 + 1) != 0", "b*(p - 1) ≠ 0 (A and B are distinct)",
+...       "b*(p - 1) ≠ 0"], [], {"b": b, "p": p})
+(['p - 1 ≠ 0 (A and B are distinct)'], ['b**2*(p**2 + 1) ≠ 0 (sign from the domains)'])
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping
+from functools import lru_cache
+
+import sympy as sp
+
+__all__ = ["tidy"]
+
+_COND = re.compile(r"^(?P<e>.+?) (?P<rel>≠|!=|≥|>=|>) 0(?P<rest>(?: \(.*\))?)$", re.S)
+_MAX_CHARS = 300  # longer conditions are kept as they are (factoring would cost more)
+
+
+def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
+    """``(e without its factors of known sign, whether any was dropped)``; None: every
+    factor has a known sign and the condition holds (≠ 0 of non-zero factors, or ≥/>
+    of positive ones)."""
+    if e.is_positive or (rel == "≠" and e.is_negative):
+        return None, True
+    try:
+        c, factors = sp.factor_list(e)
+    except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
+        return e, False
+    kept, dropped = [], False
+    for f, m in factors:
+        pos, neg = f.is_positive, f.is_negative
+        if pos or (rel == "≠" and neg):
+            dropped = True
+            continue
+        if rel != "≠" and m % 2 == 0 and f.is_real:
+            kept.append(f ** m)
+            continue
+        kept.append(f ** m)
+    if not kept:
+        return (None, True) if (rel == "≠" and c != 0) or c > 0 else (e, False)
+    if rel != "≠" and c < 0:
+        return e, False  # a negative constant flips the sign: keep it as written
+    return sp.Mul(*kept), dropped
+
+
+@lru_cache(maxsize=8192)
+def _one(t: str, symbols: tuple) -> tuple[str, str, str, str]:
+    """``(bucket, expression text, relation, words)`` of one condition text; bucket is
+    ``"implied"`` (every factor's sign is known), ``"extra"`` or ``"as is"``."""
+    m = _COND.match(t.replace("!=", "≠").replace(">=", "≥"))
+    if m is None:
+        return "as is", t, "", ""
+    rel = m["rel"]
+    text, words = m["e"], m["rest"].strip()[1:-1] if m["rest"] else ""
+    if len(text) <= _MAX_CHARS:
+        try:
+            e = sp.sympify(text, locals=dict(symbols))
+            f, dropped = _factored(e, rel)
+        except (sp.SympifyError, TypeError, ValueError, SyntaxError):
+            return "extra", text, rel, words
+        if f is None:
+            return "implied", f"{text} {rel} 0 (sign from the domains)", rel, words
+        if dropped:
+            text = sp.sstr(f)
+    return "extra", text, rel, words
+
+
+def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.Symbol]
+         ) -> tuple[list[str], list[str]]:
+    """``(extra, implied)`` tidied (see the module); texts that are not ``EXPR ≠ 0``,
+    ``≥ 0`` or ``> 0`` are kept as they are."""
+    implied = list(dict.fromkeys(t.replace(" != 0", " ≠ 0") for t in implied))
+    key = tuple(sorted(symbols.items()))
+    groups: dict[tuple[str, str], list[str]] = {}
+    for t in extra:
+        bucket, text, rel, words = _one(t, key)
+        if bucket == "implied":
+            implied.append(text)
+            continue
+        ws = groups.setdefault((text, rel), [])
+        if words and words not in ws:
+            ws.append(words)
+    out = []
+    for (text, rel), ws in groups.items():
+        if not rel:
+            out.append(text)
+            continue
+        out.append(f"{text} {rel} 0" + (f" ({'; '.join(ws)})" if ws else ""))
+    return out, list(dict.fromkeys(implied))

@@ -1,0 +1,194 @@
+"""Labels that name their point: placement under hard rules, and the crowded region.
+
+:func:`fit` places point labels, in points of a frame (y up), so that no label
+covers another label or any point marker (break points and the envelope's cusps
+too) and each label is nearer its own point than any other point; where the
+eight places next to a point are taken it tries farther ones (a thin leader
+line then joins label and point).  A label that no place satisfies is left out
+(:func:`crowded_region` then shows it in a zoomed inset) or, outside the region,
+set where it breaks the fewest rules.  :func:`crowded_region` chooses the inset
+from the geometry: the points that crowd within a fraction of the view.
+Nothing here imports matplotlib.
+
+Examples
+--------
+>>> (p,) = fit([(100.0, 100.0)], ["$O$"], frame=(0.0, 0.0, 200.0, 200.0))
+>>> p.direction, p.leader
+((1, 1), False)
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample, text_size
+
+__all__ = ["CROWD", "FITS", "MARGIN", "Fit", "crowded_region", "fit", "leader"]
+
+#: The distances tried, in units of the marker's radius plus the gap (the first two are
+#: :data:`graspcompass.scene.labelling.FAR`); from the third on a leader line is drawn.
+FITS = (1.0, 2.0, 3.0, 4.5, 6.5, 9.0)
+#: The crowd rule of :func:`crowded_region`: a point is crowded when ``count`` other
+#: markers lie within ``radius`` of the frame's side from it.
+CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.45}
+#: Safety margins (points) of the rules: a label's box is grown by ``grow`` on each side
+#: (and its width by the factor ``wide``) against the others and the markers; a label must
+#: be nearer its own point than any other by ``nearer``.
+MARGIN: dict[str, float] = {"grow": 1.5, "wide": 1.12, "nearer": 2.0, "marker": 1.5}
+
+
+@dataclass(frozen=True)
+class Fit:
+    """Where one label goes, in points: as :class:`~.labelling.Placement`, plus
+    ``leader`` (a line from the point to the label) and ``ok`` (every rule holds)."""
+
+    offset: tuple[float, float]
+    direction: tuple[int, int]
+    box: tuple[float, float, float, float]
+    leader: bool
+    ok: bool
+
+
+def _dist_to_box(pts: np.ndarray, box: np.ndarray) -> np.ndarray:
+    dx = np.maximum(np.maximum(box[0] - pts[:, 0], 0.0), pts[:, 0] - box[2])
+    dy = np.maximum(np.maximum(box[1] - pts[:, 1], 0.0), pts[:, 1] - box[3])
+    return np.hypot(dx, dy)
+
+
+def _hits(box: np.ndarray, boxes: np.ndarray) -> bool:
+    if not len(boxes):
+        return False
+    return bool(np.any((np.minimum(box[2], boxes[:, 2]) > np.maximum(box[0], boxes[:, 0]))
+                       & (np.minimum(box[3], boxes[:, 3]) > np.maximum(box[1], boxes[:, 1]))))
+
+
+def fit(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
+        curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
+        obstacles: Sequence[tuple[float, float]] = (), font_size: float = FONT_PT,
+        marker_size: float = MARKER_PT, gap: float = GAP_PT,
+        optional: Sequence[bool] = (),
+        avoid: Sequence[tuple[float, float, float, float]] = ()) -> list[Fit | None]:
+    """One :class:`Fit` per label ``texts[i]`` of the point ``anchors[i]`` (or None).
+
+    Parameters
+    ----------
+    anchors, texts
+        The labelled points (in points, y up) and their mathtext labels.
+    curves
+        Drawn polylines (in points) that labels should rather not cross.
+    frame
+        ``(x0, y0, x1, y1)``: labels stay inside it.
+    obstacles
+        Other markers (break points, the envelope's cusps) that no label covers and
+        that count as other points for the nearness rule.
+    optional
+        Per label: True leaves it out (None) when no place keeps every rule.
+    avoid
+        Boxes ``(x0, y0, x1, y1)`` of labels already placed.
+    """
+    pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
+    every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
+    r = marker_size / 2 + MARGIN["marker"]
+    markers = np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r,
+                               every[:, 1] + r]) if len(every) else np.zeros((0, 4))
+    sizes = [text_size(t, font_size) for t in texts]
+    curve = resample([c for c in curves if len(c)], RESAMPLE_PT) if len(curves) else \
+        np.zeros((0, 2))
+    crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
+    order = sorted(range(len(texts)), key=lambda i: -crowd[i])
+    placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
+    out: list[Fit | None] = [None] * len(texts)
+    g, wide = MARGIN["grow"], MARGIN["wide"]
+    for i in order:
+        px, py = pts[i]
+        w, h = sizes[i]
+        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) > 1e-6]
+        best: tuple[float, Fit] | None = None
+        rank = 0
+        for k, far in enumerate(FITS):
+            d = (marker_size / 2 + gap) * far
+            for dx, dy in OFFSETS:
+                rank += 1
+                x0 = px + dx * d - (w if dx < 0 else w / 2 if dx == 0 else 0)
+                y0 = py + dy * d - (h if dy < 0 else h / 2 if dy == 0 else 0)
+                box = np.array([x0, y0, x0 + w, y0 + h])
+                cx = (box[0] + box[2]) / 2
+                big = np.array([cx - wide * w / 2 - g, y0 - g, cx + wide * w / 2 + g, y0 + h + g])
+                bad = 0.0
+                bad += 100.0 * _hits(big, np.array(placed).reshape(-1, 4))
+                bad += 100.0 * _hits(big, markers)
+                if len(others):
+                    own = float(_dist_to_box(np.array([[px, py]]), big)[0])
+                    near = float(_dist_to_box(others, big).min())
+                    bad += 100.0 * (near < own + MARGIN["nearer"])
+                if frame is not None:
+                    bad += 100.0 * (box[0] < frame[0] or box[1] < frame[1]
+                                    or box[2] > frame[2] or box[3] > frame[3])
+                soft = rank * 0.5
+                if len(curve):
+                    inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
+                              & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
+                    soft += 1.5 * float(inside.sum())
+                score = bad * 1000.0 + soft
+                f = Fit((float(dx * d), float(dy * d)), (int(dx), int(dy)),
+                        tuple(float(v) for v in box), k >= 2, bad == 0.0)  # type: ignore[arg-type]
+                if best is None or score < best[0]:
+                    best = (score, f)
+        assert best is not None
+        f = best[1]
+        if not f.ok and i < len(optional) and optional[i]:
+            continue
+        placed.append(np.asarray(f.box))
+        out[i] = f
+    return out
+
+
+def crowded_region(anchors: Sequence[tuple[float, float]], markers: Sequence[tuple[float, float]],
+                   side: float) -> tuple[float, float, float, float] | None:
+    """The square ``(x0, y0, x1, y1)`` of the points that crowd, in the frame's units.
+
+    A point is crowded when :data:`CROWD` ``count`` other markers lie within
+    ``radius · side`` of it; the region holds the crowded points and their near
+    neighbours, widened by ``pad`` of its size (and at least the radius), square.
+    None when nothing crowds or the region would exceed ``largest · side`` (no zoom).
+
+    Examples
+    --------
+    >>> crowded_region([(0, 0), (5, 0), (0, 5), (5, 5)], [], 400.0)
+    (-8.0, -8.0, 13.0, 13.0)
+    >>> crowded_region([(0, 0), (300, 0)], [], 400.0) is None
+    True
+    """
+    pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
+    every = np.vstack([pts, np.asarray(markers, dtype=float).reshape(-1, 2)])
+    if len(pts) < 2:
+        return None
+    radius = CROWD["radius"] * side
+    dist = np.hypot(every[:, None, 0] - pts[None, :, 0], every[:, None, 1] - pts[None, :, 1])
+    crowded = (dist < radius).sum(axis=0) - 1 >= CROWD["count"]
+    if not crowded.any():
+        return None
+    keep = (dist[:, crowded] < radius).any(axis=1)
+    sel = every[keep]
+    (x0, y0), (x1, y1) = sel.min(axis=0), sel.max(axis=0)
+    size = max(x1 - x0, y1 - y0)
+    size += max(2 * CROWD["pad"] * size, radius)
+    if size > CROWD["largest"] * side:
+        return None
+    cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+    return (float(cx - size / 2), float(cy - size / 2), float(cx + size / 2),
+            float(cy + size / 2))
+
+
+def leader(point: tuple[float, float], box: tuple[float, float, float, float]
+           ) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The leader line from ``point`` to the nearest point of ``box`` (same units)."""
+    x = min(max(point[0], box[0]), box[2])
+    y = min(max(point[1], box[1]), box[3])
+    end = (float(x), float(y)) if math.hypot(x - point[0], y - point[1]) > 0 else point
+    return point, end

@@ -1,0 +1,105 @@
+"""Labels that name their point, measured in Chromium (issue 23): in the SVG export of the
+four presets and of random grasps, no label covers another label or a point marker, and
+each label is nearer its own point than any other point, in each panel (the diagram and
+its zoomed inset).  The boxes are the browser's layout (``getBoundingClientRect`` of the
+rendered glyphs and markers), not the program's own estimates."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from _browser import chromium
+from graspcompass import Grasp, internal_force_diagram
+from graspcompass.export import to_svg
+
+#: Per panel: each point group's marker box and label box (client pixels).
+MEASURE = """() => {
+  const out = [];
+  for (const panel of document.querySelectorAll('g.panel')) {
+    const pts = [];
+    for (const g of panel.querySelectorAll('g.point')) {
+      const c = g.querySelector('circle').getBoundingClientRect();
+      const t = g.querySelector('text');
+      const r = t ? t.getBoundingClientRect() : null;
+      pts.push({id: g.id, m: [c.left, c.top, c.right, c.bottom],
+                t: r ? [r.left, r.top, r.right, r.bottom] : null});
+    }
+    out.push({panel: panel.id, pts: pts});
+  }
+  return out;
+}"""
+
+
+def _overlap(a, b) -> float:
+    w = min(a[2], b[2]) - max(a[0], b[0])
+    h = min(a[3], b[3]) - max(a[1], b[1])
+    return max(w, 0.0) * max(h, 0.0)
+
+
+def _dist(p, box) -> float:
+    dx = max(box[0] - p[0], 0.0, p[0] - box[2])
+    dy = max(box[1] - p[1], 0.0, p[1] - box[3])
+    return (dx * dx + dy * dy) ** 0.5
+
+
+def faults(panels) -> list[str]:
+    """Every broken rule: label over label, label over marker, label nearer another point."""
+    bad = []
+    for panel in panels:
+        pts = panel["pts"]
+        centre = {p["id"]: ((p["m"][0] + p["m"][2]) / 2, (p["m"][1] + p["m"][3]) / 2)
+                  for p in pts}
+        labelled = [p for p in pts if p["t"] is not None]
+        for i, p in enumerate(labelled):
+            for q in labelled[i + 1:]:
+                if _overlap(p["t"], q["t"]) > 0.0:
+                    bad.append(f"{panel['panel']}: label {p['id']} over label {q['id']}")
+            for q in pts:
+                if _overlap(p["t"], q["m"]) > 0.0:
+                    bad.append(f"{panel['panel']}: label {p['id']} over marker {q['id']}")
+            own = _dist(centre[p["id"]], p["t"])
+            for q in pts:  # a marker over the label's own marker is its place too
+                if (q["id"] != p["id"] and _overlap(q["m"], p["m"]) == 0.0
+                        and _dist(centre[q["id"]], p["t"]) <= own):
+                    bad.append(f"{panel['panel']}: label {p['id']} nearer {q['id']}")
+    return bad
+
+
+def random_grasps(count: int, seed: int = 23) -> list[Grasp]:
+    rnd = random.Random(seed)
+    out = []
+    while len(out) < count:
+        phi1, phi2 = rnd.randint(25, 155), rnd.randint(25, 155)
+        xi1 = rnd.randint(abs(phi1 - 90) + 3, 80)
+        xi2 = rnd.randint(abs(phi2 - 90) + 3, 80)
+        out.append(Grasp(rnd.randint(15, 200) / 100, rnd.randint(15, 200) / 100,
+                         rnd.randint(0, 120) / 100, f"{phi1}*pi/180", f"{phi2}*pi/180",
+                         xi1=f"{xi1}*pi/180", xi2=f"{xi2}*pi/180"))
+    return out
+
+
+def measure(page, svg: str):
+    page.set_content(f"<!doctype html><html><body style='margin:0'>{svg.split('?>', 1)[1]}"
+                     "</body></html>")
+    return page.evaluate(MEASURE)
+
+
+@pytest.mark.xfail(strict=False, reason="issue 23 open: the rule 'nearer its own point than "
+                   "any other' still fails for crowded points (145 faults over these 24 "
+                   "pictures, mostly labels of points near O among the break points)")
+def test_svg_labels_name_their_points_in_chromium() -> None:
+    grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
+    grasps += random_grasps(20)
+    with chromium("the SVG labels") as browser:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        report = {}
+        for g in grasps:
+            c = internal_force_diagram(g)
+            panels = measure(page, to_svg(c))
+            assert sum(p["t"] is not None for pl in panels for p in pl["pts"]) >= 4
+            found = faults(panels)
+            if found:
+                report[str(g.params if hasattr(g, "params") else g)] = found
+    assert not report, report
