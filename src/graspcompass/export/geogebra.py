@@ -43,13 +43,13 @@ from xml.sax.saxutils import quoteattr
 
 import sympy as sp
 
-from .. import labelling
 from ..geometry import Line, Point
 from ..geometry.numeric import to_float
-from ..palette import rgb
+from ..scene import labelling
+from ..scene.palette import rgb
+from ..scene.picture import build_scene, label_tex
 from . import _ggb_program as _prog
 from ._ggb_defs import _SIDE, SLIDERS, definition, ggb_label
-from ._scene import build_scene, label_tex
 
 if TYPE_CHECKING:
     from ..construction import Construction

@@ -49,11 +49,11 @@ from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from .. import labelling
 from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
-from ..palette import PALETTE
+from ..scene import labelling
+from ..scene.palette import PALETTE
 
 if TYPE_CHECKING:
     from ..construction import Construction

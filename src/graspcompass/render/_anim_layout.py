@@ -68,8 +68,9 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     title = fig.text(0.5, 1 - 0.012 * W / H, getattr(anim.construction.grasp, "title", None)
                      or "", ha="center", va="top", fontsize=title_pt)
     bar_h = max(0.012, 4.0 / H) if layout == "side" else 0.012
-    anim._bar = fig.add_artist(Rectangle((0, 0), 0, bar_h, transform=fig.transFigure,
-                                         color=th.highlight_color, zorder=10))
+    anim._bar = Rectangle((0, 0), 0, bar_h, transform=fig.transFigure,
+                          color=th.highlight_color, zorder=10)
+    fig.add_artist(anim._bar)
     margin = max(0.03 * W, 4.0)
     tick = th.font_size * 0.7 * px * 1.6  # the tick labels' room
     title_h = title_pt * px * 1.5 + 0.012 * W
@@ -97,7 +98,7 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         anim._caption.set_y(top / H)
         bottom = top + 0.4 * margin + tick
         ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
-        anim._fade_region: Any = np.s_[:int(H - top - 2)]
+        anim._fade_region = np.s_[:int(H - top - 2)]
     else:
         anim._caption.set_y(1 - title_h / H - margin / H)
         anim._fade_region = np.s_[:, :int(x_cap - margin)]

@@ -38,7 +38,8 @@ from typing import Any
 import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.figure import Figure
-from matplotlib.patches import Patch
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch, Rectangle
 from matplotlib.text import Annotation, Text
 
 from ..scene.layout import numeric_objects, tex
@@ -64,6 +65,15 @@ AX_RECT = (0.1, 0.2, 0.86, 0.72)
 
 class ConstructionAnimation(FrameAnimation):
     """The construction of §3.3 replayed step by step; see :func:`animate_construction`."""
+
+    # set by ``_layout`` (render/_anim_layout.py)
+    layout: str
+    _bar: Rectangle
+    _caption: Text
+    _title: Text
+    _wrapped: list[str]
+    _hold_wrapped: str
+    _fade_region: Any  # a numpy index of the rows (or columns) that fade
 
     def __init__(self, construction: Any, fps: float | None = None,
                  frames_per_step: int | None = None, pause_frames: int | None = None,
@@ -110,7 +120,7 @@ class ConstructionAnimation(FrameAnimation):
             for a in arts.get(s.name, []):
                 owners.setdefault(id(a), []).append(s.name)
         self._items: list[list[tuple[Artist, str, dict[str, Any]]]] = [[] for _ in steps]
-        self._shared: list[tuple[Artist, list[tuple[int, str]], dict[str, Any]]] = []
+        self._shared: list[tuple[Text, list[tuple[int, str]], dict[str, Any]]] = []
         seen: set[int] = set()
         made = scene_of(construction).made
         for cone in ("cone1", "cone2"):  # a friction cone appears once both its sides exist
@@ -123,7 +133,7 @@ class ConstructionAnimation(FrameAnimation):
                     continue
                 seen.add(id(a))
                 role = self._role(a, s)
-                if role == "label" and len(owners[id(a)]) > 1:
+                if role == "label" and isinstance(a, Text) and len(owners[id(a)]) > 1:
                     self._shared.append((a, self._label_parts(a, owners[id(a)]), _snap(a)))
                 else:
                     self._items[s.index].append((a, role, _snap(a)))
@@ -157,7 +167,8 @@ class ConstructionAnimation(FrameAnimation):
             return "circle" if s.kind == "circle" else "fill"
         if s.kind == "envelope":
             return "trace"
-        return "line" if s.kind == "line" and a.get_linestyle() != "None" else "marker"
+        solid = not isinstance(a, Line2D) or a.get_linestyle() != "None"
+        return "line" if s.kind == "line" and solid else "marker"
 
     def _label_parts(self, a: Any, names: list[str]) -> list[tuple[int, str]]:
         """The parts of a shared label ``$A = B$``, each with the step making its point."""
@@ -253,8 +264,8 @@ class ConstructionAnimation(FrameAnimation):
         steps = self.construction.steps
         inputs = set(steps[st.step].inputs)
         hold = st.kind == "hold"
-        for a in self._aids:
-            a.set_visible(False)
+        for aid in self._aids:
+            aid.set_visible(False)
         k = 0
         for i, items in enumerate(self._items):
             key: Any = None  # the current step: set at every frame, never cached
@@ -287,8 +298,8 @@ class ConstructionAnimation(FrameAnimation):
             if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
                 _fade(a, snap, f)
         self._caption.set_text(self.caption_at(frame))
-        done = 1.0 if hold else (st.step + (st.progress if st.kind == "draw" else 1.0))
-        self._bar.set_width(done if hold else done / len(steps))
+        made = 1.0 if hold else (st.step + (st.progress if st.kind == "draw" else 1.0))
+        self._bar.set_width(made if hold else made / len(steps))
 
     def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Any, kind: str,
                      p: float, raw: float) -> None:
