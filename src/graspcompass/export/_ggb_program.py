@@ -85,8 +85,9 @@ def live(d: Any, step: Any, vals: tuple[str, ...]) -> Any:
 
 
 def _claim(c: Any) -> str | None:
-    names = [getattr(t, "name", None) for t in c.terms]
-    if None in names and c.kind not in ("equal",):
+    found = [getattr(t, "name", None) for t in c.terms]
+    names = [n for n in found if n is not None]
+    if len(names) < len(found) and c.kind not in ("equal",):
         return None
     k = c.kind
     if k == "collinear" and len(names) == 3:
@@ -100,7 +101,7 @@ def _claim(c: Any) -> str | None:
     if k == "congruent":
         a, b, cc, d = names
         return f"AreCongruent[Segment[{a}, {b}], Segment[{cc}, {d}]]"
-    if k == "equal" and None not in names:
+    if k == "equal" and len(names) == len(found):
         return f"AreEqual[{names[0]}, {names[1]}]"
     return None
 

@@ -35,6 +35,7 @@ A change stays under 30 ms (issue 12 §1; ``bench/bench_explorer.py``):
 
 from __future__ import annotations
 
+import functools
 import io
 import math
 import textwrap
@@ -136,7 +137,7 @@ class Explorer(_Events):
                       else (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v))))
             s = _Slider(sax, label, lo, hi, valinit=min(max(v, lo), hi), valfmt="%.3g")
             s.drawon = False  # the explorer redraws (blits) after its own update
-            s.on_changed(lambda val, n=name: self._on_slider(n, val))
+            s.on_changed(functools.partial(self._on_slider, name))
             self.sliders[name] = s
         mono = FontProperties(family="monospace", size=9)
         self.fig.text(0.67, 0.42, "k_grasp(θ), eq. (25)\nF_int = k / (x1 + x2) · F_e, eq. (17)\n"

@@ -64,8 +64,8 @@ def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
     """
     grasp = construction.grasp
     ext = shape_extent(getattr(grasp, "shape", None))
-    style = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
-                 lw=theme.line_width, zorder=0.5)
+    style: dict[str, Any] = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
+                                 lw=theme.line_width, zorder=0.5)
     if ext is not None:
         kind = grasp.shape[0]
         patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
@@ -95,7 +95,7 @@ def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme
         kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
                   label="cone sides, extended (§3.3)" if role == "cone_side" and _n(step) == 1
                   else "_nolegend_")
-    arts: list[Artist] = ax.plot([x0, x1], [y0, y1], **{**kw, **hl})
+    arts: list[Artist] = list(ax.plot([x0, x1], [y0, y1], **{**kw, **hl}))
     if role == "axis":
         end = (x1, y1) if (x1 - x0) + (y1 - y0) > 0 else (x0, y0)
         arts.append(ax.annotate({1: "x", 2: "y"}.get(_n(step), name), end, xytext=(-4, -4),
@@ -117,7 +117,7 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
     a, b = tuple(np.asarray(a) + off), tuple(np.asarray(b) + off)
     seg = clip_segment(a, b, box)
     if seg is None or math.dist(a, b) < 1e-9 * span:
-        return ax.plot([a[0]], [a[1]], marker="|", color=color, ms=4, lw=0)
+        return list(ax.plot([a[0]], [a[1]], marker="|", color=color, ms=4, lw=0))
     tail = math.dist(seg[0], a) < 1e-12 * span  # an arrow head only where the length ends
     head = math.dist(seg[1], b) < 1e-12 * span  # inside the view ("<--" is no style)
     style = {(True, True): "<->", (True, False): "<-", (False, True): "->",
@@ -214,10 +214,10 @@ def draw_construction(construction: Any, step: int | None = None, ax: Axes | Non
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
         if s.kind == "point":
             small = s.role == "break_point"  # the envelope's break points: small, unlabelled
-            out[s.name] = ax.plot(
+            out[s.name] = list(ax.plot(
                 [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
                 mfc="white" if small else hl.get("color", theme.point_color),
-                mec=hl.get("color", theme.point_color), mew=0.8)
+                mec=hl.get("color", theme.point_color), mew=0.8))
         elif s.kind == "line":
             out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
         elif s.kind == "circle":
@@ -313,7 +313,7 @@ def figure_diagram(construction: Any, step: int | None = None, overlay: bool = T
     ax.tick_params(labelsize=theme.font_size * 0.8)
     grasp = construction.grasp
     text = title if title is not None else (getattr(grasp, "title", None) or _params(grasp))
-    if not full:
+    if not full and step is not None:
         text += f"\nafter step {step % len(construction.steps)} of 0–{last}"
     ax.set_title(text, fontsize=theme.font_size * 1.05)
     if zoom is not None:

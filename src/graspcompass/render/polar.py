@@ -69,12 +69,13 @@ def draw_k_polar(grasp: Any, ax: Axes | None = None, samples: int = 2000,
         for n in (1, 2, 3, 4):
             k = np.where(ks[n - 1] > 0, ks[n - 1], np.nan)
             xy = polar_points(theta, k)
-            out[f"k{n}"] = ax.plot(xy[:, 0], xy[:, 1], color=theme.circle_color(n),
-                                   lw=theme.thin_width, zorder=4.4, label=f"$k_{n}(\\theta)$")
+            out[f"k{n}"] = list(ax.plot(xy[:, 0], xy[:, 1], color=theme.circle_color(n),
+                                        lw=theme.thin_width, zorder=4.4,
+                                        label=f"$k_{n}(\\theta)$"))
     xy = polar_points(theta, np.asarray(grasp.k_grasp(theta), dtype=float))
-    out["k_grasp"] = ax.plot(xy[:, 0], xy[:, 1], color=theme.computer_color,
-                             ls=theme.computer_style, lw=theme.computer_width, zorder=4.5,
-                             label=label if label is not None else "_nolegend_")
+    out["k_grasp"] = list(ax.plot(xy[:, 0], xy[:, 1], color=theme.computer_color,
+                                  ls=theme.computer_style, lw=theme.computer_width, zorder=4.5,
+                                  label=label if label is not None else "_nolegend_"))
     return out
 
 

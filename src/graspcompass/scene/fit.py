@@ -67,9 +67,9 @@ def _hits(box: np.ndarray, boxes: np.ndarray) -> bool:
                        & (np.minimum(box[3], boxes[:, 3]) > np.maximum(box[1], boxes[:, 1]))))
 
 
-def fit(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
+def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str],
         curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
-        obstacles: Sequence[tuple[float, float]] = (), font_size: float = FONT_PT,
+        obstacles: Sequence[tuple[float, float]] | np.ndarray = (), font_size: float = FONT_PT,
         marker_size: float = MARKER_PT, gap: float = GAP_PT,
         optional: Sequence[bool] = (),
         avoid: Sequence[tuple[float, float, float, float]] = ()) -> list[Fit | None]:
@@ -148,7 +148,8 @@ def fit(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
     return out
 
 
-def crowded_region(anchors: Sequence[tuple[float, float]], markers: Sequence[tuple[float, float]],
+def crowded_region(anchors: Sequence[tuple[float, float]] | np.ndarray,
+                   markers: Sequence[tuple[float, float]] | np.ndarray,
                    side: float) -> tuple[float, float, float, float] | None:
     """The square ``(x0, y0, x1, y1)`` of the points that crowd, in the frame's units.
 

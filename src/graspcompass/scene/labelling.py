@@ -197,11 +197,11 @@ class Placement:
     box: tuple[float, float, float, float]
 
 
-def place(anchors: Sequence[tuple[float, float]], texts: Sequence[str],
+def place(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str],
           curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
           avoid: Sequence[tuple[float, float, float, float]] = (),
           font_size: float = FONT_PT, marker_size: float = MARKER_PT,
-          gap: float = GAP_PT, obstacles: Sequence[tuple[float, float]] = ()
+          gap: float = GAP_PT, obstacles: Sequence[tuple[float, float]] | np.ndarray = ()
           ) -> list[Placement]:
     """One :class:`Placement` per label ``texts[i]`` of the point ``anchors[i]``.
 

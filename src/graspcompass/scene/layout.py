@@ -97,7 +97,7 @@ def numeric_objects(construction: Any) -> dict[str, Any]:
         return dict(hit[1])
     out = _numeric(construction)
     try:
-        ref = weakref.ref(construction, lambda _r, k=key: _NUMERIC.pop(k, None))
+        ref = weakref.ref(construction, lambda _r: _NUMERIC.pop(key, None))
     except TypeError:  # an object without weak references is not remembered
         return out
     _NUMERIC[key] = (ref, out)

@@ -315,7 +315,7 @@ def scene_of(construction: Any, title: str | None = None) -> Scene:
     if hit is not None and hit[0]() is construction:
         return hit[1]
     scene = build_scene(construction)
-    _SCENES[key] = (weakref.ref(construction, lambda _r, k=key: _SCENES.pop(k, None)), scene)
+    _SCENES[key] = (weakref.ref(construction, lambda _r: _SCENES.pop(key, None)), scene)
     return scene
 
 
