@@ -104,7 +104,7 @@ def _interactive(backend: str) -> bool:
     except ImportError:  # matplotlib < 3.9
         from matplotlib import rcsetup
 
-        static = rcsetup.non_interactive_bk
+        static = rcsetup.non_interactive_bk  # type: ignore[attr-defined]  # gone in 3.9
     name = backend.lower()
     return name not in {b.lower() for b in static} and "inline" not in name
 
@@ -121,8 +121,11 @@ def notebook_box(ex: Any, w: Any) -> Any:
         s = ex.sliders[name]
         c = w.FloatSlider(value=s.val, min=s.valmin, max=s.valmax, step=(s.valmax - s.valmin) / 400,
                           description=label.replace("$", "").replace("\\", ""))
-        c.observe(lambda ch, n=name, u=unit: (ex.set_params(**{n: ch["new"] * u}), render()),
-                  names="value")
+        def moved(ch: Any, n: str = name, u: Any = unit) -> None:
+            ex.set_params(**{n: ch["new"] * u})
+            render()
+
+        c.observe(moved, names="value")
         controls.append(c)
     render()
     box = w.VBox([w.HBox([w.VBox(controls[:4]), w.VBox(controls[4:])]), image])

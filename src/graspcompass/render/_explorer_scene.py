@@ -186,7 +186,7 @@ def construction_scene(p: dict[str, float], grid: ThetaGrid) -> Scene:
     from ..geometry import evaluate
     from ..grasp import Grasp
 
-    g = Grasp(*(p[k] for k in GRASP_KEYS[:5]), mu1=p["mu1"], mu2=p["mu2"])
+    g = Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], mu1=p["mu1"], mu2=p["mu2"])
     c = internal_force_diagram(g)
     num = {s.name: evaluate(s.obj) for s in c.steps if s.kind in ("point", "line", "circle")}
     sides = np.array([num[f"side{n}"] for n in (1, 2, 3, 4)], dtype=float)

@@ -17,7 +17,7 @@ Private to :mod:`graspcompass.render.handdrawing`.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -25,7 +25,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
-from matplotlib.text import Text
+from matplotlib.text import Annotation
 
 from ._hand_text import A4_MM
 from .figure import draw_construction
@@ -52,6 +52,7 @@ def cone_angles(ax: Axes, grasp: Any, length: float, font: float = 7.0) -> list[
     """At each contact the negative y-axis direction (dotted, the reference of §2.2.1) and,
     at the end of each cone side, its angle φ_i ± ξ_i from it (CW at P1, CCW at P2)."""
     arts: list[Artist] = []
+    spread: list[tuple[Annotation, tuple[float, float, float, float]]] = []
     for i, sides in ((1, (1, 3)), (2, (2, 4))):
         P = grasp.P1 if i == 1 else grasp.P2
         px, py = float(P.x), float(P.y)
@@ -66,25 +67,26 @@ def cone_angles(ax: Axes, grasp: Any, length: float, font: float = 7.0) -> list[
             sym = "+" if sign > 0 else "-"
             label = f"$\\varphi_{i} {sym} \\xi_{i}$ = {_deg(math.degrees(phi + sign * xi))}"
             ux, uy = dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)
-            arts.append(ax.annotate(
+            note = ax.annotate(
                 label, end, xytext=(4 * ux, 4 * uy), textcoords="offset points",
                 gid=f"side{n}",
                 ha="left" if ux > 0.3 else "right" if ux < -0.3 else "center",
                 va="bottom" if uy > 0.3 else "top" if uy < -0.3 else "center",
                 fontsize=font, zorder=6, annotation_clip=False,
-                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8)))
-            arts[-1].gc_side = (px, py, k * dx, k * dy)
-    _spread(ax, [a for a in arts if hasattr(a, "gc_side")])
+                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
+            arts.append(note)
+            spread.append((note, (px, py, k * dx, k * dy)))
+    _spread(ax, spread)
     return arts
 
 
-def _spread(ax: Axes, labels: list[Any]) -> None:
+def _spread(ax: Axes, labels: list[tuple[Annotation, tuple[float, float, float, float]]]
+            ) -> None:
     """Angle labels that overlap one placed before move inwards along their side (to 3/4,
-    then 1/2 of its length)."""
-    renderer = ax.figure.canvas.get_renderer()
+    then 1/2 of its length); each label comes with its side (px, py, dx, dy)."""
+    renderer = _renderer(ax)
     placed: list[Any] = []
-    for t in labels:
-        px, py, dx, dy = t.gc_side
+    for t, (px, py, dx, dy) in labels:
         for f in (1.0, 0.75, 0.5, 0.35):
             t.xy = (px + f * dx, py + f * dy)
             bb = t.get_window_extent(renderer)
@@ -98,35 +100,47 @@ def _hits(bb: Any, pts: np.ndarray) -> bool:
                        & (pts[:, 1] > bb.y0) & (pts[:, 1] < bb.y1)))
 
 
-def clear_labels(ax: Axes, labels: list[Text], lines: list[Line2D],
+def _renderer(ax: Axes) -> Any:
+    """The renderer of the axes' (Agg) canvas; the stubs' FigureCanvasBase has none."""
+    return ax.figure.canvas.get_renderer()  # type: ignore[attr-defined]
+
+
+def clear_labels(ax: Axes, labels: list[Annotation], lines: list[Line2D],
                  others: list[Artist]) -> None:
     """Move each label (an annotation in offset points) off ``lines`` (the cone sides)
     and ``others``: the first of eight places round its point that is clear, else it stays."""
-    renderer = ax.figure.canvas.get_renderer()
-    pts = [ax.transData.transform(np.column_stack([
-        np.linspace(*ln.get_xdata()[:2], 60), np.linspace(*ln.get_ydata()[:2], 60)]))
-        for ln in lines]
+    renderer = _renderer(ax)
+
+    def dense(ln: Line2D) -> np.ndarray:  # 60 points along the line's first segment
+        (x0, x1), (y0, y1) = (np.asarray(v, dtype=float)[:2]
+                              for v in (ln.get_xdata(), ln.get_ydata()))
+        return np.column_stack([np.linspace(x0, x1, 60), np.linspace(y0, y1, 60)])
+
+    pts = [ax.transData.transform(dense(ln)) for ln in lines]
     cloud = np.vstack(pts) if pts else np.zeros((0, 2))
     boxes = [a.get_window_extent(renderer) for a in others]
-    places = [((5, 4), "left", "bottom"), ((-5, 4), "right", "bottom"), ((0, 6), "center",
-              "bottom"), ((5, -4), "left", "top"), ((-5, -4), "right", "top"),
-              ((0, -6), "center", "top"), ((7, 0), "left", "center"),
-              ((-7, 0), "right", "center")]
+    places: list[tuple[tuple[int, int], Literal["left", "center", "right"],
+                       Literal["bottom", "center", "top"]]] = [
+        ((5, 4), "left", "bottom"), ((-5, 4), "right", "bottom"), ((0, 6), "center", "bottom"),
+        ((5, -4), "left", "top"), ((-5, -4), "right", "top"), ((0, -6), "center", "top"),
+        ((7, 0), "left", "center"), ((-7, 0), "right", "center")]
     for t in labels:
-        def clear(t: Text = t) -> bool:
+        def clear(t: Annotation = t) -> bool:
             bb = t.get_window_extent(renderer).expanded(1.05, 1.1)
             return not _hits(bb, cloud) and not any(bb.overlaps(o) for o in boxes)
         if clear():
             continue
-        start = (t.xyann, t.get_ha(), t.get_va())
+        start = (t.xyann, t.get_horizontalalignment(), t.get_verticalalignment())
         for off, ha, va in places:
-            t.xyann, _ = off, t.set_ha(ha)
-            t.set_va(va)
+            t.set_horizontalalignment(ha)
+            t.xyann = off
+            t.set_verticalalignment(va)
             if clear():
                 break
         else:
-            t.xyann, _ = start[0], t.set_ha(start[1])
-            t.set_va(start[2])
+            t.set_horizontalalignment(start[1])
+            t.xyann = start[0]
+            t.set_verticalalignment(start[2])
         boxes.append(t.get_window_extent(renderer))
 
 
@@ -181,8 +195,8 @@ def draw_ray(ax: Axes, ex: dict[str, Any], theme: Theme, reach: float) -> list[A
     """The ray e(θ) from O and the point read off at distance k (page 2)."""
     t = math.radians(ex["theta"])
     e = (math.sin(t), -math.cos(t))
-    arts = ax.plot([0, reach * e[0]], [0, reach * e[1]], color="black", lw=0.8, ls="--",
-                   zorder=4.5)
+    arts: list[Artist] = list(ax.plot([0, reach * e[0]], [0, reach * e[1]], color="black",
+                                      lw=0.8, ls="--", zorder=4.5))
     arts += ax.plot([ex["k"] * e[0]], [ex["k"] * e[1]], "s", ms=4, mfc="white",
                     mec="black", mew=0.9, zorder=6)
     return arts
@@ -213,7 +227,7 @@ def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme,
 
 
 def crowded_box(num: dict[str, Any], names: list[str],
-                box: tuple[float, float, float, float]) -> tuple[float, ...] | None:
+                box: tuple[float, float, float, float]) -> tuple[float, float, float, float] | None:
     """The square around the points that lie within :data:`CROWD` of the view's width of
     another (not coinciding) point, padded, or None when nothing crowds."""
     span = box[1] - box[0]
@@ -268,7 +282,7 @@ def page2_extras(fig: Figure, ax: Axes, sub: Any, num: dict[str, Any],
         for a in inset.get_children():  # labels and arrows of points outside stay out
             a.set_clip_on(True)
             a.set_clip_box(inset.bbox)
-            if isinstance(a, Text) and hasattr(a, "xy"):
+            if isinstance(a, Annotation):  # a Text with an ``xy``: an annotation
                 a.set_annotation_clip(True)
         k = (box[1] - box[0]) / (zoom[1] - zoom[0])
         inset.set_title(f"The framed centre, enlarged {k:.1f}×", fontsize=font, loc="left",

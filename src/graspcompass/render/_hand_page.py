@@ -118,7 +118,7 @@ def _cones(ax: Axes, grasp: Any, theme: Theme, length: float) -> list[Artist]:
     for i, (a, b) in ((1, (1, 3)), (2, (2, 4))):
         apex = (float(grasp.P1.x if i == 1 else grasp.P2.x),
                 float(grasp.P1.y if i == 1 else grasp.P2.y))
-        da, db = (tuple(float(v) for v in (d.x, d.y))
+        da, db = ((float(d.x), float(d.y))
                   for d in (grasp.side_direction(a), grasp.side_direction(b)))
         poly = wedge(apex, da, db, 0.6 * length)  # the shading short, the sides long
         arts.append(ax.add_patch(Polygon(poly, closed=True, facecolor=theme.cone_face,

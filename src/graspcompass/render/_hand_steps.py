@@ -241,10 +241,10 @@ def instructions_for(construction: Any, names: Sequence[str],
     """
     if num is None:  # the caller's, when it has them (computed once per worksheet)
         num = numeric_objects(construction)
-    given = set(given)
-    todo = sorted((construction.step(n) for n in names if n not in given),
+    skip = set(given)
+    todo = sorted((construction.step(n) for n in names if n not in skip),
                   key=lambda s: s.index)
-    ns = sorted({_n_of(s.name) for s in todo if _n_of(s.name) and not s.name.startswith(
+    ns = sorted({n for s in todo if (n := _n_of(s.name)) and not s.name.startswith(
         ("side", "circle"))})
     compact = len({_n_of(n) for n in names if _n_of(n)}) > 1
     first = ns[0] if ns else None

@@ -101,7 +101,9 @@ class PathText(PathPatch):
     def set_position(self, xy: tuple[float, float]) -> None:
         """Move the anchor to ``xy`` (in ``coords``)."""
         self._xy = (float(xy[0]), float(xy[1]))
-        self.set_transform(self._points + ScaledTranslation(*self._xy, self._coords))
+        # the stub asks an Affine2DBase; any transform of points (transData) works there
+        self.set_transform(self._points + ScaledTranslation(
+            *self._xy, self._coords))  # type: ignore[arg-type]
 
     def get_position(self) -> tuple[float, float]:
         """The anchor."""

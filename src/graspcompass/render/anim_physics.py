@@ -338,7 +338,7 @@ class OrientationAnimation(_Turning):
         self.force = np.asarray(g.internal_force(self.theta, self.weight), dtype=float)
         d, vmax = float(g.x1 + g.x2), max(math.hypot(*v) for v in self.V)
         self.force_max = vmax / d * self.weight  # max over θ of k_grasp is max|V_n| (§5)
-        shape = getattr(g, "shape", None) or ("",)
+        shape: tuple[Any, ...] = getattr(g, "shape", None) or ("",)
         size = (float(shape[1]) if shape[0] == "circle" else
                 math.hypot(float(shape[1]), float(shape[2])) / 2 if shape[0] == "rectangle"
                 else 0.0)

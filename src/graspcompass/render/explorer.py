@@ -220,7 +220,9 @@ class Explorer(_Events):
                            *self.ax.spines.values()}}
         axes = {"main": self.ax}
         for name, s in self.sliders.items():
-            groups[f"slider:{name}"] = {s.poly, s.vline, s._handle, s.valtext}
+            # ``_handle``: the knob, private (not in the stubs) but the slider's own artist
+            groups[f"slider:{name}"] = {s.poly, s.vline, s._handle,  # type: ignore[attr-defined]
+                                        s.valtext}
             axes[f"slider:{name}"] = s.ax
         out = {g: sorted((a for a in axes[g].get_children() if a in arts),
                          key=lambda a: a.get_zorder()) for g, arts in groups.items()}

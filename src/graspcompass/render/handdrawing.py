@@ -52,7 +52,7 @@ from matplotlib.axes import Axes
 from matplotlib.backends.backend_pdf import PdfPages
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
-from matplotlib.text import Text
+from matplotlib.text import Annotation, Text
 
 from ..scene.layout import numeric_objects, view_box
 from . import _hand_extra as extra
@@ -313,7 +313,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         out["cone angles"] = extra.cone_angles(ax, c.grasp, cone_len) if page == 0 else []
         _finish_axes(ax, box)
         extra.clear_labels(ax, [a for k in ("P1", "P2") for a in out.get(k, [])
-                                if isinstance(a, Text)],
+                                if isinstance(a, Annotation)],
                            [a for a in out["cones"] if isinstance(a, Line2D)],
                            out["cone angles"])
         unit_bar = _unit_bar(ax, box, scale)

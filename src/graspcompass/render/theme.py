@@ -18,9 +18,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..scene.palette import PALETTE
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES", "Quality",
            "Theme", "contrast_ratio", "relative_luminance"]
@@ -30,7 +33,7 @@ __all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES"
 MIN_CONTRAST = {"graphics": 3.0, "text": 4.5}
 
 
-def relative_luminance(rgb: Sequence[float]) -> float:
+def relative_luminance(rgb: Sequence[float] | np.ndarray) -> float:
     """WCAG 2.1 relative luminance of an sRGB colour with channels in [0, 1].
 
     >>> relative_luminance((1.0, 1.0, 1.0)), relative_luminance((0.0, 0.0, 0.0))
@@ -40,7 +43,7 @@ def relative_luminance(rgb: Sequence[float]) -> float:
     return 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2]
 
 
-def contrast_ratio(a: Sequence[float], b: Sequence[float]) -> float:
+def contrast_ratio(a: Sequence[float] | np.ndarray, b: Sequence[float] | np.ndarray) -> float:
     """WCAG 2.1 contrast ratio (L_light + 0.05) / (L_dark + 0.05) of two sRGB colours.
 
     >>> round(contrast_ratio((0.0, 0.0, 0.0), (1.0, 1.0, 1.0)), 6)

@@ -414,10 +414,13 @@ def jshtml(frames: Iterable[np.ndarray], size: Any, dpi: float, fps: float,
     from matplotlib.animation import HTMLWriter
 
     source = _Frames(size, dpi, None if palette_sample is None else _palette(palette_sample))
-    writer = HTMLWriter(fps=check_fps(fps), embed_frames=True, default_mode="loop")
+    # the stubs ask an int fps and a Figure: the writer takes any rate, and of the figure
+    # only what _Frames has (its size, dpi and savefig)
+    writer = HTMLWriter(fps=check_fps(fps), embed_frames=True,  # type: ignore[arg-type]
+                        default_mode="loop")
     with TemporaryDirectory() as tmp:
         out = Path(tmp, "animation.html")
-        with writer.saving(source, out, dpi):
+        with writer.saving(source, out, dpi):  # type: ignore[arg-type]
             for rgb in frames:
                 source.rgb = rgb
                 writer.grab_frame()
