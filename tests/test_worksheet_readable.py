@@ -23,7 +23,6 @@ from matplotlib.lines import Line2D
 from matplotlib.text import Text
 
 from graspcompass import Grasp, layout
-from graspcompass.render import _hand_steps, figure, handdrawing
 from graspcompass.render.handdrawing import Worksheet, worksheet_pages
 
 OWN = dict(x1="1.2", x2="0.3", y="0.4", phi1="61*pi/180", phi2="118*pi/180",
@@ -138,14 +137,15 @@ def test_solution_has_a_legend_and_the_centre_enlarged(fig6: Worksheet) -> None:
 
 
 def test_numeric_objects_once_per_worksheet(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The float values of the objects are computed once per worksheet (they were computed
+    four times): every reader goes through the scene's one computation."""
     calls = []
-    real = layout.numeric_objects
+    real = layout._numeric
 
     def counted(c: object) -> object:
         calls.append(1)
         return real(c)
 
-    for mod in (layout, handdrawing, _hand_steps, figure):
-        monkeypatch.setattr(mod, "numeric_objects", counted)
+    monkeypatch.setattr(layout, "_numeric", counted)
     worksheet_pages(Grasp.preset("table1c"))
     assert len(calls) == 1

@@ -33,6 +33,7 @@ from ..boundary.errors import InputError
 from ..boundary.expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
 from ..boundary.inputs import exact_denominators
 from ..geometry import GeometryError
+from ._program_text import format_program
 from .operations import OPERATIONS, ROLES
 
 __all__ = [
@@ -223,7 +224,7 @@ class Program:
 
     def to_text(self) -> str:
         """The program written in the language again (``parse(p.to_text()) == p``)."""
-        return _format(self)
+        return format_program(self, _VALUE_CLAIMS)
 
 
 def _makes(op: str) -> str:
@@ -476,54 +477,6 @@ class _Checker:
 
 
 # -- writing a program ------------------------------------------------------------------
-def _quote(text: str) -> str:
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
-def _expr(v: sp.Expr) -> str:
-    return sp.sstr(v)
-
-
-def _term(t: Term) -> str:
-    if isinstance(t, Ref):
-        return t.name
-    if isinstance(t, PointValue):
-        return f"point({_expr(t.x)}, {_expr(t.y)})"
-    return _expr(t.expr)
-
-
-def _format(p: Program) -> str:
-    out: list[str] = []
-    for q in p.params:
-        dom = {"positive": "> 0", "nonnegative": ">= 0"}.get(q.domain, q.domain)
-        out.append(f"param {q.name} {dom}")
-    out += [f"hypothesis {h}" for h in p.hypotheses]
-    out += [f"let {n} = {_expr(v)}" for n, v in p.lets]
-    for s in p.steps:
-        parts = [s.name, "=", s.op, *s.inputs]
-        if s.values:
-            parts.append("(" + ", ".join(_expr(v) for v in s.values) + ")")
-        if s.role:
-            parts += ["role", s.role, *map(str, s.n)]
-        parts += ["key"] * s.key + ["optional"] * s.optional
-        if s.ref:
-            parts += ["ref", _quote(s.ref)]
-        parts.append(_quote(s.caption))
-        out.append(" ".join(parts))
-    for c in p.claims:
-        if c.kind in _VALUE_CLAIMS:
-            line = (f"claim {c.kind} " + " ".join(_term(t) for t in c.terms[:-1]) + " == "
-                    + _term(c.terms[-1]))
-        elif c.kind in ("equal", "sign"):
-            body = f"{_term(c.terms[0])} {c.relation} {_term(c.terms[1])}"
-            line = f"claim {'sign ' * (c.kind == 'sign')}{body}"
-        else:
-            line = f"claim {c.kind} " + " ".join(_term(t) for t in c.terms)
-        out.append(line + "".join(f" under {h}" if i == 0 else f" {h}"
-                                  for i, h in enumerate(c.under)))
-    return "\n".join(out) + "\n"
-
-
 # -- the Python builder -----------------------------------------------------------------------
 class ConstructionBuilder:
     """Make a :class:`Program` from Python, with the same checks as :func:`parse`.

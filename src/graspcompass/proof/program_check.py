@@ -146,9 +146,7 @@ def _refs(claim: Claim) -> list[str]:
 
 
 def _text(claim: Claim) -> str:
-    from ..construction.program import _format
-
-    return _format(Program(claims=(claim,))).strip().removeprefix("claim ")
+    return Program(claims=(claim,)).to_text().strip().removeprefix("claim ")
 
 
 def _vacuous(name: str, kind: str, line: int, t0: float, hyps: tuple[str, ...],
