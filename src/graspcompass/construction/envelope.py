@@ -49,6 +49,7 @@ from ..geometry.exact import (
     free,
     has_float,
 )
+from ..geometry.numeric import to_float
 from ..grasp._floatpath import mpf
 
 __all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
@@ -152,7 +153,7 @@ def _angle(vector: Point, approx: Any = None) -> sp.Expr:
 def _float(value: Any) -> float:
     """``float(value)`` of an exact number from its canonical form (sympy's evalf of a
     long exact expression takes seconds)."""
-    return float(mpf(value, 20))
+    return to_float(value, 20)
 
 
 def _parallel(p: Point, e: Point) -> bool:

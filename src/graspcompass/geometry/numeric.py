@@ -7,6 +7,7 @@ safely, never by ``sympify``.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -47,8 +48,16 @@ def to_float(expr: sp.Expr, digits: int = 20) -> float:
     if _has_symbols(expr):
         raise TypeError(f"{expr} has free symbols and no numeric value")
     if not has_float(expr):
-        return float(approx(expr, digits))
+        return _exact_float(expr, digits)
     return float(sp.N(expr, digits))
+
+
+@functools.lru_cache(maxsize=4096)
+def _exact_float(expr: sp.Expr, digits: int) -> float:
+    """:func:`to_float` of an exact number, remembered: a picture reads the same angles
+    and coordinates several times (the scene, the envelope's polyline), and an angle of the
+    envelope (an arctangent) is evaluated by ``sympy.N``."""
+    return float(approx(expr, digits))
 
 
 def _f(expr: sp.Expr, subs: Mapping | None) -> float:
