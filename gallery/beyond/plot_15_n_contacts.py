@@ -9,7 +9,7 @@ on a round part (μ = 1/2): Q is a hexagon, all six circles touch the envelope. 
 thumb below and three fingers above a 2 × 1 part: five vertices, two dual vertices
 redundant.  Each vertex is constructed with parallels through the contacts' cost points
 and one quarter turn (``graspcompass steps --contact ...``); the worst squeeze of the
-gripper over all orientations is F_e max |q| (``graspcompass size --contact ...``).
+gripper over all orientations is ``F_e max |q|`` (``graspcompass size --contact ...``).
 """
 
 import matplotlib.pyplot as plt

@@ -132,7 +132,7 @@ def ncontact_worst(contacts: Any, effort: Any = "sum-normal", com: Any = (0.0, 0
                    external_force: float = 1.0) -> np.ndarray:
     """``F_e max_q |q|`` per grasp (the worst direction's least effort): shape ``(...)``.
 
-    ``inf`` without force closure.  The maximum of |q| over Q is reached at a vertex and
+    ``inf`` without force closure.  The maximum of ``|q|`` over Q is reached at a vertex and
     every dual-feasible basic solution lies in Q, so the maximum over them is it.
     """
     P = np.asarray(contacts, dtype=float)

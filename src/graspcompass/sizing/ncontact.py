@@ -34,8 +34,8 @@ def size_ncontact(grasp: Any, mass: Any, g: Any = "9.80665", accel: Any = None,
     Returns
     -------
     dict
-        ``worst_N`` (F_e max|q|), ``theta_deg`` (the paper's θ of the worst load
-        direction, eq. (26)), ``load_N`` (F_e), ``max_q`` (max |q|), ``effort``,
+        ``worst_N`` (``F_e max|q|``), ``theta_deg`` (the paper's θ of the worst load
+        direction, eq. (26)), ``load_N`` (F_e), ``max_q`` (``max |q|``), ``effort``,
         ``vertices`` (the float vertices of Q) and ``force_closure``.
 
     Raises
