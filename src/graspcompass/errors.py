@@ -1,34 +1,11 @@
 """The package's exceptions, under their public path ``graspcompass.errors``.
 
-The code lives in :mod:`graspcompass.boundary.errors` (the input boundary's folder, issue 21);
-this module re-exports every name of its ``__all__`` and takes its documentation.
+Every name of :mod:`graspcompass.boundary.errors` (the input boundary's folder, issue 21),
+re-exported by its ``__all__``, with its documentation.
 """
 
-from __future__ import annotations
-
 from .boundary import errors as _home
-from .boundary.errors import (
-    ComplexValueError,
-    GraspCompassError,
-    InputError,
-    InputTooLargeError,
-    NonFiniteValueError,
-    NotTextError,
-    OutputError,
-    SymbolicValueError,
-    WrongTypeError,
-)
+from .boundary.errors import *  # noqa: F403
 
-__all__ = [
-    "ComplexValueError",
-    "GraspCompassError",
-    "InputError",
-    "InputTooLargeError",
-    "NonFiniteValueError",
-    "NotTextError",
-    "OutputError",
-    "SymbolicValueError",
-    "WrongTypeError",
-]
-
+__all__ = list(_home.__all__)
 __doc__ = _home.__doc__  # the API page shows the module's own documentation
