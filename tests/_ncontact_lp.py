@@ -120,42 +120,12 @@ class SweepLP:
 
 
 def lp_value(contacts, theta, effort, com=(0.0, 0.0)):
-    """The least effort for the load e(θ) = (sin θ, -cos θ) at the centre of mass; inf if none."""
-    G, owner = edge_matrix(contacts, com)
-    n2 = G.shape[1]
+    """The least effort for the load e(θ) = (sin θ, -cos θ) at the centre of mass; inf if none
+    (scipy's ``linprog`` on :func:`lp_data`)."""
+    c, A_eq, A_ub, b_ub = lp_data(contacts, effort, com)
     b = -np.array([math.sin(theta), -math.cos(theta), 0.0])
-    normals = np.array([(c[2], c[3]) / np.hypot(c[2], c[3]) for c in contacts])
-    edges = G[:2].T
-    named = isinstance(effort, str)
-    if named and effort == "max-normal":
-        n = len(contacts)
-        A_eq = np.hstack([G, np.zeros((3, 1))])
-        A_ub = np.zeros((n, n2 + 1))
-        for j in range(n2):
-            A_ub[owner[j], j] = 1.0
-        A_ub[:, -1] = -1.0
-        c = np.zeros(n2 + 1)
-        c[-1] = 1.0
-        res = linprog(c, A_ub=A_ub, b_ub=np.zeros(n), A_eq=A_eq, b_eq=b, bounds=(0, None),
-                      method="highs")
-    else:
-        if not named:  # custom weights of the normal forces
-            w = normals * np.asarray(effort, dtype=float)[:, None]
-        elif effort == "sum-normal":
-            w = normals
-        elif effort.startswith("pair:"):
-            i, j = (int(v) - 1 for v in effort[5:].split(","))
-            w = np.array([normals[k] if k in (i, j) else (0.0, 0.0)
-                          for k in range(len(contacts))])
-        else:
-            assert effort == "paper"
-            p1, p2 = np.array(contacts[0][:2]), np.array(contacts[1][:2])
-            w = np.array([(p2 - p1) / 2, (p1 - p2) / 2])
-        c = np.einsum("jk,jk->j", w[owner], edges)
-        kw = {}
-        if named and effort == "paper":  # k >= 0 (eq. (25))
-            kw = dict(A_ub=-c[None, :], b_ub=[0.0])
-        res = linprog(c, A_eq=G, b_eq=b, bounds=(0, None), method="highs", **kw)
+    kw = dict(A_ub=A_ub, b_ub=b_ub) if len(b_ub) else {}
+    res = linprog(c, A_eq=A_eq, b_eq=b, bounds=(0, None), method="highs", **kw)
     if res.status == 2:
         return math.inf
     assert res.status == 0, res.message

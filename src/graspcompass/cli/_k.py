@@ -37,7 +37,7 @@ import numpy as np
 import sympy as sp
 
 from ..boundary.errors import InputTooLargeError, NonFiniteValueError
-from ..boundary.expr import _split_unit, parse_angles, parse_exact
+from ..boundary.expr import _split_items, _split_unit, parse_angles, parse_exact
 from ..boundary.inputs import force_value
 from ..boundary.limits import EXACT_ANGLES, EXACT_VALUES, MAX_ANGLES, MAX_LIST_LENGTH
 from ..geometry.numeric import to_float
@@ -57,17 +57,6 @@ DIGITS = 60
 _JSON_RECORD = (' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
                 '"F_int": %r, "limiting": %d}')
 _HEAD = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
-
-
-def _split_items(text: str) -> list[str]:
-    """Split at commas outside parentheses, as :func:`~graspcompass.expr.parse_angles` does."""
-    items, depth, start = [], 0, 0
-    for index, char in enumerate(text):
-        depth += {"(": 1, ")": -1}.get(char, 0)
-        if char == "," and depth == 0:
-            items.append(text[start:index])
-            start = index + 1
-    return [*items, text[start:]]
 
 
 def _range(item: str) -> tuple[sp.Expr, sp.Expr, int, bool] | None:
