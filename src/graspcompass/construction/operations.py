@@ -165,7 +165,7 @@ def _second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     circle's size) is refused with :class:`~graspcompass.geometry.NoIntersectionError`;
     one with symbols is taken (the certifier of ``check`` decides it for all parameters).
     """
-    from ..geometry.exact import Frac, NotAFraction, canon, decide_zero, has_float
+    from ..geometry.exact import Frac, NotAFraction
 
     for c in (c1, c2):
         values = (known.x, known.y, c.center.x, c.center.y, c.radius2)
@@ -177,13 +177,7 @@ def _second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
                 continue
         except NotAFraction:
             pass
-        power = canon((known.x - c.center.x) ** 2 + (known.y - c.center.y) ** 2 - c.radius2)
-        scale = 0.0
-        if has_float(power):
-            scale = abs(float(c.radius2)) + float(c.center.x) ** 2 + float(c.center.y) ** 2
-        if decide_zero(power, scale) is False:
-            raise NoIntersectionError(f"{known} is not on the circle {c}: second_intersection "
-                                      "needs a common point of the two circles")
+        _cls.on_circle_check(known, c, "second_intersection (a common point of the circles)")
     return geo.second_intersection(c1, c2, known)
 
 
