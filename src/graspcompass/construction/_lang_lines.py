@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from ._hypotheses import HYPOTHESIS_LINE, read_inequality
 from .operations import OPERATIONS
 from .program import (
     _CLAIM_KINDS,
@@ -113,6 +114,11 @@ def _statement(body: str, chk: _Checker, number: int, err: Any) -> None:
                 raise _Problem("write let NAME = VALUE", "name")
             slots["name"], slots["value"] = m.start(1) + 1, m.start(2) + 1
             return chk.let(m.group(1), m.group(2), number)
+        m = HYPOTHESIS_LINE.match(body) if head == "hypothesis" else None
+        if m is not None:  # hypothesis NAME: LEFT REL RIGHT
+            slots["name"], slots["value"] = m.start("name") + 1, m.start("rel") + 1
+            read_inequality(chk, m["name"], m["rel"], number)
+            return None
         toks = _Line(body, err).tokens
         kind, first, col = toks[0]
         slots["name"] = toks[1][2] if len(toks) > 1 else col
@@ -131,7 +137,8 @@ def _statement(body: str, chk: _Checker, number: int, err: Any) -> None:
             return chk.param(toks[1][1], domain, number)
         if kind == "word" and first == "hypothesis":
             if len(toks) != 2 or toks[1][0] != "word":
-                raise _Problem("write hypothesis NAME (e.g. condition1)", "name")
+                raise _Problem("write hypothesis NAME (e.g. condition1) or hypothesis NAME: "
+                               "VALUE > VALUE", "name")
             return chk.hypothesis(toks[1][1])
         _step(toks, chk, number, slots)
     except _Problem as p:

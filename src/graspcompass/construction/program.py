@@ -33,6 +33,7 @@ from ..boundary.errors import InputError
 from ..boundary.expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
 from ..boundary.inputs import exact_denominators
 from ..geometry import GeometryError
+from ._hypotheses import Inequality, read_inequality
 from ._program_text import format_program
 from .operations import OPERATIONS, ROLES
 
@@ -209,6 +210,8 @@ class Program:
     steps: tuple[Statement, ...] = ()
     claims: tuple[Claim, ...] = ()
     file: str = field(default="<text>", compare=False)
+    #: Named inequalities on the parameters (``hypothesis NAME: A > B``), for the whole file.
+    inequalities: tuple[Inequality, ...] = ()
 
     @cached_property
     def trig_atoms(self) -> frozenset:
@@ -248,6 +251,7 @@ class _Checker:
     def __init__(self) -> None:
         self.params: list[Param] = []
         self.hypotheses: list[str] = []
+        self.inequalities: list[Inequality] = []
         self.lets: list[tuple[str, sp.Expr]] = []
         self.steps: list[Statement] = []
         self.claims: list[Claim] = []
@@ -473,7 +477,7 @@ class _Checker:
 
     def program(self, file: str) -> Program:
         return Program(tuple(self.params), tuple(self.hypotheses), tuple(self.lets),
-                       tuple(self.steps), tuple(self.claims), file)
+                       tuple(self.steps), tuple(self.claims), file, tuple(self.inequalities))
 
 
 # -- writing a program ------------------------------------------------------------------
@@ -515,9 +519,12 @@ class ConstructionBuilder:
         """Declare a parameter with a domain of :data:`DOMAINS` (``"positive"``, ``"angle"``...)."""
         self._run(self._chk.param, name, domain, self._calls + 1)
 
-    def hypothesis(self, name: str) -> None:
-        """Make a hypothesis of :data:`HYPOTHESES` available to claims."""
-        self._run(self._chk.hypothesis, name)
+    def hypothesis(self, name: str, inequality: str | None = None) -> None:
+        """Make a hypothesis of :data:`HYPOTHESES` available to claims, or with
+        ``inequality`` (``"p**2 + q**2 > 1"``) restrict the parameters for the whole file."""
+        if inequality is None:
+            return self._run(self._chk.hypothesis, name)
+        self._run(read_inequality, self._chk, name, inequality, self._calls + 1)
 
     def let(self, name: str, value: Any) -> None:
         """A named value (text in the safe expression syntax, an int or a sympy expression)."""
