@@ -46,6 +46,7 @@ from ..geometry import GeometryError
 from ..geometry.exact import decide_sign
 from ..geometry.trig import sincos
 from .model import violations
+from .program_hypotheses import holds
 from .program_conditions import operation_conditions
 from .program_decide import grid_value
 
@@ -279,7 +280,7 @@ def find(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr
     for pt in candidates:
         if used >= tries + (10 if score else 0):
             break
-        if not _admissible(pt, cond1):
+        if not _admissible(pt, cond1) or not holds(program, pt):
             continue
         used += 1
         hit = _try(sub, pt, fails, claim)

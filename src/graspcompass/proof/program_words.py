@@ -28,7 +28,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-__all__ = ["tidy"]
+__all__ = ["parse_condition", "tidy"]
 
 _COND = re.compile(r"^(?P<e>.+?) (?P<rel>≠|!=|≥|>=|>) 0(?P<rest>(?: \(.*\))?)$", re.S)
 _MAX_CHARS = 300  # longer conditions are kept as they are (factoring would cost more)
@@ -105,3 +105,15 @@ def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.
             continue
         out.append(f"{text} {rel} 0" + (f" ({'; '.join(ws)})" if ws else ""))
     return out, list(dict.fromkeys(implied))
+
+
+def parse_condition(t: str, symbols: Mapping[str, sp.Symbol]) -> tuple[sp.Expr, str] | None:
+    """``(expression, relation ≠ ≥ >)`` of a condition text ``EXPR REL 0 (words)``; None:
+    not of that form, or too long to read again."""
+    m = _COND.match(t.replace("!=", "≠").replace(">=", "≥"))
+    if m is None or len(m["e"]) > _MAX_CHARS:
+        return None
+    try:
+        return sp.sympify(m["e"], locals=dict(symbols)), m["rel"]
+    except (sp.SympifyError, TypeError, ValueError, SyntaxError):
+        return None
