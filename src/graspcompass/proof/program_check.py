@@ -81,6 +81,8 @@ from .program_decide import (
     step_conditions,
     zeros_fail,
 )
+from .program_hypotheses import discharge
+from .program_hypotheses import texts as hypothesis_texts
 from .program_search import find, sign_score
 from .prove import ProofResult, Status
 
@@ -108,7 +110,7 @@ def _domain_text(program: Program) -> list[str]:
 
 def _hypotheses(program: Program, cond1: bool) -> tuple[str, ...]:
     domains = ("domains " + ", ".join(_domain_text(program)),) if program.params else ()
-    return (*domains, *(("condition (1)",) if cond1 else ()))
+    return (*domains, *(("condition (1)",) if cond1 else ()), *hypothesis_texts(program))
 
 
 def _check_model_params(program: Program) -> None:
@@ -226,7 +228,8 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
         hyps = _hypotheses(program, True)
     if claim.kind == "sign":
         e = sign_expr(claim, env)
-        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1)
+        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1,
+                                 program.inequalities)
         if ok and r is not None:
             implied += list(r.implied)
             extra += list(r.conditions)
@@ -564,13 +567,13 @@ def check_program(program: Program, against: str | None = None,
             if progress:
                 progress(done, total, name)
     symbols = {p.name: p.symbol for p in program.params}
-    step_rows, claim_rows, target_rows = ([_tidy(r, symbols) for r in rows] for rows in (
+    step_rows, claim_rows, target_rows = ([_tidy(r, symbols, program) for r in rows] for rows in (
         step_rows, claim_rows, target_rows))
     return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
                          against, time.perf_counter() - t0, c)
 
 
-def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
+def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol], program: Program) -> CheckRow:
     """The row with its conditions factored, merged, discharged and worded
     (:func:`~graspcompass.proof.program_words.tidy`)."""
     from dataclasses import replace
@@ -581,4 +584,6 @@ def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
     if not r.conditions and not r.implied:
         return row
     extra, implied = tidy(r.conditions, r.implied, symbols)
+    extra, by_hyp = discharge(extra, program.inequalities, symbols)
+    implied += by_hyp
     return replace(row, result=replace(r, conditions=tuple(extra), implied=tuple(implied)))

@@ -89,10 +89,22 @@ def sign_from(e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
             return None
         sign *= 1 if c > 0 else -1
         for f, m in factors:
+            if not sp.sympify(m).is_Integer:  # f**(1/2): > 0 where f > 0
+                inner = sign_from(sp.factor(f), hyps) if not f.is_positive else (1, ())
+                if inner is None or inner[0] != 1:
+                    return None
+                used += inner[1]
+                continue
             if f.is_positive:
                 continue
             if f.is_negative:
                 sign *= (-1) ** m
+                continue
+            if f.is_Pow and f.exp == sp.Rational(1, 2):  # √R > 0 where R > 0
+                inner = sign_from(f.base, hyps)
+                if inner is None or inner[0] != 1:
+                    return None
+                used += inner[1]
                 continue
             got = _match(f, hyps)
             if got is None:
