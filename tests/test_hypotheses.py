@@ -89,7 +89,7 @@ def test_the_checker_uses_and_states_the_hypothesis():
     assert to_table(report).splitlines()[0].endswith(hyp)
     data = json.loads(to_json(report))
     assert all(hyp in row["hypotheses"] for row in data["claims"])
-    assert hyp in to_markdown(report)
+    assert r"hypothesis outside: p\*\*2 + q\*\*2 \> 1" in to_markdown(report)  # escaped
 
 
 def test_without_the_hypothesis_the_claim_is_refuted():

@@ -33,7 +33,7 @@ from typing import Any
 
 import sympy as sp
 
-__all__ = ["HYPOTHESIS_LINE", "Inequality", "RELATIONS", "read_inequality"]
+__all__ = ["HYPOTHESIS_LINE", "RELATIONS", "Inequality", "read_inequality"]
 
 #: The relations an inequality hypothesis may use.
 RELATIONS = ("!=", ">=", "<=", ">", "<")

@@ -46,9 +46,9 @@ from ..geometry import GeometryError
 from ..geometry.exact import decide_sign
 from ..geometry.trig import sincos
 from .model import violations
-from .program_hypotheses import holds
 from .program_conditions import operation_conditions
 from .program_decide import grid_value
+from .program_hypotheses import holds
 
 __all__ = ["conditions_hold", "find", "sign_score", "value_at"]
 
