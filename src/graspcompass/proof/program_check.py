@@ -84,6 +84,7 @@ from .program_decide import (
 from .program_hypotheses import discharge
 from .program_hypotheses import texts as hypothesis_texts
 from .program_search import find, sign_score
+from .program_words import kernel_worded
 from .prove import ProofResult, Status
 
 __all__ = ["PAPER_TARGETS", "CheckError", "CheckRow", "ProgramReport", "check_program"]
@@ -509,6 +510,7 @@ def check_program(program: Program, against: str | None = None,
                 cond1_file, tie).extra)
         try:
             implied, extra = step_conditions(s, cond1_file, replaced, tie)
+            extra = kernel_worded(extra, s.op, s.inputs, statements)
             if own.false:
                 raise ValueError("; ".join(f"{t} is false for every parameter"
                                            for t in own.false))

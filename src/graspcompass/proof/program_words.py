@@ -10,6 +10,9 @@ positive, a ``real`` one real), moves a condition all of whose factors have a kn
 sign to the implied ones, and merges the conditions on one expression into one, with
 all their words.
 
+The kernel's own ``≠ 0`` conditions of a step (what it divides by) are worded by
+:func:`kernel_worded` as GCLC words them: ``the lines AB and CD are not parallel``.
+
 Examples
 --------
 >>> import sympy as sp
@@ -28,7 +31,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-__all__ = ["parse_condition", "tidy"]
+__all__ = ["kernel_worded", "parse_condition", "tidy"]
 
 _COND = re.compile(r"^(?P<e>.+?) (?P<rel>≠|!=|≥|>=|>) 0(?P<rest>(?: \(.*\))?)$", re.S)
 _MAX_CHARS = 300  # longer conditions are kept as they are (factoring would cost more)
@@ -40,6 +43,11 @@ def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
     of positive ones)."""
     if e.is_positive or (rel == "≠" and e.is_negative):
         return None, True
+    if rel == "≥" and e.is_polynomial():
+        from ..geometry.roots import nonnegative
+
+        if nonnegative(sp.expand(e)):  # ≥ 0 for every value (a sum of squares, ...)
+            return None, True
     try:
         c, factors = sp.factor_list(e)
     except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
@@ -77,7 +85,8 @@ def _one(t: str, symbols: tuple) -> tuple[str, str, str, str]:
         except (sp.SympifyError, TypeError, ValueError, SyntaxError):
             return "extra", text, rel, words
         if f is None:
-            return "implied", f"{text} {rel} 0 (sign from the domains)", rel, words
+            why = f"{words}: sign from the domains" if words else "sign from the domains"
+            return "implied", f"{text} {rel} 0 ({why})", rel, words
         if dropped:
             text = sp.sstr(f)
     return "extra", text, rel, words
@@ -117,3 +126,33 @@ def parse_condition(t: str, symbols: Mapping[str, sp.Symbol]) -> tuple[sp.Expr, 
         return sp.sympify(m["e"], locals=dict(symbols)), m["rel"]
     except (sp.SympifyError, TypeError, ValueError, SyntaxError):
         return None
+
+
+def _line_words(name: str, statements: Mapping[str, object]) -> str:
+    """``AB`` for a line made by ``line_through A B`` (as GCLC names lines), else its name."""
+    st = statements.get(name)
+    if getattr(st, "op", "") == "line_through":
+        a, b = st.inputs  # type: ignore[attr-defined]
+        return f"{a}{b}" if len(a) == len(b) == 1 else f"{name} ({a} {b})"
+    return name
+
+
+def kernel_worded(texts: Iterable[str], op: str, inputs: tuple[str, ...],
+                  statements: Mapping[str, object]) -> list[str]:
+    """The kernel's conditions ``EXPR ≠ 0`` of one step with what they say: each new
+    denominator of ``meet`` is the cross product of the two directions, of ``foot``,
+    ``reflect``, ``signed_length`` and a line's intersection with a circle the squared
+    direction, of ``circumcircle`` twice the signed area of the triangle."""
+    names = [_line_words(n, statements) for n in inputs]
+    words = {
+        "meet": lambda: f"the lines {names[0]} and {names[1]} are not parallel",
+        "foot": lambda: f"the line {names[1]} has a direction",
+        "reflect": lambda: f"the line {names[1]} has a direction",
+        "signed_length": lambda: f"the line {names[2]} has a direction",
+        "intersect_line_circle": lambda: f"the line {names[0]} has a direction",
+        "circumcircle": lambda: f"{', '.join(inputs)} are not collinear",
+    }.get(op)
+    if words is None:
+        return list(texts)
+    say = words()
+    return [t if t.endswith(")") or not t.endswith("≠ 0") else f"{t} ({say})" for t in texts]
