@@ -96,3 +96,32 @@ def test_without_the_hypothesis_the_claim_is_refuted():
     text = OUTSIDE.replace("hypothesis outside: p**2 + q**2 > 1\n", "") + \
         "claim sign p**2 + q**2 - 1 > 0\n"
     assert check_program(parse(text)).claims[0].status.value == "REFUTED"
+
+
+def test_a_hypothesis_decides_the_branch():
+    # the line OA meets the circle on the diameter A(1, 0) B(p, 0) in A and B; the
+    # kernel's branch 0 lies further along, x = max(1, p): B where p > 1, A where p < 1
+    path = "tests/corpus_geometry/48_branch_by_hypothesis.gc"
+    from pathlib import Path
+
+    text = (Path(__file__).parent.parent / path).read_text("utf-8")
+    first = check_program(parse(text)).claims[0]
+    assert first.status.value == "PROVED" and "hypothesis beyond: p > 1" in \
+        first.result.hypotheses
+    other = text.replace("hypothesis beyond: p > 1", "hypothesis before: p < 1")
+    got = [r.status.value for r in check_program(parse(other)).claims[:4]]
+    assert got == ["REFUTED", "REFUTED", "PROVED", "PROVED"]  # Y == B, X == A now
+    none = text.replace("hypothesis beyond: p > 1", "")
+    assert check_program(parse(none)).claims[0].status.value == "REFUTED"
+
+
+def test_branch_roots_by_hand():
+    from graspcompass.proof.program_hypotheses import branch_roots
+
+    p, q = sp.symbols("p q", real=True)
+    H = (Inequality("h", ">", p, sp.Integer(1)),)
+    assert branch_roots(sp.sqrt((p - 1) ** 2 * (q**2 + 1)), H) == (p - 1) * sp.sqrt(q**2 + 1)
+    assert branch_roots(sp.sqrt(sp.expand((p - 1) ** 2 * (q**2 + 1))), H) == \
+        (p - 1) * sp.sqrt(q**2 + 1)
+    assert branch_roots(sp.sqrt(sp.expand((1 - p) ** 2)), H) == p - 1
+    assert branch_roots(sp.sqrt((q - 1) ** 2), H) == sp.sqrt((q - 1) ** 2)  # q's sign unknown

@@ -81,7 +81,7 @@ from .program_decide import (
     step_conditions,
     zeros_fail,
 )
-from .program_hypotheses import discharge
+from .program_hypotheses import branch_roots, discharge
 from .program_hypotheses import texts as hypothesis_texts
 from .program_search import find, sign_score
 from .program_words import kernel_worded
@@ -228,7 +228,7 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     if not cond1 and _uses_cond1(implied):  # a step's condition follows from (1): say so
         hyps = _hypotheses(program, True)
     if claim.kind == "sign":
-        e = sign_expr(claim, env)
+        e = branch_roots(sign_expr(claim, env), program.inequalities)
         ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1,
                                  program.inequalities)
         if ok and r is not None:
@@ -243,6 +243,7 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     else:
         score = None
         zeros, nonzeros = claim_zeros(claim, env)
+        zeros = [branch_roots(z, program.inequalities) for z in zeros]
         if tie:
             zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
         ok, imp, ext, method = prove_zero(zeros, cond1)

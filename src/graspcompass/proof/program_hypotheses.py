@@ -11,6 +11,9 @@ hold for the whole file.  Here:
   (:func:`graspcompass.geometry.roots.nonnegative`) with ``H > 0``, so ``f > 0``;
 * :func:`discharge` — the conditions of a row whose sign follows so are moved to the
   implied ones, with the hypotheses they follow from;
+* :func:`branch_roots` — the branch a construction took, decided by the hypotheses: a
+  constructed root √(f²X) (√ ≥ 0, the kernel's branch) is |f|·√X, and |f| = ±f where the
+  hypotheses give f's sign;
 * :func:`holds` — a point is admissible only where every hypothesis holds, exactly (the
   counterexample search tries no other point).
 
@@ -35,7 +38,7 @@ from typing import Any
 
 import sympy as sp
 
-__all__ = ["discharge", "holds", "sign_from", "texts"]
+__all__ = ["branch_roots", "discharge", "holds", "sign_from", "texts"]
 
 
 def texts(program: Any) -> tuple[str, ...]:
@@ -141,3 +144,35 @@ def discharge(conditions: Iterable[str], hyps: Sequence[Any],
             continue
         implied.append(f"{t} (from the hypothesis {', '.join(s[1])})")
     return kept, implied
+
+
+def branch_roots(e: Any, hyps: Sequence[Any]) -> Any:
+    """``e`` with each square root √(f^2k·X) whose factor f has a sign given by the
+    hypotheses written ±f^k·√X (the same number wherever the hypotheses hold)."""
+    if not hyps or not isinstance(e, sp.Basic):
+        return e
+    roots = [a for a in e.atoms(sp.Pow) if a.exp == sp.Rational(1, 2) and a.base.free_symbols]
+    subs = {}
+    for r in roots:
+        try:
+            num, den = sp.fraction(sp.together(r.base))
+            (cn, fn), (cd, fd) = sp.factor_list(num), sp.factor_list(den)
+        except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
+            continue
+        out, inner, changed = sp.Integer(1), sp.Rational(cn, 1) / cd, False
+        for factors, k in ((fn, 1), (fd, -1)):
+            for f, m in factors:
+                got = sign_from(f, hyps) if m >= 2 else None
+                if got is None or got[0] == 0:
+                    inner *= f ** (m * k)
+                    continue
+                changed = True
+                out *= (got[0] * f) ** ((m // 2) * k)
+                inner *= f ** ((m % 2) * k)
+        if changed:
+            subs[r] = out * sp.sqrt(inner)
+    for a in e.atoms(sp.Abs):  # |f| as sympy writes √(f²) of a real f
+        got = sign_from(a.args[0], hyps)
+        if got is not None and got[0] != 0:
+            subs[a] = got[0] * a.args[0]
+    return e.xreplace(subs) if subs else e
