@@ -102,7 +102,7 @@ class Inequality:
 def read_inequality(chk: Any, name: str, text: str, line: int) -> Inequality:
     """Read ``LEFT REL RIGHT`` of ``hypothesis NAME: ...`` with the program's checker
     ``chk`` (its names and values) and record it; refuses with the checker's problem."""
-    from .program import HYPOTHESES, _Problem
+    from ._program_data import HYPOTHESES, _Problem
 
     if name in HYPOTHESES or name in {h.name for h in chk.inequalities} or \
             name in chk.hypotheses:
