@@ -33,7 +33,7 @@ from typing import Any
 
 import sympy as sp
 
-__all__ = ["HYPOTHESIS_LINE", "RELATIONS", "Inequality", "read_inequality"]
+__all__ = ["HYPOTHESIS_LINE", "RELATIONS", "Inequality"]
 
 #: The relations an inequality hypothesis may use.
 RELATIONS = ("!=", ">=", "<=", ">", "<")
@@ -98,39 +98,3 @@ class Inequality:
             sign = bool(sp.N(z, 50) > 0) if self.relation0 == ">" else bool(sp.N(z, 50) >= 0)
         return bool(sign)
 
-
-def read_inequality(chk: Any, name: str, text: str, line: int) -> Inequality:
-    """Read ``LEFT REL RIGHT`` of ``hypothesis NAME: ...`` with the program's checker
-    ``chk`` (its names and values) and record it; refuses with the checker's problem."""
-    from ._program_data import HYPOTHESES, _Problem
-
-    if name in HYPOTHESES or name in {h.name for h in chk.inequalities} or \
-            name in chk.hypotheses:
-        raise _Problem(f"hypothesis {name!r} declared twice or a reserved name", "name")
-    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
-        raise _Problem(f"bad hypothesis name {name!r}: a letter or _ then letters, digits, _",
-                       "name")
-    depth, at = 0, None
-    for i, c in enumerate(text):
-        depth += {"(": 1, ")": -1}.get(c, 0)
-        if depth == 0 and at is None:
-            for sym in ("==", *RELATIONS):
-                if text.startswith(sym, i):
-                    at = (i, sym)
-                    break
-    if at is None or at[1] == "==":
-        raise _Problem("write hypothesis NAME: VALUE REL VALUE with REL one of "
-                       + " ".join(RELATIONS), "value")
-    i, rel = at
-    left, right = text[:i].strip(), text[i + len(rel):].strip()
-    if not left or not right:
-        raise _Problem("a hypothesis compares two values", "value")
-    chk.pending = []
-    lhs, rhs = chk.value(left, "value"), chk.value(right, "value")
-    chk.pending = []
-    if not (lhs - rhs).free_symbols:
-        raise _Problem("a hypothesis is an inequality on the parameters (this one has none)",
-                       "value")
-    h = Inequality(name, rel, lhs, rhs, line)
-    chk.inequalities.append(h)
-    return h

@@ -14,7 +14,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ._hypotheses import HYPOTHESIS_LINE, read_inequality
+from ._hypotheses import HYPOTHESIS_LINE
+from ._program_checker import read_inequality
 from .operations import OPERATIONS
 from .program import (
     _CLAIM_KINDS,

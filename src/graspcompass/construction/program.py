@@ -22,8 +22,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from ._hypotheses import read_inequality
-from ._program_checker import _Checker
+from ._program_checker import _Checker, read_inequality
 from ._program_data import (  # noqa: F401  (the parser's words, read from here)
     _CLAIM_KINDS,
     _ENVELOPE,
