@@ -1,4 +1,4 @@
-"""The geometry-class corpus (issue 24): 46 classic constructions and their textbook claims.
+"""The geometry-class corpus (issue 24): 48 classic constructions and their textbook claims.
 
 Each claim of ``tests/corpus_geometry/*.gc`` carries its truth from geometry
 (``# expect true|false``), written before the checker ran.  For every file:
