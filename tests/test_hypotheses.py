@@ -125,3 +125,21 @@ def test_branch_roots_by_hand():
         (p - 1) * sp.sqrt(q**2 + 1)
     assert branch_roots(sp.sqrt(sp.expand((1 - p) ** 2)), H) == p - 1
     assert branch_roots(sp.sqrt((q - 1) ** 2), H) == sp.sqrt((q - 1) ** 2)  # q's sign unknown
+
+
+def test_contradictory_hypotheses_prove_nothing():
+    text = ("param p real\nhypothesis big: p > 1\nhypothesis small: p < 0\n"
+            "A = point (p, 0)\nclaim sign p > 5\nclaim sign p**2 + 1 > 0\n")
+    got = [r.status.value for r in check_program(parse(text)).claims]
+    # vacuous under p > 1 and p < 0: neither is reported as a proof (the second is true
+    # for every p, but the file states it under its hypotheses)
+    assert got == ["UNDECIDED", "UNDECIDED"]
+
+
+def test_a_weak_hypothesis_gives_no_non_zero():
+    p = sp.Symbol("p", real=True)
+    ge = (Inequality("h", ">=", p, sp.Integer(1)),)
+    ne = (Inequality("h", "!=", p, sp.Integer(1)),)
+    assert sign_from(p - 1, ge, nonzero_only=True) is None  # p ≥ 1 allows p - 1 = 0
+    assert sign_from(p - 1, ne, nonzero_only=True) == (0, ("h",))  # ≠ 0, sign unknown
+    assert sign_from(p - 1, ne) is None

@@ -84,7 +84,8 @@ def _quadratic_in_one(f: sp.Expr, depth: int) -> bool:
     4AC − B² ≥ 0, each shown by :func:`nonnegative` (to ``depth`` levels).  Then f ≥ 0
     for every v: f = A(v + B/2A)² + (4AC − B²)/4A where A > 0, and B = 0, f = C where
     A = 0."""
-    if depth <= 0 or not f.is_Add or len(f.args) > 40:
+    if depth <= 0 or not f.is_Add or len(f.args) > 40 or not all(
+            s.is_real for s in f.free_symbols):
         return False
     for v in sorted(f.free_symbols, key=str):
         if not v.is_real:

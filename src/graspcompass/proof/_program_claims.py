@@ -25,7 +25,7 @@ from .program_decide import (
     sign_fails,
     zeros_fail,
 )
-from .program_hypotheses import branch_roots
+from .program_hypotheses import branch_roots, witness_point
 from .program_hypotheses import texts as hypothesis_texts
 from .program_search import find, sign_score
 from .prove import ProofResult, Status
@@ -189,6 +189,11 @@ def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
          implied: list[str], extra: list[str], method: str,
          search_kw: Mapping[str, Any] | None = None) -> CheckRow:
     implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
+    if ok and program.inequalities and witness_point(program) is None:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, "a proof under the file's hypotheses, but no point found where "
+            "they all hold (they may contradict each other)", time.perf_counter() - t0,
+            hypotheses=hyps, conditions=tuple(extra), implied=tuple(implied)))
     if ok:
         return CheckRow(name, kind, line, ProofResult(
             Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,
