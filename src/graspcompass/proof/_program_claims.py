@@ -25,9 +25,9 @@ from .program_decide import (
     sign_fails,
     zeros_fail,
 )
-from .program_hypotheses import branch_roots, witness_point
+from .program_hypotheses import branch_roots
 from .program_hypotheses import texts as hypothesis_texts
-from .program_search import find, sign_score
+from .program_search import find, sign_score, witness_point
 from .prove import ProofResult, Status
 
 _COND1 = "condition1"

@@ -14,8 +14,8 @@ hold for the whole file.  Here:
 * :func:`branch_roots` — the branch a construction took, decided by the hypotheses: a
   constructed root √(f²X) (√ ≥ 0, the kernel's branch) is |f|·√X, and |f| = ±f where the
   hypotheses give f's sign;
-* :func:`witness_point` — a point where they all hold: without one (contradictory
-  hypotheses) no claim is PROVED under them;
+* :func:`~graspcompass.proof.program_search.witness_point` — a point where they all
+  hold: without one (contradictory hypotheses) no claim is PROVED under them;
 * :func:`holds` — a point is admissible only where every hypothesis holds, exactly (the
   counterexample search tries no other point).
 
@@ -40,7 +40,7 @@ from typing import Any
 
 import sympy as sp
 
-__all__ = ["branch_roots", "discharge", "holds", "sign_from", "texts", "witness_point"]
+__all__ = ["branch_roots", "discharge", "holds", "sign_from", "texts"]
 
 
 def texts(program: Any) -> tuple[str, ...]:
@@ -78,30 +78,6 @@ def _match(f: sp.Expr, hyps: Sequence[Any]) -> tuple[int, bool, str] | None:
 
 def _relation(name: str, hyps: Sequence[Any]) -> str:
     return next(h.relation0 for h in hyps if h.name == name)
-
-
-def witness_point(program: Any, tries: int = 400) -> dict[str, Any] | None:
-    """A point of the domains where every hypothesis holds (the search's own points), or
-    None: the hypotheses may contradict each other, and nothing is PROVED under them."""
-    import random
-
-    from .program_search import _grid, _random
-
-    key = id(program)
-    if key in _WITNESS and _WITNESS[key][0] is program:
-        return _WITNESS[key][1]
-    rng, found = random.Random(2012), None
-    for k in range(tries):
-        pt = _grid(program, rng) if k % 2 else _random(program, rng)
-        if holds(program, pt):
-            found = pt
-            break
-    _WITNESS.clear() if len(_WITNESS) > 64 else None
-    _WITNESS[key] = (program, found)
-    return found
-
-
-_WITNESS: dict[int, tuple[Any, Any]] = {}
 
 
 def sign_from(e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
