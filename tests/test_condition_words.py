@@ -87,3 +87,20 @@ def test_algebraic_zero_is_exact():
     assert not algebraic_zero(side - 2 * sp.sin(sp.pi / 5) - sp.Rational(1, 10**30))
     assert not algebraic_zero(sp.sqrt(2) + sp.sqrt(3) - sp.sqrt(5 + 2 * sp.sqrt(6)) + 1)
     assert algebraic_zero(sp.sqrt(2) + sp.sqrt(3) - sp.sqrt(5 + 2 * sp.sqrt(6)))
+
+
+def test_conditions_factored_through_fractions_and_powers():
+    from graspcompass.proof.program_words import tidy
+
+    t, u = sp.symbols("t u", real=True)
+    names = {"t": t, "u": u}
+    # 4t²/(t² + 1) ≠ 0 iff t ≠ 0 (t² + 1 > 0); (t² + 1)/(u − 1) ≠ 0 iff u ≠ 1 (defined)
+    assert tidy(["4*t**2/(t**2 + 1) ≠ 0"], [], names)[0] == ["t ≠ 0"]
+    assert tidy(["(t**2 + 1)/(u - 1) ≠ 0"], [], names)[0] == ["u - 1 ≠ 0"]
+    # a sign through a divisor of unknown sign is kept as written
+    assert tidy(["(t - 1)/(u - 2) ≥ 0"], [], names)[0] == ["(t - 1)/(u - 2) ≥ 0"]
+    assert tidy(["(t - 1)/(u**2 + 2) ≥ 0"], [], names)[0] == ["t - 1 ≥ 0"]
+    # the same condition written twice (expanded, times −2) is asked once, with its words
+    got = tidy(["(t - u)**2 + 1 - 1 + t ≠ 0 (A and B are distinct)",
+                "-2*t**2 + 4*t*u - 2*u**2 - 2*t ≠ 0"], [], names)[0]
+    assert len(got) == 1 and got[0].endswith("(A and B are distinct)")

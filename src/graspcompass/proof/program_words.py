@@ -49,7 +49,14 @@ def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
         if nonnegative(sp.expand(e)):  # ≥ 0 for every value (a sum of squares, ...)
             return None, True
     try:
-        c, factors = sp.factor_list(e)
+        num, den = sp.fraction(sp.together(e)) if e.is_Mul or e.is_Pow else (e, 1)
+        c, factors = sp.factor_list(num)
+        if den != 1:  # N/D: D's factors of known sign go; for ≠ 0 the others stay
+            cd, fd = sp.factor_list(den)
+            if rel != "≠" and (cd < 0 or not all(f.is_positive for f, _ in fd)):
+                return e, False
+            c = c / cd
+            factors = [*factors, *((f, -m) for f, m in fd)]
     except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
         return e, False
     kept, dropped = [], False
@@ -58,8 +65,9 @@ def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
         if pos or (rel == "≠" and neg):
             dropped = True
             continue
-        if rel != "≠" and m % 2 == 0 and f.is_real:
-            kept.append(f ** m)
+        if rel == "≠":  # f**m ≠ 0 iff f ≠ 0, and a divisor must not vanish either
+            dropped = dropped or m != 1
+            kept.append(f)
             continue
         kept.append(f ** m)
     if not kept:
@@ -92,6 +100,35 @@ def _one(t: str, symbols: tuple) -> tuple[str, str, str, str]:
     return "extra", text, rel, words
 
 
+def _words_of(texts: Iterable[str], key: tuple) -> dict[tuple[str, str], list[str]]:
+    """Canonical key -> the first words of each worded condition among ``texts``."""
+    out: dict[tuple[str, str], list[str]] = {}
+    for t in texts:
+        m = _COND.match(t.replace("!=", "≠").replace(">=", "≥"))
+        if m is None or not m["rest"]:
+            continue
+        words = m["rest"].strip()[1:].split(")")[0]
+        if words and "sign from" not in words:
+            out.setdefault((_canonical(m["e"], m["rel"], key), m["rel"]), []).append(words)
+    return out
+
+
+@lru_cache(maxsize=8192)
+def _canonical(text: str, rel: str, symbols: tuple) -> str:
+    """One key for the same condition written two ways (expanded or not, times a
+    constant, with the opposite sign for ``≠``): conditions on it are merged."""
+    if not rel or len(text) > _MAX_CHARS:
+        return text
+    try:
+        e = sp.expand(sp.sympify(text, locals=dict(symbols)))
+        _, e = e.as_content_primitive()
+    except (sp.SympifyError, TypeError, ValueError, SyntaxError, AttributeError):
+        return text
+    if rel == "≠" and e.could_extract_minus_sign():
+        e = -e
+    return sp.srepr(e)
+
+
 def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.Symbol]
          ) -> tuple[list[str], list[str]]:
     """``(extra, implied)`` tidied (see the module); texts that are not ``EXPR ≠ 0``,
@@ -99,16 +136,22 @@ def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.
     implied = list(dict.fromkeys(t.replace(" != 0", " ≠ 0") for t in implied))
     key = tuple(sorted(symbols.items()))
     groups: dict[tuple[str, str], list[str]] = {}
+    shown: dict[tuple[str, str], str] = {}  # canonical key -> the first text written
     for t in extra:
         bucket, text, rel, words = _one(t, key)
         if bucket == "implied":
             implied.append(text)
             continue
+        k = (_canonical(text, rel, key), rel)
+        text = shown.setdefault(k, text)
         ws = groups.setdefault((text, rel), [])
         if words and words not in ws:
             ws.append(words)
+    said = _words_of(implied, key)
     out = []
     for (text, rel), ws in groups.items():
+        if rel and not ws:  # the same expression worded elsewhere (an operation's own)
+            ws = said.get((_canonical(text, rel, key), rel), [])
         if not rel:
             out.append(text)
             continue
