@@ -92,7 +92,8 @@ def sign_from(e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
         parts = [sp.factor_list(num), sp.factor_list(den)]
     except (sp.PolynomialError, NotImplementedError, ValueError, TypeError):
         return None
-    sign, used, only_nonzero = 1, [], False
+    sign, only_nonzero = 1, False
+    used: list[str] = []
     for c, factors in parts:
         if c == 0:
             return None
