@@ -22,8 +22,8 @@
  * polar plot of v(θ), Fig. 5) and the load at θ.  A drag to a grasp that cannot hold any
  * load keeps the last valid drawing and says why.
  *
- * window.graspcompass: set({contacts, effort, theta}), state(), compute(state),
- * vertices(), redundant(), rays(), arc(), k(θ), error(), board, lastUpdateMs.
+ * window.graspcompass: set({contacts, effort, theta}), state(), drawn(), compute(state),
+ * support(Q, θ), arcOf(Q), vertices(), redundant(), rays(), arc(), k(θ), error(), board, lastUpdateMs.
  */
 (function () {
   "use strict";
@@ -659,7 +659,7 @@
   document.getElementById("gc-fit").addEventListener("click", fit);
 
   const api = {
-    board, compute, support, arc: () => (valid ? arcOf(valid.Q) : null),
+    board, compute, support, arcOf, arc: () => (valid ? arcOf(valid.Q) : null),
     state: () => JSON.parse(JSON.stringify(state)),
     drawn: () => (valid ? JSON.parse(JSON.stringify(valid.state)) : null),
     vertices: () => (valid ? valid.Q.vertices.map((q) => q.slice()) : []),
