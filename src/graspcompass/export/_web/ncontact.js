@@ -464,7 +464,7 @@
   const O = board.create("point", state.com, { name: "O", fixed: true, size: 3,
     fillColor: COLORS.point, strokeColor: COLORS.point, label: { offset: [-14, -12] } });
   const envelope = board.create("curve", [[0], [0]], { strokeColor: COLORS.envelope,
-    strokeWidth: 2.5, highlight: false });
+    strokeWidth: 3.5, highlight: false, layer: 8 });
   let dyn = []; // circles, vertex marks, rays: redrawn on each update
   const contactPts = [], handles = [], coneLines = [];
   const L = DATA.handle;
@@ -508,18 +508,23 @@
     });
   }
 
-  function draw(st, Q) {
-    for (const o of dyn) board.removeObject(o);
-    dyn = [];
-    const [ox, oy] = st.com;
+  function drawCones(st) { // the friction cones where the contacts are now (valid or not)
     st.contacts.forEach((c, i) => {
-      Q.edges[i].forEach((d, k) => {
+      const nx = Math.cos(c.angle), ny = Math.sin(c.angle);
+      const mu = Number.isFinite(c.mu) ? Math.max(c.mu, 0) : 0;
+      [[nx - mu * ny, ny + mu * nx], [nx + mu * ny, ny - mu * nx]].forEach((d, k) => {
         const n = Math.hypot(d[0], d[1]);
         coneLines[i][k].point1.setPosition(JXG.COORDS_BY_USER, [c.x, c.y]);
         coneLines[i][k].point2.setPosition(JXG.COORDS_BY_USER,
           [c.x + 1.6 * L * d[0] / n, c.y + 1.6 * L * d[1] / n]);
       });
     });
+  }
+
+  function draw(st, Q) {
+    for (const o of dyn) board.removeObject(o);
+    dyn = [];
+    const [ox, oy] = st.com;
     const V = Q.vertices;
     V.forEach((q, i) => {
       const col = COLORS[CIRCLES[i % 4]];
@@ -562,7 +567,8 @@
     const t = st.theta, v = support(Q, t);
     const e = [Math.sin(t), -Math.cos(t)];
     load.point1.setPosition(JXG.COORDS_BY_USER, [ox, oy]);
-    load.point2.setPosition(JXG.COORDS_BY_USER, [ox + 0.6 * L * e[0], oy + 0.6 * L * e[1]]);
+    const reach = 0.3 * Math.max(L / 0.3, ...V.map((q) => Math.hypot(...q)));
+    load.point2.setPosition(JXG.COORDS_BY_USER, [ox + reach * e[0], oy + reach * e[1]]);
     if (Number.isFinite(v)) {
       kPoint.setPosition(JXG.COORDS_BY_USER, [ox + Math.max(v, 0) * e[0], oy + Math.max(v, 0) * e[1]]);
       kPoint.show();
@@ -578,7 +584,8 @@
       "</td><td>" + fmt(q[1]) + "</td><td>" + fmt(Math.hypot(...q)) + "</td></tr>").join("");
     const span = arc[1] - arc[0] >= TWO_PI - 1e-12 ? "every direction"
       : "θ in [" + deg(arc[0]) + ", " + deg(arc[1]) + "]";
-    info.innerHTML =
+    info.innerHTML = (lastError ? "<p class='gc-small'>The numbers of the last valid grasp " +
+      "drawn:</p>" : "") +
       "<p><b>" + st.contacts.length + " contacts</b>, effort <b>" + st.effort + "</b>; force " +
       "closure: <b>" + (Q.closure ? "yes" : "no") + "</b>; the load is held for " + span + ".</p>" +
       "<p>θ = " + deg(st.theta) + ": least effort <b>k = " + fmt(v) + "</b>" +
@@ -586,7 +593,10 @@
       "<table class='gc-v'><tr><th></th><th>x</th><th>y</th><th>|q|</th></tr>" + rows + "</table>" +
       "<p>" + Q.vertices.length + " vertices of Q; " + Q.redundant.length + " redundant dual " +
       "vertices (dashed grey circles: they never touch the envelope)" +
-      (Q.rays.length ? "; " + Q.rays.length + " recession directions (red arrows)" : "") + ".</p>";
+      (Q.rays.length ? "; " + Q.rays.length + " recession directions (red arrows)" : "") +
+      ".</p><p class='gc-small'>The thick curve is the envelope of the Thales circles on " +
+      "O q: the polar plot of k(θ); the red arrow at O is the load e(θ), the red dot k(θ) " +
+      "e(θ).</p>";
   }
 
   function update() {
@@ -601,7 +611,10 @@
       lastError = String(err.message || err);
       errText.textContent = lastError;
       errBox.hidden = false;
+      if (valid) showInfo(valid.state, valid.Q);
     }
+    drawCones(state);
+    board.update();
     api.lastUpdateMs = performance.now() - t0;
     syncControls();
   }
