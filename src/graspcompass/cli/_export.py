@@ -118,7 +118,6 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     path = check_target(path)
     from ..export import export
     from ..export.tikz import write_tikz
-
     from ._ncontact import wants_contacts
 
     if fmt == "html" and wants_contacts(args):  # the n-contact page (draggable contacts)
