@@ -23,7 +23,7 @@
  * load keeps the last valid drawing and says why.
  *
  * window.graspcompass: set({contacts, effort, theta}), state(), drawn(), compute(state),
- * support(Q, θ), arcOf(Q), vertices(), redundant(), rays(), arc(), k(θ), error(), board, lastUpdateMs.
+ * support(Q, θ), arcOf(Q), constructOf(Q, k, com), construct(k), showConstruction(k), vertices(), redundant(), rays(), arc(), k(θ), error(), board, lastUpdateMs.
  */
 (function () {
   "use strict";
@@ -413,6 +413,8 @@
     const kept = new Set(keep);
     return {
       vertices: keep.map((i) => cands[i].q),
+      bases: keep.map((i) => cands[i].bases),
+      model: m, costs: m.weights === null ? null : dualSystem(m).rhs,
       redundant: cands.filter((_, i) => !kept.has(i)).map((c) => c.q),
       hull: h.map((i) => cands[i].q),
       rays, cone, closure, edges: m.contacts.map((c) => c.edges),
@@ -438,6 +440,46 @@
     lo = ((lo % TWO_PI) + TWO_PI) % TWO_PI;
     const w = (((hi0 - lo) % TWO_PI) + TWO_PI) % TWO_PI;
     return [lo, lo + (w || TWO_PI)];
+  }
+
+  // ------------------------------------------------------------------------------------
+  // The construction of one vertex (construction/ncontact_recipe.py, notes §3): the
+  // rotated dual motion r(p) = J^T u(p) is a homothety taking each line of action l_j of
+  // the basis onto its cost line L'_j = {x : (J^T d_j)·x = c_j}; R = r(O) is where the
+  // parallels to A12 O through A'12 and to A13 O through A'13 meet; q = R turned a
+  // quarter turn clockwise about O.  Coordinates relative to O.
+  // ------------------------------------------------------------------------------------
+  function meet(p, d, a, b) { // line p + s d  ∩  line a + t b
+    const den = crs(d, b);
+    if (Math.abs(den) <= 1e-12 * Math.hypot(...d) * Math.hypot(...b)) return null;
+    const s = crs([a[0] - p[0], a[1] - p[1]], b) / den;
+    return [p[0] + s * d[0], p[1] + s * d[1]];
+  }
+
+  /** The steps for the vertex k of Q, or null (a sign constraint, max-normal, degenerate). */
+  function construct(Q, k, com) {
+    if (!Q.costs || !Q.bases[k]) return null;
+    const m = Q.model;
+    for (const B of Q.bases[k]) {
+      if (B.some((r) => r >= m.G.length)) continue; // the paper's k >= 0: a given point
+      const lines = B.map((j) => {
+        const i = m.owner[j], d = m.contacts[i].edges[j % 2];
+        const p = [m.contacts[i].p[0] - com[0], m.contacts[i].p[1] - com[1]];
+        const w = m.weights[i];
+        const T = [w[1], -w[0]]; // the cost point J^T w_i
+        return { j, i, p, d, T };
+      });
+      for (let first = 0; first < 3; first++) {
+        const [l1, l2, l3] = [lines[first], ...lines.filter((_, t) => t !== first)];
+        const A12 = meet(l1.p, l1.d, l2.p, l2.d), A13 = meet(l1.p, l1.d, l3.p, l3.d);
+        const C12 = meet(l1.T, l1.d, l2.T, l2.d), C13 = meet(l1.T, l1.d, l3.T, l3.d);
+        if (!A12 || !A13 || !C12 || !C13) continue;
+        const R = meet(C12, [-A12[0], -A12[1]], C13, [-A13[0], -A13[1]]);
+        if (!R) continue;
+        return { lines: [l1, l2, l3], A12, A13, C12, C13, R, q: [R[1], -R[0]] };
+      }
+    }
+    return null;
   }
 
   // ------------------------------------------------------------------------------------
@@ -547,6 +589,7 @@
       dyn.push(board.create("point", [ox + q[0], oy + q[1]], { name: "", face: "x", size: 3,
         fixed: true, strokeColor: "#9a9a9a" }));
     }
+    drawConstruction(st, Q);
     let scale = 1;
     for (const q of V) scale = Math.max(scale, Math.hypot(...q));
     for (const r of Q.rays) {
@@ -575,6 +618,52 @@
     } else kPoint.hide();
     board.update();
     showInfo(st, Q);
+  }
+
+  const conSel = document.getElementById("gc-construct");
+  const conText = document.getElementById("gc-construction");
+  function drawConstruction(st, Q) {
+    const k = conSel.value === "" ? -1 : +conSel.value;
+    const keep = conSel.value;
+    conSel.innerHTML = "<option value=''>none</option>" + Q.vertices.map((_, i) =>
+      "<option value='" + i + "'>q" + (i + 1) + "</option>").join("");
+    conSel.value = k < Q.vertices.length ? keep : "";
+    conText.textContent = "";
+    if (k < 0 || k >= Q.vertices.length) return;
+    const c = construct(Q, k, st.com);
+    if (!c) {
+      conText.textContent = "q" + (k + 1) + " is a given point here (its basis holds a sign " +
+        "constraint, the effort is max-normal, or the recipe degenerates).";
+      return;
+    }
+    const [ox, oy] = st.com;
+    const at = (p) => [ox + p[0], oy + p[1]];
+    const thin = { strokeColor: COLORS.perp, strokeWidth: 1, dash: 2, fixed: true,
+      highlight: false, straightFirst: true, straightLast: true };
+    const mark = (p, name, col) => dyn.push(board.create("point", at(p), { name, size: 2,
+      fixed: true, fillColor: col, strokeColor: col, label: { strokeColor: col } }));
+    c.lines.forEach((l, t) => {
+      dyn.push(board.create("line", [at(l.p), at([l.p[0] + l.d[0], l.p[1] + l.d[1]])], thin));
+      dyn.push(board.create("line", [at(l.T), at([l.T[0] + l.d[0], l.T[1] + l.d[1]])],
+        { ...thin, strokeColor: COLORS.side }));
+      mark(l.T, "T" + (l.i + 1), COLORS.side);
+      void t;
+    });
+    const par = { ...thin, strokeColor: COLORS.highlight, dash: 0 };
+    dyn.push(board.create("line", [at(c.C12), at([c.C12[0] - c.A12[0], c.C12[1] - c.A12[1]])], par));
+    dyn.push(board.create("line", [at(c.C13), at([c.C13[0] - c.A13[0], c.C13[1] - c.A13[1]])], par));
+    mark(c.A12, "A12", COLORS.perp); mark(c.A13, "A13", COLORS.perp);
+    mark(c.C12, "A'12", COLORS.side); mark(c.C13, "A'13", COLORS.side);
+    mark(c.R, "R", COLORS.highlight);
+    dyn.push(board.create("segment", [at([0, 0]), at(c.R)], { strokeColor: COLORS.highlight,
+      dash: 1, fixed: true, highlight: false }));
+    const names = c.lines.map((l) => "P" + (l.i + 1) + (l.j % 2 ? "−" : "+"));
+    conText.textContent = "q" + (k + 1) + " from the edges " + names.join(", ") + ": 1. the " +
+      "cost lines, parallel to each edge through its contact's cost point T; 2. A12 = " +
+      names[0] + " ∩ " + names[1] + ", A13 = " + names[0] + " ∩ " + names[2] + " and their " +
+      "images A'12, A'13 on the cost lines; 3. R = (parallel to A12 O through A'12) ∩ " +
+      "(parallel to A13 O through A'13); 4. q" + (k + 1) + " = R turned a quarter turn " +
+      "clockwise about O.";
   }
 
   function showInfo(st, Q) {
@@ -645,6 +734,7 @@
   }
   fillEfforts();
   effortSel.addEventListener("change", () => { state.effort = effortSel.value; update(); fit(); });
+  conSel.addEventListener("change", () => { if (valid) draw(valid.state, valid.Q); });
   syncs.push(slider("θ (°)", 0, 360, 0.5, () => state.theta * 180 / Math.PI,
     (v) => { state.theta = v * Math.PI / 180; }));
   state.contacts.forEach((c, i) => {
@@ -672,7 +762,7 @@
   document.getElementById("gc-fit").addEventListener("click", fit);
 
   const api = {
-    board, compute, support, arcOf, arc: () => (valid ? arcOf(valid.Q) : null),
+    board, compute, support, arcOf, constructOf: construct, arc: () => (valid ? arcOf(valid.Q) : null),
     state: () => JSON.parse(JSON.stringify(state)),
     drawn: () => (valid ? JSON.parse(JSON.stringify(valid.state)) : null),
     vertices: () => (valid ? valid.Q.vertices.map((q) => q.slice()) : []),
@@ -680,6 +770,10 @@
     rays: () => (valid ? valid.Q.rays.map((r) => r.slice()) : []),
     closure: () => (valid ? valid.Q.closure : null),
     k: (t) => (valid ? support(valid.Q, t) : null),
+    construct: (k) => { const c = valid ? construct(valid.Q, k, valid.state.com) : null;
+      return c ? { q: c.q, R: c.R, edges: c.lines.map((l) => l.j) } : null; },
+    showConstruction: (k) => { conSel.value = k === null ? "" : String(k);
+      if (valid) draw(valid.state, valid.Q); },
     error: () => lastError,
     toScreen: (i) => { const p = contactPts[i].coords.scrCoords;
       const r = board.containerObj.getBoundingClientRect(); return [r.left + p[1], r.top + p[2]]; },
