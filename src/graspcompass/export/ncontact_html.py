@@ -11,14 +11,19 @@ the same float algorithm as the Python float path (``_web/ncontact.js``, a port 
 dual-feasible bases, the hull, the recession directions and the arc of loads that
 can be held, ``v(θ) = max_q q·e(θ)`` with ``e(θ) = (sin θ, -cos θ)`` (eq. (26)).
 It draws the vertices q of Q, the Thales circles on O q (dashed grey for the
-redundant dual vertices), their outer envelope (the polar plot of v) and the load.
+redundant dual vertices), their outer envelope (the polar plot of v) and the load;
+on request the construction of one vertex (the cost lines through the cost points,
+the homologous triangles A12 A13 / A'12 A'13, R and the quarter turn of
+:mod:`graspcompass.construction.ncontact_recipe`), with its steps as a caption.
 A grasp that can hold no load (an empty dual, a rank-deficient grasp, no open arc
 of loads) keeps the last valid drawing and shows why.
 
 The page's script exposes ``window.graspcompass``: ``set({contacts: [{x, y, angle,
 mu}, ...], effort, theta})``, ``state()``, ``vertices()``, ``redundant()``,
-``rays()``, ``arc()``, ``k(θ)``, ``closure()``, ``error()``, ``toScreen(i)``,
-``handleToScreen(i)``, ``fit()`` and ``lastUpdateMs``.
+``rays()``, ``arc()``, ``k(θ)``, ``closure()``, ``error()``, ``construct(k)``,
+``showConstruction(k)``, ``toScreen(i)``, ``handleToScreen(i)``, ``fit()``, ``lastUpdateMs``
+and, on any state, ``compute(state)``, ``support(Q, θ)``, ``arcOf(Q)`` and
+``constructOf(Q, k, com)``.
 
 The export layer does not import :mod:`graspcompass.ncontact` (a higher layer): the
 functions read the grasp's ``contacts`` (``p``, ``n``, ``mu``), ``com`` and

@@ -19,7 +19,8 @@
  * The picture: contacts (drag the square) with normal handles (drag the dot) and their
  * friction cones, Q's vertices q_i, the Thales circles on O q_i (dashed grey for the
  * redundant dual vertices, whose circles never reach the envelope), the envelope (the
- * polar plot of v(θ), Fig. 5) and the load at θ.  A drag to a grasp that cannot hold any
+ * polar plot of v(θ), Fig. 5), the load at θ and, on request, the construction of one
+ * vertex (cost lines, A12 A13 / A'12 A'13, R, quarter turn).  A drag to a grasp that cannot hold any
  * load keeps the last valid drawing and says why.
  *
  * window.graspcompass: set({contacts, effort, theta}), state(), drawn(), compute(state),
