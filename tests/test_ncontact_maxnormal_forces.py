@@ -101,3 +101,37 @@ def test_no_force_closure_outside_the_arc() -> None:
     assert g.forces("pi")["forces"] is None and g.forces("pi")["effort"] == sp.oo
     r = g.forces("pi/4")
     assert r["forces"] is not None and float(r["effort"]) > 0
+
+
+def test_k_command_lists_the_edges_that_carry_load(capsys: pytest.CaptureFixture) -> None:
+    """``k --effort max-normal --json``: on each held row, the HiGHS LP restricted to the
+    listed edges (every other edge weight fixed at 0) reaches the full LP's value."""
+    import json
+
+    from scipy.optimize import linprog
+
+    from _ncontact_lp import lp_data
+    from graspcompass.cli import main
+
+    spec = ["1,0,180deg,1/2", "-1/2,sqrt(3)/2,-60deg,1/2", "-1/2,-sqrt(3)/2,60deg,1/2",
+            "0,1,0,-1,1/3"]
+    assert main(["k", *(f"--contact={c}" for c in spec), "--effort", "max-normal",
+                 "--theta", "0:360:15deg", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    r3 = math.sqrt(3)
+    floats = [(1, 0, -1, 0, 0.5), (-0.5, r3 / 2, 0.5, -r3 / 2, 0.5),
+              (-0.5, -r3 / 2, 0.5, r3 / 2, 0.5), (0, 1, 0, -1, 1 / 3)]
+    c, A_eq, A_ub, b_ub = lp_data(floats, "max-normal")
+    names = [f"P{i + 1}{s}" for i in range(4) for s in "+-"]
+    assert len(rows) == 24
+    for row in rows:
+        t = math.radians(row["theta_deg"])
+        b = -np.array([math.sin(t), -math.cos(t), 0.0])
+        full = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=(0, None),
+                       method="highs")
+        assert row["tight"], row
+        bounds = [(0, None) if n in row["tight"] else (0, 0) for n in names] + [(0, None)]
+        part = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=bounds,
+                       method="highs")
+        assert part.status == 0 and abs(part.fun - full.fun) <= 1e-9 * (1 + full.fun)
+        assert abs(row["k"] - full.fun) <= 1e-9 * (1 + full.fun)

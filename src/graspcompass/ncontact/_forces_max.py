@@ -38,6 +38,8 @@ __all__ = ["max_normal_forces"]
 
 def _direction(G: list[tuple], cand: Any, numeric: bool) -> list[tuple]:
     """The dual directions d (one per basis of the candidate) with ``-d_f / f(d) = q``."""
+    if numeric:
+        G = [tuple(float(v) for v in w) for w in G]
     ties = _ties(G)
     labels = [f"P{i + 1}{name}" for i, name, _, _ in ties]
     out = []
