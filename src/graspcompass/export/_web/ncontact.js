@@ -507,7 +507,8 @@
   const O = board.create("point", state.com, { name: "O", fixed: true, size: 3,
     fillColor: COLORS.point, strokeColor: COLORS.point, label: { offset: [-14, -12] } });
   const envelope = board.create("curve", [[0], [0]], { strokeColor: COLORS.envelope,
-    strokeWidth: 3.5, highlight: false, layer: 8 });
+    strokeWidth: 3.5, highlight: false, layer: 8, doAdvancedPlot: false, RDPsmoothing: false,
+    curveType: "plot" });
   let dyn = []; // circles, vertex marks, rays: redrawn on each update
   const contactPts = [], handles = [], coneLines = [];
   const L = DATA.handle;
@@ -564,32 +565,49 @@
     });
   }
 
+  // Thales circles on O q and the marks of q, made once per slot and then moved
+  const vertexPool = [], redundantPool = [];
+  function place(pool, pts, com, style) {
+    const [ox, oy] = com;
+    pts.forEach((q, i) => {
+      if (!pool[i]) {
+        const [cs, ps] = style(i);
+        const slot = { r: 0 };
+        slot.c = board.create("point", [0, 0], { visible: false, fixed: true, name: "",
+          withLabel: false });
+        slot.circle = board.create("circle", [slot.c, () => slot.r], { ...cs, fixed: true,
+          highlight: false });
+        slot.mark = board.create("point", [0, 0], { ...ps, fixed: true, highlight: false });
+        pool[i] = slot;
+      }
+      const slot = pool[i];
+      slot.c.setPosition(JXG.COORDS_BY_USER, [ox + q[0] / 2, oy + q[1] / 2]);
+      slot.r = Math.hypot(q[0], q[1]) / 2;
+      slot.mark.setPosition(JXG.COORDS_BY_USER, [ox + q[0], oy + q[1]]);
+      slot.circle.show(); slot.mark.show();
+    });
+    for (let i = pts.length; i < pool.length; i++) { pool[i].circle.hide(); pool[i].mark.hide(); }
+  }
+
   function draw(st, Q) {
     for (const o of dyn) board.removeObject(o);
     dyn = [];
     const [ox, oy] = st.com;
     const V = Q.vertices;
-    V.forEach((q, i) => {
+    place(vertexPool, V, st.com, (i) => {
       const col = COLORS[CIRCLES[i % 4]];
-      const qx = ox + q[0], qy = oy + q[1];
-      dyn.push(board.create("circle", [[ox + q[0] / 2, oy + q[1] / 2], Math.hypot(...q) / 2],
-        { strokeColor: col, strokeWidth: 1.2, strokeOpacity: 0.85, fixed: true,
-          highlight: false, center: { visible: false } }));
-      dyn.push(board.create("point", [qx, qy], { name: "q" + (i + 1), size: 3, fixed: true,
-        fillColor: col, strokeColor: col, label: { strokeColor: col, offset: [5, 6] } }));
+      return [{ strokeColor: col, strokeWidth: 1.2, strokeOpacity: 0.85 },
+        { name: "q" + (i + 1), size: 3, fillColor: col, strokeColor: col,
+          label: { strokeColor: col, offset: [5, 6] } }];
     });
     if (V.length >= 3 && !Q.rays.length) {
       dyn.push(board.create("polygon", V.map((q) => [ox + q[0], oy + q[1]]), {
         fillColor: COLORS.fill, fillOpacity: 0.25, borders: { strokeColor: COLORS.fill,
           strokeWidth: 1 }, vertices: { visible: false }, fixed: true, highlight: false }));
     }
-    for (const q of Q.redundant) {
-      dyn.push(board.create("circle", [[ox + q[0] / 2, oy + q[1] / 2], Math.hypot(...q) / 2],
-        { strokeColor: "#9a9a9a", strokeWidth: 1, dash: 2, fixed: true, highlight: false,
-          center: { visible: false } }));
-      dyn.push(board.create("point", [ox + q[0], oy + q[1]], { name: "", face: "x", size: 3,
-        fixed: true, strokeColor: "#9a9a9a" }));
-    }
+    place(redundantPool, Q.redundant, st.com, () => [
+      { strokeColor: "#9a9a9a", strokeWidth: 1, dash: 2 },
+      { name: "", face: "x", size: 3, strokeColor: "#9a9a9a" }]);
     drawConstruction(st, Q);
     let scale = 1;
     for (const q of V) scale = Math.max(scale, Math.hypot(...q));
@@ -617,7 +635,6 @@
       kPoint.setPosition(JXG.COORDS_BY_USER, [ox + Math.max(v, 0) * e[0], oy + Math.max(v, 0) * e[1]]);
       kPoint.show();
     } else kPoint.hide();
-    board.update();
     showInfo(st, Q);
   }
 
@@ -691,6 +708,7 @@
 
   function update() {
     const t0 = performance.now();
+    board.suspendUpdate(); // one redraw for the whole change
     try {
       const Q = compute(state);
       valid = { state: JSON.parse(JSON.stringify(state)), Q };
@@ -704,7 +722,7 @@
       if (valid) showInfo(valid.state, valid.Q);
     }
     drawCones(state);
-    board.update();
+    board.unsuspendUpdate();
     api.lastUpdateMs = performance.now() - t0;
     syncControls();
   }
@@ -735,7 +753,13 @@
   }
   fillEfforts();
   effortSel.addEventListener("change", () => { state.effort = effortSel.value; update(); fit(); });
-  conSel.addEventListener("change", () => { if (valid) draw(valid.state, valid.Q); });
+  function redraw() {
+    if (!valid) return;
+    board.suspendUpdate();
+    draw(valid.state, valid.Q);
+    board.unsuspendUpdate();
+  }
+  conSel.addEventListener("change", redraw);
   syncs.push(slider("θ (°)", 0, 360, 0.5, () => state.theta * 180 / Math.PI,
     (v) => { state.theta = v * Math.PI / 180; }));
   state.contacts.forEach((c, i) => {
@@ -774,7 +798,7 @@
     construct: (k) => { const c = valid ? construct(valid.Q, k, valid.state.com) : null;
       return c ? { q: c.q, R: c.R, edges: c.lines.map((l) => l.j) } : null; },
     showConstruction: (k) => { conSel.value = k === null ? "" : String(k);
-      if (valid) draw(valid.state, valid.Q); },
+      redraw(); },
     error: () => lastError,
     toScreen: (i) => { const p = contactPts[i].coords.scrCoords;
       const r = board.containerObj.getBoundingClientRect(); return [r.left + p[1], r.top + p[2]]; },
