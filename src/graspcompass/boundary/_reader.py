@@ -329,6 +329,8 @@ class _Reader:
         elif name == "atan2":
             self._condition("!=", args[0] ** 2 + args[1] ** 2)
         self.depth -= 1
+        if name in _TRIG and _plain_real(args[0]):
+            return function(args[0], evaluate=False)  # what sympy's eval leaves it as
         if not any(_has_function(arg) for arg in args):
             value = function(*args)
             if _too_many_nodes(value, _EXPANSION_NODES):  # tan(pi/120): 313 nodes of radicals
@@ -432,6 +434,16 @@ def _clearly_inside_unit(value: sympy.Expr) -> bool:
     if im or re is None:
         return re is None and im is None  # exactly zero
     return bool(re_acc is not None and re_acc >= 40 and mpmath.mpf(re) ** 2 < 1 - 2.0**-31)
+
+
+_TRIG = frozenset({"sin", "cos", "tan"})
+
+
+def _plain_real(arg: sympy.Expr) -> bool:
+    """A real symbol known to be nonzero: ``sin``, ``cos``, ``tan`` of it are left as
+    they are by sympy's evaluation, which is skipped (on the first call in a process it
+    costs milliseconds of lazy imports and caches)."""
+    return bool(arg.is_Symbol and arg.is_extended_real and arg.is_zero is False)
 
 
 def _has_function(value: sympy.Expr) -> bool:
