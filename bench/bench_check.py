@@ -34,12 +34,8 @@ import sympy as sp
 
 from graspcompass.construction.language import paper_program, replay
 from graspcompass.geometry.exact import clear_caches
-from graspcompass.proof.program_check import (
-    PAPER_TARGETS,
-    _paper_model,
-    _paper_object,
-    check_program,
-)
+from graspcompass.proof._program_targets import _paper_model, _paper_object
+from graspcompass.proof.program_check import PAPER_TARGETS, check_program
 from graspcompass.proof.program_decide import coords
 
 TARGET_S = 10.0
