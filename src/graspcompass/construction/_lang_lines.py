@@ -72,6 +72,9 @@ def _split_items(text: str, offset: int) -> list[tuple[str, int]]:
     return items
 
 
+_SPACE = re.compile(r"\s*")  # the whitespace str.strip() strips
+
+
 class _Line:
     """The tokens of one line: (kind, text, column), values kept as raw text."""
 
@@ -79,10 +82,11 @@ class _Line:
         self.text, self.err, self.tokens = text, err, []
         pos = 0
         while pos < len(text):
-            if text[pos:].strip() == "":
+            start = _SPACE.match(text, pos).end()  # type: ignore[union-attr]
+            if start == len(text):
                 break
             m = _TOKEN.match(text, pos)
-            col = len(text[pos:]) - len(text[pos:].lstrip()) + pos + 1
+            col = start + 1
             if m is None or m.lastgroup is None:
                 if text[col - 1] == '"':
                     raise err("unterminated string", col)
@@ -96,7 +100,8 @@ class _Line:
                 continue
             if m.lastgroup == "string":
                 raw = m.group("string")[1:-1]
-                self.tokens.append(("string", re.sub(r"\\(.)", r"\1", raw), col))
+                self.tokens.append(("string", re.sub(r"\\(.)", r"\1", raw) if "\\" in raw
+                                    else raw, col))
             else:
                 self.tokens.append((m.lastgroup, m.group(m.lastgroup), col))
             pos = m.end()
