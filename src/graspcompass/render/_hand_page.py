@@ -195,8 +195,8 @@ def _solution_rows(sub: Any, num: dict[str, Any], scale: float) -> list[tuple[st
         rows.append((f"V{n}", (
             f"$\\overline{{O_MX_{n}}}$ = {omx:+.3f} ({omx * scale:+.1f} mm),  "
             f"$\\overline{{OY_{n}}}$ = {oy:+.3f} ({oy * scale:+.1f} mm),  so  "
-            f"$V_{n}$ = ({vx:+.3f}, {vy:+.3f}), i.e. ({vx * scale:+.1f} mm, {vy * scale:+.1f} mm) "
-            "from $O$.")))
+            f"$V_{n}$ = ({vx:+.3f}, {vy:+.3f}), i.e. ({vx * scale:+.1f} mm, "
+            f"{vy * scale:+.1f} mm) from $O$.")))
     return rows
 
 
