@@ -40,6 +40,7 @@ from . import _file
 
 if TYPE_CHECKING:
     from ..construction.protocol import Construction
+    from ..grasp import Grasp
     from ..render.animate import ConstructionAnimation
 
 __all__ = [
@@ -266,7 +267,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     return p
 
 
-def run(args: argparse.Namespace, grasp: Any) -> int:
+def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     """Run ``graspcompass animate`` for ``grasp``; returns the exit status.
 
     ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
