@@ -20,6 +20,7 @@ import mpmath
 import sympy
 
 from ._reader_values import (
+    _TRIG,
     _algebraic_sign,
     _clearly_inside_unit,
     _degree,
@@ -27,6 +28,8 @@ from ._reader_values import (
     _has_function,
     _max_bits,
     _mpf,
+    _plain_real,
+    _scan,
     _short,
     _too_many_nodes,
     _total_bits,
@@ -156,12 +159,13 @@ class _Reader:
         value = self._node(node)
         if value.is_Symbol or value is sympy.pi:
             return value  # a name or pi: nothing to bound
-        if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
+        infinite, bits, nodes = _scan(value)
+        if infinite:
             raise _fail(self.text, "the value is not finite (division by zero?)")
-        if _max_bits(value) > MAX_BITS:
+        if bits > MAX_BITS:
             raise _fail(self.text, f"a number in the value has more than {MAX_BITS} bits "
                         f"(about {_digits(MAX_BITS)} decimal digits)")
-        if _too_many_nodes(value):
+        if nodes > MAX_NODES:
             raise _fail(self.text, f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
                         "out at length); simplify the text")
         self._degree_at_most(_degree(value), value)
@@ -304,6 +308,8 @@ class _Reader:
         elif name == "atan2":
             self._condition("!=", args[0] ** 2 + args[1] ** 2)
         self.depth -= 1
+        if name in _TRIG and _plain_real(args[0]):
+            return function(args[0], evaluate=False)  # what sympy's eval leaves it as
         if not any(_has_function(arg) for arg in args):
             value = function(*args)
             if _too_many_nodes(value, _EXPANSION_NODES):  # tan(pi/120): 313 nodes of radicals

@@ -81,6 +81,16 @@ def _clearly_inside_unit(value: sympy.Expr) -> bool:
     return bool(re_acc is not None and re_acc >= 40 and mpmath.mpf(re) ** 2 < 1 - 2.0**-31)
 
 
+_TRIG = frozenset({"sin", "cos", "tan"})
+
+
+def _plain_real(arg: sympy.Expr) -> bool:
+    """A real symbol known to be nonzero: ``sin``, ``cos``, ``tan`` of it are left as
+    they are by sympy's evaluation, which is skipped (on the first call in a process it
+    costs milliseconds of lazy imports and caches)."""
+    return bool(arg.is_Symbol and arg.is_extended_real and arg.is_zero is False)
+
+
 def _has_function(value: sympy.Expr) -> bool:
     return bool(value.atoms(sympy.Function))
 
@@ -135,6 +145,23 @@ def _degree(value: sympy.Expr) -> int:
         return _degree(value.base) * abs(int(value.exp.p))
     inner = max(_degree(a) for a in value.args)
     return max(1, inner) if inner or value.free_symbols else 0
+
+
+_INFINITE = frozenset({sympy.zoo, sympy.nan, sympy.oo, -sympy.oo})
+
+
+def _scan(value: sympy.Expr) -> tuple[bool, int, int]:
+    """In one walk of the tree: whether it holds an infinity or nan, the most bits of a
+    numerator or denominator in it (:func:`_max_bits`) and its number of nodes."""
+    infinite, bits, nodes = False, 0, 0
+    for node in sympy.preorder_traversal(value):
+        nodes += 1
+        if node.is_Atom:
+            if node.is_Rational:
+                bits = max(bits, int(node.p).bit_length(), int(node.q).bit_length())
+            elif node in _INFINITE:
+                infinite = True
+    return infinite, bits, nodes
 
 
 def _too_many_nodes(value: sympy.Expr, most: int = MAX_NODES) -> bool:

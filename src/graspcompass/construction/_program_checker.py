@@ -8,6 +8,7 @@ paths.  Private to :mod:`graspcompass.construction.program` (the builder) and
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable, Mapping
 from typing import Any
 
@@ -16,6 +17,7 @@ import sympy as sp
 from ..boundary.errors import InputError
 from ..boundary.expr import Condition, ExpressionError, parse_with_conditions, tree_conditions
 from ..boundary.inputs import exact_denominators
+from ._hypotheses import RELATIONS, Inequality
 from ._program_data import (
     _CLAIM_KINDS,
     _ENVELOPE,
@@ -45,6 +47,7 @@ class _Checker:
     def __init__(self) -> None:
         self.params: list[Param] = []
         self.hypotheses: list[str] = []
+        self.inequalities: list[Inequality] = []
         self.lets: list[tuple[str, sp.Expr]] = []
         self.steps: list[Statement] = []
         self.claims: list[Claim] = []
@@ -270,4 +273,39 @@ class _Checker:
 
     def program(self, file: str) -> Program:
         return Program(tuple(self.params), tuple(self.hypotheses), tuple(self.lets),
-                       tuple(self.steps), tuple(self.claims), file)
+                       tuple(self.steps), tuple(self.claims), file, tuple(self.inequalities))
+
+
+def read_inequality(chk: Any, name: str, text: str, line: int) -> Inequality:
+    """Read ``LEFT REL RIGHT`` of ``hypothesis NAME: ...`` with the program's checker
+    ``chk`` (its names and values) and record it; refuses with the checker's problem."""
+    if name in HYPOTHESES or name in {h.name for h in chk.inequalities} or \
+            name in chk.hypotheses:
+        raise _Problem(f"hypothesis {name!r} declared twice or a reserved name", "name")
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
+        raise _Problem(f"bad hypothesis name {name!r}: a letter or _ then letters, digits, _",
+                       "name")
+    depth, at = 0, None
+    for i, c in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth == 0 and at is None:
+            for sym in ("==", *RELATIONS):
+                if text.startswith(sym, i):
+                    at = (i, sym)
+                    break
+    if at is None or at[1] == "==":
+        raise _Problem("write hypothesis NAME: VALUE REL VALUE with REL one of "
+                       + " ".join(RELATIONS), "value")
+    i, rel = at
+    left, right = text[:i].strip(), text[i + len(rel):].strip()
+    if not left or not right:
+        raise _Problem("a hypothesis compares two values", "value")
+    chk.pending = []
+    lhs, rhs = chk.value(left, "value"), chk.value(right, "value")
+    chk.pending = []
+    if not (lhs - rhs).free_symbols:
+        raise _Problem("a hypothesis is an inequality on the parameters (this one has none)",
+                       "value")
+    h = Inequality(name, rel, lhs, rhs, line)
+    chk.inequalities.append(h)
+    return h

@@ -18,6 +18,7 @@ from .. import symbols as _model
 from ..boundary.errors import InputError
 from ..boundary.expr import Condition
 from ..geometry import GeometryError
+from ._hypotheses import Inequality
 from ._program_text import format_program
 from .operations import OPERATIONS
 
@@ -193,6 +194,8 @@ class Program:
     steps: tuple[Statement, ...] = ()
     claims: tuple[Claim, ...] = ()
     file: str = field(default="<text>", compare=False)
+    #: Named inequalities on the parameters (``hypothesis NAME: A > B``), for the whole file.
+    inequalities: tuple[Inequality, ...] = ()
 
     @cached_property
     def trig_atoms(self) -> frozenset:

@@ -22,7 +22,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from ._program_checker import _Checker
+from ._program_checker import _Checker, read_inequality
 from ._program_data import (  # noqa: F401  (the parser's words, read from here)
     _CLAIM_KINDS,
     _ENVELOPE,
@@ -104,9 +104,12 @@ class ConstructionBuilder:
         """Declare a parameter with a domain of :data:`DOMAINS` (``"positive"``, ``"angle"``...)."""
         self._run(self._chk.param, name, domain, self._calls + 1)
 
-    def hypothesis(self, name: str) -> None:
-        """Make a hypothesis of :data:`HYPOTHESES` available to claims."""
-        self._run(self._chk.hypothesis, name)
+    def hypothesis(self, name: str, inequality: str | None = None) -> None:
+        """Make a hypothesis of :data:`HYPOTHESES` available to claims, or with
+        ``inequality`` (``"p**2 + q**2 > 1"``) restrict the parameters for the whole file."""
+        if inequality is None:
+            return self._run(self._chk.hypothesis, name)
+        self._run(read_inequality, self._chk, name, inequality, self._calls + 1)
 
     def let(self, name: str, value: Any) -> None:
         """A named value (text in the safe expression syntax, an int or a sympy expression)."""

@@ -22,7 +22,6 @@ from collections.abc import Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any, overload
 
-import numpy as np
 import sympy as sp
 
 from ..boundary.errors import NonFiniteValueError
@@ -63,6 +62,11 @@ from ._values import (
     _sympy,
     _value,
 )
+
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ..boundary._numpy import np
 
 __all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
            "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",

@@ -25,7 +25,9 @@ from .program_decide import (
     sign_fails,
     zeros_fail,
 )
-from .program_search import find, sign_score
+from .program_hypotheses import branch_roots
+from .program_hypotheses import texts as hypothesis_texts
+from .program_search import find, sign_score, witness_point
 from .prove import ProofResult, Status
 
 _COND1 = "condition1"
@@ -38,7 +40,7 @@ def _domain_text(program: Program) -> list[str]:
 
 def _hypotheses(program: Program, cond1: bool) -> tuple[str, ...]:
     domains = ("domains " + ", ".join(_domain_text(program)),) if program.params else ()
-    return (*domains, *(("condition (1)",) if cond1 else ()))
+    return (*domains, *(("condition (1)",) if cond1 else ()), *hypothesis_texts(program))
 
 
 # -- one claim ----------------------------------------------------------------------------
@@ -146,8 +148,9 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     if not cond1 and _uses_cond1(implied):  # a step's condition follows from (1): say so
         hyps = _hypotheses(program, True)
     if claim.kind == "sign":
-        e = sign_expr(claim, env)
-        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1)
+        e = branch_roots(sign_expr(claim, env), program.inequalities)
+        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1,
+                                 program.inequalities)
         if ok and r is not None:
             implied += list(r.implied)
             extra += list(r.conditions)
@@ -160,6 +163,7 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     else:
         score = None
         zeros, nonzeros = claim_zeros(claim, env)
+        zeros = [branch_roots(z, program.inequalities) for z in zeros]
         if tie:
             zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
         ok, imp, ext, method = prove_zero(zeros, cond1)
@@ -185,6 +189,11 @@ def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
          implied: list[str], extra: list[str], method: str,
          search_kw: Mapping[str, Any] | None = None) -> CheckRow:
     implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
+    if ok and program.inequalities and witness_point(program) is None:
+        return CheckRow(name, kind, line, ProofResult(
+            Status.UNDECIDED, "a proof under the file's hypotheses, but no point found where "
+            "they all hold (they may contradict each other)", time.perf_counter() - t0,
+            hypotheses=hyps, conditions=tuple(extra), implied=tuple(implied)))
     if ok:
         return CheckRow(name, kind, line, ProofResult(
             Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,

@@ -79,6 +79,8 @@ from .program_conditions import (
     tie_mu,
 )
 from .program_decide import DOMAIN_WORDS, CheckError, step_conditions
+from .program_hypotheses import discharge
+from .program_words import kernel_worded
 from .prove import ProofResult, Status
 
 __all__ = ["PAPER_TARGETS", "CheckError", "CheckRow", "ProgramReport", "check_program"]
@@ -229,6 +231,7 @@ def check_program(program: Program, against: str | None = None,
                 cond1_file, tie).extra)
         try:
             implied, extra = step_conditions(s, cond1_file, replaced, tie)
+            extra = kernel_worded(extra, s.op, s.inputs, statements)
             if own.false:
                 raise ValueError("; ".join(f"{t} is false for every parameter"
                                            for t in own.false))
@@ -287,13 +290,13 @@ def check_program(program: Program, against: str | None = None,
             if progress:
                 progress(done, total, name)
     symbols = {p.name: p.symbol for p in program.params}
-    step_rows, claim_rows, target_rows = ([_tidy(r, symbols) for r in rows] for rows in (
+    step_rows, claim_rows, target_rows = ([_tidy(r, symbols, program) for r in rows] for rows in (
         step_rows, claim_rows, target_rows))
     return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
                          against, time.perf_counter() - t0, c)
 
 
-def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
+def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol], program: Program) -> CheckRow:
     """The row with its conditions factored, merged, discharged and worded
     (:func:`~graspcompass.proof.program_words.tidy`)."""
     from dataclasses import replace
@@ -304,4 +307,6 @@ def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
     if not r.conditions and not r.implied:
         return row
     extra, implied = tidy(r.conditions, r.implied, symbols)
+    extra, by_hyp = discharge(extra, program.inequalities, symbols)
+    implied += by_hyp
     return replace(row, result=replace(r, conditions=tuple(extra), implied=tuple(implied)))

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import itertools
 import random
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import sympy as sp
@@ -49,6 +49,7 @@ from ._program_zeros import (
 )
 from .certify_algebra import _full_text, _positive, _primitive, _text, classify, ring
 from .model import violations
+from .program_roots import algebraic_zero, by_roots_or_hypotheses
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
 
 if TYPE_CHECKING:
@@ -186,7 +187,7 @@ def _witness(e: sp.Expr) -> list[sp.Expr]:
     return out
 
 
-def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
+def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool, hyps: Sequence[Any] = ()
                      ) -> tuple[bool | None, ProofResult | None]:
     intervals = CONDITION_1 if cond1 else {}
     if relation == "==":  # an identity: reduced to zero, or refuted by the search
@@ -194,7 +195,19 @@ def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool
         if ok:
             return True, ProofResult(Status.PROVED, method, 0.0, conditions=tuple(extra),
                                      implied=tuple(implied))
+        if algebraic_zero(e):
+            return True, ProofResult(Status.PROVED, "exactly 0: its minimal polynomial over "
+                                     "ℚ is x (a constant algebraic number)", 0.0)
         return None, None
+    r = _prove_sign_core(e, relation, cond1, intervals)
+    if r[0] or relation not in (">", ">=", "<", "<=", "!="):
+        return r
+    return by_roots_or_hypotheses(e, relation, lambda x: prove_sign_claim(x, ">", cond1, hyps),
+                                  hyps)
+
+
+def _prove_sign_core(e: sp.Expr, relation: str, cond1: bool, intervals: Any
+                     ) -> tuple[bool | None, ProofResult | None]:
     signs = {">": [1], "<": [-1], ">=": [1], "<=": [-1], "!=": [1, -1]}[relation]
     try:
         witness = _witness(e)
