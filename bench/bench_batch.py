@@ -37,7 +37,7 @@ import time  # noqa: E402
 import numpy as np  # noqa: E402
 
 from graspcompass import Grasp, batch  # noqa: E402
-from graspcompass.batch import _envelope  # noqa: E402
+from graspcompass.grasp import _envelope  # noqa: E402
 from graspcompass.sizing import size_gripper, worst_squeeze_many  # noqa: E402
 
 TARGET_RATE = 1e7

@@ -410,8 +410,10 @@ def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, t
     p = plan.exact[0]
     ring = np.asarray(plan.outline)
     ea, eb = p.edges
-    fn = lambda a, na, b, nb: paper_squeeze_tilted(a, na, b, nb, plan.com, mu, gdir, tau,  # noqa: E731
-                                                   accel)
+
+    def fn(a, na, b, nb):
+        return paper_squeeze_tilted(a, na, b, nb, plan.com, mu, gdir, tau, accel)
+
     grid = brute_force(ring, ea, eb, plan.com, mu, n=301, fn=fn, rounds=4, starts=3)
     assert p.certified and p.squeeze - p.lower_bound <= p.tol * p.squeeze
     # the proof holds against the grid (a bound too high fails here), and it is the optimum

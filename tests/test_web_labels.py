@@ -165,8 +165,10 @@ def test_port_resamples_as_python(port: Any, curves: list, window: list | None) 
         assert js.tolist() == py.tolist()
     else:
         x0, y0, x1, y1 = window
-        inside = lambda a: a[(a[:, 0] >= x0) & (a[:, 0] <= x1)  # noqa: E731
-                             & (a[:, 1] >= y0) & (a[:, 1] <= y1)]
+
+        def inside(a):
+            return a[(a[:, 0] >= x0) & (a[:, 0] <= x1) & (a[:, 1] >= y0) & (a[:, 1] <= y1)]
+
         assert sorted(map(tuple, inside(js))) == sorted(map(tuple, inside(py)))
 
 

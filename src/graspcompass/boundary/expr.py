@@ -40,7 +40,6 @@ import sympy
 from ._reader import (
     _CONSTANTS,
     _DEGREE,
-    _SYMPY_FAILURES,
     ComplexExpressionError,
     Condition,
     ExpressionError,
@@ -49,6 +48,7 @@ from ._reader import (
     _split_unit,
     real_sign,
 )
+from ._reader_values import _SYMPY_FAILURES
 from .errors import NotTextError
 from .limits import (  # the limits, stated once
     MAX_ANGLES,

@@ -66,6 +66,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
+from ._kinds import _kind, _nested_size
 from ._numpy import is_a
 from .errors import (
     ComplexValueError,
@@ -111,15 +112,6 @@ def _shown(value: object) -> str:
     except Exception:  # a hostile __repr__ must not hide the real error
         text = f"<{type(value).__name__}>"
     return text if len(text) <= 60 else text[:57] + "..."
-
-
-def _kind(value: object) -> str:
-    kinds = {type(None): "None", bool: "a bool", dict: "a dict", list: "a list",
-             tuple: "a tuple", set: "a set", bytes: "bytes"}
-    if is_a(value, "bool_"):
-        return "a bool"
-    kind = type(value).__name__
-    return kinds.get(type(value), f"{'an' if kind[:1].lower() in 'aeiou' else 'a'} {kind}")
 
 
 def _renamed(exc: InputError, name: str) -> InputError:
@@ -325,21 +317,6 @@ def float_value(value: Any, name: str) -> float:
     if not math.isfinite(out):
         raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(out)}")
     return out
-
-
-def _nested_size(value: list | tuple) -> int:
-    """The entries a nested list would have, from the lengths of its first elements."""
-    size, item = 1, value
-    for _ in range(32):
-        if not isinstance(item, (list, tuple)):
-            break
-        size *= len(item)
-        if not item:
-            break
-        item = item[0]
-    if is_a(item, "ndarray"):
-        size *= item.size
-    return size
 
 
 def float_array(value: Any, name: str) -> np.ndarray:

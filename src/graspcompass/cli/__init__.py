@@ -206,13 +206,14 @@ def _cmd_main(args: argparse.Namespace) -> int:
     from ..construction import internal_force_diagram, to_records
     from ..grasp import Grasp
 
-    c = internal_force_diagram(Grasp.preset("fig6"))
+    grasp = Grasp.preset("fig6")
+    c = internal_force_diagram(grasp)
     _draw(c, png, None, None, True)
     _draw(c, svg, None, None, True)
     with writing(steps):
         steps.write_text(json.dumps(to_records(c), indent=1) + "\n")
     if not args.quiet:
-        print(f"{c.grasp.title}\n")
+        print(f"{grasp.title}\n")
         print(protocol_table(c))
     with writing(gif):
         write_main_animation(c, out, args.quiet)

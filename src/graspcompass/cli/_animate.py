@@ -33,10 +33,15 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..presets import PRESETS
 from . import _file
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
+    from ..render.animate import ConstructionAnimation
 
 __all__ = [
     "KINDS",
@@ -262,7 +267,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     return p
 
 
-def run(args: argparse.Namespace, grasp: Any) -> int:
+def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     """Run ``graspcompass animate`` for ``grasp``; returns the exit status.
 
     ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
@@ -335,7 +340,7 @@ def run(args: argparse.Namespace, grasp: Any) -> int:
     return 0
 
 
-def main_animation(construction: Any) -> Any:
+def main_animation(construction: Construction) -> ConstructionAnimation:
     """The main job's construction animation of ``construction`` (not yet written).
 
     8 frames per step at 20 fps, :data:`MAIN_FIGSIZE` inches at :data:`MAIN_DPI` dpi:
@@ -346,6 +351,7 @@ def main_animation(construction: Any) -> Any:
     return animate_construction(construction, figsize=MAIN_FIGSIZE, dpi=MAIN_DPI)
 
 
-def write_main_animation(construction: Any, out_dir: str | Path, quiet: bool = False) -> Path:
+def write_main_animation(construction: Construction, out_dir: str | Path,
+                         quiet: bool = False) -> Path:
     """Write :func:`main_animation` of ``construction`` to ``out_dir/fig6-construction.gif``."""
     return main_animation(construction).save(Path(out_dir) / MAIN_ANIMATION, quiet=quiet)

@@ -18,9 +18,12 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import _file
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["register", "run_explore", "run_export"]
 
@@ -94,7 +97,7 @@ def _format_and_path(args: argparse.Namespace) -> tuple[str, str | Path]:
     return (args.format or guess_format(args.output)), args.output
 
 
-def run_export(args: argparse.Namespace, grasp: Any) -> int:
+def run_export(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     """Run ``graspcompass export`` for ``grasp``; returns the exit status (0).
 
     ``grasp`` is a :class:`~graspcompass.Grasp`, or a function that makes it,
@@ -160,7 +163,7 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     return 0
 
 
-def run_explore(args: argparse.Namespace, grasp: Any) -> int:
+def run_explore(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     """Run ``graspcompass explore`` for ``grasp``: the window until it is closed.
 
     Raises

@@ -19,9 +19,12 @@ import argparse
 import json
 import math
 import sys
-from typing import IO, Any
+from typing import IO, TYPE_CHECKING, Any
 
 from ..boundary.errors import InputError
+
+if TYPE_CHECKING:
+    from ..ncontact import NContactGrasp
 
 __all__ = ["add_options", "contacts_file", "draw", "grasp_from_args", "run", "wants_contacts"]
 
@@ -96,7 +99,7 @@ def _values(text: str, name: str, counts: tuple[int, ...]) -> list[str]:
     return items
 
 
-def grasp_from_args(args: argparse.Namespace) -> Any:
+def grasp_from_args(args: argparse.Namespace) -> NContactGrasp:
     """The :class:`~graspcompass.ncontact.NContactGrasp` of the options."""
     from ..ncontact import NContactGrasp
 

@@ -26,7 +26,10 @@ import math
 import re
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["register", "run"]
 
@@ -97,7 +100,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    help="print nothing but errors")
 
 
-def run(args: argparse.Namespace, grasp: Any = None) -> int:
+def run(args: argparse.Namespace, grasp: Grasp | None = None) -> int:
     """Run ``graspcompass worksheet``; returns the exit status (0).
 
     ``grasp`` defaults to the one the common options name

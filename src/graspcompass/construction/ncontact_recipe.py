@@ -27,9 +27,12 @@ The text is replayed like any construction file (``steps``, ``draw``, ``animate`
 from __future__ import annotations
 
 import itertools
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
+
+if TYPE_CHECKING:
+    from ..ncontact.model import NContactGrasp
 
 __all__ = ["ncontact_recipe"]
 
@@ -78,7 +81,7 @@ def _at(q: Any, o: Any) -> bool:
     return all(isinstance(a, float) or sp.simplify(sp.sympify(a) - b) == 0 for a, b in zip(q, o))
 
 
-def ncontact_recipe(grasp: Any) -> str:
+def ncontact_recipe(grasp: NContactGrasp) -> str:
     """The construction-language text of Q's vertices and their circles.
 
     Parameters
@@ -110,8 +113,9 @@ def ncontact_recipe(grasp: Any) -> str:
                      f"ref \"§2.2.2\" \"Edge {tag} of the friction cone at P{i + 1}: its line of "
                      "action\"")
     linear = g.effort.linear
+    weights = g.effort.weights or ()
     if linear:
-        for i, w in enumerate(g.effort.weights):
+        for i, w in enumerate(weights):
             t = (com[0] + w[1], com[1] - w[0])
             lines.append(f"T{i + 1} = point {_pt(t)} role cost_point {i + 1} ref "
                          f"\"docs/ncontact.md\" \"Cost point T{i + 1} = O + (w{i + 1} turned a "
@@ -119,7 +123,7 @@ def ncontact_recipe(grasp: Any) -> str:
     O = _f(com)  # noqa: E741 - the paper's name of the centre of mass
     P = [_f(c.p) for c in g.contacts]
     D = [_f(d) for _, _, d in edges]
-    W = [(O[0] + float(w[1]), O[1] - float(w[0])) for w in g.effort.weights] if linear else []
+    W = [(O[0] + float(w[1]), O[1] - float(w[0])) for w in weights] if linear else []
     scale = 1.0 + max(abs(v) for p in [*P, O] for v in p)
     cost_lines: set[int] = set()
 

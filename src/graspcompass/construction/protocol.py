@@ -11,12 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
 from ..geometry import Circle, Line, Point
 from .operations import OPERATIONS
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["INSTRUMENTS", "OPS", "Construction", "Step", "StepSpec", "replay"]
 
@@ -123,7 +126,7 @@ class Construction:
     """
 
     steps: tuple[Step, ...]
-    grasp: Any = None
+    grasp: Grasp | None = None
     skipped: tuple[tuple[str, str], ...] = field(default=())
 
     def __post_init__(self) -> None:
@@ -188,7 +191,7 @@ def run_step(spec: StepSpec, env: dict[str, Any], index: int,
                 spec.caption, spec.ref, spec.params, spec.key, spec.role, spec.n)
 
 
-def replay(specs: Sequence[StepSpec], grasp: Any = None,
+def replay(specs: Sequence[StepSpec], grasp: Grasp | None = None,
            subs: dict | None = None) -> Construction:
     """Run step declarations in order; ``subs`` substitutes symbols in the params.
 

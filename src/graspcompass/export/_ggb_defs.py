@@ -19,7 +19,7 @@ follows the sliders x_2 and y_P.  The cone sides are lines through P_i along
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
@@ -35,6 +35,9 @@ SLIDERS = (
     ("μ_1", "mu1", "μ1 = tan ξ1: friction at P1, eq. (22)"),
     ("μ_2", "mu2", "μ2 = tan ξ2: friction at P2, eq. (22)"),
 )
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Step
 
 _LABELS = {"x-axis": "axisX", "y-axis": "axisY", "envelope": "kGrasp"}
 
@@ -101,7 +104,7 @@ def _envelope() -> str:
     return f"(({m}) + abs({m})) / 2"
 
 
-def definition(step: Any, steps: dict[str, Any], with_grasp: bool) -> Definition:
+def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definition:
     """The GeoGebra definition of ``step`` (``steps``: name -> Step, for the inputs).
 
     Raises
@@ -167,7 +170,7 @@ def _branch(first: str, second: str, test: str) -> Definition:
     return Definition("point", "If", (test.replace("_P_", first), first, second))
 
 
-def _class_definition(step: Any, steps: dict[str, Any], ins: tuple[str, ...]
+def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]
                       ) -> Definition | None:
     """The operations of a geometry class (issue 24) and the intersections, branch by
     branch as the kernel takes them (``If`` between GeoGebra's two intersection points)."""

@@ -14,10 +14,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import quoteattr
 
 import sympy as sp
+
+if TYPE_CHECKING:
+    from ..construction.program import Claim, Program
+    from ..construction.protocol import Step
 
 __all__ = ["claim_statements", "live", "param_label", "sliders", "symbolic_values"]
 
@@ -33,12 +37,12 @@ def _a(**attrs: Any) -> str:
     return " ".join(f"{k}={quoteattr(str(v))}" for k, v in attrs.items())
 
 
-def _text(value: sp.Expr, program: Any) -> str:
+def _text(value: sp.Expr, program: Program) -> str:
     names = {p.symbol: sp.Symbol(param_label(p.name)) for p in program.params}
     return "(" + sp.sstr(sp.sympify(value).xreplace(names)).replace("**", "^") + ")"
 
 
-def sliders(program: Any, values: Mapping[str, Any]) -> list[str]:
+def sliders(program: Program, values: Mapping[str, Any]) -> list[str]:
     """``<element type="numeric">`` sliders, one per parameter, at its value."""
     out = []
     for i, p in enumerate(program.params):
@@ -57,7 +61,7 @@ def sliders(program: Any, values: Mapping[str, Any]) -> list[str]:
     return out
 
 
-def symbolic_values(program: Any) -> dict[str, tuple[str, ...]]:
+def symbolic_values(program: Program) -> dict[str, tuple[str, ...]]:
     """Step name -> its values written in the sliders (the steps whose values use them)."""
     out = {}
     for s in program.steps:
@@ -66,7 +70,7 @@ def symbolic_values(program: Any) -> dict[str, tuple[str, ...]]:
     return out
 
 
-def live(d: Any, step: Any, vals: tuple[str, ...]) -> Any:
+def live(d: Any, step: Step, vals: tuple[str, ...]) -> Any:
     """The step's GeoGebra definition ``d`` with its values written in the sliders."""
     from dataclasses import replace
 
@@ -84,7 +88,7 @@ def live(d: Any, step: Any, vals: tuple[str, ...]) -> Any:
     return d
 
 
-def _claim(c: Any) -> str | None:
+def _claim(c: Claim) -> str | None:
     found = [getattr(t, "name", None) for t in c.terms]
     names = [n for n in found if n is not None]
     if len(names) < len(found) and c.kind not in ("equal",):
@@ -106,7 +110,7 @@ def _claim(c: Any) -> str | None:
     return None
 
 
-def claim_statements(program: Any) -> list[str]:
+def claim_statements(program: Program) -> list[str]:
     """``Prove`` and ``ProveDetails`` of each claim GeoGebra's prover states, in order."""
     out = []
     for i, c in enumerate(program.claims, 1):

@@ -53,6 +53,10 @@ from ._ggb_defs import _SIDE, SLIDERS, definition, ggb_label
 
 if TYPE_CHECKING:
     from ..construction import Construction
+    from ..construction.program import Program
+    from ..construction.protocol import Step
+    from ..grasp import Grasp
+    from ..scene.picture import Scene
 
 __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 
@@ -78,7 +82,7 @@ def _slider_range(param: str, value: float) -> tuple[float, float]:
     return low, float(max(3.0 if param.startswith("mu") else 4.0, math.ceil(2 * value)))
 
 
-def _sliders(grasp: Any) -> list[str]:
+def _sliders(grasp: Grasp) -> list[str]:
     """The sliders: shown in the Algebra view only (not over the drawing); φ_1, φ_2 are
     angle sliders, shown in degrees (GeoGebra keeps an angle's value in radians)."""
     out = []
@@ -101,7 +105,7 @@ def _sliders(grasp: Any) -> list[str]:
     return out
 
 
-def _style(step: Any, offset: tuple[int, int] | None = None) -> list[str]:
+def _style(step: Step, offset: tuple[int, int] | None = None) -> list[str]:
     kind = step.kind
     small = step.role == "break_point"  # roles as data, never names
     n = step.n[0] if step.n else 1
@@ -146,7 +150,7 @@ def _font_px(box: tuple[float, float, float, float], scale: float) -> int:
     return max(8, round(labelling.FONT_PT * scale * (box[1] - box[0]) / labelling.FRAME_PT))
 
 
-def _label_offsets(scene: Any, frame: tuple[float, float, float]) -> dict[str, tuple[int, int]]:
+def _label_offsets(scene: Scene, frame: tuple[float, float, float]) -> dict[str, tuple[int, int]]:
     """``labelOffset`` (pixels, y down) of each labelled point: its label where the one
     placement (:mod:`graspcompass.labelling`, the scene's labels) puts it.
 
@@ -173,7 +177,7 @@ def _label_offsets(scene: Any, frame: tuple[float, float, float]) -> dict[str, t
     return out
 
 
-def _view(construction: Construction, scene: Any) -> list[str]:
+def _view(construction: Construction, scene: Scene) -> list[str]:
     # the one view box of every picture (layout.view_box, objects chosen by role)
     x0, y0, scale = _frame(scene.box)
     return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
@@ -195,7 +199,7 @@ def _view(construction: Construction, scene: Any) -> list[str]:
             "</euclidianView>"]
 
 
-def ggb_xml(construction: Construction, title: str | None = None, program: Any = None,
+def ggb_xml(construction: Construction, title: str | None = None, program: Program | None = None,
             values: Any = None) -> str:
     """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
 
@@ -281,7 +285,7 @@ _FAINT = [f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>",
           f"<lineStyle {_a(thickness=1, type=10)}/>"]
 
 
-def _transfer(s: Any, steps: dict[str, Any]) -> list[str] | None:
+def _transfer(s: Step, steps: dict[str, Any]) -> list[str] | None:
     """V_n = (−O_M X_n, −O Y_n) (eq. (30)/(33)) built as the compass does it: O_M X_n
     carried to O (``Translate`` by O_M → O) and reversed (``Mirror`` in O), Y_n mirrored in
     O, each on its compass circle about O, and V_n where the perpendiculars to the axes
@@ -340,7 +344,7 @@ def _has_symbols(v: Any) -> bool:
     return bool(getattr(v, "free_symbols", ()))
 
 
-def to_ggb(construction: Construction, title: str | None = None, program: Any = None,
+def to_ggb(construction: Construction, title: str | None = None, program: Program | None = None,
            values: Any = None) -> bytes:
     """The ``.ggb`` archive (zip bytes) of ``construction``.
 
@@ -359,8 +363,8 @@ def to_ggb(construction: Construction, title: str | None = None, program: Any = 
     return buf.getvalue()
 
 
-def write_ggb(construction: Construction, path: Any, title: str | None = None, program: Any = None,
-              values: Any = None) -> Path:
+def write_ggb(construction: Construction, path: Any, title: str | None = None,
+              program: Program | None = None, values: Any = None) -> Path:
     """Write :func:`to_ggb` to ``path``; returns the path.
 
     Raises

@@ -19,6 +19,8 @@ from ..scene.labelling import FONT_PT, FRAME_PT
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from ..construction import Construction
 
 __all__ = ["to_svg", "write_svg"]
@@ -250,7 +252,7 @@ def to_svg(construction: Construction, title: str | None = None,
     return "\n".join(out) + "\n"
 
 
-def write_svg(construction: Construction, path: Any, title: str | None = None) -> Any:
+def write_svg(construction: Construction, path: Any, title: str | None = None) -> Path:
     """Write :func:`to_svg` to ``path`` (UTF-8); returns the path.
 
     Raises

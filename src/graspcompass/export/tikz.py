@@ -110,7 +110,7 @@ _LEGEND = (
 )
 
 
-def _title(scene: Scene, construction: Any) -> str:
+def _title(scene: Scene, construction: Construction) -> str:
     """The scene's title, or for a grasp without one its parameters (a grasp of one's own)."""
     if scene.title:
         return scene.title

@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any, overload
 
 import sympy as sp
 
@@ -357,6 +358,12 @@ class Grasp:
         return _forces._closed_form_doubles(self)
 
     # -- k_n and k_grasp --------------------------------------------------------
+    @overload
+    def k(self, theta: int | str | Fraction) -> tuple[sp.Expr, ...]: ...
+    @overload
+    def k(self, theta: float | np.ndarray | list[float] | tuple[float, ...]) -> np.ndarray: ...
+    @overload
+    def k(self, theta: sp.Expr) -> tuple[sp.Expr, ...]: ...
     def k(self, theta: Any) -> Any:
         """The four lower limits ``k_n(θ) = V_n · e(θ)``, eqs. (18)-(21), (27), (32).
 
@@ -375,6 +382,15 @@ class Grasp:
         s, c = sp.sin(t), sp.cos(t)
         return tuple(canon(S * s - C * c) for S, C in zip(self.S, self.C))
 
+    @overload
+    def k_grasp(self, theta: int | str | Fraction) -> sp.Expr: ...
+    @overload
+    def k_grasp(self, theta: float) -> float: ...
+    @overload
+    def k_grasp(self, theta: np.ndarray | list[float] | tuple[float, ...]
+                ) -> np.ndarray | float: ...
+    @overload
+    def k_grasp(self, theta: sp.Expr) -> sp.Expr: ...
     def k_grasp(self, theta: Any) -> Any:
         """Least internal-force parameter ``max(k1, k2, k3, k4, 0)``, eq. (25).
 
@@ -397,6 +413,15 @@ class Grasp:
         """
         return _forces._k_grasp(self, theta)
 
+    @overload
+    def internal_force(self, theta: int | str | Fraction, external_force: Any = 1) -> sp.Expr: ...
+    @overload
+    def internal_force(self, theta: float, external_force: Any = 1) -> float: ...
+    @overload
+    def internal_force(self, theta: np.ndarray | list[float] | tuple[float, ...],
+                       external_force: Any = 1) -> np.ndarray | float: ...
+    @overload
+    def internal_force(self, theta: sp.Expr, external_force: Any = 1) -> sp.Expr: ...
     def internal_force(self, theta: Any, external_force: Any = 1) -> Any:
         """Magnitude of the least internal force ``F_int = k/(x1 + x2) · F_e``, eq. (17).
 

@@ -181,7 +181,8 @@ def _sympy(value: sp.Expr | float) -> sp.Expr:
 def _one_angle(theta: Any) -> sp.Expr:
     t = angle_values(theta)
     if is_a(t, "ndarray"):
-        raise WrongTypeError(f"theta: expected one angle, got an array of shape {t.shape}")
+        shape = getattr(t, "shape", None)
+        raise WrongTypeError(f"theta: expected one angle, got an array of shape {shape}")
     return _sympy(t)
 
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
@@ -32,6 +32,9 @@ from .contact import Contact, read_contact
 from .effort import read_effort
 from .errors import InvalidContactError, UnboundedEffortError
 from .polygon import Candidate, InternalForcePolygon, covers, exact_sgn
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["NContactGrasp"]
 
@@ -102,7 +105,7 @@ class NContactGrasp:
         self._dets: Any = None
 
     @classmethod
-    def from_grasp(cls, grasp: Any, effort: Any = "paper") -> NContactGrasp:
+    def from_grasp(cls, grasp: Grasp, effort: Any = "paper") -> NContactGrasp:
         """The n = 2 case: a :class:`~graspcompass.grasp.Grasp` (paper's effort by default).
 
         ``n1 = (-sin φ1, -cos φ1)`` at ``P1 = (x1, y)`` and ``n2 = (sin φ2, -cos φ2)`` at

@@ -25,7 +25,7 @@ import random
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
@@ -38,6 +38,9 @@ from .certify_algebra import classify, ring
 from .certify_facts import GIVEN_OPS, Fact, facts_for
 from .certify_paper import PaperModel, model_at, paper_model
 from .prove import ProofResult, Status, prove_identity
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["StepCertificate", "certify", "certify_records", "step_facts"]
 
@@ -56,7 +59,7 @@ class StepCertificate:
 
 
 def step_facts(step: Step, env: dict[str, Any], model: PaperModel | None = None,
-               grasp: Any = None) -> list[tuple[str, Any]]:
+               grasp: Grasp | None = None) -> list[tuple[str, Any]]:
     """``(text, expression that must vanish)`` for the facts of ``step``.
 
     ``model`` defaults to the paper's objects for ``grasp``; non-equality facts

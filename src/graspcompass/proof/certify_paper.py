@@ -18,13 +18,16 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
 from .. import symbols as S
 from ..geometry.trig import sincos
 from . import paper
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["SIDES", "PaperModel", "model_at", "paper_model"]
 
@@ -186,8 +189,10 @@ def _mu_form(xi: sp.Expr, mu: sp.Expr) -> bool:
     return isinstance(xi, sp.atan) and xi.args[0] == mu
 
 
-def paper_model(grasp: Any) -> PaperModel:
+def paper_model(grasp: Grasp | None) -> PaperModel:
     """The paper's objects for ``grasp`` (a :class:`~graspcompass.grasp.Grasp`)."""
+    if grasp is None:
+        raise ValueError("the paper's objects need a grasp; this construction has none")
     p = grasp.params
     values = {getattr(S, k): v for k, v in p.items()}
     mu_form = (_mu_form(p["xi1"], p["mu1"]), _mu_form(p["xi2"], p["mu2"]))

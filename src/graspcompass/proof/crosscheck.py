@@ -89,7 +89,7 @@ def run_crosscheck(grasps: Sequence[Grasp] | int = 20, thetas: int = 36, seed: i
         for g in gs:
             x1, x2, y, phi1, phi2, mu1, mu2 = (
                 float(g.params[k]) for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2"))
-            closed = g.k_grasp(grid)
+            closed = np.asarray(g.k_grasp(grid))
             for t, kc in zip(grid, closed):
                 d = abs(k_linprog(x1, x2, y, phi1, phi2, mu1, mu2, float(t)) - kc)
                 if d > worst:

@@ -26,7 +26,7 @@ from __future__ import annotations
 import itertools
 import random
 from collections.abc import Callable, Iterable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
@@ -51,6 +51,9 @@ from .certify_algebra import _full_text, _positive, _primitive, _text, classify,
 from .model import violations
 from .program_roots import algebraic_zero, by_roots_or_hypotheses
 from .prove import CONDITION_1, ProofResult, Status, prove_identity, prove_sign
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Step
 
 __all__ = [
     "DOMAIN_WORDS",
@@ -108,7 +111,7 @@ def _classified(dens: Iterable[Any], cond1: bool) -> tuple[list[str], list[str]]
     return list(implied), list(extra)
 
 
-def step_conditions(step: Any, cond1: bool, exclude: Iterable[sp.Expr] = (),
+def step_conditions(step: Step, cond1: bool, exclude: Iterable[sp.Expr] = (),
                     tie: Mapping[sp.Symbol, sp.Expr] | None = None
                     ) -> tuple[list[str], list[str]]:
     """The kernel's ``≠ 0`` conditions of a step: (implied with reasons, extra).

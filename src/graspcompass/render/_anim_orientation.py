@@ -7,7 +7,7 @@ Private to :mod:`graspcompass.render.anim_physics`, which re-exports
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -18,13 +18,17 @@ from matplotlib.transforms import Affine2D
 from ._anim_turning import _Turning, theta_of_orientation
 from .theme import DEFAULT_THEME, Theme
 
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
+
 __all__ = ["OrientationAnimation", "animate_orientation"]
 
 
 class OrientationAnimation(_Turning):
     """The object turning under gravity (Fig. 1); see :func:`animate_orientation`."""
 
-    def __init__(self, construction: Any, weight: float = 1.0, frames: int = 120,
+    def __init__(self, construction: Grasp | Construction, weight: float = 1.0, frames: int = 120,
                  fps: float = 20, theme: Theme = DEFAULT_THEME,
                  figsize: tuple[float, float] = (9.6, 5.0), dpi: float = 80) -> None:
         super().__init__(construction, frames, fps, theme, figsize, dpi)
@@ -114,7 +118,8 @@ class OrientationAnimation(_Turning):
         a["status"].set_text(self.status_at(f))
 
 
-def animate_orientation(grasp_or_construction: Any, weight: float = 1.0, frames: int = 120,
+def animate_orientation(grasp_or_construction: Grasp | Construction, weight: float = 1.0,
+                        frames: int = 120,
                         fps: float = 20, theme: Theme = DEFAULT_THEME,
                         figsize: tuple[float, float] = (9.6, 5.0),
                         dpi: float = 80) -> OrientationAnimation:

@@ -9,7 +9,7 @@ re-exports them.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -20,7 +20,11 @@ from ..scene.layout import numeric_objects
 from .animate import FrameAnimation
 from .figure import draw_construction
 from .theme import Theme
-from .timeline import Timeline
+from .timeline import AnimationError, Timeline
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
 
 __all__ = ["binding", "theta_of_orientation"]
 
@@ -54,12 +58,17 @@ class _Turning(FrameAnimation):
 
     _blit_live = True
 
-    def __init__(self, construction: Any, frames: int, fps: float, theme: Theme,
+    def __init__(self, construction: Grasp | Construction, frames: int, fps: float, theme: Theme,
                  figsize: tuple[float, float], dpi: float) -> None:
-        if not hasattr(construction, "steps"):
+        from ..construction.protocol import Construction
+
+        if not isinstance(construction, Construction):
             from ..construction import internal_force_diagram
 
             construction = internal_force_diagram(construction)
+        if construction.grasp is None:
+            raise AnimationError("this animation needs the construction of a grasp (its "
+                                 "k_grasp(θ)); a file replayed without one has none")
         self.construction, self.grasp, self.theme = construction, construction.grasp, theme
         n = Timeline.uniform(frames).frame_count
         self.angle = 2 * np.pi * np.arange(n) / n

@@ -31,9 +31,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["GRASP_KEYS", "POINT_NAMES", "Scene", "ThetaGrid", "construction_scene",
            "float_scene", "grasp_scene"]
@@ -159,7 +162,7 @@ def float_scene(p: dict[str, float], grid: ThetaGrid) -> Scene | None:
     return _assemble(dict(x1=x1, x2=x2, y=y), S, C, sc, grid)
 
 
-def grasp_scene(grasp: Any, grid: ThetaGrid) -> Scene:
+def grasp_scene(grasp: Grasp, grid: ThetaGrid) -> Scene:
     """The scene of a valid float :class:`~graspcompass.Grasp`, correctly rounded.
 
     S_n, C_n and the sides come from :mod:`graspcompass.grasp._floatpath` (evaluated at

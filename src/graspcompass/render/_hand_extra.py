@@ -17,7 +17,7 @@ Private to :mod:`graspcompass.render.handdrawing`.
 from __future__ import annotations
 
 import math
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -31,13 +31,17 @@ from ._hand_text import A4_MM
 from .figure import draw_construction
 from .theme import Theme
 
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
+
 #: Cone sides on the page: at least and at most this long, mm.
 SIDE_MM = (25.0, 40.0)
 #: Points closer than this fraction of the drawing's width crowd: page 2 shows them zoomed.
 CROWD = 0.06
 
 
-def side_length(grasp: Any, box: tuple[float, float, float, float], scale: float) -> float:
+def side_length(grasp: Grasp, box: tuple[float, float, float, float], scale: float) -> float:
     """Length of the drawn cone sides, units: 0.9 |P1 P2|, kept within :data:`SIDE_MM`."""
     d = math.dist((float(grasp.P1.x), float(grasp.P1.y)), (float(grasp.P2.x), float(grasp.P2.y)))
     return min(max(0.9 * d, SIDE_MM[0] / scale), SIDE_MM[1] / scale)
@@ -48,7 +52,7 @@ def _deg(x: float) -> str:
     return (t[:-2] if t.endswith(".0") else t).replace("-", "−") + "°"
 
 
-def cone_angles(ax: Axes, grasp: Any, length: float, font: float = 7.0) -> list[Artist]:
+def cone_angles(ax: Axes, grasp: Grasp, length: float, font: float = 7.0) -> list[Artist]:
     """At each contact the negative y-axis direction (dotted, the reference of §2.2.1) and,
     at the end of each cone side, its angle φ_i ± ξ_i from it (CW at P1, CCW at P2)."""
     arts: list[Artist] = []
@@ -144,11 +148,13 @@ def clear_labels(ax: Axes, labels: list[Annotation], lines: list[Line2D],
         boxes.append(t.get_window_extent(renderer))
 
 
-def exercise(construction: Any, num: dict[str, Any]) -> dict[str, Any] | None:
+def exercise(construction: Construction, num: dict[str, Any]) -> dict[str, Any] | None:
     """The read-off exercise: θ (a multiple of 15° near the worst orientation, where k > 0),
     what to read (k_grasp, or k_n of the one circle drawn), its value and F_int / F_e."""
     names = set(construction.names)
     grasp = construction.grasp
+    if grasp is None:  # a construction without a grasp has no k_grasp to read off
+        return None
     D = float(grasp.x1 + grasp.x2)
     if "envelope" in names:
         V = [num[f"V{n}"] for n in (1, 2, 3, 4)]

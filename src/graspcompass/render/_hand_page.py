@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
@@ -25,8 +25,12 @@ from ._hand_steps import _GREEK, _m, _n_of
 from ._hand_text import _MARGIN, _MM, _TOP, A4_MM, _width_mm
 from .theme import Theme
 
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
 
-def _params_lines(grasp: Any, width_mm: float = A4_MM[0] - 2 * _MARGIN) -> list[str]:
+
+def _params_lines(grasp: Grasp, width_mm: float = A4_MM[0] - 2 * _MARGIN) -> list[str]:
     """The grasp's parameters, exact values with their decimals, on one or two lines."""
     parts = []
     for k, v in grasp.params.items():
@@ -47,7 +51,7 @@ def _params_lines(grasp: Any, width_mm: float = A4_MM[0] - 2 * _MARGIN) -> list[
     return [",  ".join(parts[:3]), ",  ".join(parts[3:])]
 
 
-def _sub_construction(construction: Any, selected: Sequence[str],
+def _sub_construction(construction: Construction, selected: Sequence[str],
                       given: Sequence[str]) -> Any:
     """The selected steps, the given ones first (each keeps its protocol index)."""
     from ..construction import Construction
@@ -111,7 +115,7 @@ def _finish_axes(ax: Axes, box: tuple[float, float, float, float]) -> None:
                     ha="left", va="top", style="italic", fontsize=9)
 
 
-def _cones(ax: Axes, grasp: Any, theme: Theme, length: float) -> list[Artist]:
+def _cones(ax: Axes, grasp: Grasp, theme: Theme, length: float) -> list[Artist]:
     """Both friction cones (Fig. 2) as shaded wedges with their two sides drawn, so that a
     ruler can be laid along each side (§3.3 step (1))."""
     arts: list[Artist] = []
@@ -170,7 +174,8 @@ def _unit_bar(ax: Axes, box: tuple[float, float, float, float], scale: float) ->
     return bar
 
 
-def _transfer_marks(ax: Axes, construction: Any, num: dict[str, Any], theme: Theme) -> None:
+def _transfer_marks(ax: Axes, construction: Construction, num: dict[str, Any],
+                    theme: Theme) -> None:
     """On the solution: −O_M X_n and −O Y_n laid off from O, and the rectangle to V_n."""
     for s in construction.steps:
         n = _n_of(s.name)
@@ -195,12 +200,12 @@ def _solution_rows(sub: Any, num: dict[str, Any], scale: float) -> list[tuple[st
         rows.append((f"V{n}", (
             f"$\\overline{{O_MX_{n}}}$ = {omx:+.3f} ({omx * scale:+.1f} mm),  "
             f"$\\overline{{OY_{n}}}$ = {oy:+.3f} ({oy * scale:+.1f} mm),  so  "
-            f"$V_{n}$ = ({vx:+.3f}, {vy:+.3f}), i.e. ({vx * scale:+.1f} mm, {vy * scale:+.1f} mm) "
-            "from $O$.")))
+            f"$V_{n}$ = ({vx:+.3f}, {vy:+.3f}), i.e. ({vx * scale:+.1f} mm, "
+            f"{vy * scale:+.1f} mm) from $O$.")))
     return rows
 
 
-def _intro(c: Any, given: Sequence[str]) -> str:
+def _intro(c: Construction, given: Sequence[str]) -> str:
     extra = [g for g in given if g not in ("O", "x-axis", "y-axis", "P1", "P2")]
     more = ""
     if extra:

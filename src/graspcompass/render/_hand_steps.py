@@ -12,9 +12,12 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..scene.layout import numeric_objects
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction, Step
 
 #: Values of ``steps``: every step, or the steps of one V_n.
 STEP_CHOICES = ("all", "V1", "V2", "V3", "V4")
@@ -56,7 +59,7 @@ def _n_of(name: str) -> int | None:
     return int(m.group(1)) if m else None
 
 
-def selected_names(construction: Any, steps: str = "all") -> tuple[str, ...]:
+def selected_names(construction: Construction, steps: str = "all") -> tuple[str, ...]:
     """Names of the protocol steps of a worksheet for ``steps``, in protocol order.
 
     ``"all"`` is every step; ``"Vn"`` the steps that draw V_n (§3.3): the axes,
@@ -145,7 +148,7 @@ def _side_parts(n: int) -> tuple[int, str, str]:
     return i, ("P2x" if i == 1 else "P1x"), _WORD[n]
 
 
-def _text(step: Any, num: dict[str, Any]) -> str:
+def _text(step: Step, num: dict[str, Any]) -> str:
     """One step of the protocol in words, for a person with ruler and compass (§3.3)."""
     name, n = step.name, _n_of(step.name)
     if name in ("P1x", "P2x"):
@@ -191,7 +194,7 @@ def _ref_bits(ref: str) -> list[str]:
     return re.findall(r"Fig\. \d\(\w\)|eq\. \S+", ref)
 
 
-def _brief_block(c: Any, n: int, todo: list[Any], first: int) -> Instruction:
+def _brief_block(c: Construction, n: int, todo: list[Any], first: int) -> Instruction:
     """The steps of V_n (n after the first) as one instruction, each step numbered."""
     i, foot, word = _side_parts(n)
     P, X, Y, V, F = (_m(f"P{i}"), _m(f"X{n}"), _m(f"Y{n}"), _m(f"V{n}"), _m(foot))
@@ -211,7 +214,7 @@ def _brief_block(c: Any, n: int, todo: list[Any], first: int) -> Instruction:
     return Instruction(tuple(s.index for s in todo), tuple(s.name for s in todo), text)
 
 
-def instructions_for(construction: Any, names: Sequence[str],
+def instructions_for(construction: Construction, names: Sequence[str],
                      given: Sequence[str] = (),
                      num: dict[str, Any] | None = None) -> list[Instruction]:
     """The numbered instructions for the steps ``names`` not in ``given``, in protocol order.

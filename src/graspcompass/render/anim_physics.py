@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from itertools import pairwise
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -32,6 +32,10 @@ from ._anim_turning import _Turning, binding, theta_of_orientation
 from .labels import place_labels
 from .theme import DEFAULT_THEME, Theme
 from .timeline import AnimationError, Segment, Timeline
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
 
 __all__ = ["SLIP", "OrientationAnimation", "SweepAnimation", "animate_orientation",
            "animate_sweep", "binding", "theta_of_orientation"]
@@ -49,7 +53,7 @@ SLIP = {
 class SweepAnimation(_Turning):
     """The external force sweeping round (Fig. 3); see :func:`animate_sweep`."""
 
-    def __init__(self, construction: Any, frames: int = 120, fps: float = 20,
+    def __init__(self, construction: Grasp | Construction, frames: int = 120, fps: float = 20,
                  theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
                  dpi: float = 80, samples: int = 720, circle: int | None = None) -> None:
         if circle is not None and circle not in (1, 2, 3, 4):
@@ -210,7 +214,7 @@ class SweepAnimation(_Turning):
         a["slip"].set_text("\n".join(lines[-2:]))
 
 
-def animate_sweep(grasp_or_construction: Any, frames: int = 120, fps: float = 20,
+def animate_sweep(grasp_or_construction: Grasp | Construction, frames: int = 120, fps: float = 20,
                   theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
                   dpi: float = 80, circle: int | None = None) -> SweepAnimation:
     """Animate the external force direction θ going once round (Fig. 3, eqs. (25)-(32)).

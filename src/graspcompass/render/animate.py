@@ -33,7 +33,7 @@ Step 13 of 0–46 · perpendicular
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -50,6 +50,9 @@ from ._anim_player import FrameAnimation
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
 from .timeline import Timeline, check_fps, reading_frames, save_frames
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction, Step
 
 __all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_construction",
            "dim_alpha", "save_frames"]
@@ -75,7 +78,7 @@ class ConstructionAnimation(FrameAnimation):
     _hold_wrapped: str
     _fade_region: Any  # a numpy index of the rows (or columns) that fade
 
-    def __init__(self, construction: Any, fps: float | None = None,
+    def __init__(self, construction: Construction, fps: float | None = None,
                  frames_per_step: int | None = None, pause_frames: int | None = None,
                  hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
                  figsize: tuple[float, float] | None = None, dpi: float | None = None,
@@ -158,7 +161,7 @@ class ConstructionAnimation(FrameAnimation):
         self._dynamic += [*self._aids, self._caption, self._bar]
 
     @staticmethod
-    def _role(a: Artist, s: Any) -> str:
+    def _role(a: Artist, s: Step) -> str:
         if isinstance(a, Annotation) and a.arrow_patch is not None:
             return "arrow"
         if isinstance(a, Text):
@@ -179,7 +182,7 @@ class ConstructionAnimation(FrameAnimation):
                 for p in parts]
 
     # -- captions -----------------------------------------------------------------------------
-    def _caption_text(self, s: Any) -> str:
+    def _caption_text(self, s: Step | None) -> str:
         """Head and body of a step's caption (``None``: the final hold), not yet wrapped.
 
         The step numbers are the protocol's (``graspcompass steps``): 0 to len − 1.
@@ -301,7 +304,7 @@ class ConstructionAnimation(FrameAnimation):
         made = 1.0 if hold else (st.step + (st.progress if st.kind == "draw" else 1.0))
         self._bar.set_width(made if hold else made / len(steps))
 
-    def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Any, kind: str,
+    def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Step, kind: str,
                      p: float, raw: float) -> None:
         if role == "cone":  # after the stroke of its second side
             a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
@@ -348,7 +351,7 @@ class ConstructionAnimation(FrameAnimation):
         self._arm.set(data=([cx, xs[-1]], [cy, ys[-1]]), visible=not done)
         a.set_visible(done)
 
-    def _draw_aid(self, step: Any, p: float) -> None:
+    def _draw_aid(self, step: Step, p: float) -> None:
         """Dashed helper lines of a point: the dropped perpendicular, the bisected
         segment, the two coordinates of V_n (§3.3 step (3))."""
         v, num = self._num[step.name], self._num
@@ -363,7 +366,7 @@ class ConstructionAnimation(FrameAnimation):
         self._aid.set(data=(xs, ys), visible=True)
 
 
-def animate_construction(construction: Any, fps: float | None = None,
+def animate_construction(construction: Construction, fps: float | None = None,
                          frames_per_step: int | None = None, pause_frames: int | None = None,
                          hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
                          figsize: tuple[float, float] | None = None, dpi: float | None = None,

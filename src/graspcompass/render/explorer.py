@@ -39,7 +39,7 @@ import functools
 import io
 import math
 from collections.abc import Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -54,6 +54,9 @@ from ._explorer_artists import _Artists
 from ._explorer_events import PARAMS, _Events, _interactive, _Slider, notebook_box
 from ._explorer_scene import GRASP_KEYS, Scene, ThetaGrid, float_scene, grasp_scene
 from ._pathtext import GlyphCache, PathText
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
 
 __all__ = ["PARAMS", "Explorer", "explore", "explore_notebook"]
 
@@ -285,7 +288,7 @@ class Explorer(_Events, _Artists):
         return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], mu1=p["mu1"], mu2=p["mu2"])
 
     @property
-    def construction(self) -> Any:
+    def construction(self) -> Construction | None:
         """The exact-kernel construction of the current grasp, built on first access.
 
         :func:`graspcompass.internal_force_diagram` of :meth:`grasp`; None while

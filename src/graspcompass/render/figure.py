@@ -12,7 +12,7 @@ Only :class:`matplotlib.figure.Figure` is used, never pyplot.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -27,6 +27,10 @@ from ..scene.picture import INSET_PT, Scene, build_scene, scene_of
 from .output import FORMATS, save_figure
 from .polar import draw_k_polar, figure_k_plot
 from .theme import DEFAULT_THEME, Theme
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction, Step
+    from ..grasp import Grasp
 
 __all__ = [
     "EXTRA_KEYS",
@@ -44,18 +48,18 @@ EXTRA_KEYS = ("object", "cone1", "cone2", "computer plot")
 _LABEL_ORDER = "VPOXY"
 
 
-def _n(step: Any) -> int:
+def _n(step: Step) -> int:
     """The index that goes with a step's role (``role circle 3`` -> 3); 1 without one."""
     n = getattr(step, "n", ())
     return int(n[0]) if n else 1
 
 
-def _by_role(construction: Any, role: str) -> dict[int, str]:
+def _by_role(construction: Construction, role: str) -> dict[int, str]:
     """n -> name of the steps with ``role`` (the contacts, the cone sides), as data."""
     return {_n(s): s.name for s in construction.steps if getattr(s, "role", "") == role}
 
 
-def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
+def _draw_givens(ax: Axes, construction: Construction, scene: Scene, theme: Theme,
                  out: dict[str, list[Artist]]) -> None:
     """The object outline and the friction cones, shaded towards the object (Fig. 2).
 
@@ -63,11 +67,12 @@ def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
     i + 2 found by their roles), drawn once both sides are made.
     """
     grasp = construction.grasp
-    ext = shape_extent(getattr(grasp, "shape", None))
+    shape = getattr(grasp, "shape", None)
+    ext = shape_extent(shape)
     style: dict[str, Any] = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
                                  lw=theme.line_width, zorder=0.5)
-    if ext is not None:
-        kind = grasp.shape[0]
+    if ext is not None and shape:  # (ext is not None only for a shape)
+        kind = shape[0]
         patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
                  Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
         out["object"] = [ax.add_patch(patch)]
@@ -80,7 +85,7 @@ def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
         out[f"cone{i}"] = [ax.add_patch(poly)]
 
 
-def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme,
+def _draw_line(ax: Axes, name: str, step: Step, line: Any, box: Any, theme: Theme,
                hl: dict[str, Any]) -> list[Artist]:
     seg = clip_line(line[0], line[1], box)
     if seg is None:
@@ -105,7 +110,7 @@ def _draw_line(ax: Axes, name: str, step: Any, line: Any, box: Any, theme: Theme
     return arts
 
 
-def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float,
+def _draw_length(ax: Axes, step: Step, num: dict[str, Any], box: Any, span: float,
                  theme: Theme, hl: dict[str, Any]) -> list[Artist]:
     """A signed length as a thin double arrow along its axis, offset per n (§3.3)."""
     a, b, axis = (num[k] for k in step.inputs[:3])
@@ -129,7 +134,7 @@ def _draw_length(ax: Axes, step: Any, num: dict[str, Any], box: Any, span: float
     return [arrow]
 
 
-def draw_construction(construction: Any, step: int | None = None, ax: Axes | None = None,
+def draw_construction(construction: Construction, step: int | None = None, ax: Axes | None = None,
                       theme: Theme = DEFAULT_THEME, labels: bool = True,
                       show_computer_plot: bool = False,
                       highlight_last: bool = False,
@@ -272,7 +277,7 @@ def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artis
             out.setdefault(n, []).append(text)
 
 
-def figure_diagram(construction: Any, step: int | None = None, overlay: bool = True,
+def figure_diagram(construction: Construction, step: int | None = None, overlay: bool = True,
                    title: str | None = None, figsize: tuple[float, float] = (7.0, 7.0),
                    theme: Theme = DEFAULT_THEME, labels: bool = True,
                    inset: bool = True) -> Figure:
@@ -345,7 +350,7 @@ def figure_diagram(construction: Any, step: int | None = None, overlay: bool = T
     return fig
 
 
-def _params(grasp: Any) -> str:
+def _params(grasp: Grasp | None) -> str:
     """A title from a grasp's parameters: ``x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, ...``."""
     if grasp is None:
         return ""
@@ -359,7 +364,7 @@ def _params(grasp: Any) -> str:
         return ""
 
 
-def _legend_extra(construction: Any, step: int | None, theme: Theme
+def _legend_extra(construction: Construction, step: int | None, theme: Theme
                   ) -> tuple[list[Artist], list[str]]:
     """Legend proxies of what has no labelled artist: the object, the dashed
     perpendiculars, the length arrows and the break points (those drawn by ``step``)."""

@@ -11,18 +11,21 @@ directions of Q are drawn as arrows from O.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..scene.palette import PALETTE
+
+if TYPE_CHECKING:
+    from ..ncontact.model import NContactGrasp
 
 __all__ = ["draw_ncontact"]
 
 _CIRCLES = ["circle1", "circle2", "circle3", "circle4"]
 
 
-def draw_ncontact(grasp: Any, ax: Any = None, n_theta: int = 1441,
+def draw_ncontact(grasp: NContactGrasp, ax: Any = None, n_theta: int = 1441,
                   title: str | None = None) -> Any:
     """Draw the n-contact diagram of ``grasp`` (a :class:`~graspcompass.ncontact.NContactGrasp`).
 
@@ -87,9 +90,9 @@ def draw_ncontact(grasp: Any, ax: Any = None, n_theta: int = 1441,
     spread = max([0.0] + [math.hypot(float(c.p[0]) - ox, float(c.p[1]) - oy)
                           for c in grasp.contacts])
     reach = 0.3 * (spread or scale)
-    for i, c in enumerate(grasp.contacts):
-        px, py = (float(v) for v in c.p)
-        for d in c.edges():
+    for i, contact in enumerate(grasp.contacts):
+        px, py = (float(v) for v in contact.p)
+        for d in contact.edges():
             dx, dy = float(d[0]), float(d[1])
             n = math.hypot(dx, dy)
             ax.plot([px, px + reach * dx / n], [py, py + reach * dy / n],

@@ -22,10 +22,13 @@ Examples
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.figure import Figure
+
+if TYPE_CHECKING:
+    from ..planning import PlanResult
 
 __all__ = ["draw_plan_heatmap", "draw_plan_outline", "figure_plan"]
 
@@ -33,7 +36,7 @@ _COLOURS = ("#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#
             "#7f7f7f", "#bcbd22", "#17becf")
 
 
-def draw_plan_outline(ax: Any, plan: Any, top: int = 5, cone_length: float | None = None
+def draw_plan_outline(ax: Any, plan: PlanResult, top: int = 5, cone_length: float | None = None
                       ) -> None:
     """Draw the outline, the centre of mass and the ``top`` best pairs with their cones.
 
@@ -82,7 +85,7 @@ def draw_plan_outline(ax: Any, plan: Any, top: int = 5, cone_length: float | Non
     ax.legend(fontsize=6, loc="upper left", framealpha=0.8)
 
 
-def draw_plan_heatmap(ax: Any, plan: Any, cmap: str = "viridis") -> Any:
+def draw_plan_heatmap(ax: Any, plan: PlanResult, cmap: str = "viridis") -> Any:
     """The squeeze of every pair as an N × N heat map over the contacts' indices.
 
     Contacts are numbered counter-clockwise along the outline; the matrix is
@@ -111,7 +114,7 @@ def draw_plan_heatmap(ax: Any, plan: Any, cmap: str = "viridis") -> Any:
     return im
 
 
-def figure_plan(plan: Any, top: int = 5, size: tuple[float, float] = (11.0, 4.8)) -> Figure:
+def figure_plan(plan: PlanResult, top: int = 5, size: tuple[float, float] = (11.0, 4.8)) -> Figure:
     """A figure of a contact plan: the best pairs (left) and the heat map (right).
 
     Parameters

@@ -8,7 +8,7 @@ that drawing them over the construction checks it, as §4.1 does.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 from matplotlib.artist import Artist
@@ -16,6 +16,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from .theme import DEFAULT_THEME, Theme
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
 
 __all__ = ["draw_k_polar", "figure_k_plot", "polar_points"]
 
@@ -25,7 +28,7 @@ def polar_points(theta: np.ndarray, k: np.ndarray) -> np.ndarray:
     return np.column_stack([k * np.sin(theta), -k * np.cos(theta)])
 
 
-def draw_k_polar(grasp: Any, ax: Axes | None = None, samples: int = 2000,
+def draw_k_polar(grasp: Grasp, ax: Axes | None = None, samples: int = 2000,
                  theme: Theme = DEFAULT_THEME, components: bool = False,
                  label: str | None = "computer plot, eq. (25)") -> dict[str, list[Artist]]:
     """Draw the computer plot of Fig. 6(b): the polar curve θ ↦ k_grasp(θ)·e(θ).
@@ -79,7 +82,7 @@ def draw_k_polar(grasp: Any, ax: Axes | None = None, samples: int = 2000,
     return out
 
 
-def figure_k_plot(grasp: Any, samples: int = 2000, theme: Theme = DEFAULT_THEME,
+def figure_k_plot(grasp: Grasp, samples: int = 2000, theme: Theme = DEFAULT_THEME,
                   title: str | None = None, figsize: tuple[float, float] = (8.0, 4.5)) -> Figure:
     """A cartesian plot of k_1..k_4(θ) and k_grasp(θ) for θ in [0, 2π] (degrees).
 

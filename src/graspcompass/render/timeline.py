@@ -21,19 +21,31 @@ from __future__ import annotations
 import bisect
 import math
 import os
-import shutil
-import subprocess
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
-from itertools import chain
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..boundary._output import check_folder, check_target, writing
-from ..boundary.errors import GraspCompassError
+from ..boundary._output import check_target, writing
 from ..progress import Progress
+from . import _anim_files
+from ._anim_files import (
+    AnimationError,
+    FFmpegNotFoundError,
+    UnsupportedFormatError,
+    blend,
+    check_fps,
+    check_output,
+    find_ffmpeg,
+    jshtml,
+    palette_sample,
+    save_frames,
+    write_gif,
+    write_mp4,
+    write_png,
+)
 
 __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",
            "FrameState", "Segment", "Timeline", "UnsupportedFormatError", "blend",
@@ -44,19 +56,7 @@ __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFound
 #: Kinds of segment.
 KINDS = ("draw", "pause", "rest", "hold")
 #: File extensions an animation is written to.
-OUTPUT_FORMATS = (".gif", ".mp4", ".html")
-
-
-class AnimationError(GraspCompassError):
-    """A user error while making or writing an animation (one-line message)."""
-
-
-class UnsupportedFormatError(AnimationError):
-    """The output file's extension is not one an animation can be written to."""
-
-
-class FFmpegNotFoundError(AnimationError):
-    """MP4 output needs the ``ffmpeg`` program, which is not installed."""
+OUTPUT_FORMATS = _anim_files.OUTPUT_FORMATS
 
 
 def smoothstep(t: float) -> float:
@@ -75,17 +75,6 @@ RATES: dict[str, Callable[[float], float]] = {
     "smoothstep": smoothstep,
     "smootherstep": lambda t: (lambda u: u ** 3 * (u * (6 * u - 15) + 10))(min(max(t, 0.0), 1.0)),
 }
-
-
-def check_fps(fps: float) -> float:
-    """``fps`` as a float; :class:`AnimationError` unless it is positive and finite."""
-    try:
-        value = float(fps)
-    except (TypeError, ValueError):
-        value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        raise AnimationError(f"fps must be a positive number, got {fps!r}")
-    return value
 
 
 def reading_frames(text: str, fps: float, least_seconds: float = 0.0,
@@ -247,194 +236,6 @@ class Timeline:
         return self.segment_range(idx[-1]).stop - 1 if idx else self.frames_of_step(step)[-1]
 
 
-def find_ffmpeg() -> str:
-    """The ``ffmpeg`` program, or :class:`FFmpegNotFoundError`.
-
-    rcParams ``animation.ffmpeg_path`` when set to another program than its
-    default ``ffmpeg``; else the one of the ``mp4`` extra (``pip install
-    'graspcompass[mp4]'``: the ``imageio-ffmpeg`` wheel, which carries an ffmpeg
-    build) if installed; else ``ffmpeg`` on the PATH.
-    """
-    import matplotlib as mpl
-
-    chosen = str(mpl.rcParams["animation.ffmpeg_path"])
-    if chosen == "ffmpeg":
-        try:
-            import imageio_ffmpeg
-        except ImportError:
-            pass
-        else:
-            try:
-                return str(imageio_ffmpeg.get_ffmpeg_exe())
-            except RuntimeError:  # the wheel has no binary for this platform
-                pass
-    exe = shutil.which(chosen)
-    if exe is None:
-        raise FFmpegNotFoundError("cannot write MP4: no ffmpeg (pip install "
-                                  "'graspcompass[mp4]', or a system ffmpeg; or write .gif or "
-                                  ".html)")
-    return exe
-
-
-def check_output(path: str | os.PathLike[str]) -> str:
-    """The extension of ``path`` if an animation can be written there (ffmpeg for .mp4).
-
-    >>> check_output("construction.GIF")
-    '.gif'
-    >>> check_output("construction.avi")
-    Traceback (most recent call last):
-    ...
-    graspcompass.render.timeline.UnsupportedFormatError: cannot write an animation to ...
-    """
-    p = Path(path)
-    ext = p.suffix.lower()
-    if ext not in OUTPUT_FORMATS:
-        what = f"extension {p.suffix!r}" if p.suffix else "a path without extension"
-        raise UnsupportedFormatError(
-            f"cannot write an animation to {str(p)!r}: {what} is not supported; use "
-            f"{', '.join(OUTPUT_FORMATS)} (save_frames() writes PNG frames)")
-    if ext == ".mp4":
-        find_ffmpeg()
-    return ext
-
-
-def blend(a: np.ndarray, b: np.ndarray, w: float, rows: slice = slice(None)) -> np.ndarray:
-    """The cross-fade ``(1 − w)·a + w·b`` on ``rows`` (``b`` elsewhere), as uint8."""
-    if w >= 1.0:
-        return b
-    out = b.copy()
-    mixed = a[rows].astype(np.float32) * (1.0 - w) + b[rows].astype(np.float32) * w
-    out[rows] = np.rint(mixed).astype(np.uint8)
-    return out
-
-
-def write_gif(frames: Iterable[np.ndarray], path: str | os.PathLike[str], fps: float,
-              palette_sample: np.ndarray | None = None) -> int:
-    """Write RGB frames as a looping GIF with Pillow; returns the number of GIF frames.
-
-    One 256-colour palette, from ``palette_sample`` (default: the first frame),
-    serves every frame, without dithering, so the file is deterministic.
-    Pillow merges a frame identical to the one before into it (adding the
-    durations), so the GIF may hold fewer frames, playing for the same time.
-    """
-    from PIL import Image
-
-    it = iter(frames)
-    first = next(it)
-    palette = _palette(first if palette_sample is None else palette_sample)
-    images: list[Image.Image] = []
-    distinct, previous, last = 0, b"", None
-    for rgb in chain([first], it):
-        if rgb is last:  # the same frame again (a still): nothing to quantize
-            images.append(images[-1])
-            continue
-        last = rgb
-        im = Image.fromarray(rgb).quantize(palette=palette, dither=Image.Dither.NONE)
-        data = im.tobytes()
-        distinct += data != previous
-        previous = data
-        images.append(im)
-    images[0].save(path, save_all=True, append_images=images[1:], loop=0, optimize=False,
-                   duration=1000.0 / check_fps(fps), disposal=1)
-    return distinct
-
-
-def write_mp4(frames: Iterator[np.ndarray], path: str | os.PathLike[str], fps: float,
-              ffmpeg: str | None = None) -> int:
-    """Pipe RGB frames to ``ffmpeg`` (H.264, yuv420p); returns the number of frames."""
-    exe = ffmpeg or find_ffmpeg()
-    first = next(frames)
-    h, w = first.shape[:2]
-    cmd = [exe, "-y", "-loglevel", "error", "-f", "rawvideo", "-vcodec", "rawvideo",
-           "-s", f"{w}x{h}", "-pix_fmt", "rgb24", "-r", f"{check_fps(fps):g}", "-i", "-",
-           "-an", "-vcodec", "libx264", "-pix_fmt", "yuv420p",
-           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", str(path)]
-    proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
-    assert proc.stdin is not None
-    count = 0
-    try:
-        for rgb in chain([first], frames):
-            proc.stdin.write(np.ascontiguousarray(rgb, dtype=np.uint8).tobytes())
-            count += 1
-    except BrokenPipeError:
-        pass
-    _, err = proc.communicate()
-    if proc.returncode:
-        lines = (err or b"").decode(errors="replace").strip().splitlines()
-        raise AnimationError(f"ffmpeg failed writing {str(path)!r}: "
-                             f"{lines[-1] if lines else f'exit status {proc.returncode}'}")
-    return count
-
-
-def palette_sample(anim: Any) -> np.ndarray:
-    """Three frames of ``anim`` (a third in, two thirds in, the last) stacked: the colours."""
-    n = anim.frame_count
-    return np.concatenate([anim.render(f) for f in sorted({n // 3, 2 * n // 3, n - 1})])
-
-
-def _palette(sample: np.ndarray) -> Any:
-    from PIL import Image
-
-    return Image.fromarray(sample).quantize(256, method=Image.Quantize.MEDIANCUT)
-
-
-class _Frames:
-    """Stands in for the figure in matplotlib's HTMLWriter: savefig writes the current frame."""
-
-    def __init__(self, size: Any, dpi: float, palette: Any) -> None:
-        self.size, self.dpi, self.palette = size, dpi, palette
-        self.rgb = np.zeros((1, 1, 3), np.uint8)
-
-    def get_size_inches(self) -> Any:
-        return self.size
-
-    def set_size_inches(self, *args: Any, **kwargs: Any) -> None:
-        """The frames are already drawn: their size does not change."""
-
-    def savefig(self, fname: Any, format: str = "png", **kwargs: Any) -> None:
-        from PIL import Image
-
-        im = Image.fromarray(self.rgb)
-        if self.palette is not None and format.lower() == "png":
-            im = im.quantize(palette=self.palette, dither=Image.Dither.NONE)
-        im.save(fname, format=format.upper())
-
-
-def jshtml(frames: Iterable[np.ndarray], size: Any, dpi: float, fps: float,
-           palette_sample: np.ndarray | None = None) -> str:
-    """Self-contained interactive HTML of RGB frames, as ``to_jshtml`` makes it.
-
-    matplotlib's :class:`~matplotlib.animation.HTMLWriter` embeds the frames
-    (at most ``rcParams["animation.embed_limit"]`` MB); ``size`` and ``dpi``
-    are the figure's.  With ``palette_sample`` the PNG frames have 256
-    colours, like the GIF, and take about a third of the room.
-    """
-    from tempfile import TemporaryDirectory
-
-    from matplotlib.animation import HTMLWriter
-
-    source = _Frames(size, dpi, None if palette_sample is None else _palette(palette_sample))
-    # the stubs ask an int fps and a Figure: the writer takes any rate, and of the figure
-    # only what _Frames has (its size, dpi and savefig)
-    writer = HTMLWriter(fps=check_fps(fps), embed_frames=True,  # type: ignore[arg-type]
-                        default_mode="loop")
-    with TemporaryDirectory() as tmp:
-        out = Path(tmp, "animation.html")
-        with writer.saving(source, out, dpi):  # type: ignore[arg-type]
-            for rgb in frames:
-                source.rgb = rgb
-                writer.grab_frame()
-        return out.read_text(encoding="utf-8")
-
-
-def write_png(rgb: np.ndarray, path: str | os.PathLike[str]) -> Path:
-    """Write one RGB frame as a PNG file."""
-    from PIL import Image
-
-    Image.fromarray(rgb).save(path, format="PNG")
-    return Path(path)
-
-
 def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None = None,
                     quiet: bool = False) -> Path:
     """Write ``anim`` (a :class:`~graspcompass.render.animate.FrameAnimation`) to ``path``.
@@ -478,27 +279,3 @@ def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None =
     finally:
         bar.close()
     return p
-
-
-def save_frames(anim: Any, folder: str | os.PathLike[str], frames: Iterable[int] | None = None,
-                prefix: str = "") -> list[Path]:
-    """Write PNG frames of ``anim`` into ``folder``; by default ``anim.key_frames()``.
-
-    For the construction: one PNG per protocol step, the frame at the end of
-    the step (after its pause); for the sweep and orientation: one every 30°.
-
-    Raises
-    ------
-    graspcompass.errors.OutputError
-        If ``folder`` does not exist (it is not made) or is not writable, checked
-        before any frame is drawn, or if a write fails (that file is removed).
-    """
-    out = check_folder(folder)
-    picks = anim.key_frames() if frames is None else [(f, f"frame-{f:04d}") for f in frames]
-    written = []
-    for f, name in picks:
-        target = check_target(out / f"{prefix}{name}.png")
-        rgb = anim.render(f)
-        with writing(target):
-            written.append(write_png(rgb, target))
-    return written

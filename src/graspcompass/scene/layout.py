@@ -12,11 +12,15 @@ import math
 import re
 import weakref
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..geometry import evaluate
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
 
 __all__ = [
     "FRAMING",
@@ -74,7 +78,7 @@ def label_tex(name: str) -> str:
 _NUMERIC: dict[int, tuple[Any, dict[str, Any]]] = {}
 
 
-def numeric_objects(construction: Any) -> dict[str, Any]:
+def numeric_objects(construction: Construction) -> dict[str, Any]:
     """Float values of every object of ``construction`` (the envelope is kept as is).
 
     Points become ``(x, y)``, lines ``((px, py), (dx, dy))``, circles
@@ -104,7 +108,7 @@ def numeric_objects(construction: Any) -> dict[str, Any]:
     return dict(out)
 
 
-def _numeric(construction: Any) -> dict[str, Any]:
+def _numeric(construction: Construction) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for s in construction.steps:
         if s.kind == "envelope":
@@ -151,12 +155,12 @@ def shape_extent(shape: Any) -> Box | None:
 FRAMING = frozenset({"", "given", "contact", "foot", "midpoint", "X", "Y", "V"})
 
 
-def roles_of(construction: Any) -> dict[str, str]:
+def roles_of(construction: Construction) -> dict[str, str]:
     """Name -> role of every step (``""`` for a step without one), the roles as data."""
     return {s.name: getattr(s, "role", "") or "" for s in construction.steps}
 
 
-def view_box(grasp: Any, objects: dict[str, Any], margin: float = 0.08,
+def view_box(grasp: Grasp | None, objects: dict[str, Any], margin: float = 0.08,
              factor: float = 3.0, square: bool = True,
              roles: dict[str, str] | None = None) -> Box:
     """An automatic view box of the diagram, the one rule of every picture.
@@ -184,7 +188,7 @@ def _is_circle(v: Any) -> bool:
             and isinstance(v[1], float))
 
 
-def _view_box_by_roles(grasp: Any, objects: dict[str, Any], roles: dict[str, str],
+def _view_box_by_roles(grasp: Grasp | None, objects: dict[str, Any], roles: dict[str, str],
                        margin: float, factor: float, square: bool) -> Box:
     pts: list[XY] = [(0.0, 0.0)]
     scale = 0.0

@@ -20,7 +20,7 @@ import math
 import weakref
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import sympy as sp
@@ -31,6 +31,10 @@ from . import fit as fitting
 from . import labelling, layout
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
+
+if TYPE_CHECKING:
+    from ..construction.protocol import Construction
+    from ..grasp import Grasp
 
 __all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Label", "Scene", "build_scene", "exact_text",
            "group_points",
@@ -195,7 +199,7 @@ def _f(v: sp.Expr) -> float:
     return to_float(v, 20)
 
 
-def _shape(grasp: Any) -> tuple[str, tuple[float, ...]] | None:
+def _shape(grasp: Grasp | None) -> tuple[str, tuple[float, ...]] | None:
     shape = getattr(grasp, "shape", None)
     if not shape:
         return None
@@ -222,7 +226,8 @@ def _envelope(env: Any) -> tuple[Arc, ...]:
     return tuple(arcs)
 
 
-def build_scene(construction: Any, title: str | None = None, box: Box | None = None) -> Scene:
+def build_scene(construction: Construction, title: str | None = None,
+                box: Box | None = None) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
     ``box`` ``(xmin, xmax, ymin, ymax)`` frames it (default: the one rule
@@ -301,7 +306,7 @@ def build_scene(construction: Any, title: str | None = None, box: Box | None = N
 _SCENES: dict[int, tuple[Any, Scene]] = {}
 
 
-def scene_of(construction: Any, title: str | None = None) -> Scene:
+def scene_of(construction: Construction, title: str | None = None) -> Scene:
     """The :class:`Scene` of ``construction`` in its own view box, built once.
 
     Every painter of one construction reads this one object (the PNG, the SVG,

@@ -124,7 +124,7 @@ def _positive(v: Any, what: str, strict: bool = True) -> Any:
     return v
 
 
-def _world(grasp: Any) -> WorldGrasp:
+def _world(grasp: WorldGrasp | Grasp) -> WorldGrasp:
     """The placed grasp, or the identity placement of a paper-frame Grasp."""
     if isinstance(grasp, WorldGrasp):
         return grasp

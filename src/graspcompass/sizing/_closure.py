@@ -20,13 +20,17 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..boundary.inputs import real_value
 from ._case import _G, SizingError, _cmp, _f, _pair, _positive, _read_case, _world
 from ._closed import _need_float
 from ._many import _closed_form_many
 from .units import force_value_si
+
+if TYPE_CHECKING:
+    from ..grasp import Grasp
+    from ..world import WorldGrasp
 
 __all__ = ["ForceClosure", "LeastMu", "force_closure", "least_mu"]
 
@@ -154,8 +158,9 @@ class LeastMu:
     message: str
 
 
-def least_mu(grasp: Any, force_limit: Any, mass: Any, *, g: Any = None, gravity: Any = None,
-             tilt: Any = None, accel: Any = None, safety: Any = 1, per: str = "jaw") -> LeastMu:
+def least_mu(grasp: WorldGrasp | Grasp, force_limit: Any, mass: Any, *, g: Any = None,
+             gravity: Any = None, tilt: Any = None, accel: Any = None, safety: Any = 1,
+             per: str = "jaw") -> LeastMu:
     """The least friction coefficient, the same at both pads, for which ``force_limit`` suffices.
 
     The squeeze needed (as :func:`size_gripper` computes it for the case) falls

@@ -81,7 +81,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..geometry.exact import canon
 from ..grasp import Grasp
@@ -114,6 +114,9 @@ from ._closed import (  # noqa: F401
 from ._closure import ForceClosure, LeastMu, force_closure, least_mu
 from ._many import _closed_form_many, _tan_sides, worst_squeeze_many  # noqa: F401
 from ._vendor import vendor_squeeze
+
+if TYPE_CHECKING:
+    from ..world import WorldGrasp
 
 __all__ = [
     "ForceClosure",
@@ -299,7 +302,7 @@ class Sizing:
         return out
 
 
-def size_gripper(grasp: Any, mass: Any, *, g: Any = None, gravity: Any = None,
+def size_gripper(grasp: WorldGrasp | Grasp, mass: Any, *, g: Any = None, gravity: Any = None,
                  tilt: Any = None, accel: Any = None, safety: Any = 1,
                  per: str = "jaw") -> Sizing:
     """The squeeze a two-jaw gripper needs to hold a part: worst case, best orientation, vendor.

@@ -11,14 +11,17 @@ largest finger's, with ``pair:I,J`` the two named fingers' sum.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .units import acceleration_value, mass_value
+
+if TYPE_CHECKING:
+    from ..ncontact.model import NContactGrasp
 
 __all__ = ["size_ncontact"]
 
 
-def size_ncontact(grasp: Any, mass: Any, g: Any = "9.80665", accel: Any = None,
+def size_ncontact(grasp: NContactGrasp, mass: Any, g: Any = "9.80665", accel: Any = None,
                   safety: Any = "1") -> dict[str, Any]:
     """The worst squeeze of an n-contact grasp over all orientations, in newtons.
 
