@@ -43,6 +43,8 @@ def _check_scene(c, n: int) -> None:
     assert drawn <= made, (n, drawn - made)
     named = {m for lab in cut.labels for m in lab.names}
     assert named <= made, (n, named - made)
+    used = {i.step for i in cut.instruments}  # compass arcs, right angles, guides
+    assert used <= made, (n, used - made)
     assert bool(cut.envelope) == ("envelope" in made)
     sides = _sides(c)
     assert len(cut.cones) == sum(sides[k] <= made for k in ("cone1", "cone2")), n
@@ -75,6 +77,9 @@ def _check_png(c, n: int) -> None:
     names = [s.name for s in c.steps]
     arts = draw_construction(c, step=n)
     assert set(arts) - set(EXTRA_KEYS) <= made
+    ax0 = arts["O"][0].axes
+    shown = {a for a in ax0.lines if (a.get_gid() or "").startswith("instrument:")}
+    assert len(shown) == len(scene_of(c).upto(n).instruments), n
     sides = _sides(c)
     assert {k for k in ("cone1", "cone2") if k in arts} == {
         k for k in ("cone1", "cone2") if sides[k] <= made}
