@@ -306,8 +306,10 @@ def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artis
         if lab.leader:  # a thin line from the point to its label set far away
             x0, y0, x1, y1 = lab.box
             near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
-            ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]], color=theme.label_color,
-                    lw=0.5, zorder=5.5)
+            (leader,) = ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]],
+                                color=theme.label_color, lw=0.5, zorder=5.5, gid="leader")
+            for n in lab.names:  # made with its label, not before
+                out.setdefault(n, []).append(leader)
         text = ax.annotate(f"${lab.tex()}$", lab.point, xytext=lab.offset,
                            textcoords="offset points", ha=_HA[lab.direction[0]],
                            va=_VA[lab.direction[1]], fontsize=theme.font_size,
