@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import io
 import stat
-from dataclasses import replace
 import sys
+from dataclasses import replace
 from itertools import pairwise
 
 import matplotlib

@@ -135,7 +135,13 @@ def test_animation_frames_show_nothing_before_it_is_made() -> None:
                                 caption_seconds=0, reading_rate=0)
     sides = _sides(c)
     cones = {k: anim.artists[k][0] for k in ("cone1", "cone2")}
-    for n in (6, 8, 11, 30, 32, 35):
+    index = {s.name: s.index for s in c.steps}
+    instrument_step = {}  # artist -> the first step drawing it (its owner)
+    for s in reversed(c.steps):
+        for a in anim.artists.get(s.name, []):
+            instrument_step[id(a)] = s.name
+    assert any((a.get_gid() or "").startswith("instrument:") for a in anim.axes.lines)
+    for n in (6, 8, 9, 11, 13, 15, 17, 30, 32, 35):
         for f in anim.timeline.frames_of_step(n):
             st_ = anim.timeline.at(f)
             anim._apply(f)
@@ -150,3 +156,14 @@ def test_animation_frames_show_nothing_before_it_is_made() -> None:
                 assert isinstance(poly, Polygon)
                 if poly.get_visible():
                     assert sides[k] <= made, (n, f, k)
+            # the compass arcs, right angles and guides of a step (their gid names their
+            # role) are drawn with it, never before; a label's leader line with its label
+            for line in anim.axes.lines:
+                gid = line.get_gid() or ""
+                if not line.get_visible() or not gid:
+                    continue
+                owner = instrument_step[id(line)]
+                if gid == "leader":
+                    assert owner in made, (n, f, owner)
+                else:
+                    assert index[owner] <= n, (n, f, owner, gid)

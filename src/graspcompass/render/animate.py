@@ -105,8 +105,9 @@ class ConstructionAnimation(FrameAnimation):
         self._hold_text = self._caption_text(None)
         least = None
         if self.caption_seconds > 0 or self.reading_rate > 0:
+            # paced by step: a key step rests on its result after its caption is read
             least = [reading_frames(t, fps, self.caption_seconds, self.reading_rate)
-                     for t in self._texts]
+                     + (pause if s.key else 0) for t, s in zip(self._texts, steps)]
             if hold:
                 hold = max(hold, reading_frames(self._hold_text, fps, self.caption_seconds,
                                                 self.reading_rate))

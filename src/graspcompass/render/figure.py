@@ -80,12 +80,11 @@ def _draw_givens(ax: Axes, construction: Any, scene: Scene, theme: Theme,
         out[f"cone{i}"] = [ax.add_patch(poly)]
 
 
-#: The instruments' looks (:mod:`graspcompass.scene.instruments`): faint, under the points.
+#: The instruments' looks (:mod:`graspcompass.scene.instruments`): thin, under the points, in
+#: colours of at least 3 : 1 against white (a dimmed copy keeps it: render/_anim_ink.py).
 _INSTRUMENT_STYLE: dict[str, dict[str, Any]] = {
-    "bisection_arc": dict(alpha=0.6), "measure_arc": dict(alpha=0.6),
-    "transfer_arc": dict(alpha=0.6), "bisector": dict(ls=(0, (1, 2)), alpha=0.6),
-    "coordinate": dict(ls=(0, (1, 1.5)), alpha=0.8), "drop": dict(ls=(0, (4, 2))),
-    "right_angle": dict(alpha=0.8),
+    "bisector": dict(ls=(0, (1, 2))), "coordinate": dict(ls=(0, (1, 1.5))),
+    "drop": dict(ls=(0, (4, 2))),
 }
 
 
@@ -427,15 +426,16 @@ def _legend_extra(construction: Any, step: int | None, theme: Theme
         out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
                            ls=(0, (4, 2))), "perpendiculars to the cone sides"))
     if drawn & {"bisection_arc", "measure_arc", "transfer_arc"}:
-        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
-                           alpha=0.6), "compass arcs: bisection, lengths carried from $O$"))
+        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width),
+                    "compass arcs: bisection, lengths carried from $O$"))
     if "coordinate" in drawn:
         out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
                            ls=(0, (1, 1.5))), "$V_n$ from its coordinates $-O_MX_n$, "
                     "$-OY_n$"))
     if "right_angle" in drawn:
         out.append((Line2D([], [], ls="none", marker=_CORNER, ms=7, mfc="none",
-                           mew=theme.thin_width * 1.5, color=theme.construction_color), "right angles"))
+                           mew=theme.thin_width * 1.5, color=theme.construction_color),
+                    "right angles"))
     if "length" in kinds:
         out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
                            marker=">", ms=4), "signed lengths $O_MX_n$, $OY_n$"))

@@ -245,6 +245,6 @@ QUALITIES: dict[str, Quality] = {
                         caption_size=13.0, scale=1.3),
     "lecture": Quality("lecture", figsize=(12.8, 7.2), sweep_figsize=(12.8, 7.2), dpi=100.0,
                        fps=15.0, frames_per_step=12, pause_seconds=3.0, hold_seconds=6.0,
-                       caption_seconds=2.5, reading_rate=30.0, layout="side",
+                       caption_seconds=2.5, reading_rate=15.0, layout="side",
                        caption_size=20.0, scale=1.6, title_seconds=4.0),
 }

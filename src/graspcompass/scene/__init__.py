@@ -30,5 +30,6 @@ __all__ = ["Instrument", "Label", "Scene", "build_scene", "instruments", "labell
            "layout", "palette", "picture", "scene_of"]
 
 __getattr__, __dir__ = attach(__name__, {
-    "Instrument": "instruments", "instruments": "instruments", "Label": "picture", "Scene": "picture", "build_scene": "picture", "scene_of": "picture",
+    "Instrument": "instruments", "instruments": "instruments", "Label": "picture",
+    "Scene": "picture", "build_scene": "picture", "scene_of": "picture",
     "labelling": "labelling", "layout": "layout", "palette": "palette", "picture": "picture"})

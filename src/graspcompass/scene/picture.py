@@ -33,8 +33,8 @@ from .instruments import Instrument, instruments_of
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
 
-__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Instrument", "Label", "Scene", "build_scene", "exact_text",
-           "group_points",
+__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Instrument", "Label", "Scene", "build_scene",
+           "exact_text", "group_points",
            "label_tex", "scene_of"]
 
 XY = tuple[float, float]
