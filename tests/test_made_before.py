@@ -63,6 +63,11 @@ def _check_svg(c, n: int) -> None:
         parts = {p.strip() for p in re.split("[=,]", text)}
         by_svg = {label_tex(m).replace("{", "").replace("}", ""): m for m in names}
         assert {by_svg[p] for p in parts} <= made, (n, text)
+    used = {p.get("data-step") for p in root.iterfind(".//s:polyline", NS)
+            if "instrument" in (p.get("class") or "")}
+    assert used <= made, (n, used - made)
+    if n == len(c.steps) - 1:
+        assert used, "the compass arcs and right angles of the whole construction"
     cones = {p.get("id").removeprefix("inset-") for p in root.iterfind(".//s:polygon", NS)}
     sides = _sides(c)
     assert cones == {k for k in ("cone1", "cone2") if sides[k] <= made}, n
