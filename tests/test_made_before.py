@@ -32,7 +32,7 @@ def _sides(c) -> dict[str, set[str]]:
 
 def _names_of_label(text: str, names: list[str]) -> set[str]:
     by_tex = {label_tex(n): n for n in names}
-    return {by_tex[p] for p in text.strip("$").split(" = ")}
+    return {by_tex[p] for p in re.split(" = |, ", text.strip("$"))}
 
 
 def _check_scene(c, n: int) -> None:
@@ -128,13 +128,18 @@ def test_every_step_of_random_grasps(data) -> None:
     _check_svg(c, n)
 
 
-def test_animation_frames_show_nothing_before_it_is_made() -> None:
+#: A grasp whose label joins points apart but closer than a marker: ``O, X_4`` (X4 at step 30).
+NEAR = Grasp(13 / 10, 3 / 5, 7 / 10, "70*pi/180", "75*pi/180", xi1="40*pi/180", xi2="35*pi/180")
+
+
+@pytest.mark.parametrize("grasp", [Grasp.preset("fig6"), NEAR], ids=["fig6", "near"])
+def test_animation_frames_show_nothing_before_it_is_made(grasp) -> None:
     from matplotlib.patches import Polygon
     from matplotlib.text import Annotation
 
     from graspcompass.render.animate import animate_construction
 
-    c = internal_force_diagram(Grasp.preset("fig6"))
+    c = internal_force_diagram(grasp)
     names = [s.name for s in c.steps]
     anim = animate_construction(c, frames_per_step=3, pause_frames=1, hold_frames=1, dpi=30,
                                 caption_seconds=0, reading_rate=0)

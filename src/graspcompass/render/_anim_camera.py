@@ -71,10 +71,18 @@ def _fit(pts: list[Any] | None, whole: Box) -> Box:
     return cx - h, cx + h, cy - h, cy + h
 
 
-def step_boxes(construction: Any, num: dict[str, Any], whole: Box) -> list[Box]:
-    """The camera's target box of every step of ``construction`` (whole view ``whole``)."""
+def step_boxes(construction: Any, num: dict[str, Any], whole: Box,
+               instruments: Any = ()) -> list[Box]:
+    """The camera's target box of every step of ``construction`` (whole view ``whole``);
+    a step's ``instruments`` (the scene's compass arcs of a bisection) are in its box."""
     steps = {s.name: s for s in construction.steps}
-    return [_fit(_points_of(s, num, steps), whole) for s in construction.steps]
+    out = []
+    for s in construction.steps:
+        pts = _points_of(s, num, steps)
+        if pts is not None:
+            pts += [p for i in instruments if i.step == s.name for p in i.points]
+        out.append(_fit(pts, whole))
+    return out
 
 
 def _between(a: Box, b: Box, t: float) -> Box:

@@ -33,6 +33,7 @@ Step 13 of 0–46 · perpendicular
 from __future__ import annotations
 
 import math
+import re
 import textwrap
 from typing import Any
 
@@ -122,7 +123,8 @@ class ConstructionAnimation(FrameAnimation):
         ax.tick_params(labelsize=max(theme.font_size * 0.7, self._least_pt))
         self._num = numeric_objects(construction)
         self._whole = tuple(scene_of(construction).box)
-        self._boxes = step_boxes(construction, self._num, self._whole)
+        self._boxes = step_boxes(construction, self._num, self._whole,
+                                 scene_of(construction).instruments)
         if self.camera:  # a zoomed view shows only what is inside it
             for a in ax.texts:
                 if isinstance(a, Annotation):
@@ -204,12 +206,16 @@ class ConstructionAnimation(FrameAnimation):
         return "line" if s.kind == "line" and solid else "marker"
 
     def _label_parts(self, a: Any, names: list[str]) -> list[tuple[int, str]]:
-        """The parts of a shared label ``$A = B$``, each with the step making its point."""
+        """The parts of a shared label ``$A = B$`` or ``$A, B$``, each with the step making
+        its point."""
         index = {s.name: s.index for s in self.construction.steps}
         by_tex = {tex(n, math=False): n for n in names}
-        parts = a.get_text().strip("$").split(" = ")
-        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), p)
-                for p in parts]
+        # ``A = B`` coincide, ``A, B`` are apart but closer than a marker: each part keeps
+        # the separator before it
+        pieces = re.split(r"( = |, )", a.get_text().strip("$"))
+        seps, parts = ["", *pieces[1::2]], pieces[0::2]
+        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), sep + p)
+                for sep, p in zip(seps, parts)]
 
     # -- captions -----------------------------------------------------------------------------
     def _caption_text(self, s: Any) -> str:
@@ -364,7 +370,7 @@ class ConstructionAnimation(FrameAnimation):
             if not shown:
                 a.set_visible(False)
                 continue
-            a.set_text("$" + " = ".join(shown) + "$")
+            a.set_text("$" + re.sub(r"^( = |, )", "", "".join(shown)) + "$")
             names = {steps[i].name for i, _ in parts}
             if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
                 _fade(a, snap, f)
