@@ -76,13 +76,29 @@ def step_boxes(construction: Any, num: dict[str, Any], whole: Box,
     """The camera's target box of every step of ``construction`` (whole view ``whole``);
     a step's ``instruments`` (the scene's compass arcs of a bisection) are in its box."""
     steps = {s.name: s for s in construction.steps}
-    out = []
+    out: list[Box] = []
+    span = whole[1] - whole[0]
     for s in construction.steps:
         pts = _points_of(s, num, steps)
         if pts is not None:
             pts += [p for i in instruments if i.step == s.name for p in i.points]
-        out.append(_fit(pts, whole))
+        box = _fit(pts, whole)
+        if out and box != whole and out[-1] != whole and _holds(out[-1], pts, span):
+            box = out[-1]  # the last view still frames this step well: the camera rests
+        out.append(box)
     return out
+
+
+def _holds(box: Box, pts: list[Any] | None, span: float) -> bool:
+    """Whether ``box`` holds ``pts`` with a margin and is not much larger than they need."""
+    if pts is None:
+        return False
+    m = 0.05 * (box[1] - box[0])
+    inside = all(box[0] + m <= p[0] <= box[1] - m and box[2] + m <= p[1] <= box[3] - m
+                 for p in pts)
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    need = max(max(xs) - min(xs), max(ys) - min(ys), LEAST * span / (1 + 2 * PAD))
+    return inside and (box[1] - box[0]) <= 1.6 * need * (1 + 2 * PAD)
 
 
 def _between(a: Box, b: Box, t: float) -> Box:

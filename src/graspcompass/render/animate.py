@@ -269,34 +269,72 @@ class ConstructionAnimation(FrameAnimation):
         return st.kind == "rest" or (st.kind == "title" and frame > 0)
 
     def iter_frames(self) -> Any:
-        """Every frame in order; with the camera each moving frame is drawn in full (the
-        view changes), the stills repeated, the final hold a cross-fade of its two ends."""
+        """Every frame in order.  With the camera, a segment whose view is at rest is
+        blitted on a base drawn for that view; a segment whose view moves (and the title
+        card) is drawn in full; the stills repeated; the final hold a cross-fade."""
         if not self.camera:
             yield from super().iter_frames()
             return
-        tl, last = self.timeline, None
-        i = 0
-        while i < len(tl.segments):
-            frames = tl.segment_range(i)
-            rows = self._crossfade(i)
-            if rows is not None and last is not None:
-                end = self.render(frames[-1])
-                yield from (blend(last, end, tl.at(f).progress, rows) for f in frames[:-1])
-                yield end
-                last = end
-            else:
+        tl, canvas, last = self.timeline, self._canvas, None
+        dynamic = list(self._dynamic)
+        view: Any = None
+        base: Any = None
+
+        def full(f: int) -> np.ndarray:
+            for a in dynamic:
+                a.set_animated(False)
+            self._keys = [None] * len(self._keys)
+            self._apply(f)
+            canvas.draw()
+            for a in dynamic:
+                a.set_animated(True)
+            return self._buffer()
+
+        for a in dynamic:
+            a.set_animated(True)
+        try:
+            for i, seg in enumerate(tl.segments):
+                frames = tl.segment_range(i)
+                rows = self._crossfade(i)
+                if rows is not None and last is not None:
+                    end = full(frames[-1])
+                    yield from (blend(last, end, tl.at(f).progress, rows)
+                                for f in frames[:-1])
+                    yield end
+                    last, view = end, None
+                    continue
+                before = self._boxes[seg.step - 1] if seg.step > 0 else self._whole
+                if seg.kind == "title" or (seg.kind == "draw"
+                                           and before != self._boxes[seg.step]):
+                    for f in frames:
+                        if last is not None and f > frames.start and self._still(f):
+                            yield last
+                            continue
+                        last = full(f)
+                        yield last
+                    view = None
+                    continue
+                box = camera_box(self._boxes, self._whole, seg.step, seg.kind, 1.0)
+                if box != view:  # a new base: the static artists in this view
+                    self._apply(frames.start)
+                    canvas.draw()
+                    base, view, self._layer = canvas.copy_from_bbox(self.figure.bbox), box, None
+                moving = {id(a) for a in self._movers(i)}
+                resting = [a for a in dynamic if id(a) not in moving]
+                movers = [a for a in dynamic if id(a) in moving]
+                background = self._background(i, frames, resting, base)
                 for f in frames:
                     if last is not None and f > frames.start and self._still(f):
                         yield last
                         continue
-                    for a in self._dynamic:
-                        a.set_animated(False)
-                    self._keys = [None] * len(self._keys)
                     self._apply(f)
-                    self._canvas.draw()
+                    canvas.restore_region(background)
+                    self._draw(movers)
                     last = self._buffer()
                     yield last
-            i += 1
+        finally:
+            for a in dynamic:
+                a.set_animated(False)
 
     def _background(self, segment: int, frames: range, resting: list[Artist], base: Any) -> Any:
         """Base, the earlier steps dimmed, the current step's inputs bright, the caption.
