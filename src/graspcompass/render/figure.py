@@ -425,9 +425,11 @@ def _legend_extra(construction: Any, step: int | None, theme: Theme
     if "perpendicular" in roles:
         out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
                            ls=(0, (4, 2))), "perpendiculars to the cone sides"))
-    if drawn & {"bisection_arc", "measure_arc", "transfer_arc"}:
+    arcs = [w for r, w in (("bisection_arc", "bisection"), ("measure_arc", "lengths taken"),
+                           ("transfer_arc", "carried from $O$")) if r in drawn]
+    if arcs:
         out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width),
-                    "compass arcs: bisection, lengths carried from $O$"))
+                    "compass arcs: " + ", ".join(arcs)))
     if "coordinate" in drawn:
         out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
                            ls=(0, (1, 1.5))), "$V_n$ from its coordinates $-O_MX_n$, "
