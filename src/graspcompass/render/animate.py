@@ -307,7 +307,8 @@ class ConstructionAnimation(FrameAnimation):
                 if seg.kind == "title" or (seg.kind == "draw"
                                            and before != self._boxes[seg.step]):
                     for f in frames:
-                        if last is not None and f > frames.start and self._still(f):
+                        if last is not None and self._still(f) and (
+                            f > frames.start or seg.kind == "rest"):
                             yield last
                             continue
                         last = full(f)
@@ -324,7 +325,8 @@ class ConstructionAnimation(FrameAnimation):
                 movers = [a for a in dynamic if id(a) in moving]
                 background = self._background(i, frames, resting, base)
                 for f in frames:
-                    if last is not None and f > frames.start and self._still(f):
+                    if last is not None and self._still(f) and (
+                            f > frames.start or seg.kind == "rest"):
                         yield last
                         continue
                     self._apply(f)
