@@ -32,7 +32,7 @@ def _is_xy(v: Any) -> bool:
 
 def _points_of(step: Any, num: dict[str, Any], steps: dict[str, Any]) -> list[Any] | None:
     """The points a step's view must hold; None for the whole view."""
-    v = num.get(step.name)
+    v: Any = num.get(step.name)
     if step.kind == "envelope" or step.role == "axis":
         return None
     pts: list[Any] = []
@@ -42,7 +42,7 @@ def _points_of(step: Any, num: dict[str, Any], steps: dict[str, Any]) -> list[An
     if _is_xy(v):
         pts.append(v)
     for k in step.inputs:
-        w = num.get(k)
+        w: Any = num.get(k)
         if _is_xy(w):
             pts.append(w)
         elif step.kind != "point" or step.op == "meet":

@@ -122,17 +122,18 @@ class ConstructionAnimation(FrameAnimation):
         self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=labels)
         ax.tick_params(labelsize=max(theme.font_size * 0.7, self._least_pt))
         self._num = numeric_objects(construction)
-        self._whole = tuple(scene_of(construction).box)
+        box = scene_of(construction).box
+        self._whole = (box[0], box[1], box[2], box[3])
         self._boxes = step_boxes(construction, self._num, self._whole,
                                  scene_of(construction).instruments)
         if self.camera:  # a zoomed view shows only what is inside it
-            for a in ax.texts:
-                if isinstance(a, Annotation):
-                    a.set_annotation_clip(True)
-                    a.set_clip_on(True)
-                    if a.arrow_patch is not None:
-                        a.arrow_patch.set_clip_box(ax.bbox)
-                        a.arrow_patch.set_clip_on(True)
+            for t in ax.texts:
+                if isinstance(t, Annotation):
+                    t.set_annotation_clip(True)
+                    t.set_clip_on(True)
+                    if t.arrow_patch is not None:
+                        t.arrow_patch.set_clip_box(ax.bbox)
+                        t.arrow_patch.set_clip_on(True)
         self._card = fig.text(0.5, 0.5, self._card_text(), ha="center", va="center",
                               fontsize=caption_pt * 1.3, linespacing=1.6, visible=False,
                               zorder=20, bbox=dict(boxstyle="square,pad=40", fc="white",
@@ -419,7 +420,8 @@ class ConstructionAnimation(FrameAnimation):
             for a, role, snap in (x for items in self._items for x in items):
                 if role == "leader":
                     (x0, x1), (y0, y1) = snap["data"]
-                    a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
+                    if isinstance(a, Line2D):
+                        a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
         self._caption.set_text("" if title else self.caption_at(frame))
         made = (1.0 if hold else 0.0 if title else
                 st.step + (st.progress if st.kind == "draw" else 1.0))

@@ -114,7 +114,7 @@ def instruments_of(construction: Any, num: Mapping[str, Any], box: Box
             out.append(Instrument("right_angle", s.name, _n(s), _square(at, u, w, mark)))
 
     for s in construction.steps:
-        ins = [num.get(k) for k in s.inputs]
+        ins: list[Any] = [num.get(k) for k in s.inputs]
         if s.op == "midpoint" and len(ins) == 2:
             a, b = ins
             d = math.dist(a, b)
@@ -133,20 +133,20 @@ def instruments_of(construction: Any, num: Mapping[str, Any], box: Box
             if math.dist(p, foot) <= tiny:
                 continue
             out.append(Instrument("drop", s.name, _n(s), (p, foot)))
-            d = _unit(ins[1][1])
-            if d is not None:
-                toward_o = -1.0 if (foot[0] * d[0] + foot[1] * d[1]) > 0 else 1.0
-                side = (foot[0] + toward_o * d[0], foot[1] + toward_o * d[1])
+            along = _unit(ins[1][1])
+            if along is not None:
+                toward_o = -1.0 if (foot[0] * along[0] + foot[1] * along[1]) > 0 else 1.0
+                side = (foot[0] + toward_o * along[0], foot[1] + toward_o * along[1])
                 square(s, foot, p, side)
         elif s.op == "perpendicular" and len(ins) == 2:
             line, p = ins
             foot = _foot(p, line)
             if math.dist(p, foot) <= tiny:
                 continue
-            d = _unit(line[1])
-            if d is None:
+            along = _unit(line[1])
+            if along is None:
                 continue
-            square(s, foot, p, (foot[0] + d[0], foot[1] + d[1]))
+            square(s, foot, p, (foot[0] + along[0], foot[1] + along[1]))
         elif s.op == "signed_length" and len(ins) >= 2:
             arc("measure_arc", s, ins[0], ins[1])
         elif s.op == "point_from_lengths" and len(ins) == 2:
@@ -163,8 +163,7 @@ def instruments_of(construction: Any, num: Mapping[str, Any], box: Box
                 arc("transfer_arc", s, origin, q)
                 if math.dist(q, v) > tiny:
                     out.append(Instrument("coordinate", s.name, _n(s), (q, v)))
-                    d = _unit(axis[1])
-                    if d is not None and math.dist(q, origin) > tiny:
+                    if _unit(axis[1]) is not None and math.dist(q, origin) > tiny:
                         back = (q[0] + (origin[0] - q[0]) / math.dist(q, origin),
                                 q[1] + (origin[1] - q[1]) / math.dist(q, origin))
                         square(s, q, v, back)
