@@ -28,6 +28,7 @@ import os
 import re
 import sys
 from pathlib import Path
+from typing import Any
 
 DOCS = Path(__file__).resolve().parent
 ROOT = DOCS.parent
@@ -308,8 +309,71 @@ def _generate(app: object) -> None:
     _explorer()
 
 
+# -- viewcode backlinks --------------------------------------------------------------------------
+# sphinx.ext.viewcode keeps one module name per source module (the first page documenting
+# one of its objects, e.g. ``graspcompass.geometry`` for a re-exported Point) and one page
+# per object (the last documenting it, e.g. the package page, where its id is
+# ``graspcompass.Point``): the "[docs]" link of the source page then points at an id that
+# page does not have (33 broken anchors).  The module name of a source's links is the one
+# under which most of its objects are documented, each backlink goes to a page documenting
+# the object under it, and is dropped when there is none.
+def _documented(app: Any, doctree: Any) -> None:
+    from sphinx import addnodes
+    from sphinx.ext.viewcode import _get_full_modname
+
+    env = app.env
+    seen = env.__dict__.setdefault("_gc_documented", {})
+    for sig in doctree.findall(addnodes.desc_signature):
+        mod, full = sig.get("module"), sig.get("fullname")
+        if not mod or not full or f"{mod}.{full}" not in sig.get("ids", []):
+            continue  # a :no-index: entry has no id to link to
+        src = _get_full_modname(mod, full) or mod
+        seen.setdefault((src, full), {}).setdefault(mod, env.docname)
+
+
+def _purge_documented(app: Any, env: Any, docname: str) -> None:
+    for where in getattr(env, "_gc_documented", {}).values():
+        for mod in [m for m, d in where.items() if d == docname]:
+            del where[mod]
+
+
+def _merge_documented(app: Any, env: Any, docnames: Any, other: Any) -> None:
+    mine = env.__dict__.setdefault("_gc_documented", {})
+    for key, where in getattr(other, "_gc_documented", {}).items():
+        for mod, doc in where.items():
+            mine.setdefault(key, {}).setdefault(mod, doc)
+
+
+def _fix_backlinks(app: Any) -> list[Any]:
+    from collections import Counter
+
+    seen = getattr(app.env, "_gc_documented", {})
+    modules = getattr(app.env, "_viewcode_modules", {})
+    for src, entry in list(modules.items()):
+        if not entry:
+            continue
+        code, tags, used, refname = entry
+        # the module name under which most of the source's objects are documented
+        votes = Counter(m for name in used for m in seen.get((src, name), {}))
+        if votes:
+            refname = max(votes, key=lambda m: (votes[m], m == src))
+            modules[src] = (code, tags, used, refname)
+        for name in list(used):
+            page = seen.get((src, name), {}).get(refname)
+            if page is None:
+                del used[name]
+            else:
+                used[name] = page
+    return []
+
+
 def setup(app: object) -> dict[str, object]:
     # the generated files are read later, with the other sources
     app.connect("builder-inited", _generate, priority=400)  # type: ignore[attr-defined]
     app.connect("source-read", _fix_animation_player)  # type: ignore[attr-defined]
+    app.connect("doctree-read", _documented)  # type: ignore[attr-defined]
+    app.connect("env-purge-doc", _purge_documented)  # type: ignore[attr-defined]
+    app.connect("env-merge-info", _merge_documented)  # type: ignore[attr-defined]
+    # before viewcode's own html-collect-pages (priority 500) writes the source pages
+    app.connect("html-collect-pages", _fix_backlinks, priority=400)  # type: ignore[attr-defined]
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -10,6 +10,7 @@ from __future__ import annotations
 import io
 import stat
 import sys
+from dataclasses import replace
 from itertools import pairwise
 
 import matplotlib
@@ -33,6 +34,7 @@ from graspcompass.render.anim_physics import (
     theta_of_orientation,
 )
 from graspcompass.render.animate import animate_construction, save_frames
+from graspcompass.render.theme import QUALITIES
 from graspcompass.render.timeline import (
     AnimationError,
     FFmpegNotFoundError,
@@ -49,6 +51,10 @@ PAPER = {
     "table1c": (2.0, 2.0, 2.0, PI / 2, PI / 2, np.arctan(0.5), np.arctan(1.4)),
 }
 SMALL = dict(figsize=(3.0, 3.4), dpi=40)
+#: Tiny construction frames (fast): the text rule of the GIF (14 px) and the camera are
+#: tested apart (tests/test_anim_camera.py).
+CSMALL = dict(SMALL, min_text_px=0, camera=False,
+              quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0))
 
 
 def paper_k(preset: str, theta: np.ndarray) -> np.ndarray:
@@ -73,7 +79,8 @@ def c1a():
 
 @pytest.fixture(scope="module")
 def anim(c1a):
-    return animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3, **SMALL)
+    return animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3,
+                                caption_seconds=0, **CSMALL)
 
 
 @pytest.fixture(scope="module")
@@ -93,7 +100,7 @@ def test_frame_counts_per_step(c1a, anim):
         assert len(tl.frames_of_step(s.index)) == expected, s.name
     assert anim.frame_count == 3 * len(c1a.steps) + 2 * len(keys) + 3
     # default: at least 8 frames per protocol step
-    assert len(animate_construction(c1a, **SMALL).timeline.frames_of_step(0)) >= 8
+    assert len(animate_construction(c1a, **CSMALL).timeline.frames_of_step(0)) >= 8
 
 
 def test_every_step_appears_in_order(c1a, anim):
@@ -175,7 +182,8 @@ def test_blitted_frames_match_full_draws(anim, frames):
 
 
 def test_deterministic(c1a, frames):
-    again = animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3, **SMALL)
+    again = animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3,
+                                 caption_seconds=0, **CSMALL)
     assert all(np.array_equal(a, b) for a, b in zip(again.iter_frames(), frames, strict=True))
 
 

@@ -19,6 +19,7 @@ import os
 import re
 import subprocess
 import sys
+from dataclasses import replace
 
 import matplotlib
 
@@ -36,8 +37,13 @@ from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args, main
 from graspcompass.cli._animate import main_animation, register, run
 from graspcompass.render.anim_physics import animate_sweep
 from graspcompass.render.animate import FrameAnimation, animate_construction
+from graspcompass.render.theme import QUALITIES
 
 SMALL = dict(figsize=(3.0, 3.4), dpi=40)
+#: Tiny construction frames: their captions as small as the theme's (the 14 px rule of the
+#: GIF is tested in tests/test_anim_camera.py), no camera.
+CSMALL = dict(SMALL, min_text_px=0, camera=False,
+              quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0))
 #: Issue 12: a caption stays at least 2.5 s, and longer by its length (15 characters a
 #: second is the reading rate chosen for a lecture; see docs/howto/export.md).
 LEAST_SECONDS, CHARS_PER_SECOND = 2.5, 15.0
@@ -50,7 +56,8 @@ def fig6():
 
 @pytest.fixture(scope="module")
 def small(fig6):
-    return animate_construction(fig6, frames_per_step=2, pause_frames=2, hold_frames=2, **SMALL)
+    return animate_construction(fig6, frames_per_step=2, pause_frames=2, hold_frames=2,
+                                **CSMALL)
 
 
 def printed_steps(preset: str) -> list[tuple[int, str]]:

@@ -32,7 +32,7 @@ def _sides(c) -> dict[str, set[str]]:
 
 def _names_of_label(text: str, names: list[str]) -> set[str]:
     by_tex = {label_tex(n): n for n in names}
-    return {by_tex[p] for p in text.strip("$").split(" = ")}
+    return {by_tex[p] for p in re.split(" = |, ", text.strip("$"))}
 
 
 def _check_scene(c, n: int) -> None:
@@ -43,6 +43,8 @@ def _check_scene(c, n: int) -> None:
     assert drawn <= made, (n, drawn - made)
     named = {m for lab in cut.labels for m in lab.names}
     assert named <= made, (n, named - made)
+    used = {i.step for i in cut.instruments}  # compass arcs, right angles, guides
+    assert used <= made, (n, used - made)
     assert bool(cut.envelope) == ("envelope" in made)
     sides = _sides(c)
     assert len(cut.cones) == sum(sides[k] <= made for k in ("cone1", "cone2")), n
@@ -61,6 +63,11 @@ def _check_svg(c, n: int) -> None:
         parts = {p.strip() for p in re.split("[=,]", text)}
         by_svg = {label_tex(m).replace("{", "").replace("}", ""): m for m in names}
         assert {by_svg[p] for p in parts} <= made, (n, text)
+    used = {p.get("data-step") for p in root.iterfind(".//s:polyline", NS)
+            if "instrument" in (p.get("class") or "")}
+    assert used <= made, (n, used - made)
+    if n == len(c.steps) - 1:
+        assert used, "the compass arcs and right angles of the whole construction"
     cones = {p.get("id").removeprefix("inset-") for p in root.iterfind(".//s:polygon", NS)}
     sides = _sides(c)
     assert cones == {k for k in ("cone1", "cone2") if sides[k] <= made}, n
@@ -75,6 +82,9 @@ def _check_png(c, n: int) -> None:
     names = [s.name for s in c.steps]
     arts = draw_construction(c, step=n)
     assert set(arts) - set(EXTRA_KEYS) <= made
+    ax0 = arts["O"][0].axes
+    shown = {a for a in ax0.lines if (a.get_gid() or "").startswith("instrument:")}
+    assert len(shown) == len(scene_of(c).upto(n).instruments), n
     sides = _sides(c)
     assert {k for k in ("cone1", "cone2") if k in arts} == {
         k for k in ("cone1", "cone2") if sides[k] <= made}
@@ -118,19 +128,30 @@ def test_every_step_of_random_grasps(data) -> None:
     _check_svg(c, n)
 
 
-def test_animation_frames_show_nothing_before_it_is_made() -> None:
+#: A grasp whose label joins points apart but closer than a marker: ``O, X_4`` (X4 at step 30).
+NEAR = Grasp(13 / 10, 3 / 5, 7 / 10, "70*pi/180", "75*pi/180", xi1="40*pi/180", xi2="35*pi/180")
+
+
+@pytest.mark.parametrize("grasp", [Grasp.preset("fig6"), NEAR], ids=["fig6", "near"])
+def test_animation_frames_show_nothing_before_it_is_made(grasp) -> None:
     from matplotlib.patches import Polygon
     from matplotlib.text import Annotation
 
     from graspcompass.render.animate import animate_construction
 
-    c = internal_force_diagram(Grasp.preset("fig6"))
+    c = internal_force_diagram(grasp)
     names = [s.name for s in c.steps]
     anim = animate_construction(c, frames_per_step=3, pause_frames=1, hold_frames=1, dpi=30,
                                 caption_seconds=0, reading_rate=0)
     sides = _sides(c)
     cones = {k: anim.artists[k][0] for k in ("cone1", "cone2")}
-    for n in (6, 8, 11, 30, 32, 35):
+    index = {s.name: s.index for s in c.steps}
+    instrument_step = {}  # artist -> the first step drawing it (its owner)
+    for s in reversed(c.steps):
+        for a in anim.artists.get(s.name, []):
+            instrument_step[id(a)] = s.name
+    assert any((a.get_gid() or "").startswith("instrument:") for a in anim.axes.lines)
+    for n in (6, 8, 9, 11, 13, 15, 17, 30, 32, 35):
         for f in anim.timeline.frames_of_step(n):
             st_ = anim.timeline.at(f)
             anim._apply(f)
@@ -145,3 +166,14 @@ def test_animation_frames_show_nothing_before_it_is_made() -> None:
                 assert isinstance(poly, Polygon)
                 if poly.get_visible():
                     assert sides[k] <= made, (n, f, k)
+            # the compass arcs, right angles and guides of a step (their gid names their
+            # role) are drawn with it, never before; a label's leader line with its label
+            for line in anim.axes.lines:
+                gid = line.get_gid() or ""
+                if not line.get_visible() or not gid:
+                    continue
+                owner = instrument_step[id(line)]
+                if gid == "leader":
+                    assert owner in made, (n, f, owner)
+                else:
+                    assert index[owner] <= n, (n, f, owner, gid)

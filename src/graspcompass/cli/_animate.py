@@ -224,32 +224,35 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
                    help="output .gif, .mp4 or .html file (default: PRESET-KIND.gif, or "
                         "the construction file's name for PRESET)")
     p.add_argument("--quality", choices=QUALITY_NAMES, default="standard", action=_Checked,
-                   help="standard: small and quick (400x448 pixels, 20 fps); lecture: for a "
-                        "projector, 1280x720 pixels, captions at 20 pt beside the diagram, "
-                        "each on screen at least 2.5 s and longer by its length; the options "
-                        "below left out take the quality's values (default: standard)")
+                   help="standard: 640x720 pixels, 10 fps, every text at least 14 pixels, "
+                        "each caption at least 2 s; lecture: for a projector, 1280x720 "
+                        "pixels, a title card, captions at 20 pt beside the diagram, each on "
+                        "screen at least 2.5 s and longer by its length, key steps 3 s "
+                        "longer; both zoom to the step being drawn; the options below left "
+                        "out take the quality's values (default: standard)")
     p.add_argument("--fps", type=bounded(float, MIN_FPS, MAX_FPS), default=None, metavar="N",
-                   help=f"frames per second, {MIN_FPS:g} to {MAX_FPS:g} (default: 20)")
+                   help=f"frames per second, {MIN_FPS:g} to {MAX_FPS:g} (default: 10; lecture: "
+                        "15)")
     p.add_argument("--frames", type=bounded(int, 1, MAX_FRAMES), default=120, metavar="N",
                    help=f"frames of one turn, for --kind sweep and orientation, 1 to {MAX_FRAMES} "
                         "(default: 120)")
     p.add_argument("--frames-per-step", type=bounded(int, 1, MAX_FRAMES_PER_STEP), default=None,
                    metavar="N", help="frames drawing each protocol step, for --kind "
                                      f"construction, 1 to {MAX_FRAMES_PER_STEP} (default: 8; "
-                                     "lecture: 16)")
+                                     "lecture: 12)")
     seconds = bounded(float, 0, MAX_SECONDS)
     p.add_argument("--pause", type=seconds, default=None, metavar="S",
                    help="seconds resting on each key result (V1-V4, the circles, the "
                         f"envelope), for --kind construction, 0 to {MAX_SECONDS:g} "
-                        "(default: 0.6; lecture: 1.5)")
+                        "(default: 1; lecture: 3)")
     p.add_argument("--hold", type=seconds, default=None, metavar="S",
                    help="seconds holding the finished diagram at the end, for --kind "
-                        f"construction, 0 to {MAX_SECONDS:g} (default: 1; lecture: 6, and "
+                        f"construction, 0 to {MAX_SECONDS:g} (default: 3; lecture: 6, and "
                         "long enough to read its caption)")
     p.add_argument("--caption-seconds", type=seconds, default=None, metavar="S",
                    help="least seconds each step's caption stays on screen (a still frame "
                         f"makes up the time), for --kind construction, 0 to {MAX_SECONDS:g} "
-                        "(default: 0; lecture: 2.5, and 1 s per 15 characters)")
+                        "(default: 2; lecture: 2.5, and 1 s per 15 characters)")
     p.add_argument("--circle", type=bounded(int, 1, 4), default=None, metavar="N",
                    help="for --kind sweep: only the circle on O V_N, 1 to 4, with the foot "
                         "H_N and its right angle (Thales, Fig. 3) (default: all four)")
@@ -259,7 +262,7 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     p.add_argument("--dpi", type=bounded(float, MIN_DPI, MAX_DPI), default=None, metavar="N",
                    action=_Checked,
                    help=f"resolution in dots per inch, {MIN_DPI:g} to {MAX_DPI:g}; pixels = "
-                        "inches x dpi (default: 80, 5x5.6 inches; lecture: 100, 12.8x7.2 "
+                        "inches x dpi (default: 80, 8x9 inches; lecture: 100, 12.8x7.2 "
                         f"inches, and at least {MIN_LECTURE_DPI:g})")
     p.add_argument("--theme", choices=("default", "paper"), default="default",
                    help="colour theme (default: default)")

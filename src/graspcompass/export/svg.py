@@ -113,6 +113,24 @@ def _arc_path(scene: Scene, m: _Map) -> str:
     return " ".join(parts) + " Z"
 
 
+_INSTRUMENT_DASH = {"bisector": ' stroke-dasharray="1.5,3"',
+                    "coordinate": ' stroke-dasharray="1.5,2"', "drop": ' stroke-dasharray="6,3"'}
+
+
+def _instruments(scene: Scene, m: _Map) -> list[str]:
+    """The compass arcs, right-angle marks and V_n's guides of the scene, thin
+    (:mod:`graspcompass.scene.instruments`); ``data-step`` names the step of each."""
+    out = []
+    for ins in scene.instruments:
+        color = COLORS.get(f"circle{ins.n}", COLORS["perp"]) if ins.role == "coordinate" \
+            else COLORS["perp"]
+        pts = " ".join(m(p) for p in ins.points)
+        out.append(f'<polyline class="instrument {ins.role}" data-step={quoteattr(ins.step)} '
+                   f'points="{pts}" fill="none" stroke="{color}" stroke-width="0.7"'
+                   f'{_INSTRUMENT_DASH.get(ins.role, "")}/>')
+    return out
+
+
 def _drawing(scene: Scene, m: _Map, tip: Callable[[str], str], pre: str) -> list[str]:
     """The object, the cones, the envelope, the lines, lengths and circles in ``m``."""
     out = []
@@ -137,6 +155,7 @@ def _drawing(scene: Scene, m: _Map, tip: Callable[[str], str], pre: str) -> list
         pts = " ".join(m(p) for p in cone)
         out.append(f'<polygon id="{pre}cone{i}" points="{pts}" fill="{COLORS["cone"]}" '
                    'fill-opacity="0.35" stroke="none"/>')
+    out += _instruments(scene, m)
     for name, role, a, b in scene.lines:
         dash = ' stroke-dasharray="6,3"' if role == "perp" else ""
         width = 1.0 if role == "perp" else 1.4

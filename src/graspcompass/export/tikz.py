@@ -138,6 +138,7 @@ def _styles(scene: Scene) -> list[str]:
         "  axis/.style={draw=gcaxis, line width=0.7pt},",
         "  side/.style={draw=gcside, line width=0.8pt},",
         "  perp/.style={draw=gcperp, line width=0.4pt, dash pattern=on 3pt off 1.5pt},",
+        "  instrument/.style={draw=gcperp, line width=0.3pt},",
         "  length/.style={draw=gclength, line width=0.4pt, ->},",
         "  thales/.style={line width=0.8pt, dash pattern=on 4pt off 2pt},",
         "  envelope/.style={draw=gcenvelope, line width=1.6pt, line join=round,",
@@ -234,6 +235,13 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     lengths = {n: (a, b) for n, a, b in scene.lengths}
     circles = {n: (k, c, r) for n, k, c, r in scene.circles}
     points = {n: xy for names, xy in scene.points for n in names}
+    tools: dict[str, list[str]] = {}  # the compass arcs, right angles, guides of each step
+    for ins in scene.instruments:
+        dash = {"bisector": ", dotted", "coordinate": f", dotted, draw=gccircle{ins.n}",
+                "drop": ", dashed"}.get(ins.role, "")
+        tools.setdefault(ins.step, []).append(
+            f"\\draw[instrument{dash}] " + " -- ".join(_xy(p) for p in ins.points)
+            + f"; % {ins.role}")
     for s in construction.steps:
         out.append(_comment(f"[{s.index}] {s.name} ({s.op}, {s.instrument}; {s.ref}): {s.caption}"))
         if s.kind != "envelope":
@@ -255,6 +263,7 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
         elif s.kind == "envelope" and scene.envelope:
             out.append(_comment("exact arcs: " + exact_text(s.obj)))
             out.append(_envelope_path(scene))
+        out += tools.get(s.name, [])
     out.append(_comment("points and their labels (coincident points share one label)"))
     for names, _ in scene.points:
         small = names[0] in scene.small

@@ -64,7 +64,8 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     W, H = fig.get_size_inches() * fig.dpi
     renderer = anim._canvas.get_renderer()
     px = fig.dpi / 72.0
-    title_pt = th.font_size * 0.8 * (1.3 if layout == "side" else 1.0)
+    title_pt = max(th.font_size * 0.8 * (1.3 if layout == "side" else 1.0),
+                   getattr(anim, "_least_pt", 0.0))
     title = fig.text(0.5, 1 - 0.012 * W / H, getattr(anim.construction.grasp, "title", None)
                      or "", ha="center", va="top", fontsize=title_pt)
     bar_h = max(0.012, 4.0 / H) if layout == "side" else 0.012

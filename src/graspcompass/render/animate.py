@@ -33,6 +33,8 @@ Step 13 of 0–46 · perpendicular
 from __future__ import annotations
 
 import math
+import re
+import textwrap
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -44,12 +46,13 @@ from matplotlib.text import Annotation, Text
 
 from ..scene.layout import numeric_objects, tex
 from ..scene.picture import scene_of
+from ._anim_camera import camera_box, step_boxes
 from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
 from ._anim_layout import _layout, _text_width, _wrap  # noqa: F401
 from ._anim_player import FrameAnimation
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
-from .timeline import Timeline, check_fps, reading_frames, save_frames
+from .timeline import Timeline, blend, check_fps, reading_frames, save_frames
 
 if TYPE_CHECKING:
     from ..construction.protocol import Construction, Step
@@ -60,10 +63,6 @@ __all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_constr
 #: Where the diagram axes start (figure fraction); the layout then moves them so that the
 #: longest caption fits below (``standard``) or beside (``lecture``) the diagram.
 AX_RECT = (0.1, 0.2, 0.86, 0.72)
-
-
-
-
 
 
 class ConstructionAnimation(FrameAnimation):
@@ -84,8 +83,11 @@ class ConstructionAnimation(FrameAnimation):
                  figsize: tuple[float, float] | None = None, dpi: float | None = None,
                  labels: bool = True, rate: str = "smoothstep", dim: float = 0.3,
                  quality: str | Quality = "standard", caption_seconds: float | None = None,
-                 reading_rate: float | None = None) -> None:
+                 reading_rate: float | None = None, camera: bool | None = None,
+                 title_seconds: float | None = None,
+                 min_text_px: float | None = None) -> None:
         q = self.quality = _quality(quality)
+        self.camera = q.camera if camera is None else bool(camera)
         fps = check_fps(q.fps if fps is None else fps)
         fpstep = q.frames_per_step if frames_per_step is None else frames_per_step
         pause = q.frames(q.pause_seconds, fps) if pause_frames is None else pause_frames
@@ -96,26 +98,49 @@ class ConstructionAnimation(FrameAnimation):
         self.reading_rate = q.reading_rate if reading_rate is None else reading_rate
         caption_pt = q.caption_size * theme.font_size / DEFAULT_THEME.font_size
         theme = theme.scaled(q.scale) if q.scale != 1 else theme
+        # every text at least q.min_text_px pixels high at this dpi (labels, captions, ticks)
+        least_px = q.min_text_px if min_text_px is None else float(min_text_px)
+        self._least_pt = least_px * 72.0 / float(dpi)
+        caption_pt = max(caption_pt, self._least_pt)
+        theme = theme.with_(font_size=max(theme.font_size, self._least_pt))
         self.construction, self.theme, self.dim = construction, theme, float(dim)
         steps = construction.steps
         self._texts = [self._caption_text(s) for s in steps]
         self._hold_text = self._caption_text(None)
         least = None
         if self.caption_seconds > 0 or self.reading_rate > 0:
+            # paced by step: a key step rests on its result after its caption is read
             least = [reading_frames(t, fps, self.caption_seconds, self.reading_rate)
-                     for t in self._texts]
+                     + (pause if s.key else 0) for t, s in zip(self._texts, steps)]
             if hold:
                 hold = max(hold, reading_frames(self._hold_text, fps, self.caption_seconds,
                                                 self.reading_rate))
+        title = q.title_seconds if title_seconds is None else float(title_seconds)
         timeline = Timeline.from_keys([s.key for s in steps], fpstep, pause, hold, rate,
-                                      least_frames=least)
+                                      least_frames=least, title_frames=q.frames(title, fps))
         super().__init__(Figure(figsize=figsize, dpi=dpi), timeline, fps)
         fig = self.figure
         self.axes = ax = fig.add_axes(AX_RECT)
         _layout(self, q.layout, caption_pt)
         self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=labels)
-        ax.tick_params(labelsize=theme.font_size * 0.7)
+        ax.tick_params(labelsize=max(theme.font_size * 0.7, self._least_pt))
         self._num = numeric_objects(construction)
+        box = scene_of(construction).box
+        self._whole = (box[0], box[1], box[2], box[3])
+        self._boxes = step_boxes(construction, self._num, self._whole,
+                                 scene_of(construction).instruments)
+        if self.camera:  # a zoomed view shows only what is inside it
+            for t in ax.texts:
+                if isinstance(t, Annotation):
+                    t.set_annotation_clip(True)
+                    t.set_clip_on(True)
+                    if t.arrow_patch is not None:
+                        t.arrow_patch.set_clip_box(ax.bbox)
+                        t.arrow_patch.set_clip_on(True)
+        self._card = fig.text(0.5, 0.5, self._card_text(), ha="center", va="center",
+                              fontsize=caption_pt * 1.3, linespacing=1.6, visible=False,
+                              zorder=20, bbox=dict(boxstyle="square,pad=40", fc="white",
+                                                   ec="none"))
         # each artist belongs to the first step naming it; a label shared by coincident
         # points ("O = O_M = Y_4") shows only the names made so far
         owners: dict[int, list[str]] = {}
@@ -158,10 +183,21 @@ class ConstructionAnimation(FrameAnimation):
         self._layer: tuple[Any, int, Any] | None = None
         self._dynamic = [a for items in self._items for a, _, _ in items]
         self._dynamic += [a for a, _, _ in self._shared]
-        self._dynamic += [*self._aids, self._caption, self._bar]
+        self._dynamic += [*self._aids, self._caption, self._bar, self._card]
+
+    def _card_text(self) -> str:
+        g = self.construction.grasp
+        head = "\n".join(textwrap.wrap(getattr(g, "title", None) or "", 56))
+        return ("The internal force diagram\nby ruler and compass\n\n"
+                + (head + "\n\n" if head else "")
+                + "Ito, Tanaka and Sasaki, Robotica 2012, §3.3")
 
     @staticmethod
     def _role(a: Artist, s: Step) -> str:
+        if (a.get_gid() or "").startswith("instrument:"):
+            return "instrument"
+        if a.get_gid() == "leader":
+            return "leader"
         if isinstance(a, Annotation) and a.arrow_patch is not None:
             return "arrow"
         if isinstance(a, Text):
@@ -174,12 +210,16 @@ class ConstructionAnimation(FrameAnimation):
         return "line" if s.kind == "line" and solid else "marker"
 
     def _label_parts(self, a: Any, names: list[str]) -> list[tuple[int, str]]:
-        """The parts of a shared label ``$A = B$``, each with the step making its point."""
+        """The parts of a shared label ``$A = B$`` or ``$A, B$``, each with the step making
+        its point."""
         index = {s.name: s.index for s in self.construction.steps}
         by_tex = {tex(n, math=False): n for n in names}
-        parts = a.get_text().strip("$").split(" = ")
-        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), p)
-                for p in parts]
+        # ``A = B`` coincide, ``A, B`` are apart but closer than a marker: each part keeps
+        # the separator before it
+        pieces = re.split(r"( = |, )", a.get_text().strip("$"))
+        seps, parts = ["", *pieces[1::2]], pieces[0::2]
+        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), sep + p)
+                for sep, p in zip(seps, parts)]
 
     # -- captions -----------------------------------------------------------------------------
     def _caption_text(self, s: Step | None) -> str:
@@ -229,7 +269,78 @@ class ConstructionAnimation(FrameAnimation):
         return self._fade_region
 
     def _still(self, frame: int) -> bool:
-        return self.timeline.at(frame).kind == "rest"
+        st = self.timeline.at(frame)
+        return st.kind == "rest" or (st.kind == "title" and frame > 0)
+
+    def iter_frames(self) -> Any:
+        """Every frame in order.  With the camera, a segment whose view is at rest is
+        blitted on a base drawn for that view; a segment whose view moves (and the title
+        card) is drawn in full; the stills repeated; the final hold a cross-fade."""
+        if not self.camera:
+            yield from super().iter_frames()
+            return
+        tl, canvas, last = self.timeline, self._canvas, None
+        dynamic = list(self._dynamic)
+        view: Any = None
+        base: Any = None
+
+        def full(f: int) -> np.ndarray:
+            for a in dynamic:
+                a.set_animated(False)
+            self._keys = [None] * len(self._keys)
+            self._apply(f)
+            canvas.draw()
+            for a in dynamic:
+                a.set_animated(True)
+            return self._buffer()
+
+        for a in dynamic:
+            a.set_animated(True)
+        try:
+            for i, seg in enumerate(tl.segments):
+                frames = tl.segment_range(i)
+                rows = self._crossfade(i)
+                if rows is not None and last is not None:
+                    end = full(frames[-1])
+                    yield from (blend(last, end, tl.at(f).progress, rows)
+                                for f in frames[:-1])
+                    yield end
+                    last, view = end, None
+                    continue
+                before = self._boxes[seg.step - 1] if seg.step > 0 else self._whole
+                if seg.kind == "title" or (seg.kind == "draw"
+                                           and before != self._boxes[seg.step]):
+                    for f in frames:
+                        if last is not None and self._still(f) and (
+                            f > frames.start or seg.kind == "rest"):
+                            yield last
+                            continue
+                        last = full(f)
+                        yield last
+                    view = None
+                    continue
+                box = camera_box(self._boxes, self._whole, seg.step, seg.kind, 1.0)
+                if box != view:  # a new base: the static artists in this view
+                    self._apply(frames.start)
+                    canvas.draw()
+                    base, view, self._layer = canvas.copy_from_bbox(self.figure.bbox), box, None
+                moving = {id(a) for a in self._movers(i)}
+                resting = [a for a in dynamic if id(a) not in moving]
+                movers = [a for a in dynamic if id(a) in moving]
+                background = self._background(i, frames, resting, base)
+                for f in frames:
+                    if last is not None and self._still(f) and (
+                            f > frames.start or seg.kind == "rest"):
+                        yield last
+                        continue
+                    self._apply(f)
+                    canvas.restore_region(background)
+                    self._draw(movers)
+                    last = self._buffer()
+                    yield last
+        finally:
+            for a in dynamic:
+                a.set_animated(False)
 
     def _background(self, segment: int, frames: range, resting: list[Artist], base: Any) -> Any:
         """Base, the earlier steps dimmed, the current step's inputs bright, the caption.
@@ -267,12 +378,18 @@ class ConstructionAnimation(FrameAnimation):
         steps = self.construction.steps
         inputs = set(steps[st.step].inputs)
         hold = st.kind == "hold"
+        title = st.kind == "title"
+        self._card.set_visible(title)
+        if self.camera:
+            b = camera_box(self._boxes, self._whole, st.step, st.kind, st.raw)
+            self.axes.set_xlim(b[0], b[1])
+            self.axes.set_ylim(b[2], b[3])
         for aid in self._aids:
             aid.set_visible(False)
         k = 0
         for i, items in enumerate(self._items):
             key: Any = None  # the current step: set at every frame, never cached
-            if i > st.step:
+            if i > st.step or title:
                 key = "hidden"
             elif i < st.step or hold:  # the hold shows the finished figure
                 key = "bright" if steps[i].name in inputs or hold else "dim"
@@ -292,20 +409,37 @@ class ConstructionAnimation(FrameAnimation):
             _restore(a, snap)
             # a name is shown once its point is marked (the stroke of its step is done)
             done = st.kind != "draw" or st.progress >= 1.0
-            shown = [p for i, p in parts if i < st.step or hold or (i == st.step and done)]
+            shown = [p for i, p in parts if not title and (
+                i < st.step or hold or (i == st.step and done))]
             if not shown:
                 a.set_visible(False)
                 continue
-            a.set_text("$" + " = ".join(shown) + "$")
+            a.set_text("$" + re.sub(r"^( = |, )", "", "".join(shown)) + "$")
             names = {steps[i].name for i, _ in parts}
             if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
                 _fade(a, snap, f)
-        self._caption.set_text(self.caption_at(frame))
-        made = 1.0 if hold else (st.step + (st.progress if st.kind == "draw" else 1.0))
+        if self.camera:  # a leader keeps its length in points: shorter in data when zoomed
+            z = (self._whole[1] - self._whole[0]) / (b[1] - b[0])
+            for a, role, snap in (x for items in self._items for x in items):
+                if role == "leader":
+                    (x0, x1), (y0, y1) = snap["data"]
+                    if isinstance(a, Line2D):
+                        a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
+        self._caption.set_text("" if title else self.caption_at(frame))
+        made = (1.0 if hold else 0.0 if title else
+                st.step + (st.progress if st.kind == "draw" else 1.0))
         self._bar.set_width(made if hold else made / len(steps))
 
     def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Step, kind: str,
                      p: float, raw: float) -> None:
+        if role == "instrument":  # the compass or the square drawn along its stroke
+            x, y = snap["data"]
+            m = max(1, math.ceil(min(p, 1.0) * len(x))) if kind == "draw" else len(x)
+            a.set_data(x[:m], y[:m])
+            return
+        if role == "leader":  # with its label, after its object's stroke
+            a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
+            return
         if role == "cone":  # after the stroke of its second side
             a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
             return
@@ -355,6 +489,8 @@ class ConstructionAnimation(FrameAnimation):
         """Dashed helper lines of a point: the dropped perpendicular, the bisected
         segment, the two coordinates of V_n (§3.3 step (3))."""
         v, num = self._num[step.name], self._num
+        if any(i.step == step.name for i in scene_of(self.construction).instruments):
+            return  # its instruments show it (graspcompass.scene.instruments)
         if step.op in ("foot", "midpoint"):
             a = num[step.inputs[0]]
             b = v if step.op == "foot" else num[step.inputs[1]]
@@ -373,7 +509,9 @@ def animate_construction(construction: Construction, fps: float | None = None,
                          labels: bool = True, rate: str = "smoothstep",
                          quality: str | Quality = "standard",
                          caption_seconds: float | None = None,
-                         reading_rate: float | None = None) -> ConstructionAnimation:
+                         reading_rate: float | None = None, camera: bool | None = None,
+                         title_seconds: float | None = None,
+                         min_text_px: float | None = None) -> ConstructionAnimation:
     """Animate the ruler-and-compass drawing of the internal force diagram (§3.3).
 
     Every value left out (None) comes from ``quality`` (:data:`~.theme.QUALITIES`):
@@ -405,6 +543,15 @@ def animate_construction(construction: Construction, fps: float | None = None,
         Each step lasts until its caption has been on screen ``caption_seconds``
         and ``len(caption) / reading_rate`` seconds (the rest is a still frame);
         0 turns a rule off.
+    camera : bool
+        The view follows the step being drawn (``render/_anim_camera.py``): it zooms
+        in on a step near O (X3, Y3, V3 of Fig. 6) and out for a far one (V1); the
+        whole diagram in the final hold.
+    title_seconds : float
+        A title card this long before the first step (0: none; lecture: 4 s).
+    min_text_px : float
+        Every text (captions, labels, ticks, title) at least this many pixels high at
+        the frame's ``dpi`` (default 14; 0: the theme's sizes as they are).
 
     Returns
     -------
@@ -425,4 +572,5 @@ def animate_construction(construction: Construction, fps: float | None = None,
                                  pause_frames=pause_frames, hold_frames=hold_frames,
                                  theme=theme, figsize=figsize, dpi=dpi, labels=labels, rate=rate,
                                  quality=quality, caption_seconds=caption_seconds,
-                                 reading_rate=reading_rate)
+                                 reading_rate=reading_rate, camera=camera,
+                                 title_seconds=title_seconds, min_text_px=min_text_px)

@@ -85,6 +85,46 @@ def _draw_givens(ax: Axes, construction: Construction, scene: Scene, theme: Them
         out[f"cone{i}"] = [ax.add_patch(poly)]
 
 
+#: The instruments' looks (:mod:`graspcompass.scene.instruments`): thin, under the points, in
+#: colours of at least 3 : 1 against white (a dimmed copy keeps it: render/_anim_ink.py).
+_INSTRUMENT_STYLE: dict[str, dict[str, Any]] = {
+    "bisector": dict(ls=(0, (1, 2))), "coordinate": dict(ls=(0, (1, 1.5))),
+    "drop": dict(ls=(0, (4, 2))),
+}
+
+
+def _corner() -> Any:
+    from matplotlib.path import Path
+
+    return Path([(0.0, 1.0), (0.0, 0.0), (1.0, 0.0)], [Path.MOVETO, Path.LINETO, Path.LINETO])
+
+
+_CORNER = _corner()
+
+
+def _draw_instruments(ax: Axes, scene: Scene, theme: Theme,
+                      out: dict[str, list[Artist]], shrink: float = 1.0) -> None:
+    """The scene's compass arcs, right-angle marks and the guides of V_n, thin and faint.
+
+    Each artist goes with the step it belongs to (its gid ``instrument:ROLE``), so
+    that a picture cut at a step, and the animation, show it with that step.
+    ``shrink`` scales the right-angle marks about their corners (a zoomed view).
+    """
+    for ins in scene.instruments:
+        xy = np.asarray(ins.points, dtype=float)
+        if ins.role == "right_angle" and shrink != 1.0:
+            corner = xy[0] + xy[2] - xy[1]
+            xy = corner + shrink * (xy - corner)
+        color = (theme.circle_color(ins.n) if ins.role == "coordinate" else
+                 theme.construction_color)
+        kw: dict[str, Any] = dict(color=color, lw=theme.thin_width, zorder=2.3,
+                                  solid_capstyle="butt")
+        kw.update(_INSTRUMENT_STYLE.get(ins.role, {}))
+        (art,) = ax.plot(xy[:, 0], xy[:, 1], **kw)
+        art.set_gid(f"instrument:{ins.role}")
+        out.setdefault(ins.step, []).append(art)
+
+
 def _draw_line(ax: Axes, name: str, step: Step, line: Any, box: Any, theme: Theme,
                hl: dict[str, Any]) -> list[Artist]:
     seg = clip_line(line[0], line[1], box)
@@ -213,6 +253,9 @@ def draw_construction(construction: Construction, step: int | None = None, ax: A
     ax.apply_aspect()
     out: dict[str, list[Artist]] = {}
     _draw_givens(ax, construction, scene, theme, out)
+    instruments: dict[str, list[Artist]] = {}
+    _draw_instruments(ax, scene, theme, instruments,
+                      (lim[1] - lim[0]) / (box[1] - box[0]))
     last = state.steps[-1].name if highlight_last else None
     for s in state.steps:
         v = num[s.name]
@@ -244,6 +287,8 @@ def draw_construction(construction: Construction, step: int | None = None, ax: A
                            lw=theme.envelope_width, zorder=4, solid_joinstyle="round",
                            label=r"envelope: $k_{grasp}(\theta)$, eq. (25)")
             out[s.name] = [*line, ax.add_patch(fill)]
+    for name, arts in instruments.items():  # after the step's own artists
+        out.setdefault(name, []).extend(arts)
     if show_computer_plot and construction.grasp is not None:
         out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
     if labels:
@@ -265,8 +310,10 @@ def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artis
         if lab.leader:  # a thin line from the point to its label set far away
             x0, y0, x1, y1 = lab.box
             near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
-            ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]], color=theme.label_color,
-                    lw=0.5, zorder=5.5)
+            (leader,) = ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]],
+                                color=theme.label_color, lw=0.5, zorder=5.5, gid="leader")
+            for n in lab.names:  # made with its label, not before
+                out.setdefault(n, []).append(leader)
         text = ax.annotate(f"${lab.tex()}$", lab.point, xytext=lab.offset,
                            textcoords="offset points", ha=_HA[lab.direction[0]],
                            va=_VA[lab.direction[1]], fontsize=theme.font_size,
@@ -345,7 +392,8 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
     handles, names = [*handles, *_legend_extra(construction, step, theme)[0]], \
         [*names, *_legend_extra(construction, step, theme)[1]]
     if handles:
-        fig.legend(handles, names, loc="lower center", ncol=2, frameon=False,
+        fig.legend(handles, names, loc="lower center", ncol=3 if len(handles) > 12 else 2,
+                   frameon=False,
                    fontsize=theme.font_size * 0.85)
     return fig
 
@@ -373,6 +421,7 @@ def _legend_extra(construction: Construction, step: int | None, theme: Theme
 
     state = construction if step is None else construction.upto(step)
     roles = {s.role for s in state.steps} | {s.op for s in state.steps}
+    drawn = {i.role for i in scene_of(construction).upto(step).instruments}
     kinds = {s.kind for s in state.steps}
     out: list[tuple[Artist, str]] = []
     if shape_extent(getattr(construction.grasp, "shape", None)) is not None:
@@ -381,6 +430,19 @@ def _legend_extra(construction: Construction, step: int | None, theme: Theme
     if "perpendicular" in roles:
         out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
                            ls=(0, (4, 2))), "perpendiculars to the cone sides"))
+    arcs = [w for r, w in (("bisection_arc", "bisection"), ("measure_arc", "lengths taken"),
+                           ("transfer_arc", "carried from $O$")) if r in drawn]
+    if arcs:
+        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width),
+                    "compass arcs: " + ", ".join(arcs)))
+    if "coordinate" in drawn:
+        out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
+                           ls=(0, (1, 1.5))), "$V_n$ from its coordinates $-O_MX_n$, "
+                    "$-OY_n$"))
+    if "right_angle" in drawn:
+        out.append((Line2D([], [], ls="none", marker=_CORNER, ms=7, mfc="none",
+                           mew=theme.thin_width * 1.5, color=theme.construction_color),
+                    "right angles"))
     if "length" in kinds:
         out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
                            marker=">", ms=4), "signed lengths $O_MX_n$, $OY_n$"))

@@ -6,10 +6,12 @@ in the style of the paper's hand drawings (Figs. 4-7 of Ito, Tanaka and
 Sasaki, Robotica 2012), where the four circles are told apart by their dashes.
 
 The animations come in two :class:`Quality` presets (:data:`QUALITIES`):
-``standard`` (small, quick: the main job, notebooks) and ``lecture`` (for a
-projector: 1280 × 720 pixels, captions in a side panel at 20 pt, each caption
-on screen for at least 2.5 s and longer by its length, lines and labels 1.6 ×
-larger).  The earlier steps of the construction are dimmed, but never below
+``standard`` (the main job, notebooks: 640 × 720 pixels, every text at least
+14 pixels high, each caption on screen at least 2 s) and ``lecture`` (for a
+projector: 1280 × 720 pixels, a title card, captions in a side panel at 20 pt,
+each caption on screen for at least 2.5 s and longer by its length, key steps
+3 s longer, lines and labels 1.6 × larger).  Both have a camera that follows
+the step being drawn.  The earlier steps of the construction are dimmed, but never below
 the contrast of :data:`MIN_CONTRAST` against the background (WCAG 2.1:
 3 : 1 for lines and markers, 4.5 : 1 for text; :func:`contrast_ratio`).
 """
@@ -219,6 +221,12 @@ class Quality:
     layout: str
     caption_size: float
     scale: float
+    #: a title card this long before the first step (0: none)
+    title_seconds: float = 0.0
+    #: the camera follows the step being drawn (zooms in on a crowded step)
+    camera: bool = True
+    #: least height in pixels of every text of the frame (captions, labels, ticks)
+    min_text_px: float = 14.0
 
     def frames(self, seconds: float, fps: float | None = None) -> int:
         """``seconds`` as a whole number of frames at ``fps`` (default: this quality's).
@@ -231,12 +239,12 @@ class Quality:
 
 #: The animation presets by name (``graspcompass animate --quality``).
 QUALITIES: dict[str, Quality] = {
-    "standard": Quality("standard", figsize=(5.0, 5.6), sweep_figsize=(9.6, 5.0), dpi=80.0,
-                        fps=20.0, frames_per_step=8, pause_seconds=0.6, hold_seconds=1.0,
-                        caption_seconds=0.0, reading_rate=0.0, layout="below",
-                        caption_size=8.5, scale=1.0),
+    "standard": Quality("standard", figsize=(8.0, 9.0), sweep_figsize=(9.6, 5.0), dpi=80.0,
+                        fps=10.0, frames_per_step=8, pause_seconds=1.0, hold_seconds=3.0,
+                        caption_seconds=2.0, reading_rate=0.0, layout="below",
+                        caption_size=13.0, scale=1.3),
     "lecture": Quality("lecture", figsize=(12.8, 7.2), sweep_figsize=(12.8, 7.2), dpi=100.0,
-                       fps=15.0, frames_per_step=12, pause_seconds=1.5, hold_seconds=6.0,
+                       fps=15.0, frames_per_step=12, pause_seconds=3.0, hold_seconds=6.0,
                        caption_seconds=2.5, reading_rate=15.0, layout="side",
-                       caption_size=20.0, scale=1.6),
+                       caption_size=20.0, scale=1.6, title_seconds=4.0),
 }

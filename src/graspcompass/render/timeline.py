@@ -4,8 +4,8 @@ A :class:`Timeline` is plain data: consecutive :class:`Segment` s
 ``(step, frames, kind)``, ``kind`` being ``"draw"`` (a step's object is being
 drawn), ``"pause"`` (resting on a key result: V_n, a circle on O V_n of
 eq. (31), the envelope of eq. (25)), ``"rest"`` (the finished step stays on
-screen, unchanged, until its caption has been read: :func:`reading_frames`)
-or ``"hold"`` (the finished diagram).
+screen, unchanged, until its caption has been read: :func:`reading_frames`),
+``"hold"`` (the finished diagram) or ``"title"`` (a title card before the first step).
 :meth:`Timeline.at` maps a frame to a :class:`FrameState` (step, kind,
 progress in [0, 1], eased by a rate function of :data:`RATES` while drawing).
 It knows nothing of matplotlib or of the geometry, so the same timeline gives
@@ -54,7 +54,7 @@ __all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFound
            "write_mp4", "write_png"]
 
 #: Kinds of segment.
-KINDS = ("draw", "pause", "rest", "hold")
+KINDS = ("draw", "pause", "rest", "hold", "title")
 #: File extensions an animation is written to.
 OUTPUT_FORMATS = _anim_files.OUTPUT_FORMATS
 
@@ -153,8 +153,12 @@ class Timeline:
     @classmethod
     def from_keys(cls, keys: Sequence[bool], frames_per_step: int = 8, pause_frames: int = 12,
                   hold_frames: int = 20, rate: str = "smoothstep",
-                  least_frames: Sequence[int] | None = None) -> Timeline:
+                  least_frames: Sequence[int] | None = None,
+                  title_frames: int = 0) -> Timeline:
         """A draw segment per step, a pause after each key step, a hold at the end.
+
+        ``title_frames`` (optional): a title card of that many frames first (kind
+        ``"title"``, of step 0, nothing of the construction drawn).
 
         ``least_frames[i]`` (optional): the fewest frames step ``i`` lasts (its caption's
         reading time, :func:`reading_frames`); a rest segment makes up the difference.
@@ -169,7 +173,7 @@ class Timeline:
         if least_frames is not None and len(least_frames) != len(keys):
             raise AnimationError(f"least_frames has {len(least_frames)} entries for "
                                  f"{len(keys)} steps")
-        segs = []
+        segs = [Segment(0, int(title_frames), "title")] if title_frames > 0 and keys else []
         for i, key in enumerate(keys):
             segs.append(Segment(i, frames_per_step, "draw"))
             pause = pause_frames if key else 0
@@ -221,7 +225,7 @@ class Timeline:
 
     def frames_of_step(self, step: int) -> range:
         """Every frame of ``step``: its draw, pause and (last step) hold segments."""
-        idx = [i for i, s in enumerate(self.segments) if s.step == step]
+        idx = [i for i, s in enumerate(self.segments) if s.step == step and s.kind != "title"]
         if not idx:
             raise AnimationError(f"step {step} is not on this timeline")
         return range(self.starts[idx[0]], self.segment_range(idx[-1]).stop)
@@ -232,7 +236,8 @@ class Timeline:
 
     def last_frame_of_step(self, step: int) -> int:
         """The last frame of the step's draw and pause segments (before a hold)."""
-        idx = [i for i, s in enumerate(self.segments) if s.step == step and s.kind != "hold"]
+        idx = [i for i, s in enumerate(self.segments)
+               if s.step == step and s.kind not in ("hold", "title")]
         return self.segment_range(idx[-1]).stop - 1 if idx else self.frames_of_step(step)[-1]
 
 

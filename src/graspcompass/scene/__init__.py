@@ -12,6 +12,8 @@ Modules
 -------
 layout
     Float values of the objects (computed once), the view box, clipping, wedges.
+instruments
+    Compass arcs, right-angle marks and the guides of V_n, by role.
 labelling
     Greedy label placement in points.
 palette
@@ -24,9 +26,10 @@ from __future__ import annotations
 
 from .._lazy import attach
 
-__all__ = ["Label", "Scene", "build_scene", "labelling", "layout", "palette", "picture",
-           "scene_of"]
+__all__ = ["Instrument", "Label", "Scene", "build_scene", "instruments", "labelling",
+           "layout", "palette", "picture", "scene_of"]
 
 __getattr__, __dir__ = attach(__name__, {
-    "Label": "picture", "Scene": "picture", "build_scene": "picture", "scene_of": "picture",
+    "Instrument": "instruments", "instruments": "instruments", "Label": "picture",
+    "Scene": "picture", "build_scene": "picture", "scene_of": "picture",
     "labelling": "labelling", "layout": "layout", "palette": "palette", "picture": "picture"})

@@ -29,6 +29,7 @@ from ..construction.describe import describe
 from ..geometry.numeric import to_float
 from . import fit as fitting
 from . import labelling, layout
+from .instruments import Instrument, instruments_of
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
 
@@ -36,9 +37,8 @@ if TYPE_CHECKING:
     from ..construction.protocol import Construction
     from ..grasp import Grasp
 
-__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Label", "Scene", "build_scene", "exact_text",
-           "group_points",
-           "label_tex", "scene_of"]
+__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Instrument", "Label", "Scene", "build_scene",
+           "exact_text", "group_points", "label_tex", "scene_of"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -147,6 +147,8 @@ class Scene:
     step: int | None = None
     #: the zoomed view of the crowded region, if points crowd
     inset: Inset | None = None
+    #: the compass arcs, right-angle marks and guides (:mod:`graspcompass.scene.instruments`)
+    instruments: tuple[Instrument, ...] = ()
 
     def label_of(self, name: str) -> Label | None:
         """The label of the group of points whose first name is ``name``, or None."""
@@ -192,6 +194,7 @@ class Scene:
                        lengths=tuple(x for x in self.lengths if ok(x[0])),
                        circles=tuple(x for x in self.circles if ok(x[0])),
                        points=tuple(pts), labels=labels, cones=cones, inset=inset,
+                       instruments=tuple(x for x in self.instruments if ok(x.step)),
                        envelope=self.envelope if ok("envelope") else ())
 
 
@@ -300,7 +303,8 @@ def build_scene(construction: Construction, title: str | None = None,
                             circles, envelope,
                             [xy for names, xy in grouped if names[0] in small] + cusps)
     return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
-                 tuple(cones), outline, text, frozenset(small), labels, made, inset=inset)
+                 tuple(cones), outline, text, frozenset(small), labels, made, inset=inset,
+                 instruments=instruments_of(construction, num, box))
 
 
 _SCENES: dict[int, tuple[Any, Scene]] = {}

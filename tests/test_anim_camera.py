@@ -1,0 +1,124 @@
+"""The default animation legible at its size, the camera, the title card, MP4 (issue 23).
+
+Sizes from the frame itself (font size in points × dpi / 72), durations from frame counts
+and fps, where the camera looks from the axes' limits after a frame is set; the points'
+places from the paper's printed numbers of Fig. 6 (§4.1)."""
+
+from __future__ import annotations
+
+import math
+import os
+from itertools import pairwise
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import pytest
+from matplotlib.text import Text
+
+from graspcompass import Grasp, internal_force_diagram
+from graspcompass.render.animate import animate_construction
+
+S3 = math.sqrt(3)
+#: Fig. 6 (§4.1): V1 = (−1 − √3, −3/2 − √3), V3 = (1 − √3, √3 − 3/2), X3, Y3 near O.
+V1 = (-1 - S3, -1.5 - S3)
+V3 = (1 - S3, S3 - 1.5)
+
+
+@pytest.fixture(scope="module")
+def fig6():
+    return internal_force_diagram(Grasp.preset("fig6"))
+
+
+@pytest.fixture(scope="module")
+def gif(fig6):
+    return animate_construction(fig6)  # the default: the main job's GIF
+
+
+def _texts(anim):
+    fig = anim.figure
+    out = [t for t in fig.findobj(Text) if t.get_text().strip()]
+    return out
+
+
+def test_default_gif_text_is_at_least_14_px(gif):
+    fig = gif.figure
+    w, h = fig.get_size_inches() * fig.dpi
+    assert w >= 600 and h >= 600
+    gif.render(gif.timeline.last_frame_of_step(29))  # ticks, labels and caption all set
+    texts = _texts(gif)
+    assert len(texts) > 10
+    for t in texts:
+        px = t.get_fontsize() * fig.dpi / 72.0
+        assert px >= 14.0 - 1e-9, (t.get_text(), px)
+
+
+def test_default_gif_shows_each_caption_two_seconds(fig6, gif):
+    for s in fig6.steps:
+        assert gif.caption_seconds_of_step(s.index) >= 2.0 - 1e-9, s.name
+
+
+def _view(anim, frame):
+    anim._apply(frame)
+    (x0, x1), (y0, y1) = anim.axes.get_xlim(), anim.axes.get_ylim()
+    return x0, x1, y0, y1
+
+
+def test_camera_zooms_in_on_v3_and_out_for_v1(fig6, gif):
+    whole = _view(gif, gif.frame_count - 1)  # the hold: the whole diagram
+    span = whole[1] - whole[0]
+    for name, point in (("X3", None), ("Y3", None), ("V3", V3), ("V1", V1)):
+        f = gif.timeline.last_frame_of_step(fig6.step(name).index)
+        b = _view(gif, f)
+        if point is None:
+            point = tuple(float(c) for c in (fig6[name].x, fig6[name].y))
+        assert b[0] < point[0] < b[1] and b[2] < point[1] < b[3], name
+        zoom = span / (b[1] - b[0])
+        if name == "V1":
+            assert zoom == pytest.approx(1.0)  # out: V1 is far from O
+        else:
+            assert zoom >= 2.0, (name, zoom)  # in: X3, Y3, V3 lie within one unit of O
+
+
+def test_camera_glides_without_jumps(fig6, gif):
+    tl = gif.timeline
+    step = fig6.step("V3").index
+    frames = [f for f in range(tl.frames_of_step(step - 1)[0], tl.frames_of_step(step)[-1])]
+    widths = [(lambda b: b[1] - b[0])(_view(gif, f)) for f in frames]
+    ratios = [max(a, b) / min(a, b) for a, b in pairwise(widths)]
+    assert max(ratios) < 1.6
+
+
+def test_lecture_starts_with_a_title_card(fig6):
+    lec = animate_construction(fig6, quality="lecture", frames_per_step=2)
+    tl = lec.timeline
+    assert tl.segments[0].kind == "title"
+    assert tl.segments[0].frames / lec.fps >= 3.0
+    lec._apply(0)
+    card = [t for t in lec.figure.texts if t.get_visible() and "ruler and compass" in
+            t.get_text()]
+    assert card
+    drawn = [a for items in lec._items for a, _, _ in items if a.get_visible()]
+    assert not drawn
+    # paced by step: each caption stays its reading time (2.5 s, or 15 characters a
+    # second: issue 12), a key step (V_n, a circle, the envelope) 3 s longer
+    for st in fig6.steps:
+        text = lec.caption_at(tl.frames_of_step(st.index)[0])
+        read = max(2.5, len(text) / 15.0) + (3.0 if st.key else 0.0)
+        assert lec.caption_seconds_of_step(st.index) == pytest.approx(
+            read, abs=1.01 / lec.fps) or st.index == len(fig6.steps) - 1, st.name
+
+
+def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
+    imageio_ffmpeg = pytest.importorskip("imageio_ffmpeg", reason="the mp4/test extra")
+    empty = tmp_path / "bin"
+    empty.mkdir()
+    monkeypatch.setenv("PATH", str(empty))  # no ffmpeg on the PATH
+    anim = animate_construction(fig6, frames_per_step=1, pause_frames=0, hold_frames=1,
+                                caption_seconds=0, figsize=(4, 4.4), dpi=40,
+                                min_text_px=0)
+    path = anim.save(tmp_path / "c.mp4", quiet=True)
+    frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
+    assert frames == anim.frame_count
+    assert os.path.getsize(path) > 1000
