@@ -26,20 +26,32 @@ from typing import Any
 
 import numpy as np
 
-from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample, text_size
+from . import metrics
+from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample
 
-__all__ = ["CROWD", "FITS", "MARGIN", "Fit", "crowded_region", "fit", "leader"]
+__all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "Fit", "crowded_region", "fit",
+           "label_box", "leader"]
 
-#: The distances tried, in units of the marker's radius plus the gap (the first two are
-#: :data:`graspcompass.scene.labelling.FAR`); from the third on a leader line is drawn.
-FITS = (1.0, 2.0, 3.0, 4.5, 6.5, 9.0)
+#: The directions from the point to the label's box tried, in order of preference: the
+#: eight of :data:`~.labelling.OFFSETS` (NE, NW, SE, SW, N, S, E, W), then every 15°
+#: between them (the steeper ones first).
+DIRECTIONS = tuple((dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)) for dx, dy in OFFSETS) + \
+    tuple((math.cos(math.radians(a)), math.sin(math.radians(a)))
+          for a in sorted(set(range(0, 360, 15)) - set(range(0, 360, 45)),
+                          key=lambda a: (abs(math.sin(math.radians(a))) < 0.5, a)))
+
+#: The distances tried from the point to the label's box, in units of the marker's radius
+#: plus the gap.
+FITS = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.5, 6.5, 9.0)
+#: From this distance of :data:`FITS` on a leader line joins label and point.
+LEADER = 3.0
 #: The crowd rule of :func:`crowded_region`: a point is crowded when ``count`` other
 #: markers lie within ``radius`` of the frame's side from it.
 CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.45}
 #: Safety margins (points) of the rules: a label's box is grown by ``grow`` on each side
 #: (and its width by the factor ``wide``) against the others and the markers; a label must
 #: be nearer its own point than any other by ``nearer``.
-MARGIN: dict[str, float] = {"grow": 1.5, "wide": 1.12, "nearer": 2.0, "marker": 1.5}
+MARGIN: dict[str, float] = {"grow": 1.5, "wide": 1.12, "nearer": 2.0, "marker": 0.75}
 
 
 @dataclass(frozen=True)
@@ -96,29 +108,26 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
     r = marker_size / 2 + MARGIN["marker"]
     markers = np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r,
                                every[:, 1] + r]) if len(every) else np.zeros((0, 4))
-    sizes = [text_size(t, font_size) for t in texts]
+    sizes = [label_box(t, font_size) for t in texts]
     curve = resample([c for c in curves if len(c)], RESAMPLE_PT) if len(curves) else \
         np.zeros((0, 2))
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
     placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Fit | None] = [None] * len(texts)
-    g, wide = MARGIN["grow"], MARGIN["wide"]
+    g = MARGIN["grow"]
     for i in order:
         px, py = pts[i]
         w, h = sizes[i]
         others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) > 1e-6]
         best: tuple[float, Fit] | None = None
-        rank = 0
         for k, far in enumerate(FITS):
             d = (marker_size / 2 + gap) * far
-            for dx, dy in OFFSETS:
-                rank += 1
-                x0 = px + dx * d - (w if dx < 0 else w / 2 if dx == 0 else 0)
-                y0 = py + dy * d - (h if dy < 0 else h / 2 if dy == 0 else 0)
-                box = np.array([x0, y0, x0 + w, y0 + h])
-                cx = (box[0] + box[2]) / 2
-                big = np.array([cx - wide * w / 2 - g, y0 - g, cx + wide * w / 2 + g, y0 + h + g])
+            for rank, (ux, uy) in enumerate(DIRECTIONS):
+                t = min(w / 2 / abs(ux) if ux else math.inf, h / 2 / abs(uy) if uy else math.inf)
+                cx, cy = px + ux * (d + t), py + uy * (d + t)
+                box = np.array([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2])
+                big = box + np.array([-g, -g, g, g])
                 bad = 0.0
                 bad += 100.0 * _hits(big, np.array(placed).reshape(-1, 4))
                 bad += 100.0 * _hits(big, markers)
@@ -129,15 +138,20 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
                 if frame is not None:
                     bad += 100.0 * (box[0] < frame[0] or box[1] < frame[1]
                                     or box[2] > frame[2] or box[3] > frame[3])
-                soft = rank * 0.5
+                soft = 10.0 * k + 0.5 * rank
                 if len(curve):
                     inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
                               & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
                     soft += 1.5 * float(inside.sum())
                 score = bad * 1000.0 + soft
-                f = Fit((float(dx * d), float(dy * d)), (int(dx), int(dy)),
-                        tuple(float(v) for v in box), k >= 2, bad == 0.0)  # type: ignore[arg-type]
                 if best is None or score < best[0]:
+                    dx = int(np.sign(ux)) if abs(ux) > 0.3 else 0
+                    dy = int(np.sign(uy)) if abs(uy) > 0.3 else 0
+                    ax = box[0] if dx > 0 else box[2] if dx < 0 else cx
+                    ay = box[1] if dy > 0 else box[3] if dy < 0 else cy
+                    f = Fit((float(ax - px), float(ay - py)), (dx, dy),
+                            tuple(float(v) for v in box), far >= LEADER,  # type: ignore[arg-type]
+                            bad == 0.0)
                     best = (score, f)
         assert best is not None
         f = best[1]
@@ -146,6 +160,18 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         placed.append(np.asarray(f.box))
         out[i] = f
     return out
+
+
+def label_box(text: str, font_size: float) -> tuple[float, float]:
+    """``(width, height)`` of a label's box: its drawn text (:mod:`.metrics`), in points.
+
+    Examples
+    --------
+    >>> [round(v, 2) for v in label_box("$O$", 10.0)]
+    [7.87, 11.64]
+    """
+    w, up, down = metrics.extent(text, font_size)
+    return w, up + down
 
 
 def crowded_region(anchors: Sequence[tuple[float, float]] | np.ndarray,
