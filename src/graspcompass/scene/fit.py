@@ -29,8 +29,8 @@ import numpy as np
 from . import metrics
 from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample
 
-__all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "Fit", "crowded_region", "fit",
-           "label_box", "leader"]
+__all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "REORDER", "Fit",
+           "crowded_region", "fit", "label_box", "leader"]
 
 #: The directions from the point to the label's box tried, in order of preference: the
 #: eight of :data:`~.labelling.OFFSETS` (NE, NW, SE, SW, N, S, E, W), then every 15°
@@ -49,9 +49,11 @@ LEADER = 3.0
 #: markers lie within ``radius`` of the frame's side from it.
 CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.45}
 #: Safety margins (points) of the rules: a label's box is grown by ``grow`` on each side
-#: (and its width by the factor ``wide``) against the others and the markers; a label must
-#: be nearer its own point than any other by ``nearer``.
-MARGIN: dict[str, float] = {"grow": 1.5, "wide": 1.12, "nearer": 2.0, "marker": 0.75}
+#: against the others and the markers (a marker's by ``marker``); a label must be nearer
+#: its own point than any other by ``nearer``.
+#: How many times :func:`fit` places the labels again, those that found no place first.
+REORDER = 1
+MARGIN: dict[str, float] = {"grow": 1.0, "nearer": 1.0, "marker": 0.75}
 
 
 @dataclass(frozen=True)
@@ -113,13 +115,33 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         np.zeros((0, 2))
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
+    best_out: list[Fit | None] | None = None
+    for _ in range(REORDER + 1):  # the labels that found no place first, again
+        out = _greedy(order, pts, every, markers, sizes, curve, frame, marker_size, gap,
+                      optional, avoid)
+        fails = [i for i in order if out[i] is None or not out[i].ok]  # type: ignore[union-attr]
+        if best_out is None or len(fails) < sum(f is None or not f.ok for f in best_out):
+            best_out = out
+        if not fails:
+            break
+        order = fails + [i for i in order if i not in fails]
+    return best_out
+
+
+def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.ndarray,
+            sizes: list[tuple[float, float]], curve: np.ndarray,
+            frame: tuple[float, float, float, float] | None, marker_size: float, gap: float,
+            optional: Sequence[bool], avoid: Sequence[tuple[float, float, float, float]]
+            ) -> list[Fit | None]:
+    """The labels placed one by one in ``order``, each where it breaks the fewest rules."""
     placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
-    out: list[Fit | None] = [None] * len(texts)
+    out: list[Fit | None] = [None] * len(sizes)
     g = MARGIN["grow"]
     for i in order:
         px, py = pts[i]
         w, h = sizes[i]
-        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) > 1e-6]
+        # a marker over the point's own marker is its place too (one place to the eye)
+        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) >= marker_size]
         best: tuple[float, Fit] | None = None
         for k, far in enumerate(FITS):
             d = (marker_size / 2 + gap) * far

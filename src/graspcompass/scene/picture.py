@@ -32,9 +32,8 @@ from . import labelling, layout
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
 
-__all__ = ["COLORS", "INSET_PT", "INSET_SHRINK", "Arc", "Inset", "Label", "Scene", "build_scene", "exact_text",
-           "group_points",
-           "label_tex", "scene_of"]
+__all__ = ["COLORS", "INSET_PT", "INSET_SHRINK", "Arc", "Inset", "Label", "Scene",
+           "build_scene", "exact_text", "group_points", "label_tex", "scene_of"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -43,7 +42,7 @@ Box = tuple[float, float, float, float]
 COLORS = PALETTE
 #: Side in points of the zoomed inset's square frame (the main one is
 #: :data:`graspcompass.scene.labelling.FRAME_PT`), its labels at the same font size.
-INSET_PT = 1.0 * labelling.FRAME_PT
+INSET_PT = 1.25 * labelling.FRAME_PT
 #: The sides of the inset tried, as fractions of the crowded region's
 #: (:func:`graspcompass.scene.fit.crowded_region`): a smaller one zooms in further where
 #: a label has no place that keeps every rule.
@@ -378,11 +377,14 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
                     for i in idx}
         text_of = {i: "$" + ", ".join(" = ".join(label_tex(n) for n in order[j][0])
                                       for j in joined[i]) + "$" for i in idx}
+        # the other points of a label's group: markers no label covers
+        members = [anchors[j] for i in idx for j in joined[i] if j != i]
         fits = fitting.fit(to_pt([anchors[i] for i in idx], frame, scale),
                            [text_of[i] for i in idx],
                            curves=[to_pt(c, frame, scale) for c in curves],
                            frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
-                           obstacles=to_pt(obstacles, frame, scale),
+                           obstacles=np.vstack([to_pt(obstacles, frame, scale),
+                                                to_pt(members, frame, scale)]),
                            optional=[optional[i] for i in idx],
                            avoid=[((b[0] - frame[0]) * scale, (b[1] - frame[2]) * scale,
                                    (b[2] - frame[0]) * scale, (b[3] - frame[2]) * scale)
