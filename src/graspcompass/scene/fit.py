@@ -14,7 +14,7 @@ Examples
 --------
 >>> (p,) = fit([(100.0, 100.0)], ["$O$"], frame=(0.0, 0.0, 200.0, 200.0))
 >>> p.direction, p.leader
-((1, 1), False)
+((0, 1), False)
 """
 
 from __future__ import annotations
@@ -167,8 +167,9 @@ def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.nd
                     soft += 1.5 * float(inside.sum())
                 score = bad * 1000.0 + soft
                 if best is None or score < best[0]:
-                    dx = int(np.sign(ux)) if abs(ux) > 0.3 else 0
-                    dy = int(np.sign(uy)) if abs(uy) > 0.3 else 0
+                    # the side of the point the whole box is on (0: across it)
+                    dx = 1 if box[0] >= px else -1 if box[2] <= px else 0
+                    dy = 1 if box[1] >= py else -1 if box[3] <= py else 0
                     ax = box[0] if dx > 0 else box[2] if dx < 0 else cx
                     ay = box[1] if dy > 0 else box[3] if dy < 0 else cy
                     f = Fit((float(ax - px), float(ay - py)), (dx, dy),
