@@ -295,8 +295,14 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
         unit = _WIDTH_CM * INSET_PT / FRAME_PT / (z[1] - z[0])
         out.append(_comment(f"zoomed inset of the crowded region, "
                             f"{unit / (_WIDTH_CM / (box[1] - box[0])):.1f} times larger"))
-        out.append(f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, "
-                   "line cap=round]")
+        main_unit = _WIDTH_CM / (box[1] - box[0])
+        if standalone:  # the styles are global (\tikzset)
+            out.append(f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, "
+                       "line cap=round]")
+        else:  # the styles of the diagram's picture, in the inset's unit
+            out += "\n".join(_styles(scene)[len(COLORS):]).replace(
+                f"x={_num(main_unit)}cm, y={_num(main_unit)}cm",
+                f"x={_num(unit)}cm, y={_num(unit)}cm", 1).split("\n")
         out += _body(scene, construction, z, pad)
         out += _points(scene, inset.labels, z)
         out.append(f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle "
