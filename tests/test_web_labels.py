@@ -32,6 +32,7 @@ from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram, labelling
 from graspcompass.export._scene import build_scene
 from graspcompass.export.html import page_data, to_html, web_file
+from graspcompass.scene.layout import label_tex
 from graspcompass.palette import PALETTE
 
 PRESETS = ["fig6", "table1a", "table1b", "table1c"]
@@ -295,3 +296,59 @@ def test_page_near_a_bound_of_condition_1(explorer: Any) -> None:
             _page_vs_python(explorer)
             assert len(explorer.evaluate("graspcompass.labels()")) >= 6
     assert errors[:3] == [None] * 3 and "condition (1)" in errors[-1]
+
+
+# -- the port of scene.fit (the hard rules of the SVG, TikZ and PNG labels) -------------------
+def _fit_problem(rnd: np.random.Generator, n: int) -> dict[str, Any]:
+    """A crowded random problem: points in a small square of a 388 pt frame, a few on
+    top of each other, polylines through them, break points among them."""
+    centre = rnd.uniform(60, 320, 2)
+    pts = centre + rnd.normal(0, rnd.choice([6.0, 15.0, 40.0]), (n, 2))
+    if n > 2:
+        pts[1] = pts[0] + rnd.normal(0, 1.5, 2)
+    names = ["O", "P1", "P2x", "X1", "Y3", "V4", "O_M", "B12", "X4", "Y2"]
+    texts = ["$" + label_tex(names[i % len(names)]) + "$" for i in range(n)]
+    curves = [rnd.uniform(0, 388, (int(rnd.integers(2, 6)), 2)).tolist() for _ in range(3)]
+    return {"anchors": pts.tolist(), "texts": texts,
+            "opts": {"curves": curves, "frame": [0.0, 0.0, 388.0, 388.0],
+                     "obstacles": (centre + rnd.normal(0, 10, (3, 2))).tolist(),
+                     "optional": [bool(b) for b in rnd.integers(0, 2, n)]}}
+
+
+def test_port_of_fit_gives_the_python_placement(port: Any) -> None:
+    """GCLabelling.fit against scene.fit.fit on seeded random crowded problems: the same
+    labels left out, the same sides, leaders and verdicts, the same boxes."""
+    from graspcompass.scene import fit as fitting
+
+    rnd = np.random.default_rng(23)
+    problems = [_fit_problem(rnd, int(rnd.integers(1, 12))) for _ in range(40)]
+    got = port.evaluate(
+        "([ps, sp]) => ps.map(p => GCLabelling.fit(p.anchors, p.texts, "
+        "Object.assign({fitSpec: sp}, p.opts)))", [problems, fitting.spec()])
+    compared = 0
+    for p, js in zip(problems, got):
+        o = p["opts"]
+        want = fitting.fit(p["anchors"], p["texts"], curves=[np.array(c) for c in o["curves"]],
+                           frame=tuple(o["frame"]), obstacles=o["obstacles"],
+                           optional=o["optional"])
+        assert len(js) == len(want)
+        for a, b in zip(want, js):
+            assert (a is None) == (b is None)
+            if a is None:
+                continue
+            assert (tuple(b["direction"]), b["leader"], b["ok"]) == (a.direction, a.leader,
+                                                                      a.ok)
+            assert b["box"] == pytest.approx(list(a.box), abs=1e-9)
+            compared += 1
+    assert compared > 100
+
+
+def test_extent_port_is_the_metrics_of_the_font(port: Any) -> None:
+    from graspcompass.scene import fit as fitting
+    from graspcompass.scene import metrics
+
+    texts = ["$O = O_M = Y_4$", "$P_{1x}, V_4$", "$X_2$", "$B_{12}$"]
+    got = port.evaluate("([ts, sp]) => ts.map(t => GCLabelling.extent(t, 10, sp.metrics))",
+                        [texts, fitting.spec()])
+    for t, g in zip(texts, got):
+        assert g == pytest.approx(list(metrics.extent(t, 10.0)), abs=1e-12)

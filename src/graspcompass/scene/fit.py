@@ -30,7 +30,7 @@ from . import metrics
 from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample
 
 __all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "REORDER", "Fit",
-           "crowded_region", "fit", "label_box", "leader"]
+           "crowded_region", "fit", "label_box", "leader", "spec"]
 
 #: The directions from the point to the label's box tried, in order of preference: the
 #: eight of :data:`~.labelling.OFFSETS` (NE, NW, SE, SW, N, S, E, W), then every 15°
@@ -242,3 +242,20 @@ def leader(point: tuple[float, float], box: tuple[float, float, float, float]
     y = min(max(point[1], box[1]), box[3])
     end = (float(x), float(y)) if math.hypot(x - point[0], y - point[1]) > 0 else point
     return point, end
+
+
+def spec() -> dict[str, Any]:
+    """The constants of :func:`fit` as JSON data, for its port in the web page
+    (``GCLabelling.fit`` in ``labelling.js``; ``tests/test_web_labels.py`` checks both).
+
+    Examples
+    --------
+    >>> spec()["fits"][0], spec()["metrics"]["widths"][0]
+    (1.0, 651)
+    """
+    return {"directions": [list(d) for d in DIRECTIONS], "fits": list(FITS), "leader": LEADER,
+            "reorder": REORDER, "margin": dict(MARGIN), "font": FONT_PT, "marker": MARKER_PT,
+            "gap": GAP_PT, "resample": RESAMPLE_PT,
+            "metrics": {"widths": list(metrics.WIDTHS), "ascent": metrics.ASCENT,
+                        "descent": metrics.DESCENT, "sub_scale": metrics.SUB_SCALE,
+                        "sub_shift": metrics.SUB_SHIFT, "family": metrics.FAMILY}}
