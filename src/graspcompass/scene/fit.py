@@ -86,7 +86,8 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         obstacles: Sequence[tuple[float, float]] | np.ndarray = (), font_size: float = FONT_PT,
         marker_size: float = MARKER_PT, gap: float = GAP_PT,
         optional: Sequence[bool] = (),
-        avoid: Sequence[tuple[float, float, float, float]] = ()) -> list[Fit | None]:
+        avoid: Sequence[tuple[float, float, float, float]] = (),
+        marker_sizes: Sequence[float] = ()) -> list[Fit | None]:
     """One :class:`Fit` per label ``texts[i]`` of the point ``anchors[i]`` (or None).
 
     Parameters
@@ -104,20 +105,32 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         Per label: True leaves it out (None) when no place keeps every rule.
     avoid
         Boxes ``(x0, y0, x1, y1)`` of labels already placed.
+    marker_sizes
+        Per point of ``anchors`` then ``obstacles``, its marker's size where it is not
+        ``marker_size``: two points are one place when their markers touch.
     """
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
-    r = marker_size / 2 + MARGIN["marker"]
+    msize = np.full(len(every), float(marker_size))
+    msize[:len(marker_sizes)] = np.asarray(marker_sizes, dtype=float)[:len(every)]
+    r = msize / 2 + MARGIN["marker"]
     markers = np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r,
                                every[:, 1] + r]) if len(every) else np.zeros((0, 4))
     sizes = [label_box(t, font_size) for t in texts]
-    curve = resample([c for c in curves if len(c)], RESAMPLE_PT) if len(curves) else \
+    # only the curves' samples that some box tried can hold (a huge circle near a bound
+    # of condition (1) costs what this window holds)
+    fin = pts[np.all(np.isfinite(pts), axis=1)]
+    reach = max([max(w, h) for w, h in sizes] + [0.0]) + (marker_size / 2 + gap) * max(FITS) + 1.0
+    window = (float(fin[:, 0].min() - reach), float(fin[:, 1].min() - reach),
+              float(fin[:, 0].max() + reach), float(fin[:, 1].max() + reach)) if len(fin) else None
+    curves = [c for c in curves if len(c)]
+    curve = resample(curves, RESAMPLE_PT, window=window) if curves and window else \
         np.zeros((0, 2))
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
     best_out: list[Fit | None] | None = None
     for _ in range(REORDER + 1):  # the labels that found no place first, again
-        out = _greedy(order, pts, every, markers, sizes, curve, frame, marker_size, gap,
+        out = _greedy(order, pts, every, markers, sizes, curve, frame, msize, gap,
                       optional, avoid)
         fails = [i for i in order if out[i] is None or not out[i].ok]  # type: ignore[union-attr]
         if best_out is None or len(fails) < sum(f is None or not f.ok for f in best_out):
@@ -130,7 +143,7 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
 
 def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.ndarray,
             sizes: list[tuple[float, float]], curve: np.ndarray,
-            frame: tuple[float, float, float, float] | None, marker_size: float, gap: float,
+            frame: tuple[float, float, float, float] | None, msize: np.ndarray, gap: float,
             optional: Sequence[bool], avoid: Sequence[tuple[float, float, float, float]]
             ) -> list[Fit | None]:
     """The labels placed one by one in ``order``, each where it breaks the fewest rules."""
@@ -141,10 +154,10 @@ def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.nd
         px, py = pts[i]
         w, h = sizes[i]
         # a marker over the point's own marker is its place too (one place to the eye)
-        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) >= marker_size]
+        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) >= (msize + msize[i]) / 2]
         best: tuple[float, Fit] | None = None
         for k, far in enumerate(FITS):
-            d = (marker_size / 2 + gap) * far
+            d = (msize[i] / 2 + gap) * far
             for rank, (ux, uy) in enumerate(DIRECTIONS):
                 t = min(w / 2 / abs(ux) if ux else math.inf, h / 2 / abs(uy) if uy else math.inf)
                 cx, cy = px + ux * (d + t), py + uy * (d + t)

@@ -306,28 +306,39 @@
 
   /** scene.fit.fit: one {offset, direction, box, leader, ok} per label, or null (optional
    * labels that no place suits).  opts: fitSpec (scene.fit.spec()), curves, frame,
-   * obstacles, optional, avoid, fontSize, markerSize, gap. */
+   * obstacles, optional, avoid, fontSize, markerSize, markerSizes, gap. */
   function fit(anchors, texts, opts) {
     const sp = opts.fitSpec;
     const font = opts.fontSize ?? sp.font, msize = opts.markerSize ?? sp.marker;
     const gap = opts.gap ?? sp.gap, frame = opts.frame || null;
     const optional = opts.optional || [];
     const every = anchors.concat(opts.obstacles || []);
-    const r = msize / 2 + sp.margin.marker;
-    const markers = every.map(([x, y]) => [x - r, y - r, x + r, y + r]);
+    const ms = every.map((_, j) => (opts.markerSizes && j < opts.markerSizes.length
+      ? opts.markerSizes[j] : msize));
+    const markers = every.map(([x, y], j) => {
+      const r = ms[j] / 2 + sp.margin.marker;
+      return [x - r, y - r, x + r, y + r];
+    });
     const sizes = texts.map((t) => {
       const [w, up, down] = extent(t, font, sp.metrics);
       return [w, up + down];
     });
     const curves = (opts.curves || []).filter((c) => c.length);
-    const flat = curves.length ? resample(curves, sp.resample) : [];
+    // only the samples some box tried can hold (scene.fit.fit's window)
+    const fin = anchors.filter(([x, y]) => Number.isFinite(x) && Number.isFinite(y));
+    const reach = Math.max(0, ...sizes.map(([w, h]) => Math.max(w, h))) +
+      (msize / 2 + gap) * Math.max(...sp.fits) + 1.0;
+    const win = fin.length ? [Math.min(...fin.map((p) => p[0])) - reach,
+      Math.min(...fin.map((p) => p[1])) - reach, Math.max(...fin.map((p) => p[0])) + reach,
+      Math.max(...fin.map((p) => p[1])) + reach] : null;
+    const flat = curves.length && win ? resample(curves, sp.resample, win) : [];
     const crowd = anchors.map(([px, py]) =>
       every.filter(([x, y]) => Math.hypot(x - px, y - py) < 40.0).length);
     let order = anchors.map((_, i) => i).sort((a, b) => crowd[b] - crowd[a]);
     const fails = (out) => out.filter((f) => f === null || !f.ok).length;
     let best = null;
     for (let round = 0; round <= sp.reorder; round++) {
-      const out = greedy(order, anchors, every, markers, sizes, flat, frame, msize, gap,
+      const out = greedy(order, anchors, every, markers, sizes, flat, frame, ms, gap,
         optional, opts.avoid || [], sp);
       const failed = order.filter((i) => out[i] === null || !out[i].ok);
       if (best === null || failed.length < fails(best)) best = out;
@@ -337,7 +348,7 @@
     return best;
   }
 
-  function greedy(order, pts, every, markers, sizes, flat, frame, msize, gap, optional,
+  function greedy(order, pts, every, markers, sizes, flat, frame, ms, gap, optional,
                   avoid, sp) {
     const placed = avoid.map((b) => b.slice());
     const out = pts.map(() => null);
@@ -345,10 +356,11 @@
     for (const i of order) {
       const [px, py] = pts[i];
       const [w, h] = sizes[i];
-      const others = every.filter(([x, y]) => Math.hypot(x - px, y - py) >= msize);
+      const others = every.filter(([x, y], j) =>
+        Math.hypot(x - px, y - py) >= (ms[j] + ms[i]) / 2);
       let best = null, bestScore = Infinity;
       sp.fits.forEach((far, k) => {
-        const d = (msize / 2 + gap) * far;
+        const d = (ms[i] / 2 + gap) * far;
         sp.directions.forEach(([ux, uy], rank) => {
           const t = Math.min(ux ? w / 2 / Math.abs(ux) : Infinity,
             uy ? h / 2 / Math.abs(uy) : Infinity);
