@@ -403,3 +403,25 @@ def test_page_leaves_out_few_labels(explorer: Any) -> None:
         paper = [lab for lab in labels if lab["names"][0] not in ("H", "worst", "best")]
         assert len(paper) >= 8
         assert sum(not lab["shown"] for lab in paper) <= 2, (preset, paper)
+
+
+def test_phone_layout_centre_labels_do_not_pile_up(browser: Any, tmp_path: Any) -> None:
+    """At 390×844 (a phone) the final picture of each preset keeps the rules too, measured
+    in the browser: the centre's labels neither cover each other nor the markers."""
+    from test_svg_labels_browser import faults
+
+    path = tmp_path / "explorer.html"
+    path.write_text(to_html(internal_force_diagram(Grasp.preset("fig6"))), encoding="utf-8")
+    page = browser.new_page(viewport={"width": 390, "height": 844})
+    try:
+        page.goto(path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        for preset in PRESETS:
+            page.evaluate("p => { const box = document.getElementById('gc-preset'); "
+                          "box.value = p; box.dispatchEvent(new Event('change')); "
+                          "graspcompass.step(-1); graspcompass.fit(); }", preset)
+            pts = page.evaluate("graspcompass.labelRects()")
+            assert sum(q["t"] is not None for q in pts) >= 8, preset
+            assert not faults([{"panel": preset, "pts": pts}])
+    finally:
+        page.close()
