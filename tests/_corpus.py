@@ -142,6 +142,30 @@ def geogebra_points(data: bytes, workdir: Path) -> dict[str, tuple[float, float]
     return pts
 
 
+def geogebra_verdicts(data: bytes, workdir: Path) -> dict[int, bool] | None:
+    """GeoGebra's own ``Prove`` verdicts of a ``.ggb`` (claim number -> true/false), read
+    from its ``--regressionFile``; None without GeoGebra, or with a GeoGebra that has no
+    prover (4.0.34, Debian's, logs ``Unknown command : Prove`` and drops the claims)."""
+    import re
+    import shutil
+    import subprocess
+
+    geogebra, xvfb = shutil.which("geogebra"), shutil.which("xvfb-run")
+    if geogebra is None or xvfb is None:
+        return None
+    src, out = workdir / "file.ggb", workdir / "values.txt"
+    src.write_bytes(data)
+    run = subprocess.run([xvfb, "-a", geogebra, "--showSplash=false",
+                          f"--regressionFile={out}", str(src)], check=False, timeout=240,
+                         capture_output=True, text=True,
+                         env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"})
+    if not out.exists() or "Unknown command : Prove" in run.stdout + run.stderr:
+        return None
+    found = {int(m[1]): m[2] == "true" for m in re.finditer(
+        r"^\S+ claim(\d+) = (?:.* == )?(true|false)\s*$", out.read_text("utf-8"), re.M)}
+    return found or None
+
+
 def covering_files() -> list[Path]:
     """A few corpus files that together use every operation of the language (greedy)."""
     from graspcompass.construction.language import parse

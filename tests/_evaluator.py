@@ -499,3 +499,20 @@ def params_of(text: str) -> dict[str, str]:
             d = m.group(2)
             out[m.group(1)] = {"> 0": "positive", ">= 0": "nonnegative"}.get(d, d)
     return out
+
+
+def hypotheses_hold(text: str, point: dict) -> bool:
+    """Every ``hypothesis NAME: LEFT REL RIGHT`` line of ``text`` holds at ``point``
+    (its own reading: floats at 50 digits, a strict inequality by more than TOL)."""
+    env = {k: num(str(v), {}) for k, v in point.items()}
+    for raw in text.splitlines():
+        m = re.match(r"\s*hypothesis\s+\w+\s*:\s*(.*?)\s*(#.*)?$", raw)
+        if not m:
+            continue
+        r = re.search(r"!=|>=|<=|>|<", m.group(1))
+        d = num(m.group(1)[:r.start()], env) - num(m.group(1)[r.end():], env)
+        ok = {"!=": abs(d) > TOL, ">": d > TOL, ">=": d > -TOL, "<": d < -TOL,
+              "<=": d < TOL}[r.group()]
+        if not ok:
+            return False
+    return True

@@ -179,3 +179,16 @@ def test_python_m_graspcompass_refuses_with_one_line() -> None:
                        capture_output=True, text=True, timeout=120)
     assert p.returncode == 2
     assert len(p.stderr.strip().splitlines()) == 1 and "not a real number" in p.stderr
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", str(Path(graspcompass.__file__).parent / "construction" / "recipes" / "paper.gc"),
+     "--against", "paper"],
+    ["verify", "--quiet"],
+])
+def test_exact_commands_do_not_import_numpy(argv: list[str]) -> None:
+    """The exact paths never compute with numpy; importing it costs 80 ms (issue 20)."""
+    loaded = _loaded_after("import contextlib, io\nfrom graspcompass.cli import main\n"
+                           "with contextlib.redirect_stdout(io.StringIO()):\n"
+                           f"    assert main({argv!r}) == 0")
+    assert loaded["sympy"] and not loaded["numpy"] and not loaded["matplotlib"], loaded

@@ -63,3 +63,24 @@ def test_geogebra_puts_the_points_where_the_kernel_does(path, tmp_path):
             assert s.name in pts, s.name
             assert pts[s.name] == pytest.approx((float(s.obj.x), float(s.obj.y)), abs=2e-5), \
                 s.name
+
+
+@pytest.mark.skipif(shutil.which("geogebra") is None or shutil.which("xvfb-run") is None,
+                    reason="GeoGebra or xvfb-run not installed (.ci/apt-packages.txt)")
+@pytest.mark.parametrize("name", ["06_simson.gc", "07_pappus.gc", "01_circumcentre.gc"])
+def test_geogebra_as_a_second_prover(name, tmp_path):
+    """GeoGebra's ``Prove`` agrees with the checker on every claim both state: a PROVED
+    claim is true for GeoGebra, a REFUTED one false.  Skipped where GeoGebra has no
+    prover: Debian's GeoGebra 4.0.34 (2012) predates ``Prove`` (GeoGebra 4.2+) and logs
+    ``Unknown command : Prove``; the .ggb still opens there, without the claims."""
+    from graspcompass.proof.program_check import check_program
+
+    path = _corpus.CORPUS / name
+    program = parse(path.read_text("utf-8"), path.name)
+    verdicts = _corpus.geogebra_verdicts(_export(path)[1], tmp_path)
+    if verdicts is None:
+        pytest.skip("this GeoGebra has no Prove command (4.0.34: 'Unknown command : Prove')")
+    ours = {i: row.status.value for i, row in enumerate(check_program(program).claims, 1)}
+    for i, true in verdicts.items():
+        if ours[i] in ("PROVED", "REFUTED"):
+            assert true == (ours[i] == "PROVED"), (name, i, true, ours[i])

@@ -1,4 +1,4 @@
-"""The geometry-class corpus (issue 24): 46 classic constructions and their textbook claims.
+"""The geometry-class corpus (issue 24): 48 classic constructions and their textbook claims.
 
 Each claim of ``tests/corpus_geometry/*.gc`` carries its truth from geometry
 (``# expect true|false``), written before the checker ran.  For every file:
@@ -7,7 +7,8 @@ Each claim of ``tests/corpus_geometry/*.gc`` carries its truth from geometry
 * a false claim is never PROVED and is REFUTED; a true claim is never REFUTED;
 * every PROVED claim holds at random points where its objects exist (the evaluator);
 * every counterexample is replayed by ``tests/_evaluator.py`` (no code shared with
-  graspcompass): the objects exist there and the claim is false there.
+  graspcompass): the objects exist there, the claim is false there and the file's
+  inequality hypotheses (``hypothesis NAME: A > B``) hold there.
 
 The rates (true claims PROVED, median time) are measured by ``bench/bench_corpus.py``.
 """
@@ -19,7 +20,7 @@ import random
 import pytest
 
 import _corpus
-from _evaluator import evaluate, params_of, random_point
+from _evaluator import evaluate, hypotheses_hold, params_of, random_point
 
 FILES = _corpus.files()
 
@@ -42,9 +43,12 @@ def test_corpus_file(path):
         assert status == "REFUTED", f"claim {i + 1} is false, got {status}"
         if cx is not None:  # replayed independently: the claim is false there
             assert evaluate(text, cx)[i] is False, (i, cx)
+            assert hypotheses_hold(text, cx), ("the counterexample breaks a hypothesis", cx)
     rng = random.Random(path.name)
     proved = [i for i, (_, status, _) in enumerate(record["claims"]) if status == "PROVED"]
     for _ in range(4):  # every PROVED claim holds wherever its objects exist
         pt = random_point(params_of(text), rng)
+        while not hypotheses_hold(text, pt):  # a point of the file's hypotheses
+            pt = random_point(params_of(text), rng)
         truth = evaluate(text, pt)
         assert all(truth[i] is not False for i in proved), (pt, truth)

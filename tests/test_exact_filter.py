@@ -183,3 +183,31 @@ def test_a_denominator_zero_on_the_model_is_division_by_zero():
     # a factor that is non-zero on the model still cancels
     f = exact.Frac.of(x + s)
     assert ((f * exact.Frac.of(x)) / f).expr() == x
+
+
+def test_nonzero_by_the_signs_of_terms_is_never_claimed_for_a_value_that_can_vanish():
+    """Frac.is_zero answers False ("never 0") from the signs of the terms only when
+    every term has one sign and one is strictly so; sums that vanish somewhere on the
+    assumptions (false statements of non-vanishing) stay undecided."""
+    import sympy as sp
+
+    from graspcompass.geometry._exact_frac import Frac
+
+    x = sp.Symbol("x", positive=True)
+    y = sp.Symbol("y", nonnegative=True)
+    r = sp.Symbol("r", real=True)
+    a = sp.Symbol("a", positive=True)
+    u = sp.Symbol("u")  # no assumptions: not even real
+    vanish = [  # each is 0 at some point allowed by the assumptions
+        x - 1, x * y, y, r, r**2, r + 1, x * r**2, y**2 - y, x * y - x * y**2,
+        sp.sin(a) * x + x, sp.sin(a) + sp.cos(a), x * sp.cos(a), u**2 + 1,
+        x**2 * y + y - x * y, (x - 1) * (y + 1) + 0,
+    ]
+    for e in vanish:
+        assert Frac.of(e).is_zero() is not False, e
+    never = [  # positive (or negative) everywhere on the assumptions
+        x, x + y, x * y + 1, -x - y - 1, r**2 + x, r**2 * y + x * y + x, (x + 1)**2,
+        -(x**3) * (r**2 + 1) - y, sp.sin(a)**2 + 1,
+    ]
+    for e in never:
+        assert Frac.of(e).is_zero() is False, e

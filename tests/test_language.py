@@ -468,3 +468,15 @@ def test_cli_recipe_writes_a_file(tmp_path, capsys):
     mod, args = _args("-o", str(tmp_path / "missing" / "x.gc"))
     with pytest.raises(InputError.__mro__[1]):  # OutputError: a GraspCompassError
         mod.run(args)
+
+
+def test_paper_steps_are_the_programs_steps():
+    """The replay's quick parse (claims and let values left out) reads every step, its
+    values and their conditions as the whole program does (a fresh parse of each)."""
+    from graspcompass.construction import language
+
+    language._paper_steps.cache_clear()
+    quick, whole = language._paper_steps(), language.parse(language.paper_text(), "paper.gc")
+    assert quick.steps == whole.steps and quick.params == whole.params
+    assert quick.hypotheses == whole.hypotheses
+    assert not quick.claims and not quick.lets and whole.claims and whole.lets

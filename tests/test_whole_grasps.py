@@ -100,7 +100,18 @@ def _paper_V(p: dict[str, str]) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
 
 
 def _mpv(e: sp.Expr) -> mpmath.mpf:
-    return mpmath.mpf(sp.N(e, 60))
+    """``e`` at 60 digits; its sines, cosines and roots first replaced by 90-digit floats.
+
+    sympy's ``N`` re-evaluates every sin(pi/10) of an expanded 6000-operation break
+    point term by term (about 1 s); with the atoms replaced once it adds floats (20x
+    faster, the same digits).
+    """
+    atoms = {
+        a: sp.Float(sp.N(a, 90), 90)
+        for a in e.atoms(sp.Function, sp.Pow)
+        if a.is_number and (a.is_Function or not a.exp.is_Integer)
+    }
+    return mpmath.mpf(sp.N(e.xreplace(atoms), 60))
 
 
 def _check(p: dict[str, str], exact_V: bool = True) -> None:

@@ -10,6 +10,8 @@ thumb below and three fingers above a 2 × 1 part: five vertices, two dual verti
 redundant.  Each vertex is constructed with parallels through the contacts' cost points
 and one quarter turn (``graspcompass steps --contact ...``); the worst squeeze of the
 gripper over all orientations is ``F_e max |q|`` (``graspcompass size --contact ...``).
+To drag the contacts and their normals in a browser, write the n-contact web page:
+``graspcompass export --contact ... --format html -o hand.html``.
 """
 
 import matplotlib.pyplot as plt

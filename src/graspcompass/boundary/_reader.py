@@ -181,12 +181,13 @@ class _Reader:
         value = self._node(node)
         if value.is_Symbol or value is sympy.pi:
             return value  # a name or pi: nothing to bound
-        if value.has(sympy.zoo, sympy.nan, sympy.oo, -sympy.oo):
+        infinite, bits, nodes = _scan(value)
+        if infinite:
             raise _fail(self.text, "the value is not finite (division by zero?)")
-        if _max_bits(value) > MAX_BITS:
+        if bits > MAX_BITS:
             raise _fail(self.text, f"a number in the value has more than {MAX_BITS} bits "
                         f"(about {_digits(MAX_BITS)} decimal digits)")
-        if _too_many_nodes(value):
+        if nodes > MAX_NODES:
             raise _fail(self.text, f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
                         "out at length); simplify the text")
         self._degree_at_most(_degree(value), value)
@@ -329,6 +330,8 @@ class _Reader:
         elif name == "atan2":
             self._condition("!=", args[0] ** 2 + args[1] ** 2)
         self.depth -= 1
+        if name in _TRIG and _plain_real(args[0]):
+            return function(args[0], evaluate=False)  # what sympy's eval leaves it as
         if not any(_has_function(arg) for arg in args):
             value = function(*args)
             if _too_many_nodes(value, _EXPANSION_NODES):  # tan(pi/120): 313 nodes of radicals
@@ -434,6 +437,16 @@ def _clearly_inside_unit(value: sympy.Expr) -> bool:
     return bool(re_acc is not None and re_acc >= 40 and mpmath.mpf(re) ** 2 < 1 - 2.0**-31)
 
 
+_TRIG = frozenset({"sin", "cos", "tan"})
+
+
+def _plain_real(arg: sympy.Expr) -> bool:
+    """A real symbol known to be nonzero: ``sin``, ``cos``, ``tan`` of it are left as
+    they are by sympy's evaluation, which is skipped (on the first call in a process it
+    costs milliseconds of lazy imports and caches)."""
+    return bool(arg.is_Symbol and arg.is_extended_real and arg.is_zero is False)
+
+
 def _has_function(value: sympy.Expr) -> bool:
     return bool(value.atoms(sympy.Function))
 
@@ -488,6 +501,23 @@ def _degree(value: sympy.Expr) -> int:
         return _degree(value.base) * abs(int(value.exp.p))
     inner = max(_degree(a) for a in value.args)
     return max(1, inner) if inner or value.free_symbols else 0
+
+
+_INFINITE = frozenset({sympy.zoo, sympy.nan, sympy.oo, -sympy.oo})
+
+
+def _scan(value: sympy.Expr) -> tuple[bool, int, int]:
+    """In one walk of the tree: whether it holds an infinity or nan, the most bits of a
+    numerator or denominator in it (:func:`_max_bits`) and its number of nodes."""
+    infinite, bits, nodes = False, 0, 0
+    for node in sympy.preorder_traversal(value):
+        nodes += 1
+        if node.is_Atom:
+            if node.is_Rational:
+                bits = max(bits, int(node.p).bit_length(), int(node.q).bit_length())
+            elif node in _INFINITE:
+                infinite = True
+    return infinite, bits, nodes
 
 
 def _too_many_nodes(value: sympy.Expr, most: int = MAX_NODES) -> bool:

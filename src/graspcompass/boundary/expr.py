@@ -29,13 +29,16 @@ Every refusal is an :class:`ExpressionError` naming the text and the limit.
 from __future__ import annotations
 
 import ast
+import keyword
 import numbers
+import re
 import warnings
 from collections.abc import Mapping
 
 import sympy
 
 from ._reader import (
+    _CONSTANTS,
     _DEGREE,
     _SYMPY_FAILURES,
     ComplexExpressionError,
@@ -83,6 +86,10 @@ __all__ = [
     "tree_conditions",
 ]
 
+#: A small integer literal (no leading zeros, as Python reads them) or a bare name.
+_PLAIN = re.compile(r"\s*(-?(?:0|[1-9][0-9]{0,8}))\s*|\s*([A-Za-z_][A-Za-z0-9_]*)\s*")
+
+
 def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
            inherited: Mapping[str, tuple[Condition, ...]] | None = None,
            out: list[Condition] | None = None) -> sympy.Expr:
@@ -90,6 +97,20 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
         raise NotTextError(f"expected a str, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
         raise _fail(text, f"the text is longer than {MAX_LENGTH} characters")
+    plain = _PLAIN.fullmatch(text)
+    if plain is not None and all(isinstance(v, sympy.Expr) for v in (symbols or {}).values()):
+        # a small integer or a declared name: what the reader makes of it, without it
+        if plain.group(1) is not None:
+            return sympy.Integer(int(plain.group(1)))
+        name = plain.group(2)
+        value = (symbols or {}).get(name)
+        if (isinstance(value, sympy.Symbol) and name not in _CONSTANTS
+                and not name.endswith("deg") and not name.startswith("__")
+                and not keyword.iskeyword(name)):
+            if out is not None:
+                out += [c for c in dict.fromkeys((inherited or {}).get(name, ()))
+                        if c not in out]
+            return value
     body, degrees = _split_unit(text)
     source = body.strip()
     if not source:

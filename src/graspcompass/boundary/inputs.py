@@ -62,11 +62,11 @@ import numbers
 from collections.abc import Iterable, Mapping
 from decimal import Decimal
 from fractions import Fraction
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 
+from ._numpy import is_a
 from .errors import (
     ComplexValueError,
     InputError,
@@ -76,6 +76,11 @@ from .errors import (
 )
 from .expr import ExpressionError, parse_exact, real_sign
 from .limits import MAX_INT_BITS
+
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ._numpy import np
 
 __all__ = [
     "MAX_ARRAY_SIZE",
@@ -110,7 +115,9 @@ def _shown(value: object) -> str:
 
 def _kind(value: object) -> str:
     kinds = {type(None): "None", bool: "a bool", dict: "a dict", list: "a list",
-             tuple: "a tuple", set: "a set", bytes: "bytes", np.bool_: "a bool"}
+             tuple: "a tuple", set: "a set", bytes: "bytes"}
+    if is_a(value, "bool_"):
+        return "a bool"
     kind = type(value).__name__
     return kinds.get(type(value), f"{'an' if kind[:1].lower() in 'aeiou' else 'a'} {kind}")
 
@@ -252,17 +259,17 @@ def real_value(value: Any, name: str) -> sp.Expr:
             return exact_denominators(parse_exact(value), name)
         except ExpressionError as exc:
             raise _renamed(exc, name) from None
-    if isinstance(value, (bool, np.bool_)) or value is None:
+    if isinstance(value, bool) or value is None or is_a(value, "bool_"):
         raise WrongTypeError(f"{name}: expected a number, got {_shown(value)}")
     if isinstance(value, sp.Basic):
         return _sympy_value(value, name, value)
-    if isinstance(value, (numbers.Integral, np.integer)):
+    if isinstance(value, numbers.Integral) or is_a(value, "integer"):
         _int_bits(name, int(value))
         return sp.Integer(int(value))
     if isinstance(value, (Fraction, numbers.Rational)):
         _int_bits(name, int(value.numerator), int(value.denominator))
         return sp.Rational(int(value.numerator), int(value.denominator))
-    if isinstance(value, (float, np.floating)):
+    if isinstance(value, float) or is_a(value, "floating"):
         return sp.Float(float_value(value, name))
     if isinstance(value, Decimal):
         if not value.is_finite():
@@ -274,11 +281,12 @@ def real_value(value: Any, name: str) -> sp.Expr:
                                      f"(about {MAX_INT_BITS * 3 // 10} decimal digits)")
         exact = Fraction(value)
         return sp.Rational(exact.numerator, exact.denominator)
-    if isinstance(value, (complex, np.complexfloating)):
+    if isinstance(value, complex) or is_a(value, "complexfloating"):
         raise _complex(name, value)
-    if isinstance(value, np.ndarray) and value.ndim == 0:
+    if is_a(value, "ndarray") and value.ndim == 0:
         return real_value(value.item(), name)
-    what = "one number" if isinstance(value, (list, tuple, set, np.ndarray)) else "a number"
+    what = ("one number" if isinstance(value, (list, tuple, set)) or is_a(value, "ndarray")
+            else "a number")
     raise WrongTypeError(f"{name}: expected {what}, got {_kind(value)} {_shown(value)}")
 
 
@@ -306,10 +314,14 @@ def float_value(value: Any, name: str) -> float:
     ...     print(err)
     theta: expected a finite number, got inf
     """
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (float, np.floating)):
+    if type(value) is float:  # not a numpy float: no long double to overflow
+        out = value
+    elif isinstance(value, bool) or is_a(value, "bool_") or not (
+            isinstance(value, float) or is_a(value, "floating")):
         raise WrongTypeError(f"{name}: expected a float, got {_kind(value)} {_shown(value)}")
-    with np.errstate(over="ignore", invalid="ignore"):  # a long double beyond a double: inf
-        out = float(value)
+    else:
+        with np.errstate(over="ignore", invalid="ignore"):  # a long double beyond a double
+            out = float(value)
     if not math.isfinite(out):
         raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(out)}")
     return out
@@ -325,7 +337,7 @@ def _nested_size(value: list | tuple) -> int:
         if not item:
             break
         item = item[0]
-    if isinstance(item, np.ndarray):
+    if is_a(item, "ndarray"):
         size *= item.size
     return size
 
@@ -421,11 +433,12 @@ def angle_values(theta: Any, name: str = "theta") -> sp.Expr | float | np.ndarra
     >>> angle_values("30deg"), angle_values(0.25), angle_values([0.0, 1.0])
     (pi/6, 0.25, array([0., 1.]))
     """
-    if isinstance(theta, (float, np.floating)) and not isinstance(theta, np.bool_):
+    if isinstance(theta, float) or is_a(theta, "floating"):
         return float_value(theta, name)
-    if isinstance(theta, (list, tuple)) or (isinstance(theta, np.ndarray) and theta.ndim):
+    array = is_a(theta, "ndarray")
+    if isinstance(theta, (list, tuple)) or (array and theta.ndim):
         return float_array(theta, name)
-    if isinstance(theta, np.ndarray):  # 0-d: a float one stays on the numeric path
+    if array:  # 0-d: a float one stays on the numeric path
         return float_array(theta, name) if theta.dtype.kind == "f" else real_value(theta, name)
     return real_value(theta, name)
 
@@ -456,7 +469,7 @@ def force_value(value: Any, name: str = "external_force") -> sp.Expr | float:
     ...     print(err)
     external_force: a magnitude cannot be negative, got -1
     """
-    if isinstance(value, (float, np.floating)) and not isinstance(value, np.bool_):
+    if isinstance(value, float) or is_a(value, "floating"):
         out: sp.Expr | float = float_value(value, name)
         negative = out < 0  # type: ignore[operator]
     else:

@@ -6,7 +6,8 @@ construction of the grasp in one of :data:`graspcompass.export.FORMATS`;
 construction file (``export FILE.gc``, :mod:`graspcompass.cli._file`): ``export``
 writes any file's construction (GeoGebra without sliders unless it is the
 paper's recipe); ``--format html`` and ``explore`` redraw the paper's recipe
-live and refuse a file with other steps.  The module
+live and refuse a file with other steps; ``--format html`` with ``--contact``
+writes the n-contact page (:mod:`graspcompass.export.ncontact_html`).  The module
 only adds sub-parsers and runs them; :mod:`graspcompass.cli` builds the grasp
 from the common options and reports errors (a ``ValueError`` is one line on
 stderr, exit status 2).
@@ -117,7 +118,18 @@ def run_export(args: argparse.Namespace, grasp: Any) -> int:
     path = check_target(path)
     from ..export import export
     from ..export.tikz import write_tikz
+    from ._ncontact import wants_contacts
 
+    if fmt == "html" and wants_contacts(args):  # the n-contact page (draggable contacts)
+        from ..export.ncontact_html import write_ncontact_html
+        from ._ncontact import grasp_from_args
+
+        if args.step is not None:
+            raise ValueError("--step does not apply to the n-contact page (it redraws Q live)")
+        write_ncontact_html(grasp_from_args(args), path, title=args.title)
+        if not getattr(args, "quiet", False):
+            print(f"wrote {path} (html, n-contact page)")
+        return 0
     made = _file.construction(args, grasp if callable(grasp) else lambda: grasp)
     if fmt == "html":
         _file.paper_only(made, "export --format html (the explorer page)")

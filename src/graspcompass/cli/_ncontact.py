@@ -8,7 +8,8 @@ minimised (``paper``: the paper's k, n = 2; ``sum-normal``; ``pair:I,J``;
 per θ of ``--theta`` (as for the two-contact ``k``): the least effort k for a unit
 load e(θ) at the centre of mass and F = k F_e for ``--external-force`` F_e, null
 (JSON) or ``-`` where the load cannot be held, and the tight cone edges at the
-optimum; ``--exact`` adds the exact values (at most ``EXACT_VALUES`` angles).  A
+optimum (for ``max-normal`` the edges that carry load, from the optimal forces); ``--exact``
+adds the exact values (at most ``EXACT_VALUES`` angles).  A
 value starting with ``-`` needs the ``--contact=-1,0,1,0,1/2`` form.
 """
 
@@ -144,6 +145,7 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     arg = np.argmax(V @ e, axis=0) if V.size else np.zeros(t.size, dtype=int)
     tight = [" ".join(labels[r] for r in Q.candidates[Q.vertex_index[i]].bases[0]
                       if r < len(labels)) if g.effort.linear else "" for i in range(len(V))]
+    twin = _float_twin(g) if not g.effort.linear else None  # max-normal: forces per θ
     names = [str(v) for v in exact] if exact is not None else [repr(float(v)) for v in t]
     records: list[dict[str, Any]] = []
     for i, name in enumerate(names):
@@ -151,7 +153,8 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
         records.append({"theta": name, "theta_deg": float(np.degrees(t[i])),
                         "k": float(k[i]) if held else None,
                         "F": float(k[i] * fe) if held else None,
-                        "tight": tight[arg[i]].split() if held and tight else None})
+                        "tight": (_carrying(twin, float(t[i])) if twin is not None else
+                                  tight[arg[i]].split() if tight else None) if held else None})
         if want_exact and exact is not None:
             kx = Q.support_exact(exact[i])[0]
             records[-1]["k_exact"] = str(kx)
@@ -174,6 +177,27 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     print(f"{g.n} contacts, effort {g.effort.name}: Q has {len(V)} vertices; force closure: "
           f"{closure}; the load is held for {span}", file=out)
     return 0
+
+
+def _float_twin(g: Any) -> Any:
+    """The grasp on the float path (its optimal forces cost about a millisecond per θ)."""
+    from ..ncontact import NContactGrasp
+
+    if g.numeric:
+        return g
+    return NContactGrasp([(float(c.p[0]), float(c.p[1]), float(c.n[0]), float(c.n[1]),
+                           float(c.mu)) for c in g.contacts],
+                         com=tuple(float(v) for v in g.com), effort=g.effort.name)
+
+
+def _carrying(g: Any, theta: float) -> list[str] | None:
+    """The edges carrying load at the optimum for θ (``max-normal``), or None."""
+    from ..ncontact import NContactError
+
+    try:
+        return g.forces(theta)["basis"]
+    except NContactError:  # a degenerate optimum: no row of edges, the value stands
+        return None
 
 
 def draw(args: argparse.Namespace) -> int:

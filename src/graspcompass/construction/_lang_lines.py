@@ -14,6 +14,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from ._hypotheses import HYPOTHESIS_LINE
+from ._program_checker import read_inequality
 from .operations import OPERATIONS
 from .program import (
     _CLAIM_KINDS,
@@ -70,6 +72,9 @@ def _split_items(text: str, offset: int) -> list[tuple[str, int]]:
     return items
 
 
+_SPACE = re.compile(r"\s*")  # the whitespace str.strip() strips
+
+
 class _Line:
     """The tokens of one line: (kind, text, column), values kept as raw text."""
 
@@ -77,10 +82,11 @@ class _Line:
         self.text, self.err, self.tokens = text, err, []
         pos = 0
         while pos < len(text):
-            if text[pos:].strip() == "":
+            start = _SPACE.match(text, pos).end()  # type: ignore[union-attr]
+            if start == len(text):
                 break
             m = _TOKEN.match(text, pos)
-            col = len(text[pos:]) - len(text[pos:].lstrip()) + pos + 1
+            col = start + 1
             if m is None or m.lastgroup is None:
                 if text[col - 1] == '"':
                     raise err("unterminated string", col)
@@ -94,7 +100,8 @@ class _Line:
                 continue
             if m.lastgroup == "string":
                 raw = m.group("string")[1:-1]
-                self.tokens.append(("string", re.sub(r"\\(.)", r"\1", raw), col))
+                self.tokens.append(("string", re.sub(r"\\(.)", r"\1", raw) if "\\" in raw
+                                    else raw, col))
             else:
                 self.tokens.append((m.lastgroup, m.group(m.lastgroup), col))
             pos = m.end()
@@ -113,6 +120,11 @@ def _statement(body: str, chk: _Checker, number: int, err: Any) -> None:
                 raise _Problem("write let NAME = VALUE", "name")
             slots["name"], slots["value"] = m.start(1) + 1, m.start(2) + 1
             return chk.let(m.group(1), m.group(2), number)
+        m = HYPOTHESIS_LINE.match(body) if head == "hypothesis" else None
+        if m is not None:  # hypothesis NAME: LEFT REL RIGHT
+            slots["name"], slots["value"] = m.start("name") + 1, m.start("rel") + 1
+            read_inequality(chk, m["name"], m["rel"], number)
+            return None
         toks = _Line(body, err).tokens
         kind, first, col = toks[0]
         slots["name"] = toks[1][2] if len(toks) > 1 else col
@@ -131,7 +143,8 @@ def _statement(body: str, chk: _Checker, number: int, err: Any) -> None:
             return chk.param(toks[1][1], domain, number)
         if kind == "word" and first == "hypothesis":
             if len(toks) != 2 or toks[1][0] != "word":
-                raise _Problem("write hypothesis NAME (e.g. condition1)", "name")
+                raise _Problem("write hypothesis NAME (e.g. condition1) or hypothesis NAME: "
+                               "VALUE > VALUE", "name")
             return chk.hypothesis(toks[1][1])
         _step(toks, chk, number, slots)
     except _Problem as p:

@@ -35,6 +35,7 @@ def format_program(p: Any, value_claims: Collection[str]) -> str:
         dom = {"positive": "> 0", "nonnegative": ">= 0"}.get(q.domain, q.domain)
         out.append(f"param {q.name} {dom}")
     out += [f"hypothesis {h}" for h in p.hypotheses]
+    out += [f"hypothesis {h.text}" for h in getattr(p, "inequalities", ())]
     out += [f"let {n} = {_expr(v)}" for n, v in p.lets]
     for s in p.steps:
         parts = [s.name, "=", s.op, *s.inputs]

@@ -32,10 +32,9 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from itertools import combinations
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import mpmath
-import numpy as np
 import sympy as sp
 
 from ..boundary.errors import GraspCompassError
@@ -52,9 +51,14 @@ from ..geometry.exact import (
 from ..geometry.numeric import to_float
 from ..grasp._floatpath import mpf
 
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ..boundary._numpy import np
+
 __all__ = ["Arc", "Envelope", "EnvelopeError", "outer_envelope"]
 
-_TWO_PI = 2 * np.pi
+_TWO_PI = 2 * math.pi
 #: Working digits of the winner decisions.
 _DPS = 40
 #: Digits tried in turn when an exact break point does not check at fewer (cancellation

@@ -11,6 +11,7 @@ reduces it (:func:`~graspcompass.geometry._exact_ring._finish`).  Private to
 
 from __future__ import annotations
 
+import itertools
 import math
 from functools import lru_cache
 
@@ -23,6 +24,8 @@ _GENS: set[sp.Expr] = set()
 _MAX_GENS = 80
 #: Trial division bound of :func:`_square_free`, sympy's own for ``sqrt`` of an integer.
 _TRIAL = 2**15
+#: Below this, :func:`_square_free` tries 2 and the odd numbers instead of the primes.
+_ODD_TRIAL = 2**20
 
 
 @lru_cache(maxsize=1)
@@ -33,7 +36,7 @@ def _small_primes() -> tuple[int, ...]:
     for i in range(2, math.isqrt(_TRIAL - 1) + 1):
         if sieve[i]:
             sieve[i * i::i] = bytes(len(range(i * i, _TRIAL, i)))
-    return tuple(i for i, flag in enumerate(sieve) if flag)
+    return tuple(itertools.compress(range(_TRIAL), sieve))
 
 
 def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
@@ -47,7 +50,11 @@ def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
     """
     n = int(r.p) * int(r.q)
     k, factors = 1, []
-    for p in _small_primes():
+    # a small radicand by 2 and the odd numbers (a composite divides no more: its primes
+    # are divided out first), without the table of primes
+    candidates = (_small_primes() if n >= _ODD_TRIAL
+                  else itertools.chain((2,), range(3, math.isqrt(n) + 1, 2)))
+    for p in candidates:
         if p * p > n:
             break
         if n % p:

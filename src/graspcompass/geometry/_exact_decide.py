@@ -9,6 +9,8 @@ from its canonical form in integer balls.  Private to
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import flint
 import sympy as sp
 
@@ -17,20 +19,61 @@ from ._exact_bounds import _IV_PREC, _balls, _clearly_nonzero, _float_sign, _int
 from ._exact_canon import canon, free, has_float, sym
 from ._exact_ring import _MEMO, Ring, reduce_poly
 
-#: Above this many terms a symbolic numerator is not handed to sympy's assumptions
-#: (they settle small sums such as ``(x + 1)**2`` with ``x > 0``; on the long
-#: numerators of a symbolic construction they only take time to answer None).
-_ASSUME_TERMS = 8
+#: Above this many terms a symbolic numerator whose terms do not show it nonzero
+#: (:func:`_nonzero_by_terms`) is not handed to sympy's assumptions: they settle
+#: short sums such as ``2 - cos(a)**2`` (cosines are bounded), and on the longer
+#: numerators of a symbolic construction only take milliseconds to answer None.
+_ASSUME_TERMS = 3
 
 
-def _positive_terms(R: Ring, n: flint.fmpq_mpoly) -> bool:
-    """Every term of ``n`` is a positive rational times powers of positive symbols, so
-    ``n > 0`` wherever the symbols' assumptions hold (and ``n ≠ 0``)."""
-    pos = [g.is_Symbol and g.is_positive is True for g in R.symbols]
+@lru_cache(maxsize=1024)
+def _signs_of(symbols: tuple[sp.Expr, ...]) -> tuple[tuple[int, bool] | None, ...]:
+    """What the assumptions say of each generator: ``(sign, strict)`` with sign +1 or
+    -1 and ``strict`` False for a generator that may be 0 (``y >= 0``); ``(0, False)``
+    for a real generator of unknown sign; None for anything else."""
+    signs: list[tuple[int, bool] | None] = []
+    for g in symbols:
+        if g.is_positive:
+            signs.append((1, True))
+        elif g.is_negative:
+            signs.append((-1, True))
+        elif g.is_nonnegative:
+            signs.append((1, False))
+        elif g.is_nonpositive:
+            signs.append((-1, False))
+        elif g.is_extended_real:
+            signs.append((0, False))
+        else:
+            signs.append(None)
+    return tuple(signs)
+
+
+def _nonzero_by_terms(R: Ring, n: flint.fmpq_mpoly) -> bool:
+    """``n != 0`` wherever the generators' assumptions hold, shown by the signs of its
+    terms: every term is >= 0 (or every term <= 0) and one of them is strictly so.
+
+    A term's sign is its coefficient's times its generators' (an even power of a real
+    generator is >= 0); a term of unknown sign shows nothing.  This is what sympy's
+    assumptions decide of such a sum, without building it (the polynomial is kept
+    modulo the relations, so the value is the value of ``n`` as written).
+    """
+    signs = _signs_of(R.symbols)
+    total, strict_any = 0, False
     for m, c in n.to_dict().items():
-        if c <= 0 or any(e and not pos[i] for i, e in enumerate(m[:R.ngens])):
+        s, strict = (1 if c > 0 else -1), True
+        for i, e in enumerate(m[:R.ngens]):
+            if not e:
+                continue
+            g = signs[i]
+            if g is None or (g[0] == 0 and e % 2):
+                return False  # a term of unknown sign
+            if e % 2 and g[0] < 0:
+                s = -s
+            strict = strict and g[1]
+        if total and s != total:
             return False
-    return True
+        total, strict_any = s, strict_any or strict
+    return strict_any
 
 
 #: Digits used to separate a non-zero exact number from zero before an exact test.
@@ -75,10 +118,11 @@ def decide_zero(expr: sp.Expr, scale: float = 0.0) -> bool | None:
             return True
         if not R.free and _clearly_nonzero(R, n):
             return False
-        if R.free and _positive_terms(R, n):
-            return False
-        if R.free and len(n) > _ASSUME_TERMS:
-            return None  # not 0 modulo the relations; too long to ask the assumptions
+        if R.free:  # not 0 modulo the relations: the assumptions may show it nonzero
+            if _nonzero_by_terms(R, n):
+                return False
+            if len(n) > _ASSUME_TERMS:
+                return None  # too long to ask sympy's assumptions (they would say None)
     if free(expr):
         reduced = canon(expr)
         if reduced == 0:

@@ -14,7 +14,7 @@ import sympy as sp
 from ._exact_bounds import _clearly_nonzero, _float_sign
 from ._exact_canon import canon
 from ._exact_convert import _canon_ring, _convert, _lift
-from ._exact_decide import _ASSUME_TERMS, _positive_terms, decide_sign, decide_zero
+from ._exact_decide import _ASSUME_TERMS, _nonzero_by_terms, decide_sign, decide_zero
 from ._exact_ring import (
     _MEMO,
     _clear_roots,
@@ -185,8 +185,8 @@ class Frac:
             return True
         if _clearly_nonzero(self.R, n):
             return False
-        if self.R.free:
-            if _positive_terms(self.R, n):
+        if self.R.free:  # what the assumptions show, without building the expression
+            if _nonzero_by_terms(self.R, n):
                 return False
             if len(n) > _ASSUME_TERMS:  # sympy's assumptions would take long to say None
                 return None

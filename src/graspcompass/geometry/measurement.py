@@ -57,17 +57,23 @@ def _atan_values() -> dict[sp.Expr, sp.Expr]:
     sympy's table costs 25 ms in every new process (``test_geometry`` checks that
     both agree).
     """
-    r2, r3 = sp.sqrt(2), sp.sqrt(3)
-    return {sp.Integer(1): sp.pi / 4, r3 / 3: sp.pi / 6, r3: sp.pi / 3, r2 - 1: sp.pi / 8,
-            r2 + 1: 3 * sp.pi / 8, 2 - r3: sp.pi / 12, r3 + 2: 5 * sp.pi / 12}
+    return {r: q * sp.pi for r, q in _atan_multiples().items()}
+
+
+@lru_cache(maxsize=1)
+def _atan_multiples() -> dict[sp.Expr, sp.Rational]:
+    """:func:`_atan_values` divided by π (the multiples of π are made only when met)."""
+    r2, r3, q = sp.sqrt(2), sp.sqrt(3), sp.Rational
+    return {sp.Integer(1): q(1, 4), r3 / 3: q(1, 6), r3: q(1, 3), r2 - 1: q(1, 8),
+            r2 + 1: q(3, 8), 2 - r3: q(1, 12), r3 + 2: q(5, 12)}
 
 
 def _atan_positive(ratio: sp.Expr) -> sp.Expr:
     """``atan`` of a positive canonical number without sympy's costly ``eval``: a
     multiple of π where sympy's table has one (``atan(2 - sqrt(3)) = pi/12``), else
     ``atan(ratio)`` unevaluated."""
-    known = _atan_values().get(ratio)
-    return known if known is not None else sp.atan(ratio, evaluate=False)
+    known = _atan_multiples().get(ratio)
+    return known * sp.pi if known is not None else sp.atan(ratio, evaluate=False)
 
 
 def angle_of(vector: Point) -> sp.Expr:

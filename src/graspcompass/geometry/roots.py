@@ -76,7 +76,40 @@ def nonnegative(f: sp.Expr) -> bool:
     s = decide_sign(f)
     if s is not None and s >= 0:
         return True
-    return _gram_psd(f)
+    return _gram_psd(f) or _quadratic_in_one(f, 2)
+
+
+def _quadratic_in_one(f: sp.Expr, depth: int) -> bool:
+    """``f = A·v² + B·v + C ≥ 0`` for a real symbol v of degree 2 in f: A ≥ 0, C ≥ 0 and
+    4AC − B² ≥ 0, each shown by :func:`nonnegative` (to ``depth`` levels).  Then f ≥ 0
+    for every v: f = A(v + B/2A)² + (4AC − B²)/4A where A > 0, and B = 0, f = C where
+    A = 0."""
+    if depth <= 0 or not f.is_Add or len(f.args) > 40 or not all(
+            s.is_real for s in f.free_symbols):
+        return False
+    for v in sorted(f.free_symbols, key=str):
+        if not v.is_real:
+            continue
+        try:
+            p = sp.Poly(f, v)
+        except sp.PolynomialError:
+            continue
+        if p.degree() != 2 or any(c.has(v) for c in p.all_coeffs()):
+            continue
+        a, b, c = (sp.expand(x) for x in p.all_coeffs())
+        d = sp.expand(4 * a * c - b ** 2)
+        if all(_nonneg_at(x, depth - 1) for x in (a, c, d)):
+            return True
+    return False
+
+
+def _nonneg_at(f: sp.Expr, depth: int) -> bool:
+    if f.is_nonnegative:
+        return True
+    s = decide_sign(f)
+    if s is not None and s >= 0:
+        return True
+    return _gram_psd(f) or _quadratic_in_one(f, depth)
 
 
 def _square_over_root(g: sp.Expr) -> sp.Expr | None:

@@ -21,7 +21,6 @@ import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 
 from ..boundary.errors import NonFiniteValueError
@@ -62,6 +61,11 @@ from ._values import (
     _sympy,
     _value,
 )
+
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ..boundary._numpy import np
 
 __all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
            "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",

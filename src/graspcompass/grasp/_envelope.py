@@ -41,8 +41,13 @@ negative and huge angles), as accurate as the direct formula.
 from __future__ import annotations
 
 import math
+import struct
+from typing import TYPE_CHECKING
 
-import numpy as np
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ..boundary._numpy import np
 
 __all__ = ["TABLE_MIN_SIZE", "THETA_MAX", "EnvelopeTable", "direct_k_grasp", "grid_table"]
 
@@ -60,7 +65,7 @@ CHUNK = 1 << 15
 _TWO_PI_HI = 6.283185307179586
 _TWO_PI_LO = 2.4492935982947064e-16
 _H = _TWO_PI_HI / M  # exact: M is a power of two
-_H_HI = float(np.float32(_H))  # 24 significant bits
+_H_HI = struct.unpack("<f", struct.pack("<f", _H))[0]  # 24 significant bits
 _H_LO = (_H - _H_HI) + _TWO_PI_LO / M
 _INV_H = M / _TWO_PI_HI
 
@@ -125,7 +130,7 @@ _STEP = 2.0**-P
 #: Adding ``1.5·2^(52−P)`` rounds θ to the nearest multiple of h (half to even); the
 #: bits of the sum are those of the constant plus j.
 _ROUND_P = 1.5 * 2.0 ** (52 - P)
-_ROUND_P_BITS = int(np.array(_ROUND_P).view(np.int64))
+_ROUND_P_BITS = struct.unpack("<q", struct.pack("<d", _ROUND_P))[0]
 #: The table's bins ``j = J_LO .. J_HI`` (centres ``j h``) cover [−π − 2h, 2π + 2h]; the
 #: first and the last are sentinels (nan): an angle beyond them is clipped onto one.
 J_LO = -math.floor(math.pi / _STEP) - 3

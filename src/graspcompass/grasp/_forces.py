@@ -14,9 +14,9 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 
+from ..boundary._numpy import is_a
 from ..boundary.errors import InputError, NonFiniteValueError, SymbolicValueError
 from ..boundary.inputs import angle_values, force_value, real_value
 from ..geometry.exact import canon, decide_sign
@@ -25,7 +25,11 @@ from ._floatpath import closed_form_floats
 from ._values import _HALF_MAX, _double, _finite, _is_numeric, _sympy
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from . import Grasp
+else:
+    from ..boundary._numpy import np
 
 
 def _closed_form_doubles(g: Grasp) -> tuple[np.ndarray, np.ndarray]:
@@ -55,7 +59,7 @@ def _k_grasp(g: Grasp, theta: Any) -> Any:
         S, C = g._floats()
         s, c = math.sin(t), math.cos(t)
         return max(0.0, *(float(Sn) * s - float(Cn) * c for Sn, Cn in zip(S, C)))
-    if isinstance(t, np.ndarray):
+    if is_a(t, "ndarray"):
         S, C = g._floats()
         if t.size >= _envelope.TABLE_MIN_SIZE:  # many angles: the table of the envelope
             table = g.__dict__.get("_ktable")  # (issue 13 §5)

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 
+from ..boundary._numpy import is_a
 from ..boundary.errors import (
     ComplexValueError,
     GraspCompassError,
@@ -28,6 +28,11 @@ from ..boundary.errors import (
 from ..boundary.expr import ExpressionError
 from ..boundary.inputs import angle_values, real_value
 from ..geometry.exact import has_float
+
+if TYPE_CHECKING:
+    import numpy as np
+else:
+    from ..boundary._numpy import np
 
 
 class FrozenGraspError(dataclasses.FrozenInstanceError):
@@ -165,7 +170,7 @@ _HALF_MAX = 0.5 * 1.7976931348623157e308  # k_n = S_n sin θ - C_n cos θ cannot
 
 def _is_numeric(theta: Any) -> bool:
     """After :func:`angle_values`: a float or an array selects the numeric path."""
-    return isinstance(theta, (float, np.ndarray))
+    return isinstance(theta, float) or is_a(theta, "ndarray")
 
 
 def _sympy(value: sp.Expr | float) -> sp.Expr:
@@ -175,7 +180,7 @@ def _sympy(value: sp.Expr | float) -> sp.Expr:
 
 def _one_angle(theta: Any) -> sp.Expr:
     t = angle_values(theta)
-    if isinstance(t, np.ndarray):
+    if is_a(t, "ndarray"):
         raise WrongTypeError(f"theta: expected one angle, got an array of shape {t.shape}")
     return _sympy(t)
 

@@ -5,6 +5,7 @@ solution of its basis B is optimal (complementary slackness): the weights of the
 tight edges solve ``A_B x = (-F_e e(θ), 0, [0])``; the other edges carry nothing.
 For n = 2 and the paper's effort the tight edges of V_n are the cone side named
 in k_n and both sides of the other contact (the sides on which (8)-(11) is tight).
+The sublinear effort ``max-normal`` is solved by :mod:`._forces_max`.
 """
 
 from __future__ import annotations
@@ -42,15 +43,8 @@ def _solve_exact(cols: list[list[sp.Expr]], b: list[sp.Expr]) -> list[sp.Expr] |
 
 def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
     """See :meth:`graspcompass.ncontact.NContactGrasp.forces`."""
-    if not g.effort.linear:
-        raise NContactError("the optimal forces of the effort 'max-normal' are not available "
-                            "yet (only its values and Q)")
     t = angle_values(theta)
     Q = g.polygon()
-    rows, _ = g.dual_system()
-    labels = g.constraint_labels()
-    n_edges = 2 * g.n
-    edges = g.edges()
     numeric = g.numeric or isinstance(t, (float, np.ndarray))
     if isinstance(t, np.ndarray):
         raise NContactError("forces() takes one θ at a time")
@@ -72,8 +66,18 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
         if k is None:
             return {**none, "effort": sp.oo}
         ks = [k]
-    d = len(rows[0])
     zero = 0.0 if numeric else sp.Integer(0)
+    if not g.effort.linear:  # the largest normal force: complementary slackness on d
+        from ._forces_max import optimal_max_normal
+
+        rhs = [-fe * e[0], -fe * e[1], zero]
+        return optimal_max_normal(g, Q, ks, rhs if numeric else [canon(v) for v in rhs],
+                                  val, numeric)
+    rows, _ = g.dual_system()
+    labels = g.constraint_labels()
+    n_edges = 2 * g.n
+    edges = g.edges()
+    d = len(rows[0])
     b = [-fe * e[0], -fe * e[1]] + [zero] * (d - 2)
     if not numeric:
         b = [canon(v) for v in b]

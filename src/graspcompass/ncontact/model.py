@@ -302,6 +302,12 @@ class NContactGrasp:
         ``basis`` (labels of the tight dual constraints), ``weights`` (edge weight
         per edge label, the normal force it carries) and ``forces`` (the force at
         each contact, ``Σ a_j d_j``).  None values where the load cannot be held.
+
+        For ``"max-normal"`` (min t with N_i <= t) ``basis`` lists the edges that
+        carry load, and two more keys say what complementary slackness with the
+        maximising dual direction allows: ``tight`` (every edge that may carry load)
+        and ``largest`` (the contacts, 1-based, whose normal force is the largest,
+        v(θ)).
         """
         from ._forces import optimal_forces
 

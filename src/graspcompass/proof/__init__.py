@@ -8,13 +8,25 @@
 * :func:`run_crosscheck` compares the closed form with scipy's ``linprog``.
 """
 
-from .catalogue import CLAIMS, Claim, check, claim
+from .._lazy import attach
 from .certify import StepCertificate, certify, certify_records
-from .model import sample, violations
-from .prove import CONDITION_1, ProofResult, Status, find_counterexample, prove_identity, prove_sign
 from .recheck import RecheckError, recheck
-from .reduce import DegenerateClaimError, is_identically_zero, reduce_expr, trig_to_poly
-from .report import ClaimReport, exit_status, run_catalogue, to_json, to_markdown, to_table
+
+#: Where the other public names live, imported on first use (PEP 562): ``check`` of a
+#: file does not load the paper's catalogue.  ``certify`` and ``recheck`` are imported
+#: at once: they are also the names of their modules, which an import of the module
+#: would otherwise put in their place.
+_HOMES = {
+    **dict.fromkeys(("CLAIMS", "Claim", "check", "claim"), "catalogue"),
+    **dict.fromkeys(("sample", "violations"), "model"),
+    **dict.fromkeys(("CONDITION_1", "ProofResult", "Status", "find_counterexample",
+                     "prove_identity", "prove_sign"), "prove"),
+    **dict.fromkeys(("DegenerateClaimError", "is_identically_zero", "reduce_expr",
+                     "trig_to_poly"), "reduce"),
+    **dict.fromkeys(("ClaimReport", "exit_status", "run_catalogue", "to_json", "to_markdown",
+                     "to_table"), "report"),
+}
+__getattr__, __dir__ = attach(__name__, _HOMES)
 
 __all__ = [
     "CLAIMS",

@@ -25,10 +25,10 @@ from functools import lru_cache
 from typing import Any
 
 import mpmath
-import numpy as np
 import sympy as sp
 
 from .. import symbols as S
+from ..boundary._numpy import is_a
 from ..boundary.errors import WrongTypeError
 from ..boundary.expr import ExpressionError, parse_exact
 from ..boundary.inputs import real_value
@@ -94,7 +94,7 @@ def outside_expr(value: Any, name: str, known: Iterable[sp.Symbol] = ()) -> Any:
     if isinstance(value, (list, tuple)):
         items = [outside_expr(v, f"{name}[{i}]", known) for i, v in enumerate(value)]
         return items if isinstance(value, list) else tuple(items)
-    if value is None or isinstance(value, (numbers.Number, np.generic)):
+    if value is None or isinstance(value, numbers.Number) or is_a(value, "generic"):
         return real_value(value, name)
     try:
         shown = repr(value)

@@ -49,18 +49,28 @@ Examples
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import sympy as sp
 
-from .. import symbols as S
 from ..construction.language import replay
-from ..construction.program import Claim, PointValue, Program, Ref, Value
+from ..construction.program import Program
 from ..construction.protocol import Construction
+from . import _program_targets as _targets
 from ._budget import TIMED_OUT, Budget
+from ._program_claims import (
+    _COND1,
+    _ancestors,
+    _check_claim,
+    _guarded,
+    _hypotheses,
+    _Later,
+    _line,
+    _text,
+)
 from ._program_rows import CheckRow, ProgramReport
-from .certify_paper import PaperModel, model_at
+from ._program_targets import _check_target, _paper_model
 from .program_conditions import (
     condition_words,
     decide,
@@ -68,47 +78,15 @@ from .program_conditions import (
     operation_conditions,
     tie_mu,
 )
-from .program_decide import (
-    DOMAIN_WORDS,
-    CheckError,
-    claim_zeros,
-    coords,
-    nonzero,
-    prove_sign_claim,
-    prove_zero,
-    sign_expr,
-    sign_fails,
-    step_conditions,
-    zeros_fail,
-)
-from .program_search import find, sign_score
+from .program_decide import DOMAIN_WORDS, CheckError, step_conditions
+from .program_hypotheses import discharge
+from .program_words import kernel_worded
 from .prove import ProofResult, Status
 
 __all__ = ["PAPER_TARGETS", "CheckError", "CheckRow", "ProgramReport", "check_program"]
 
 #: Names of objects graded by ``against="paper"`` -> (what the paper says it is, reference).
-PAPER_TARGETS: dict[str, str] = {
-    **{f"X{n}": f"X{n} on the x-axis, O_M X{n} = −S{n} (§3.3 step (1), (A7))" for n in range(1, 5)},
-    **{f"Y{n}": f"Y{n} on the y-axis, O Y{n} = −C{n} (§3.3 step (2), (A8))" for n in range(1, 5)},
-    **{f"V{n}": f"V{n} = (S{n}, C{n}), eqs. (28)-(39)" for n in range(1, 5)},
-    **{f"circle{n}": f"the circle on the diameter O V{n} (§3.2, Fig. 3)" for n in range(1, 5)},
-    "O_M": "the midpoint of P1x P2x, ((x1 − x2)/2, 0) (§3.3)",
-    "P1x": "the foot of P1 on the x-axis, (x1, 0) (§3.3)",
-    "P2x": "the foot of P2 on the x-axis, (−x2, 0) (§3.3)",
-}
-#: The parameters a file must declare to be graded against the paper.
-_PAPER_PARAMS = ("x1", "x2", "y", "phi1", "phi2")
-_COND1 = "condition1"
-
-
-# -- hypotheses ---------------------------------------------------------------------------
-def _domain_text(program: Program) -> list[str]:
-    return [f"{p.name}: {p.domain}" for p in program.params]
-
-
-def _hypotheses(program: Program, cond1: bool) -> tuple[str, ...]:
-    domains = ("domains " + ", ".join(_domain_text(program)),) if program.params else ()
-    return (*domains, *(("condition (1)",) if cond1 else ()))
+PAPER_TARGETS: dict[str, str] = _targets.PAPER_TARGETS
 
 
 def _check_model_params(program: Program) -> None:
@@ -118,255 +96,6 @@ def _check_model_params(program: Program) -> None:
         if want is not None and p.domain != want:
             raise CheckError(f"{program.file}:{p.line}:1: {p.name} is the model's parameter "
                              f"and has the domain {want}; declare it so (got {p.domain})")
-
-
-# -- one claim ----------------------------------------------------------------------------
-def _ancestors(program: Program, names: Iterable[str]) -> list[str]:
-    by = {s.name: s for s in program.steps}
-    seen: dict[str, None] = {}
-    todo = [n for n in names if n in by]
-    while todo:
-        n = todo.pop()
-        if n in seen:
-            continue
-        seen[n] = None
-        todo += [i for i in by[n].inputs if i in by]
-    return list(seen)
-
-
-def _refs(claim: Claim) -> list[str]:
-    names = []
-    for t in claim.terms:
-        if isinstance(t, Ref):
-            names.append(t.name)
-        else:
-            exprs = (t.x, t.y) if isinstance(t, PointValue) else (t.expr,)
-            names += [str(s) for e in exprs for s in e.free_symbols]
-    return names
-
-
-def _text(claim: Claim) -> str:
-    return Program(claims=(claim,)).to_text().strip().removeprefix("claim ")
-
-
-def _vacuous(name: str, kind: str, line: int, t0: float, hyps: tuple[str, ...],
-             why: str) -> CheckRow:
-    """REFUTED without a counterexample: what it is about exists at no point of the model."""
-    return CheckRow(name, kind, line, ProofResult(
-        Status.REFUTED, "vacuous: a condition it needs is false at every point of the model "
-        "(no counterexample: nothing exists there to contradict)", time.perf_counter() - t0,
-        detail=why, hypotheses=hyps))
-
-
-def _uses_cond1(implied: Iterable[str]) -> bool:
-    return any("(1)" in t for t in implied)
-
-
-_CRASHES = (ArithmeticError, ValueError, TypeError, AttributeError, KeyError, IndexError,
-            NotImplementedError, RecursionError, sp.PolynomialError)
-
-
-def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
-             run: Callable[[], CheckRow]) -> CheckRow:
-    """A row whatever happens inside: a failure of the algebra is UNDECIDED, named."""
-    t0 = time.perf_counter()
-    try:
-        return run()
-    except _CRASHES as exc:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.UNDECIDED, "the checker could not decide it", time.perf_counter() - t0,
-            detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
-
-
-class _Later(dict):  # type: ignore[type-arg]
-    """A step's conditions without condition (1), worked out when a claim first asks."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self._thunks: dict[str, Callable[[], tuple[list[str], list[str]]]] = {}
-
-    def later(self, name: str, thunk: Callable[[], tuple[list[str], list[str]]]) -> None:
-        self._thunks[name] = thunk
-
-    def get(self, name: str, default: Any = None) -> Any:
-        if name not in self and name in self._thunks:
-            self[name] = self._thunks.pop(name)()
-        return super().get(name, default)
-
-
-def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
-                 step_conds: Mapping[str, tuple[list[str], list[str]]],
-                 vacuous: Mapping[str, str] | None = None) -> CheckRow:
-    t0 = time.perf_counter()
-    cond1 = _COND1 in claim.under
-    hyps = _hypotheses(program, cond1)
-    tie = tie_mu(p.name for p in program.params)
-    missing = [t.name for t in claim.terms if isinstance(t, Ref) and t.name not in env]
-    if missing:  # an optional step left out, or the envelope (numbers only)
-        return CheckRow(_text(claim), "claim", claim.line, ProofResult(
-            Status.UNDECIDED, "not made for general parameters", time.perf_counter() - t0,
-            detail=f"{', '.join(missing)} is not made when the parameters are symbols",
-            hypotheses=hyps))
-    implied: list[str] = []
-    extra: list[str] = []
-    ancestors = _ancestors(program, _refs(claim))
-    gone = [f"{n}: {vacuous[n]}" for n in ancestors if vacuous and n in vacuous]
-    lengths = {sp.Symbol(k, real=True): v for k, v in env.items() if isinstance(v, sp.Expr)}
-    own = decide([(r, e.xreplace(lengths)) for r, e in claim.conditions], cond1, tie)
-    if gone or own.false:
-        return _vacuous(_text(claim), "claim", claim.line, t0, hyps,
-                        "; ".join([*gone, *(f"{t} is false everywhere" for t in own.false)]))
-    for n in ancestors:
-        imp, ext = step_conds.get(n, ([], []))
-        implied += imp
-        extra += ext
-    implied += own.implied
-    extra += own.extra
-    if not cond1 and _uses_cond1(implied):  # a step's condition follows from (1): say so
-        hyps = _hypotheses(program, True)
-    if claim.kind == "sign":
-        e = sign_expr(claim, env)
-        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1)
-        if ok and r is not None:
-            implied += list(r.implied)
-            extra += list(r.conditions)
-            method = r.method
-        fails = sign_fails(claim)
-        try:
-            score = sign_score(e, claim.relation, program)
-        except (TypeError, ValueError, NameError, SyntaxError, KeyError):
-            score = None
-    else:
-        score = None
-        zeros, nonzeros = claim_zeros(claim, env)
-        if tie:
-            zeros = [sp.sympify(z).xreplace(tie) for z in zeros]
-        ok, imp, ext, method = prove_zero(zeros, cond1)
-        if ok and claim.kind == "ratio":  # a ratio of lengths is >= 0
-            k = sign_expr(Claim("sign", (claim.terms[-1], Value(sp.Integer(0)))), env)
-            k_ok, k_r = prove_sign_claim(k.xreplace(tie) if tie else k, ">=", cond1)
-            ok = True if k_ok else None
-            imp = [*imp, *(k_r.implied if k_ok and k_r is not None else ())]
-        if ok and any(prove_zero([n], cond1)[0] for n in nonzeros):
-            ok = None  # a condition that never holds (two parallel lines): not a proof
-        implied += imp
-        extra += ext + [f"{sp.factor(n)} ≠ 0" for n in nonzeros]
-        fails = zeros_fail(claim)
-    # a counterexample is a point of the model: condition (1) holds there too (docs)
-    search_kw = {"claim": claim, "cond1": True, "score": score,
-                 "names": ancestors}
-    return _row(program, _text(claim), "claim", claim.line, ok, fails, t0, hyps,
-                implied, extra, method if ok else "", search_kw)
-
-
-def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
-         fails: Callable[[dict[str, Any], Any], bool], t0: float, hyps: tuple[str, ...],
-         implied: list[str], extra: list[str], method: str,
-         search_kw: Mapping[str, Any] | None = None) -> CheckRow:
-    implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
-    if ok:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,
-            conditions=tuple(extra), implied=tuple(implied)))
-    cx = find(program, fails, **(search_kw or {}))
-    if cx is not None:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.REFUTED, "counterexample: a point of the model (domains, condition (1), "
-            "μ = tan ξ checked exactly) at which the file, replayed exactly, contradicts it",
-            time.perf_counter() - t0, counterexample=cx, hypotheses=hyps))
-    return CheckRow(name, kind, line, ProofResult(
-        Status.UNDECIDED, "not proved, and no counterexample found by exact replay at "
-        "points of the model", time.perf_counter() - t0, hypotheses=hyps,
-        conditions=tuple(extra), implied=tuple(implied)))
-
-
-# -- targets (against the paper) ----------------------------------------------------------
-def _paper_model(program: Program) -> PaperModel:
-    names = {p.name for p in program.params}
-    missing = [n for n in _PAPER_PARAMS if n not in names]
-    for d in "12":
-        if f"mu{d}" not in names and f"xi{d}" not in names:
-            missing.append(f"mu{d} (or xi{d})")
-    if missing:
-        raise CheckError(f"{program.file}: grading against the paper needs the parameters "
-                         f"x1, x2, y, phi1, phi2 and mu1/xi1, mu2/xi2; missing: "
-                         f"{', '.join(missing)}")
-    values: dict[sp.Symbol, sp.Expr] = {getattr(S, n): getattr(S, n) for n in _PAPER_PARAMS}
-    mu_form = []
-    for i in (1, 2):
-        mu, xi = getattr(S, f"mu{i}"), getattr(S, f"xi{i}")
-        if f"mu{i}" in names:
-            values[mu], values[xi] = mu, sp.atan(mu)
-            mu_form.append(True)
-        else:
-            values[mu], values[xi] = sp.tan(xi), xi
-            mu_form.append(False)
-    return PaperModel(values, (mu_form[0], mu_form[1]), False)
-
-
-def _paper_object(model: PaperModel, name: str) -> tuple[sp.Expr, ...]:
-    if name == "O_M":
-        return model.O_M
-    if name in ("P1x", "P2x"):
-        return model.Px(int(name[1]))
-    kind, n = name.rstrip("1234"), int(name[-1])
-    if kind == "circle":
-        (cx, cy), r2 = model.circle(n)
-        return cx, cy, r2
-    return {"X": model.X, "Y": model.Y, "V": model.V}[kind](n)
-
-
-def _model_point(pt: Mapping[str, Any]) -> dict[sp.Symbol, sp.Expr]:
-    out = {getattr(S, k): sp.sympify(v) for k, v in pt.items() if k in DOMAIN_WORDS}
-    for i in (1, 2):  # the model holds both μ and ξ
-        mu, xi = getattr(S, f"mu{i}"), getattr(S, f"xi{i}")
-        if mu in out and xi not in out:
-            out[xi] = sp.atan(out[mu])
-        elif xi in out and mu not in out:
-            out[mu] = sp.tan(out[xi])
-    return out
-
-
-def _check_target(program: Program, name: str, env: dict[str, Any], model: PaperModel,
-                  step_conds: Mapping[str, tuple[list[str], list[str]]],
-                  vacuous: Mapping[str, str] | None = None) -> CheckRow:
-    t0 = time.perf_counter()
-    obj = env[name]
-    want = _paper_object(model, name)
-    hyps = _hypotheses(program, True)
-    gone = [f"{n}: {vacuous[n]}" for n in _ancestors(program, [name])
-            if vacuous and n in vacuous]
-    if gone:
-        return _vacuous(name, "target", _line(program, name), t0, hyps, "; ".join(gone))
-    try:
-        have = coords(obj)
-    except CheckError:
-        have = ()
-    if len(have) != len(want):
-        what = {2: "a point", 3: "a circle", 1: "a number"}[len(want)]
-        return CheckRow(name, "target", _line(program, name), ProofResult(
-            Status.REFUTED, f"the file's {name} is a {type(obj).__name__}; the paper's is "
-            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps,
-            detail=f"no counterexample needed: the file's {name} is a {type(obj).__name__} "
-            f"for every value of the parameters (the kind of an object does not depend on "
-            f"them) and the paper's {name} is {what}, so they differ at every point of the "
-            f"model"))
-    implied: list[str] = []
-    extra: list[str] = []
-    for n in _ancestors(program, [name]):
-        imp, ext = step_conds.get(n, ([], []))
-        implied += imp
-        extra += ext
-    ok, imp, ext, method = prove_zero([h - w for h, w in zip(have, want)], True)
-
-    def fails(env_at: dict[str, Any], pt: Any) -> bool:
-        at = model_at(model, _model_point(pt))
-        return any(nonzero(h - w) for h, w in
-                   zip(coords(env_at[name]), _paper_object(at, name)))
-
-    return _row(program, name, "target", _line(program, name), ok, fails, t0, hyps,
-                implied + imp, extra + ext, method,
-                {"cond1": True, "names": _ancestors(program, [name])})
 
 
 def _worded(out: Any, ops: list, words: list[str], cond1: bool, tie: Any) -> Any:
@@ -379,10 +108,6 @@ def _worded(out: Any, ops: list, words: list[str], cond1: bool, tie: Any) -> Any
             mine = getattr(out, bucket)
             mine += [t + say for t in getattr(d, bucket) if t + say not in mine]
     return out
-
-
-def _line(program: Program, name: str) -> int:
-    return next((s.line for s in program.steps if s.name == name), 0)
 
 
 _TWO_POINTS = ("line_through", "circle_through", "circle_on_diameter", "intersect_circles",
@@ -506,6 +231,7 @@ def check_program(program: Program, against: str | None = None,
                 cond1_file, tie).extra)
         try:
             implied, extra = step_conditions(s, cond1_file, replaced, tie)
+            extra = kernel_worded(extra, s.op, s.inputs, statements)
             if own.false:
                 raise ValueError("; ".join(f"{t} is false for every parameter"
                                            for t in own.false))
@@ -564,13 +290,13 @@ def check_program(program: Program, against: str | None = None,
             if progress:
                 progress(done, total, name)
     symbols = {p.name: p.symbol for p in program.params}
-    step_rows, claim_rows, target_rows = ([_tidy(r, symbols) for r in rows] for rows in (
+    step_rows, claim_rows, target_rows = ([_tidy(r, symbols, program) for r in rows] for rows in (
         step_rows, claim_rows, target_rows))
     return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
                          against, time.perf_counter() - t0, c)
 
 
-def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
+def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol], program: Program) -> CheckRow:
     """The row with its conditions factored, merged, discharged and worded
     (:func:`~graspcompass.proof.program_words.tidy`)."""
     from dataclasses import replace
@@ -581,4 +307,6 @@ def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol]) -> CheckRow:
     if not r.conditions and not r.implied:
         return row
     extra, implied = tidy(r.conditions, r.implied, symbols)
+    extra, by_hyp = discharge(extra, program.inequalities, symbols)
+    implied += by_hyp
     return replace(row, result=replace(r, conditions=tuple(extra), implied=tuple(implied)))

@@ -52,10 +52,11 @@ def _short(text: str, width: int = 60) -> str:
     return text if len(text) <= width else text[: width - 1] + "…"
 
 
-def _extra(row: CheckRow, domains: str) -> str:
-    """What a row assumes beyond the parameters' domains (printed once above the table)."""
+def _extra(row: CheckRow, domains: str, common: tuple[str, ...] = ()) -> str:
+    """What a row assumes beyond the parameters' domains and the file's inequality
+    hypotheses (printed once above the table)."""
     r = row.result
-    parts = [h for h in r.hypotheses if h != domains]
+    parts = [h for h in r.hypotheses if h != domains and h not in common]
     if r.conditions:
         parts.append("if " + "; ".join(r.conditions))
     return "; ".join(parts)
@@ -83,12 +84,15 @@ def to_table(report: ProgramReport, steps: bool = False) -> str:
                                           if r.status not in (Status.PROVED, Status.GIVEN)])]
     domains = next((h for r in report.rows for h in r.result.hypotheses
                     if h.startswith("domains")), "")
+    common = tuple(h for h in (report.rows[0].result.hypotheses if report.rows else ())
+                   if h.startswith("hypothesis ")
+                   and all(h in r.result.hypotheses for r in report.rows))
     head = ("kind", "line", "name", "status", "s", "assumes")
     rows = [(r.kind, str(r.line), _short(r.name), r.status.value, f"{r.result.seconds:.2f}",
-             _extra(r, domains)) for r in shown]
+             _extra(r, domains, common)) for r in shown]
     widths = [max(len(x[i]) for x in [head, *rows]) for i in range(5)]
-    lines = [f"{report.file}: every row assumes the {domains}" if domains else
-             f"{report.file}: no parameters (the file's numbers are exact)",
+    lines = [f"{report.file}: every row assumes the {'; '.join((domains, *common))}" if domains
+             else f"{report.file}: no parameters (the file's numbers are exact)",
              "", "  ".join(h.ljust(widths[i]) if i < 5 else h for i, h in enumerate(head))]
     lines += ["  ".join(x.ljust(widths[i]) if i < 5 else x for i, x in enumerate(row)).rstrip()
               for row in rows]

@@ -48,8 +48,9 @@ from ..geometry.trig import sincos
 from .model import violations
 from .program_conditions import operation_conditions
 from .program_decide import grid_value
+from .program_hypotheses import holds
 
-__all__ = ["conditions_hold", "find", "sign_score", "value_at"]
+__all__ = ["conditions_hold", "find", "sign_score", "value_at", "witness_point"]
 
 _MODEL = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
 _GRID_MUS = tuple(sp.Rational(n, d) for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15),
@@ -279,7 +280,7 @@ def find(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr
     for pt in candidates:
         if used >= tries + (10 if score else 0):
             break
-        if not _admissible(pt, cond1):
+        if not _admissible(pt, cond1) or not holds(program, pt):
             continue
         used += 1
         hit = _try(sub, pt, fails, claim)
@@ -317,3 +318,23 @@ def _try(sub: Program, pt: Mapping[str, sp.Expr], fails: Callable[..., Any],
         return bool(fails(env, pt))
     except _FAILURES:
         return False
+
+
+def witness_point(program: Any, tries: int = 400) -> dict[str, Any] | None:
+    """A point of the domains where every hypothesis holds (the search's own points), or
+    None: the hypotheses may contradict each other, and nothing is PROVED under them."""
+    key = id(program)
+    if key in _WITNESS and _WITNESS[key][0] is program:
+        return _WITNESS[key][1]
+    rng, found = random.Random(2012), None
+    for k in range(tries):
+        pt = _grid(program, rng) if k % 2 else _random(program, rng)
+        if holds(program, pt):
+            found = pt
+            break
+    _WITNESS.clear() if len(_WITNESS) > 64 else None
+    _WITNESS[key] = (program, found)
+    return found
+
+
+_WITNESS: dict[int, tuple[Any, Any]] = {}
