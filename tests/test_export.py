@@ -273,9 +273,15 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
                        (tmp_path / "plain.pdf").read_bytes())
     assert len(boxes) == 1
     w, h = float(boxes[0][2]) - float(boxes[0][0]), float(boxes[0][3]) - float(boxes[0][1])
-    # 11 cm of picture + 0.4 cm + a 4 pt border each side; taller for the title and legend
-    assert w == pytest.approx(11.4 / 2.54 * 72 + 8, abs=2.0)
-    assert w + 1 < h < 792 and (w, h) != (612, 792)
+    # 11 cm of picture + 0.4 cm + a 4 pt border each side (and, where points crowd, 0.5 cm
+    # and the zoomed inset, INSET_PT / FRAME_PT of the diagram's width); taller than the
+    # picture for the title and legend
+    from graspcompass.scene.labelling import FRAME_PT
+    from graspcompass.scene.picture import INSET_PT, scene_of
+
+    inset = 0.5 + 11 * INSET_PT / FRAME_PT if scene_of(own).inset is not None else 0.0
+    assert w == pytest.approx((11.4 + inset) / 2.54 * 72 + 8, abs=2.0)
+    assert 11.4 / 2.54 * 72 + 9 < h < 792 and (w, h) != (612, 792)
     text = tex.read_text("utf-8")
     head = re.search(r"\{\\large\\bfseries (.*)\\par\}", text).group(1)
     if title is None:  # a grasp of one's own gets its values as title
@@ -538,3 +544,37 @@ def test_dumps_refuses_a_text_loads_cannot_read(fig6, monkeypatch):
     monkeypatch.setattr(gj, "MAX_BYTES", 1000)
     with pytest.raises(gj.JSONTooLargeError, match=r"the JSON text has \d+ bytes, more than 1000"):
         dumps(fig6)
+
+
+@NEEDS_TEX
+def test_tikz_fig6_has_the_zoomed_inset_and_compiles(fig6, tmp_path):
+    """Fig. 6's crowded centre (issue 23): a second picture beside the diagram, zoomed on
+    the scene's inset, naming the points left to it; compiled by pdflatex, the right part
+    of the page is drawn on (pdftoppm)."""
+    from graspcompass.scene.picture import scene_of
+
+    inset = scene_of(fig6).inset
+    assert inset is not None
+    text = to_tikz(fig6)
+    assert text.count("\\begin{tikzpicture}") == 2
+    main, zoom = text.split("zoomed inset of the crowded region", 1)
+    for lab in inset.labels:
+        assert f"{{${lab.tex()}$}};" in zoom, lab.names
+    for lab in inset.main:
+        assert f"{{${lab.tex()}$}};" in main, lab.names
+    # O = O_M = Y4 crowds in the diagram: it is named in the inset only
+    assert "{$O = O_M = Y_4$}" in zoom and "{$O = O_M = Y_4$}" not in main
+    tex = tmp_path / "fig6.tex"
+    tex.write_text(text, encoding="utf-8")
+    pdf = _pdflatex(tex)
+    assert "Overfull" not in tex.with_suffix(".log").read_text("latin-1")
+    if shutil.which("pdftoppm"):
+        subprocess.run(["pdftoppm", "-r", "20", "-gray", pdf.name, "page"], cwd=tmp_path,
+                       check=True, timeout=60)
+        (pgm,) = tmp_path.glob("page*.pgm")
+        raw = pgm.read_bytes()
+        head = raw.split(b"\n", 3)
+        w, h = (int(v) for v in head[1].split())
+        pixels = head[3]
+        right = [pixels[r * w + c] for r in range(h) for c in range(int(0.6 * w), w)]
+        assert sum(p < 128 for p in right) > 0.01 * len(right)

@@ -91,8 +91,14 @@ def test_each_preset_renders_and_saves(constructions, preset, tmp_path):
         assert out == tmp_path / f"{preset}.{ext}"
         assert out.is_file() and out.stat().st_size > 0
     image = mpimg.imread(tmp_path / f"{preset}.png")
-    # 7.4 in × 150 dpi high; 7 in wide, wider by a zoomed inset where points crowd
-    assert image.shape[0] == 1110 and image.shape[1] >= 1050
+    # 7.4 in × 150 dpi high, 7 in wide; where points crowd wider by a zoomed inset and
+    # taller by its excess over the diagram's side (INSET_PT / FRAME_PT of it)
+    from graspcompass.scene.labelling import FRAME_PT
+    from graspcompass.scene.picture import INSET_PT, scene_of
+
+    extra = 0.0 if scene_of(constructions[preset]).inset is None else \
+        max(0.0, (INSET_PT - FRAME_PT) / 72.0)
+    assert image.shape[0] == round((7.4 + extra) * 150) and image.shape[1] >= 1050
     assert image.shape[2] in (3, 4)
     assert (tmp_path / f"{preset}.svg").read_text().lstrip().startswith("<?xml")
     assert (tmp_path / f"{preset}.pdf").read_bytes()[:5] == b"%PDF-"

@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import random
 
-import pytest
-
 from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export import to_svg
@@ -86,9 +84,6 @@ def measure(page, svg: str):
     return page.evaluate(MEASURE)
 
 
-@pytest.mark.xfail(strict=False, reason="issue 23 open: the rule 'nearer its own point than "
-                   "any other' still fails for crowded points (145 faults over these 24 "
-                   "pictures, mostly labels of points near O among the break points)")
 def test_svg_labels_name_their_points_in_chromium() -> None:
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
     grasps += random_grasps(20)

@@ -52,6 +52,7 @@ from typing import TYPE_CHECKING, Any
 from .._version import __version__
 from ..geometry.numeric import to_float
 from ..grasp import PRESETS, Grasp
+from ..scene import fit as fitting
 from ..scene import labelling
 from ..scene.palette import PALETTE
 
@@ -138,7 +139,7 @@ def page_data(construction: Construction, title: str | None = None) -> dict[str,
         title=title or grasp.title or "graspcompass: the internal force diagram",
         version=__version__, params=params, steps=steps, initial_step=len(steps) - 1,
         shape=_shape(grasp.shape), colors=dict(PALETTE), presets=presets,
-        labelling=labelling.spec(),
+        labelling=labelling.spec(), fit=fitting.spec(),
         # no title of its own: the page's heading gives the grasp's values instead
         untitled=title is None and not grasp.title,
     )

@@ -15,7 +15,8 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape, quoteattr
 
-from ..scene.labelling import FONT_PT, FRAME_PT
+from ..scene import metrics
+from ..scene.labelling import FONT_PT, FRAME_PT, MARKER_PT
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
 
 if TYPE_CHECKING:
@@ -30,7 +31,9 @@ _MARGIN_TOP = 40.0
 #: Label font in user units: the ratio font / picture width of the placement
 #: (:data:`graspcompass.labelling.FONT_PT` in :data:`~graspcompass.labelling.FRAME_PT`).
 _FONT = FONT_PT * _SIZE / FRAME_PT
-_ANCHOR = {1: "start", -1: "end", 0: "middle"}
+#: Marker radii in user units: the placement's marker (:data:`MARKER_PT`), a break point's.
+_MARKER_R = MARKER_PT / 2 * _SIZE / FRAME_PT
+_SMALL_R = 0.7 * _MARKER_R
 #: The inset's side and its gap to the diagram, in user units: the font keeps its size
 #: (:data:`graspcompass.scene.picture.INSET_PT` points of the placement).
 _INSET = INSET_PT * _SIZE / FRAME_PT
@@ -38,12 +41,14 @@ _GAP = 24.0
 
 
 def _label_svg(name: str) -> str:
-    """``<tspan>`` markup of a point label with its subscript."""
-    body = label_tex(name).replace("{", "").replace("}", "")
-    head, _, sub = body.partition("_")
-    if not sub:
-        return escape(head)
-    return f'{escape(head)}<tspan baseline-shift="sub" font-size="70%">{escape(sub)}</tspan>'
+    """``<tspan>`` markup of a point label with its subscript: the size and drop of
+    :mod:`graspcompass.scene.metrics`, which the placement measured the box with."""
+    out = []
+    for chars, sub in metrics.runs(label_tex(name)):
+        out.append(f'<tspan baseline-shift="{-metrics.SUB_SHIFT * _FONT:.2f}" '
+                   f'font-size="{metrics.SUB_SCALE * _FONT:.2f}">{escape(chars)}</tspan>'
+                   if sub else escape(chars))
+    return "".join(out)
 
 
 class _Map:
@@ -68,18 +73,16 @@ _HALO = 'paint-order="stroke" stroke="white" stroke-width="3.2" stroke-linejoin=
 
 
 def _label_text(lab: Label, m: _Map, label: str) -> str:
-    """The ``<text>`` of a label at its place (:attr:`Scene.labels`): its side of the point.
+    """The ``<text>`` of a label in its box (:attr:`Scene.labels`).
 
-    The placement's box is ``1.35`` font sizes high; the baseline sits ``0.3`` of
-    the font size above its bottom (room for the subscripts).  A white halo keeps
-    the curves behind it from running through the glyphs.
+    The box is the one the placement measured (:func:`graspcompass.scene.fit.label_box`):
+    the text starts at its left side, the baseline :data:`~graspcompass.scene.metrics.ASCENT`
+    font sizes below its top, in the font the metrics are of.  A white halo keeps the
+    curves behind it from running through the glyphs.
     """
-    x, y = m.xy(lab.at)
-    dy = lab.direction[1]
-    h = 1.35 * _FONT
-    bottom = y if dy == 1 else y + h if dy == -1 else y + h / 2  # SVG's y points down
-    return (f'<text x="{x:.3f}" y="{bottom - 0.3 * _FONT:.3f}" '
-            f'text-anchor="{_ANCHOR[lab.direction[0]]}" font-size="{_FONT:.2f}" '
+    left, top = m.xy((lab.box[0], lab.box[3]))
+    return (f'<text x="{left:.3f}" y="{top + metrics.ASCENT * _FONT:.3f}" '
+            f'font-size="{_FONT:.2f}" font-family="{metrics.FAMILY}" '
             f'font-style="italic" {_HALO}>{label}</text>')
 
 
@@ -187,7 +190,7 @@ def _points(scene: Scene, m: _Map, labels: tuple[Label, ...], tip: Callable[[str
             continue
         x, y = m.xy(xy)
         small = names[0] in scene.small
-        marker = (f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{2.2 if small else 3.2}" '
+        marker = (f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{_SMALL_R if small else _MARKER_R:.2f}" '
                   f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')
         lab = by_name.get(names[0])
         text = ""

@@ -20,7 +20,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..scene.picture import COLORS, Scene, exact_text, scene_of
+from ..scene.labelling import FRAME_PT
+from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, scene_of
 
 if TYPE_CHECKING:
     from ..construction import Construction
@@ -173,52 +174,10 @@ def _envelope_path(scene: Scene) -> str:
     return "\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"
 
 
-def to_tikz(construction: Construction, standalone: bool = True, title: str | None = None) -> str:
-    """TikZ code of ``construction`` (numeric parameters).
-
-    Parameters
-    ----------
-    construction : Construction
-    standalone : bool
-        A complete document if true: the title, the picture and a legend of its styles
-        on one page cut to their size (no ``standalone`` class needed); else only the
-        ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
-    title : str, optional
-        Comment line at the top; defaults to the grasp's title.
-
-    Examples
-    --------
-    >>> from graspcompass import Grasp, internal_force_diagram
-    >>> text = to_tikz(internal_force_diagram(Grasp.preset("fig6")))
-    >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
-    True
-    """
-    scene = scene_of(construction, title)
-    box = scene.box
-    pad = 0.1 * (box[1] - box[0])
-    out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
-           _comment("Ito, Tanaka, Sasaki, Robotica 30(5) 2012: internal force diagram, "
-                    "ruler-and-compass construction (sec. 3.3)")]
-    grasp = construction.grasp
-    if grasp is not None:
-        out.append(_comment("grasp: " + ", ".join(f"{k} = {v}" for k, v in grasp.params.items())))
-    width = _WIDTH_CM + 0.4
-    if standalone:
-        out += ["\\documentclass{article}", "\\usepackage{tikz}",
-                _comment("a standalone page: title, picture and legend in one box, shipped out "
-                         "on a page of its size with a 4 pt border (as the standalone class)"),
-                "\\newsavebox{\\gcpage}", "\\begin{document}"]
-        styles = _style_defs(scene)
-        out += styles[:-1]  # the colours and styles before the box: the legend uses them
-        out += [f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
-                "\\parskip=0pt \\raggedright",
-                f"{{\\large\\bfseries {tex_text(_title(scene, construction))}"
-                "\\par}",
-                "\\smallskip{\\small Internal force diagram (Ito, Tanaka, Sasaki, Robotica 30(5), "
-                "2012), ruler-and-compass construction of Sec.~3.3\\par}\\medskip",
-                "\\hbox to \\hsize{\\hss", styles[-1]]
-    else:
-        out += _styles(scene)
+def _body(scene: Scene, construction: Construction, box: tuple[float, ...],
+          pad: float) -> list[str]:
+    """The drawing of every object, clipped to ``box`` (the diagram or the inset)."""
+    out: list[str] = []
     corners = f"{_xy((box[0], box[2]))} rectangle {_xy((box[1], box[3]))}"
     out += [f"\\path[use as bounding box] {corners};", f"\\clip {corners};"]
     if scene.outline is not None:
@@ -264,18 +223,99 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
             out.append(_comment("exact arcs: " + exact_text(s.obj)))
             out.append(_envelope_path(scene))
         out += tools.get(s.name, [])
-    out.append(_comment("points and their labels (coincident points share one label)"))
-    for names, _ in scene.points:
+    return out
+
+
+def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> list[str]:
+    """The markers of the points in ``box`` and the ``labels`` (white behind the glyphs)."""
+    by_name = {lab.names[0]: lab for lab in labels}
+    out = [_comment("points and their labels (coincident points share one label)")]
+    for names, xy in scene.points:
+        if not (box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]):
+            continue
         small = names[0] in scene.small
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
-        if not small:
-            text = ""
-            lab = scene.label_of(names[0])
-            text = lab.tex() if lab is not None else text
-            if lab is not None:
-                out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
-                           f"{{${text}$}};")
+        lab = by_name.get(names[0])
+        if not small and lab is not None:
+            out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
+                       f"{{${lab.tex()}$}};")
+    return out
+
+
+def to_tikz(construction: Construction, standalone: bool = True, title: str | None = None) -> str:
+    """TikZ code of ``construction`` (numeric parameters).
+
+    Parameters
+    ----------
+    construction : Construction
+    standalone : bool
+        A complete document if true: the title, the picture and a legend of its styles
+        on one page cut to their size (no ``standalone`` class needed); else only the
+        ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
+    title : str, optional
+        Comment line at the top; defaults to the grasp's title.
+
+    Examples
+    --------
+    >>> from graspcompass import Grasp, internal_force_diagram
+    >>> text = to_tikz(internal_force_diagram(Grasp.preset("fig6")))
+    >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
+    True
+    """
+    scene = scene_of(construction, title)
+    box = scene.box
+    pad = 0.1 * (box[1] - box[0])
+    out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
+           _comment("Ito, Tanaka, Sasaki, Robotica 30(5) 2012: internal force diagram, "
+                    "ruler-and-compass construction (sec. 3.3)")]
+    grasp = construction.grasp
+    if grasp is not None:
+        out.append(_comment("grasp: " + ", ".join(f"{k} = {v}" for k, v in grasp.params.items())))
+    width = _WIDTH_CM + 0.4
+    if scene.inset is not None:  # the inset beside the diagram
+        width += 0.5 + _WIDTH_CM * INSET_PT / FRAME_PT
+    if standalone:
+        out += ["\\documentclass{article}", "\\usepackage{tikz}",
+                _comment("a standalone page: title, picture and legend in one box, shipped out "
+                         "on a page of its size with a 4 pt border (as the standalone class)"),
+                "\\newsavebox{\\gcpage}", "\\begin{document}"]
+        styles = _style_defs(scene)
+        out += styles[:-1]  # the colours and styles before the box: the legend uses them
+        out += [f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
+                "\\parskip=0pt \\raggedright",
+                f"{{\\large\\bfseries {tex_text(_title(scene, construction))}"
+                "\\par}",
+                "\\smallskip{\\small Internal force diagram (Ito, Tanaka, Sasaki, Robotica 30(5), "
+                "2012), ruler-and-compass construction of Sec.~3.3\\par}\\medskip",
+                "\\hbox to \\hsize{\\hss", styles[-1]]
+    else:
+        out += _styles(scene)
+    out += _body(scene, construction, box, pad)
+    inset = scene.inset
+    out += _points(scene, scene.labels if inset is None else inset.main, box)
+    if inset is not None:
+        z = inset.box
+        out.append(f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
+                   f"{_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};")
+        out.append("\\end{tikzpicture}\\hskip 0.5cm")
+        # the zoomed inset of the crowded region (Scene.inset): its labels were placed in
+        # a frame INSET_PT / FRAME_PT times the diagram's width, at the same font size
+        unit = _WIDTH_CM * INSET_PT / FRAME_PT / (z[1] - z[0])
+        out.append(_comment(f"zoomed inset of the crowded region, "
+                            f"{unit / (_WIDTH_CM / (box[1] - box[0])):.1f} times larger"))
+        main_unit = _WIDTH_CM / (box[1] - box[0])
+        if standalone:  # the styles are global (\tikzset)
+            out.append(f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, "
+                       "line cap=round]")
+        else:  # the styles of the diagram's picture, in the inset's unit
+            out += "\n".join(_styles(scene)[len(COLORS):]).replace(
+                f"x={_num(main_unit)}cm, y={_num(main_unit)}cm",
+                f"x={_num(unit)}cm, y={_num(unit)}cm", 1).split("\n")
+        out += _body(scene, construction, z, pad)
+        out += _points(scene, inset.labels, z)
+        out.append(f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle "
+                   f"{_xy((z[1], z[3]))};")
     out.append("\\end{tikzpicture}")
     if standalone:
         out += ["\\hss}\\medskip", _legend(), "}}",

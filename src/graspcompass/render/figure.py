@@ -353,9 +353,13 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
     extra = INSET_PT / 72.0 + 0.9 if zoom is not None else 0.0
     w, h = figsize
     h += 0.4  # room for a title of two lines
+    # an inset taller than the diagram: the figure taller by the difference, the tops level
+    taller = max(0.0, INSET_PT / 72.0 - side) if zoom is not None else 0.0
+    h += taller
     bottom = 1.4 / h
     fig = Figure(figsize=(w + extra, h))
-    ax = fig.add_axes((0.08 * w / (w + extra), bottom, side / (w + extra), side / h))
+    ax = fig.add_axes((0.08 * w / (w + extra), bottom + taller / h, side / (w + extra),
+                       side / h))
     last = len(construction.steps) - 1
     full = step is None or step % len(construction.steps) == last
     draw_construction(construction, step=step, ax=ax, theme=theme, labels=labels,
@@ -371,7 +375,7 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
     if zoom is not None:
         left = (0.08 * w + side + 0.5) / (w + extra)
         zs = INSET_PT / 72.0
-        zax = fig.add_axes((left, bottom + (side - zs) / h, zs / (w + extra), zs / h))
+        zax = fig.add_axes((left, bottom + (side + taller - zs) / h, zs / (w + extra), zs / h))
         drawn = draw_construction(construction, step=step, ax=zax, theme=theme, labels=labels,
                                   view="inset")
         for arts in drawn.values():  # the length arrows too stay inside the inset

@@ -14,7 +14,7 @@ Examples
 --------
 >>> (p,) = fit([(100.0, 100.0)], ["$O$"], frame=(0.0, 0.0, 200.0, 200.0))
 >>> p.direction, p.leader
-((1, 1), False)
+((0, 1), False)
 """
 
 from __future__ import annotations
@@ -26,20 +26,34 @@ from typing import Any
 
 import numpy as np
 
-from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample, text_size
+from . import metrics
+from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample
 
-__all__ = ["CROWD", "FITS", "MARGIN", "Fit", "crowded_region", "fit", "leader"]
+__all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "REORDER", "Fit",
+           "crowded_region", "fit", "label_box", "leader", "spec"]
 
-#: The distances tried, in units of the marker's radius plus the gap (the first two are
-#: :data:`graspcompass.scene.labelling.FAR`); from the third on a leader line is drawn.
-FITS = (1.0, 2.0, 3.0, 4.5, 6.5, 9.0)
+#: The directions from the point to the label's box tried, in order of preference: the
+#: eight of :data:`~.labelling.OFFSETS` (NE, NW, SE, SW, N, S, E, W), then every 15°
+#: between them (the steeper ones first).
+DIRECTIONS = tuple((dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)) for dx, dy in OFFSETS) + \
+    tuple((math.cos(math.radians(a)), math.sin(math.radians(a)))
+          for a in sorted(set(range(0, 360, 15)) - set(range(0, 360, 45)),
+                          key=lambda a: (abs(math.sin(math.radians(a))) < 0.5, a)))
+
+#: The distances tried from the point to the label's box, in units of the marker's radius
+#: plus the gap.
+FITS = (1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.5, 6.5, 9.0)
+#: From this distance of :data:`FITS` on a leader line joins label and point.
+LEADER = 3.0
 #: The crowd rule of :func:`crowded_region`: a point is crowded when ``count`` other
 #: markers lie within ``radius`` of the frame's side from it.
 CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.45}
 #: Safety margins (points) of the rules: a label's box is grown by ``grow`` on each side
-#: (and its width by the factor ``wide``) against the others and the markers; a label must
-#: be nearer its own point than any other by ``nearer``.
-MARGIN: dict[str, float] = {"grow": 1.5, "wide": 1.12, "nearer": 2.0, "marker": 1.5}
+#: against the others and the markers (a marker's by ``marker``); a label must be nearer
+#: its own point than any other by ``nearer``.
+#: How many times :func:`fit` places the labels again, those that found no place first.
+REORDER = 1
+MARGIN: dict[str, float] = {"grow": 1.0, "nearer": 1.0, "marker": 0.75}
 
 
 @dataclass(frozen=True)
@@ -72,7 +86,8 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         obstacles: Sequence[tuple[float, float]] | np.ndarray = (), font_size: float = FONT_PT,
         marker_size: float = MARKER_PT, gap: float = GAP_PT,
         optional: Sequence[bool] = (),
-        avoid: Sequence[tuple[float, float, float, float]] = ()) -> list[Fit | None]:
+        avoid: Sequence[tuple[float, float, float, float]] = (),
+        marker_sizes: Sequence[float] = ()) -> list[Fit | None]:
     """One :class:`Fit` per label ``texts[i]`` of the point ``anchors[i]`` (or None).
 
     Parameters
@@ -90,35 +105,65 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         Per label: True leaves it out (None) when no place keeps every rule.
     avoid
         Boxes ``(x0, y0, x1, y1)`` of labels already placed.
+    marker_sizes
+        Per point of ``anchors`` then ``obstacles``, its marker's size where it is not
+        ``marker_size``: two points are one place when their markers touch.
     """
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
-    r = marker_size / 2 + MARGIN["marker"]
+    msize = np.full(len(every), float(marker_size))
+    msize[:len(marker_sizes)] = np.asarray(marker_sizes, dtype=float)[:len(every)]
+    r = msize / 2 + MARGIN["marker"]
     markers = np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r,
                                every[:, 1] + r]) if len(every) else np.zeros((0, 4))
-    sizes = [text_size(t, font_size) for t in texts]
-    curve = resample([c for c in curves if len(c)], RESAMPLE_PT) if len(curves) else \
+    sizes = [label_box(t, font_size) for t in texts]
+    # only the curves' samples that some box tried can hold (a huge circle near a bound
+    # of condition (1) costs what this window holds)
+    fin = pts[np.all(np.isfinite(pts), axis=1)]
+    reach = max([max(w, h) for w, h in sizes] + [0.0]) + (marker_size / 2 + gap) * max(FITS) + 1.0
+    window = (float(fin[:, 0].min() - reach), float(fin[:, 1].min() - reach),
+              float(fin[:, 0].max() + reach), float(fin[:, 1].max() + reach)) if len(fin) else None
+    curves = [c for c in curves if len(c)]
+    curve = resample(curves, RESAMPLE_PT, window=window) if curves and window else \
         np.zeros((0, 2))
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
+    best_out: list[Fit | None] | None = None
+    for _ in range(REORDER + 1):  # the labels that found no place first, again
+        out = _greedy(order, pts, every, markers, sizes, curve, frame, msize, gap,
+                      optional, avoid)
+        fails = [i for i in order if out[i] is None or not out[i].ok]  # type: ignore[union-attr]
+        if best_out is None or len(fails) < sum(f is None or not f.ok for f in best_out):
+            best_out = out
+        if not fails:
+            break
+        order = fails + [i for i in order if i not in fails]
+    assert best_out is not None  # REORDER >= 0: the loop ran
+    return best_out
+
+
+def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.ndarray,
+            sizes: list[tuple[float, float]], curve: np.ndarray,
+            frame: tuple[float, float, float, float] | None, msize: np.ndarray, gap: float,
+            optional: Sequence[bool], avoid: Sequence[tuple[float, float, float, float]]
+            ) -> list[Fit | None]:
+    """The labels placed one by one in ``order``, each where it breaks the fewest rules."""
     placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
-    out: list[Fit | None] = [None] * len(texts)
-    g, wide = MARGIN["grow"], MARGIN["wide"]
+    out: list[Fit | None] = [None] * len(sizes)
+    g = MARGIN["grow"]
     for i in order:
         px, py = pts[i]
         w, h = sizes[i]
-        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) > 1e-6]
+        # a marker over the point's own marker is its place too (one place to the eye)
+        others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) >= (msize + msize[i]) / 2]
         best: tuple[float, Fit] | None = None
-        rank = 0
         for k, far in enumerate(FITS):
-            d = (marker_size / 2 + gap) * far
-            for dx, dy in OFFSETS:
-                rank += 1
-                x0 = px + dx * d - (w if dx < 0 else w / 2 if dx == 0 else 0)
-                y0 = py + dy * d - (h if dy < 0 else h / 2 if dy == 0 else 0)
-                box = np.array([x0, y0, x0 + w, y0 + h])
-                cx = (box[0] + box[2]) / 2
-                big = np.array([cx - wide * w / 2 - g, y0 - g, cx + wide * w / 2 + g, y0 + h + g])
+            d = (msize[i] / 2 + gap) * far
+            for rank, (ux, uy) in enumerate(DIRECTIONS):
+                t = min(w / 2 / abs(ux) if ux else math.inf, h / 2 / abs(uy) if uy else math.inf)
+                cx, cy = px + ux * (d + t), py + uy * (d + t)
+                box = np.array([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2])
+                big = box + np.array([-g, -g, g, g])
                 bad = 0.0
                 bad += 100.0 * _hits(big, np.array(placed).reshape(-1, 4))
                 bad += 100.0 * _hits(big, markers)
@@ -129,15 +174,21 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
                 if frame is not None:
                     bad += 100.0 * (box[0] < frame[0] or box[1] < frame[1]
                                     or box[2] > frame[2] or box[3] > frame[3])
-                soft = rank * 0.5
+                soft = 10.0 * k + 0.5 * rank
                 if len(curve):
                     inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
                               & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
                     soft += 1.5 * float(inside.sum())
                 score = bad * 1000.0 + soft
-                f = Fit((float(dx * d), float(dy * d)), (int(dx), int(dy)),
-                        tuple(float(v) for v in box), k >= 2, bad == 0.0)  # type: ignore[arg-type]
                 if best is None or score < best[0]:
+                    # the side of the point the whole box is on (0: across it)
+                    dx = 1 if box[0] >= px else -1 if box[2] <= px else 0
+                    dy = 1 if box[1] >= py else -1 if box[3] <= py else 0
+                    ax = box[0] if dx > 0 else box[2] if dx < 0 else cx
+                    ay = box[1] if dy > 0 else box[3] if dy < 0 else cy
+                    f = Fit((float(ax - px), float(ay - py)), (dx, dy),
+                            tuple(float(v) for v in box), far >= LEADER,  # type: ignore[arg-type]
+                            bad == 0.0)
                     best = (score, f)
         assert best is not None
         f = best[1]
@@ -146,6 +197,18 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
         placed.append(np.asarray(f.box))
         out[i] = f
     return out
+
+
+def label_box(text: str, font_size: float) -> tuple[float, float]:
+    """``(width, height)`` of a label's box: its drawn text (:mod:`.metrics`), in points.
+
+    Examples
+    --------
+    >>> [round(v, 2) for v in label_box("$O$", 10.0)]
+    [7.87, 11.64]
+    """
+    w, up, down = metrics.extent(text, font_size)
+    return w, up + down
 
 
 def crowded_region(anchors: Sequence[tuple[float, float]] | np.ndarray,
@@ -193,3 +256,20 @@ def leader(point: tuple[float, float], box: tuple[float, float, float, float]
     y = min(max(point[1], box[1]), box[3])
     end = (float(x), float(y)) if math.hypot(x - point[0], y - point[1]) > 0 else point
     return point, end
+
+
+def spec() -> dict[str, Any]:
+    """The constants of :func:`fit` as JSON data, for its port in the web page
+    (``GCLabelling.fit`` in ``labelling.js``; ``tests/test_web_labels.py`` checks both).
+
+    Examples
+    --------
+    >>> spec()["fits"][0], spec()["metrics"]["widths"][0]
+    (1.0, 651)
+    """
+    return {"directions": [list(d) for d in DIRECTIONS], "fits": list(FITS), "leader": LEADER,
+            "reorder": REORDER, "margin": dict(MARGIN), "font": FONT_PT, "marker": MARKER_PT,
+            "gap": GAP_PT, "resample": RESAMPLE_PT,
+            "metrics": {"widths": list(metrics.WIDTHS), "ascent": metrics.ASCENT,
+                        "descent": metrics.DESCENT, "sub_scale": metrics.SUB_SCALE,
+                        "sub_shift": metrics.SUB_SHIFT, "family": metrics.FAMILY}}

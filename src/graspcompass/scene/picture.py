@@ -37,8 +37,8 @@ if TYPE_CHECKING:
     from ..construction.protocol import Construction
     from ..grasp import Grasp
 
-__all__ = ["COLORS", "INSET_PT", "Arc", "Inset", "Instrument", "Label", "Scene", "build_scene",
-           "exact_text", "group_points", "label_tex", "scene_of"]
+__all__ = ["COLORS", "INSET_PT", "INSET_SHRINK", "Arc", "Inset", "Instrument", "Label", "Scene",
+           "build_scene", "exact_text", "group_points", "label_tex", "scene_of"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -47,7 +47,11 @@ Box = tuple[float, float, float, float]
 COLORS = PALETTE
 #: Side in points of the zoomed inset's square frame (the main one is
 #: :data:`graspcompass.scene.labelling.FRAME_PT`), its labels at the same font size.
-INSET_PT = 0.6 * labelling.FRAME_PT
+INSET_PT = 1.25 * labelling.FRAME_PT
+#: The sides of the inset tried, as fractions of the crowded region's
+#: (:func:`graspcompass.scene.fit.crowded_region`): a smaller one zooms in further where
+#: a label has no place that keeps every rule.
+INSET_SHRINK = (1.0, 0.8, 0.64, 0.5, 0.4)
 
 
 @dataclass(frozen=True)
@@ -383,16 +387,20 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
                     for i in idx}
         text_of = {i: "$" + ", ".join(" = ".join(label_tex(n) for n in order[j][0])
                                       for j in joined[i]) + "$" for i in idx}
+        # the other points of a label's group: markers no label covers
+        members = [anchors[j] for i in idx for j in joined[i] if j != i]
         fits = fitting.fit(to_pt([anchors[i] for i in idx], frame, scale),
                            [text_of[i] for i in idx],
                            curves=[to_pt(c, frame, scale) for c in curves],
                            frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
-                           obstacles=to_pt(obstacles, frame, scale),
+                           obstacles=np.vstack([to_pt(obstacles, frame, scale),
+                                                to_pt(members, frame, scale)]),
                            optional=[optional[i] for i in idx],
                            avoid=[((b[0] - frame[0]) * scale, (b[1] - frame[2]) * scale,
                                    (b[2] - frame[0]) * scale, (b[3] - frame[2]) * scale)
                                   for b in (lab.box for lab in avoid)])
         out = []
+        broken.append(sum(p is not None and not p.ok for p in fits))
         for i, p in zip(idx, fits):
             if p is None:
                 continue
@@ -404,23 +412,46 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
                              p.offset, xy, p.leader, group_of[i]))
         return tuple(out)
 
+    broken: list[int] = []  # per call of placed: how many labels break a rule
     every = [True] * len(order)
     beside = placed(box, s, every, within, (box[3] - box[2]) * s)
     if region is None:
         return beside, None
     # the labels left to the inset, set where they break the fewest rules, for the
     # painters without the inset
-    done = {lab.names[0] for lab in beside}
+    done = {n for lab in beside for n in lab.names}
     rest = [not (within[i] and order[i][0][0] not in done) for i in range(len(order))]
     rest = [not r for r in rest]
     more = placed(box, s, rest, [False] * len(order), (box[3] - box[2]) * s, avoid=beside)
     main = tuple(sorted(beside + more,
                         key=lambda lab: labelling.label_order(lab.names)))
-    sub = (box[0] + region[0] / s, box[0] + region[2] / s,
-           box[2] + region[1] / s, box[2] + region[3] / s)
-    z = INSET_PT / (sub[1] - sub[0])
-    inside = [sub[0] <= x <= sub[1] and sub[2] <= y <= sub[3] for x, y in anchors]
-    return main, Inset(sub, placed(sub, z, inside, [False] * len(order), INSET_PT), beside)
+    # the inset: the region, zoomed further (about the points left to it) while some
+    # label breaks a rule there, as long as it holds every point left to it; a point
+    # named in the whole view is named in the inset only where a place keeps every rule
+    left = [within[i] and order[i][0][0] not in done for i in range(len(order))]
+    mine = np.array([xy for xy, k in zip(anchors, left) if k]).reshape(-1, 2)
+    best: tuple[tuple[int, float], Inset] | None = None
+    for shrink in INSET_SHRINK:
+        half = (region[2] - region[0]) * shrink / 2 / s
+        if len(mine):
+            lo, hi = mine.min(axis=0), mine.max(axis=0)
+            half = max(half, float((hi - lo).max()) / 2 * 1.25)
+            cx, cy = (lo + hi) / 2
+        else:
+            cx = box[0] + (region[0] + region[2]) / 2 / s
+            cy = box[2] + (region[1] + region[3]) / 2 / s
+        sub = (cx - half, cx + half, cy - half, cy + half)
+        inside = [sub[0] <= x <= sub[1] and sub[2] <= y <= sub[3] for x, y in anchors]
+        optional = [a and not b for a, b in zip(inside, left)]
+        z = INSET_PT / (sub[1] - sub[0])
+        labs = placed(sub, z, inside, optional, INSET_PT)
+        key = (broken[-1], shrink and -shrink)
+        if best is None or key < best[0]:
+            best = (key, Inset(sub, labs, beside))
+        if broken[-1] == 0:
+            break
+    assert best is not None
+    return main, best[1]
 
 
 def exact_text(obj: Any) -> str:

@@ -435,10 +435,48 @@
   // it holds the marker SUB_M, the <text> gets text nodes and <tspan> subscripts instead
   const SVG_NS = "http://www.w3.org/2000/svg";
   const drawSub = board.renderer.updateInternalText.bind(board.renderer);
+  // a label placed by GCLabelling.fit (t.gcFit) is set as the SVG sets it: in the font the
+  // placement measured (scene.metrics: DejaVu Sans Oblique, subscripts at SUB_SCALE of the
+  // size, their baseline SUB_SHIFT lower), its text starting at its box's left side, the
+  // baseline ASCENT below the box's top (the label's anchor: left, top)
+  const SUBS = "₀₁₂₃₄₅₆₇₈₉ₓ" + "\u2098";
+  const PLAIN = "0123456789xM";
   board.renderer.updateInternalText = function (t) {
     drawSub(t);
     const node = t.rendNode, text = t.plaintext;
-    if (!node || typeof text !== "string" || t.gcSubShown === text) return;
+    if (!node || typeof text !== "string") return;
+    if (t.gcFit) {
+      const m = DATA.fit.metrics, f = t.gcFont;
+      node.setAttribute("font-family", m.family);
+      node.setAttribute("font-style", "italic");
+      node.setAttribute("font-size", `${f}px`);
+      node.setAttribute("text-anchor", "start");
+      node.setAttribute("dy", "0");
+      node.setAttribute("y", `${t.coords.scrCoords[2] + m.ascent * f}px`);
+      if (t.gcSubShown === text + "|fit" + f) return;
+      t.gcSubShown = text + "|fit" + f;
+      while (node.firstChild) node.removeChild(node.firstChild);
+      let run = "", sub = false;
+      const flush = () => {
+        if (!run) return;
+        if (sub) {
+          const ts = document.createElementNS(SVG_NS, "tspan");
+          ts.setAttribute("baseline-shift", `${-m.sub_shift * f}px`);
+          ts.setAttribute("font-size", `${m.sub_scale * f}px`);
+          ts.textContent = run;
+          node.appendChild(ts);
+        } else node.appendChild(document.createTextNode(run));
+        run = "";
+      };
+      for (const c of Array.from(text)) {
+        const k = SUBS.indexOf(c);
+        if ((k >= 0) !== sub) { flush(); sub = k >= 0; }
+        run += k >= 0 ? PLAIN[k] : c;
+      }
+      flush();
+      return;
+    }
+    if (t.gcSubShown === text) return;
     t.gcSubShown = text;
     while (node.firstChild) node.removeChild(node.firstChild);
     if (text.indexOf(SUB_M) < 0) {
@@ -828,10 +866,22 @@
       curves: drawnCurves(box).map((c) => c.map(pt)), frame, obstacles } };
     // the paper's points exactly as the SVG and TikZ place them; then H, worst and best
     // around them, avoiding their labels and markers
-    const placed = GL.place(lastInputs.anchors, texts,
-      Object.assign({ spec: LSPEC }, lastInputs.opts));
+    // a label no place suits is left out (as in the SVG's diagram beside its inset): zoom
+    // in (shift + wheel) and it finds room
+    lastInputs.fontSize = LFONT / pxPerPt;
+    // the markers as drawn (a point of size s: 2 s + 2 px across, its stroke included; a
+    // cross 2 s): points whose markers do not touch are two places, each label nearer its own
+    const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
+    lastInputs.markerSizes = groups.map((g) => across(g.e.el)).concat(markers
+      .filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
+      .map((m) => across(m.el)));
+    const fitted = GL.fit(lastInputs.anchors, texts, Object.assign({ fitSpec: DATA.fit,
+      fontSize: lastInputs.fontSize, markerSizes: lastInputs.markerSizes,
+      optional: texts.map(() => true) }, lastInputs.opts));
+    const placed = fitted.map((f) => f || { offset: [0, 0], direction: [1, 1], box: null });
     const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
-      spec: LSPEC, curves: lastInputs.opts.curves, frame, avoid: placed.map((p) => p.box),
+      spec: LSPEC, curves: lastInputs.opts.curves, frame,
+      avoid: placed.filter((p) => p.box).map((p) => p.box),
       obstacles: obstacles.concat(lastInputs.anchors, unlabelled
         .filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
         .map((m) => pt(drawValue(m.name)))),
@@ -839,13 +889,33 @@
     const all = groups.concat(special);
     placed.push(...more);
     lastPlacement = all.map((g, i) => ({ names: g.names.slice(), direction: placed[i].direction,
-      offset: placed[i].offset, box: placed[i].box }));
+      offset: placed[i].offset, box: placed[i].box, shown: !!placed[i].box }));
     all.forEach((g, i) => {
       const label = g.e.el.label;
       if (!label) return;
       const p = placed[i];
-      // the anchor and side of the SVG and TikZ labels (SVG text-anchor, dominant-baseline)
       const vp = label.visProp;
+      if (i < groups.length) { // by GCLabelling.fit: the box's top left corner
+        const at = pt(g.at);
+        if (!p.box) {
+          if (label.visProp.visible !== false) label.setAttribute({ visible: false });
+          label.gcOff = true;
+          return;
+        }
+        if (label.gcOff) {
+          label.gcOff = false;
+          label.setAttribute({ visible: "inherit" });
+        }
+        label.gcFit = true;
+        label.gcFont = LFONT;
+        vp.offset = [(p.box ? p.box[0] - at[0] : 0) * pxPerPt,
+          (p.box ? p.box[3] - at[1] : 0) * pxPerPt];
+        vp.anchorx = "left";
+        vp.anchory = "top";
+        label.needsUpdate = true;
+        return;
+      }
+      // the anchor and side of the SVG and TikZ labels (SVG text-anchor, dominant-baseline)
       vp.offset = [p.offset[0] * pxPerPt, p.offset[1] * pxPerPt];
       vp.anchorx = ANCHOR_X[p.direction[0]];
       vp.anchory = ANCHOR_Y[p.direction[1]];
@@ -1375,6 +1445,26 @@
     },
     /** The labels as placed: [{names, direction, offset, box}] (points, y up). */
     labels: () => JSON.parse(JSON.stringify(lastPlacement)),
+    /** As drawn (getBoundingClientRect): per shown point of the paper and break point, its
+     * marker's rectangle and its label's (null: none), for the checks of the label rules. */
+    labelRects: () => {
+      const rect = (n) => { const r = n.getBoundingClientRect(); return [r.left, r.top,
+        r.right, r.bottom]; };
+      const [x0, y1, x1, y0] = board.getBoundingBox();
+      const inside = (p) => p && p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1;
+      const out = [];
+      for (const e of labelled) {
+        if (!e.el.rendNode || !entryOf.get(e.el).shown || !inside(drawValue(e.name))) continue;
+        const l = e.el.label;
+        const shown = l && l.rendNode && l.visPropCalc.visible && e.group;
+        out.push({ id: e.name, m: rect(e.el.rendNode), t: shown ? rect(l.rendNode) : null });
+      }
+      for (const m of markers) {
+        if (!m.el.rendNode || !entryOf.get(m.el).shown || !inside(drawValue(m.name))) continue;
+        out.push({ id: m.name, m: rect(m.el.rendNode), t: null });
+      }
+      return out;
+    },
     /** What the last placement was given: {anchors, texts, opts} (points, y up). */
     labelInputs: () => JSON.parse(JSON.stringify(lastInputs)),
     /** The one label placement (labelling.place) on any data, for checks. */

@@ -1,4 +1,5 @@
-/* graspcompass — label placement in the web page: a port of graspcompass.labelling.place.
+/* graspcompass — label placement in the web page: ports of graspcompass.labelling.place and
+ * of graspcompass.scene.fit.fit (the hard rules of the SVG, TikZ and PNG labels: fit below).
  *
  * One algorithm for every picture (issue 12 §4): the PNG, the SVG and the TikZ place their
  * labels with graspcompass.labelling.place (Python); the page places its own with this port,
@@ -267,6 +268,145 @@
     return out;
   }
 
+
+  // -- scene.fit: labels under hard rules (the placement of the SVG, TikZ and PNG) ----------
+
+  /** The label's [width, ascent, descent] in the font it is drawn in (scene.metrics.extent). */
+  function extent(text, fontSize, m) {
+    const body = text.split("$").join("").split("\\").join("");
+    const re = /_\{([^}]*)\}|_(.)|([^_]+)/g;
+    const w = (cs) => Array.from(cs).reduce((a, c) => {
+      const k = c.codePointAt(0);
+      return a + (k >= 32 && k < 127 ? m.widths[k - 32] : 2048);
+    }, 0) / 2048;
+    let width = 0, down = m.descent * fontSize, g;
+    while ((g = re.exec(body)) !== null) {
+      if (g[3]) width += w(g[3]) * fontSize;
+      else if (g[1] || g[2]) {
+        width += w(g[1] || g[2]) * m.sub_scale * fontSize;
+        down = Math.max(down, (m.sub_shift + m.descent * m.sub_scale) * fontSize);
+      }
+    }
+    return [width, m.ascent * fontSize, down];
+  }
+
+  function distToBox(x, y, b) {
+    const dx = Math.max(Math.max(b[0] - x, 0), x - b[2]);
+    const dy = Math.max(Math.max(b[1] - y, 0), y - b[3]);
+    return Math.hypot(dx, dy);
+  }
+
+  function hits(b, boxes) {
+    for (const o of boxes) {
+      if (Math.min(b[2], o[2]) > Math.max(b[0], o[0]) &&
+          Math.min(b[3], o[3]) > Math.max(b[1], o[1])) return true;
+    }
+    return false;
+  }
+
+  /** scene.fit.fit: one {offset, direction, box, leader, ok} per label, or null (optional
+   * labels that no place suits).  opts: fitSpec (scene.fit.spec()), curves, frame,
+   * obstacles, optional, avoid, fontSize, markerSize, markerSizes, gap. */
+  function fit(anchors, texts, opts) {
+    const sp = opts.fitSpec;
+    const font = opts.fontSize ?? sp.font, msize = opts.markerSize ?? sp.marker;
+    const gap = opts.gap ?? sp.gap, frame = opts.frame || null;
+    const optional = opts.optional || [];
+    const every = anchors.concat(opts.obstacles || []);
+    const ms = every.map((_, j) => (opts.markerSizes && j < opts.markerSizes.length
+      ? opts.markerSizes[j] : msize));
+    const markers = every.map(([x, y], j) => {
+      const r = ms[j] / 2 + sp.margin.marker;
+      return [x - r, y - r, x + r, y + r];
+    });
+    const sizes = texts.map((t) => {
+      const [w, up, down] = extent(t, font, sp.metrics);
+      return [w, up + down];
+    });
+    const curves = (opts.curves || []).filter((c) => c.length);
+    // only the samples some box tried can hold (scene.fit.fit's window)
+    const fin = anchors.filter(([x, y]) => Number.isFinite(x) && Number.isFinite(y));
+    const reach = Math.max(0, ...sizes.map(([w, h]) => Math.max(w, h))) +
+      (msize / 2 + gap) * Math.max(...sp.fits) + 1.0;
+    const win = fin.length ? [Math.min(...fin.map((p) => p[0])) - reach,
+      Math.min(...fin.map((p) => p[1])) - reach, Math.max(...fin.map((p) => p[0])) + reach,
+      Math.max(...fin.map((p) => p[1])) + reach] : null;
+    const flat = curves.length && win ? resample(curves, sp.resample, win) : [];
+    const crowd = anchors.map(([px, py]) =>
+      every.filter(([x, y]) => Math.hypot(x - px, y - py) < 40.0).length);
+    let order = anchors.map((_, i) => i).sort((a, b) => crowd[b] - crowd[a]);
+    const fails = (out) => out.filter((f) => f === null || !f.ok).length;
+    let best = null;
+    for (let round = 0; round <= sp.reorder; round++) {
+      const out = greedy(order, anchors, every, markers, sizes, flat, frame, ms, gap,
+        optional, opts.avoid || [], sp);
+      const failed = order.filter((i) => out[i] === null || !out[i].ok);
+      if (best === null || failed.length < fails(best)) best = out;
+      if (!failed.length) break;
+      order = failed.concat(order.filter((i) => !failed.includes(i)));
+    }
+    return best;
+  }
+
+  function greedy(order, pts, every, markers, sizes, flat, frame, ms, gap, optional,
+                  avoid, sp) {
+    const placed = avoid.map((b) => b.slice());
+    const out = pts.map(() => null);
+    const g = sp.margin.grow;
+    for (const i of order) {
+      const [px, py] = pts[i];
+      const [w, h] = sizes[i];
+      const others = every.filter(([x, y], j) =>
+        Math.hypot(x - px, y - py) >= (ms[j] + ms[i]) / 2);
+      let best = null, bestScore = Infinity;
+      sp.fits.forEach((far, k) => {
+        const d = (ms[i] / 2 + gap) * far;
+        sp.directions.forEach(([ux, uy], rank) => {
+          const t = Math.min(ux ? w / 2 / Math.abs(ux) : Infinity,
+            uy ? h / 2 / Math.abs(uy) : Infinity);
+          const cx = px + ux * (d + t), cy = py + uy * (d + t);
+          const box = [cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2];
+          const big = [box[0] - g, box[1] - g, box[2] + g, box[3] + g];
+          let bad = 0;
+          bad += 100 * hits(big, placed);
+          bad += 100 * hits(big, markers);
+          if (others.length) {
+            const own = distToBox(px, py, big);
+            const near = Math.min(...others.map(([x, y]) => distToBox(x, y, big)));
+            bad += 100 * (near < own + sp.margin.nearer);
+          }
+          if (frame) {
+            bad += 100 * (box[0] < frame[0] || box[1] < frame[1] || box[2] > frame[2] ||
+              box[3] > frame[3]);
+          }
+          let soft = 10 * k + 0.5 * rank;
+          if (flat.length) {
+            let inside = 0;
+            for (let j = 0; j < flat.length; j += 2) {
+              const x = flat[j], y = flat[j + 1];
+              if (x > box[0] && x < box[2] && y > box[1] && y < box[3]) inside++;
+            }
+            soft += 1.5 * inside;
+          }
+          const score = bad * 1000 + soft;
+          if (score < bestScore) {
+            const dx = box[0] >= px ? 1 : box[2] <= px ? -1 : 0;
+            const dy = box[1] >= py ? 1 : box[3] <= py ? -1 : 0;
+            const ax = dx > 0 ? box[0] : dx < 0 ? box[2] : cx;
+            const ay = dy > 0 ? box[1] : dy < 0 ? box[3] : cy;
+            bestScore = score;
+            best = { offset: [ax - px, ay - py], direction: [dx, dy], box,
+              leader: far >= sp.leader, ok: bad === 0 };
+          }
+        });
+      });
+      if (!best.ok && optional[i]) continue;
+      placed.push(best.box);
+      out[i] = best;
+    }
+    return out;
+  }
+
   /** The order of placement of a group of point names (labelling.label_order). */
   function labelOrder(names, spec) {
     return Math.min(...names.map((n) => ((spec.order.indexOf(n[0]) % 9) + 9) % 9));
@@ -280,5 +420,5 @@
     return !rest ? head : rest.length === 1 ? `${head}_${rest}` : `${head}_{${rest}}`;
   }
 
-  root.GCLabelling = { place, textSize, resample, labelOrder, tex, overlap };
+  root.GCLabelling = { place, textSize, resample, labelOrder, tex, overlap, fit, extent };
 })(typeof window !== "undefined" ? window : globalThis);
