@@ -159,7 +159,10 @@ class FrameAnimation:
         return self._canvas.copy_from_bbox(self.figure.bbox)
 
     def _draw(self, artists: list[Artist]) -> None:
-        for a in sorted(artists, key=lambda a: a.get_zorder()):
+        """Draw ``artists`` in the order the figure draws them (z-order, then as added)."""
+        place = {id(a): k for k, a in enumerate(
+            c for ax in self.figure.axes for c in ax.get_children())}
+        for a in sorted(artists, key=lambda a: (a.get_zorder(), place.get(id(a), -1))):
             if a.get_visible():
                 self.figure.draw_artist(a)
 
