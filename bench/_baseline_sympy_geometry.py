@@ -31,8 +31,15 @@ def _directions(phi1: Expr, phi2: Expr, mu1: Expr, mu2: Expr) -> dict[int, tuple
 
 
 def replay(
-    x1: Expr, x2: Expr, y: Expr, phi1: Expr, phi2: Expr, mu1: Expr, mu2: Expr,
-    *, circles: bool = True,
+    x1: Expr,
+    x2: Expr,
+    y: Expr,
+    phi1: Expr,
+    phi2: Expr,
+    mu1: Expr,
+    mu2: Expr,
+    *,
+    circles: bool = True,
 ) -> dict[str, object]:
     """Run the drawing steps with ``sympy.geometry``; return the named constructed objects."""
     out: dict[str, object] = {}
@@ -74,8 +81,13 @@ def replay(
 
 
 FIG6: dict[str, Expr] = dict(
-    x1=sqrt(3) / 2, x2=sqrt(3) / 2, y=Rational(1, 2),
-    phi1=pi / 3, phi2=pi / 3, mu1=tan(pi / 4), mu2=tan(pi / 3),
+    x1=sqrt(3) / 2,
+    x2=sqrt(3) / 2,
+    y=Rational(1, 2),
+    phi1=pi / 3,
+    phi2=pi / 3,
+    mu1=tan(pi / 4),
+    mu2=tan(pi / 3),
 )
 
 
@@ -83,9 +95,13 @@ def symbolic_params() -> dict[str, Expr]:
     """Fully symbolic parameters (same keys as FIG6)."""
     pos = dict(positive=True)
     return dict(
-        x1=Symbol("x1", **pos), x2=Symbol("x2", **pos), y=Symbol("y", **pos),
-        phi1=Symbol("phi1", real=True), phi2=Symbol("phi2", real=True),
-        mu1=Symbol("mu1", **pos), mu2=Symbol("mu2", **pos),
+        x1=Symbol("x1", **pos),
+        x2=Symbol("x2", **pos),
+        y=Symbol("y", **pos),
+        phi1=Symbol("phi1", real=True),
+        phi2=Symbol("phi2", real=True),
+        mu1=Symbol("mu1", **pos),
+        mu2=Symbol("mu2", **pos),
     )
 
 

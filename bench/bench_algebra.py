@@ -86,8 +86,11 @@ def _sympy_ring(values: list[sp.Expr]):
     gens = sorted({g for v in values for g in _MEMO[v][0].symbols}, key=sp.default_sort_key)
     R, *G = sp.ring(gens, sp.QQ, sp.lex)
     index = dict(zip(gens, G))
-    rels = [index[g] ** 2 + index[OpaqueCos(g.args[0])] ** 2 - 1 for g in gens
-            if isinstance(g, OpaqueSin) and OpaqueCos(g.args[0]) in index]
+    rels = [
+        index[g] ** 2 + index[OpaqueCos(g.args[0])] ** 2 - 1
+        for g in gens
+        if isinstance(g, OpaqueSin) and OpaqueCos(g.args[0]) in index
+    ]
     rels += [index[g] ** 2 - int(g.base) for g in gens if g.is_Pow]
     return R, rels
 
@@ -104,6 +107,7 @@ def _to_sympy(v: sp.Expr, R, rels) -> SympyFrac:
                     term *= R(g) ** int(e)
             out += term
         return out
+
     return SympyFrac(R, rels, conv(n), conv(d))
 
 
@@ -167,16 +171,22 @@ def main() -> None:
             size = (lambda f: f.size()) if name == "sympy" else _flint_size
             sizes[name].append(statistics.median(sum(size(b[0])) for b in out))
     base = statistics.median(times["sympy"])
-    print(f"{len(times['sympy'])} random whole grasps (seed {args.seed}): the six B_nm and "
-          "their tangents from V1..V4")
+    print(
+        f"{len(times['sympy'])} random whole grasps (seed {args.seed}): the six B_nm and "
+        "their tangents from V1..V4"
+    )
     print(f"{'candidate':12} {'median s':>9} {'slowest s':>10} {'ratio':>7} {'terms of B':>11}")
     for name in times:
         med = statistics.median(times[name])
-        print(f"{name:12} {med:9.4f} {max(times[name]):10.4f} {base / med:6.1f}x "
-              f"{statistics.median(sizes[name]):11.0f}")
+        print(
+            f"{name:12} {med:9.4f} {max(times[name]):10.4f} {base / med:6.1f}x "
+            f"{statistics.median(sizes[name]):11.0f}"
+        )
     best = min(times, key=lambda k: max(times[k]))  # a user's grasp is any grasp: the slowest
-    print(f"fastest on the slowest grasp: {best}; the kernel uses flint "
-          f"({'target met' if best == 'flint' else 'target NOT met'})")
+    print(
+        f"fastest on the slowest grasp: {best}; the kernel uses flint "
+        f"({'target met' if best == 'flint' else 'target NOT met'})"
+    )
 
 
 if __name__ == "__main__":

@@ -44,8 +44,11 @@ def angles_for(preset: str, count: int) -> list[tuple[str, str]]:
     for name, xi in (("phi1", float(g.xi1)), ("phi2", float(g.xi2))):
         lo, hi = _window(xi)
         margin = 1e-9
-        out += [(name, f"{d}deg") for d in range(math.floor(lo) + 1, math.ceil(hi))
-                if lo + margin < d < hi - margin]
+        out += [
+            (name, f"{d}deg")
+            for d in range(math.floor(lo) + 1, math.ceil(hi))
+            if lo + margin < d < hi - margin
+        ]
         seen = set()
         for q in range(1, 25):
             for p in range(1, 2 * q + 1):
@@ -54,8 +57,11 @@ def angles_for(preset: str, count: int) -> list[tuple[str, str]]:
                 if f not in seen and lo + margin < deg < hi - margin:
                     seen.add(f)
                     out.append((name, f"{f.numerator}*pi/{f.denominator}"))
-        decimals += [(name, f"{Fraction(t, 10)}deg") for t in range(math.floor(lo * 10) + 1,
-                     math.ceil(hi * 10)) if t % 10 and lo + margin < t / 10 < hi - margin]
+        decimals += [
+            (name, f"{Fraction(t, 10)}deg")
+            for t in range(math.floor(lo * 10) + 1, math.ceil(hi * 10))
+            if t % 10 and lo + margin < t / 10 < hi - margin
+        ]
     step = max(1, len(decimals) // max(1, count - len(out)))
     out += decimals[::step]
     return out
@@ -83,11 +89,20 @@ def run_one(job: tuple[str, str, str]) -> tuple[str, str, str, float, bool, str,
         c = internal_force_diagram(g)
         text = "\n".join(describe(s.obj) for s in c.steps)
     except InvalidGraspError as exc:
-        return (preset, name, angle, time.perf_counter() - t0, True, f"refused: {exc}",
-                time.process_time() - c0)
+        return (
+            preset,
+            name,
+            angle,
+            time.perf_counter() - t0,
+            True,
+            f"refused: {exc}",
+            time.process_time() - c0,
+        )
     dt, cpu = time.perf_counter() - t0, time.process_time() - c0
-    ok = all(decide_zero(c[f"V{n}"].x - v.x) and decide_zero(c[f"V{n}"].y - v.y)
-             for n, v in zip((1, 2, 3, 4), g.V))
+    ok = all(
+        decide_zero(c[f"V{n}"].x - v.x) and decide_zero(c[f"V{n}"].y - v.y)
+        for n, v in zip((1, 2, 3, 4), g.V)
+    )
     return preset, name, angle, dt, ok, "" if text else "no text", cpu
 
 
@@ -96,8 +111,9 @@ def main() -> None:
     ap.add_argument("--quick", action="store_true", help="60 angles per preset")
     ap.add_argument("--count", type=int, default=1000, help="angles per preset (default 1000)")
     ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--presets", default=",".join(PRESETS),
-                    help="comma-separated presets (default: all four)")
+    ap.add_argument(
+        "--presets", default=",".join(PRESETS), help="comma-separated presets (default: all four)"
+    )
     args = ap.parse_args()
     count = min(args.count, 60) if args.quick else args.count
     presets = tuple(p for p in args.presets.split(",") if p in PRESETS)
@@ -118,10 +134,14 @@ def main() -> None:
                 print(f"\r{i}/{len(jobs)}", end="", file=sys.stderr, flush=True)
     wall = time.perf_counter() - t0
     base_s = {p: statistics.median(r[3] for r in base if r[0] == p) for p in presets}
-    print(f"{len(jobs)} exact `steps` runs on {len(presets)} presets in {wall:.0f} s "
-          f"({args.jobs} processes)")
-    print(f"{'preset':8} {'runs':>5} {'median s':>9} {'slowest s':>10}  {'slowest angle':22}"
-          f" {'preset s':>9} {'ratio':>6} {'slowest CPU s':>13}  V_n exact")
+    print(
+        f"{len(jobs)} exact `steps` runs on {len(presets)} presets in {wall:.0f} s "
+        f"({args.jobs} processes)"
+    )
+    print(
+        f"{'preset':8} {'runs':>5} {'median s':>9} {'slowest s':>10}  {'slowest angle':22}"
+        f" {'preset s':>9} {'ratio':>6} {'slowest CPU s':>13}  V_n exact"
+    )
     worst_all = worst_cpu = 0.0
     for preset in presets:
         rs = [r for r in results if r[0] == preset]
@@ -130,9 +150,11 @@ def main() -> None:
         cpu = max(rs, key=lambda r: r[6])
         worst_cpu = max(worst_cpu, cpu[6])
         exact = sum(r[4] for r in rs)
-        print(f"{preset:8} {len(rs):5d} {statistics.median(r[3] for r in rs):9.3f} "
-              f"{worst[3]:10.3f}  {worst[1] + '=' + worst[2]:22} {base_s[preset]:9.3f} "
-              f"{worst[3] / base_s[preset]:6.1f} {cpu[6]:13.3f}  {exact}/{len(rs)}")
+        print(
+            f"{preset:8} {len(rs):5d} {statistics.median(r[3] for r in rs):9.3f} "
+            f"{worst[3]:10.3f}  {worst[1] + '=' + worst[2]:22} {base_s[preset]:9.3f} "
+            f"{worst[3] / base_s[preset]:6.1f} {cpu[6]:13.3f}  {exact}/{len(rs)}"
+        )
     bad = [r for r in results if not r[4]]
     for r in bad[:10]:
         print("  NOT EXACT:", r)
@@ -142,8 +164,10 @@ def main() -> None:
     verdict = "✔" if worst_all < TARGET_SECONDS and not bad else "✘"
     print(f"slowest exact run {worst_all:.3f} s wall (target < {TARGET_SECONDS} s) {verdict}")
     verdict = "✔" if worst_cpu < TARGET_SECONDS and not bad else "✘"
-    print(f"slowest exact run {worst_cpu:.3f} s CPU of its process (what it takes on an idle "
-          f"core; the wall time above includes waiting for a busy machine) {verdict}")
+    print(
+        f"slowest exact run {worst_cpu:.3f} s CPU of its process (what it takes on an idle "
+        f"core; the wall time above includes waiting for a busy machine) {verdict}"
+    )
 
 
 if __name__ == "__main__":

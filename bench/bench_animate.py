@@ -61,13 +61,22 @@ def naive_frames(c, anim, frames: list[int]) -> float:
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--naive-every", type=int, default=10, metavar="N",
-                   help="time the naive redraw on every N-th frame (default: 10; 1 = all)")
+    p.add_argument(
+        "--naive-every",
+        type=int,
+        default=10,
+        metavar="N",
+        help="time the naive redraw on every N-th frame (default: 10; 1 = all)",
+    )
     p.add_argument("--out", metavar="DIR", help="keep the GIF in DIR")
-    p.add_argument("--quick", action="store_true",
-                   help="time the naive redraw on every 40th frame only")
-    p.add_argument("--lecture", action="store_true",
-                   help="also render the lecture-quality animation (about a minute)")
+    p.add_argument(
+        "--quick", action="store_true", help="time the naive redraw on every 40th frame only"
+    )
+    p.add_argument(
+        "--lecture",
+        action="store_true",
+        help="also render the lecture-quality animation (about a minute)",
+    )
     args = p.parse_args(argv)
 
     t0 = time.perf_counter()
@@ -109,26 +118,40 @@ def main(argv: list[str] | None = None) -> int:
             t_lecture = time.perf_counter() - t0
 
     fps_gif, fps_render, fps_naive = n / t_gif, n / t_render, 1.0 / t_naive
-    print(f"Fig. 6 construction: {len(c.steps)} steps (replayed in {t_construct:.2f} s), "
-          f"{n} frames ({per_step} per step, {anim.fps:g} fps), {size[0]}x{size[1]} px, "
-          f"{gif_frames} GIF frames")
-    print(f"graspcompass GIF     : {t_gif:6.2f} s  {fps_gif:7.1f} frames/s  "
-          f"(target < 20 s: {'ok' if t_gif < 20 else 'MISSED'})")
-    print(f"graspcompass render  : {t_render:6.2f} s  {fps_render:7.1f} frames/s  "
-          "(iter_frames, no encoding)")
-    print(f"naive full redraw    : {t_naive * n:6.2f} s  {fps_naive:7.1f} frames/s  "
-          f"(estimated for {n} frames from {len(sample)})")
-    print(f"speed-up vs naive    : {fps_render / fps_naive:6.1f}x rendering, "
-          f"{t_naive * n / t_gif:.1f}x including the GIF encoding")
+    print(
+        f"Fig. 6 construction: {len(c.steps)} steps (replayed in {t_construct:.2f} s), "
+        f"{n} frames ({per_step} per step, {anim.fps:g} fps), {size[0]}x{size[1]} px, "
+        f"{gif_frames} GIF frames"
+    )
+    print(
+        f"graspcompass GIF     : {t_gif:6.2f} s  {fps_gif:7.1f} frames/s  "
+        f"(target < 20 s: {'ok' if t_gif < 20 else 'MISSED'})"
+    )
+    print(
+        f"graspcompass render  : {t_render:6.2f} s  {fps_render:7.1f} frames/s  "
+        "(iter_frames, no encoding)"
+    )
+    print(
+        f"naive full redraw    : {t_naive * n:6.2f} s  {fps_naive:7.1f} frames/s  "
+        f"(estimated for {n} frames from {len(sample)})"
+    )
+    print(
+        f"speed-up vs naive    : {fps_render / fps_naive:6.1f}x rendering, "
+        f"{t_naive * n / t_gif:.1f}x including the GIF encoding"
+    )
     naive_main = t_main_naive * main.frame_count
-    print(f"main job GIF         : {t_main:6.2f} s  {main.frame_count} frames of "
-          f"{main_size[0]}x{main_size[1]} px; naive at that size "
-          f"{naive_main:6.2f} s: {naive_main / t_main:.1f}x")
+    print(
+        f"main job GIF         : {t_main:6.2f} s  {main.frame_count} frames of "
+        f"{main_size[0]}x{main_size[1]} px; naive at that size "
+        f"{naive_main:6.2f} s: {naive_main / t_main:.1f}x"
+    )
     if args.lecture:
-        print(f"lecture render       : {t_lecture:6.2f} s  {lecture.frame_count} frames "
-              f"({lecture.drawn_frames} drawn), {lecture.frame_count / lecture.fps:.0f} s of "
-              f"animation; naive estimate {t_main_naive * lecture.frame_count * 2:6.1f} s "
-              "(2x the main job's pixels per frame)")
+        print(
+            f"lecture render       : {t_lecture:6.2f} s  {lecture.frame_count} frames "
+            f"({lecture.drawn_frames} drawn), {lecture.frame_count / lecture.fps:.0f} s of "
+            f"animation; naive estimate {t_main_naive * lecture.frame_count * 2:6.1f} s "
+            "(2x the main job's pixels per frame)"
+        )
     return 0 if t_gif < 20 else 1
 
 

@@ -25,8 +25,14 @@ from __future__ import annotations
 import os
 
 # one core: set before numpy is imported
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS", "BLIS_NUM_THREADS"):
+for _var in (
+    "OMP_NUM_THREADS",
+    "OPENBLAS_NUM_THREADS",
+    "MKL_NUM_THREADS",
+    "NUMEXPR_NUM_THREADS",
+    "VECLIB_MAXIMUM_THREADS",
+    "BLIS_NUM_THREADS",
+):
     os.environ[_var] = "1"
 
 import argparse  # noqa: E402
@@ -51,9 +57,15 @@ def random_grasps(n: int, seed: int = 1) -> list[np.ndarray]:
     """Paper-frame parameters inside condition (1): jaws tilted up to 0.8 ξ."""
     rng = np.random.default_rng(seed)
     mu1, mu2 = rng.uniform(0.15, 1.5, n), rng.uniform(0.15, 1.5, n)
-    return [rng.uniform(0.005, 0.1, n), rng.uniform(0.005, 0.1, n), rng.uniform(0, 0.05, n),
-            math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu1),
-            math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu2), mu1, mu2]
+    return [
+        rng.uniform(0.005, 0.1, n),
+        rng.uniform(0.005, 0.1, n),
+        rng.uniform(0, 0.05, n),
+        math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu1),
+        math.pi / 2 + rng.uniform(-0.8, 0.8, n) * np.arctan(mu2),
+        mu1,
+        mu2,
+    ]
 
 
 CPU: dict[str, float] = {}  # best CPU time (time.process_time) of each case, by name
@@ -89,11 +101,21 @@ def sizings(n: int, reps: int) -> bool:
     old = worst_squeeze_many(*p, 1.0, **kw)
     t_new, t_old = best_of_interleaved(
         [lambda: batch.worst_squeeze(*p, 1.0, **kw), lambda: worst_squeeze_many(*p, 1.0, **kw)],
-        reps, ["batch", "many"])
+        reps,
+        ["batch", "many"],
+    )
     t0 = time.perf_counter()
-    loop = [float(size_gripper(Grasp(*(float(v[i]) for v in p[:5]), mu1=float(p[5][i]),
-                                     mu2=float(p[6][i])), 1.0, g=9.81, accel=2.0).worst_squeeze)
-            for i in range(N_LOOP)]
+    loop = [
+        float(
+            size_gripper(
+                Grasp(*(float(v[i]) for v in p[:5]), mu1=float(p[5][i]), mu2=float(p[6][i])),
+                1.0,
+                g=9.81,
+                accel=2.0,
+            ).worst_squeeze
+        )
+        for i in range(N_LOOP)
+    ]
     t_loop = (time.perf_counter() - t0) / N_LOOP * n
     d_old = float(np.max(np.abs(new - old) / old))
     d_loop = float(np.max(np.abs(new[:N_LOOP] - loop) / np.array(loop)))
@@ -101,21 +123,33 @@ def sizings(n: int, reps: int) -> bool:
     print(f"\n(a) worst squeeze over all orientations, N = {n:,} grasps, best of {reps}")
     print(f"{'case':<52} {'time':>10} {'sizings/s':>12} {'ratio':>9}")
     print("-" * 86)
-    print(f"{'batch.worst_squeeze (condition (1) checked)':<52} {t_new * 1e3:7.1f} ms "
-          f"{rate:12.3g} {1:8.1f}x")
-    print(f"{'sizing.worst_squeeze_many (before §5, unchecked)':<52} {t_old * 1e3:7.1f} ms "
-          f"{n / t_old:12.3g} {t_new / t_old:8.2f}x")
-    print(f"{f'loop over Grasp + size_gripper ({N_LOOP}, scaled)':<52} {t_loop:7.1f} s  "
-          f"{n / t_loop:12.3g} {t_new / t_loop:8.1e}x")
-    print(f"speed-up: {t_old / t_new:.1f}x over worst_squeeze_many, {t_loop / t_new:.3g}x over "
-          f"the loop; max relative difference {d_old:.1e} and {d_loop:.1e}")
+    print(
+        f"{'batch.worst_squeeze (condition (1) checked)':<52} {t_new * 1e3:7.1f} ms "
+        f"{rate:12.3g} {1:8.1f}x"
+    )
+    print(
+        f"{'sizing.worst_squeeze_many (before §5, unchecked)':<52} {t_old * 1e3:7.1f} ms "
+        f"{n / t_old:12.3g} {t_new / t_old:8.2f}x"
+    )
+    print(
+        f"{f'loop over Grasp + size_gripper ({N_LOOP}, scaled)':<52} {t_loop:7.1f} s  "
+        f"{n / t_loop:12.3g} {t_new / t_loop:8.1e}x"
+    )
+    print(
+        f"speed-up: {t_old / t_new:.1f}x over worst_squeeze_many, {t_loop / t_new:.3g}x over "
+        f"the loop; max relative difference {d_old:.1e} and {d_loop:.1e}"
+    )
     cpu_rate = n / CPU["batch"]
-    print(f"CPU time on one core: batch {CPU['batch'] * 1e3:.1f} ms = {cpu_rate:.3g} sizings/s, "
-          f"worst_squeeze_many {CPU['many'] * 1e3:.1f} ms "
-          f"(ratio {CPU['many'] / CPU['batch']:.1f}x)")
+    print(
+        f"CPU time on one core: batch {CPU['batch'] * 1e3:.1f} ms = {cpu_rate:.3g} sizings/s, "
+        f"worst_squeeze_many {CPU['many'] * 1e3:.1f} ms "
+        f"(ratio {CPU['many'] / CPU['batch']:.1f}x)"
+    )
     ok = max(rate, cpu_rate) >= TARGET_RATE and d_old < 1e-12 and d_loop < 1e-12
-    print(f"target (>= {TARGET_RATE:.0e} sizings/s on one core, wall or CPU time): {verdict(ok)} "
-          f"(wall {rate:.3g} /s, CPU {cpu_rate:.3g} /s)")
+    print(
+        f"target (>= {TARGET_RATE:.0e} sizings/s on one core, wall or CPU time): {verdict(ok)} "
+        f"(wall {rate:.3g} /s, CPU {cpu_rate:.3g} /s)"
+    )
     return ok
 
 
@@ -130,27 +164,41 @@ def k_grasp_many(reps: int) -> bool:
     t_first = time.perf_counter() - t0
     old = _envelope.direct_k_grasp(S, C, theta)
     t_new, t_old = best_of_interleaved(
-        [lambda: g.k_grasp(theta), lambda: _envelope.direct_k_grasp(S, C, theta)], reps,
-        ["table", "direct"])
+        [lambda: g.k_grasp(theta), lambda: _envelope.direct_k_grasp(S, C, theta)],
+        reps,
+        ["table", "direct"],
+    )
     vmax = float(np.hypot(S, C).max())
     diff = float(np.max(np.abs(first - old))) / (EPS * vmax)
     print(f"\n(b) Grasp.preset('fig6').k_grasp(theta), 10^6 θ in [0, 2π), best of {reps}")
     print(f"{'case':<52} {'time':>10} {'per θ':>10}")
     print("-" * 76)
-    print(f"{'table of the envelope (warm)':<52} {t_new * 1e3:7.2f} ms "
-          f"{t_new / N_THETA * 1e9:7.2f} ns")
-    print(f"{'the array path before §5 (sin, cos, 4 passes)':<52} {t_old * 1e3:7.2f} ms "
-          f"{t_old / N_THETA * 1e9:7.2f} ns")
-    print(f"{f'first call: table built (+ {t_floats * 1e3:.1f} ms S_n, C_n)':<52} "
-          f"{t_first * 1e3:7.2f} ms")
-    print(f"speed-up: {t_old / t_new:.1f}x (first call {t_old / t_first:.1f}x); "
-          f"max |difference| = {diff:.2f} ε max|V_n|; "
-          f"{g.__dict__['_ktable'].broken_bins} bins hold a break point")
-    print(f"CPU time on one core: table {CPU['table'] * 1e3:.2f} ms, before §5 "
-          f"{CPU['direct'] * 1e3:.2f} ms (ratio {CPU['direct'] / CPU['table']:.1f}x)")
+    print(
+        f"{'table of the envelope (warm)':<52} {t_new * 1e3:7.2f} ms "
+        f"{t_new / N_THETA * 1e9:7.2f} ns"
+    )
+    print(
+        f"{'the array path before §5 (sin, cos, 4 passes)':<52} {t_old * 1e3:7.2f} ms "
+        f"{t_old / N_THETA * 1e9:7.2f} ns"
+    )
+    print(
+        f"{f'first call: table built (+ {t_floats * 1e3:.1f} ms S_n, C_n)':<52} "
+        f"{t_first * 1e3:7.2f} ms"
+    )
+    print(
+        f"speed-up: {t_old / t_new:.1f}x (first call {t_old / t_first:.1f}x); "
+        f"max |difference| = {diff:.2f} ε max|V_n|; "
+        f"{g.__dict__['_ktable'].broken_bins} bins hold a break point"
+    )
+    print(
+        f"CPU time on one core: table {CPU['table'] * 1e3:.2f} ms, before §5 "
+        f"{CPU['direct'] * 1e3:.2f} ms (ratio {CPU['direct'] / CPU['table']:.1f}x)"
+    )
     ok = min(t_new, CPU["table"]) <= TARGET_KG_S and diff <= 4
-    print(f"target (<= {TARGET_KG_S * 1e3:.0f} ms for 10^6 θ, wall or CPU time): {verdict(ok)} "
-          f"(wall {t_new * 1e3:.2f} ms, CPU {CPU['table'] * 1e3:.2f} ms)")
+    print(
+        f"target (<= {TARGET_KG_S * 1e3:.0f} ms for 10^6 θ, wall or CPU time): {verdict(ok)} "
+        f"(wall {t_new * 1e3:.2f} ms, CPU {CPU['table'] * 1e3:.2f} ms)"
+    )
     return ok
 
 
@@ -160,9 +208,11 @@ def main() -> None:
     ap.add_argument("-n", type=int, default=10**6, help="grasps for (a)")
     args = ap.parse_args()
     reps = 2 if args.quick else 5
-    print(f"python {sys.version.split()[0]}, numpy {np.__version__}, "
-          f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}, load average "
-          f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' jobs slow both columns)")
+    print(
+        f"python {sys.version.split()[0]}, numpy {np.__version__}, "
+        f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}, load average "
+        f"{os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' jobs slow both columns)"
+    )
     a = sizings(args.n, reps)
     b = k_grasp_many(reps)
     print(f"\nall targets: {verdict(a and b)}")

@@ -55,18 +55,25 @@ def _baseline(construction, limit: float) -> tuple[float, bool]:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="μ construction and fig6 only")
-    ap.add_argument("--limit", type=float, default=120.0,
-                    help="seconds after which the baseline of one construction stops")
+    ap.add_argument(
+        "--limit",
+        type=float,
+        default=120.0,
+        help="seconds after which the baseline of one construction stops",
+    )
     args = ap.parse_args()
-    cases = [("symbolic μ", lambda: Grasp.symbolic("mu")),
-             ("symbolic ξ", lambda: Grasp.symbolic("xi"))]
-    cases += [(p, lambda p=p: Grasp.preset(p)) for p in ("fig6", "table1a", "table1b",
-                                                          "table1c")]
+    cases = [
+        ("symbolic μ", lambda: Grasp.symbolic("mu")),
+        ("symbolic ξ", lambda: Grasp.symbolic("xi")),
+    ]
+    cases += [(p, lambda p=p: Grasp.preset(p)) for p in ("fig6", "table1a", "table1b", "table1c")]
     if args.quick:
         cases = [cases[0], cases[2]]
         args.limit = min(args.limit, 30.0)
-    print(f"{'construction':12} {'steps':>5} {'build s':>8} {'certify s':>9} "
-          f"{'baseline s':>10} {'ratio':>8}  verdicts")
+    print(
+        f"{'construction':12} {'steps':>5} {'build s':>8} {'certify s':>9} "
+        f"{'baseline s':>10} {'ratio':>8}  verdicts"
+    )
     for label, make in cases:
         t = time.perf_counter()
         c = internal_force_diagram(make())
@@ -77,8 +84,11 @@ def main() -> None:
         base, finished = _baseline(c, args.limit)
         ratio = f"{'' if finished else '>'}{base / ours:.1f}x"
         verdicts = ",".join(sorted({x.result.status.value for x in certs}))
-        print(f"{label:12} {len(c.steps):5d} {build:8.2f} {ours:9.2f} "
-              f"{base:10.2f} {ratio:>8}  {verdicts}", flush=True)
+        print(
+            f"{label:12} {len(c.steps):5d} {build:8.2f} {ours:9.2f} "
+            f"{base:10.2f} {ratio:>8}  {verdicts}",
+            flush=True,
+        )
 
 
 if __name__ == "__main__":

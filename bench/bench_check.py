@@ -49,8 +49,12 @@ def _cold(args: list[str]) -> tuple[float, float]:
     import resource
     import subprocess
 
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
-        [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")])}
+    env = {
+        **os.environ,
+        "PYTHONPATH": os.pathsep.join(
+            [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")]
+        ),
+    }
 
     def cpu() -> float:
         r = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -105,29 +109,51 @@ def main() -> int:
     decide_t = max(check_t - replay_t, 1e-6)
     base_t, finished, proved = _baseline(limit)
     statuses = {r.status.value for r in report.rows}
-    print(f"(a) check --against paper, shipped recipe: {check_t:.2f} s "
-          f"(runs: {', '.join(f'{t:.2f}' for t in checks)}); verdicts {sorted(statuses)}; "
-          f"{len(report.targets)} targets, {len(report.claims)} claims, {len(report.steps)} "
-          "steps")
+    print(
+        f"(a) check --against paper, shipped recipe: {check_t:.2f} s "
+        f"(runs: {', '.join(f'{t:.2f}' for t in checks)}); verdicts {sorted(statuses)}; "
+        f"{len(report.targets)} targets, {len(report.claims)} claims, {len(report.steps)} "
+        "steps"
+    )
     print(f"(b) symbolic replay alone: {replay_t:.2f} s; deciding: {decide_t:.2f} s")
-    print(f"(c) baseline sympy.simplify on the 19 targets: {base_t:.2f} s"
-          f"{'' if finished else ' (stopped)'}, {proved} proved")
+    print(
+        f"(c) baseline sympy.simplify on the 19 targets: {base_t:.2f} s"
+        f"{'' if finished else ' (stopped)'}, {proved} proved"
+    )
     print(f"ratio (c)/(deciding): {'>' if not finished else ''}{base_t / decide_t:.0f}x")
-    recipe = str(Path(__file__).resolve().parents[1] / "src" / "graspcompass" / "construction"
-                 / "recipes" / "paper.gc")
-    cmd = ["-c", "import sys; from graspcompass.cli import main; "
-           f"sys.exit(main(['check', {recipe!r}, '--against', 'paper']))"]
+    recipe = str(
+        Path(__file__).resolve().parents[1]
+        / "src"
+        / "graspcompass"
+        / "construction"
+        / "recipes"
+        / "paper.gc"
+    )
+    cmd = [
+        "-c",
+        "import sys; from graspcompass.cli import main; "
+        f"sys.exit(main(['check', {recipe!r}, '--against', 'paper']))",
+    ]
     cold = [_cold(cmd) for _ in range(runs)]
     ref = [_cold(["-c", "import sympy"]) for _ in range(runs)]
     cw, cc = (statistics.median(c[i] for c in cold) for i in (0, 1))
     rw, rc = (statistics.median(c[i] for c in ref) for i in (0, 1))
-    print(f"(d) the command, fresh process: {cw:.2f} s wall, {cc:.2f} s CPU; "
-          f"python -c 'import sympy': {rw:.2f} s wall, {rc:.2f} s CPU "
-          f"(the command = {cc / rc:.1f}x the sympy import in CPU time)")
-    print("target (a) < 10 s met" if check_t < TARGET_S and report.exit_status == 0 else
-          "target (a) NOT met")
-    print(f"target (d) < {TARGET_COLD_S} s cold:", "met" if cw < TARGET_COLD_S else (
-        "met in CPU time (wall stretched by the load)" if cc < TARGET_COLD_S else "NOT met"))
+    print(
+        f"(d) the command, fresh process: {cw:.2f} s wall, {cc:.2f} s CPU; "
+        f"python -c 'import sympy': {rw:.2f} s wall, {rc:.2f} s CPU "
+        f"(the command = {cc / rc:.1f}x the sympy import in CPU time)"
+    )
+    print(
+        "target (a) < 10 s met"
+        if check_t < TARGET_S and report.exit_status == 0
+        else "target (a) NOT met"
+    )
+    print(
+        f"target (d) < {TARGET_COLD_S} s cold:",
+        "met"
+        if cw < TARGET_COLD_S
+        else ("met in CPU time (wall stretched by the load)" if cc < TARGET_COLD_S else "NOT met"),
+    )
     return 0
 
 

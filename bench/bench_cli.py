@@ -54,8 +54,10 @@ CASES: list[tuple[str, list[str]]] = [
     ("dpi inf", ["animate", "--dpi", "inf"]),
     ("unknown preset", ["steps", "--preset", "fig7"]),
     ("step out of range", ["draw", "--step", "99999", "-o", "{tmp}/x.png"]),
-    ("export: bad title", ["export", "--format", "svg", "-o", "{tmp}/x.svg",
-                           "--title", "\x1b[31m" * 3]),
+    (
+        "export: bad title",
+        ["export", "--format", "svg", "-o", "{tmp}/x.svg", "--title", "\x1b[31m" * 3],
+    ),
     ("export: no folder", ["export", "-o", "{tmp}/no/x.svg"]),
     ("export: extension", ["export", "-o", "{tmp}/x.zzz"]),
     ("animate: no folder", ["animate", "-o", "{tmp}/no/x.gif"]),
@@ -108,12 +110,19 @@ def main() -> int:
                 bad.append(what)
             slowest = max(slowest, max(times))
             shown = lines[0][:70] if lines else "(nothing)"
-            print(f"{what:20} {statistics.median(times):9.3f} {max(times):7.3f}  {status}, "
-                  f"{shown}{'' if ok else '  <-- NOT ONE LINE/2'}")
-    print(f"\nslowest refusal {slowest:.3f} s = {slowest / base_sympy[0]:.2f}x the sympy import "
-          f"floor ({base_sympy[0]:.3f} s); target {TARGET_S} s")
-    print("target met" if slowest < TARGET_S and not bad else
-          f"target NOT met{': wrong status or output for ' + ', '.join(bad) if bad else ''}")
+            print(
+                f"{what:20} {statistics.median(times):9.3f} {max(times):7.3f}  {status}, "
+                f"{shown}{'' if ok else '  <-- NOT ONE LINE/2'}"
+            )
+    print(
+        f"\nslowest refusal {slowest:.3f} s = {slowest / base_sympy[0]:.2f}x the sympy import "
+        f"floor ({base_sympy[0]:.3f} s); target {TARGET_S} s"
+    )
+    print(
+        "target met"
+        if slowest < TARGET_S and not bad
+        else f"target NOT met{': wrong status or output for ' + ', '.join(bad) if bad else ''}"
+    )
     return 0
 
 

@@ -37,15 +37,24 @@ def main() -> None:
         if r["error"]:
             print("    " + r["error"].strip().splitlines()[-1][:160])
     s = _corpus.summary(records)
-    print(f"\nfiles {s['files']} (blocked {s['blocked_files']}, internal errors "
-          f"{s['internal_errors']}); true claims PROVED {s['true_proved']}/{s['true']} "
-          f"({100 * s['true_proved'] / max(s['true'], 1):.0f} %), true REFUTED "
-          f"{s['true_refuted']}; false claims REFUTED {s['false_refuted']}/{s['false']}, "
-          f"false PROVED {s['false_proved']}; median check {s['median_s']:.2f} s")
-    met = (s["true_proved"] >= 0.95 * s["true"] and s["false_refuted"] == s["false"]
-           and s["internal_errors"] == 0 and s["false_proved"] == 0 and s["median_s"] < 2.0)
-    print("targets (issue 24): >= 95 % of true claims PROVED, every false one REFUTED, "
-          f"0 internal errors, median < 2 s: target {'met' if met else 'NOT met'}")
+    print(
+        f"\nfiles {s['files']} (blocked {s['blocked_files']}, internal errors "
+        f"{s['internal_errors']}); true claims PROVED {s['true_proved']}/{s['true']} "
+        f"({100 * s['true_proved'] / max(s['true'], 1):.0f} %), true REFUTED "
+        f"{s['true_refuted']}; false claims REFUTED {s['false_refuted']}/{s['false']}, "
+        f"false PROVED {s['false_proved']}; median check {s['median_s']:.2f} s"
+    )
+    met = (
+        s["true_proved"] >= 0.95 * s["true"]
+        and s["false_refuted"] == s["false"]
+        and s["internal_errors"] == 0
+        and s["false_proved"] == 0
+        and s["median_s"] < 2.0
+    )
+    print(
+        "targets (issue 24): >= 95 % of true claims PROVED, every false one REFUTED, "
+        f"0 internal errors, median < 2 s: target {'met' if met else 'NOT met'}"
+    )
 
 
 if __name__ == "__main__":

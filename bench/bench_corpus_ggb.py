@@ -28,14 +28,20 @@ def main() -> None:
         values = _corpus.sample_values(program, path.name)
         c = replay(program, values)
         with tempfile.TemporaryDirectory() as tmp:  # sliders for its parameters, Prove
-            pts = _corpus.geogebra_points(to_ggb(c, program=program, values=values),
-                                          Path(tmp))
+            pts = _corpus.geogebra_points(to_ggb(c, program=program, values=values), Path(tmp))
         if pts is None:
             print("GeoGebra or xvfb-run is not installed")
             return
-        bad = [s.name for s in c.steps if s.kind == "point" and (
-            s.name not in pts or max(abs(pts[s.name][0] - float(s.obj.x)),
-                                     abs(pts[s.name][1] - float(s.obj.y))) > 2e-5)]
+        bad = [
+            s.name
+            for s in c.steps
+            if s.kind == "point"
+            and (
+                s.name not in pts
+                or max(abs(pts[s.name][0] - float(s.obj.x)), abs(pts[s.name][1] - float(s.obj.y)))
+                > 2e-5
+            )
+        ]
         good += not bad
         print(f"{path.name:34s} {'ok' if not bad else 'differs: ' + ', '.join(bad)}")
     print(f"\n{good}/{len(_corpus.files())} files: GeoGebra's points are the kernel's")

@@ -39,8 +39,16 @@ os.environ.setdefault("MPLBACKEND", "agg")
 
 TARGET_MS = 30.0
 #: slider ranges inside condition (1) for the Fig. 6 grasp (φ, θ in degrees)
-RANGES = {"x1": (0.4, 2.0), "x2": (0.4, 2.0), "y": (0.0, 1.5), "phi1": (50, 70),
-          "phi2": (50, 70), "mu1": (0.9, 1.6), "mu2": (1.5, 2.2), "theta": (0, 360)}
+RANGES = {
+    "x1": (0.4, 2.0),
+    "x2": (0.4, 2.0),
+    "y": (0.0, 1.5),
+    "phi1": (50, 70),
+    "phi2": (50, 70),
+    "mu1": (0.9, 1.6),
+    "mu2": (1.5, 2.2),
+    "theta": (0, 360),
+}
 
 
 def pct(values: list[float], q: float) -> float:
@@ -98,8 +106,9 @@ def drag_moves(ex: Any, moves: int) -> list[float]:
     ms = []
     for i in range(moves):
         a = 2 * math.pi * (i + 1) / moves
-        ms.append(_mouse(ex, "motion_notify_event",
-                         (x0 + 60 * math.sin(a), y0 + 30 * (1 - math.cos(a)))))
+        ms.append(
+            _mouse(ex, "motion_notify_event", (x0 + 60 * math.sin(a), y0 + 30 * (1 - math.cos(a))))
+        )
     _mouse(ex, "button_release_event", (x0, y0))
     return ms
 
@@ -129,16 +138,21 @@ def run(cls: type, moves: int, invalid: int) -> dict[str, list[float]]:
 
 
 def row(name: str, ms: list[float]) -> str:
-    return (f"{name:<44} {len(ms):>5} {statistics.median(ms):>9.2f} {pct(ms, 95):>9.2f} "
-            f"{max(ms):>9.2f}")
+    return (
+        f"{name:<44} {len(ms):>5} {statistics.median(ms):>9.2f} {pct(ms, 95):>9.2f} {max(ms):>9.2f}"
+    )
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--quick", action="store_true", help="48 moves per kind, 8 for the baseline")
     ap.add_argument("--moves", type=int, default=200, help="moves per kind (default 200)")
-    ap.add_argument("--baseline-moves", type=int, default=16,
-                    help="moves per kind of the baseline (about 1 s each; default 16)")
+    ap.add_argument(
+        "--baseline-moves",
+        type=int,
+        default=16,
+        help="moves per kind of the baseline (about 1 s each; default 16)",
+    )
     args = ap.parse_args(argv)
     moves = 48 if args.quick else args.moves
     base_moves = 8 if args.quick else args.baseline_moves
@@ -149,8 +163,10 @@ def main(argv: list[str] | None = None) -> int:
 
     new = run(Explorer, moves, max(4, moves // 4))
     old = run(naive_explorer_class(), base_moves, 0)
-    print(f"matplotlib explorer, ms per change (event to end of redraw), backend "
-          f"{matplotlib.get_backend()}; target: median < {TARGET_MS:g} ms")
+    print(
+        f"matplotlib explorer, ms per change (event to end of redraw), backend "
+        f"{matplotlib.get_backend()}; target: median < {TARGET_MS:g} ms"
+    )
     print(f"{'':<44} {'n':>5} {'median':>9} {'p95':>9} {'max':>9}")
     for name, ms in new.items():
         print(row(name, ms))
@@ -162,10 +178,13 @@ def main(argv: list[str] | None = None) -> int:
     print(row("(a)+(b) baseline (construction, full render)", old_all))
     med, p95 = statistics.median(new_all), pct(new_all, 95)
     ratio = statistics.median(old_all) / med
-    print(f"median {med:.2f} ms (p95 {p95:.2f} ms) against {statistics.median(old_all):.0f} ms "
-          f"before: {ratio:.0f}x faster")
-    print(f"median {med:.2f} ms vs {TARGET_MS:g} ms: "
-          f"target {'met' if med < TARGET_MS else 'NOT met'}")
+    print(
+        f"median {med:.2f} ms (p95 {p95:.2f} ms) against {statistics.median(old_all):.0f} ms "
+        f"before: {ratio:.0f}x faster"
+    )
+    print(
+        f"median {med:.2f} ms vs {TARGET_MS:g} ms: target {'met' if med < TARGET_MS else 'NOT met'}"
+    )
     return 0
 
 

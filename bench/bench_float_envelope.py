@@ -58,8 +58,9 @@ def reference(x1, x2, y, phi1, phi2, mu1, mu2):
             C.append(float((_mp(x2) if n in (1, 3) else _mp(x1)) * t))
             a = phi + sg * mpmath.atan(mu)
             cosines.append(float(abs(mpmath.cos(a))))
-            lo, hi = (mpmath.pi / 2, 3 * mpmath.pi / 2) if sg == 1 else (-mpmath.pi / 2,
-                                                                          mpmath.pi / 2)
+            lo, hi = (
+                (mpmath.pi / 2, 3 * mpmath.pi / 2) if sg == 1 else (-mpmath.pi / 2, mpmath.pi / 2)
+            )
             margin = min(margin, float((a - lo) / abs(lo)), float((hi - a) / abs(hi)))
     return np.array(S), np.array(C), min(cosines), margin
 
@@ -68,8 +69,7 @@ def contact(a: float, upper: bool, u: float):
     if upper:
         lo, hi = max(0.0, a - math.pi, (a - HALF_PI) / 2), min(HALF_PI, a, (a + HALF_PI) / 2)
     else:
-        lo, hi = max(0.0, -a, (HALF_PI - a) / 2), min(HALF_PI, math.pi - a,
-                                                      (3 * HALF_PI - a) / 2)
+        lo, hi = max(0.0, -a, (HALF_PI - a) / 2), min(HALF_PI, math.pi - a, (3 * HALF_PI - a) / 2)
     if hi - lo < 1e-3:
         return None
     xi = lo + (hi - lo) * u
@@ -108,8 +108,7 @@ def main() -> None:
     n = 100 if args.quick else args.n
     rng = np.random.default_rng(args.seed)
     ts = np.linspace(0, 2 * np.pi, 721)
-    counts = dict(accepted=0, refused=0, wrong_refusal=0, not_refused=0, other_error=0,
-                  backwards=0)
+    counts = dict(accepted=0, refused=0, wrong_refusal=0, not_refused=0, other_error=0, backwards=0)
     worst_kg = worst_env = worst_K = worst_on = 0.0
     t_env, t_diag = [], []
     kinds: dict[str, int] = {}
@@ -144,8 +143,9 @@ def main() -> None:
         err = float(np.hypot(Vf[:, 0] - S, Vf[:, 1] - C).max())
         worst_K = max(worst_K, err / (EPS * Vmax / cmin))
         env = c["envelope"]
-        own = np.maximum((np.outer(Vf[:, 0], np.sin(ts))
-                          - np.outer(Vf[:, 1], np.cos(ts))).max(axis=0), 0)
+        own = np.maximum(
+            (np.outer(Vf[:, 0], np.sin(ts)) - np.outer(Vf[:, 1], np.cos(ts))).max(axis=0), 0
+        )
         worst_env = max(worst_env, float(np.abs(env.k(ts) - own).max()) / Vmax)
         for a in env.arcs:
             if float(a.theta_end) <= float(a.theta_start):
@@ -168,11 +168,16 @@ def main() -> None:
     print(f"{'envelope: max |Envelope.k − max(k_n, 0)| / max|V_n|':<58} {worst_env:10.2e}")
     print(f"{'break points: max |q·(q − V_n)| / max|V_n|²':<58} {worst_on:10.2e}")
     print(f"{'outer_envelope, float, median':<58} {statistics.median(t_env) * 1e3:7.2f} ms")
-    print(f"{'internal_force_diagram, float, median':<58} "
-          f"{statistics.median(t_diag) * 1e3:7.2f} ms")
-    ok = (counts["wrong_refusal"] == counts["not_refused"] == counts["backwards"] == 0
-          and counts["other_error"] == 0
-          and worst_K < 8 and worst_env < 1e-12 and worst_kg < 1e-14)
+    print(
+        f"{'internal_force_diagram, float, median':<58} {statistics.median(t_diag) * 1e3:7.2f} ms"
+    )
+    ok = (
+        counts["wrong_refusal"] == counts["not_refused"] == counts["backwards"] == 0
+        and counts["other_error"] == 0
+        and worst_K < 8
+        and worst_env < 1e-12
+        and worst_kg < 1e-14
+    )
     print("target met" if ok else "target NOT met")
 
 

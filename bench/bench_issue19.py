@@ -21,8 +21,7 @@ from graspcompass.construction.language import paper_text, parse
 from graspcompass.proof.certify import certify
 from graspcompass.proof.program_check import check_program
 
-ANGLES = [{"phi1": "3*pi/5"}, {"phi1": "3*pi/7"}, {"phi1": "6/5"},
-          {"phi1": "6/5", "xi1": "1/2"}]
+ANGLES = [{"phi1": "3*pi/5"}, {"phi1": "3*pi/7"}, {"phi1": "6/5"}, {"phi1": "6/5", "xi1": "1/2"}]
 
 
 def perpendicular_as_line_through() -> str:
@@ -47,11 +46,12 @@ def main() -> None:
         print(f"certify fig6 {angles}: {time.perf_counter() - t0:6.2f} s  {dict(n)}")
     if not args.skip_check:
         t0 = time.perf_counter()
-        r = check_program(parse(perpendicular_as_line_through()), "paper",
-                          timeout=args.timeout)
+        r = check_program(parse(perpendicular_as_line_through()), "paper", timeout=args.timeout)
         n = collections.Counter(x.status.value for x in r.rows)
-        print(f"check --against paper, perp1 = line_through P2x F1: "
-              f"{time.perf_counter() - t0:6.1f} s  {dict(n)}  exit {r.exit_status}")
+        print(
+            f"check --against paper, perp1 = line_through P2x F1: "
+            f"{time.perf_counter() - t0:6.1f} s  {dict(n)}  exit {r.exit_status}"
+        )
 
 
 if __name__ == "__main__":

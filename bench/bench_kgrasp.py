@@ -15,8 +15,14 @@ from __future__ import annotations
 import os
 
 # one core: set before numpy is imported
-for _var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-             "NUMEXPR_NUM_THREADS", "VECLIB_MAXIMUM_THREADS", "BLIS_NUM_THREADS"):
+for _var in (
+    "OMP_NUM_THREADS",
+    "OPENBLAS_NUM_THREADS",
+    "MKL_NUM_THREADS",
+    "NUMEXPR_NUM_THREADS",
+    "VECLIB_MAXIMUM_THREADS",
+    "BLIS_NUM_THREADS",
+):
     os.environ[_var] = "1"
 
 import argparse  # noqa: E402
@@ -88,7 +94,8 @@ def main() -> None:
 
     naive_k_grasp(S, C, theta)  # warm-up, like the first call above
     t_ours, t_naive = best_of_interleaved(
-        [lambda: g.k_grasp(theta), lambda: naive_k_grasp(S, C, theta)], reps)
+        [lambda: g.k_grasp(theta), lambda: naive_k_grasp(S, C, theta)], reps
+    )
     diff = float(np.max(np.abs(first - naive_k_grasp(S, C, theta))))
 
     th_loop = theta[:: N // N_LOOP].tolist()
@@ -98,26 +105,39 @@ def main() -> None:
     loop_vals = np.array(python_loop(S_l, C_l, th_loop))
     loop_diff = float(np.max(np.abs(loop_vals - first[:: N // N_LOOP])))
 
-    print(f"python {sys.version.split()[0]}, numpy {np.__version__}, "
-          f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}; best of {reps}")
+    print(
+        f"python {sys.version.split()[0]}, numpy {np.__version__}, "
+        f"OMP/OPENBLAS threads = {os.environ['OMP_NUM_THREADS']}; best of {reps}"
+    )
     print(f"\n{'case':<42} {'total':>11} {'per element':>12}")
     print("-" * 68)
-    print(f"{'k_grasp(theta), N = 10^6 (graspcompass)':<42} {t_ours * 1e3:8.2f} ms "
-          f"{t_ours / N * 1e9:9.2f} ns")
-    print(f"{'naive numpy (4, N) + max + maximum':<42} {t_naive * 1e3:8.2f} ms "
-          f"{t_naive / N * 1e9:9.2f} ns")
+    print(
+        f"{'k_grasp(theta), N = 10^6 (graspcompass)':<42} {t_ours * 1e3:8.2f} ms "
+        f"{t_ours / N * 1e9:9.2f} ns"
+    )
+    print(
+        f"{'naive numpy (4, N) + max + maximum':<42} {t_naive * 1e3:8.2f} ms "
+        f"{t_naive / N * 1e9:9.2f} ns"
+    )
     print(f"{'first call (includes exact -> float)':<42} {t_first * 1e3:8.2f} ms")
-    print(f"{'pure-Python loop, N = 10^4 (context)':<42} {t_loop * 1e3:8.2f} ms "
-          f"{t_loop / N_LOOP * 1e9:9.0f} ns")
-    print(f"{'scalar k_grasp(float) calls, N = 10^4':<42} {t_scalar * 1e3:8.2f} ms "
-          f"{t_scalar / N_LOOP * 1e9:9.0f} ns")
+    print(
+        f"{'pure-Python loop, N = 10^4 (context)':<42} {t_loop * 1e3:8.2f} ms "
+        f"{t_loop / N_LOOP * 1e9:9.0f} ns"
+    )
+    print(
+        f"{'scalar k_grasp(float) calls, N = 10^4':<42} {t_scalar * 1e3:8.2f} ms "
+        f"{t_scalar / N_LOOP * 1e9:9.0f} ns"
+    )
     print(f"\nspeed-up over the naive numpy baseline: {t_naive / t_ours:.2f}x")
-    print(f"speed-up per element over the pure-Python loop: "
-          f"{(t_loop / N_LOOP) / (t_ours / N):.0f}x")
+    print(
+        f"speed-up per element over the pure-Python loop: {(t_loop / N_LOOP) / (t_ours / N):.0f}x"
+    )
     print(f"max |difference| vs naive: {diff:.2e}; vs Python loop: {loop_diff:.2e}")
     ok = t_ours < TARGET_S
-    print(f"target (< {TARGET_S * 1e3:.0f} ms for 10^6 θ): "
-          f"{'target met' if ok else 'target NOT met'} ({t_ours * 1e3:.2f} ms)")
+    print(
+        f"target (< {TARGET_S * 1e3:.0f} ms for 10^6 θ): "
+        f"{'target met' if ok else 'target NOT met'} ({t_ours * 1e3:.2f} ms)"
+    )
 
 
 if __name__ == "__main__":

@@ -38,13 +38,15 @@ def lp_data(g: gc.Grasp) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray
     FN = np.array(g.F_N().evalf(), dtype=float).ravel()  # eq. (15), null vector of L
     c = FN / FN.dot(FN)
     m1, m2 = float(g.mu1), float(g.mu2)
-    A_ub = np.array([
-        [-m1, 1.0, 0.0, 0.0],   #  F1 - μ1 N1 <= 0
-        [-m1, -1.0, 0.0, 0.0],  # -F1 - μ1 N1 <= 0
-        [0.0, 0.0, -m2, 1.0],   #  F2 - μ2 N2 <= 0
-        [0.0, 0.0, -m2, -1.0],  # -F2 - μ2 N2 <= 0
-        -c,                     #  k >= 0
-    ])
+    A_ub = np.array(
+        [
+            [-m1, 1.0, 0.0, 0.0],  #  F1 - μ1 N1 <= 0
+            [-m1, -1.0, 0.0, 0.0],  # -F1 - μ1 N1 <= 0
+            [0.0, 0.0, -m2, 1.0],  #  F2 - μ2 N2 <= 0
+            [0.0, 0.0, -m2, -1.0],  # -F2 - μ2 N2 <= 0
+            -c,  #  k >= 0
+        ]
+    )
     return c, A_ub, np.zeros(len(A_ub)), L
 
 
@@ -52,8 +54,15 @@ def k_linprog(g: gc.Grasp, theta: np.ndarray) -> np.ndarray:
     c, A_ub, b_ub, L = lp_data(g)
     out = np.empty(len(theta))
     for i, t in enumerate(theta):
-        res = linprog(c, A_ub=A_ub, b_ub=b_ub, A_eq=L, b_eq=[-np.sin(t), np.cos(t), 0.0],
-                      bounds=[(None, None)] * 4, method="highs")
+        res = linprog(
+            c,
+            A_ub=A_ub,
+            b_ub=b_ub,
+            A_eq=L,
+            b_eq=[-np.sin(t), np.cos(t), 0.0],
+            bounds=[(None, None)] * 4,
+            method="highs",
+        )
         if res.status != 0:
             raise RuntimeError(f"linprog failed at θ = {t}: {res.message}")
         out[i] = res.fun
@@ -88,24 +97,36 @@ def main() -> None:
     diff_sca = float(np.max(np.abs(np.asarray(k_sca) - k_vec)))
     n = args.n
 
-    print(f"python {sys.version.split()[0]}, numpy {np.__version__}, scipy {scipy.__version__}; "
-          f"N = {n} θ values, best of {reps}")
+    print(
+        f"python {sys.version.split()[0]}, numpy {np.__version__}, scipy {scipy.__version__}; "
+        f"N = {n} θ values, best of {reps}"
+    )
     print(f"\n{'case':<40} {'total':>11} {'per θ':>11}")
     print("-" * 64)
-    print(f"{'scipy linprog (HiGHS), one LP per θ':<40} {t_lp * 1e3:8.2f} ms "
-          f"{t_lp / n * 1e6:8.1f} µs")
-    print(f"{'closed form k_grasp, scalar calls':<40} {t_sca * 1e3:8.2f} ms "
-          f"{t_sca / n * 1e6:8.1f} µs")
-    print(f"{'closed form k_grasp, one array call':<40} {t_vec * 1e3:8.3f} ms "
-          f"{t_vec / n * 1e6:8.3f} µs")
+    print(
+        f"{'scipy linprog (HiGHS), one LP per θ':<40} {t_lp * 1e3:8.2f} ms {t_lp / n * 1e6:8.1f} µs"
+    )
+    print(
+        f"{'closed form k_grasp, scalar calls':<40} {t_sca * 1e3:8.2f} ms {t_sca / n * 1e6:8.1f} µs"
+    )
+    print(
+        f"{'closed form k_grasp, one array call':<40} {t_vec * 1e3:8.3f} ms "
+        f"{t_vec / n * 1e6:8.3f} µs"
+    )
     ratio_sca, ratio_vec = t_lp / t_sca, t_lp / t_vec
-    print(f"\nratio linprog / closed form: {ratio_sca:.0f}x (scalar calls), "
-          f"{ratio_vec:.0f}x (array call)")
-    print(f"max |k_linprog − k_closed| = {diff:.2e} (scalar vs array: {diff_sca:.1e}); "
-          f"max k = {k_vec.max():.6f}")
+    print(
+        f"\nratio linprog / closed form: {ratio_sca:.0f}x (scalar calls), "
+        f"{ratio_vec:.0f}x (array call)"
+    )
+    print(
+        f"max |k_linprog − k_closed| = {diff:.2e} (scalar vs array: {diff_sca:.1e}); "
+        f"max k = {k_vec.max():.6f}"
+    )
     ok = diff <= TARGET_DIFF and ratio_sca >= TARGET_RATIO
-    print(f"targets (|Δk| <= {TARGET_DIFF:g}, scalar closed form >= {TARGET_RATIO:g}x faster): "
-          f"{'target met' if ok else 'target NOT met'}")
+    print(
+        f"targets (|Δk| <= {TARGET_DIFF:g}, scalar closed form >= {TARGET_RATIO:g}x faster): "
+        f"{'target met' if ok else 'target NOT met'}"
+    )
 
 
 if __name__ == "__main__":

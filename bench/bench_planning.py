@@ -65,8 +65,15 @@ TRAPEZE = [(-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03)]
 MU = 0.5
 
 
-def ferrari_canny(points: np.ndarray, normals: np.ndarray, a: np.ndarray, b: np.ndarray,
-                  com: tuple[float, float], mu: float, rho: float) -> np.ndarray:
+def ferrari_canny(
+    points: np.ndarray,
+    normals: np.ndarray,
+    a: np.ndarray,
+    b: np.ndarray,
+    com: tuple[float, float],
+    mu: float,
+    rho: float,
+) -> np.ndarray:
     """ε of each pair (a[k], b[k]): the L1 Ferrari–Canny quality, one qhull call per pair."""
     xi = math.atan(mu)
     c, s = math.cos(xi), math.sin(xi)
@@ -99,8 +106,11 @@ def run(name: str, outline: object, samples: int, fc_pairs: int | None) -> None:
     per_a = min(t) / n_pairs
     ring = plan.outline
     rho = float(np.max(np.hypot(ring[:, 0] - plan.com[0], ring[:, 1] - plan.com[1])))
-    sel = np.arange(n_pairs) if fc_pairs is None else np.random.default_rng(0).choice(
-        n_pairs, min(fc_pairs, n_pairs), replace=False)
+    sel = (
+        np.arange(n_pairs)
+        if fc_pairs is None
+        else np.random.default_rng(0).choice(n_pairs, min(fc_pairs, n_pairs), replace=False)
+    )
     t0 = time.perf_counter()
     eps = ferrari_canny(plan.points, plan.normals, plan.i[sel], plan.j[sel], plan.com, MU, rho)
     per_b = (time.perf_counter() - t0) / len(sel)
@@ -111,24 +121,41 @@ def run(name: str, outline: object, samples: int, fc_pairs: int | None) -> None:
     top_a = set(sel[both][np.argsort(plan.squeeze[sel][both], kind="stable")[:10]].tolist())
     top_b = set(sel[both][np.argsort(-eps[both], kind="stable")[:10]].tolist())
     best_b = int(sel[both][np.argmax(eps[both])])
-    print(f"{name}: {len(plan.points)} contacts, {n_pairs} pairs, "
-          f"{int(plan.force_closure.sum())} force-closure (μ = {MU})")
-    print(f"  (a) worst-case squeeze, vectorised: {per_a * 1e6:8.3f} µs/pair "
-          f"({1 / per_a:,.0f} pairs/s, {min(t) * 1e3:.1f} ms for all)")
-    print(f"  (b) Ferrari–Canny ε, qhull per pair: {per_b * 1e6:8.1f} µs/pair "
-          f"(on {len(sel)} pairs) — {per_b / per_a:,.0f}× (a)")
+    print(
+        f"{name}: {len(plan.points)} contacts, {n_pairs} pairs, "
+        f"{int(plan.force_closure.sum())} force-closure (μ = {MU})"
+    )
+    print(
+        f"  (a) worst-case squeeze, vectorised: {per_a * 1e6:8.3f} µs/pair "
+        f"({1 / per_a:,.0f} pairs/s, {min(t) * 1e3:.1f} ms for all)"
+    )
+    print(
+        f"  (b) Ferrari–Canny ε, qhull per pair: {per_b * 1e6:8.1f} µs/pair "
+        f"(on {len(sel)} pairs) — {per_b / per_a:,.0f}× (a)"
+    )
     print(f"  force closure: the two agree on {agree} of {len(sel)} pairs")
-    print(f"  rankings over {int(both.sum())} force-closure pairs: Spearman ρ(−squeeze, ε) = "
-          f"{rho_s:.3f}; top-10 overlap {len(top_a & top_b)}/10")
+    print(
+        f"  rankings over {int(both.sum())} force-closure pairs: Spearman ρ(−squeeze, ε) = "
+        f"{rho_s:.3f}; top-10 overlap {len(top_a & top_b)}/10"
+    )
     pa, pb = plan.pair(int(plan.order[0])), plan.pair(best_b)
-    print(f"  best by squeeze: {pa.squeeze:.3f} N/kg at {_mm(pa.contacts)}; best by ε: "
-          f"{pb.squeeze:.3f} N/kg at {_mm(pb.contacts)} "
-          f"(ε = {eps[sel == best_b][0]:.4f} vs {_eps_of(plan, sel, eps, int(plan.order[0]))})")
+    print(
+        f"  best by squeeze: {pa.squeeze:.3f} N/kg at {_mm(pa.contacts)}; best by ε: "
+        f"{pb.squeeze:.3f} N/kg at {_mm(pb.contacts)} "
+        f"(ε = {eps[sel == best_b][0]:.4f} vs {_eps_of(plan, sel, eps, int(plan.order[0]))})"
+    )
 
 
-def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4096,
-          gravity: tuple[float, float] | None = None, tilt_deg: float | None = None,
-          com: tuple[float, float] | None = None) -> None:
+def exact(
+    name: str,
+    outline: object,
+    samples: int,
+    pairs: int,
+    largest: int = 4096,
+    gravity: tuple[float, float] | None = None,
+    tilt_deg: float | None = None,
+    com: tuple[float, float] | None = None,
+) -> None:
     """(c): the proved optimum per edge pair, timed against a dense grid of the same accuracy.
 
     (d) with ``gravity`` and ``tilt_deg``: the same under the tilts |ρ| <= τ of gravity.
@@ -138,8 +165,16 @@ def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4
         load = Load(g=9.80665)
         head = "(c) exact along"
     else:
-        plan = plan_contacts(outline, mu=MU, mass=1.0, samples=samples, exact=pairs, com=com,
-                             gravity=gravity, tilt=f"{tilt_deg}deg")
+        plan = plan_contacts(
+            outline,
+            mu=MU,
+            mass=1.0,
+            samples=samples,
+            exact=pairs,
+            com=com,
+            gravity=gravity,
+            tilt=f"{tilt_deg}deg",
+        )
         load = Load(g=9.80665, gravity=_unit(gravity), tau=math.radians(tilt_deg))
         head = f"(d) {name}, tilts of ±{tilt_deg:g}° of gravity {gravity}: exact along"
     ring = np.asarray(plan.outline)
@@ -163,12 +198,16 @@ def exact(name: str, outline: object, samples: int, pairs: int, largest: int = 4
             n *= 2
         t_grid = time.perf_counter() - t0
         reached = "within 1e-6" if q <= opt.value * (1 + 1e-6) else f"{q / opt.value - 1:.1e} above"
-        print(f"      edges {ea:>2},{eb:>2}: {p.squeeze:.6f} N/kg (proved >= {p.lower_bound:.6f}, "
-              f"{'certified' if opt.certified else 'NOT closed'}, {opt.boxes} boxes"
-              f"{', on the boundary of (1)' if opt.on_boundary else ''}), best "
-              f"sample {p.sampled_squeeze:.6f}: {100 * p.improvement:.2f}% less")
-        print(f"        branch and bound {t_bb * 1e3:7.1f} ms; grid {n}×{n} ({reached}) "
-              f"{t_grid * 1e3:7.1f} ms; ratio grid/B&B = {t_grid / t_bb:.2f}")
+        print(
+            f"      edges {ea:>2},{eb:>2}: {p.squeeze:.6f} N/kg (proved >= {p.lower_bound:.6f}, "
+            f"{'certified' if opt.certified else 'NOT closed'}, {opt.boxes} boxes"
+            f"{', on the boundary of (1)' if opt.on_boundary else ''}), best "
+            f"sample {p.sampled_squeeze:.6f}: {100 * p.improvement:.2f}% less"
+        )
+        print(
+            f"        branch and bound {t_bb * 1e3:7.1f} ms; grid {n}×{n} ({reached}) "
+            f"{t_grid * 1e3:7.1f} ms; ratio grid/B&B = {t_grid / t_bb:.2f}"
+        )
 
 
 def _unit(v: tuple[float, float]) -> tuple[float, float]:
@@ -198,10 +237,25 @@ def main() -> None:
     run("plate 100 × 60 mm", PLATE, samples, sub)
     exact("plate", PLATE, samples, 2, largest)
     print("under a tilt range (plan --gravity X,Y --tilt ANGLE):")
-    exact("bracket.svg", read_outline(BRACKET), samples, 2 if args.quick else 3, largest,
-          gravity=(0.6, -0.8), tilt_deg=30)
-    exact("trapeze 100/90 × 60 mm", TRAPEZE, samples, 2, largest, gravity=(0.0, -1.0),
-          tilt_deg=25, com=(0.01, 0.005))
+    exact(
+        "bracket.svg",
+        read_outline(BRACKET),
+        samples,
+        2 if args.quick else 3,
+        largest,
+        gravity=(0.6, -0.8),
+        tilt_deg=30,
+    )
+    exact(
+        "trapeze 100/90 × 60 mm",
+        TRAPEZE,
+        samples,
+        2,
+        largest,
+        gravity=(0.0, -1.0),
+        tilt_deg=25,
+        com=(0.01, 0.005),
+    )
 
 
 if __name__ == "__main__":

@@ -78,15 +78,23 @@ def median_times(fns: list[Callable[[], Any]], reps: int) -> tuple[list[Timing],
             outs[i] = fn()
             cpus[i].append(time.process_time() - c0)
             walls[i].append(time.perf_counter() - w0)
-    return [Timing(statistics.median(w), statistics.median(c), len(w))
-            for w, c in zip(walls, cpus)], outs
+    return [
+        Timing(statistics.median(w), statistics.median(c), len(w)) for w, c in zip(walls, cpus)
+    ], outs
 
 
 # --------------------------------------------------------------------------- workloads
 
 #: The Fig. 6 grasp as sympy values, made once like the baseline's ``FIG6``.
-FIG6_EXACT = dict(x1=sp.sqrt(3) / 2, x2=sp.sqrt(3) / 2, y=sp.Rational(1, 2), phi1=sp.pi / 3,
-                  phi2=sp.pi / 3, xi1=sp.pi / 4, xi2=sp.pi / 3)
+FIG6_EXACT = dict(
+    x1=sp.sqrt(3) / 2,
+    x2=sp.sqrt(3) / 2,
+    y=sp.Rational(1, 2),
+    phi1=sp.pi / 3,
+    phi2=sp.pi / 3,
+    xi1=sp.pi / 4,
+    xi2=sp.pi / 3,
+)
 
 
 def gc_fig6() -> gc.Construction:
@@ -167,8 +175,13 @@ def fresh_process(side: str, reps: int) -> Timing:
     code = _FRESH.format(bench=os.path.dirname(os.path.abspath(__file__)))
     walls, cpus = [], []
     for _ in range(reps):
-        out = subprocess.run([sys.executable, "-c", code, side], capture_output=True,
-                             text=True, check=True, timeout=600).stdout.split()
+        out = subprocess.run(
+            [sys.executable, "-c", code, side],
+            capture_output=True,
+            text=True,
+            check=True,
+            timeout=600,
+        ).stdout.split()
         walls.append(float(out[0]))
         cpus.append(float(out[1]))
     return Timing(statistics.median(walls), statistics.median(cpus), reps)
@@ -215,6 +228,7 @@ def sympy_symbolic_full(timeout: float) -> tuple[float, float | None, bool]:
 
 # --------------------------------------------------------------------------- checks
 
+
 def same_number(u: sp.Expr, v: sp.Expr) -> bool:
     d = sp.expand(sp.radsimp(sp.expand(u - v)))
     return d == 0 or abs(sp.N(d, 30)) < 1e-25
@@ -231,9 +245,15 @@ def check_fig6(ours: gc.Construction, theirs: dict[str, Any]) -> bool:
 def check_symbolic(ours: dict[str, Any], theirs: dict[str, Any]) -> bool:
     """Compare V1..V4 at a random admissible point (the symbols differ in assumptions)."""
     rng = random.Random(7)
-    vals = dict(x1=rng.uniform(0.5, 2), x2=rng.uniform(0.5, 2), y=rng.uniform(0.1, 2),
-                phi1=rng.uniform(1.2, 1.9), phi2=rng.uniform(1.2, 1.9),
-                mu1=rng.uniform(0.2, 0.8), mu2=rng.uniform(0.2, 0.8))
+    vals = dict(
+        x1=rng.uniform(0.5, 2),
+        x2=rng.uniform(0.5, 2),
+        y=rng.uniform(0.1, 2),
+        phi1=rng.uniform(1.2, 1.9),
+        phi2=rng.uniform(1.2, 1.9),
+        mu1=rng.uniform(0.2, 0.8),
+        mu2=rng.uniform(0.2, 0.8),
+    )
     ours_subs = {getattr(gc_symbols, k): v for k, v in vals.items()}
     theirs_subs = {baseline.symbolic_params()[k]: v for k, v in vals.items()}
     for n in (1, 2, 3, 4):
@@ -247,14 +267,16 @@ def check_symbolic(ours: dict[str, Any], theirs: dict[str, Any]) -> bool:
 
 # --------------------------------------------------------------------------- report
 
+
 def verdict(ratio: float, target: float, lower_bound: bool = False) -> str:
     if ratio >= target:
         return "target met"
     return "target NOT met (lower bound only)" if lower_bound else "target NOT met"
 
 
-def row(case: str, ours: Timing, theirs: Timing | str, ratio: str, cpu_ratio: str,
-        note: str) -> None:
+def row(
+    case: str, ours: Timing, theirs: Timing | str, ratio: str, cpu_ratio: str, note: str
+) -> None:
     theirs_s = theirs if isinstance(theirs, str) else f"{theirs.wall * 1e3:10.1f}"
     print(f"{case:<32} {ours.wall * 1e3:9.1f} {theirs_s:>11} {ratio:>8} {cpu_ratio:>9}  {note}")
 
@@ -262,14 +284,20 @@ def row(case: str, ours: Timing, theirs: Timing | str, ratio: str, cpu_ratio: st
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer repetitions")
-    ap.add_argument("--timeout", type=float, default=120.0,
-                    help="limit for the full symbolic sympy.geometry run (s), default 120")
+    ap.add_argument(
+        "--timeout",
+        type=float,
+        default=120.0,
+        help="limit for the full symbolic sympy.geometry run (s), default 120",
+    )
     args = ap.parse_args()
     n_fig6, n_sym_gc, n_sym_sp = (3, 2, 1) if args.quick else (9, 3, 3)
 
-    print(f"python {sys.version.split()[0]}, sympy {sp.__version__}, "
-          f"graspcompass {gc.__version__}; caches cleared before every run; "
-          f"median of N interleaved runs; verdict on the wall-clock ratio")
+    print(
+        f"python {sys.version.split()[0]}, sympy {sp.__version__}, "
+        f"graspcompass {gc.__version__}; caches cleared before every run; "
+        f"median of N interleaved runs; verdict on the wall-clock ratio"
+    )
     # warm-up (imports and first-call set-up, not measured)
     gc_fig6()
     sympy_fig6()
@@ -279,34 +307,65 @@ def main() -> None:
 
     # (a) Fig. 6, exact
     (t_ours, t_ne, t_text, t_sp), (ours, _, _, theirs) = median_times(
-        [gc_fig6, gc_fig6_no_envelope, gc_fig6_from_text, sympy_fig6], n_fig6)
+        [gc_fig6, gc_fig6_no_envelope, gc_fig6_from_text, sympy_fig6], n_fig6
+    )
     ratio_a = t_sp.wall / t_ours.wall
-    row("(a) fig6 exact, full diagram", t_ours, t_sp, f"{ratio_a:.1f}x",
+    row(
+        "(a) fig6 exact, full diagram",
+        t_ours,
+        t_sp,
+        f"{ratio_a:.1f}x",
         f"{t_sp.cpu / t_ours.cpu:.1f}x",
-        f"N={n_fig6}; {verdict(ratio_a, TARGET_EXACT)} (>= {TARGET_EXACT:g}x)")
-    row("    fig6 exact, no envelope", t_ne, t_sp, f"{t_sp.wall / t_ne.wall:.1f}x",
-        f"{t_sp.cpu / t_ne.cpu:.1f}x", "info: the baseline's steps (no envelope)")
-    row("    fig6 from the preset's text", t_text, t_sp, f"{t_sp.wall / t_text.wall:.1f}x",
-        f"{t_sp.cpu / t_text.cpu:.1f}x", "info: + parsing the text of Grasp.preset")
+        f"N={n_fig6}; {verdict(ratio_a, TARGET_EXACT)} (>= {TARGET_EXACT:g}x)",
+    )
+    row(
+        "    fig6 exact, no envelope",
+        t_ne,
+        t_sp,
+        f"{t_sp.wall / t_ne.wall:.1f}x",
+        f"{t_sp.cpu / t_ne.cpu:.1f}x",
+        "info: the baseline's steps (no envelope)",
+    )
+    row(
+        "    fig6 from the preset's text",
+        t_text,
+        t_sp,
+        f"{t_sp.wall / t_text.wall:.1f}x",
+        f"{t_sp.cpu / t_text.cpu:.1f}x",
+        "info: + parsing the text of Grasp.preset",
+    )
     print(f"    V1..V4 agree with sympy.geometry: {check_fig6(ours, theirs)}")
 
     # (e) Fig. 6, each run in a fresh process (imports done, not timed)
     reps = 3 if args.quick else 7
     t_fresh, t_fresh_sp = fresh_process("ours", reps), fresh_process("sympy", reps)
     ratio_e = t_fresh_sp.wall / t_fresh.wall
-    row("(e) fig6 exact, fresh process", t_fresh, t_fresh_sp, f"{ratio_e:.1f}x",
+    row(
+        "(e) fig6 exact, fresh process",
+        t_fresh,
+        t_fresh_sp,
+        f"{ratio_e:.1f}x",
         f"{t_fresh_sp.cpu / t_fresh.cpu:.1f}x",
-        f"N={reps}; {verdict(ratio_e, TARGET_EXACT)} (>= {TARGET_EXACT:g}x)")
+        f"N={reps}; {verdict(ratio_e, TARGET_EXACT)} (>= {TARGET_EXACT:g}x)",
+    )
 
     # (d) fully symbolic, up to V4
     (t_v4, t_sp_v4), (ours_v4, theirs_v4) = median_times(
-        [gc_symbolic_upto_v4, sympy_symbolic_upto_v4], n_sym_sp)
+        [gc_symbolic_upto_v4, sympy_symbolic_upto_v4], n_sym_sp
+    )
     ratio_v4 = t_sp_v4.wall / t_v4.wall
-    row("(d) symbolic, up to V4", t_v4, t_sp_v4, f"{ratio_v4:.1f}x",
+    row(
+        "(d) symbolic, up to V4",
+        t_v4,
+        t_sp_v4,
+        f"{ratio_v4:.1f}x",
         f"{t_sp_v4.cpu / t_v4.cpu:.1f}x",
-        f"N={n_sym_sp}; {verdict(ratio_v4, TARGET_SYMBOLIC)} (>= {TARGET_SYMBOLIC:g}x)")
-    print(f"    V1..V4 agree with sympy.geometry (numeric check): "
-          f"{check_symbolic(ours_v4, theirs_v4)}")
+        f"N={n_sym_sp}; {verdict(ratio_v4, TARGET_SYMBOLIC)} (>= {TARGET_SYMBOLIC:g}x)",
+    )
+    print(
+        f"    V1..V4 agree with sympy.geometry (numeric check): "
+        f"{check_symbolic(ours_v4, theirs_v4)}"
+    )
 
     # (d) fully symbolic, full diagram (the baseline in a subprocess, with a time limit)
     (t_full,), _ = median_times([gc_symbolic_full], n_sym_gc)
@@ -315,14 +374,25 @@ def main() -> None:
     cpu_s = "n/a" if cpu is None else f"{cpu / t_full.cpu:.0f}x"
     if finished:
         theirs_full = Timing(wall, cpu or float("nan"), 1)
-        row("(d) symbolic, full diagram", t_full, theirs_full, f"{ratio_full:.1f}x", cpu_s,
-            f"N={n_sym_gc}/1; {verdict(ratio_full, TARGET_SYMBOLIC)} (>= {TARGET_SYMBOLIC:g}x)")
+        row(
+            "(d) symbolic, full diagram",
+            t_full,
+            theirs_full,
+            f"{ratio_full:.1f}x",
+            cpu_s,
+            f"N={n_sym_gc}/1; {verdict(ratio_full, TARGET_SYMBOLIC)} (>= {TARGET_SYMBOLIC:g}x)",
+        )
     else:
-        row("(d) symbolic, full diagram", t_full, f"> {wall:.0f} s", f"> {ratio_full:.0f}x",
+        row(
+            "(d) symbolic, full diagram",
+            t_full,
+            f"> {wall:.0f} s",
+            f"> {ratio_full:.0f}x",
             "> " + cpu_s if cpu is not None else cpu_s,
             f"N={n_sym_gc}/1; sympy.geometry stopped after {args.timeout:g} s; "
             f"{verdict(ratio_full, TARGET_SYMBOLIC, lower_bound=True)} "
-            f"(>= {TARGET_SYMBOLIC:g}x)")
+            f"(>= {TARGET_SYMBOLIC:g}x)",
+        )
         if cpu is not None:
             print(f"    the stopped sympy.geometry child had used {cpu:.0f} s of CPU")
 

@@ -72,12 +72,22 @@ def _cpu() -> float:
 
 def run(code: str, timeout: float) -> tuple[float, str, bool, float]:
     """Wall time, stdout, finished?, and CPU time (user + system) of a fresh interpreter."""
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
-        [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")])}
+    env = {
+        **os.environ,
+        "PYTHONPATH": os.pathsep.join(
+            [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")]
+        ),
+    }
     t0, c0 = time.perf_counter(), _cpu()
     try:
-        out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                             timeout=timeout, env=env, check=True).stdout
+        out = subprocess.run(
+            [sys.executable, "-c", code],
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            env=env,
+            check=True,
+        ).stdout
         return time.perf_counter() - t0, out, True, _cpu() - c0
     except subprocess.TimeoutExpired as exc:
         out = exc.stdout.decode() if isinstance(exc.stdout, bytes) else (exc.stdout or "")
@@ -102,29 +112,43 @@ def main() -> None:
         cli.append((cwall, ccpu))
     wall, inner, imp, cpu = (_median([r[i] for r in runs]) for i in range(4))
     cwall, ccpu = _median([c[0] for c in cli]), _median([c[1] for c in cli])
-    print(f"graspcompass verify (the command, table printed), cold: {cwall:.2f} s wall, "
-          f"{ccpu:.2f} s CPU")
-    print(f"run_catalogue, cold ({n} claims, exit status {status}): {wall:.2f} s wall "
-          f"(interpreter start and import included; import {imp:.2f} s), {inner - imp:.2f} s "
-          f"checking; {cpu:.2f} s CPU")
-    print(f"load average now: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (wall times "
-          "stretch when it exceeds the cores; CPU times do not)")
+    print(
+        f"graspcompass verify (the command, table printed), cold: {cwall:.2f} s wall, "
+        f"{ccpu:.2f} s CPU"
+    )
+    print(
+        f"run_catalogue, cold ({n} claims, exit status {status}): {wall:.2f} s wall "
+        f"(interpreter start and import included; import {imp:.2f} s), {inner - imp:.2f} s "
+        f"checking; {cpu:.2f} s CPU"
+    )
+    print(
+        f"load average now: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (wall times "
+        "stretch when it exceeds the cores; CPU times do not)"
+    )
     bwall, bout, finished, _ = run(BASELINE, args.timeout)
     lines = [ln for ln in bout.splitlines() if ln.strip()]
     if finished and lines and lines[-1].startswith("DONE"):
         _, _, nb, proved = lines[-1].split()
-        print(f"baseline, sympy.simplify on the {nb} identity claims: {bwall:.1f} s, "
-              f"{proved} proved")
+        print(
+            f"baseline, sympy.simplify on the {nb} identity claims: {bwall:.1f} s, {proved} proved"
+        )
         print(f"ratio: {bwall / wall:.1f}x faster (and graspcompass also checks the sign claims)")
     else:
         done = len(lines)
-        print(f"baseline, sympy.simplify: did not finish in {args.timeout:.0f} s "
-              f"({done} claims done); ratio > {bwall / wall:.1f}x")
-    print("target (< 3 s cold, the command):", "met" if cwall < 3 else
-          f"NOT met on the wall clock (CPU {ccpu:.2f} s)")
-    print("target of issue 20 (< 1.5 s cold, the command):",
-          "met" if cwall < 1.5 else ("met in CPU time (wall stretched by the load)"
-                                     if ccpu < 1.5 else "NOT met"))
+        print(
+            f"baseline, sympy.simplify: did not finish in {args.timeout:.0f} s "
+            f"({done} claims done); ratio > {bwall / wall:.1f}x"
+        )
+    print(
+        "target (< 3 s cold, the command):",
+        "met" if cwall < 3 else f"NOT met on the wall clock (CPU {ccpu:.2f} s)",
+    )
+    print(
+        "target of issue 20 (< 1.5 s cold, the command):",
+        "met"
+        if cwall < 1.5
+        else ("met in CPU time (wall stretched by the load)" if ccpu < 1.5 else "NOT met"),
+    )
 
 
 if __name__ == "__main__":

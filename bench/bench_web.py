@@ -48,8 +48,10 @@ def pct(values: list[float], q: float) -> float:
 
 def row(name: str, ms: list[float]) -> str:
     med, p95 = statistics.median(ms), pct(ms, 95)
-    return (f"{name:<34} {len(ms):>5} {med:>8.2f} {p95:>8.2f} {max(ms):>8.2f} "
-            f"{med / BUDGET_MS:>8.3f} {p95 / BUDGET_MS:>8.3f}")
+    return (
+        f"{name:<34} {len(ms):>5} {med:>8.2f} {p95:>8.2f} {max(ms):>8.2f} "
+        f"{med / BUDGET_MS:>8.3f} {p95 / BUDGET_MS:>8.3f}"
+    )
 
 
 def slider_values(i: int) -> tuple[str, str]:
@@ -57,8 +59,16 @@ def slider_values(i: int) -> tuple[str, str]:
     names = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "theta")
     name = names[i % len(names)]
     t = 0.5 + 0.5 * math.sin(0.37 * i)  # in [0, 1], smooth
-    lo, hi = {"x1": (0.4, 2.0), "x2": (0.4, 2.0), "y": (0.0, 1.5), "phi1": (50, 70),
-              "phi2": (50, 70), "mu1": (0.9, 1.6), "mu2": (1.5, 2.2), "theta": (0, 360)}[name]
+    lo, hi = {
+        "x1": (0.4, 2.0),
+        "x2": (0.4, 2.0),
+        "y": (0.0, 1.5),
+        "phi1": (50, 70),
+        "phi2": (50, 70),
+        "mu1": (0.9, 1.6),
+        "mu2": (1.5, 2.2),
+        "theta": (0, 360),
+    }[name]
     return name, f"{lo + (hi - lo) * t:.3f}"
 
 
@@ -86,16 +96,22 @@ def deviation(page: Any, count: int) -> float:
     from graspcompass import Grasp
 
     grasps = random_grasps(count)
-    got = page.evaluate("""ps => ps.map(p => {
+    got = page.evaluate(
+        """ps => ps.map(p => {
         const q = graspcompass.model.compute(Object.assign({theta: 0.7}, p));
-        return [q.V, q.kgrasp]; })""", grasps)
+        return [q.V, q.kgrasp]; })""",
+        grasps,
+    )
     worst = 0.0
     for p, (V, k) in zip(grasps, got):
         g = Grasp(**p)
         want = [(float(v.x), float(v.y)) for v in g.V]
         scale = max(1.0, *(math.hypot(*v) for v in want))
-        worst = max(worst, *(math.dist(a, b) / scale for a, b in zip(V, want)),
-                    abs(k - g.k_grasp(0.7)) / scale)
+        worst = max(
+            worst,
+            *(math.dist(a, b) / scale for a, b in zip(V, want)),
+            abs(k - g.k_grasp(0.7)) / scale,
+        )
     return worst
 
 
@@ -121,9 +137,11 @@ def run_browser(page_path: Path, moves: int) -> tuple[dict[str, list[float]], fl
             page.fill(f"#gc-slider-{name}", value)
         out["(a) slider moves (input events)"] = page.evaluate("graspcompass.timings()")
 
-        page.evaluate("graspcompass.set({x1: Math.sqrt(3) / 2, x2: Math.sqrt(3) / 2, y: 0.5,"
-                      " phi1: Math.PI / 3, phi2: Math.PI / 3, mu1: 1, mu2: Math.sqrt(3)});"
-                      "graspcompass.fit(); graspcompass.resetTimings()")
+        page.evaluate(
+            "graspcompass.set({x1: Math.sqrt(3) / 2, x2: Math.sqrt(3) / 2, y: 0.5,"
+            " phi1: Math.PI / 3, phi2: Math.PI / 3, mu1: 1, mu2: Math.sqrt(3)});"
+            "graspcompass.fit(); graspcompass.resetTimings()"
+        )
         x0, y0 = page.evaluate("graspcompass.toScreen('P1')")
         page.mouse.move(x0, y0)
         page.mouse.down()
@@ -139,7 +157,9 @@ def run_browser(page_path: Path, moves: int) -> tuple[dict[str, list[float]], fl
                    graspcompass.set({mu2: 1.5 + 0.7 * (0.5 + 0.5 * Math.sin(0.37 * i)),
                                      theta: 0.05 * i});
                  }
-                 return graspcompass.timings(); }""", moves)
+                 return graspcompass.timings(); }""",
+            moves,
+        )
         dev = deviation(page, moves)
         browser.close()
     return out, dev
@@ -177,26 +197,35 @@ def main(argv: list[str] | None = None) -> int:
 
     with tempfile.TemporaryDirectory() as tmp:
         folder = args.out or Path(tmp)
-        page_path = write_html(internal_force_diagram(Grasp.preset("fig6")),
-                               folder / "explorer.html")
+        page_path = write_html(
+            internal_force_diagram(Grasp.preset("fig6")), folder / "explorer.html"
+        )
         web, dev = run_browser(page_path, moves)
     mpl = run_matplotlib(3 if args.quick else 10)
 
-    print(f"web explorer update time, ms per update, measured in the page "
-          f"(budget {BUDGET_MS:g} ms = one 60 Hz frame)")
+    print(
+        f"web explorer update time, ms per update, measured in the page "
+        f"(budget {BUDGET_MS:g} ms = one 60 Hz frame)"
+    )
     print(f"{'':<34} {'n':>5} {'median':>8} {'p95':>8} {'max':>8} {'med/16':>8} {'p95/16':>8}")
     for name, ms in web.items():
         print(row(name, ms))
     print(row("baseline: matplotlib explorer", mpl))
-    print(f"largest deviation from Python's closed form (V_n, k_grasp; {moves} random grasps, "
-          f"relative to max(1, |V_n|)): {dev:.2e}")
+    print(
+        f"largest deviation from Python's closed form (V_n, k_grasp; {moves} random grasps, "
+        f"relative to max(1, |V_n|)): {dev:.2e}"
+    )
     worst_p95 = max(pct(ms, 95) for ms in web.values())
     med_all = statistics.median([m for ms in web.values() for m in ms])
-    print(f"median over all web updates {med_all:.2f} ms; matplotlib / web median = "
-          f"{statistics.median(mpl) / med_all:.0f}x")
+    print(
+        f"median over all web updates {med_all:.2f} ms; matplotlib / web median = "
+        f"{statistics.median(mpl) / med_all:.0f}x"
+    )
     met = worst_p95 < BUDGET_MS
-    print(f"worst 95th percentile {worst_p95:.2f} ms = {worst_p95 / BUDGET_MS:.2f} x budget: "
-          f"target {'met' if met else 'NOT met'}")
+    print(
+        f"worst 95th percentile {worst_p95:.2f} ms = {worst_p95 / BUDGET_MS:.2f} x budget: "
+        f"target {'met' if met else 'NOT met'}"
+    )
     return 0
 
 

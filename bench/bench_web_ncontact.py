@@ -63,11 +63,17 @@ def main() -> int:
             page = browser.new_page(viewport={"width": 1280, "height": 800})
             page.goto(path.as_uri())
             page.wait_for_selector("body[data-ready='1']", timeout=30_000)
-            upd = page.evaluate("""xs => xs.map(x => { graspcompass.set({contacts: [{x}]});
-                return graspcompass.lastUpdateMs; })""", xs)
-            comp = page.evaluate("""xs => xs.map(x => { const s = graspcompass.state();
+            upd = page.evaluate(
+                """xs => xs.map(x => { graspcompass.set({contacts: [{x}]});
+                return graspcompass.lastUpdateMs; })""",
+                xs,
+            )
+            comp = page.evaluate(
+                """xs => xs.map(x => { const s = graspcompass.state();
                 s.contacts[0].x = x; const t0 = performance.now(); graspcompass.compute(s);
-                return performance.now() - t0; })""", xs)
+                return performance.now() - t0; })""",
+                xs,
+            )
             browser.close()
 
     def stats(v: list[float]) -> tuple[float, float]:
@@ -76,11 +82,15 @@ def main() -> int:
 
     (um, up), (cm, cp), (pm, pp) = stats(upd), stats(comp), stats(py)
     print(f"n = {args.n}, {args.moves} moves")
-    print(f"(a) page update (Q + redraw): median {um:.1f} ms, p95 {up:.1f} ms "
-          f"({um / BUDGET_MS:.2f}x / {up / BUDGET_MS:.2f}x one 60 Hz frame)")
+    print(
+        f"(a) page update (Q + redraw): median {um:.1f} ms, p95 {up:.1f} ms "
+        f"({um / BUDGET_MS:.2f}x / {up / BUDGET_MS:.2f}x one 60 Hz frame)"
+    )
     print(f"(b) page compute(Q) alone:    median {cm:.2f} ms, p95 {cp:.2f} ms")
-    print(f"baseline: Python float Q:     median {pm:.2f} ms, p95 {pp:.2f} ms "
-          f"(page/Python {cm / pm:.2f}x)")
+    print(
+        f"baseline: Python float Q:     median {pm:.2f} ms, p95 {pp:.2f} ms "
+        f"(page/Python {cm / pm:.2f}x)"
+    )
     return 0
 
 

@@ -90,8 +90,11 @@ def random_grasps(n: int, seed: int) -> list[dict[str, str]]:
     rng = random.Random(seed)
     out = []
     while len(out) < n:
-        params = {"x1": _length(rng), "x2": _length(rng),
-                  "y": "0" if rng.random() < 0.125 else _length(rng, 0.0)}
+        params = {
+            "x1": _length(rng),
+            "x2": _length(rng),
+            "y": "0" if rng.random() < 0.125 else _length(rng, 0.0),
+        }
         ok = True
         for i in (1, 2):
             phi = _angle_text(rng, Fraction(1, 2), Fraction(180))
@@ -111,10 +114,19 @@ def random_grasps(n: int, seed: int) -> list[dict[str, str]]:
 
 def run_worker(job: dict) -> dict:
     t0 = time.perf_counter()
-    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
-        [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")]))
-    proc = subprocess.run([sys.executable, "-c", WORKER, json.dumps(job)], capture_output=True,
-                          text=True, env=env, timeout=600)
+    env = dict(
+        os.environ,
+        PYTHONPATH=os.pathsep.join(
+            [os.path.join(os.path.dirname(__file__), "..", "src"), os.environ.get("PYTHONPATH", "")]
+        ),
+    )
+    proc = subprocess.run(
+        [sys.executable, "-c", WORKER, json.dumps(job)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
     total = time.perf_counter() - t0
     if proc.returncode:
         return {"error": proc.stderr.strip().splitlines()[-1:], "job": job, "process": total}
@@ -126,8 +138,9 @@ def run_worker(job: dict) -> dict:
 
 def run_cli(args: list[str]) -> float:
     t0 = time.perf_counter()
-    proc = subprocess.run([sys.executable, "-m", "graspcompass", *args], capture_output=True,
-                          text=True, timeout=600)
+    proc = subprocess.run(
+        [sys.executable, "-m", "graspcompass", *args], capture_output=True, text=True, timeout=600
+    )
     if proc.returncode:
         raise RuntimeError(f"{args}: {proc.stderr.strip()}")
     return time.perf_counter() - t0
@@ -140,8 +153,12 @@ def _cli_args(params: dict[str, str]) -> list[str]:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("-n", type=int, default=500, help="random grasps (default 500)")
-    ap.add_argument("--draw", type=int, default=100,
-                    help="of them through draw (PNG) and export --format svg (default 100)")
+    ap.add_argument(
+        "--draw",
+        type=int,
+        default=100,
+        help="of them through draw (PNG) and export --format svg (default 100)",
+    )
     ap.add_argument("--jobs", type=int, default=1, help="processes at a time (default 1)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--quick", action="store_true", help="40 grasps, 10 drawn")
@@ -150,9 +167,22 @@ def main() -> None:
     grasps = random_grasps(n, args.seed)
     tty = sys.stderr.isatty()
 
-    base = [run_worker({"params": {"x1": "sqrt(3)/2", "x2": "sqrt(3)/2", "y": "1/2",
-                                   "phi1": "pi/3", "phi2": "pi/3", "xi1": "pi/4",
-                                   "xi2": "pi/3"}}) for _ in range(3)]
+    base = [
+        run_worker(
+            {
+                "params": {
+                    "x1": "sqrt(3)/2",
+                    "x2": "sqrt(3)/2",
+                    "y": "1/2",
+                    "phi1": "pi/3",
+                    "phi2": "pi/3",
+                    "xi1": "pi/4",
+                    "xi2": "pi/3",
+                }
+            }
+        )
+        for _ in range(3)
+    ]
     symbolic = run_worker({"symbolic": True})
     results = []
     with ThreadPoolExecutor(args.jobs) as pool:
@@ -167,52 +197,78 @@ def main() -> None:
     walls = sorted(r["wall"] for r in ok)
     worst = max(ok, key=lambda r: r["wall"])
     fig6 = statistics.median(r["wall"] for r in base)
-    print(f"{n} random whole grasps (φ1, φ2, ξ1, ξ2 typed; seed {args.seed}), "
-          f"each `steps` run cold in its own process ({args.jobs} at a time)")
-    print(f"  exact steps (envelope included): median {statistics.median(walls):.3f} s, "
-          f"95th percentile {walls[int(0.95 * (len(walls) - 1))]:.3f} s, "
-          f"slowest {walls[-1]:.3f} s (CPU {worst['cpu']:.3f} s)")
+    print(
+        f"{n} random whole grasps (φ1, φ2, ξ1, ξ2 typed; seed {args.seed}), "
+        f"each `steps` run cold in its own process ({args.jobs} at a time)"
+    )
+    print(
+        f"  exact steps (envelope included): median {statistics.median(walls):.3f} s, "
+        f"95th percentile {walls[int(0.95 * (len(walls) - 1))]:.3f} s, "
+        f"slowest {walls[-1]:.3f} s (CPU {worst['cpu']:.3f} s)"
+    )
     cpus = sorted(r["cpu"] for r in ok)
-    print(f"  the same in CPU time of the run's process (steady on a shared machine): median "
-          f"{statistics.median(cpus):.3f} s, slowest {cpus[-1]:.3f} s")
+    print(
+        f"  the same in CPU time of the run's process (steady on a shared machine): median "
+        f"{statistics.median(cpus):.3f} s, slowest {cpus[-1]:.3f} s"
+    )
     print(f"  slowest grasp: {' '.join(_cli_args(worst['job']['params']))}")
-    print(f"  whole process (python, imports, run): median "
-          f"{statistics.median(r['process'] for r in ok):.2f} s, slowest "
-          f"{max(r['process'] for r in ok):.2f} s")
-    print(f"  V_n equal to the closed form (28)-(39) exactly: "
-          f"{sum(bool(r['exact']) for r in ok)}/{len(ok)}; errors: {len(errors)}")
+    print(
+        f"  whole process (python, imports, run): median "
+        f"{statistics.median(r['process'] for r in ok):.2f} s, slowest "
+        f"{max(r['process'] for r in ok):.2f} s"
+    )
+    print(
+        f"  V_n equal to the closed form (28)-(39) exactly: "
+        f"{sum(bool(r['exact']) for r in ok)}/{len(ok)}; errors: {len(errors)}"
+    )
     for r in errors[:5]:
         print("   ", r["error"], _cli_args(r["job"]["params"]))
-    print(f"  baseline, the Fig. 6 grasp in a fresh process: {fig6:.3f} s; slowest / Fig. 6 = "
-          f"{walls[-1] / fig6:.1f}x")
+    print(
+        f"  baseline, the Fig. 6 grasp in a fresh process: {fig6:.3f} s; slowest / Fig. 6 = "
+        f"{walls[-1] / fig6:.1f}x"
+    )
     if "error" in symbolic:
         print(f"  upper bound Grasp.symbolic('mu'): error {symbolic['error']}")
         sym = float("inf")
     else:
         sym = symbolic["wall"]
-        print(f"  upper bound Grasp.symbolic('mu') (whole diagram): {sym:.2f} s; "
-              f"slowest numeric / symbolic = {walls[-1] / sym:.2f}")
-    met = (walls[-1] < TARGET_MAX and statistics.median(walls) < TARGET_MEDIAN
-           and not errors and all(r["exact"] for r in ok) and walls[-1] <= sym)
-    print(f"target (slowest < {TARGET_MAX} s, median < {TARGET_MEDIAN} s, all exact, "
-          f"below the symbolic bound): {'target met' if met else 'target NOT met'}")
+        print(
+            f"  upper bound Grasp.symbolic('mu') (whole diagram): {sym:.2f} s; "
+            f"slowest numeric / symbolic = {walls[-1] / sym:.2f}"
+        )
+    met = (
+        walls[-1] < TARGET_MAX
+        and statistics.median(walls) < TARGET_MEDIAN
+        and not errors
+        and all(r["exact"] for r in ok)
+        and walls[-1] <= sym
+    )
+    print(
+        f"target (slowest < {TARGET_MAX} s, median < {TARGET_MEDIAN} s, all exact, "
+        f"below the symbolic bound): {'target met' if met else 'target NOT met'}"
+    )
 
     if ndraw:
         draws, svgs = [], []
         with tempfile.TemporaryDirectory() as tmp:
             for i, p in enumerate(grasps[:ndraw]):
                 draws.append(run_cli(["draw", *_cli_args(p), "-o", f"{tmp}/g{i}.png"]))
-                svgs.append(run_cli(["export", "--format", "svg", *_cli_args(p),
-                                     "-o", f"{tmp}/g{i}.svg"]))
+                svgs.append(
+                    run_cli(["export", "--format", "svg", *_cli_args(p), "-o", f"{tmp}/g{i}.svg"])
+                )
                 if tty:
                     print(f"\r{i + 1}/{ndraw} drawn", end="", file=sys.stderr, flush=True)
         if tty:
             print(file=sys.stderr)
         print(f"{ndraw} of them through the command line, whole process timed:")
-        print(f"  draw -o PNG:         median {statistics.median(draws):.2f} s, slowest "
-              f"{max(draws):.2f} s")
-        print(f"  export --format svg: median {statistics.median(svgs):.2f} s, slowest "
-              f"{max(svgs):.2f} s")
+        print(
+            f"  draw -o PNG:         median {statistics.median(draws):.2f} s, slowest "
+            f"{max(draws):.2f} s"
+        )
+        print(
+            f"  export --format svg: median {statistics.median(svgs):.2f} s, slowest "
+            f"{max(svgs):.2f} s"
+        )
         met = max(draws) < TARGET_DRAW and max(svgs) < TARGET_DRAW
         print(f"target (each under {TARGET_DRAW} s): {'target met' if met else 'target NOT met'}")
 

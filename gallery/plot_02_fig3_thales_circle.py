@@ -64,8 +64,17 @@ theta_v = np.arctan2(v[0], -v[1])  # the direction of V1: there H1 = V1, k1 = |V
 fig, ax = plt.subplots(figsize=(6.4, 6.4), layout="constrained")
 ax.axhline(0, color=th.axis_color, lw=0.8)
 ax.axvline(0, color=th.axis_color, lw=0.8)
-ax.add_patch(plt.Circle(tuple(centre), radius, fill=False, ls="--", lw=1.4,
-                        color=th.circle_color(1), label=r"circle on $OV_1$: polar graph of $k_1$"))
+ax.add_patch(
+    plt.Circle(
+        tuple(centre),
+        radius,
+        fill=False,
+        ls="--",
+        lw=1.4,
+        color=th.circle_color(1),
+        label=r"circle on $OV_1$: polar graph of $k_1$",
+    )
+)
 degrees = [-110, -75, np.degrees(theta_v), 0, 30, 80]
 for d in degrees:
     t = np.radians(d)
@@ -75,16 +84,26 @@ for d in degrees:
     positive = k > 0
     color = th.highlight_color if positive else "#9a9a9a"
     ax.plot(*np.array([-1.2 * e_t, 4.6 * e_t]).T, color=color, lw=0.7, ls=":")
-    ax.annotate("", xy=tuple(1.0 * e_t), xytext=(0, 0),
-                arrowprops=dict(arrowstyle="-|>", color=color, lw=1.2))
+    ax.annotate(
+        "",
+        xy=tuple(1.0 * e_t),
+        xytext=(0, 0),
+        arrowprops=dict(arrowstyle="-|>", color=color, lw=1.2),
+    )
     ax.plot(*np.array([v, h]).T, color=color, lw=0.8, ls="--")
     ax.plot(*h, "o", color=color, ms=5, zorder=5)
     out = (h - centre) / np.linalg.norm(h - centre)  # label outside the circle
-    ax.annotate(f"$\\theta = {d:.0f}°$\n$k_1 = {k:.2f}$", h, xytext=tuple(14 * out),
-                textcoords="offset points", fontsize=8.5, color=color,
-                ha="left" if out[0] > 0.3 else "right" if out[0] < -0.3 else "center",
-                va="bottom" if out[1] > 0.3 else "top" if out[1] < -0.3 else "center",
-                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
+    ax.annotate(
+        f"$\\theta = {d:.0f}°$\n$k_1 = {k:.2f}$",
+        h,
+        xytext=tuple(14 * out),
+        textcoords="offset points",
+        fontsize=8.5,
+        color=color,
+        ha="left" if out[0] > 0.3 else "right" if out[0] < -0.3 else "center",
+        va="bottom" if out[1] > 0.3 else "top" if out[1] < -0.3 else "center",
+        bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8),
+    )
 ax.plot(*v, "o", color="black", ms=6, zorder=6)
 ax.annotate("$V_1 = H_1$", v, xytext=(8, 8), textcoords="offset points", fontsize=12)
 ax.annotate("$O$", (0, 0), xytext=(4, 4), textcoords="offset points", fontsize=12)

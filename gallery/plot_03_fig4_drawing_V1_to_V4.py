@@ -49,8 +49,10 @@ def others(n: int) -> set[str]:
 # -------------------------------------
 # The signed lengths are steps of the protocol; they are exact.
 for n in (1, 2, 3, 4):
-    print(f"n = {n}:  O_M X{n} = {construction[f'OMX{n}']},   O Y{n} = {construction[f'OY{n}']}"
-          f"   ->   V{n} = {construction[f'V{n}']}")
+    print(
+        f"n = {n}:  O_M X{n} = {construction[f'OMX{n}']},   O Y{n} = {construction[f'OY{n}']}"
+        f"   ->   V{n} = {construction[f'V{n}']}"
+    )
 print("closed form (27)-(39):", grasp.V)
 print("drawn == closed form:", tuple(construction[f"V{n}"] for n in (1, 2, 3, 4)) == grasp.V)
 
@@ -72,7 +74,6 @@ for n, ax, tag in zip((1, 2, 3, 4), axes.flat, "abcd"):
             for a in artists[f"side{m}"]:
                 a.set_alpha(0.2)
     side = "upper" if n in (1, 2) else "lower"
-    ax.set_title(f"({tag}) $V_{n}$: the {side} side of the cone at $P_{2 - n % 2}$",
-                 fontsize=11)
+    ax.set_title(f"({tag}) $V_{n}$: the {side} side of the cone at $P_{2 - n % 2}$", fontsize=11)
 fig.suptitle("Fig. 4: drawing steps of each vector $V_n$ (§3.3)")
 plt.show()

@@ -27,9 +27,17 @@ import numpy as np
 import graspcompass as gc
 from graspcompass.render import draw_construction, figure_k_plot
 
-grasp = gc.Grasp("6/5", "4/5", "3/5", "5*pi/12", "pi/2", mu1="3/5", mu2="2/5",
-                 title="generic grasp: P1 = (6/5, 3/5), P2 = (−4/5, 3/5), φ1 = 75°, φ2 = 90°, "
-                       "μ1 = 0.6, μ2 = 0.4")
+grasp = gc.Grasp(
+    "6/5",
+    "4/5",
+    "3/5",
+    "5*pi/12",
+    "pi/2",
+    mu1="3/5",
+    mu2="2/5",
+    title="generic grasp: P1 = (6/5, 3/5), P2 = (−4/5, 3/5), φ1 = 75°, φ2 = 90°, "
+    "μ1 = 0.6, μ2 = 0.4",
+)
 construction = gc.internal_force_diagram(grasp)
 envelope = construction["envelope"]
 
@@ -41,8 +49,10 @@ envelope = construction["envelope"]
 # needed at all (k_grasp = 0).
 for arc in envelope.arcs:
     start, end = np.degrees(float(arc.theta_start)), np.degrees(float(arc.theta_end))
-    print(f"circle {arc.n}:  θ from {arc.theta_start}  (≈ {start:6.1f}°)  to {end:6.1f}°,"
-          f"  starting at {arc.start}")
+    print(
+        f"circle {arc.n}:  θ from {arc.theta_start}  (≈ {start:6.1f}°)  to {end:6.1f}°,"
+        f"  starting at {arc.start}"
+    )
 
 # %%
 # The drawing

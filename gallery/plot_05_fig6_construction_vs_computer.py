@@ -38,16 +38,19 @@ theta = np.linspace(0.0, 2 * np.pi, 1_000_001)
 drawn = envelope.k(theta)
 computed = grasp.k_grasp(theta)
 difference = np.abs(drawn - computed)
-print(f"largest |construction − computer plot| over {theta.size} directions: "
-      f"{difference.max():.3e}")
+print(
+    f"largest |construction − computer plot| over {theta.size} directions: {difference.max():.3e}"
+)
 print(f"largest k_grasp: {computed.max():.6f}")
 
 # %%
 # The difference is nil, not just small: the construction draws the points V_n
 # *exactly* (the same numbers as eqs. (28)-(39)), and the envelope picks, for every θ,
 # the same circle as the maximum of eq. (25).
-print("drawn V_n == closed-form V_n:",
-      all(construction[f"V{n}"] == grasp.V[n - 1] for n in (1, 2, 3, 4)))
+print(
+    "drawn V_n == closed-form V_n:",
+    all(construction[f"V{n}"] == grasp.V[n - 1] for n in (1, 2, 3, 4)),
+)
 
 # %%
 # At the break points of the envelope the check is exact: the distance from O to the
@@ -55,8 +58,10 @@ print("drawn V_n == closed-form V_n:",
 for arc in envelope.arcs:
     exact = grasp.k_grasp(arc.theta_start)
     same = decide_zero(exact - distance(ORIGIN, arc.start))
-    print(f"θ = {arc.theta_start}:  k_grasp = {sp.radsimp(exact)} ≈ {float(exact):.6f},"
-          f"  equal to |O B|: {same}")
+    print(
+        f"θ = {arc.theta_start}:  k_grasp = {sp.radsimp(exact)} ≈ {float(exact):.6f},"
+        f"  equal to |O B|: {same}"
+    )
 
 # %%
 # (a) drawn, (b) computed
@@ -64,8 +69,12 @@ for arc in envelope.arcs:
 fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(11, 5.8), layout="constrained")
 draw_construction(construction, ax=ax_a)
 ax_a.set_title("(a) manual draw: the construction of §3.3")
-draw_k_polar(grasp, ax=ax_b, components=True,
-             theme=DEFAULT_THEME.with_(computer_color="black", computer_width=2.0))
+draw_k_polar(
+    grasp,
+    ax=ax_b,
+    components=True,
+    theme=DEFAULT_THEME.with_(computer_color="black", computer_width=2.0),
+)
 ax_b.set_aspect("equal")
 ax_b.set_xlim(ax_a.get_xlim())
 ax_b.set_ylim(ax_a.get_ylim())

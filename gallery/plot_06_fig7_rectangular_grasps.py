@@ -35,8 +35,9 @@ cases = {tag: gc.internal_force_diagram(gc.Grasp.preset(f"table1{tag}")) for tag
 for tag, c in cases.items():
     v3, v4 = c["V3"], c["V4"]
     side = {1: "right (x > 0)", -1: "left (x < 0)", 0: "on the y-axis"}
-    print(f"({tag})  V3 = {v3}: {side[decide_sign(v3.x)]:14}   "
-          f"V4 = {v4}: {side[decide_sign(v4.x)]}")
+    print(
+        f"({tag})  V3 = {v3}: {side[decide_sign(v3.x)]:14}   V4 = {v4}: {side[decide_sign(v4.x)]}"
+    )
 
 # %%
 # The three diagrams
@@ -46,8 +47,9 @@ fig, axes = plt.subplots(1, 3, figsize=(15, 6), layout="constrained")
 for (tag, c), ax in zip(cases.items(), axes):
     draw_construction(c, ax=ax, show_computer_plot=True)
     ax.set_title(c.grasp.title.split(": ", 1)[-1], fontsize=10)
-    ax.text(0.02, 0.98, f"({tag})", transform=ax.transAxes, fontsize=14, va="top",
-            fontweight="bold")
+    ax.text(
+        0.02, 0.98, f"({tag})", transform=ax.transAxes, fontsize=14, va="top", fontweight="bold"
+    )
 handles, labels = axes[0].get_legend_handles_labels()
 fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize=9, frameon=False)
 fig.suptitle("Fig. 7: several shapes of the internal force diagram, rectangular object grasps")

@@ -63,9 +63,11 @@ for tag, g in grasps.items():
     c = constructions[tag] = gc.internal_force_diagram(g)
     inside = [om_inside(g, 1), om_inside(g, 2)]
     x3, x4 = decide_sign(c["V3"].x), decide_sign(c["V4"].x)
-    print(f"({tag}) O_M inside cone 1: {inside[0]!s:5}  inside cone 2: {inside[1]!s:5}  |  "
-          f"V3.x {'<' if x3 < 0 else '>'} 0, V4.x {'<' if x4 < 0 else '>'} 0  |  "
-          f"rule holds: {(x3 < 0) == inside[0] and (x4 > 0) == inside[1]}")
+    print(
+        f"({tag}) O_M inside cone 1: {inside[0]!s:5}  inside cone 2: {inside[1]!s:5}  |  "
+        f"V3.x {'<' if x3 < 0 else '>'} 0, V4.x {'<' if x4 < 0 else '>'} 0  |  "
+        f"rule holds: {(x3 < 0) == inside[0] and (x4 > 0) == inside[1]}"
+    )
 
 # %%
 # The drawings
@@ -73,8 +75,12 @@ for tag, g in grasps.items():
 # The construction up to :math:`V_4`, without the objects of :math:`V_1` and :math:`V_2`;
 # the dotted lines join each contact to :math:`O_M`, the half-plane :math:`x < 0` is shaded.
 HIDE = {f"{name}{n}" for n in (1, 2) for name in ("X", "perp", "Y", "OMX", "OY", "V")}
-titles = {"a": "(a) O_M inside both cones", "b": "(b) O_M outside both cones",
-          "c": "(c) O_M inside the cone at P_2 only", "c′": "(c′) O_M inside the cone at P_1 only"}
+titles = {
+    "a": "(a) O_M inside both cones",
+    "b": "(b) O_M outside both cones",
+    "c": "(c) O_M inside the cone at P_2 only",
+    "c′": "(c′) O_M inside the cone at P_1 only",
+}
 fig, axes = plt.subplots(2, 2, figsize=(10, 10), layout="constrained")
 for (tag, c), ax in zip(constructions.items(), axes.flat):
     artists = draw_construction(c, step=c.step("V4").index, ax=ax)
@@ -91,7 +97,9 @@ for (tag, c), ax in zip(constructions.items(), axes.flat):
     x0, x1 = ax.get_xlim()
     ax.axvspan(x0, 0, color="#457b9d", alpha=0.07, zorder=0)
     ax.set_xlim(x0, x1)
-    ax.set_title(titles[tag].replace("O_M", "$O_M$").replace("P_1", "$P_1$")
-                 .replace("P_2", "$P_2$"), fontsize=11)
+    ax.set_title(
+        titles[tag].replace("O_M", "$O_M$").replace("P_1", "$P_1$").replace("P_2", "$P_2$"),
+        fontsize=11,
+    )
 fig.suptitle("Fig. 8: the direction of $V_3$ and $V_4$ depends on where $O_M$ lies")
 plt.show()

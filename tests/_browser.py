@@ -21,11 +21,14 @@ def chromium(what: str) -> Iterator[Any]:
     sync_api = pytest.importorskip(
         "playwright.sync_api",
         reason=f"Playwright for Python is not installed (pip install playwright, in the test "
-               f"extra): {what} is not tested in a browser")
+        f"extra): {what} is not tested in a browser",
+    )
     exe = shutil.which("chromium") or shutil.which("chromium-browser")
     if exe is None:
-        pytest.skip(f"Chromium is not installed (Debian: apt-get install chromium): {what} "
-                    "is not tested in a browser")
+        pytest.skip(
+            f"Chromium is not installed (Debian: apt-get install chromium): {what} "
+            "is not tested in a browser"
+        )
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
         try:

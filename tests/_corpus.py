@@ -63,8 +63,10 @@ def run(path: Path, budget: float = BUDGET) -> dict:
         out["seconds"] = time.perf_counter() - t0
         return out
     out["seconds"] = time.perf_counter() - t0
-    out["claims"] = [(e, row.result.status.value, row.result.counterexample)
-                     for e, row in zip(expected, report.claims)]
+    out["claims"] = [
+        (e, row.result.status.value, row.result.counterexample)
+        for e, row in zip(expected, report.claims)
+    ]
     return out
 
 
@@ -76,11 +78,14 @@ def summary(records: list[dict]) -> dict:
     return {
         "files": len(records),
         "blocked_files": sum(1 for r in records if (r["error"] or "").startswith("BLOCKED")),
-        "internal_errors": sum(1 for r in records if r["error"] and not
-                               r["error"].startswith("BLOCKED")),
-        "true": len(true), "true_proved": sum(1 for c in true if c[1] == "PROVED"),
+        "internal_errors": sum(
+            1 for r in records if r["error"] and not r["error"].startswith("BLOCKED")
+        ),
+        "true": len(true),
+        "true_proved": sum(1 for c in true if c[1] == "PROVED"),
         "true_refuted": sum(1 for c in true if c[1] == "REFUTED"),
-        "false": len(false), "false_refuted": sum(1 for c in false if c[1] == "REFUTED"),
+        "false": len(false),
+        "false_refuted": sum(1 for c in false if c[1] == "REFUTED"),
         "false_proved": sum(1 for c in false if c[1] == "PROVED"),
         "median_s": secs[len(secs) // 2] if secs else 0.0,
     }
@@ -125,9 +130,14 @@ def geogebra_points(data: bytes, workdir: Path) -> dict[str, tuple[float, float]
         return None
     src, out = workdir / "file.ggb", workdir / "values.txt"
     src.write_bytes(data)
-    subprocess.run([xvfb, "-a", geogebra, "--showSplash=false", f"--regressionFile={out}",
-                    str(src)], check=False, timeout=240, capture_output=True, text=True,
-                   env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"})
+    subprocess.run(
+        [xvfb, "-a", geogebra, "--showSplash=false", f"--regressionFile={out}", str(src)],
+        check=False,
+        timeout=240,
+        capture_output=True,
+        text=True,
+        env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"},
+    )
     if not out.exists():
         raise RuntimeError("GeoGebra wrote no values")
     pts = {}
@@ -155,14 +165,22 @@ def geogebra_verdicts(data: bytes, workdir: Path) -> dict[int, bool] | None:
         return None
     src, out = workdir / "file.ggb", workdir / "values.txt"
     src.write_bytes(data)
-    run = subprocess.run([xvfb, "-a", geogebra, "--showSplash=false",
-                          f"--regressionFile={out}", str(src)], check=False, timeout=240,
-                         capture_output=True, text=True,
-                         env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"})
+    run = subprocess.run(
+        [xvfb, "-a", geogebra, "--showSplash=false", f"--regressionFile={out}", str(src)],
+        check=False,
+        timeout=240,
+        capture_output=True,
+        text=True,
+        env={"HOME": str(workdir), "PATH": "/usr/bin:/bin"},
+    )
     if not out.exists() or "Unknown command : Prove" in run.stdout + run.stderr:
         return None
-    found = {int(m[1]): m[2] == "true" for m in re.finditer(
-        r"^\S+ claim(\d+) = (?:.* == )?(true|false)\s*$", out.read_text("utf-8"), re.M)}
+    found = {
+        int(m[1]): m[2] == "true"
+        for m in re.finditer(
+            r"^\S+ claim(\d+) = (?:.* == )?(true|false)\s*$", out.read_text("utf-8"), re.M
+        )
+    }
     return found or None
 
 

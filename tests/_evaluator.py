@@ -26,16 +26,24 @@ class Undefined(Exception):
     """An object that does not exist at the point."""
 
 
-_FN = {"sqrt": mpmath.sqrt, "sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan,
-       "asin": mpmath.asin, "acos": mpmath.acos, "atan": mpmath.atan, "atan2": mpmath.atan2}
+_FN = {
+    "sqrt": mpmath.sqrt,
+    "sin": mpmath.sin,
+    "cos": mpmath.cos,
+    "tan": mpmath.tan,
+    "asin": mpmath.asin,
+    "acos": mpmath.acos,
+    "atan": mpmath.atan,
+    "atan2": mpmath.atan2,
+}
 
 
 def num(text: str, names: dict) -> mpmath.mpf:
     """Evaluate an expression text with mpmath, refusing undefined steps."""
+
     def ev(n: ast.AST) -> mpmath.mpf:
         if isinstance(n, ast.Constant):
-            return mpmath.mpf(str(n.value)) if isinstance(n.value, float) else \
-                mpmath.mpf(n.value)
+            return mpmath.mpf(str(n.value)) if isinstance(n.value, float) else mpmath.mpf(n.value)
         if isinstance(n, ast.Name):
             if n.id == "pi":
                 return +mpmath.pi
@@ -62,7 +70,7 @@ def num(text: str, names: dict) -> mpmath.mpf:
                     raise Undefined("0 to a negative power")
                 if a < 0 and b != int(b):
                     raise Undefined("root of a negative number")
-                return a ** b
+                return a**b
         if isinstance(n, ast.Call):
             args = [ev(a) for a in n.args]
             f = n.func.id
@@ -76,6 +84,7 @@ def num(text: str, names: dict) -> mpmath.mpf:
                 raise Undefined("tan at a pole")
             return _FN[f](*args)
         raise ValueError(f"cannot read {ast.dump(n)}")
+
     t = text.strip()
     scale = 1
     if t.endswith("deg") and not t[:-3].rstrip().endswith(("*", "/")):
@@ -231,8 +240,9 @@ def _class_step(op, ins, vals):
         p, q, r = ins
         if _small(_cross(_sub(q, p), _sub(r, p))):
             raise Undefined("collinear points")
-        m = mpmath.matrix([[2 * (q[0] - p[0]), 2 * (q[1] - p[1])],
-                           [2 * (r[0] - p[0]), 2 * (r[1] - p[1])]])
+        m = mpmath.matrix(
+            [[2 * (q[0] - p[0]), 2 * (q[1] - p[1])], [2 * (r[0] - p[0]), 2 * (r[1] - p[1])]]
+        )
         rhs = mpmath.matrix([_dot(q, q) - _dot(p, p), _dot(r, r) - _dot(p, p)])
         x = mpmath.lu_solve(m, rhs)
         centre = (x[0], x[1])
@@ -298,7 +308,7 @@ def _class_claim(kind, words, value, env):
         return _same_mod_pi(_angle_mod_pi(*p[:3]), _angle_mod_pi(*p[3:]))
     if kind == "angles":
         p = [env[w] for w in words]
-        total = sum(_angle_mod_pi(*p[i:i + 3]) for i in range(0, len(p), 3))
+        total = sum(_angle_mod_pi(*p[i : i + 3]) for i in range(0, len(p), 3))
         return _same_mod_pi(total, num(value, env))
     if kind == "tangent":
         a, b = env[words[0]], env[words[1]]
@@ -355,9 +365,13 @@ def _claim(body: str, env: dict) -> bool:
     kind = words[0]
     if kind == "collinear":
         pts = [env[w] for w in words[1:]]
-        return all(_small(_cross(_sub(b, a), _sub(c, a)))
-                   for i, a in enumerate(pts) for j, b in enumerate(pts)
-                   for k, c in enumerate(pts) if i < j < k)
+        return all(
+            _small(_cross(_sub(b, a), _sub(c, a)))
+            for i, a in enumerate(pts)
+            for j, b in enumerate(pts)
+            for k, c in enumerate(pts)
+            if i < j < k
+        )
     if kind == "concyclic":
         return _concyclic([env[w] for w in words[1:]])
     if kind in ("congruent", "equal_angles", "tangent"):
@@ -382,10 +396,16 @@ def _claim(body: str, env: dict) -> bool:
     if kind == "sign":
         rest = body[4:].strip()
         m = re.search(r"==|!=|>=|<=|>|<", rest)
-        a, b = num(rest[:m.start()], env), num(rest[m.end():], env)
+        a, b = num(rest[: m.start()], env), num(rest[m.end() :], env)
         d, rel = a - b, m.group()
-        return {"==": _small(d), "!=": not _small(d), ">": d > TOL, ">=": d > -TOL,
-                "<": d < -TOL, "<=": d < TOL}[rel]
+        return {
+            "==": _small(d),
+            "!=": not _small(d),
+            ">": d > TOL,
+            ">=": d > -TOL,
+            "<": d < -TOL,
+            "<=": d < TOL,
+        }[rel]
     m = re.match(r"(\S+)\s*==\s*(.*)$", body)
     left, right = env[m.group(1)], m.group(2).strip()
     pm = re.fullmatch(r"point\s*\((.*)\)", right)
@@ -397,8 +417,7 @@ def _claim(body: str, env: dict) -> bool:
         if isinstance(left, tuple) and len(left) == 2 and not isinstance(left[0], str):
             return _small(left[0] - other[0]) and _small(left[1] - other[1])
         if left[0] == "circle":
-            return all(_small(u - v) for u, v in zip((*left[1], left[2]),
-                                                      (*other[1], other[2])))
+            return all(_small(u - v) for u, v in zip((*left[1], left[2]), (*other[1], other[2])))
         return _on(other[1], left) and _small(_cross(left[2], other[2]))
     return _small(left - num(right, env))
 
@@ -435,15 +454,28 @@ def evaluate(text: str, point: dict) -> list[bool | None]:
         m = re.match(r"(\S+)\s*=\s*(\w+)\s*(.*)$", line)
         name, op, rest = m.groups()
         vals_m = re.search(r"\((.*)\)", rest)
-        head = rest[:vals_m.start()] if vals_m else rest
-        ins_names = [w for w in head.split() if w not in ("role", "key", "optional", "ref")
-                     and not w.isdigit()][: {"point": 0, "line_with_direction": 1,
-                                             "line_at_angle": 1, "point_from_lengths": 2,
-                                             "signed_length": 3, "intersect_line_circle": 2,
-                                             "intersect_circles": 2, "point_on_line": 1,
-                                             "circumcircle": 3, "circle_radius": 1,
-                                             "circle_compass": 3, "bisector": 3,
-                                             "second_intersection": 3}.get(op, 2)]
+        head = rest[: vals_m.start()] if vals_m else rest
+        ins_names = [
+            w
+            for w in head.split()
+            if w not in ("role", "key", "optional", "ref") and not w.isdigit()
+        ][
+            : {
+                "point": 0,
+                "line_with_direction": 1,
+                "line_at_angle": 1,
+                "point_from_lengths": 2,
+                "signed_length": 3,
+                "intersect_line_circle": 2,
+                "intersect_circles": 2,
+                "point_on_line": 1,
+                "circumcircle": 3,
+                "circle_radius": 1,
+                "circle_compass": 3,
+                "bisector": 3,
+                "second_intersection": 3,
+            }.get(op, 2)
+        ]
         if any(n in broken for n in ins_names):
             broken.add(name)
             continue
@@ -481,8 +513,13 @@ def _cond1(pt: dict) -> bool:
         if f"phi{i}" not in pt:
             continue
         phi = float(pt[f"phi{i}"])
-        xi = float(pt[f"xi{i}"]) if f"xi{i}" in pt else \
-            float(mpmath.atan(float(pt[f"mu{i}"]))) if f"mu{i}" in pt else None
+        xi = (
+            float(pt[f"xi{i}"])
+            if f"xi{i}" in pt
+            else float(mpmath.atan(float(pt[f"mu{i}"])))
+            if f"mu{i}" in pt
+            else None
+        )
         if xi is None:
             continue
         if not (mpmath.pi / 2 < phi + xi < 3 * mpmath.pi / 2 and abs(phi - xi) < mpmath.pi / 2):
@@ -510,9 +547,10 @@ def hypotheses_hold(text: str, point: dict) -> bool:
         if not m:
             continue
         r = re.search(r"!=|>=|<=|>|<", m.group(1))
-        d = num(m.group(1)[:r.start()], env) - num(m.group(1)[r.end():], env)
-        ok = {"!=": abs(d) > TOL, ">": d > TOL, ">=": d > -TOL, "<": d < -TOL,
-              "<=": d < TOL}[r.group()]
+        d = num(m.group(1)[: r.start()], env) - num(m.group(1)[r.end() :], env)
+        ok = {"!=": abs(d) > TOL, ">": d > TOL, ">=": d > -TOL, "<": d < -TOL, "<=": d < TOL}[
+            r.group()
+        ]
         if not ok:
             return False
     return True

@@ -23,7 +23,7 @@ def edge_matrix(contacts, com=(0.0, 0.0)):
         r = math.hypot(nx, ny)
         nx, ny = nx / r, ny / r
         for s in (1, -1):
-            dx, dy = nx - s * mu * ny, ny + s * mu * nx   # n ± μ J n, J = quarter turn ccw
+            dx, dy = nx - s * mu * ny, ny + s * mu * nx  # n ± μ J n, J = quarter turn ccw
             px, py = x - com[0], y - com[1]
             cols.append((dx, dy, px * dy - py * dx))
             owner.append(i)
@@ -102,8 +102,9 @@ class SweepLP:
             b = (-math.sin(t), math.cos(t), 0.0)
             if self.h is None:
                 kw = dict(A_ub=self.A_ub, b_ub=self.b_ub) if len(self.b_ub) else {}
-                res = linprog(self.c, A_eq=self.A_eq, b_eq=b, bounds=(0, None),
-                              method="highs", **kw)
+                res = linprog(
+                    self.c, A_eq=self.A_eq, b_eq=b, bounds=(0, None), method="highs", **kw
+                )
                 assert res.status in (0, 2), res.message
                 out[k] = res.fun if res.status == 0 else math.inf
                 continue
@@ -139,8 +140,7 @@ def force_closure(contacts, com=(0.0, 0.0)):
         for s in (1, -1):
             b = np.zeros(3)
             b[k] = s
-            res = linprog(np.zeros(G.shape[1]), A_eq=G, b_eq=b, bounds=(0, None),
-                          method="highs")
+            res = linprog(np.zeros(G.shape[1]), A_eq=G, b_eq=b, bounds=(0, None), method="highs")
             if res.status != 0:
                 return False
     return True

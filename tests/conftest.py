@@ -29,8 +29,15 @@ from graspcompass import Grasp, internal_force_diagram
 MARGIN = 0.05
 
 #: Exact angles φ used for exact random grasps (rational multiples of π).
-PHI_CHOICES = (sp.pi / 6, sp.pi / 4, sp.pi / 3, sp.pi / 2, 2 * sp.pi / 3, 3 * sp.pi / 4,
-               5 * sp.pi / 6)
+PHI_CHOICES = (
+    sp.pi / 6,
+    sp.pi / 4,
+    sp.pi / 3,
+    sp.pi / 2,
+    2 * sp.pi / 3,
+    3 * sp.pi / 4,
+    5 * sp.pi / 6,
+)
 
 PRESET_NAMES = ("fig6", "table1a", "table1b", "table1c")
 
@@ -121,16 +128,15 @@ class Params:
 
     def grasp(self) -> Grasp:
         if self.by_xi:
-            return Grasp(self.x1, self.x2, self.y, self.phi1, self.phi2,
-                         xi1=self.xi1, xi2=self.xi2)
-        return Grasp(self.x1, self.x2, self.y, self.phi1, self.phi2,
-                     mu1=self.mu1, mu2=self.mu2)
+            return Grasp(self.x1, self.x2, self.y, self.phi1, self.phi2, xi1=self.xi1, xi2=self.xi2)
+        return Grasp(self.x1, self.x2, self.y, self.phi1, self.phi2, mu1=self.mu1, mu2=self.mu2)
 
     @property
     def floats(self) -> tuple[float, ...]:
         """``(x1, x2, y, phi1, phi2, mu1, mu2)`` as Python floats."""
-        return tuple(float(v) for v in (self.x1, self.x2, self.y, self.phi1, self.phi2,
-                                        self.mu1, self.mu2))
+        return tuple(
+            float(v) for v in (self.x1, self.x2, self.y, self.phi1, self.phi2, self.mu1, self.mu2)
+        )
 
     @property
     def seven(self) -> tuple[Any, ...]:
@@ -141,14 +147,35 @@ class Params:
 _I, _R = sp.Integer, sp.Rational
 PRESET_PARAMS = {
     # §4.1 (Fig. 6) and Table I, typed in again from the paper
-    "fig6": Params(sp.sqrt(3) / 2, sp.sqrt(3) / 2, _R(1, 2), sp.pi / 3, sp.pi / 3,
-                   _I(1), sp.sqrt(3), sp.pi / 4, sp.pi / 3, by_xi=True),
-    "table1a": Params(_I(2), _I(2), _I(1), sp.pi / 2, sp.pi / 2, _I(1), _R(6, 5),
-                      sp.atan(1), sp.atan(_R(6, 5))),
-    "table1b": Params(_I(2), _I(2), _I(3), sp.pi / 2, sp.pi / 2, _I(1), _R(6, 5),
-                      sp.atan(1), sp.atan(_R(6, 5))),
-    "table1c": Params(_I(2), _I(2), _I(2), sp.pi / 2, sp.pi / 2, _R(1, 2), _R(7, 5),
-                      sp.atan(_R(1, 2)), sp.atan(_R(7, 5))),
+    "fig6": Params(
+        sp.sqrt(3) / 2,
+        sp.sqrt(3) / 2,
+        _R(1, 2),
+        sp.pi / 3,
+        sp.pi / 3,
+        _I(1),
+        sp.sqrt(3),
+        sp.pi / 4,
+        sp.pi / 3,
+        by_xi=True,
+    ),
+    "table1a": Params(
+        _I(2), _I(2), _I(1), sp.pi / 2, sp.pi / 2, _I(1), _R(6, 5), sp.atan(1), sp.atan(_R(6, 5))
+    ),
+    "table1b": Params(
+        _I(2), _I(2), _I(3), sp.pi / 2, sp.pi / 2, _I(1), _R(6, 5), sp.atan(1), sp.atan(_R(6, 5))
+    ),
+    "table1c": Params(
+        _I(2),
+        _I(2),
+        _I(2),
+        sp.pi / 2,
+        sp.pi / 2,
+        _R(1, 2),
+        _R(7, 5),
+        sp.atan(_R(1, 2)),
+        sp.atan(_R(7, 5)),
+    ),
 }
 
 
@@ -183,10 +210,11 @@ def float_params(draw) -> Params:
 
 def _rational(lo: float, hi: float, max_denominator: int = 12) -> st.SearchStrategy:
     q = max_denominator
-    return st.fractions(min_value=Fraction(math.ceil(lo * q), q),
-                        max_value=Fraction(math.floor(hi * q), q),
-                        max_denominator=q).map(
-        lambda f: sp.Rational(f.numerator, f.denominator))
+    return st.fractions(
+        min_value=Fraction(math.ceil(lo * q), q),
+        max_value=Fraction(math.floor(hi * q), q),
+        max_denominator=q,
+    ).map(lambda f: sp.Rational(f.numerator, f.denominator))
 
 
 @st.composite
@@ -221,4 +249,3 @@ def preset_grasps() -> dict[str, Grasp]:
 @pytest.fixture(scope="session")
 def preset_constructions(preset_grasps) -> dict[str, Any]:
     return {name: internal_force_diagram(g) for name, g in preset_grasps.items()}
-

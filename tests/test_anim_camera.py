@@ -96,8 +96,7 @@ def test_lecture_starts_with_a_title_card(fig6):
     assert tl.segments[0].kind == "title"
     assert tl.segments[0].frames / lec.fps >= 3.0
     lec._apply(0)
-    card = [t for t in lec.figure.texts if t.get_visible() and "ruler and compass" in
-            t.get_text()]
+    card = [t for t in lec.figure.texts if t.get_visible() and "ruler and compass" in t.get_text()]
     assert card
     drawn = [a for items in lec._items for a, _, _ in items if a.get_visible()]
     assert not drawn
@@ -106,8 +105,10 @@ def test_lecture_starts_with_a_title_card(fig6):
     for st in fig6.steps:
         text = lec.caption_at(tl.frames_of_step(st.index)[0])
         read = max(2.5, len(text) / 15.0) + (3.0 if st.key else 0.0)
-        assert lec.caption_seconds_of_step(st.index) == pytest.approx(
-            read, abs=1.01 / lec.fps) or st.index == len(fig6.steps) - 1, st.name
+        assert (
+            lec.caption_seconds_of_step(st.index) == pytest.approx(read, abs=1.01 / lec.fps)
+            or st.index == len(fig6.steps) - 1
+        ), st.name
 
 
 def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
@@ -115,9 +116,16 @@ def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
     empty = tmp_path / "bin"
     empty.mkdir()
     monkeypatch.setenv("PATH", str(empty))  # no ffmpeg on the PATH
-    anim = animate_construction(fig6, frames_per_step=1, pause_frames=0, hold_frames=1,
-                                caption_seconds=0, figsize=(4, 4.4), dpi=40,
-                                min_text_px=0)
+    anim = animate_construction(
+        fig6,
+        frames_per_step=1,
+        pause_frames=0,
+        hold_frames=1,
+        caption_seconds=0,
+        figsize=(4, 4.4),
+        dpi=40,
+        min_text_px=0,
+    )
     path = anim.save(tmp_path / "c.mp4", quiet=True)
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
     assert frames == anim.frame_count

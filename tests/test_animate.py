@@ -53,8 +53,12 @@ PAPER = {
 SMALL = dict(figsize=(3.0, 3.4), dpi=40)
 #: Tiny construction frames (fast): the text rule of the GIF (14 px) and the camera are
 #: tested apart (tests/test_anim_camera.py).
-CSMALL = dict(SMALL, min_text_px=0, camera=False,
-              quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0))
+CSMALL = dict(
+    SMALL,
+    min_text_px=0,
+    camera=False,
+    quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0),
+)
 
 
 def paper_k(preset: str, theta: np.ndarray) -> np.ndarray:
@@ -79,8 +83,9 @@ def c1a():
 
 @pytest.fixture(scope="module")
 def anim(c1a):
-    return animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3,
-                                caption_seconds=0, **CSMALL)
+    return animate_construction(
+        c1a, frames_per_step=3, pause_frames=2, hold_frames=3, caption_seconds=0, **CSMALL
+    )
 
 
 @pytest.fixture(scope="module")
@@ -92,8 +97,17 @@ def frames(anim):
 def test_frame_counts_per_step(c1a, anim):
     tl = anim.timeline
     keys = [s.index for s in c1a.steps if s.key]
-    assert [c1a.steps[i].name for i in keys] == ["V1", "V2", "V3", "V4", "circle1", "circle2",
-                                                "circle3", "circle4", "envelope"]
+    assert [c1a.steps[i].name for i in keys] == [
+        "V1",
+        "V2",
+        "V3",
+        "V4",
+        "circle1",
+        "circle2",
+        "circle3",
+        "circle4",
+        "envelope",
+    ]
     last = len(c1a.steps) - 1
     for s in c1a.steps:
         expected = 3 + (2 if s.key else 0) + (3 if s.index == last else 0)
@@ -116,8 +130,7 @@ def test_every_step_appears_in_order(c1a, anim):
 
 
 def test_timeline_progress_and_rates():
-    tl = Timeline.from_keys([False, True, False], frames_per_step=4, pause_frames=3,
-                            hold_frames=2)
+    tl = Timeline.from_keys([False, True, False], frames_per_step=4, pause_frames=3, hold_frames=2)
     drawn = [tl.at(f).progress for f in tl.frames_of_step(0)]
     assert drawn == sorted(drawn) and drawn[-1] == 1.0 and drawn[0] > 0
     assert [tl.at(f).kind for f in tl.frames_of_step(1)] == ["draw"] * 4 + ["pause"] * 3
@@ -182,8 +195,9 @@ def test_blitted_frames_match_full_draws(anim, frames):
 
 
 def test_deterministic(c1a, frames):
-    again = animate_construction(c1a, frames_per_step=3, pause_frames=2, hold_frames=3,
-                                 caption_seconds=0, **CSMALL)
+    again = animate_construction(
+        c1a, frames_per_step=3, pause_frames=2, hold_frames=3, caption_seconds=0, **CSMALL
+    )
     assert all(np.array_equal(a, b) for a, b in zip(again.iter_frames(), frames, strict=True))
 
 
@@ -225,8 +239,9 @@ def test_png_frames_per_step(c1a, anim, tmp_path):
 
 
 def test_html_is_self_contained(tmp_path, c1a):
-    small = animate_construction(c1a, frames_per_step=1, pause_frames=1, hold_frames=1,
-                                 figsize=(2, 2), dpi=30)
+    small = animate_construction(
+        c1a, frames_per_step=1, pause_frames=1, hold_frames=1, figsize=(2, 2), dpi=30
+    )
     html = small._repr_html_()
     assert "<script" in html and "<img" in html
     assert html.count("data:image/png;base64,") == small.frame_count
@@ -252,9 +267,11 @@ def test_errors_are_one_line_value_errors(anim, tmp_path, monkeypatch):
 def test_mp4_pipes_raw_frames_to_ffmpeg(tmp_path, monkeypatch, c1a):
     """A stand-in ffmpeg records its arguments and the bytes it was sent."""
     fake = tmp_path / "ffmpeg"
-    fake.write_text(f"#!{sys.executable}\nimport sys\ndata = sys.stdin.buffer.read()\n"
-                    "open(sys.argv[-1], 'w').write(' '.join(sys.argv[1:]) + '\\n' + "
-                    "str(len(data)))\n")
+    fake.write_text(
+        f"#!{sys.executable}\nimport sys\ndata = sys.stdin.buffer.read()\n"
+        "open(sys.argv[-1], 'w').write(' '.join(sys.argv[1:]) + '\\n' + "
+        "str(len(data)))\n"
+    )
     fake.chmod(fake.stat().st_mode | stat.S_IEXEC)
     monkeypatch.setitem(matplotlib.rcParams, "animation.ffmpeg_path", str(fake))
     small = animate_sweep(c1a, frames=6, figsize=(3, 2), dpi=30)
@@ -284,8 +301,11 @@ def test_progress_bar_only_on_a_terminal():
         def isatty(self):
             return True
 
-    for stream, quiet, shown in ((Tty(), False, True), (Tty(), True, False),
-                                 (io.StringIO(), False, False)):
+    for stream, quiet, shown in (
+        (Tty(), False, True),
+        (Tty(), True, False),
+        (io.StringIO(), False, False),
+    ):
         bar = Progress(4, "writing x.gif", quiet=quiet, stream=stream)
         for _ in range(4):
             bar.update()
@@ -319,8 +339,9 @@ def test_sweep_names_the_slipping_contact():
     ks = paper_k("table1a", sweep.theta)
     expected = np.where(ks.max(axis=0) > 0, ks.argmax(axis=0) + 1, 0)
     assert np.array_equal(sweep.binding, expected)
-    assert [s.step for s in sweep.timeline.segments] == \
-        [int(n) for i, n in enumerate(expected) if i == 0 or n != expected[i - 1]]
+    assert [s.step for s in sweep.timeline.segments] == [
+        int(n) for i, n in enumerate(expected) if i == 0 or n != expected[i - 1]
+    ]
     for f in range(0, 36, 5):
         assert SLIP[int(expected[f])] in sweep.status_at(f)
     assert "contact 1" in SLIP[1] and "upper" in SLIP[1] and "(8)" in SLIP[1]
@@ -339,10 +360,17 @@ def test_binding_inequality_holds_with_equality():
     for f, th in enumerate(sweep.theta):
         s, c = np.sin(th), np.cos(th)
         a, b = y * s - x2 * c, y * s + x1 * c
-        FT = np.array([D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
-                       -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]) / (2 * D)
-        N1, F1, N2, F2 = FT + paper_k_grasp("table1a", np.array([th]))[0] * \
-            np.array([s1, c1, s2, c2]) / D
+        FT = np.array(
+            [
+                D * s1 * s + 2 * a * c1,
+                D * c1 * s - 2 * a * s1,
+                -D * s2 * s - 2 * b * c2,
+                -D * c2 * s + 2 * b * s2,
+            ]
+        ) / (2 * D)
+        N1, F1, N2, F2 = (
+            FT + paper_k_grasp("table1a", np.array([th]))[0] * np.array([s1, c1, s2, c2]) / D
+        )
         ineq = np.array([m1 * N1 - F1, m2 * N2 - F2, m1 * N1 + F1, m2 * N2 + F2])
         assert ineq.min() > -1e-9
         n = int(sweep.binding[f])
@@ -385,17 +413,34 @@ def parser():
 
 def test_cli_animate(tmp_path, capsys):
     out = tmp_path / "s.gif"
-    args = parser().parse_args(["animate", "table1a", "--kind", "sweep", "-o", str(out),
-                                "--frames", "6", "--fps", "10", "--dpi", "20"])
+    args = parser().parse_args(
+        [
+            "animate",
+            "table1a",
+            "--kind",
+            "sweep",
+            "-o",
+            str(out),
+            "--frames",
+            "6",
+            "--fps",
+            "10",
+            "--dpi",
+            "20",
+        ]
+    )
     assert args.preset == "table1a" and args.kind == "sweep"
     assert run(args, grasp_from_args(args)) == 0
     assert "wrote" in capsys.readouterr().out
     with Image.open(out) as im:
         assert im.n_frames >= 5 and im.info["duration"] == 100
-    args = parser().parse_args(["animate", "--preset", "table1b", "--mu1", "0.8",
-                                "-o", str(tmp_path / "x")])
-    assert args.preset == "table1b" and grasp_from_args(args).mu1 == Grasp(
-        2, 2, 3, "pi/2", "pi/2", mu1="0.8", mu2="1.2").mu1
+    args = parser().parse_args(
+        ["animate", "--preset", "table1b", "--mu1", "0.8", "-o", str(tmp_path / "x")]
+    )
+    assert (
+        args.preset == "table1b"
+        and grasp_from_args(args).mu1 == Grasp(2, 2, 3, "pi/2", "pi/2", mu1="0.8", mu2="1.2").mu1
+    )
     with pytest.raises(UnsupportedFormatError, match="without extension"):
         run(args, grasp_from_args(args))
     for bad in (["--fps", "0"], ["--fps", "x"], ["nopreset"], ["--kind", "spin"]):

@@ -57,8 +57,9 @@ def stated_bound(p, S, C, T, parts):
         t = float(abs(T[n]))
         dt = 4 * U * t * (1 + a / num + b / den)
         x = x2 if n in (0, 2) else x1
-        out.append((abs(y) * dt + 2 * U * (abs(float(S[n])) + h),
-                    abs(x) * dt + U * abs(float(C[n]))))
+        out.append(
+            (abs(y) * dt + 2 * U * (abs(float(S[n])) + h), abs(x) * dt + U * abs(float(C[n])))
+        )
     return out
 
 
@@ -73,11 +74,20 @@ def np_relative_bound(x1, x2, y, phi1, phi2, mu1, mu2):
         sg = 1 if n in (1, 2) else -1
         num, den = s + sg * mu * c, c - sg * mu * s
         t = num / den
-        dt = 4 * U * np.abs(t) * (1 + (np.abs(s) + mu * np.abs(c)) / np.abs(num)
-                                  + (np.abs(c) + mu * np.abs(s)) / np.abs(den))
+        dt = (
+            4
+            * U
+            * np.abs(t)
+            * (
+                1
+                + (np.abs(s) + mu * np.abs(c)) / np.abs(num)
+                + (np.abs(c) + mu * np.abs(s)) / np.abs(den)
+            )
+        )
         S, C = (y * t - h if n in (1, 3) else h - y * t), x * t
-        err = np.maximum(err, np.abs(y) * dt + 2 * U * (np.abs(S) + h)
-                         + np.abs(x) * dt + U * np.abs(C))
+        err = np.maximum(
+            err, np.abs(y) * dt + 2 * U * (np.abs(S) + h) + np.abs(x) * dt + U * np.abs(C)
+        )
         vmax = np.maximum(vmax, np.hypot(S, C))
     return err / vmax
 
@@ -143,8 +153,12 @@ def test_k_and_k_grasp_equal_grasp(p, thetas):
     np.testing.assert_allclose(kb, g.k(t).T, rtol=0, atol=2 * err)
     np.testing.assert_allclose(batch.k_grasp(t, *p), g.k_grasp(t), rtol=0, atol=2 * err)
     fe = 2.5
-    np.testing.assert_allclose(batch.internal_force(t, *p, fe), g.internal_force(t, fe),
-                               rtol=0, atol=2 * err * fe / (p[0] + p[1]))
+    np.testing.assert_allclose(
+        batch.internal_force(t, *p, fe),
+        g.internal_force(t, fe),
+        rtol=0,
+        atol=2 * err * fe / (p[0] + p[1]),
+    )
 
 
 def test_worst_squeeze_equals_the_sizing_module_and_grasp():
@@ -160,8 +174,7 @@ def test_worst_squeeze_equals_the_sizing_module_and_grasp():
     ref = worst_squeeze_many(*p, mass, g=9.81, accel=2.0, safety=1.5, per="total")
     np.testing.assert_allclose(F, ref, rtol=1e-13)
     for i in (0, 1234, n - 1):
-        S, C = Grasp(*(float(v[i]) for v in p[:5]), mu1=float(mu1[i]),
-                     mu2=float(mu2[i]))._floats()
+        S, C = Grasp(*(float(v[i]) for v in p[:5]), mu1=float(mu1[i]), mu2=float(mu2[i]))._floats()
         want = 1.5 * mass[i] * (9.81 + 2.0) * 2 * np.hypot(S, C).max() / (x1[i] + x2[i])
         assert F[i] == pytest.approx(want, rel=1e-13)
 
@@ -174,21 +187,35 @@ def test_worst_squeeze_issue_example_and_sweep_shapes():
     out = batch.worst_squeeze(0.05, 0.05, y, HALF_PI, HALF_PI, mu, mu, 1.0)
     assert out.shape == (3, 5)
     assert batch.closed_form(0.05, 0.05, y, HALF_PI, HALF_PI, mu, mu)[0].shape == (3, 5, 4)
-    assert batch.k(np.zeros(7)[:, None, None], 0.05, 0.05, y, HALF_PI, HALF_PI, mu,
-                   mu).shape == (7, 3, 5, 4)
+    assert batch.k(np.zeros(7)[:, None, None], 0.05, 0.05, y, HALF_PI, HALF_PI, mu, mu).shape == (
+        7,
+        3,
+        5,
+        4,
+    )
 
 
 # -- namespaces --------------------------------------------------------------------------------
 def test_numpy_and_array_api_strict_give_identical_results():
-    xs = pytest.importorskip("array_api_strict", reason="array-api-strict is not installed "
-                             "(pip install 'graspcompass[test]')")
-    pytest.importorskip("array_api_compat", reason="array-api-compat is not installed "
-                        "(pip install 'graspcompass[batch]')")
+    xs = pytest.importorskip(
+        "array_api_strict",
+        reason="array-api-strict is not installed (pip install 'graspcompass[test]')",
+    )
+    pytest.importorskip(
+        "array_api_compat",
+        reason="array-api-compat is not installed (pip install 'graspcompass[batch]')",
+    )
     rng = np.random.default_rng(9)
     n = 3000
-    p = [rng.uniform(0.01, 1, n), rng.uniform(0.01, 1, n), rng.uniform(0, 1, n),
-         rng.uniform(1.2, 1.9, n), rng.uniform(1.2, 1.9, n), rng.uniform(0.1, 1.5, n),
-         rng.uniform(0.1, 1.5, n)]
+    p = [
+        rng.uniform(0.01, 1, n),
+        rng.uniform(0.01, 1, n),
+        rng.uniform(0, 1, n),
+        rng.uniform(1.2, 1.9, n),
+        rng.uniform(1.2, 1.9, n),
+        rng.uniform(0.1, 1.5, n),
+        rng.uniform(0.1, 1.5, n),
+    ]
     t = rng.uniform(-4, 4, n)
     ps = [xs.asarray(v) for v in p]
     ts = xs.asarray(t)
@@ -215,9 +242,25 @@ def test_numpy_and_array_api_strict_give_identical_results():
 
 def test_sincos_table_is_within_two_units_of_mpmath():
     rng = np.random.default_rng(2)
-    x = np.concatenate([rng.uniform(0, math.pi, 4000), rng.uniform(-20, 20, 1000),
-                        [0.0, 5e-324, 1e-300, 1e-8, HALF_PI, math.pi, -math.pi, 2 * math.pi,
-                         np.nextafter(HALF_PI, 0), np.nextafter(math.pi, 0), 3 * HALF_PI]])
+    x = np.concatenate(
+        [
+            rng.uniform(0, math.pi, 4000),
+            rng.uniform(-20, 20, 1000),
+            [
+                0.0,
+                5e-324,
+                1e-300,
+                1e-8,
+                HALF_PI,
+                math.pi,
+                -math.pi,
+                2 * math.pi,
+                np.nextafter(HALF_PI, 0),
+                np.nextafter(math.pi, 0),
+                3 * HALF_PI,
+            ],
+        ]
+    )
     s, c = batch._sincos(np, x)
     with mpmath.workdps(40):
         es = max(abs(float(mpmath.sin(mpmath.mpf(v)) - mpmath.mpf(a))) for v, a in zip(x, s))
@@ -259,8 +302,9 @@ def test_nan_propagation():
     assert not bool(batch.valid(1.0, nan, 0.5, HALF_PI, HALF_PI, 0.5, 0.5))
     with pytest.raises(batch.InvalidGraspsError, match="x2 = nan is not finite"):
         batch.worst_squeeze(1.0, nan, 0.5, HALF_PI, HALF_PI, 0.5, 0.5, 1.0)
-    out = batch.worst_squeeze(1.0, np.array([1.0, nan]), 0.5, HALF_PI, HALF_PI, 0.5, 0.5, 1.0,
-                              on_invalid="nan")
+    out = batch.worst_squeeze(
+        1.0, np.array([1.0, nan]), 0.5, HALF_PI, HALF_PI, 0.5, 0.5, 1.0, on_invalid="nan"
+    )
     assert math.isfinite(out[0]) and math.isnan(out[1])
     kg = batch.k_grasp(np.array([0.0, nan]), *p)  # θ is not checked: nan in, nan out
     assert math.isfinite(kg[0]) and math.isnan(kg[1])
@@ -293,8 +337,12 @@ def _mp_k_grasp(S, C, theta):
     with mpmath.workdps(40):
         t = mpmath.mpf(float(theta))
         s, c = mpmath.sin(t), mpmath.cos(t)
-        return float(max([mpmath.mpf(0)] + [mpmath.mpf(float(a)) * s - mpmath.mpf(float(b)) * c
-                                             for a, b in zip(S, C)]))
+        return float(
+            max(
+                [mpmath.mpf(0)]
+                + [mpmath.mpf(float(a)) * s - mpmath.mpf(float(b)) * c for a, b in zip(S, C)]
+            )
+        )
 
 
 def _break_angles(S, C):
@@ -327,8 +375,9 @@ def test_k_grasp_table_within_three_eps_of_mpmath(name):
     assert g.__dict__["_ktable"].broken_bins >= 2
     direct = _envelope.direct_k_grasp(S, C, t)  # the formula of the array path before §5
     assert np.abs(kg - direct).max() <= 4 * EPS * vmax
-    sample = np.concatenate([np.arange(len(near)), rng.integers(0, t.size, 300),
-                             np.argsort(np.abs(kg - direct))[-100:]])
+    sample = np.concatenate(
+        [np.arange(len(near)), rng.integers(0, t.size, 300), np.argsort(np.abs(kg - direct))[-100:]]
+    )
     err = max(abs(kg[i] - _mp_k_grasp(S, C, t[i])) for i in sample)
     assert err <= 3 * EPS * vmax, err / (EPS * vmax)
     # the scalar path agrees as before (tests/test_float_path.py's tolerance)
@@ -347,8 +396,9 @@ def test_k_grasp_table_shapes_large_angles_and_cache():
     np.testing.assert_allclose(kg, _envelope.direct_k_grasp(S, C, t), rtol=0, atol=1e-14)
     vmax = float(np.hypot(S, C).max())
     big = t * 1e5  # beyond the table: reduced by 2π (exactly), then the table
-    np.testing.assert_allclose(g.k_grasp(big), _envelope.direct_k_grasp(S, C, big), rtol=0,
-                               atol=4 * EPS * vmax)
+    np.testing.assert_allclose(
+        g.k_grasp(big), _envelope.direct_k_grasp(S, C, big), rtol=0, atol=4 * EPS * vmax
+    )
     huge = t * 1e12  # beyond THETA_MAX: the direct formula
     np.testing.assert_array_equal(g.k_grasp(huge), _envelope.direct_k_grasp(S, C, huge))
     small = t.reshape(-1)[:100]
@@ -381,18 +431,48 @@ def _hard_angles(S, C):
     breaks = np.array(_break_angles(S, C))
     turns = np.array([-3.0, -2.0, -1.0, 0.0, 1.0, 2.0, 160.0, -1e5])
     on_turns = (breaks[:, None] + 2 * np.pi * turns).ravel()
-    edges = np.array([0.0, -0.0, np.pi, -np.pi, 2 * np.pi, -2 * np.pi, 3 * np.pi,
-                      _envelope.J_LO * h, (_envelope.J_LO + 0.5) * h, (_envelope.J_LO + 1.5) * h,
-                      _envelope.J_HI * h, (_envelope.J_HI - 0.5) * h, (_envelope.J_HI - 1.5) * h,
-                      0.5 * h, 1.5 * h, -0.5 * h, 1e6, -1e6, _envelope.THETA_MAX,
-                      -_envelope.THETA_MAX, 1e7, -1e9, 1e300, 5e-324, -5e-324])
+    edges = np.array(
+        [
+            0.0,
+            -0.0,
+            np.pi,
+            -np.pi,
+            2 * np.pi,
+            -2 * np.pi,
+            3 * np.pi,
+            _envelope.J_LO * h,
+            (_envelope.J_LO + 0.5) * h,
+            (_envelope.J_LO + 1.5) * h,
+            _envelope.J_HI * h,
+            (_envelope.J_HI - 0.5) * h,
+            (_envelope.J_HI - 1.5) * h,
+            0.5 * h,
+            1.5 * h,
+            -0.5 * h,
+            1e6,
+            -1e6,
+            _envelope.THETA_MAX,
+            -_envelope.THETA_MAX,
+            1e7,
+            -1e9,
+            1e300,
+            5e-324,
+            -5e-324,
+        ]
+    )
     return np.concatenate([_ulps(on_turns), _ulps(edges), on_turns + h / 2, on_turns - h / 2])
 
 
-angle_lists = st.lists(st.one_of(st.floats(-7.0, 7.0), st.floats(-1e7, 1e7),
-                                 st.floats(-1e-6, 1e-6), st.floats(allow_nan=False,
-                                                                   allow_infinity=False)),
-                       min_size=1, max_size=50)
+angle_lists = st.lists(
+    st.one_of(
+        st.floats(-7.0, 7.0),
+        st.floats(-1e7, 1e7),
+        st.floats(-1e-6, 1e-6),
+        st.floats(allow_nan=False, allow_infinity=False),
+    ),
+    min_size=1,
+    max_size=50,
+)
 
 
 @settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -482,8 +562,11 @@ def _doc_example() -> str:
 
 
 def test_dask_example_on_a_local_cluster():
-    pytest.importorskip("dask.distributed", reason="dask is not installed: pip install "
-                        "'graspcompass[dask]' to run the Dask example of docs/howto/batch.md")
+    pytest.importorskip(
+        "dask.distributed",
+        reason="dask is not installed: pip install "
+        "'graspcompass[dask]' to run the Dask example of docs/howto/batch.md",
+    )
     pytest.importorskip("array_api_compat", reason="array-api-compat is not installed")
     ns: dict = {}
     exec(compile(_doc_example(), "docs/howto/batch.md", "exec"), ns)

@@ -59,15 +59,19 @@ def test_plan_three_jaws_ranks_by_the_models_worst_squeeze(capsys) -> None:
     from graspcompass.ncontact import NContactGrasp
 
     svg = Path(__file__).resolve().parents[1] / "docs" / "_static" / "outlines" / "bracket.svg"
-    assert cli.main(["plan", "--shape", str(svg), "--jaws", "3", "--samples", "18",
-                     "--mass", "1", "--json"]) == 0
+    assert (
+        cli.main(
+            ["plan", "--shape", str(svg), "--jaws", "3", "--samples", "18", "--mass", "1", "--json"]
+        )
+        == 0
+    )
     rec = json.loads(capsys.readouterr().out)
     best = rec["top"][0]
-    contacts = [(p[0], p[1], n[0], n[1], 0.5) for p, n in zip(best["contacts_m"],
-                                                                  best["normals"])]
+    contacts = [(p[0], p[1], n[0], n[1], 0.5) for p, n in zip(best["contacts_m"], best["normals"])]
     g = NContactGrasp(contacts, com=tuple(rec["com_m"]))
     assert best["squeeze_N"] == pytest.approx(g.worst(rec["load_N"])[0], rel=1e-9)
     grid = SweepLP(contacts, "sum-normal", tuple(rec["com_m"]))(
-        np.linspace(0, 2 * math.pi, 720, endpoint=False))
+        np.linspace(0, 2 * math.pi, 720, endpoint=False)
+    )
     assert grid.max() * rec["load_N"] <= best["squeeze_N"] * (1 + 1e-9)
     assert all(a["squeeze_N"] <= b["squeeze_N"] for a, b in zip(rec["top"], rec["top"][1:]))

@@ -78,18 +78,19 @@ def by_id(reports):
 
 # the printed statements that fail, and what fails there (lhs - rhs, or a sign to hold)
 _REFUTED_CHECK = {
-    "eq23-printed-upper": lambda: ((P.c1 * mu1 + P.s1) / (P.s1 * mu1 - P.c1)
-                                   - (P.s1 + P.c1 * mu1) / (P.c1 - P.s1 * mu1)),
-    "eq23-printed-lower": lambda: ((P.c1 * mu1 - P.s1) / (P.s1 * mu1 + P.c1)
-                                   - (P.s1 - P.c1 * mu1) / (P.c1 + P.s1 * mu1)),
+    "eq23-printed-upper": lambda: (
+        (P.c1 * mu1 + P.s1) / (P.s1 * mu1 - P.c1) - (P.s1 + P.c1 * mu1) / (P.c1 - P.s1 * mu1)
+    ),
+    "eq23-printed-lower": lambda: (
+        (P.c1 * mu1 - P.s1) / (P.s1 * mu1 + P.c1) - (P.s1 - P.c1 * mu1) / (P.c1 + P.s1 * mu1)
+    ),
     "A1-printed": lambda: F_e / (x1 + x2) * (sp.cos(phi2) - sp.sin(phi2)),
 }
 
 
 def test_errata_are_exactly_the_known_ones_and_corrected(by_id):
     refuted = {i for i, r in by_id.items() if r.result.status is Status.REFUTED}
-    assert refuted == {"eq23-printed-upper", "eq23-printed-lower", "A1-printed",
-                       "s5-V1V2-printed"}
+    assert refuted == {"eq23-printed-upper", "eq23-printed-lower", "A1-printed", "s5-V1V2-printed"}
     for i in refuted:
         fix = by_id[i].claim.corrected_by
         assert fix and by_id[fix].result.proved
@@ -108,7 +109,8 @@ def test_every_counterexample_is_a_point_of_the_model(by_id):
                 S = [sp.N(sp.sympify(s).subs(subs), 50) for s in P.S_printed[:2]]
                 C = [sp.N(sp.sympify(c).subs(subs), 50) for c in P.C_printed[:2]]
                 assert any(val.free_symbols == set() and val >= 0 for val in C) or (
-                    S[0].free_symbols == set() and S[0] >= S[1]), (i, cx)
+                    S[0].free_symbols == set() and S[0] >= S[1]
+                ), (i, cx)
 
 
 def test_s5_V1V2_by_hand():
@@ -134,7 +136,7 @@ def test_composites_check_their_own_statement():
         assert fig8_case(premise, goal, fig).proved, case
     # wrong own statements: (a) with V3 on the right; (c) "opposite sides"
     bad_a = fig8_case(FIG8_GOALS["a"][1], lambda v: v["R3"], fig)
-    bad_c = fig8_case(FIG8_GOALS["c"][1], lambda v: (v["L3"] and v["R4"]), fig)
+    bad_c = fig8_case(FIG8_GOALS["c"][1], lambda v: v["L3"] and v["R4"], fig)
     assert not bad_a.proved and not bad_c.proved
     # a composite whose dependency is false is not PROVED either
     false_dep = Claim("x", "", "", lambda: ProofResult(Status.UNDECIDED, "", 0.0))
@@ -143,8 +145,9 @@ def test_composites_check_their_own_statement():
 
 def test_eq24_25_depends_on_its_lemmas_by_object(by_id):
     c = by_id["eq24-25"].claim
-    assert {d.id for d in c.depends} == {f"eq{n}-{w}" for n in (8, 9, 10, 11)
-                                         for w in ("factor", "divisor-sign")}
+    assert {d.id for d in c.depends} == {
+        f"eq{n}-{w}" for n in (8, 9, 10, 11) for w in ("factor", "divisor-sign")
+    }
     assert "infimum" in by_id["eq24-25"].result.method
 
 
@@ -174,14 +177,23 @@ def test_mutated_new_claims_are_not_proved():
 
 def test_table1_by_hand():
     # (36), (38) at φ = π/2: S3 = −2 + y/μ1, S4 = 2 − y/μ2 (tan(π/2 − ξ) = 1/μ)
-    for case, y_, m1, m2 in (("a", 1, 1, sp.Rational(6, 5)), ("b", 3, 1, sp.Rational(6, 5)),
-                             ("c", 2, sp.Rational(1, 2), sp.Rational(7, 5))):
+    for case, y_, m1, m2 in (
+        ("a", 1, 1, sp.Rational(6, 5)),
+        ("b", 3, 1, sp.Rational(6, 5)),
+        ("c", 2, sp.Rational(1, 2), sp.Rational(7, 5)),
+    ):
         assert table1_signs(case) == (sp.sign(-2 + y_ / m1), sp.sign(2 - y_ / m2))
 
 
 def test_all_statements_cover_the_paper(by_id):
-    assert {"eq6-7", "s3.2-envelope", "s4-table1-V3V4", "s5-V1V2-corrected", "s5-robust",
-            "s5-same-contact-24"} <= set(by_id)
+    assert {
+        "eq6-7",
+        "s3.2-envelope",
+        "s4-table1-V3V4",
+        "s5-V1V2-corrected",
+        "s5-robust",
+        "s5-same-contact-24",
+    } <= set(by_id)
     assert any("cos(phi1)" in x for x in by_id["eq23-rest-upper"].result.conditions)
     assert "foot" in by_id["eq31"].claim.statement
     assert "strictly" in by_id["fig8-V3"].claim.statement

@@ -188,8 +188,10 @@ def test_records_and_step_facts():
     assert rows[0]["step"] == "O" and rows[0]["status"] == "GIVEN"
     env = {s.name: s.obj for s in c.steps}
     facts = step_facts(c.step("V1"), env, grasp=c.grasp)
-    assert [t for t, _ in facts] == ["V1.x = (S1, C1) of eqs. (28)-(39)",
-                                     "V1.y = (S1, C1) of eqs. (28)-(39)"]
+    assert [t for t, _ in facts] == [
+        "V1.x = (S1, C1) of eqs. (28)-(39)",
+        "V1.y = (S1, C1) of eqs. (28)-(39)",
+    ]
     assert all(sp.simplify(e) == 0 for _, e in facts)
 
 
@@ -233,7 +235,8 @@ def test_mutation_refuted_symbolic(label, symbolic_mu):
     certs = certify(bad)
     rejected = _first_rejected(certs)
     assert rejected is not None and rejected.step == name, [
-        (c.step, c.result.status) for c in certs]
+        (c.step, c.result.status) for c in certs
+    ]
     assert rejected.result.status is Status.REFUTED
     cx = rejected.result.counterexample
     assert cx
@@ -275,13 +278,16 @@ def test_symbolic_recipe_proved(friction):
     assert "condition (1)" in by["V1"].result.hypotheses
 
 
-@pytest.mark.parametrize("angles", [
-    {"phi1": "3*pi/5"},                      # 108°: sin 108° = cos 18°, not nested radicals
-    {"phi1": "3*pi/7"},                      # no radicals: generators sin(π/7), cos(π/7)
-    {"phi1": "6/5"},                         # radians, with ξ1 = π/4
-    {"phi1": "6/5", "xi1": "1/2"},           # φ1 ± ξ1 = 17/10, 7/10 rad: by the addition formula
-    {"phi1": "6/5", "mu1": "1/2", "xi1": None},
-])
+@pytest.mark.parametrize(
+    "angles",
+    [
+        {"phi1": "3*pi/5"},  # 108°: sin 108° = cos 18°, not nested radicals
+        {"phi1": "3*pi/7"},  # no radicals: generators sin(π/7), cos(π/7)
+        {"phi1": "6/5"},  # radians, with ξ1 = π/4
+        {"phi1": "6/5", "xi1": "1/2"},  # φ1 ± ξ1 = 17/10, 7/10 rad: by the addition formula
+        {"phi1": "6/5", "mu1": "1/2", "xi1": None},
+    ],
+)
 def test_typed_angles_proved(angles):
     """Issue 19 item 7: certify at φ = 108° ran past 200 s; on the new kernel it was fast
     but UNDECIDED, the paper's model writing sin 108° with nested radicals (and sin(φ + ξ)
@@ -293,6 +299,9 @@ def test_typed_angles_proved(angles):
     params.update(angles)
     params = {k: v for k, v in params.items() if v is not None}
     certs = certify(internal_force_diagram(Grasp(**params)))
-    bad = [(c.step, c.result.status.value) for c in certs
-           if c.result.status not in (Status.PROVED, Status.GIVEN)]
+    bad = [
+        (c.step, c.result.status.value)
+        for c in certs
+        if c.result.status not in (Status.PROVED, Status.GIVEN)
+    ]
     assert not bad

@@ -43,10 +43,18 @@ def paper_objects(point: dict[str, str]) -> dict[str, tuple[mpmath.mpf, ...]]:
     v = {k: _num(t) for k, t in point.items()}
     x1, x2, y = v["x1"], v["x2"], v["y"]
     xi = {i: v[f"xi{i}"] if f"xi{i}" in v else mpmath.atan(v[f"mu{i}"]) for i in (1, 2)}
-    t = {1: mpmath.tan(v["phi1"] + xi[1]), 2: mpmath.tan(v["phi2"] + xi[2]),
-         3: mpmath.tan(v["phi1"] - xi[1]), 4: mpmath.tan(v["phi2"] - xi[2])}
-    S = {1: -(x1 + x2) / 2 + y * t[1], 2: (x1 + x2) / 2 - y * t[2],
-         3: -(x1 + x2) / 2 + y * t[3], 4: (x1 + x2) / 2 - y * t[4]}
+    t = {
+        1: mpmath.tan(v["phi1"] + xi[1]),
+        2: mpmath.tan(v["phi2"] + xi[2]),
+        3: mpmath.tan(v["phi1"] - xi[1]),
+        4: mpmath.tan(v["phi2"] - xi[2]),
+    }
+    S = {
+        1: -(x1 + x2) / 2 + y * t[1],
+        2: (x1 + x2) / 2 - y * t[2],
+        3: -(x1 + x2) / 2 + y * t[3],
+        4: (x1 + x2) / 2 - y * t[4],
+    }
     C = {1: x2 * t[1], 2: x1 * t[2], 3: x2 * t[3], 4: x1 * t[4]}
     om = (x1 - x2) / 2
     out: dict[str, tuple[mpmath.mpf, ...]] = {"O_M": (om, 0), "P1x": (x1, 0), "P2x": (-x2, 0)}
@@ -76,8 +84,7 @@ def is_model_point(point: dict[str, str]) -> bool:
 def file_object(text: str, name: str, point: dict[str, str]) -> tuple[mpmath.mpf, ...]:
     """The object ``name`` of the file replayed exactly at ``point``, at 50 digits."""
     obj = replay(parse(text), point)[name]
-    parts = (obj.center.x, obj.center.y, obj.radius2) if hasattr(obj, "center") else (
-        obj.x, obj.y)
+    parts = (obj.center.x, obj.center.y, obj.radius2) if hasattr(obj, "center") else (obj.x, obj.y)
     return tuple(mpmath.mpf(str(p.evalf(60))) for p in parts)
 
 
@@ -89,34 +96,69 @@ def differs(a: tuple, b: tuple) -> bool:
 def test_shipped_recipe_is_proved_against_the_paper() -> None:
     r = check_program(parse(_TEXT, "paper.gc"), "paper")
     assert r.exit_status == 0
-    assert {t.name for t in r.targets} == {*(f"{k}{n}" for k in ("X", "Y", "V", "circle")
-                                             for n in range(1, 5)), "O_M", "P1x", "P2x"}
+    assert {t.name for t in r.targets} == {
+        *(f"{k}{n}" for k in ("X", "Y", "V", "circle") for n in range(1, 5)),
+        "O_M",
+        "P1x",
+        "P2x",
+    }
     assert all(t.status is Status.PROVED for t in (*r.targets, *r.claims))
     # targets are proved under condition (1) with no extra condition left
-    assert all(not t.result.conditions and "condition (1)" in t.result.hypotheses
-               for t in r.targets)
+    assert all(
+        not t.result.conditions and "condition (1)" in t.result.hypotheses for t in r.targets
+    )
 
 
 # -- wrong student constructions ---------------------------------------------------------------
 #: (what the student did, the replacement in the recipe, the refuted target, right for every
 #: preset of the paper?).  The presets all have x1 = x2, which hides some mistakes.
 WRONG = [
-    ("perpendicular from the wrong foot", "perp1 = perpendicular side1 P2x",
-     "perp1 = perpendicular side1 P1x", "V1", False),
-    ("V1 from the lower side of the cone", "X1 = meet side1 x-axis", "X1 = meet side3 x-axis",
-     "V1", False),
-    ("sign of S lost", "V1 = point_from_lengths OMX1 OY1 (-1, -1)",
-     "V1 = point_from_lengths OMX1 OY1 (1, -1)", "V1", False),
-    ("sign of C lost", "V2 = point_from_lengths OMX2 OY2 (-1, -1)",
-     "V2 = point_from_lengths OMX2 OY2 (-1, 1)", "V2", False),
+    (
+        "perpendicular from the wrong foot",
+        "perp1 = perpendicular side1 P2x",
+        "perp1 = perpendicular side1 P1x",
+        "V1",
+        False,
+    ),
+    (
+        "V1 from the lower side of the cone",
+        "X1 = meet side1 x-axis",
+        "X1 = meet side3 x-axis",
+        "V1",
+        False,
+    ),
+    (
+        "sign of S lost",
+        "V1 = point_from_lengths OMX1 OY1 (-1, -1)",
+        "V1 = point_from_lengths OMX1 OY1 (1, -1)",
+        "V1",
+        False,
+    ),
+    (
+        "sign of C lost",
+        "V2 = point_from_lengths OMX2 OY2 (-1, -1)",
+        "V2 = point_from_lengths OMX2 OY2 (-1, 1)",
+        "V2",
+        False,
+    ),
     ("X2 on the wrong axis", "X2 = meet side2 x-axis", "X2 = meet side2 y-axis", "X2", False),
     ("Y3 on the wrong axis", "Y3 = meet perp3 y-axis", "Y3 = meet perp3 x-axis", "Y3", False),
     ("V3 from the cone at P2", "X3 = meet side3 x-axis", "X3 = meet side4 x-axis", "V3", False),
-    ("V4 perpendicular through P2x", "perp4 = perpendicular side4 P1x",
-     "perp4 = perpendicular side4 P2x", "V4", False),
+    (
+        "V4 perpendicular through P2x",
+        "perp4 = perpendicular side4 P1x",
+        "perp4 = perpendicular side4 P2x",
+        "V4",
+        False,
+    ),
     ("O_M taken as the origin", "O_M = midpoint P1x P2x", "O_M = foot O x-axis", "O_M", True),
-    ("O_M taken as the origin: V1 follows", "O_M = midpoint P1x P2x", "O_M = foot O x-axis",
-     "V1", True),
+    (
+        "O_M taken as the origin: V1 follows",
+        "O_M = midpoint P1x P2x",
+        "O_M = foot O x-axis",
+        "V1",
+        True,
+    ),
     ("P2x by symmetry", "P2x = foot P2 x-axis", "P2x = point (-x1, 0)", "P2x", True),
     ("P2x by symmetry: V1 follows", "P2x = foot P2 x-axis", "P2x = point (-x1, 0)", "V1", True),
     ("P1x mirrored from P2", "P1x = foot P1 x-axis", "P1x = point (x2, 0)", "V2", True),
@@ -128,10 +170,12 @@ def _mutated(old: str, new: str) -> str:
     return HEAD.replace(old, new)
 
 
-@pytest.mark.parametrize("what, old, new, target, right_for_presets", WRONG,
-                         ids=[w[0] for w in WRONG])
+@pytest.mark.parametrize(
+    "what, old, new, target, right_for_presets", WRONG, ids=[w[0] for w in WRONG]
+)
 def test_wrong_construction_is_refuted_at_a_point_of_the_model(
-        what: str, old: str, new: str, target: str, right_for_presets: bool) -> None:
+    what: str, old: str, new: str, target: str, right_for_presets: bool
+) -> None:
     text = _mutated(old, new)
     report = check_program(parse(text, "student.gc"), "paper")
     row = next(r for r in report.targets if r.name == target)
@@ -150,29 +194,36 @@ def test_wrong_construction_is_refuted_at_a_point_of_the_model(
 
 
 def test_untouched_objects_of_a_wrong_file_stay_proved() -> None:
-    report = check_program(parse(_mutated("perp1 = perpendicular side1 P2x",
-                                          "perp1 = perpendicular side1 P1x")), "paper")
+    report = check_program(
+        parse(_mutated("perp1 = perpendicular side1 P2x", "perp1 = perpendicular side1 P1x")),
+        "paper",
+    )
     status = {r.name: r.status for r in report.targets}
     assert status["Y1"] is Status.REFUTED and status["V1"] is Status.REFUTED
     assert all(status[n] is Status.PROVED for n in ("X1", "V2", "V3", "V4", "O_M"))
 
 
-@pytest.mark.parametrize("old, new", [
-    # the perpendicular as the line through P2x and its foot on the side
-    ("perp1 = perpendicular side1 P2x", "F1 = foot P2x side1\nperp1 = line_through P2x F1"),
-    # the signed length read the other way, and the sign of the plot turned with it
-    ("OMX1 = signed_length O_M X1 x-axis", "OMX1 = signed_length X1 O_M x-axis"),
-    # X2 as the meet of the x-axis with the side (inputs the other way round)
-    ("X2 = meet side2 x-axis", "X2 = meet x-axis side2"),
-])
+@pytest.mark.parametrize(
+    "old, new",
+    [
+        # the perpendicular as the line through P2x and its foot on the side
+        ("perp1 = perpendicular side1 P2x", "F1 = foot P2x side1\nperp1 = line_through P2x F1"),
+        # the signed length read the other way, and the sign of the plot turned with it
+        ("OMX1 = signed_length O_M X1 x-axis", "OMX1 = signed_length X1 O_M x-axis"),
+        # X2 as the meet of the x-axis with the side (inputs the other way round)
+        ("X2 = meet side2 x-axis", "X2 = meet x-axis side2"),
+    ],
+)
 def test_right_alternative_constructions_are_proved(old: str, new: str) -> None:
     text = _mutated(old, new)
     if "signed_length X1 O_M" in new:
-        text = text.replace("V1 = point_from_lengths OMX1 OY1 (-1, -1)",
-                            "V1 = point_from_lengths OMX1 OY1 (1, -1)")
+        text = text.replace(
+            "V1 = point_from_lengths OMX1 OY1 (-1, -1)", "V1 = point_from_lengths OMX1 OY1 (1, -1)"
+        )
     report = check_program(parse(text), "paper")
-    assert report.exit_status == 0, [(r.name, r.status) for r in report.rows
-                                     if r.status is not Status.PROVED]
+    assert report.exit_status == 0, [
+        (r.name, r.status) for r in report.rows if r.status is not Status.PROVED
+    ]
 
 
 @settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -180,8 +231,7 @@ def test_right_alternative_constructions_are_proved(old: str, new: str) -> None:
 def test_any_sign_of_the_plot_is_graded_right(n: int, sx: int, sy: int) -> None:
     """Only (−1, −1) is the paper's V_n = (−O_M X_n, −O Y_n); every other sign is refuted."""
     old = f"V{n} = point_from_lengths OMX{n} OY{n} (-1, -1)"
-    report = check_program(parse(_mutated(old, old.replace("(-1, -1)", f"({sx}, {sy})"))),
-                           "paper")
+    report = check_program(parse(_mutated(old, old.replace("(-1, -1)", f"({sx}, {sy})"))), "paper")
     row = next(r for r in report.targets if r.name == f"V{n}")
     if (sx, sy) == (-1, -1):
         assert row.status is Status.PROVED
@@ -194,8 +244,9 @@ def test_xi_form_file_is_graded_too() -> None:
     text = text.replace("mu1", "tan(xi1)").replace("param tan(xi1) friction", "")
     report = check_program(parse(text), "paper")
     assert report.exit_status == 0
-    wrong = text.replace("V3 = point_from_lengths OMX3 OY3 (-1, -1)",
-                         "V3 = point_from_lengths OMX3 OY3 (-1, 1)")
+    wrong = text.replace(
+        "V3 = point_from_lengths OMX3 OY3 (-1, -1)", "V3 = point_from_lengths OMX3 OY3 (-1, 1)"
+    )
     row = next(r for r in check_program(parse(wrong), "paper").targets if r.name == "V3")
     assert row.status is Status.REFUTED and "xi1" in row.counterexample
     assert is_model_point(row.counterexample)
@@ -233,20 +284,32 @@ L = signed_length A B AB
 """
 
 CLAIMS = [  # (claim, true?)
-    ("claim M == point(a/2, b/2)", True), ("claim M == point(a/2, b/3)", False),
-    ("claim L == a", True), ("claim L == b", False),
-    ("claim on M diag2", True), ("claim on M AB", False),
-    ("claim on B circ", True), ("claim on M circ", False),
+    ("claim M == point(a/2, b/2)", True),
+    ("claim M == point(a/2, b/3)", False),
+    ("claim L == a", True),
+    ("claim L == b", False),
+    ("claim on M diag2", True),
+    ("claim on M AB", False),
+    ("claim on B circ", True),
+    ("claim on M circ", False),
     ("claim on H circ", True),  # Thales (Fig. 3): the foot of D on a line through A
     ("claim on F circ", False),  # a foot on the diameter itself is not on the circle
-    ("claim collinear A M D", True), ("claim collinear A M B", False),
-    ("claim concurrent diag1 diag2 mid", True), ("claim concurrent AB CD diag1", False),
-    ("claim perpendicular AB AC", True), ("claim perpendicular AB diag1", False),
-    ("claim parallel AB CD", True), ("claim parallel AB diag1", False),
-    ("claim sign L > 0", True), ("claim sign L < 0", False),
-    ("claim sign a*b >= 0", True), ("claim sign a - b >= 0", False),
-    ("claim sign -a <= 0", True), ("claim sign L - a != 0", False),
-    ("claim sign a + b != 0", True), ("claim sign a - 1 > 0", False),
+    ("claim collinear A M D", True),
+    ("claim collinear A M B", False),
+    ("claim concurrent diag1 diag2 mid", True),
+    ("claim concurrent AB CD diag1", False),
+    ("claim perpendicular AB AC", True),
+    ("claim perpendicular AB diag1", False),
+    ("claim parallel AB CD", True),
+    ("claim parallel AB diag1", False),
+    ("claim sign L > 0", True),
+    ("claim sign L < 0", False),
+    ("claim sign a*b >= 0", True),
+    ("claim sign a - b >= 0", False),
+    ("claim sign -a <= 0", True),
+    ("claim sign L - a != 0", False),
+    ("claim sign a + b != 0", True),
+    ("claim sign a - 1 > 0", False),
 ]
 
 
@@ -264,13 +327,19 @@ def test_claims_are_proved_or_refuted(claim: str, true: bool) -> None:
     # the test's own check of the point: the statement is false there
     a, b = vals["a"], vals["b"]
     false_at = {
-        "claim M == point(a/2, b/3)": b / 2 != b / 3, "claim L == b": a != b,
-        "claim on M AB": b / 2 != 0, "claim on M circ": True,
+        "claim M == point(a/2, b/3)": b / 2 != b / 3,
+        "claim L == b": a != b,
+        "claim on M AB": b / 2 != 0,
+        "claim on M circ": True,
         "claim on F circ": True,
-        "claim collinear A M B": b != 0, "claim concurrent AB CD diag1": True,
-        "claim perpendicular AB diag1": a != 0, "claim parallel AB diag1": b != 0,
-        "claim sign L < 0": a > 0, "claim sign a - b >= 0": a - b < 0,
-        "claim sign L - a != 0": True, "claim sign a - 1 > 0": a - 1 <= 0,
+        "claim collinear A M B": b != 0,
+        "claim concurrent AB CD diag1": True,
+        "claim perpendicular AB diag1": a != 0,
+        "claim parallel AB diag1": b != 0,
+        "claim sign L < 0": a > 0,
+        "claim sign a - b >= 0": a - b < 0,
+        "claim sign L - a != 0": True,
+        "claim sign a - 1 > 0": a - 1 <= 0,
     }[claim]
     assert false_at
 
@@ -278,8 +347,9 @@ def test_claims_are_proved_or_refuted(claim: str, true: bool) -> None:
 def test_concurrency_through_a_doubled_line_is_never_refuted() -> None:
     """AB and BA are one line: with AC the three lines meet at A (a true claim that the
     determinant route cannot prove; the exact replay must not refute it)."""
-    row = check_program(parse(BASE + "BA = line_through B A\nclaim concurrent AB BA AC\n")
-                        ).claims[0]
+    row = check_program(parse(BASE + "BA = line_through B A\nclaim concurrent AB BA AC\n")).claims[
+        0
+    ]
     assert row.status in (Status.PROVED, Status.UNDECIDED)
 
 
@@ -292,7 +362,8 @@ def test_an_undecidable_sign_is_undecided_not_proved() -> None:
     r = check_program(parse(BASE + "claim sign a**2 - 2*a + 2 > 0\n"))
     assert r.claims[0].status is Status.PROVED
     assert r.claims[0].result.conditions == ("a**2 - 2*a + 2 ≠ 0",) or any(
-        "a**2 - 2*a + 2" in t for t in r.claims[0].result.implied)
+        "a**2 - 2*a + 2" in t for t in r.claims[0].result.implied
+    )
 
 
 def test_a_step_degenerate_for_every_parameter_is_refused() -> None:
@@ -303,7 +374,7 @@ def test_a_step_degenerate_for_every_parameter_is_refused() -> None:
 
 
 def test_hypotheses_and_conditions_are_stated() -> None:
-    quick = HEAD + _TEXT[_TEXT.index("let t1"):]  # the recipe's claims, without the circles
+    quick = HEAD + _TEXT[_TEXT.index("let t1") :]  # the recipe's claims, without the circles
     v1 = next(c for c in check_program(parse(quick)).claims if c.name.startswith("V1"))
     assert v1.status is Status.PROVED and not v1.result.conditions
     assert "condition (1)" in v1.result.hypotheses
@@ -317,12 +388,23 @@ def test_hypotheses_and_conditions_are_stated() -> None:
 
 # -- reports and the command line ----------------------------------------------------------
 def test_json_has_the_documented_shape() -> None:
-    doc = json.loads(to_json(check_program(parse(_mutated("X1 = meet side1 x-axis",
-                                                          "X1 = meet side3 x-axis")), "paper")))
+    doc = json.loads(
+        to_json(
+            check_program(
+                parse(_mutated("X1 = meet side1 x-axis", "X1 = meet side3 x-axis")), "paper"
+            )
+        )
+    )
     assert set(doc) >= {"targets", "claims", "steps", "status"}
     for row in doc["targets"] + doc["claims"]:
-        assert set(row) >= {"name", "status", "hypotheses", "conditions", "counterexample",
-                            "seconds"}
+        assert set(row) >= {
+            "name",
+            "status",
+            "hypotheses",
+            "conditions",
+            "counterexample",
+            "seconds",
+        }
     bad = [r for r in doc["targets"] if r["status"] == "REFUTED"]
     assert bad and all(isinstance(r["counterexample"], dict) for r in bad)
     assert doc["status"] == 1
@@ -338,10 +420,12 @@ def test_table_and_markdown_name_every_row() -> None:
 @pytest.fixture()
 def files(tmp_path: Path) -> dict[str, Path]:
     out = {}
-    for name, text in {"good.gc": HEAD, "wrong.gc": _mutated("X1 = meet side1 x-axis",
-                                                             "X1 = meet side3 x-axis"),
-                       "undecided.gc": BASE + "claim sign a**4 - a + 1 > 0\n",
-                       "syntax.gc": "A = point (0, 0)\nB = midpoint A Q\n"}.items():
+    for name, text in {
+        "good.gc": HEAD,
+        "wrong.gc": _mutated("X1 = meet side1 x-axis", "X1 = meet side3 x-axis"),
+        "undecided.gc": BASE + "claim sign a**4 - a + 1 > 0\n",
+        "syntax.gc": "A = point (0, 0)\nB = midpoint A Q\n",
+    }.items():
         (tmp_path / name).write_text(text)
         out[name] = tmp_path / name
     return out
@@ -357,13 +441,16 @@ def test_cli_exit_statuses(files: dict[str, Path], capsys) -> None:
     assert len(err) == 1 and "syntax.gc:2:" in err[0] and "'Q'" in err[0]
 
 
-@pytest.mark.parametrize("argv, needle", [
-    (["check", "/no/such/file.gc"], "cannot read"),
-    (["check", "{good}", "--draw", "{tmp}/x.png"], "--against paper"),
-    (["check", "{good}", "--against", "paper", "--draw", "{tmp}/x.gif"], ".png"),
-    (["check", "{good}", "--markdown", "/no/such/folder/r.md"], "does not exist"),
-    (["check", "{good}", "--against", "moon"], "invalid choice"),
-])
+@pytest.mark.parametrize(
+    "argv, needle",
+    [
+        (["check", "/no/such/file.gc"], "cannot read"),
+        (["check", "{good}", "--draw", "{tmp}/x.png"], "--against paper"),
+        (["check", "{good}", "--against", "paper", "--draw", "{tmp}/x.gif"], ".png"),
+        (["check", "{good}", "--markdown", "/no/such/folder/r.md"], "does not exist"),
+        (["check", "{good}", "--against", "moon"], "invalid choice"),
+    ],
+)
 def test_cli_usage_errors_are_one_line(files, tmp_path, capsys, argv, needle) -> None:
     argv = [a.format(good=files["good.gc"], tmp=tmp_path) for a in argv]
     assert cli.main(argv) == 2
@@ -384,8 +471,19 @@ def test_cli_refuses_a_huge_or_binary_file(tmp_path: Path, capsys) -> None:
 
 def test_cli_json_markdown_and_draw(files, tmp_path: Path, capsys) -> None:
     md, png = tmp_path / "r.md", tmp_path / "cx.png"
-    status = cli.main(["check", str(files["wrong.gc"]), "--against", "paper", "--json",
-                       "--markdown", str(md), "--draw", str(png)])
+    status = cli.main(
+        [
+            "check",
+            str(files["wrong.gc"]),
+            "--against",
+            "paper",
+            "--json",
+            "--markdown",
+            str(md),
+            "--draw",
+            str(png),
+        ]
+    )
     assert status == 1
     out = capsys.readouterr()
     doc = json.loads(out.out)
@@ -422,9 +520,13 @@ def test_a_claim_on_an_object_made_only_for_numbers_is_undecided() -> None:
 
 
 def test_check_reads_stdin() -> None:
-    p = subprocess.run([sys.executable, "-m", "graspcompass", "check", "-", "-q"],
-                       input=BASE + "claim collinear A M D\n", capture_output=True, text=True,
-                       timeout=120)
+    p = subprocess.run(
+        [sys.executable, "-m", "graspcompass", "check", "-", "-q"],
+        input=BASE + "claim collinear A M D\n",
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert p.returncode == 0 and "PROVED" in p.stdout
 
 
@@ -434,9 +536,11 @@ def test_parse_errors_carry_file_line_and_column() -> None:
 
 
 def test_a_file_without_parameters_is_decided_on_its_numbers() -> None:
-    text = ("A = point (0, 0)\nB = point (sqrt(2), 0)\nl = line_through A B\nM = midpoint A B\n"
-            "L = signed_length A B l\nclaim M == point(sqrt(2)/2, 0)\nclaim M == point(1/2, 0)\n"
-            "claim sign L - sqrt(2) != 0\n")
+    text = (
+        "A = point (0, 0)\nB = point (sqrt(2), 0)\nl = line_through A B\nM = midpoint A B\n"
+        "L = signed_length A B l\nclaim M == point(sqrt(2)/2, 0)\nclaim M == point(1/2, 0)\n"
+        "claim sign L - sqrt(2) != 0\n"
+    )
     r = check_program(parse(text))
     assert [c.status for c in r.claims] == [Status.PROVED, Status.REFUTED, Status.REFUTED]
     assert r.claims[1].counterexample == {}
@@ -445,7 +549,7 @@ def test_a_file_without_parameters_is_decided_on_its_numbers() -> None:
 
 #: Wrong versions of the recipe's own claims (each false at a point of the model): the
 #: checker must never prove one, and must refute each at a point of the model.
-_CLAIMS_TAIL = _TEXT[_TEXT.index("let t1"):]
+_CLAIMS_TAIL = _TEXT[_TEXT.index("let t1") :]
 MUTATIONS = [
     ("x2*t1) under condition1", "x1*t1) under condition1"),
     ("-(x1 + x2)/2 + y*t1, x2*t1)", "(x1 + x2)/2 + y*t1, x2*t1)"),
@@ -479,8 +583,9 @@ def test_wrong_claims_are_never_proved(old: str, new: str, right_claims: set[str
 def test_an_equivalent_rewriting_stays_proved_with_its_condition() -> None:
     """x1*t4 + (y² − y)/(y − 1) − y is x1*t4 wherever it is defined: PROVED, with the
     condition y − 1 ≠ 0 stated (sympy does not cancel the fraction by itself)."""
-    text = HEAD + _CLAIMS_TAIL.replace("x1*t4) under condition1",
-                                       "x1*t4 + (y**2 - y)/(y - 1) - y) under condition1")
+    text = HEAD + _CLAIMS_TAIL.replace(
+        "x1*t4) under condition1", "x1*t4 + (y**2 - y)/(y - 1) - y) under condition1"
+    )
     v4 = next(r for r in check_program(parse(text)).claims if r.name.startswith("V4"))
     assert v4.status is Status.PROVED
     assert any("y - 1" in c for c in v4.result.conditions), v4.result.conditions

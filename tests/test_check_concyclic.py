@@ -43,8 +43,7 @@ def _file(points: list[tuple[int, int]], order: list[int], twin: int | None) -> 
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.lists(st.sampled_from(POOL), min_size=2, max_size=5, unique=True),
-       st.data())
+@given(st.lists(st.sampled_from(POOL), min_size=2, max_size=5, unique=True), st.data())
 def test_concyclic_against_the_evaluator(points, data) -> None:
     n = len(points)
     size = data.draw(st.integers(min_value=max(4 - (n < 4), 3), max_value=6))
@@ -63,18 +62,23 @@ def test_concyclic_against_the_evaluator(points, data) -> None:
         assert evaluate(text, dict(row.counterexample))[0] is False
 
 
-@pytest.mark.parametrize("names, want", [
-    ("A B C D", True),        # the rectangle's corners: one circle
-    ("A B C M", False),       # A, M, C collinear, B off their line
-    ("A M C A", True),        # repeated A: two... three distinct points, on one line
-    ("A B A B", True),        # two distinct points
-    ("A B M C D", False),
-    ("A A A A", True),
-])
+@pytest.mark.parametrize(
+    "names, want",
+    [
+        ("A B C D", True),  # the rectangle's corners: one circle
+        ("A B C M", False),  # A, M, C collinear, B off their line
+        ("A M C A", True),  # repeated A: two... three distinct points, on one line
+        ("A B A B", True),  # two distinct points
+        ("A B M C D", False),
+        ("A A A A", True),
+    ],
+)
 def test_concyclic_examples(names: str, want: bool) -> None:
-    text = ("param a > 0\nparam b > 0\nA = point (0, 0)\nB = point (a, 0)\n"
-            "C = point (a, b)\nD = point (0, b)\nM = midpoint A C\n"
-            f"claim concyclic {names}\n")
+    text = (
+        "param a > 0\nparam b > 0\nA = point (0, 0)\nB = point (a, 0)\n"
+        "C = point (a, b)\nD = point (0, b)\nM = midpoint A C\n"
+        f"claim concyclic {names}\n"
+    )
     row = check_program(parse(text)).claims[0]
     assert row.status is (Status.PROVED if want else Status.REFUTED)
     assert evaluate(text, {"a": 2, "b": 3})[0] is want
@@ -84,11 +88,13 @@ def test_concyclic_on_a_constructed_circle() -> None:
     """Points made on a circle (centre O, through A: its intersections with two lines
     through O), with a parameter in the circle; the centre is on no circle through three
     of them."""
-    text = ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
-            "l = line_with_direction O (1, 1)\nm = line_with_direction O (1, -2)\n"
-            "P = intersect_line_circle l c (0)\nQ = intersect_line_circle m c (0)\n"
-            "R = intersect_line_circle m c (1)\n"
-            "claim concyclic A P Q R\nclaim concyclic O A P Q\n")
+    text = (
+        "param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
+        "l = line_with_direction O (1, 1)\nm = line_with_direction O (1, -2)\n"
+        "P = intersect_line_circle l c (0)\nQ = intersect_line_circle m c (0)\n"
+        "R = intersect_line_circle m c (1)\n"
+        "claim concyclic A P Q R\nclaim concyclic O A P Q\n"
+    )
     rows = check_program(parse(text)).claims
     assert [r.status for r in rows] == [Status.PROVED, Status.REFUTED]
     assert evaluate(text, {"a": "3/2"}) == [True, False]
@@ -97,8 +103,10 @@ def test_concyclic_on_a_constructed_circle() -> None:
 
 def test_concyclic_takes_four_points_or_more() -> None:
     with pytest.raises(ConstructionSyntaxError, match="at least 4"):
-        parse("param a > 0\nA = point (0, 0)\nB = point (a, 0)\nC = point (a, a)\n"
-              "claim concyclic A B C\n")
+        parse(
+            "param a > 0\nA = point (0, 0)\nB = point (a, 0)\nC = point (a, a)\n"
+            "claim concyclic A B C\n"
+        )
     b = ConstructionBuilder()
     b.param("a", "positive")
     for n, v in (("A", (0, 0)), ("B", ("a", 0)), ("C", ("a", "a")), ("D", (0, "a"))):

@@ -104,11 +104,17 @@ FILES = [
     (AN + "claim sign x1/(x1 - x1) > 0", "vacuous"),
     (AN + "claim sign x1 + x2 != x1", "true"),
     (AN + "claim sign x1 - x2 != 0", "false"),
-    ("param mu1 friction\nparam xi1 half_angle\nO = point (0, 0)\nA = point (1, 0)\n"
-     "l = line_with_direction O (1, mu1)\nm = line_with_direction A (cos(xi1), sin(xi1))\n"
-     "X = meet l m\nclaim on X l", "vacuous"),
-    ("param a > 0\nA = point (0, 0)\nB = point (a, 0)\nl = line_through A B\n"
-     "m = line_with_direction B (1, 0)\nX = meet l m\nclaim on X l", "degenerate"),
+    (
+        "param mu1 friction\nparam xi1 half_angle\nO = point (0, 0)\nA = point (1, 0)\n"
+        "l = line_with_direction O (1, mu1)\nm = line_with_direction A (cos(xi1), sin(xi1))\n"
+        "X = meet l m\nclaim on X l",
+        "vacuous",
+    ),
+    (
+        "param a > 0\nA = point (0, 0)\nB = point (a, 0)\nl = line_through A B\n"
+        "m = line_with_direction B (1, 0)\nX = meet l m\nclaim on X l",
+        "degenerate",
+    ),
     # -- concyclic: one circle or one line, as a set of points
     (SQ + "claim concyclic A B C D", "true"),
     (SQ + "claim concyclic A B C M", "false"),
@@ -128,15 +134,24 @@ FILES = [
     (AN + "claim sign sqrt(cos(phi1)**2 - 2) > 0", "vacuous"),
     (GR + "R = point (sqrt(-(x1 - x2)**2 - 1), 0)\nclaim on R xa", "vacuous"),
     # -- an intersection that never exists
-    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
-     "B = point (0, 2*a)\nl = line_with_direction B (1, 0)\n"
-     "P = intersect_line_circle l c (0)\nclaim on P c", "vacuous"),
-    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
-     "E = point (4*a, 0)\nF = point (5*a, 0)\nc2 = circle_through E F\n"
-     "P = intersect_circles c c2 (0)\nclaim on P c2", "vacuous"),
-    ("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nB = point (2*a, 0)\n"
-     "c = circle_through O A\nc2 = circle_through O B\n"
-     "P = intersect_circles c c2 (0)\nclaim on P c", "vacuous"),
+    (
+        "param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
+        "B = point (0, 2*a)\nl = line_with_direction B (1, 0)\n"
+        "P = intersect_line_circle l c (0)\nclaim on P c",
+        "vacuous",
+    ),
+    (
+        "param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n"
+        "E = point (4*a, 0)\nF = point (5*a, 0)\nc2 = circle_through E F\n"
+        "P = intersect_circles c c2 (0)\nclaim on P c2",
+        "vacuous",
+    ),
+    (
+        "param a > 0\nO = point (0, 0)\nA = point (a, 0)\nB = point (2*a, 0)\n"
+        "c = circle_through O A\nc2 = circle_through O B\n"
+        "P = intersect_circles c c2 (0)\nclaim on P c",
+        "vacuous",
+    ),
     # -- a claim under a hypothesis that is false where the claim needs it
     (GR + "claim sign 1/sqrt(cos(phi1) - mu1*sin(phi1)) > 0 under condition1", "vacuous"),
     (GR + "claim sign sqrt(mu1*sin(phi1) - cos(phi1)) >= 0 under condition1", "true"),
@@ -155,8 +170,9 @@ def _check(text: str):
         return None
 
 
-@pytest.mark.parametrize("text, kind", FILES, ids=[f"{i:02d}-{k}" for i, (_, k) in
-                                                   enumerate(FILES)])
+@pytest.mark.parametrize(
+    "text, kind", FILES, ids=[f"{i:02d}-{k}" for i, (_, k) in enumerate(FILES)]
+)
 def test_mutation(text: str, kind: str) -> None:
     text += "\n"
     report = _check(text)

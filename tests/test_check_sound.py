@@ -44,27 +44,33 @@ def test_the_parser_keeps_divisors_and_radicands() -> None:  # items 2-4
     assert ("!=", x1) in conds
 
 
-@pytest.mark.parametrize("text", [
-    f"P = point (x1*{Z}/(x1*{Z}), 0)\nclaim P == point(1, 0)\n",
-    f"claim sign {Z}/{Z} > 0\n",
-    "Q = point (sqrt(-x1), 0)\nclaim Q == point(sqrt(-x1), 0)\n",
-    "claim sign 1/(x1 - x1*sin(phi1)**2 - x1*cos(phi1)**2) > 0\n",
-])
+@pytest.mark.parametrize(
+    "text",
+    [
+        f"P = point (x1*{Z}/(x1*{Z}), 0)\nclaim P == point(1, 0)\n",
+        f"claim sign {Z}/{Z} > 0\n",
+        "Q = point (sqrt(-x1), 0)\nclaim Q == point(sqrt(-x1), 0)\n",
+        "claim sign 1/(x1 - x1*sin(phi1)**2 - x1*cos(phi1)**2) > 0\n",
+    ],
+)
 def test_a_vacuous_claim_is_refuted_not_proved(text: str) -> None:  # items 2, 3, 7
     row = _last(HEAD + text)
     assert row.status is Status.REFUTED and row.counterexample is None
 
 
 def test_mu_and_xi_declared_together_are_tied() -> None:  # item 3
-    text = ("param mu1 friction\nparam xi1 half_angle\nO = point (0, 0)\nA = point (1, 0)\n"
-            "l = line_with_direction O (1, mu1)\nm = line_with_direction A (cos(xi1), "
-            "sin(xi1))\nX = meet l m\n")
+    text = (
+        "param mu1 friction\nparam xi1 half_angle\nO = point (0, 0)\nA = point (1, 0)\n"
+        "l = line_with_direction O (1, mu1)\nm = line_with_direction A (cos(xi1), "
+        "sin(xi1))\nX = meet l m\n"
+    )
     assert check_program(parse(text)).steps[-1].status is Status.REFUTED
 
 
 def test_existence_conditions_are_listed() -> None:  # item 4
-    r = check_program(parse(HEAD + "C = point (x1, 0)\nQ = point (x2, 0)\n"
-                            "c = circle_through C Q\n"))
+    r = check_program(
+        parse(HEAD + "C = point (x1, 0)\nQ = point (x2, 0)\nc = circle_through C Q\n")
+    )
     assert r.steps[-1].result.conditions  # degenerate at x1 = x2
     r = check_program(parse(HEAD + "claim sign x1*(x1 - x2)/(x1 - x2) > 0\n"))
     assert any("x1 - x2" in c for c in r.claims[0].result.conditions)
@@ -72,14 +78,12 @@ def test_existence_conditions_are_listed() -> None:  # item 4
 
 @pytest.mark.parametrize("claim", ["sign cos(phi1 + phi2) < 0", "sign x1 - x2 > 0"])
 def test_false_sign_claims_are_refuted(claim: str) -> None:  # item 6
-    row = _last("param x1 > 0\nparam x2 > 0\nparam phi1 angle\nparam phi2 angle\n"
-                f"claim {claim}\n")
+    row = _last(f"param x1 > 0\nparam x2 > 0\nparam phi1 angle\nparam phi2 angle\nclaim {claim}\n")
     assert row.status is Status.REFUTED and row.counterexample
 
 
 def test_a_narrow_false_sign_claim_is_refuted() -> None:  # item 6
-    row = _last("param phi1 angle\nparam xi1 half_angle\n"
-                "claim sign cos(phi1 + xi1) + 1/100 < 0\n")
+    row = _last("param phi1 angle\nparam xi1 half_angle\nclaim sign cos(phi1 + xi1) + 1/100 < 0\n")
     assert row.status is Status.REFUTED
 
 
@@ -178,8 +182,10 @@ def test_steps_built_on_a_step_that_exists_nowhere_are_refuted() -> None:  # ite
     the break points B12, B13, B14): none is PROVED, each says where it comes from."""
     from graspcompass.construction.language import paper_text
 
-    text = paper_text().replace("V1 = point_from_lengths OMX1 OY1 (-1, -1)",
-                                f"let z = {Z}/{Z}\nV1 = point_from_lengths OMX1 OY1 (-z, -1)")
+    text = paper_text().replace(
+        "V1 = point_from_lengths OMX1 OY1 (-1, -1)",
+        f"let z = {Z}/{Z}\nV1 = point_from_lengths OMX1 OY1 (-z, -1)",
+    )
     r = check_program(parse(text), "paper")
     rows = {(row.kind, row.name): row for row in r.rows}
     for name in ("V1", "circle1", "B12", "B13", "B14"):

@@ -52,8 +52,7 @@ def _slow_second_claim(monkeypatch: pytest.MonkeyPatch) -> None:
 def test_check_program_keeps_the_verdicts_reached_before_the_timeout(monkeypatch) -> None:
     _slow_second_claim(monkeypatch)
     r = program_check.check_program(parse(FILE), timeout=3)
-    assert [row.status for row in r.claims] == [Status.PROVED, Status.UNDECIDED,
-                                                Status.UNDECIDED]
+    assert [row.status for row in r.claims] == [Status.PROVED, Status.UNDECIDED, Status.UNDECIDED]
     assert [row.result.method == TIMED_OUT for row in r.claims] == [False, True, True]
     assert all(row.status in (Status.GIVEN, Status.PROVED) for row in r.steps)
     assert r.exit_status == 3
@@ -99,8 +98,9 @@ def test_certify_timeout_keeps_the_certificates_made(monkeypatch) -> None:
     names = [x.step for x in certs]
     i = names.index("X1")
     assert all(x.result.holds for x in certs[:i])
-    assert all(x.result.status is Status.UNDECIDED and x.result.method == TIMED_OUT
-               for x in certs[i:])
+    assert all(
+        x.result.status is Status.UNDECIDED and x.result.method == TIMED_OUT for x in certs[i:]
+    )
 
 
 def test_certify_timeout_zero() -> None:

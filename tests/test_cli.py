@@ -63,7 +63,11 @@ def test_main_job_quiet(tmp_path, capsys, stub_gif):
     code, out, _ = run(capsys, "--quiet", "--out", str(tmp_path))
     assert code == 0 and out == "" and stub_gif == [True]
     assert {p.name for p in tmp_path.iterdir()} == {
-        "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", cli.MAIN_ANIMATION}
+        "fig6-diagram.png",
+        "fig6-diagram.svg",
+        "fig6-steps.json",
+        cli.MAIN_ANIMATION,
+    }
 
 
 def test_steps_json_roundtrip_values(capsys):
@@ -77,8 +81,17 @@ def test_steps_json_roundtrip_values(capsys):
 
 
 def test_k_values_against_first_principles(capsys):
-    code, out, _ = run(capsys, "k", "--preset", "table1a", "--theta", "0:360:90deg",
-                       "--external-force", "2", "--json")
+    code, out, _ = run(
+        capsys,
+        "k",
+        "--preset",
+        "table1a",
+        "--theta",
+        "0:360:90deg",
+        "--external-force",
+        "2",
+        "--json",
+    )
     assert code == 0
     recs = json.loads(out)
     assert [r["theta_deg"] for r in recs] == [0, 90, 180, 270]
@@ -99,8 +112,7 @@ def test_k_exact_output(capsys):
 
 
 def test_override_parameters(capsys):
-    code, out, _ = run(capsys, "k", "--preset", "table1a", "--y", "3", "--theta", "pi/2",
-                       "--json")
+    code, out, _ = run(capsys, "k", "--preset", "table1a", "--y", "3", "--theta", "pi/2", "--json")
     # that is Table I(b): V2.x = S2 = 2 − 3·(−1/1.2) = 9/2
     assert code == 0 and json.loads(out)[0]["k"][1] == pytest.approx(4.5)
 
@@ -116,7 +128,11 @@ def test_draw_formats(tmp_path, capsys):
 def test_presets_lists_all(capsys):
     code, out, _ = run(capsys, "presets")
     assert code == 0 and {ln.split()[0] for ln in out.splitlines()} == {
-        "fig6", "table1a", "table1b", "table1c"}
+        "fig6",
+        "table1a",
+        "table1b",
+        "table1c",
+    }
 
 
 @pytest.mark.parametrize(
@@ -155,7 +171,12 @@ def test_console_script_subprocess_no_traceback(tmp_path):
     env = {**os.environ, "PYTHONPATH": src + os.pathsep + os.environ.get("PYTHONPATH", "")}
     proc = subprocess.run(
         [sys.executable, "-m", "graspcompass", "k", "--phi1", "a.b"],
-        capture_output=True, text=True, cwd=tmp_path, env=env, check=False)
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        env=env,
+        check=False,
+    )
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
     assert "cannot read 'a.b'" in proc.stderr

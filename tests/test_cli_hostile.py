@@ -66,9 +66,14 @@ def refused(capsys, argv: list[str], fragment: str = "", bound: float | None = N
 def test_theta_million_streams_and_stops_at_a_closed_pipe():
     """Was a hang (10^6 exact angles): now the rows stream; `| head` ends it cleanly."""
     env = {**os.environ, "PYTHONPATH": SRC + os.pathsep + os.environ.get("PYTHONPATH", "")}
-    proc = subprocess.Popen([sys.executable, "-m", "graspcompass", "k", "--theta", MILLION],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True,
-                            encoding="utf-8")
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "graspcompass", "k", "--theta", MILLION],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        env=env,
+        text=True,
+        encoding="utf-8",
+    )
     assert proc.stdout is not None
     head = [proc.stdout.readline() for _ in range(4)]
     proc.stdout.close()  # like `| head -4`
@@ -86,8 +91,13 @@ def test_theta_million_streams_and_stops_at_a_closed_pipe():
 
 def test_theta_counted_before_any_angle_is_made(capsys):
     """More than the maximum is refused in well under a second, whatever the step."""
-    for theta in ("0:360:0.0001deg", "0:1:1e-300", "0:10**60:1", f"{MILLION},1",
-                  "0:1:1e-6,0:1:1e-6"):
+    for theta in (
+        "0:360:0.0001deg",
+        "0:1:1e-300",
+        "0:10**60:1",
+        f"{MILLION},1",
+        "0:1:1e-6,0:1:1e-6",
+    ):
         refused(capsys, ["k", "--theta", theta], "at most 1000000", bound=1.0)
     assert _cli_k.count_angles(MILLION) == 1_000_000
     assert _cli_k.count_angles("0:360:30deg, pi/2, 0:pi:pi/4") == 12 + 1 + 4
@@ -117,30 +127,48 @@ def test_exact_values_are_bounded(capsys):
 
 
 # -- values beyond a double: no nan/inf with exit 0 ---------------------------------------------
-@pytest.mark.parametrize("argv, fragment", [
-    (["k", "--external-force", "1e309"], "external-force"),
-    (["k", "--external-force", "10**300*10**10"], ""),
-    (["k", "--theta", "10**300*10**10"], ""),
-    (["k", "--x1", "1e309"], ""),
-    (["k", "--y", "1e309"], ""),
-    (["k", "--x1", "1e-300", "--x2", "1e-300", "--external-force", "1e300"], "overflows"),
-    (["k", "--x1", "1e-300", "--x2", "1e-300", "--external-force", "1e300", "--theta",
-      "0:1:1e-4"], "overflows"),  # the float path: refused before the note and the first row
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["k", "--external-force", "1e309"], "external-force"),
+        (["k", "--external-force", "10**300*10**10"], ""),
+        (["k", "--theta", "10**300*10**10"], ""),
+        (["k", "--x1", "1e309"], ""),
+        (["k", "--y", "1e309"], ""),
+        (["k", "--x1", "1e-300", "--x2", "1e-300", "--external-force", "1e300"], "overflows"),
+        (
+            [
+                "k",
+                "--x1",
+                "1e-300",
+                "--x2",
+                "1e-300",
+                "--external-force",
+                "1e300",
+                "--theta",
+                "0:1:1e-4",
+            ],
+            "overflows",
+        ),  # the float path: refused before the note and the first row
+    ],
+)
 def test_overflowing_values_are_refused(argv, fragment, capsys):
     err = refused(capsys, argv, fragment)
     assert "nan" not in err.split(":", 2)[-1].split() and "inf" not in err.split()
 
 
 # -- output paths: refused before any work -----------------------------------------------------
-@pytest.mark.parametrize("argv, fragment", [
-    (["draw", "--format", "pdf", "-o", "/dev/full"], "no space left"),  # was a zlib traceback
-    (["draw", "-o", "/dev/full", "--format", "png"], "no space left"),
-    (["export", "--format", "svg", "-o", "/dev/full"], "no space left"),
-    (["export", "--format", "json", "-o", "/dev/full"], "no space left"),
-    (["export", "--format", "ggb", "-o", "/dev/full"], "no space left"),
-    (["export", "--format", "tikz", "--fragment", "-o", "/dev/full"], "no space left"),
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["draw", "--format", "pdf", "-o", "/dev/full"], "no space left"),  # was a zlib traceback
+        (["draw", "-o", "/dev/full", "--format", "png"], "no space left"),
+        (["export", "--format", "svg", "-o", "/dev/full"], "no space left"),
+        (["export", "--format", "json", "-o", "/dev/full"], "no space left"),
+        (["export", "--format", "ggb", "-o", "/dev/full"], "no space left"),
+        (["export", "--format", "tikz", "--fragment", "-o", "/dev/full"], "no space left"),
+    ],
+)
 def test_full_device_is_one_line(argv, fragment, capsys, cwd):
     refused(capsys, argv, fragment)
 
@@ -149,20 +177,24 @@ def test_full_disk_behind_a_good_name(capsys, cwd):
     """A write that fails midway (here: a link to /dev/full) is one line, for every writer."""
     for ext in ("gif", "html", "svg", "md"):
         (cwd / f"full.{ext}").symlink_to("/dev/full")
-    for argv in (["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o", "full.gif"],
-                 ["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o",
-                  "full.html"],
-                 ["export", "-o", "full.html"]):
+    for argv in (
+        ["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o", "full.gif"],
+        ["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "-o", "full.html"],
+        ["export", "-o", "full.html"],
+    ):
         refused(capsys, argv, "no space left on the device")
 
 
-@pytest.mark.parametrize("argv", [
-    ["draw", "-o", "missing/x.png"],
-    ["export", "-o", "missing/x.svg"],
-    ["animate", "--kind", "sweep", "-o", "missing/x.gif"],
-    ["verify", "--markdown", "missing/report.md"],
-    ["--out", "missing/out"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["draw", "-o", "missing/x.png"],
+        ["export", "-o", "missing/x.svg"],
+        ["animate", "--kind", "sweep", "-o", "missing/x.gif"],
+        ["verify", "--markdown", "missing/report.md"],
+        ["--out", "missing/out"],
+    ],
+)
 def test_missing_folder_is_refused_and_nothing_made(argv, capsys, cwd):
     """Was: folders made without a word.  Now: refused, naming the folder, in no time."""
     before = files(cwd)
@@ -170,20 +202,26 @@ def test_missing_folder_is_refused_and_nothing_made(argv, capsys, cwd):
     assert files(cwd) == before
 
 
-@pytest.mark.parametrize("argv, fragment", [
-    (["draw", "-o", "x.png"], "is a folder"),
-    (["draw", "-o", "adir/", "--format", "svg"], "a folder"),
-    (["export", "-o", "afile/x.svg"], "'afile' is not a folder"),
-    (["export", "--format", "svg", "-o", ""], "empty name"),
-    (["export", "-o", "y" * 300 + ".svg"], "longer than"),
-    (["export", "-o", "/proc/version/x.svg"], "not a folder"),
-    (["animate", "--kind", "sweep", "-o", "d.gif", "--frames", "2"], "'d.gif': that is a folder"),
-    (["draw", "-o", ""], "cannot tell the format of ''"),
-    (["animate", "-o", ""], "without extension"),
-    (["--out", "afile"], "'afile' is not a folder"),
-    (["--out", "/dev/null"], "not a folder"),
-    (["verify", "--markdown", "adir"], "a folder"),
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["draw", "-o", "x.png"], "is a folder"),
+        (["draw", "-o", "adir/", "--format", "svg"], "a folder"),
+        (["export", "-o", "afile/x.svg"], "'afile' is not a folder"),
+        (["export", "--format", "svg", "-o", ""], "empty name"),
+        (["export", "-o", "y" * 300 + ".svg"], "longer than"),
+        (["export", "-o", "/proc/version/x.svg"], "not a folder"),
+        (
+            ["animate", "--kind", "sweep", "-o", "d.gif", "--frames", "2"],
+            "'d.gif': that is a folder",
+        ),
+        (["draw", "-o", ""], "cannot tell the format of ''"),
+        (["animate", "-o", ""], "without extension"),
+        (["--out", "afile"], "'afile' is not a folder"),
+        (["--out", "/dev/null"], "not a folder"),
+        (["verify", "--markdown", "adir"], "a folder"),
+    ],
+)
 def test_bad_output_paths(argv, fragment, capsys, cwd):
     before = files(cwd)
     refused(capsys, argv, fragment, bound=2.0)
@@ -221,30 +259,73 @@ def test_root_quiet_reaches_subcommands(capsys, cwd):
 
 
 # -- animation options: bounded, checked before any work ---------------------------------------
-@pytest.mark.parametrize("option, value", [
-    ("--fps", "1e-300"), ("--fps", "0"), ("--fps", "-1"), ("--fps", "nan"), ("--fps", "inf"),
-    ("--fps", "121"), ("--fps", "1j"), ("--dpi", "inf"), ("--dpi", "1"), ("--dpi", "1e6"),
-    ("--dpi", "nan"), ("--frames", "0"), ("--frames", "2147483648"), ("--frames", "1e3"),
-    ("--frames-per-step", "1000"), ("--frames-per-step", "0"), ("--weight", "0"),
-    ("--weight", "1e300"), ("--weight", "nan"), ("--frames", "9" * 5000),
-])
+@pytest.mark.parametrize(
+    "option, value",
+    [
+        ("--fps", "1e-300"),
+        ("--fps", "0"),
+        ("--fps", "-1"),
+        ("--fps", "nan"),
+        ("--fps", "inf"),
+        ("--fps", "121"),
+        ("--fps", "1j"),
+        ("--dpi", "inf"),
+        ("--dpi", "1"),
+        ("--dpi", "1e6"),
+        ("--dpi", "nan"),
+        ("--frames", "0"),
+        ("--frames", "2147483648"),
+        ("--frames", "1e3"),
+        ("--frames-per-step", "1000"),
+        ("--frames-per-step", "0"),
+        ("--weight", "0"),
+        ("--weight", "1e300"),
+        ("--weight", "nan"),
+        ("--frames", "9" * 5000),
+    ],
+)
 def test_animation_bounds(option, value, capsys, cwd):
     """Was: tracebacks (fps 1e-300, dpi inf, dpi 1) and hangs (frames 2^31)."""
-    err = refused(capsys, ["animate", "--kind", "sweep", "-o", "a.gif", option, value],
-                  f"argument {option}: must be", bound=1.0)
+    err = refused(
+        capsys,
+        ["animate", "--kind", "sweep", "-o", "a.gif", option, value],
+        f"argument {option}: must be",
+        bound=1.0,
+    )
     assert len(err) < 300
     assert files(cwd) == {"adir", "afile", "x.png", "d.gif"}
 
 
 def test_animation_pixel_budget(capsys, cwd):
-    refused(capsys, ["animate", "--kind", "sweep", "--frames", "3600", "--dpi", "600",
-                     "-o", "a.gif"], "lower --dpi or --frames", bound=5.0)
+    refused(
+        capsys,
+        ["animate", "--kind", "sweep", "--frames", "3600", "--dpi", "600", "-o", "a.gif"],
+        "lower --dpi or --frames",
+        bound=5.0,
+    )
     assert not (cwd / "a.gif").exists()
 
 
 def test_animation_small_and_valid(capsys, cwd):
-    assert main(["animate", "--kind", "sweep", "--frames", "2", "--dpi", "10", "--fps", "0.01",
-                 "-o", "s.gif", "-q"]) == 0
+    assert (
+        main(
+            [
+                "animate",
+                "--kind",
+                "sweep",
+                "--frames",
+                "2",
+                "--dpi",
+                "10",
+                "--fps",
+                "0.01",
+                "-o",
+                "s.gif",
+                "-q",
+            ]
+        )
+        == 0
+    )
     assert (cwd / "s.gif").stat().st_size > 100
 
 
@@ -264,19 +345,22 @@ def test_bounded_accepts_exactly_the_interval(x):
 
 
 # -- crosscheck, titles, odd text: one line each -------------------------------------------------
-@pytest.mark.parametrize("argv, fragment", [
-    (["crosscheck", "--grasps", "2147483648"], "from 1 to 200"),
-    (["crosscheck", "--thetas", "1000000000"], "from 1 to 3600"),
-    (["crosscheck", "--grasps", "200", "--thetas", "1000"], "at most 36000"),
-    (["crosscheck", "--seed", "-1"], "from 0 to"),
-    (["crosscheck", "--grasps", "0"], "from 1 to 200"),
-    (["export", "--title", "a\0b"], "printable"),
-    (["export", "--title", "x" * 100_000], "at most 200"),
-    (["k", "--phi1", "1\n2"], "cannot read"),
-    (["k\nx"], "invalid choice"),
-    (["draw", "--step", "9" * 5000], "invalid int"),
-    (["export", "--x1", "x" * 100_000], "longer than"),
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["crosscheck", "--grasps", "2147483648"], "from 1 to 200"),
+        (["crosscheck", "--thetas", "1000000000"], "from 1 to 3600"),
+        (["crosscheck", "--grasps", "200", "--thetas", "1000"], "at most 36000"),
+        (["crosscheck", "--seed", "-1"], "from 0 to"),
+        (["crosscheck", "--grasps", "0"], "from 1 to 200"),
+        (["export", "--title", "a\0b"], "printable"),
+        (["export", "--title", "x" * 100_000], "at most 200"),
+        (["k", "--phi1", "1\n2"], "cannot read"),
+        (["k\nx"], "invalid choice"),
+        (["draw", "--step", "9" * 5000], "invalid int"),
+        (["export", "--x1", "x" * 100_000], "longer than"),
+    ],
+)
 def test_odd_values_one_line(argv, fragment, capsys, cwd):
     refused(capsys, argv, fragment, bound=2.0)
 
@@ -345,12 +429,35 @@ def test_save_figure_full_disk_is_an_output_error():
 
 
 # -- the float path reads ranges as the parser does -------------------------------------------
-_PARTS = st.sampled_from(["0", "1", "-1", "1/3", "pi", "pi/4", "2*pi", "0.25", "10", "-7/2",
-                          "sqrt(2)", "1e-2", "360", "45", "atan2(1, 2)", "-pi/6"])
+_PARTS = st.sampled_from(
+    [
+        "0",
+        "1",
+        "-1",
+        "1/3",
+        "pi",
+        "pi/4",
+        "2*pi",
+        "0.25",
+        "10",
+        "-7/2",
+        "sqrt(2)",
+        "1e-2",
+        "360",
+        "45",
+        "atan2(1, 2)",
+        "-pi/6",
+    ]
+)
 
 
-@given(start=_PARTS, stop=_PARTS, step=_PARTS, unit=st.sampled_from(["", "deg", " deg", "°"]),
-       single=st.sampled_from(["", ", pi/2", ", 30deg", ", atan2(1, 3)"]))
+@given(
+    start=_PARTS,
+    stop=_PARTS,
+    step=_PARTS,
+    unit=st.sampled_from(["", "deg", " deg", "°"]),
+    single=st.sampled_from(["", ", pi/2", ", 30deg", ", atan2(1, 3)"]),
+)
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 def test_float_path_reads_ranges_like_the_parser(start, stop, step, unit, single):
     """count_angles and the float path agree with parse_angles wherever it accepts the text."""

@@ -32,13 +32,22 @@ R = sp.Rational
 def test_equations_hold_without_signs_of_x1_x2():
     # sines and cosines as symbols, reduced modulo s² + c² − 1; x1, x2 real, no sign
     x1, x2, y, s1, c1, s2, c2, s, c = sp.symbols("x1 x2 y s1 c1 s2 c2 s c", real=True)
-    L = sp.Matrix([[-s1, -c1, s2, c2], [-c1, s1, -c2, s2],
-                   [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y]])
+    L = sp.Matrix(
+        [
+            [-s1, -c1, s2, c2],
+            [-c1, s1, -c2, s2],
+            [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
+        ]
+    )
     D = x1 + x2
-    FT2D = sp.Matrix([D * s1 * s + 2 * (y * s - x2 * c) * c1,
-                      D * c1 * s - 2 * (y * s - x2 * c) * s1,
-                      -D * s2 * s - 2 * (y * s + x1 * c) * c2,
-                      -D * c2 * s + 2 * (y * s + x1 * c) * s2])  # 2 (x1 + x2) F_T, (13)
+    FT2D = sp.Matrix(
+        [
+            D * s1 * s + 2 * (y * s - x2 * c) * c1,
+            D * c1 * s - 2 * (y * s - x2 * c) * s1,
+            -D * s2 * s - 2 * (y * s + x1 * c) * c2,
+            -D * c2 * s + 2 * (y * s + x1 * c) * s2,
+        ]
+    )  # 2 (x1 + x2) F_T, (13)
     FN = sp.Matrix([s1, c1, s2, c2])  # (x1 + x2) F_N, (15)
     circle = [s1**2 + c1**2 - 1, s2**2 + c2**2 - 1, s**2 + c**2 - 1]
     gens = (c1, c2, c, s1, s2, s, x1, x2, y)
@@ -74,7 +83,8 @@ def test_float_grasps_beyond_a_contact_match_lp(p, theta):
     scale = 1 + abs(k_lp)
     assert abs(g.k_grasp(theta) - k_lp) <= 1e-7 * scale
     assert abs(float(g.internal_force(theta)) - k_lp / (p[0] + p[1])) <= 1e-7 * scale / (
-        p[0] + p[1])
+        p[0] + p[1]
+    )
     check_against_lp(g, p, theta)  # and the slip diagnosis (which contact, which way)
 
 
@@ -109,8 +119,9 @@ def test_exact_grasps_beyond_construction_closed_form_lp(data):
     thetas = np.linspace(0, 2 * np.pi, 13)[:-1] + 0.1
     exact_thetas = (R(1, 2), R(2), R(4))
     kx = np.array([float(g.k_grasp(t)) for t in exact_thetas])  # exact vs float
-    assert np.allclose(kx, gf.k_grasp(np.array([float(t) for t in exact_thetas])),
-                       rtol=1e-12, atol=1e-12)
+    assert np.allclose(
+        kx, gf.k_grasp(np.array([float(t) for t in exact_thetas])), rtol=1e-12, atol=1e-12
+    )
     assert np.allclose(g.k_grasp(thetas), gf.k_grasp(thetas), rtol=1e-12, atol=1e-12)
     env = c["envelope"]
     assert np.allclose(env.k(thetas), g.k_grasp(thetas), rtol=1e-12, atol=1e-12)
@@ -148,8 +159,10 @@ def test_x2_zero_on_the_line_identical_circles():
 def test_certify_numeric_grasps_beyond_relies_on_no_hypothesis():
     # exact numbers: every fact is decided exactly for these values, with no hypothesis
     # (in particular not x1 > 0): PROVED is backed
-    for g in (Grasp(-1, 3, 1, "pi/3", "pi/2", mu1=1, mu2="6/5"),
-              Grasp(0, 2, 1, "pi/2", "pi/2", mu1=1, mu2="6/5")):
+    for g in (
+        Grasp(-1, 3, 1, "pi/3", "pi/2", mu1=1, mu2="6/5"),
+        Grasp(0, 2, 1, "pi/2", "pi/2", mu1=1, mu2="6/5"),
+    ):
         certs = certify(internal_force_diagram(g))
         assert {x.result.status.value for x in certs} == {"GIVEN", "PROVED"}
         assert all(x.result.hypotheses == () for x in certs)
@@ -181,8 +194,10 @@ def _world_check(wg, force):
     f = wg.contact_forces(force)
     com = [float(v) for v in wg.origin]
     tot = np.array(force, float) + sum(np.array([float(v) for v in fv]) for fv in f.values())
-    mom = sum((float(p[0]) - com[0]) * float(fv[1]) - (float(p[1]) - com[1]) * float(fv[0])
-              for p, fv in zip(wg.contacts, (f[n] for n in wg.names)))
+    mom = sum(
+        (float(p[0]) - com[0]) * float(fv[1]) - (float(p[1]) - com[1]) * float(fv[0])
+        for p, fv in zip(wg.contacts, (f[n] for n in wg.names))
+    )
     assert np.abs(tot).max() < 1e-9 and abs(mom) < 1e-9
 
 
@@ -194,8 +209,12 @@ def test_place_grasp_with_the_centre_of_mass_beyond_a_contact():
     wg = place_grasp(**box, com=(-2, 5))  # above contact B: x1 = 0 (frame turned)
     assert (wg.grasp.x1, wg.grasp.x2, wg.grasp.y) == (0, 4, 4)
     _world_check(wg, (0.3, -1))
-    wf = place_grasp(contacts=[(2.0, 1.0), (-2.0, 1.0)], normals=[(-1.0, 0.0), (1.0, 0.0)],
-                     mu=(1.0, 1.0), com=(3.0, 0.0))
+    wf = place_grasp(
+        contacts=[(2.0, 1.0), (-2.0, 1.0)],
+        normals=[(-1.0, 0.0), (1.0, 0.0)],
+        mu=(1.0, 1.0),
+        com=(3.0, 0.0),
+    )
     assert wf.grasp.numeric and math.isclose(float(wf.grasp.x1), -1.0)
     k_lp = lp(-1.0, 5.0, 1.0, math.pi / 2, math.pi / 2, 1.0, 1.0, 0.0)[0]
     assert math.isclose(float(wf.grasp.k_grasp(0.0)), k_lp, rel_tol=1e-9)
@@ -209,8 +228,10 @@ def test_drawing_beyond_a_contact():
 
     from graspcompass.render import draw_construction
 
-    for g in (Grasp(-1, 3, 1, "pi/3", "pi/2", mu1=1, mu2="6/5"),
-              Grasp(0, 2, 0, "pi/2", "pi/2", mu1=1, mu2="6/5")):
+    for g in (
+        Grasp(-1, 3, 1, "pi/3", "pi/2", mu1=1, mu2="6/5"),
+        Grasp(0, 2, 0, "pi/2", "pi/2", mu1=1, mu2="6/5"),
+    ):
         fig, ax = plt.subplots()
         artists = draw_construction(internal_force_diagram(g), ax=ax)
         assert artists

@@ -31,8 +31,10 @@ def test_the_lines_are_not_parallel_in_table_json_and_markdown():
     # AB = (1, a), CD = (1, b - 1): they meet iff the cross product b - 1 - a ≠ 0
     report = check_program(parse(MEET))
     (cond,) = report.claims[0].result.conditions
-    lhs = sp.sympify(cond.split(" ≠ 0")[0], locals={"a": sp.Symbol("a", real=True),
-                                                     "b": sp.Symbol("b", real=True)})
+    lhs = sp.sympify(
+        cond.split(" ≠ 0")[0],
+        locals={"a": sp.Symbol("a", real=True), "b": sp.Symbol("b", real=True)},
+    )
     a, b = sp.symbols("a b", real=True)
     assert sp.expand(lhs * (b - 1 - a)) != 0 and sp.cancel(lhs / (b - 1 - a)).is_number
     words = "the lines AB and CD are not parallel"
@@ -101,6 +103,9 @@ def test_conditions_factored_through_fractions_and_powers():
     assert tidy(["(t - 1)/(u - 2) ≥ 0"], [], names)[0] == ["(t - 1)/(u - 2) ≥ 0"]
     assert tidy(["(t - 1)/(u**2 + 2) ≥ 0"], [], names)[0] == ["t - 1 ≥ 0"]
     # the same condition written twice (expanded, times −2) is asked once, with its words
-    got = tidy(["(t - u)**2 + 1 - 1 + t ≠ 0 (A and B are distinct)",
-                "-2*t**2 + 4*t*u - 2*u**2 - 2*t ≠ 0"], [], names)[0]
+    got = tidy(
+        ["(t - u)**2 + 1 - 1 + t ≠ 0 (A and B are distinct)", "-2*t**2 + 4*t*u - 2*u**2 - 2*t ≠ 0"],
+        [],
+        names,
+    )[0]
     assert len(got) == 1 and got[0].endswith("(A and B are distinct)")

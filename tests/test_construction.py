@@ -45,8 +45,9 @@ def dot(a, b) -> sp.Expr:
 
 
 def on_line(p: Point, line: Line) -> bool:
-    return is_zero(cross((p.x - line.point.x, p.y - line.point.y),
-                         (line.direction.x, line.direction.y)))
+    return is_zero(
+        cross((p.x - line.point.x, p.y - line.point.y), (line.direction.x, line.direction.y))
+    )
 
 
 def on_circle(p: Point, c: Circle) -> bool:
@@ -95,8 +96,9 @@ def check_construction(c, p) -> None:
         assert is_zero(c[f"OMX{n}"] + S[n - 1])
         # step (2): perpendicular from P2x (n = 1, 3) / P1x (n = 2, 4); Y_n on the y-axis
         assert on_line(foot, perp)
-        assert is_zero(dot((perp.direction.x, perp.direction.y),
-                           (side.direction.x, side.direction.y)))
+        assert is_zero(
+            dot((perp.direction.x, perp.direction.y), (side.direction.x, side.direction.y))
+        )
         assert Y.x == 0 and on_line(Y, perp)
         assert is_zero(Y.y + C[n - 1]), f"O Y{n} != -C{n}"
         assert is_zero(c[f"OY{n}"] + C[n - 1])
@@ -129,8 +131,9 @@ def test_preset_construction_closed_form(name, preset_constructions):
     check_construction(preset_constructions[name], PRESET_PARAMS[name])
 
 
-@settings(max_examples=10, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow])
+@settings(
+    max_examples=10, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 @given(exact_params())
 def test_random_exact_construction(p):
     c = internal_force_diagram(p.grasp())
@@ -180,8 +183,11 @@ def test_concurrency_of_forces(preset_constructions):
 def test_numeric_grasp_same_V(preset_constructions):
     for name in PRESET_NAMES:
         p = PRESET_PARAMS[name]
-        gf = Grasp(*[float(v) for v in (p.x1, p.x2, p.y, p.phi1, p.phi2)],
-                   mu1=float(p.mu1), mu2=float(p.mu2))
+        gf = Grasp(
+            *[float(v) for v in (p.x1, p.x2, p.y, p.phi1, p.phi2)],
+            mu1=float(p.mu1),
+            mu2=float(p.mu2),
+        )
         cf = internal_force_diagram(gf)
         ce = preset_constructions[name]
         for n in VN:
@@ -217,8 +223,7 @@ def check_envelope_k(c, p, ts) -> None:
     pl = env.polyline(361)
     t = np.linspace(0, 2 * np.pi, 361)
     kk, _ = k_grasp_first_principles(p, t)
-    np.testing.assert_allclose(pl, np.column_stack([kk * np.sin(t), -kk * np.cos(t)]),
-                               atol=1e-9)
+    np.testing.assert_allclose(pl, np.column_stack([kk * np.sin(t), -kk * np.cos(t)]), atol=1e-9)
 
 
 def check_envelope_arcs(c, p) -> None:
@@ -233,8 +238,9 @@ def check_envelope_arcs(c, p) -> None:
         assert a.n != b.n or len(arcs) == 1
         # contiguous: end of one arc is the start of the next (angle mod 2π and point)
         assert a.end == b.start
-        assert is_zero(sp.sin(a.theta_end - b.theta_start)) and \
-            is_zero(sp.cos(a.theta_end - b.theta_start) - 1)
+        assert is_zero(sp.sin(a.theta_end - b.theta_start)) and is_zero(
+            sp.cos(a.theta_end - b.theta_start) - 1
+        )
         assert 0 <= float(a.theta_start) < 2 * math.pi + 1e-15
         assert float(a.theta_end) > float(a.theta_start)
         total += a.theta_end - a.theta_start
@@ -261,8 +267,9 @@ def check_envelope_arcs(c, p) -> None:
 
 @pytest.mark.parametrize("name", PRESET_NAMES)
 def test_envelope_k_equals_max(name, preset_constructions):
-    check_envelope_k(preset_constructions[name], PRESET_PARAMS[name],
-                     np.linspace(-np.pi, 3 * np.pi, 20001))
+    check_envelope_k(
+        preset_constructions[name], PRESET_PARAMS[name], np.linspace(-np.pi, 3 * np.pi, 20001)
+    )
 
 
 @pytest.mark.parametrize("name", PRESET_NAMES)
@@ -272,8 +279,17 @@ def test_envelope_arcs(name, preset_constructions):
 
 # A grasp from below (φ = π/3 < π/2, y = 0, μ = 2): all V_n lie in y < 0, so for a force
 # pointing up (θ = π, e = (0, 1)) every k_n = V_n·e = C_n is negative: a zero region.
-ZERO_REGION = Params(sp.Integer(1), sp.Integer(1), sp.Integer(0), pi / 3, pi / 3,
-                     sp.Integer(2), sp.Integer(2), sp.atan(2), sp.atan(2))
+ZERO_REGION = Params(
+    sp.Integer(1),
+    sp.Integer(1),
+    sp.Integer(0),
+    pi / 3,
+    pi / 3,
+    sp.Integer(2),
+    sp.Integer(2),
+    sp.atan(2),
+    sp.atan(2),
+)
 
 
 def test_envelope_zero_region():
@@ -287,7 +303,7 @@ def test_envelope_zero_region():
     env = c["envelope"]
     assert any(a.is_zero for a in env.arcs)
     assert env.winner(np.pi) == 0 and env.k(np.pi) == 0
-    (t0, t1), = env.zero_region
+    ((t0, t1),) = env.zero_region
     assert float(t0) < np.pi < float(t1)
 
 
@@ -303,10 +319,10 @@ def test_envelope_can_detect_wrong_winner(preset_constructions):
 # the protocol
 # ---------------------------------------------------------------------------
 EXPECTED_NAMES = (
-    ["O", "x-axis", "y-axis", "P1", "P2", "side1", "side3", "side2", "side4",
-     "P1x", "P2x", "O_M"]
+    ["O", "x-axis", "y-axis", "P1", "P2", "side1", "side3", "side2", "side4", "P1x", "P2x", "O_M"]
     + [f"{s}{n}" for n in VN for s in ("X", "perp", "Y", "OMX", "OY", "V")]
-    + [f"circle{n}" for n in VN] + [f"B{n}{m}" for n, m in PAIRS]
+    + [f"circle{n}" for n in VN]
+    + [f"B{n}{m}" for n, m in PAIRS]
 )
 
 

@@ -50,23 +50,33 @@ def test_every_corpus_file_exports_to_ggb():
             assert f'label="{s.name}"' in xml, (path.name, s.name)
 
 
-@pytest.mark.skipif(shutil.which("geogebra") is None or shutil.which("xvfb-run") is None,
-                    reason="GeoGebra or xvfb-run not installed (.ci/apt-packages.txt)")
-@pytest.mark.parametrize("path", sorted({*_corpus.covering_files(),  # and a point on a
-                                          _corpus.CORPUS / "41_radical_axis_tangents.gc"}),
-                         ids=lambda p: p.stem)  # line GeoGebra defines by its equation
+@pytest.mark.skipif(
+    shutil.which("geogebra") is None or shutil.which("xvfb-run") is None,
+    reason="GeoGebra or xvfb-run not installed (.ci/apt-packages.txt)",
+)
+@pytest.mark.parametrize(
+    "path",
+    sorted(
+        {
+            *_corpus.covering_files(),  # and a point on a
+            _corpus.CORPUS / "41_radical_axis_tangents.gc",
+        }
+    ),
+    ids=lambda p: p.stem,
+)  # line GeoGebra defines by its equation
 def test_geogebra_puts_the_points_where_the_kernel_does(path, tmp_path):
     c, data = _export(path)
     pts = _corpus.geogebra_points(data, tmp_path)
     for s in c.steps:
         if s.kind == "point":
             assert s.name in pts, s.name
-            assert pts[s.name] == pytest.approx((float(s.obj.x), float(s.obj.y)), abs=2e-5), \
-                s.name
+            assert pts[s.name] == pytest.approx((float(s.obj.x), float(s.obj.y)), abs=2e-5), s.name
 
 
-@pytest.mark.skipif(shutil.which("geogebra") is None or shutil.which("xvfb-run") is None,
-                    reason="GeoGebra or xvfb-run not installed (.ci/apt-packages.txt)")
+@pytest.mark.skipif(
+    shutil.which("geogebra") is None or shutil.which("xvfb-run") is None,
+    reason="GeoGebra or xvfb-run not installed (.ci/apt-packages.txt)",
+)
 @pytest.mark.parametrize("name", ["06_simson.gc", "07_pappus.gc", "01_circumcentre.gc"])
 def test_geogebra_as_a_second_prover(name, tmp_path):
     """GeoGebra's ``Prove`` agrees with the checker on every claim both state: a PROVED

@@ -62,8 +62,16 @@ def lp(x1, x2, y, phi1, phi2, mu1, mu2, theta):
     if (u[0] * L[0, 0] + u[1] * L[0, 1]) > 0:  # x-force at P1 must point to −x: a squeeze
         u = -u
     G = np.array([[mu1, -1, 0, 0], [0, 0, mu2, -1], [mu1, 1, 0, 0], [0, 0, mu2, 1]], float)
-    res = linprog(u, A_ub=-np.vstack([G, u]), b_ub=np.zeros(5), A_eq=L, b_eq=M,
-                  bounds=[(None, None)] * 4, method="highs", options=HIGHS)
+    res = linprog(
+        u,
+        A_ub=-np.vstack([G, u]),
+        b_ub=np.zeros(5),
+        A_eq=L,
+        b_eq=M,
+        bounds=[(None, None)] * 4,
+        method="highs",
+        options=HIGHS,
+    )
     assert res.status == 0, res.message
     f = res.x
     k = float(u @ f) * math.hypot(u[0], u[1]) * (x1 + x2)
@@ -141,9 +149,10 @@ ZERO = Grasp(1, 1, "1/2", "3*pi/4", "3*pi/4", mu1=2, mu2=2)  # cradled: no squee
 
 
 def test_zero_force_region_named_and_exact():
-    (a, b), = zero_force_intervals(ZERO)
+    ((a, b),) = zero_force_intervals(ZERO)
     assert a == 2 * sp.pi - sp.atan(sp.Rational(2, 5)) and b == 2 * sp.pi + sp.atan(
-        sp.Rational(2, 5))
+        sp.Rational(2, 5)
+    )
     s = slip(ZERO, 0)
     assert s.zero_force and s.n == 0 and s.contact is None and s.slide is None
     assert s.k_grasp == 0 and s.margin > 0
@@ -164,9 +173,11 @@ def _check_intervals(g: Grasp) -> None:
     total = sum(float(iv.theta_end - iv.theta_start) for iv in ivs)
     assert math.isclose(total, 2 * math.pi, rel_tol=1e-12)
     for prev, iv in zip(ivs[-1:] + ivs[:-1], ivs):
-        assert iv.theta_start == prev.theta_end or sp.simplify(
-            iv.theta_start + 2 * sp.pi - prev.theta_end) == 0 or math.isclose(
-            float(iv.theta_start) + 2 * math.pi, float(prev.theta_end))
+        assert (
+            iv.theta_start == prev.theta_end
+            or sp.simplify(iv.theta_start + 2 * sp.pi - prev.theta_end) == 0
+            or math.isclose(float(iv.theta_start) + 2 * math.pi, float(prev.theta_end))
+        )
         mid = (float(iv.theta_start) + float(iv.theta_end)) / 2
         assert slip(g, mid).n == iv.n
         # the exact break point: both neighbours bind there (a tie), exactly
@@ -261,21 +272,24 @@ def test_record_is_immutable():
         s.n = 3  # type: ignore[misc]
 
 
-@pytest.mark.parametrize(("theta", "error"), [
-    ("__import__('os').system('true')", ExpressionError),
-    ("t", ExpressionError),
-    ("asin(2)", ComplexValueError),
-    (1j, ComplexValueError),
-    (sp.I, ComplexValueError),
-    (float("nan"), NonFiniteValueError),
-    (float("inf"), NonFiniteValueError),
-    ([0.0, float("nan")], NonFiniteValueError),
-    (None, WrongTypeError),
-    (True, WrongTypeError),
-    ({"theta": 1}, WrongTypeError),
-    (["pi/3"], WrongTypeError),
-    ("1e400", ExpressionError),
-])
+@pytest.mark.parametrize(
+    ("theta", "error"),
+    [
+        ("__import__('os').system('true')", ExpressionError),
+        ("t", ExpressionError),
+        ("asin(2)", ComplexValueError),
+        (1j, ComplexValueError),
+        (sp.I, ComplexValueError),
+        (float("nan"), NonFiniteValueError),
+        (float("inf"), NonFiniteValueError),
+        ([0.0, float("nan")], NonFiniteValueError),
+        (None, WrongTypeError),
+        (True, WrongTypeError),
+        ({"theta": 1}, WrongTypeError),
+        (["pi/3"], WrongTypeError),
+        ("1e400", ExpressionError),
+    ],
+)
 def test_hostile_theta(theta, error):
     with pytest.raises(error) as info:
         slip(Grasp.preset("fig6"), theta)

@@ -43,8 +43,7 @@ HTML = DOCS / "_build" / "html"
 SCREENSHOTS = DOCS / "_build" / "screenshots"
 SKIP_DIRS = ("_build", "_generated", "auto_examples", "_intersphinx")
 
-PAGES = sorted(p for p in DOCS.rglob("*.md") if not set(p.relative_to(DOCS).parts) &
-               set(SKIP_DIRS))
+PAGES = sorted(p for p in DOCS.rglob("*.md") if not set(p.relative_to(DOCS).parts) & set(SKIP_DIRS))
 
 
 def _blocks(page: Path, language: str) -> list[tuple[int, str]]:
@@ -57,16 +56,17 @@ def _blocks(page: Path, language: str) -> list[tuple[int, str]]:
 
 
 # -- the Python sessions ------------------------------------------------------------------------
-@pytest.mark.parametrize("page", [p for p in PAGES if _blocks(p, "pycon")],
-                         ids=lambda p: str(p.relative_to(DOCS)))
-def test_python_sessions_run(page: Path, monkeypatch: pytest.MonkeyPatch,
-                             tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    "page", [p for p in PAGES if _blocks(p, "pycon")], ids=lambda p: str(p.relative_to(DOCS))
+)
+def test_python_sessions_run(page: Path, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     pytest.importorskip("matplotlib")
     monkeypatch.setenv("MPLBACKEND", "agg")
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))  # files the sessions write
     parser = doctest.DocTestParser()
     runner = doctest.DocTestRunner(
-        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE, verbose=False)
+        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE, verbose=False
+    )
     globs: dict = {}
     report: list[str] = []
     for line, block in _blocks(page, "pycon"):
@@ -90,8 +90,7 @@ def _commands() -> list[tuple[str, str, bool]]:
                 if row.startswith("$ graspcompass"):
                     nxt = rows[i + 1] if i + 1 < len(rows) else ""
                     cmd = re.split(r"\s(?:\||>|&&)\s", row[2:])[0]
-                    out.append((f"{page.relative_to(DOCS)}:{line + i}", cmd,
-                                "error:" in nxt))
+                    out.append((f"{page.relative_to(DOCS)}:{line + i}", cmd, "error:" in nxt))
     return out
 
 
@@ -101,11 +100,17 @@ COMMANDS = _commands()
 def test_pages_show_commands() -> None:
     assert len(COMMANDS) >= 20
     assert {c.split()[1] for _, c, _ in COMMANDS if len(c.split()) > 1} >= {
-        "draw", "steps", "k", "presets", "animate", "export", "verify"}
+        "draw",
+        "steps",
+        "k",
+        "presets",
+        "animate",
+        "export",
+        "verify",
+    }
 
 
-@pytest.mark.parametrize(("where", "command", "fails"), COMMANDS,
-                         ids=[w for w, _, _ in COMMANDS])
+@pytest.mark.parametrize(("where", "command", "fails"), COMMANDS, ids=[w for w, _, _ in COMMANDS])
 def test_commands_parse(where: str, command: str, fails: bool) -> None:
     from graspcompass.cli import build_parser, grasp_from_args
 
@@ -128,7 +133,8 @@ def test_getting_started_shows_the_readme_commands() -> None:
     for block in commands:
         for line in block.strip().splitlines():
             assert f"$ {line.removeprefix('$ ')}" in page, (
-                f"docs/getting-started.md does not show the README's command {line!r}")
+                f"docs/getting-started.md does not show the README's command {line!r}"
+            )
 
 
 # -- the gallery -------------------------------------------------------------------------------
@@ -151,9 +157,14 @@ def test_gallery_has_every_figure() -> None:
         assert (folder / "GALLERY_HEADER.rst").is_file()
 
 
-@pytest.mark.parametrize("script", _scripts(GALLERY) + _scripts(GALLERY / "animations") +
-                         _scripts(GALLERY / "beyond") + _scripts(GALLERY / "language"),
-                         ids=lambda p: p.name)
+@pytest.mark.parametrize(
+    "script",
+    _scripts(GALLERY)
+    + _scripts(GALLERY / "animations")
+    + _scripts(GALLERY / "beyond")
+    + _scripts(GALLERY / "language"),
+    ids=lambda p: p.name,
+)
 def test_gallery_script_has_a_titled_docstring(script: Path) -> None:
     import ast
 
@@ -161,7 +172,8 @@ def test_gallery_script_has_a_titled_docstring(script: Path) -> None:
     assert doc, f"{script.name}: sphinx-gallery needs a docstring"
     lines = doc.strip("\n").splitlines()
     assert len(lines) > 3 and set(lines[1]) == {"="} and len(lines[1]) >= len(lines[0]), (
-        f"{script.name}: the docstring must start with a title underlined with '='")
+        f"{script.name}: the docstring must start with a title underlined with '='"
+    )
 
 
 # -- the built site in a browser ---------------------------------------------------------------
@@ -247,31 +259,56 @@ class _Server:
 @pytest.fixture(scope="module")
 def browser() -> tuple[str, Path]:
     if not (HTML / "index.html").is_file() or not (HTML / "auto_examples").is_dir():
-        pytest.skip("the documentation is not built (docs/_build/html is missing): "
-                    "run .ci/build-docs.sh, or sphinx-build -b html docs docs/_build/html, "
-                    "before this test")
+        pytest.skip(
+            "the documentation is not built (docs/_build/html is missing): "
+            "run .ci/build-docs.sh, or sphinx-build -b html docs docs/_build/html, "
+            "before this test"
+        )
     chromium = _chromium()
     if chromium is None:
-        pytest.skip("Chromium is not installed (Debian: apt-get install chromium), so the "
-                    "built documentation cannot be checked in a browser")
+        pytest.skip(
+            "Chromium is not installed (Debian: apt-get install chromium), so the "
+            "built documentation cannot be checked in a browser"
+        )
     with tempfile.TemporaryDirectory(prefix="graspcompass-chromium-") as profile:
         yield chromium, Path(profile)
 
 
 def _run_chromium(chromium: str, profile: Path, *args: str) -> subprocess.CompletedProcess:
-    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-             "--disable-default-apps", "--disable-extensions", "--mute-audio",
-             "--hide-scrollbars", f"--user-data-dir={profile}", "--enable-logging=stderr",
-             "--v=0", "--virtual-time-budget=15000"]
-    return subprocess.run([chromium, *flags, *args], capture_output=True, text=True,
-                          timeout=120, env={**os.environ, "LANG": "C.UTF-8"})
+    flags = [
+        "--headless",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--disable-default-apps",
+        "--disable-extensions",
+        "--mute-audio",
+        "--hide-scrollbars",
+        f"--user-data-dir={profile}",
+        "--enable-logging=stderr",
+        "--v=0",
+        "--virtual-time-budget=15000",
+    ]
+    return subprocess.run(
+        [chromium, *flags, *args],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={**os.environ, "LANG": "C.UTF-8"},
+    )
 
 
 def _console_failures(stderr: str) -> list[str]:
     """Console lines about a resource that failed with a 4xx/5xx status."""
-    return [ln for ln in stderr.splitlines() if "CONSOLE" in ln and
-            re.search(r"status of [45]\d\d|\b404\b", ln)]
+    return [
+        ln
+        for ln in stderr.splitlines()
+        if "CONSOLE" in ln and re.search(r"status of [45]\d\d|\b404\b", ln)
+    ]
 
 
 @pytest.mark.parametrize("name", list(BROWSER_PAGES))
@@ -285,19 +322,28 @@ def test_built_page_renders_in_chromium(browser: tuple[str, Path], name: str) ->
     shot.unlink(missing_ok=True)
     with _Server(HTML) as server:
         # 1. every <img> of the page loads (checked by the browser itself)
-        run = _run_chromium(chromium, profile, "--dump-dom",
-                            f"{server.url}{CHECKER[1:]}?page={urllib.parse.quote(page)}")
+        run = _run_chromium(
+            chromium,
+            profile,
+            "--dump-dom",
+            f"{server.url}{CHECKER[1:]}?page={urllib.parse.quote(page)}",
+        )
         m = re.search(r'<pre id="result">(.*?)</pre>', run.stdout, re.S)
         assert m and m.group(1) != "pending", (
-            f"the image check of {page} did not finish:\n{run.stdout[-2000:]}\n"
-            f"{run.stderr[-2000:]}")
+            f"the image check of {page} did not finish:\n{run.stdout[-2000:]}\n{run.stderr[-2000:]}"
+        )
         result = json.loads(m.group(1).replace("&quot;", '"'))
         assert result["count"] > 0, f"{page} shows no image"
         assert result["broken"] == [], f"broken images on {page}: {result['broken']}"
         console = _console_failures(run.stderr)
         # 2. a screenshot of the page on its own
-        run = _run_chromium(chromium, profile, f"--screenshot={shot}",
-                            "--window-size=1280,3200", f"{server.url}{page}")
+        run = _run_chromium(
+            chromium,
+            profile,
+            f"--screenshot={shot}",
+            "--window-size=1280,3200",
+            f"{server.url}{page}",
+        )
         console += _console_failures(run.stderr)
         failed = [(path, code) for path, code in server.requests if code >= 400]
     assert not failed, f"requests that failed while loading {page}: {failed}"
@@ -313,8 +359,10 @@ def test_built_page_renders_in_chromium(browser: tuple[str, Path], name: str) ->
 
 # -- the built site, offline -------------------------------------------------------------------
 # Raw TeX that MathJax should have replaced (text outside code blocks).
-RAW_TEX = re.compile(r"\\[()\[\]]|\$\$|\\(?:frac|sqrt|varphi|phi|xi|mu|theta|text|mathrm|"
-                     r"overline|begin|end|left|right|cdot|tan|sin|cos|max|tfrac|qquad)\b")
+RAW_TEX = re.compile(
+    r"\\[()\[\]]|\$\$|\\(?:frac|sqrt|varphi|phi|xi|mu|theta|text|mathrm|"
+    r"overline|begin|end|left|right|cdot|tan|sin|cos|max|tfrac|qquad)\b"
+)
 # the page's text without code, with MathJax done (or no MathJax on the page)
 PAGE_STATE_JS = """async () => {
   if (window.MathJax && MathJax.startup && MathJax.startup.promise) {
@@ -351,28 +399,37 @@ PAGE_STATE_JS = """async () => {
 
 def _site_pages() -> list[Path]:
     """Every page of the built site except the highlighted sources (``_modules``)."""
-    return sorted(p for p in HTML.rglob("*.html")
-                  if not {"_modules", "_static", "_sources", "_downloads"} &
-                  set(p.relative_to(HTML).parts))
+    return sorted(
+        p
+        for p in HTML.rglob("*.html")
+        if not {"_modules", "_static", "_sources", "_downloads"} & set(p.relative_to(HTML).parts)
+    )
 
 
 @pytest.fixture(scope="module")
 def offline_browser():
     if not (HTML / "index.html").is_file() or not (HTML / "auto_examples").is_dir():
-        pytest.skip("the documentation is not built (docs/_build/html is missing): run "
-                    ".ci/build-docs.sh before this test")
+        pytest.skip(
+            "the documentation is not built (docs/_build/html is missing): run "
+            ".ci/build-docs.sh before this test"
+        )
     chromium = _chromium()
     if chromium is None:
-        pytest.skip("Chromium is not installed (Debian: apt-get install chromium), so the "
-                    "built documentation cannot be checked offline in a browser")
+        pytest.skip(
+            "Chromium is not installed (Debian: apt-get install chromium), so the "
+            "built documentation cannot be checked offline in a browser"
+        )
     try:
         from playwright.sync_api import sync_playwright
     except ImportError:
-        pytest.skip("Playwright for Python is not installed (pip install -e '.[test]'), so "
-                    "the built documentation cannot be checked offline in a browser")
+        pytest.skip(
+            "Playwright for Python is not installed (pip install -e '.[test]'), so "
+            "the built documentation cannot be checked offline in a browser"
+        )
     with sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=chromium,
-                                     args=["--no-sandbox", "--disable-gpu"])
+        browser = pw.chromium.launch(
+            executable_path=chromium, args=["--no-sandbox", "--disable-gpu"]
+        )
         try:
             yield browser
         finally:
@@ -399,8 +456,8 @@ def test_built_site_works_offline(offline_browser, shard: int) -> None:
     pages = every[shard::SHARDS]
     want_math, want_players = _static_counts(pages)
     context = offline_browser.new_context(viewport={"width": 1280, "height": 900})
-    outside: list[str] = []   # requests that would have needed the network
-    failed: list[str] = []    # requests that failed (a missing file, an aborted request)
+    outside: list[str] = []  # requests that would have needed the network
+    failed: list[str] = []  # requests that failed (a missing file, an aborted request)
 
     def route(r) -> None:
         if r.request.url.startswith(("file:", "data:", "blob:", "about:")):
@@ -439,18 +496,21 @@ def test_built_site_works_offline(offline_browser, shard: int) -> None:
             raw = sorted({m.group(0) for m in RAW_TEX.finditer(state["text"])})
             if raw:
                 i = RAW_TEX.search(state["text"]).start()
-                problems.append(f"{name}: raw TeX {raw} in the text, e.g. "
-                                f"{state['text'][max(0, i - 60):i + 60]!r}")
+                problems.append(
+                    f"{name}: raw TeX {raw} in the text, e.g. "
+                    f"{state['text'][max(0, i - 60) : i + 60]!r}"
+                )
             for k, player in enumerate(state["players"]):
                 players += 1
                 if player["buttons"] != 9 or player["icons"] != 9:
-                    problems.append(f"{name}: animation {k} has {player['buttons']} buttons, "
-                                    f"{player['icons']} with their icon (9 expected)")
+                    problems.append(
+                        f"{name}: animation {k} has {player['buttons']} buttons, "
+                        f"{player['icons']} with their icon (9 expected)"
+                    )
             if state["players"]:
                 # the player works: "next frame" shows another frame
                 page.locator(".animation button[title='Next frame']").first.click()
-                frame = page.evaluate(
-                    "() => document.querySelector('.animation img').src")
+                frame = page.evaluate("() => document.querySelector('.animation img').src")
                 if frame == state["players"][0]["frame"]:
                     problems.append(f"{name}: 'Next frame' did not change the frame")
                 if not state["fontAwesome"]:
@@ -464,29 +524,50 @@ def test_built_site_works_offline(offline_browser, shard: int) -> None:
                     explorer[0].wait_for_function("() => window.graspcompass", timeout=30_000)
                     # the Fig. 6 grasp: V1 = (-1 - sqrt(3), -3/2 - sqrt(3))
                     v1 = explorer[0].evaluate("() => window.graspcompass.get('V1')")
-                    if v1 is None or abs(v1[0] + 1 + 3 ** 0.5) > 1e-9 or (
-                            abs(v1[1] + 1.5 + 3 ** 0.5) > 1e-9):
+                    if (
+                        v1 is None
+                        or abs(v1[0] + 1 + 3**0.5) > 1e-9
+                        or (abs(v1[1] + 1.5 + 3**0.5) > 1e-9)
+                    ):
                         problems.append(f"explore.html: the explorer's V1 is {v1}")
             if len(outside) > before[0] or len(failed) > before[1]:
-                problems.append(f"{name}: requests outside the site {outside[before[0]:]}, "
-                                f"failed {failed[before[1]:]}")
+                problems.append(
+                    f"{name}: requests outside the site {outside[before[0] :]}, "
+                    f"failed {failed[before[1] :]}"
+                )
     finally:
         context.close()
-    print(f"offline: {len(pages)} pages, {typeset} with formulas, {players} animation "
-          f"players, {len(outside)} requests outside the site, {len(failed)} failed")
+    print(
+        f"offline: {len(pages)} pages, {typeset} with formulas, {players} animation "
+        f"players, {len(outside)} requests outside the site, {len(failed)} failed"
+    )
     assert not outside, f"requests that need the network: {sorted(set(outside))[:20]}"
     assert not failed, f"failed requests: {failed[:20]}"
     assert not problems, "\n".join(problems)
     # every page that has formulas in its HTML typeset them, every player was checked
-    assert typeset == want_math and players == want_players, (typeset, want_math, players,
-                                                              want_players)
+    assert typeset == want_math and players == want_players, (
+        typeset,
+        want_math,
+        players,
+        want_players,
+    )
 
 
 # -- the docs' own rules ----------------------------------------------------------------------
 def test_api_has_one_page_per_module() -> None:
     index = (DOCS / "api" / "index.md").read_text(encoding="utf-8")
-    for module in ("graspcompass", "grasp", "construction", "geometry", "expr", "render",
-                   "export", "proof", "cli", "symbols"):
+    for module in (
+        "graspcompass",
+        "grasp",
+        "construction",
+        "geometry",
+        "expr",
+        "render",
+        "export",
+        "proof",
+        "cli",
+        "symbols",
+    ):
         page = DOCS / "api" / f"{module}.md"
         assert page.is_file(), f"no API page for {module}"
         name = "graspcompass" if module == "graspcompass" else f"graspcompass.{module}"
@@ -497,8 +578,14 @@ def test_api_has_one_page_per_module() -> None:
 def test_glossary_defines_the_terms() -> None:
     text = (DOCS / "glossary.md").read_text(encoding="utf-8")
     terms = re.findall(r"^([a-zA-Z_ ]+)\n  \S", text.split("```{glossary}", 1)[1], re.M)
-    for term in ("internal force", "friction cone", "signed length", "outer envelope",
-                 "break point", "protocol"):
+    for term in (
+        "internal force",
+        "friction cone",
+        "signed length",
+        "outer envelope",
+        "break point",
+        "protocol",
+    ):
         assert term in terms, f"the glossary does not define {term!r}"
     tutorial = (DOCS / "tutorial.md").read_text(encoding="utf-8")
     assert len(re.findall(r"\{term\}`", tutorial)) >= 3
@@ -507,9 +594,17 @@ def test_glossary_defines_the_terms() -> None:
 def test_citation_file_cites_the_paper() -> None:
     cff = (ROOT / "CITATION.cff").read_text(encoding="utf-8")
     assert cff.startswith("#") and "\ncff-version: 1.2.0\n" in cff
-    for needle in ("doi: 10.1017/S0263574711001135", "journal: Robotica", "volume: 30",
-                   'issue: "5"', "family-names: Ito", "family-names: Tanaka",
-                   "family-names: Sasaki", "year: 2012", "title: \"graspcompass"):
+    for needle in (
+        "doi: 10.1017/S0263574711001135",
+        "journal: Robotica",
+        "volume: 30",
+        'issue: "5"',
+        "family-names: Ito",
+        "family-names: Tanaka",
+        "family-names: Sasaki",
+        "year: 2012",
+        'title: "graspcompass',
+    ):
         assert needle in cff, f"CITATION.cff lacks {needle!r}"
     assert "10.1017/S0263574711001135" in (DOCS / "cite.md").read_text(encoding="utf-8")
 
@@ -521,8 +616,7 @@ def test_pyproject_declares_what_the_docs_need() -> None:
     deps = " ".join(project["dependencies"])
     # plt.figure(fig) adopting a standalone Figure, as the gallery and how-tos do: 3.11
     assert re.search(r"matplotlib>=3\.(1[1-9]|[2-9]\d)", deps), deps
-    assert any(d.startswith("sphinx-copybutton") for d in project["optional-dependencies"]
-               ["docs"])
+    assert any(d.startswith("sphinx-copybutton") for d in project["optional-dependencies"]["docs"])
     urls = project.get("urls", {})
     assert urls and all(u.startswith("https://") for u in urls.values()), urls
 
@@ -530,13 +624,16 @@ def test_pyproject_declares_what_the_docs_need() -> None:
 def test_mathjax_and_player_icons_are_vendored() -> None:
     static = DOCS / "_static"
     assert (static / "mathjax" / "tex-chtml-full.js").stat().st_size > 1_000_000
-    assert len(list((static / "mathjax" / "output" / "chtml" / "fonts" / "woff-v2")
-                    .glob("*.woff"))) >= 20
+    assert (
+        len(list((static / "mathjax" / "output" / "chtml" / "fonts" / "woff-v2").glob("*.woff")))
+        >= 20
+    )
     assert (static / "fontawesome" / "fontawesome-webfont.woff2").is_file()
     conf = (DOCS / "conf.py").read_text(encoding="utf-8")
     assert 'mathjax_path = "mathjax/tex-chtml-full.js"' in conf
     assert not (static / "explorer.html").exists(), (
-        "docs/_static/explorer.html is generated at build time (docs/conf.py), not committed")
+        "docs/_static/explorer.html is generated at build time (docs/conf.py), not committed"
+    )
 
 
 def test_grouped_numpydoc_entries_render_together() -> None:
@@ -548,8 +645,11 @@ def test_grouped_numpydoc_entries_render_together() -> None:
     text = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", page.read_text(encoding="utf-8")))
     assert "x1, x2, y (number or str) – Contacts" in text
     assert text.count("– Contacts P1 = (x1, y)") == 1
-    render = re.sub(r"\s+", " ", re.sub(r"<[^>]+>", "", (HTML / "api" / "render.html")
-                                        .read_text(encoding="utf-8")))
+    render = re.sub(
+        r"\s+",
+        " ",
+        re.sub(r"<[^>]+>", "", (HTML / "api" / "render.html").read_text(encoding="utf-8")),
+    )
     assert "object_face, object_edge (str) – Fill and outline" in render
     assert "cone_face, cone_alpha (str, float)" in render
 
@@ -558,7 +658,8 @@ def test_pages_state_the_paper_correctly() -> None:
     construction = (DOCS / "construction.md").read_text(encoding="utf-8")
     # §5's collinearity is for sides of different cones; B13 is on O P2, B24 on O P1
     assert "s5-same-contact-13" in construction and "$B_{13}$ lies on the\nline $OP_2$" in (
-        construction)
+        construction
+    )
     tutorial = (DOCS / "tutorial.md").read_text(encoding="utf-8")
     assert "{ref}`(8)–(11) <eq-8>`" in tutorial
     assert "(eq-8)=\n**(8)–(11)**" in (DOCS / "paper.md").read_text(encoding="utf-8")
@@ -566,8 +667,9 @@ def test_pages_state_the_paper_correctly() -> None:
 
 def _ids(page: Path, cache: dict[Path, set[str]]) -> set[str]:
     if page not in cache:
-        cache[page] = set(re.findall(r'\bid="([^"]+)"',
-                                     page.read_text(encoding="utf-8", errors="replace")))
+        cache[page] = set(
+            re.findall(r'\bid="([^"]+)"', page.read_text(encoding="utf-8", errors="replace"))
+        )
     return cache[page]
 
 

@@ -29,18 +29,30 @@ mpmath.mp.dps = 50
 
 def paper_V(x1, x2, y, phi1, phi2, xi1, xi2):
     """V_n = (S_n, C_n) of eqs. (28)-(39), in mpmath floats of 50 digits."""
-    t = [mpmath.tan(phi1 + xi1), mpmath.tan(phi2 + xi2),
-         mpmath.tan(phi1 - xi1), mpmath.tan(phi2 - xi2)]
+    t = [
+        mpmath.tan(phi1 + xi1),
+        mpmath.tan(phi2 + xi2),
+        mpmath.tan(phi1 - xi1),
+        mpmath.tan(phi2 - xi2),
+    ]
     h = (x1 + x2) / 2
-    return [(-h + y * t[0], x2 * t[0]), (h - y * t[1], x1 * t[1]),
-            (-h + y * t[2], x2 * t[2]), (h - y * t[3], x1 * t[3])]
+    return [
+        (-h + y * t[0], x2 * t[0]),
+        (h - y * t[1], x1 * t[1]),
+        (-h + y * t[2], x2 * t[2]),
+        (h - y * t[3], x1 * t[3]),
+    ]
 
 
 def mp_value(text: str) -> mpmath.mpf:
     """An angle typed like '108.5deg' or '3*pi/7' or '6/5', evaluated independently."""
     if text.endswith("deg"):
-        return mpmath.mpf(Fraction(text[:-3]).numerator) / Fraction(text[:-3]).denominator \
-            * mpmath.pi / 180
+        return (
+            mpmath.mpf(Fraction(text[:-3]).numerator)
+            / Fraction(text[:-3]).denominator
+            * mpmath.pi
+            / 180
+        )
     if "pi" in text:
         p, q = text.replace("*pi", "").split("/")
         return mpmath.pi * int(p) / int(q)
@@ -54,8 +66,11 @@ def close(a, b, tol=1e-40):
 
 def admissible_phi(xi: mpmath.mpf, phi: mpmath.mpf) -> bool:
     up, lo = phi + xi, phi - xi
-    return (mpmath.pi / 2 < up < 3 * mpmath.pi / 2 and -mpmath.pi / 2 < lo < mpmath.pi / 2
-            and 0 < phi <= mpmath.pi)
+    return (
+        mpmath.pi / 2 < up < 3 * mpmath.pi / 2
+        and -mpmath.pi / 2 < lo < mpmath.pi / 2
+        and 0 < phi <= mpmath.pi
+    )
 
 
 # angles as a user types them: integer and one-decimal degrees, p*pi/q with q <= 24,
@@ -71,8 +86,9 @@ typed_angle = st.one_of(degrees, pi_multiples, radians)
 @given(angle=typed_angle, which=st.sampled_from(["phi1", "phi2"]))
 def test_typed_angle_gives_the_exact_construction(preset, angle, which):
     base = Grasp.preset(preset)
-    params = dict(x1=base.x1, x2=base.x2, y=base.y, phi1=base.phi1, phi2=base.phi2,
-                  xi1=base.xi1, xi2=base.xi2)
+    params = dict(
+        x1=base.x1, x2=base.x2, y=base.y, phi1=base.phi1, phi2=base.phi2, xi1=base.xi1, xi2=base.xi2
+    )
     params[which] = angle
     mp = {k: mpmath.mpf(sp.N(v, 60)) for k, v in params.items() if k != which}
     mp[which] = mp_value(angle)
@@ -104,8 +120,12 @@ def test_108_degrees_is_exact_and_small():
     g = Grasp.preset("table1a")
     g = Grasp(g.x1, g.x2, g.y, "108deg", g.phi2, mu1=g.mu1, mu2=g.mu2)
     c = internal_force_diagram(g)
-    nested = [a for n in (1, 2, 3, 4) for a in sp.preorder_traversal(c[f"V{n}"].x)
-              if isinstance(a, sp.Pow) and not a.exp.is_Integer and not a.base.is_Rational]
+    nested = [
+        a
+        for n in (1, 2, 3, 4)
+        for a in sp.preorder_traversal(c[f"V{n}"].x)
+        if isinstance(a, sp.Pow) and not a.exp.is_Integer and not a.base.is_Rational
+    ]
     assert not nested  # no nested radicals: sin/cos of 18° stay generators
     want = paper_V(2, 2, 1, mpmath.pi * 3 / 5, mpmath.pi / 2, mpmath.pi / 4, mpmath.atan(1.2))
     assert close(c["V1"].x, want[0][0]) and close(c["V1"].y, want[0][1])
@@ -114,8 +134,12 @@ def test_108_degrees_is_exact_and_small():
 
 def test_cli_steps_with_108_degrees_finishes():
     """`graspcompass steps --preset table1a --phi1 108deg` used to hang (guard: 120 s)."""
-    out = subprocess.run([sys.executable, "-m", "graspcompass", "steps", "--preset", "table1a",
-                          "--phi1", "108deg"], capture_output=True, text=True, timeout=120)
+    out = subprocess.run(
+        [sys.executable, "-m", "graspcompass", "steps", "--preset", "table1a", "--phi1", "108deg"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert out.returncode == 0, out.stderr
     assert "V1" in out.stdout and "envelope" in out.stdout
 
@@ -147,8 +171,15 @@ def test_radicals_of_several_primes_never_divide_by_zero(a, b, p):
         return
     x = sp.sqrt(p) / 2
     g = Grasp(x, 1, sp.sqrt(2) / 3, phi, "pi/2", xi1=xi, mu2=1)
-    want = paper_V(mpmath.sqrt(p) / 2, 1, mpmath.sqrt(2) / 3, mpmath.pi * a / 24,
-                   mpmath.pi / 2, mpmath.pi * b / 24, mpmath.pi / 4)
+    want = paper_V(
+        mpmath.sqrt(p) / 2,
+        1,
+        mpmath.sqrt(2) / 3,
+        mpmath.pi * a / 24,
+        mpmath.pi / 2,
+        mpmath.pi * b / 24,
+        mpmath.pi / 4,
+    )
     for V, (S, C) in zip(g.V, want):
         assert close(V.x, S) and close(V.y, C)
 
@@ -161,12 +192,15 @@ def test_sincos_keeps_preset_radicals_and_uses_generators_elsewhere():
     assert canon(s**2 + c**2 - 1) == 0
 
 
-@pytest.mark.parametrize("expr, zero", [
-    (lambda s, c: 4 * c + sp.sqrt(5) - 1, True),          # cos 108° = (1 − √5)/4
-    (lambda s, c: 4 * c + sp.sqrt(5) - 1 + sp.Rational(1, 10**30), False),
-    (lambda s, c: 2 * s * c - OpaqueSin(sp.pi / 5), False),  # sin 216° ≠ sin 36°
-    (lambda s, c: 2 * s * c + OpaqueSin(sp.pi / 5), True),   # sin 216° = −sin 36°
-])
+@pytest.mark.parametrize(
+    "expr, zero",
+    [
+        (lambda s, c: 4 * c + sp.sqrt(5) - 1, True),  # cos 108° = (1 − √5)/4
+        (lambda s, c: 4 * c + sp.sqrt(5) - 1 + sp.Rational(1, 10**30), False),
+        (lambda s, c: 2 * s * c - OpaqueSin(sp.pi / 5), False),  # sin 216° ≠ sin 36°
+        (lambda s, c: 2 * s * c + OpaqueSin(sp.pi / 5), True),  # sin 216° = −sin 36°
+    ],
+)
 def test_exact_zero_decisions_beyond_the_circle_relation(expr, zero):
     s, c = sincos(3 * sp.pi / 5)
     e = expr(s, c)
@@ -188,8 +222,11 @@ def test_cyclotomic_zero_test_against_known_identities():
 def test_decide_sign_agrees_with_50_digits(num, den, q):
     s, c = sincos(sp.pi * num / q)
     e = s * sp.Rational(num, den) - c * sp.sqrt(3) + sp.Rational(1, 7)
-    v = mpmath.sin(mpmath.pi * num / q) * mpmath.mpf(num) / den \
-        - mpmath.cos(mpmath.pi * num / q) * mpmath.sqrt(3) + mpmath.mpf(1) / 7
+    v = (
+        mpmath.sin(mpmath.pi * num / q) * mpmath.mpf(num) / den
+        - mpmath.cos(mpmath.pi * num / q) * mpmath.sqrt(3)
+        + mpmath.mpf(1) / 7
+    )
     want = 0 if abs(v) < 1e-40 else (1 if v > 0 else -1)
     assert decide_sign(e) == want
 
@@ -222,6 +259,8 @@ def test_envelope_of_lengths_of_very_different_sizes(big):
     with mpmath.workdps(800):
         for arc in env.arcs:
             t = (mpmath.mpf(sp.N(arc.theta_start, 820)) + mpmath.mpf(sp.N(arc.theta_end, 820))) / 2
-            ks = [mpmath.mpf(sp.N(s, 820)) * mpmath.sin(t)
-                  - mpmath.mpf(sp.N(c, 820)) * mpmath.cos(t) for s, c in zip(S, C)]
+            ks = [
+                mpmath.mpf(sp.N(s, 820)) * mpmath.sin(t) - mpmath.mpf(sp.N(c, 820)) * mpmath.cos(t)
+                for s, c in zip(S, C)
+            ]
             assert max(range(5), key=lambda n: ks[n]) == arc.n

@@ -18,8 +18,15 @@ from hypothesis import strategies as st
 from graspcompass.geometry import exact
 from graspcompass.geometry.trig import OpaqueCos, OpaqueSin
 
-_GENS = (sp.sqrt(2), sp.sqrt(3), sp.sqrt(5), OpaqueSin(sp.pi / 10), OpaqueCos(sp.pi / 10),
-         OpaqueSin(sp.Rational(6, 5)), OpaqueCos(sp.Rational(6, 5)))
+_GENS = (
+    sp.sqrt(2),
+    sp.sqrt(3),
+    sp.sqrt(5),
+    OpaqueSin(sp.pi / 10),
+    OpaqueCos(sp.pi / 10),
+    OpaqueSin(sp.Rational(6, 5)),
+    OpaqueCos(sp.Rational(6, 5)),
+)
 _R = exact._ring(tuple(sorted(_GENS, key=exact._gen_key)))
 
 
@@ -30,15 +37,16 @@ def _true_value(poly) -> mpmath.mpf:
         for monom, coeff in poly.terms():
             t = mpmath.mpf(int(coeff.numerator)) / int(coeff.denominator)
             for v, e in zip(values, monom):
-                t *= v**int(e)
+                t *= v ** int(e)
             total += t
         return total
 
 
-_coeff = st.fractions(min_value=-10**6, max_value=10**6, max_denominator=10**6)
+_coeff = st.fractions(min_value=-(10**6), max_value=10**6, max_denominator=10**6)
 _monom = st.tuples(*[st.integers(0, 3) for _ in _GENS])
 _poly = st.lists(st.tuples(_monom, _coeff), min_size=1, max_size=8).map(
-    lambda ts: _R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in ts}))
+    lambda ts: _R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in ts})
+)
 
 
 def _check(poly) -> None:
@@ -100,11 +108,19 @@ def test_integer_balls_hold_the_true_value(poly, prec):
 
 
 @settings(max_examples=100, deadline=None)
-@given(st.lists(st.tuples(st.integers(-9, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
-                min_size=1, max_size=4),
-       st.lists(st.tuples(st.integers(1, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
-                min_size=1, max_size=3),
-       st.sampled_from([15, 30, 50]))
+@given(
+    st.lists(
+        st.tuples(st.integers(-9, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
+        min_size=1,
+        max_size=4,
+    ),
+    st.lists(
+        st.tuples(st.integers(1, 9), st.sampled_from((*_GENS[:3], sp.Integer(1)))),
+        min_size=1,
+        max_size=3,
+    ),
+    st.sampled_from([15, 30, 50]),
+)
 def test_approx_has_the_digits_it_promises(num, den, dps):
     """approx(expr, dps) (integer balls, then a quotient) against sympy.N at 80 digits."""
     e = sum((k * g for k, g in num), sp.Integer(0)) / sum((k * g for k, g in den), sp.Integer(0))
@@ -136,27 +152,45 @@ def test_direct_expression_is_sympys(terms):
 
 def _sympy_sum(gens, terms) -> sp.Expr:
     """The polynomial built by sympy's own (evaluating) Add and Mul."""
-    return sp.Add(*[sp.Rational(c.numerator, c.denominator) * sp.Mul(*[g**e for g, e in
-                                                                        zip(gens, m)])
-                    for m, c in terms.items() if c])
+    return sp.Add(
+        *[
+            sp.Rational(c.numerator, c.denominator) * sp.Mul(*[g**e for g, e in zip(gens, m)])
+            for m, c in terms.items()
+            if c
+        ]
+    )
 
 
-_MIXED_GENS = tuple(sorted((sp.sqrt(2), sp.sqrt(3), OpaqueSin(sp.pi / 10), OpaqueCos(sp.pi / 10),
-                            sp.Symbol("x1", positive=True), sp.Symbol("mu1", positive=True)),
-                           key=exact._gen_key))
+_MIXED_GENS = tuple(
+    sorted(
+        (
+            sp.sqrt(2),
+            sp.sqrt(3),
+            OpaqueSin(sp.pi / 10),
+            OpaqueCos(sp.pi / 10),
+            sp.Symbol("x1", positive=True),
+            sp.Symbol("mu1", positive=True),
+        ),
+        key=exact._gen_key,
+    )
+)
 _MIXED_R = exact._ring(_MIXED_GENS)
 
 
 @settings(max_examples=80, deadline=None)
-@given(st.dictionaries(st.tuples(*[st.integers(0, 2)] * len(_MIXED_GENS)), _coeff, min_size=1,
-                       max_size=12))
+@given(
+    st.dictionaries(
+        st.tuples(*[st.integers(0, 2)] * len(_MIXED_GENS)), _coeff, min_size=1, max_size=12
+    )
+)
 def test_direct_expression_with_trig_and_symbols_is_sympys(terms):
     """The builder makes sympy's own tree for every kind of generator (the factors in
     sympy's order, reduced roots multiplied into one), up to 48 terms."""
     from sympy.core.cache import clear_cache
 
-    terms = {m: c for m, c in terms.items()
-             if all(e <= 1 for g, e in zip(_MIXED_GENS, m) if g.is_Pow)}  # roots reduced
+    terms = {
+        m: c for m, c in terms.items() if all(e <= 1 for g, e in zip(_MIXED_GENS, m) if g.is_Pow)
+    }  # roots reduced
     if not any(terms.values()):
         return
     p = _MIXED_R.from_dict({m: sp.QQ(c.numerator, c.denominator) for m, c in terms.items()})
@@ -199,15 +233,34 @@ def test_nonzero_by_the_signs_of_terms_is_never_claimed_for_a_value_that_can_van
     a = sp.Symbol("a", positive=True)
     u = sp.Symbol("u")  # no assumptions: not even real
     vanish = [  # each is 0 at some point allowed by the assumptions
-        x - 1, x * y, y, r, r**2, r + 1, x * r**2, y**2 - y, x * y - x * y**2,
-        sp.sin(a) * x + x, sp.sin(a) + sp.cos(a), x * sp.cos(a), u**2 + 1,
-        x**2 * y + y - x * y, (x - 1) * (y + 1) + 0,
+        x - 1,
+        x * y,
+        y,
+        r,
+        r**2,
+        r + 1,
+        x * r**2,
+        y**2 - y,
+        x * y - x * y**2,
+        sp.sin(a) * x + x,
+        sp.sin(a) + sp.cos(a),
+        x * sp.cos(a),
+        u**2 + 1,
+        x**2 * y + y - x * y,
+        (x - 1) * (y + 1) + 0,
     ]
     for e in vanish:
         assert Frac.of(e).is_zero() is not False, e
     never = [  # positive (or negative) everywhere on the assumptions
-        x, x + y, x * y + 1, -x - y - 1, r**2 + x, r**2 * y + x * y + x, (x + 1)**2,
-        -(x**3) * (r**2 + 1) - y, sp.sin(a)**2 + 1,
+        x,
+        x + y,
+        x * y + 1,
+        -x - y - 1,
+        r**2 + x,
+        r**2 * y + x * y + x,
+        (x + 1) ** 2,
+        -(x**3) * (r**2 + 1) - y,
+        sp.sin(a) ** 2 + 1,
     ]
     for e in never:
         assert Frac.of(e).is_zero() is False, e

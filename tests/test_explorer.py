@@ -24,11 +24,11 @@ from graspcompass.render.explorer import Explorer, explore, explore_notebook
 
 
 def expected_envelope(p: dict[str, float], samples: int) -> np.ndarray:
-    S, C = closed_form_SC(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], p["mu1"], p["mu2"],
-                          lib=np)
+    S, C = closed_form_SC(
+        p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], p["mu1"], p["mu2"], lib=np
+    )
     t = np.linspace(0.0, 2 * np.pi, samples)
-    k = np.max([np.zeros_like(t), *(s * np.sin(t) - c * np.cos(t) for s, c in zip(S, C))],
-               axis=0)
+    k = np.max([np.zeros_like(t), *(s * np.sin(t) - c * np.cos(t) for s, c in zip(S, C))], axis=0)
     return np.column_stack([k * np.sin(t), -k * np.cos(t)])
 
 

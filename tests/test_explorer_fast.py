@@ -30,6 +30,7 @@ SAMPLES = 181
 
 def closed_form_V(p: dict[str, float]) -> np.ndarray:
     """V_n = (S_n, C_n), eqs. (28)-(39), with tan(φ ± ξ) in the μ form of eq. (23)."""
+
     def tan_pm(phi: float, mu: float) -> tuple[float, float]:
         s, c = math.sin(phi), math.cos(phi)
         return (s + mu * c) / (c - mu * s), (s - mu * c) / (c + mu * s)
@@ -39,7 +40,7 @@ def closed_form_V(p: dict[str, float]) -> np.ndarray:
     x1, x2, y = p["x1"], p["x2"], p["y"]
     h = (x1 + x2) / 2
     S = [-h + y * t1p, h - y * t2p, -h + y * t1m, h - y * t2m]  # (28), (34), (36), (38)
-    C = [x2 * t1p, x1 * t2p, x2 * t1m, x1 * t2m]                # (29), (35), (37), (39)
+    C = [x2 * t1p, x1 * t2p, x2 * t1m, x1 * t2m]  # (29), (35), (37), (39)
     return np.column_stack([S, C])
 
 
@@ -99,9 +100,13 @@ def test_a_changed_explorer_draws_what_a_new_one_draws(ex):
     ex.set_params(x2=2.5)
     p = dict(ex.params)
     assert p["x1"] == pytest.approx(1.6, abs=0.05) and p["theta"] == pytest.approx(
-        math.radians(135), abs=0.02)
-    fresh = Explorer(Grasp(*(p[k] for k in ("x1", "x2", "y", "phi1", "phi2")),
-                           mu1=p["mu1"], mu2=p["mu2"]), samples=SAMPLES, theta=p["theta"])
+        math.radians(135), abs=0.02
+    )
+    fresh = Explorer(
+        Grasp(*(p[k] for k in ("x1", "x2", "y", "phi1", "phi2")), mu1=p["mu1"], mu2=p["mu2"]),
+        samples=SAMPLES,
+        theta=p["theta"],
+    )
     got, want = picture(ex), picture(fresh)
     for name in want:
         np.testing.assert_allclose(got[name], want[name], rtol=0, atol=1e-9, err_msg=name)
@@ -114,8 +119,9 @@ def test_a_changed_explorer_draws_what_a_new_one_draws(ex):
     # the envelope k_grasp(θ) e(θ), eq. (25), and H at the slider's θ
     t = np.linspace(0, 2 * np.pi, SAMPLES)
     k = np.maximum(0, (np.outer(V[:, 0], np.sin(t)) - np.outer(V[:, 1], np.cos(t))).max(0))
-    np.testing.assert_allclose(got["envelope"], np.column_stack([k * np.sin(t), -k * np.cos(t)]),
-                               rtol=0, atol=1e-9)
+    np.testing.assert_allclose(
+        got["envelope"], np.column_stack([k * np.sin(t), -k * np.cos(t)]), rtol=0, atol=1e-9
+    )
     th = p["theta"]
     kt = max(0.0, *(s * math.sin(th) - c * math.cos(th) for s, c in V))
     np.testing.assert_allclose(got["H"][0], [kt * math.sin(th), -kt * math.cos(th)], atol=1e-9)
@@ -134,8 +140,9 @@ def test_V_is_the_closed_form_on_random_grasps(seed):
             p[f"phi{i}"], p[f"mu{i}"] = phi, math.tan(xi)
         ex.set_params(**p)
         assert ex.error is None
-        np.testing.assert_allclose(ex.points.get_xydata()[-4:], closed_form_V(p), rtol=1e-9,
-                                   atol=1e-9)
+        np.testing.assert_allclose(
+            ex.points.get_xydata()[-4:], closed_form_V(p), rtol=1e-9, atol=1e-9
+        )
 
 
 def test_near_a_bound_of_condition_1_the_grasp_computes():
@@ -158,8 +165,9 @@ def test_no_grasp_and_no_construction_per_change(monkeypatch):
     calls = []
     monkeypatch.setattr(explorer, "Grasp", lambda *a, **k: calls.append(a) or Grasp(*a, **k))
     monkeypatch.setattr(explorer, "grasp_scene", lambda *a: calls.append(a))
-    for i, (name, value) in enumerate((("x1", 1.1), ("y", 0.8), ("phi2", 1.1), ("mu1", 1.3),
-                                       ("theta", 2.0), ("x2", 0.7))):
+    for i, (name, value) in enumerate(
+        (("x1", 1.1), ("y", 0.8), ("phi2", 1.1), ("mu1", 1.3), ("theta", 2.0), ("x2", 0.7))
+    ):
         ex.set_params(**{name: value})
         ex.drag("P1", 0.9 + 0.05 * i, 0.4)
     assert calls == [] and ex.error is None
@@ -170,8 +178,15 @@ def test_invalid_parameters_show_the_grasps_message_and_recover(ex):
     before = picture(ex)
     ex.set_params(phi1=math.radians(20.0), mu1=0.1)
     with pytest.raises(InvalidGraspError) as err:
-        Grasp(ex.params["x1"], ex.params["x2"], ex.params["y"], math.radians(20.0),
-              ex.params["phi2"], mu1=0.1, mu2=ex.params["mu2"])
+        Grasp(
+            ex.params["x1"],
+            ex.params["x2"],
+            ex.params["y"],
+            math.radians(20.0),
+            ex.params["phi2"],
+            mu1=0.1,
+            mu2=ex.params["mu2"],
+        )
     text = ex.message.get_text()
     assert ex.message.get_visible() and ex.error == str(err.value)
     assert "condition (1)" in text and "φ1 + ξ1" in text

@@ -39,13 +39,31 @@ SLIDERS = ["x_1", "x_2", "y_P", "φ_1", "φ_2", "μ_1", "μ_2"]
 # child tags documented for geogebra.xml ("Common XML tags and types", GeoGebra manual)
 CONSTRUCTION_TAGS = {"command", "element", "expression", "cascell"}
 COMMAND_TAGS = {"input", "output", "outputSizes", "casMap"}
-ELEMENT_TAGS = {"show", "objColor", "labelMode", "lineStyle", "pointSize", "coords", "caption",
-                "breakpoint", "value", "slider", "animation", "layer", "fixed", "auxiliary",
-                "labelOffset", "angleStyle"}
+ELEMENT_TAGS = {
+    "show",
+    "objColor",
+    "labelMode",
+    "lineStyle",
+    "pointSize",
+    "coords",
+    "caption",
+    "breakpoint",
+    "value",
+    "slider",
+    "animation",
+    "layer",
+    "fixed",
+    "auxiliary",
+    "labelOffset",
+    "angleStyle",
+}
 #: Objects the .ggb adds to the protocol's steps: the friction cones and the compass
 #: transfers of V_n (issue 23).
-EXTRAS = {"cone1", "cone2", *(f"{k}V{n}{a}" for n in (1, 2, 3, 4) for k in ("", "arc")
-                              for a in "xy")}
+EXTRAS = {
+    "cone1",
+    "cone2",
+    *(f"{k}V{n}{a}" for n in (1, 2, 3, 4) for k in ("", "arc") for a in "xy"),
+}
 ROOT_TAGS = {"gui", "euclidianView", "kernel", "construction", "algebraView", "scripting"}
 
 
@@ -111,8 +129,23 @@ def test_ggb_every_object_is_defined_by_a_command_in_protocol_order(fig6):
     # no object is a fixed coordinate pair, and each uses only earlier objects
     known = set(SLIDERS) | {"xAxis", "yAxis"}
     words = re.compile(r"[^\W\d]\w*")
-    builtins = {"sin", "cos", "abs", "x", "y", "t", "pi", "Midpoint", "Line", "Center",
-                "Translate", "Vector", "OrthogonalLine", "Distance", "UnitVector"}
+    builtins = {
+        "sin",
+        "cos",
+        "abs",
+        "x",
+        "y",
+        "t",
+        "pi",
+        "Midpoint",
+        "Line",
+        "Center",
+        "Translate",
+        "Vector",
+        "OrthogonalLine",
+        "Distance",
+        "UnitVector",
+    }
     for label, how, what, args, _ in proto[7:]:
         text = " ".join(args) if how == "command" else what
         assert not re.fullmatch(r"\(\s*-?[\d.]+\s*,\s*-?[\d.]+\s*\)", text)
@@ -139,8 +172,10 @@ def test_ggb_commands_follow_the_paper_recipe(fig6):
         assert d[f"V{n}x"][2:4] == ("Mirror", (f"Translate[X{n}, Vector[O_M, O]]", "O"))
         assert d[f"V{n}y"][2:4] == ("Mirror", (f"Y{n}", "O"))
         assert d[f"arcV{n}x"][2:4] == ("Circle", ("O", f"V{n}x"))
-        assert d[f"V{n}"][2:4] == ("Intersect", (f"OrthogonalLine[V{n}x, axisX]",
-                                                 f"OrthogonalLine[V{n}y, axisY]"))
+        assert d[f"V{n}"][2:4] == (
+            "Intersect",
+            (f"OrthogonalLine[V{n}x, axisX]", f"OrthogonalLine[V{n}y, axisY]"),
+        )
         assert d[f"circle{n}"][2:4] == ("Circle", (f"Midpoint[O, V{n}]", "O"))
     assert d["B12"][2:4] == ("Mirror", ("O", "Line[Center[circle1], Center[circle2]]"))
     for i, sides in ((1, (1, 3)), (2, (2, 4))):  # each cone once its sides exist (Fig. 2)
@@ -156,7 +191,7 @@ def _split_pair(text: str) -> tuple[str, str]:
     for i, ch in enumerate(text):
         depth += {"(": 1, ")": -1}.get(ch, 0)
         if ch == "," and depth == 1:
-            return text[1:i], text[i + 1:-1]
+            return text[1:i], text[i + 1 : -1]
     raise AssertionError(text)
 
 
@@ -168,16 +203,19 @@ def test_ggb_cone_sides_point_along_phi_plus_minus_xi():
     vals = {"φ_1": phi1, "φ_2": phi2, "μ_1": mu1, "μ_2": mu2}
     syms = {k: sp.Float(v) for k, v in vals.items()}
     xi1, xi2 = math.atan(mu1), math.atan(mu2)
-    expected = {1: (-math.sin(phi1 + xi1), -math.cos(phi1 + xi1)),  # clockwise at P1
-                3: (-math.sin(phi1 - xi1), -math.cos(phi1 - xi1)),
-                2: (math.sin(phi2 + xi2), -math.cos(phi2 + xi2)),  # counter-clockwise at P2
-                4: (math.sin(phi2 - xi2), -math.cos(phi2 - xi2))}
+    expected = {
+        1: (-math.sin(phi1 + xi1), -math.cos(phi1 + xi1)),  # clockwise at P1
+        3: (-math.sin(phi1 - xi1), -math.cos(phi1 - xi1)),
+        2: (math.sin(phi2 + xi2), -math.cos(phi2 + xi2)),  # counter-clockwise at P2
+        4: (math.sin(phi2 - xi2), -math.cos(phi2 - xi2)),
+    }
     for n, (ex, ey) in expected.items():
         through, direction = d[f"side{n}"][3]
         assert through == ("P1" if n in (1, 3) else "P2")
         assert direction.startswith(through + " + ")
-        dx, dy = (float(parse_exact(t, symbols=syms))
-                  for t in _split_pair(direction[len(through) + 3:]))
+        dx, dy = (
+            float(parse_exact(t, symbols=syms)) for t in _split_pair(direction[len(through) + 3 :])
+        )
         assert abs(dx * ey - dy * ex) < 1e-12 and dx * ex + dy * ey > 0
 
 
@@ -191,38 +229,51 @@ GEOGEBRA = shutil.which("geogebra")
 XVFB = shutil.which("xvfb-run")
 
 
-@pytest.mark.skipif(GEOGEBRA is None or XVFB is None,
-                    reason="GeoGebra or xvfb-run not installed (Debian packages geogebra, xvfb, "
-                           "xauth: .ci/apt-packages.txt); the .ggb is then checked structurally")
+@pytest.mark.skipif(
+    GEOGEBRA is None or XVFB is None,
+    reason="GeoGebra or xvfb-run not installed (Debian packages geogebra, xvfb, "
+    "xauth: .ci/apt-packages.txt); the .ggb is then checked structurally",
+)
 def test_real_geogebra_recomputes_the_construction_from_moved_sliders(fig6, tmp_path):
     """GeoGebra opens the fig6 file with its sliders moved to another grasp and
     recomputes every object; its values match the closed form (28)-(39)."""
     new = {"x_1": 1.1, "x_2": 0.7, "y_P": 0.4, "φ_1": 1.2, "φ_2": 1.4, "μ_1": 0.9, "μ_2": 1.1}
     xml = read_ggb_xml(to_ggb(fig6))
     for label, v in new.items():
-        xml, count = re.subn(rf'(<element type="(?:numeric|angle)" label="{label}">\s*'
-                             r'<caption[^>]*/>\s*<value val=")[^"]*"', rf'\g<1>{v!r}"', xml)
+        xml, count = re.subn(
+            rf'(<element type="(?:numeric|angle)" label="{label}">\s*'
+            r'<caption[^>]*/>\s*<value val=")[^"]*"',
+            rf'\g<1>{v!r}"',
+            xml,
+        )
         assert count == 1
     src = tmp_path / "moved.ggb"
     with zipfile.ZipFile(src, "w") as z:
         z.writestr("geogebra.xml", xml.encode("utf-8"))
     out = tmp_path / "values.txt"
-    run = subprocess.run([XVFB, "-a", GEOGEBRA, "--showSplash=false",
-                          f"--regressionFile={out}", str(src)], check=False, timeout=240,
-                         capture_output=True, text=True,
-                         env={"HOME": str(tmp_path), "PATH": "/usr/bin:/bin"})
+    run = subprocess.run(
+        [XVFB, "-a", GEOGEBRA, "--showSplash=false", f"--regressionFile={out}", str(src)],
+        check=False,
+        timeout=240,
+        capture_output=True,
+        text=True,
+        env={"HOME": str(tmp_path), "PATH": "/usr/bin:/bin"},
+    )
     assert out.exists(), f"GeoGebra wrote no values:\n{run.stdout[-2000:]}\n{run.stderr[-2000:]}"
     text = out.read_text(encoding="utf-8")
-    pts = {m[1]: (float(m[2]), float(m[3])) for m in
-           re.finditer(r"^Point (\S+) = .* == (\S+) (\S+)$", text, re.M)}
+    pts = {
+        m[1]: (float(m[2]), float(m[3]))
+        for m in re.finditer(r"^Point (\S+) = .* == (\S+) (\S+)$", text, re.M)
+    }
     S, C = closed_form_SC(1.1, 0.7, 0.4, 1.2, 1.4, 0.9, 1.1, lib=np)
     for n in (1, 2, 3, 4):
         assert pts[f"V{n}"] == pytest.approx((S[n - 1], C[n - 1]), abs=2e-6, rel=2e-6)
     mine = internal_force_diagram(Grasp(1.1, 0.7, 0.4, 1.2, 1.4, mu1=0.9, mu2=1.1))
     for s in mine.steps:
         if s.kind == "point":
-            assert pts[s.name] == pytest.approx((float(s.obj.x), float(s.obj.y)),
-                                                abs=2e-6, rel=2e-6), s.name
+            assert pts[s.name] == pytest.approx(
+                (float(s.obj.x), float(s.obj.y)), abs=2e-6, rel=2e-6
+            ), s.name
     assert "Curve kGrasp" in text
 
 
@@ -231,13 +282,20 @@ def test_real_geogebra_recomputes_the_construction_from_moved_sliders(fig6, tmp_
 # ---------------------------------------------------------------------------
 PDFLATEX = shutil.which("pdflatex")
 NEEDS_TEX = pytest.mark.skipif(
-    PDFLATEX is None, reason="pdflatex not found: CI installs Debian's texlive-latex-base and "
-                             "texlive-pictures from .ci/apt-packages.txt")
+    PDFLATEX is None,
+    reason="pdflatex not found: CI installs Debian's texlive-latex-base and "
+    "texlive-pictures from .ci/apt-packages.txt",
+)
 
 
 def _pdflatex(tex: Path) -> Path:
-    r = subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", tex.name],
-                       cwd=tex.parent, capture_output=True, text=True, timeout=120)
+    r = subprocess.run(
+        [PDFLATEX, "-interaction=nonstopmode", "-halt-on-error", tex.name],
+        cwd=tex.parent,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert r.returncode == 0, r.stdout[-3000:]
     pdf = tex.with_suffix(".pdf")
     assert pdf.read_bytes()[:5] == b"%PDF-"
@@ -257,20 +315,41 @@ def test_tikz_of_the_presets_compiles_with_pdflatex(preset, tmp_path):
 def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tmp_path):
     """A page cut to the picture (not Letter or A4), its title (escaped: any text) above and
     a legend of the styles below, compiled without an overfull box (issue 23)."""
-    own = internal_force_diagram(Grasp(x1="6/5", x2="3/10", y="2/5", phi1="61*pi/180",
-                                       phi2="118*pi/180", xi1="67*pi/180", xi2="49*pi/180"))
+    own = internal_force_diagram(
+        Grasp(
+            x1="6/5",
+            x2="3/10",
+            y="2/5",
+            phi1="61*pi/180",
+            phi2="118*pi/180",
+            xi1="67*pi/180",
+            xi2="49*pi/180",
+        )
+    )
     tex = tmp_path / "own.tex"
     tex.write_text(to_tikz(own, title=title), encoding="utf-8")
     pdf = _pdflatex(tex)
     log = tex.with_suffix(".log").read_text("latin-1")
     # again with the PDF objects uncompressed, to read the page's MediaBox from the bytes
-    r = subprocess.run([PDFLATEX, "-interaction=nonstopmode", "-halt-on-error",
-                        "-jobname=plain", "\\pdfobjcompresslevel=0\\input{own.tex}"],
-                       cwd=tmp_path, capture_output=True, text=True, timeout=120)
+    r = subprocess.run(
+        [
+            PDFLATEX,
+            "-interaction=nonstopmode",
+            "-halt-on-error",
+            "-jobname=plain",
+            "\\pdfobjcompresslevel=0\\input{own.tex}",
+        ],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert r.returncode == 0, r.stdout[-2000:]
     assert "Overfull" not in log and "mktexpk" not in log  # no bitmap font either
-    boxes = re.findall(rb"/MediaBox\s*\[\s*([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)",
-                       (tmp_path / "plain.pdf").read_bytes())
+    boxes = re.findall(
+        rb"/MediaBox\s*\[\s*([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)",
+        (tmp_path / "plain.pdf").read_bytes(),
+    )
     assert len(boxes) == 1
     w, h = float(boxes[0][2]) - float(boxes[0][0]), float(boxes[0][3]) - float(boxes[0][1])
     # 11 cm of picture + 0.4 cm + a 4 pt border each side (and, where points crowd, 0.5 cm
@@ -289,12 +368,18 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
     else:
         assert r"100\% \{x\_{}1\} \& \$\#\~{}\^{}\textbackslash{}" in head
         assert r"$\varphi$ = $\pi$/3, $\sqrt{3}$ $\approx$ 1.7 ?" in head
-    for entry in ("perpendicular to a side", "signed length", "break point", "envelope",
-                  "friction cone"):
+    for entry in (
+        "perpendicular to a side",
+        "signed length",
+        "break point",
+        "envelope",
+        "friction cone",
+    ):
         assert entry in text
     if shutil.which("pdftoppm"):  # the page as a picture: something is drawn on it
-        subprocess.run(["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path,
-                       check=True, timeout=60)
+        subprocess.run(
+            ["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path, check=True, timeout=60
+        )
         assert list(tmp_path.glob("page*.png"))
 
 
@@ -302,8 +387,11 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
 def test_tikz_fragment_compiles_inside_a_document(fig6, tmp_path):
     (tmp_path / "pic.tex").write_text(to_tikz(fig6, standalone=False), encoding="utf-8")
     doc = tmp_path / "doc.tex"
-    doc.write_text("\\documentclass{article}\\usepackage{tikz}\\begin{document}\n"
-                   "\\input{pic.tex}\n\\end{document}\n", encoding="utf-8")
+    doc.write_text(
+        "\\documentclass{article}\\usepackage{tikz}\\begin{document}\n"
+        "\\input{pic.tex}\n\\end{document}\n",
+        encoding="utf-8",
+    )
     _pdflatex(doc)
 
 
@@ -335,6 +423,7 @@ def test_svg_is_standalone_labelled_and_flipped(fig6):
 
     def cy(name: str) -> float:
         return float(groups[name].find("s:circle", ns).attrib["cy"])
+
     # V1 = (−1 − √3, −3/2 − √3) lies below O and V2 = (√3, −3/2) too: larger screen y
     assert cy("V1") > cy("V2") > cy("O")
     assert cy("P1") < cy("O")  # the contacts are above O (y = 1/2)
@@ -346,18 +435,26 @@ def test_png_and_pdf_go_through_the_renderer(fig6, tmp_path):
 
 
 def test_export_does_not_import_matplotlib():
-    code = ("import sys, graspcompass.export as e; from graspcompass import Grasp, "
-            "internal_force_diagram as d; c = d(Grasp.preset('table1a')); e.to_svg(c); "
-            "e.to_tikz(c); e.to_ggb(c); e.dumps(c); assert 'matplotlib' not in sys.modules")
-    r = subprocess.run([sys.executable, "-c", code], env={"PYTHONPATH": str(SRC)},
-                       capture_output=True, text=True, timeout=120)
+    code = (
+        "import sys, graspcompass.export as e; from graspcompass import Grasp, "
+        "internal_force_diagram as d; c = d(Grasp.preset('table1a')); e.to_svg(c); "
+        "e.to_tikz(c); e.to_ggb(c); e.dumps(c); assert 'matplotlib' not in sys.modules"
+    )
+    r = subprocess.run(
+        [sys.executable, "-c", code],
+        env={"PYTHONPATH": str(SRC)},
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert r.returncode == 0, r.stderr
 
 
 def test_formats_and_extensions(tmp_path):
     assert FORMATS == ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
-    assert [guess_format(f"a.{e}") for e in ("ggb", "tex", "svg", "json", "png", "pdf", "html")] \
-        == ["ggb", "tikz", "svg", "json", "png", "pdf", "html"]
+    assert [
+        guess_format(f"a.{e}") for e in ("ggb", "tex", "svg", "json", "png", "pdf", "html")
+    ] == ["ggb", "tikz", "svg", "json", "png", "pdf", "html"]
     with pytest.raises(ValueError, match="cannot tell the format"):
         guess_format("a.docx")
 
@@ -384,16 +481,18 @@ def test_json_schema_and_exact_strings(fig6):
     assert_same(fig6, loads(dumps(fig6)))
 
 
-@settings(max_examples=6, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow])
+@settings(
+    max_examples=6, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 @given(exact_params())
 def test_json_round_trip_exact_grasps(p):
     c = internal_force_diagram(p.grasp())
     assert_same(c, loads(dumps(c)))
 
 
-@settings(max_examples=10, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow])
+@settings(
+    max_examples=10, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 @given(float_params())
 def test_json_round_trip_float_grasps(p):
     c = internal_force_diagram(p.grasp())
@@ -445,11 +544,13 @@ def test_cli_export_step_and_errors(tmp_path):
     run_export(args, Grasp.preset("fig6"))
     assert len(loads((tmp_path / "s.json").read_text())) == 9
     with pytest.raises(ValueError, match="out of range"):
-        run_export(_parse("export", "-o", str(tmp_path / "s.json"), "--step", "999"),
-                   Grasp.preset("fig6"))
+        run_export(
+            _parse("export", "-o", str(tmp_path / "s.json"), "--step", "999"), Grasp.preset("fig6")
+        )
     with pytest.raises(ValueError, match="TikZ only"):
-        run_export(_parse("export", "-o", str(tmp_path / "s.svg"), "--fragment"),
-                   Grasp.preset("fig6"))
+        run_export(
+            _parse("export", "-o", str(tmp_path / "s.svg"), "--fragment"), Grasp.preset("fig6")
+        )
 
 
 def test_cli_explore_without_display_is_a_one_line_error():
@@ -510,16 +611,26 @@ def _beyond_limits():
 
     half = dict(phi1="pi/2", phi2="pi/2", mu2=1)
     return {
-        "four square roots": (dict(x1="sqrt(2)", x2="sqrt(3)", y="sqrt(5)", mu1="sqrt(7)",
-                                   **half), "4 distinct irrational numbers"),
-        "a large length": (dict(x1=int(MAX_MAGNITUDE) * 10, x2=1, y=0, mu1=1, **half),
-                           "grasp.x1: expected a number at most 1e+15"),
-        "a long title": (dict(x1=1, x2=1, y=0, mu1=1, title="t" * (MAX_TITLE + 1), **half),
-                         "grasp.title: a text of 1001 characters"),
-        "a wide float": (dict(x1=sp.Float("1.1", 400), x2=1.0, y=0.0, phi1=1.5, phi2=1.5,
-                              mu1=1.0, mu2=1.0), "grasp.x1.bits: expected an integer"),
-        "a large radicand": (dict(x1=f"sqrt({2**70 + 1})", x2=1, y=0, mu1=1, **half),
-                             "a square root of a number of more than 64 bits"),
+        "four square roots": (
+            dict(x1="sqrt(2)", x2="sqrt(3)", y="sqrt(5)", mu1="sqrt(7)", **half),
+            "4 distinct irrational numbers",
+        ),
+        "a large length": (
+            dict(x1=int(MAX_MAGNITUDE) * 10, x2=1, y=0, mu1=1, **half),
+            "grasp.x1: expected a number at most 1e+15",
+        ),
+        "a long title": (
+            dict(x1=1, x2=1, y=0, mu1=1, title="t" * (MAX_TITLE + 1), **half),
+            "grasp.title: a text of 1001 characters",
+        ),
+        "a wide float": (
+            dict(x1=sp.Float("1.1", 400), x2=1.0, y=0.0, phi1=1.5, phi2=1.5, mu1=1.0, mu2=1.0),
+            "grasp.x1.bits: expected an integer",
+        ),
+        "a large radicand": (
+            dict(x1=f"sqrt({2**70 + 1})", x2=1, y=0, mu1=1, **half),
+            "a square root of a number of more than 64 bits",
+        ),
     }
 
 
@@ -569,8 +680,12 @@ def test_tikz_fig6_has_the_zoomed_inset_and_compiles(fig6, tmp_path):
     pdf = _pdflatex(tex)
     assert "Overfull" not in tex.with_suffix(".log").read_text("latin-1")
     if shutil.which("pdftoppm"):
-        subprocess.run(["pdftoppm", "-r", "20", "-gray", pdf.name, "page"], cwd=tmp_path,
-                       check=True, timeout=60)
+        subprocess.run(
+            ["pdftoppm", "-r", "20", "-gray", pdf.name, "page"],
+            cwd=tmp_path,
+            check=True,
+            timeout=60,
+        )
         (pgm,) = tmp_path.glob("page*.pgm")
         raw = pgm.read_bytes()
         head = raw.split(b"\n", 3)

@@ -53,11 +53,18 @@ def _point(rec: dict) -> tuple[sp.Expr, sp.Expr]:
 
 
 # -- §1: internal_force_diagram replays the shipped file -------------------------------------
-@pytest.mark.parametrize("grasp", [
-    "fig6", "table1a", "table1b", "table1c",
-    Grasp("7/10", "13/10", "3/10", "7*pi/12", "5*pi/12", mu1="1/2", mu2="9/10"),
-    Grasp(0.7, 1.3, 0.3, 1.9, 1.3, mu1=0.5, mu2=0.9),
-], ids=["fig6", "table1a", "table1b", "table1c", "exact", "float"])
+@pytest.mark.parametrize(
+    "grasp",
+    [
+        "fig6",
+        "table1a",
+        "table1b",
+        "table1c",
+        Grasp("7/10", "13/10", "3/10", "7*pi/12", "5*pi/12", mu1="1/2", mu2="9/10"),
+        Grasp(0.7, 1.3, 0.3, 1.9, 1.3, mu1=0.5, mu2=0.9),
+    ],
+    ids=["fig6", "table1a", "table1b", "table1c", "exact", "float"],
+)
 def test_internal_force_diagram_is_the_python_specs_protocol(grasp):
     g = Grasp.preset(grasp) if isinstance(grasp, str) else grasp
     a, b = internal_force_diagram(g), _internal_force_diagram_from_specs(g)
@@ -66,8 +73,9 @@ def test_internal_force_diagram_is_the_python_specs_protocol(grasp):
 
 
 # -- (a) the shipped recipe as a file: the same output -----------------------------------------
-@pytest.mark.parametrize("argv", [
-    ("steps",), ("steps", "--json"), ("steps", "--preset", "table1c", "--mu1", "0.7")])
+@pytest.mark.parametrize(
+    "argv", [("steps",), ("steps", "--json"), ("steps", "--preset", "table1c", "--mu1", "0.7")]
+)
 def test_steps_of_the_paper_file_are_todays(capsys, files, argv):
     code, without, _ = run(capsys, *argv)
     assert code == 0
@@ -90,13 +98,15 @@ def test_export_of_the_paper_file_is_todays(capsys, files, tmp_path, fmt):
 def test_draw_of_the_paper_file_is_todays(capsys, files, tmp_path):
     a, b = tmp_path / "a.png", tmp_path / "b.png"
     assert run(capsys, "draw", "--preset", "table1a", "-o", a, "-q")[0] == 0
-    assert run(capsys, "draw", "--file", files["paper"], "--preset", "table1a", "-o", b,
-               "-q")[0] == 0
+    assert (
+        run(capsys, "draw", "--file", files["paper"], "--preset", "table1a", "-o", b, "-q")[0] == 0
+    )
     assert a.read_bytes() == b.read_bytes()
 
 
 def test_animate_and_explore_of_the_paper_file_get_todays_construction(
-        capsys, files, tmp_path, monkeypatch):
+    capsys, files, tmp_path, monkeypatch
+):
     import graspcompass.render.animate as animate
     import graspcompass.render.explorer as explorer
 
@@ -110,8 +120,7 @@ def test_animate_and_explore_of_the_paper_file_get_todays_construction(
     monkeypatch.setattr(explorer, "explore", lambda g, **kw: seen.append(g))
     for extra in ((), ("--file", files["paper"])):
         assert run(capsys, "animate", "table1c", *extra, "-o", tmp_path / "x.gif")[0] == 2
-    assert seen[0].steps == seen[1].steps == internal_force_diagram(
-        Grasp.preset("table1c")).steps
+    assert seen[0].steps == seen[1].steps == internal_force_diagram(Grasp.preset("table1c")).steps
     assert run(capsys, "explore", files["paper"], "--preset", "table1a")[0] == 0
     assert seen[2].params == Grasp.preset("table1a").params
 
@@ -146,8 +155,21 @@ def test_thales_file_draw_export_animate(capsys, files, tmp_path, monkeypatch):
     assert doc["grasp"] is None and [s["name"] for s in doc["steps"]][-1] == "circle"
     xml = zipfile.ZipFile(tmp_path / f"thales.{ext['ggb']}").read("geogebra.xml").decode()
     assert 'label="H"' in xml and "x_1" not in xml
-    code, _, _ = run(capsys, "animate", "--file", files["thales"], *SETS, "--dpi", "20",
-                       "--frames-per-step", "1", "--pause", "0", "--hold", "0")
+    code, _, _ = run(
+        capsys,
+        "animate",
+        "--file",
+        files["thales"],
+        *SETS,
+        "--dpi",
+        "20",
+        "--frames-per-step",
+        "1",
+        "--pause",
+        "0",
+        "--hold",
+        "0",
+    )
     assert code == 0 and (tmp_path / "thales-construction.gif").stat().st_size > 0
 
 
@@ -167,10 +189,24 @@ def test_exercise_file_with_the_grasp(capsys, files, tmp_path, monkeypatch):
     # the paper's V3 has the perpendicular through P2x: its C3 is x2 tan(φ1 − ξ1) = −x2 dx/dy
     assert internal_force_diagram(Grasp.preset("table1c"))["V3"].y != -y3
     drawn = []
-    monkeypatch.setattr(cli, "_draw", lambda c, path, fmt, step, overlay, title=None:
-                        drawn.append((c, overlay, title)))
-    assert run(capsys, "draw", files["exercise"], "--preset", "table1c", "-o",
-               tmp_path / "v3.png", "-q")[0] == 0
+    monkeypatch.setattr(
+        cli,
+        "_draw",
+        lambda c, path, fmt, step, overlay, title=None: drawn.append((c, overlay, title)),
+    )
+    assert (
+        run(
+            capsys,
+            "draw",
+            files["exercise"],
+            "--preset",
+            "table1c",
+            "-o",
+            tmp_path / "v3.png",
+            "-q",
+        )[0]
+        == 0
+    )
     c, overlay, title = drawn[0]
     assert c["V3"].x == 2 and not overlay  # no k_grasp of the paper over a student's file
     assert title == f"v3.gc: {Grasp.preset('table1c').title}"
@@ -189,13 +225,16 @@ def test_exercise_file_exports_without_sliders(capsys, files, tmp_path):
     assert doc["grasp"] is not None and doc["steps"][-1]["name"] == "V3"
 
 
-@pytest.mark.parametrize("argv", [
-    ("export", "{exercise}", "-o", "{tmp}/x.html"),
-    ("explore", "{exercise}"),
-    ("explore", "--file", "{thales}", "--set", "a=1", "--set", "b=1", "--set", "t=0"),
-    ("animate", "--file", "{exercise}", "--kind", "sweep", "-o", "{tmp}/x.gif"),
-    ("animate", "--file", "{exercise}", "--kind", "orientation", "-o", "{tmp}/x.gif"),
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ("export", "{exercise}", "-o", "{tmp}/x.html"),
+        ("explore", "{exercise}"),
+        ("explore", "--file", "{thales}", "--set", "a=1", "--set", "b=1", "--set", "t=0"),
+        ("animate", "--file", "{exercise}", "--kind", "sweep", "-o", "{tmp}/x.gif"),
+        ("animate", "--file", "{exercise}", "--kind", "orientation", "-o", "{tmp}/x.gif"),
+    ],
+)
 def test_paper_only_pictures_refuse_a_foreign_file(capsys, files, tmp_path, argv):
     names = {**{k: str(v) for k, v in files.items()}, "tmp": str(tmp_path)}
     code, out, err = run(capsys, *(a.format(**names) for a in argv))
@@ -205,36 +244,53 @@ def test_paper_only_pictures_refuse_a_foreign_file(capsys, files, tmp_path, argv
 
 
 # -- (c) refusals: one line, exit status 2 -------------------------------------------------------
-@pytest.mark.parametrize("argv, message", [
-    (("steps", "{thales}", "--set", "a=2"), "thales.gc:4:1: no value for the parameter 'b': "
-                                            "give --set b=VALUE"),
-    (("steps", "{thales}", *SETS, "--set", "c=1"), "thales.gc has no parameter 'c' "
-                                                   "(its parameters: a, b, t)"),
-    (("steps", "{thales}", *SETS, "--set", "x1=1"), "--set x1: x1 is a grasp parameter"),
-    (("steps", "{thales}", *SETS, "--set", "a=3"), "--set a is given twice"),
-    (("steps", "{thales}", *SETS, "--x1", "2"), "--x1 is not used: "),
-    (("steps", "{thales}", "--set", "a=-2", "--set", "b=1", "--set", "t=0"),
-     "thales.gc:3:1: a = -2 is outside its domain"),
-    (("steps", "{thales}", "--set", "a=__import__('os')", "--set", "b=1", "--set", "t=0"),
-     "--set a: cannot read"),
-    (("steps", "--set", "a=1"), "--set gives values to the parameters of a construction file"),
-    (("draw", "{thales}", "--file", "{thales}", "-o", "{tmp}/x.png"), "two construction files"),
-    (("steps", "{tmp}/missing.gc"), "cannot read"),
-    (("steps", "{tmp}"), "cannot read"),
-    (("export", "{bad}", "-o", "{tmp}/x.svg"), "bad.gc:2:"),
-    (("draw", "{latin1}", "-o", "{tmp}/x.png"), "is not UTF-8 text"),
-    (("animate", "--file", "{parallel}", "-o", "{tmp}/x.gif"), "parallel.gc:6:1: step X = "
-                                                                "meet"),
-    (("steps", "{thales}", "--set", "a"), "write NAME=VALUE"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (
+            ("steps", "{thales}", "--set", "a=2"),
+            "thales.gc:4:1: no value for the parameter 'b': give --set b=VALUE",
+        ),
+        (
+            ("steps", "{thales}", *SETS, "--set", "c=1"),
+            "thales.gc has no parameter 'c' (its parameters: a, b, t)",
+        ),
+        (("steps", "{thales}", *SETS, "--set", "x1=1"), "--set x1: x1 is a grasp parameter"),
+        (("steps", "{thales}", *SETS, "--set", "a=3"), "--set a is given twice"),
+        (("steps", "{thales}", *SETS, "--x1", "2"), "--x1 is not used: "),
+        (
+            ("steps", "{thales}", "--set", "a=-2", "--set", "b=1", "--set", "t=0"),
+            "thales.gc:3:1: a = -2 is outside its domain",
+        ),
+        (
+            ("steps", "{thales}", "--set", "a=__import__('os')", "--set", "b=1", "--set", "t=0"),
+            "--set a: cannot read",
+        ),
+        (("steps", "--set", "a=1"), "--set gives values to the parameters of a construction file"),
+        (("draw", "{thales}", "--file", "{thales}", "-o", "{tmp}/x.png"), "two construction files"),
+        (("steps", "{tmp}/missing.gc"), "cannot read"),
+        (("steps", "{tmp}"), "cannot read"),
+        (("export", "{bad}", "-o", "{tmp}/x.svg"), "bad.gc:2:"),
+        (("draw", "{latin1}", "-o", "{tmp}/x.png"), "is not UTF-8 text"),
+        (
+            ("animate", "--file", "{parallel}", "-o", "{tmp}/x.gif"),
+            "parallel.gc:6:1: step X = meet",
+        ),
+        (("steps", "{thales}", "--set", "a"), "write NAME=VALUE"),
+    ],
+)
 def test_refusals_are_one_line(capsys, files, tmp_path, argv, message):
     (tmp_path / "bad.gc").write_text("A = point (0, 0)\nB = meet A A\n")
-    (tmp_path / "latin1.gc").write_bytes("A = point (0, 0) \"é\"\n".encode("latin-1"))
+    (tmp_path / "latin1.gc").write_bytes('A = point (0, 0) "é"\n'.encode("latin-1"))
     (tmp_path / "parallel.gc").write_text(
         "param a > 0\nO = point (0, 0)\nP = point (0, 1)\nl = line_with_direction O (1, a)\n"
-        "m = line_with_direction P (1, a)\nX = meet l m\n")
-    names = {**{k: str(v) for k, v in files.items()}, "tmp": str(tmp_path),
-             **{k: str(tmp_path / f"{k}.gc") for k in ("bad", "latin1", "parallel")}}
+        "m = line_with_direction P (1, a)\nX = meet l m\n"
+    )
+    names = {
+        **{k: str(v) for k, v in files.items()},
+        "tmp": str(tmp_path),
+        **{k: str(tmp_path / f"{k}.gc") for k in ("bad", "latin1", "parallel")},
+    }
     argv = tuple(a.format(**names) for a in argv)
     if any("parallel" in a for a in argv):
         argv += ("--set", "a=1")
@@ -245,11 +301,18 @@ def test_refusals_are_one_line(capsys, files, tmp_path, argv, message):
 
 
 def test_an_unreadable_file_is_refused_before_sympy_is_loaded(tmp_path):
-    code = ("import sys\nfrom graspcompass.cli import main\n"
-            f"assert main(['draw', {str(tmp_path / 'no.gc')!r}, '-o', "
-            f"{str(tmp_path / 'x.png')!r}]) == 2\n"
-            "print(' '.join(m for m in ('sympy', 'numpy', 'matplotlib') if m in sys.modules))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=120, env={**os.environ, "PYTHONWARNINGS": "ignore"})
+    code = (
+        "import sys\nfrom graspcompass.cli import main\n"
+        f"assert main(['draw', {str(tmp_path / 'no.gc')!r}, '-o', "
+        f"{str(tmp_path / 'x.png')!r}]) == 2\n"
+        "print(' '.join(m for m in ('sympy', 'numpy', 'matplotlib') if m in sys.modules))"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={**os.environ, "PYTHONWARNINGS": "ignore"},
+    )
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "" and "cannot read" in out.stderr

@@ -51,8 +51,7 @@ def mp(v) -> mpmath.mpf:
 def ref_SC(x1, x2, y, phi1, phi2, mu1, mu2) -> tuple[np.ndarray, np.ndarray]:
     """S_n, C_n of eqs. (28)-(39) at 50 digits, rounded once to double."""
     with mpmath.workdps(50):
-        S, C = closed_form_SC(*(mp(v) for v in (x1, x2, y, phi1, phi2, mu1, mu2)),
-                              lib=mpmath)
+        S, C = closed_form_SC(*(mp(v) for v in (x1, x2, y, phi1, phi2, mu1, mu2)), lib=mpmath)
         return np.array([float(s) for s in S]), np.array([float(c) for c in C])
 
 
@@ -75,8 +74,9 @@ def rel_margin(phi1, phi2, mu1, mu2) -> float:
     with mpmath.workdps(50):
         pi = mpmath.pi
         for n, a in side_angles(phi1, phi2, mu1, mu2).items():
-            bounds = ((pi / 2, 1), (3 * pi / 2, -1)) if n in (1, 2) else ((-pi / 2, 1),
-                                                                          (pi / 2, -1))
+            bounds = (
+                ((pi / 2, 1), (3 * pi / 2, -1)) if n in (1, 2) else ((-pi / 2, 1), (pi / 2, -1))
+            )
             for b, sg in bounds:
                 out = min(out, float(sg * (a - b) / abs(b)))
     return out
@@ -98,8 +98,14 @@ def lp_k(x1, x2, y, phi1, phi2, mu1, mu2, theta) -> float:
     s1, c1, s2, c2 = math.sin(phi1), math.cos(phi1), math.sin(phi2), math.cos(phi2)
     D = x1 + x2
     a, b = y * s - x2 * c, y * s + x1 * c
-    FT = np.array([D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
-                   -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]) / (2 * D)
+    FT = np.array(
+        [
+            D * s1 * s + 2 * a * c1,
+            D * c1 * s - 2 * a * s1,
+            -D * s2 * s - 2 * b * c2,
+            -D * c2 * s + 2 * b * s2,
+        ]
+    ) / (2 * D)
     FN = np.array([s1, c1, s2, c2]) / D
     rows = [(mu1, -1, 0, 0), (mu1, 1, 0, 0), (0, 0, mu2, -1), (0, 0, mu2, 1)]  # (8)-(11)
     G = np.array(rows, dtype=float)
@@ -108,9 +114,14 @@ def lp_k(x1, x2, y, phi1, phi2, mu1, mu2, theta) -> float:
     # cone sides make G F_N ~ cos(φ ± ξ) tiny)
     a, b = -(G @ FN), G @ FT
     w = np.where(a != 0, 1 / np.maximum(np.abs(a), 1e-300), 1.0)
-    res = linprog([1.0], A_ub=(a * w)[:, None], b_ub=b * w, bounds=[(0, None)],
-                  method="highs", options={"primal_feasibility_tolerance": 1e-10,
-                                           "dual_feasibility_tolerance": 1e-10})
+    res = linprog(
+        [1.0],
+        A_ub=(a * w)[:, None],
+        b_ub=b * w,
+        bounds=[(0, None)],
+        method="highs",
+        options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10},
+    )
     # (HiGHS's default feasibility tolerance, 1e-7 absolute, was the larger error: it made
     # the LP, not k_grasp, miss the 50-digit value by 1.9e-8 on a near-degenerate grasp)
     assert res.status == 0, res.message
@@ -151,16 +162,17 @@ def near_coincident(x1, x2, y, n, m, d1, d2, u1=0.5, u2=0.5) -> dict:
     c1 = contact_with_side(through_origin(x1, y, n == 1) + d1, n == 1, u1)
     c2 = contact_with_side(through_origin(x2, y, m == 2) + d2, m == 2, u2)
     assert c1 and c2
-    return dict(x1=x1, x2=x2, y=y, phi1=c1[0], phi2=c2[0], mu1=math.tan(c1[1]),
-                mu2=math.tan(c2[1]))
+    return dict(x1=x1, x2=x2, y=y, phi1=c1[0], phi2=c2[0], mu1=math.tan(c1[1]), mu2=math.tan(c2[1]))
 
 
 def seven(kw: dict) -> tuple:
     """``(x1, x2, y, phi1, phi2, mu1, mu2)``; a float ξ gives μ = tan ξ correctly rounded
     (22), computed here at 40 digits (``math.tan`` may be an ulp off)."""
     with mpmath.workdps(40):
-        mu = [kw[f"mu{i}"] if f"mu{i}" in kw else float(mpmath.tan(mpmath.mpf(kw[f"xi{i}"])))
-              for i in (1, 2)]
+        mu = [
+            kw[f"mu{i}"] if f"mu{i}" in kw else float(mpmath.tan(mpmath.mpf(kw[f"xi{i}"])))
+            for i in (1, 2)
+        ]
     return (*(kw[k] for k in ("x1", "x2", "y", "phi1", "phi2")), *mu)
 
 
@@ -182,8 +194,11 @@ def check_envelope(env, S, C, tol: float, exact: bool = False) -> None:
         shift = 2 * math.pi if i == len(arcs) - 1 else 0.0
         assert abs(float(b.theta_start) + shift - t1) <= 1e-15 * (1 + t1)
         if exact:
-            assert not (a.theta_start.atoms(sp.Float) or a.start.x.atoms(sp.Float)
-                        or a.start.y.atoms(sp.Float))
+            assert not (
+                a.theta_start.atoms(sp.Float)
+                or a.start.x.atoms(sp.Float)
+                or a.start.y.atoms(sp.Float)
+            )
         for q, t in ((a.start, t0), (a.end, t1)):
             qx, qy = float(q.x), float(q.y)
             if a.n == 0:
@@ -195,13 +210,13 @@ def check_envelope(env, S, C, tol: float, exact: bool = False) -> None:
             # ... and the polar point of the envelope at its own angle
             k = float(env.k(t))
             assert math.hypot(qx - k * math.sin(t), qy + k * math.cos(t)) <= tol * scale
-    assert abs(sum(float(a.theta_end) - float(a.theta_start) for a in arcs)
-               - 2 * math.pi) < 1e-13
+    assert abs(sum(float(a.theta_end) - float(a.theta_start) for a in arcs) - 2 * math.pi) < 1e-13
     # k from the envelope against max(k_n, 0) of the reference S, C, densely and
     # right at and beside every break angle
     brk = np.array([float(a.theta_start) for a in arcs])
-    ts = np.concatenate([np.linspace(0, 2 * np.pi, 4001), brk, brk + 1e-9, brk - 1e-9,
-                         brk + 1e-5, brk - 1e-5])
+    ts = np.concatenate(
+        [np.linspace(0, 2 * np.pi, 4001), brk, brk + 1e-9, brk - 1e-9, brk + 1e-5, brk - 1e-5]
+    )
     err = np.abs(env.k(ts) - ref_k(S, C, ts)).max()
     assert err <= tol * max(scale, np.hypot(S, C).max()), err
 
@@ -222,8 +237,9 @@ def check_float_grasp(kw: dict, lp_thetas: int = 6) -> None:
     # one float equals the array path
     for t in ts[::37]:
         assert abs(g.k_grasp(float(t)) - float(g.k_grasp(np.array([t]))[0])) <= 4 * EPS * Vmax
-    assert np.allclose(g.internal_force(ts, 2.0), kg * 2.0 / (kw["x1"] + kw["x2"]),
-                       rtol=1e-15, atol=0)
+    assert np.allclose(
+        g.internal_force(ts, 2.0), kg * 2.0 / (kw["x1"] + kw["x2"]), rtol=1e-15, atol=0
+    )
     # the diagram: V_n of the construction within the stated accuracy, envelope = max
     c = internal_force_diagram(g)
     rel = construction_tol(kw)
@@ -242,9 +258,15 @@ def check_float_grasp(kw: dict, lp_thetas: int = 6) -> None:
 # ---------------------------------------------------------------------------
 # found by random search: V1 ≈ V4, the envelope had an arc running backwards and
 # Envelope.k off by 0.41 max|V_n|
-REGRESSION_V1_V4 = dict(x1=0.8358528337625843, x2=2.162177197102839, y=2.0822357550356916,
-                        phi1=2.0237687676253833, phi2=2.351784987079755,
-                        xi1=1.4995545279798408, xi2=1.5475545394058174)
+REGRESSION_V1_V4 = dict(
+    x1=0.8358528337625843,
+    x2=2.162177197102839,
+    y=2.0822357550356916,
+    phi1=2.0237687676253833,
+    phi2=2.351784987079755,
+    xi1=1.4995545279798408,
+    xi2=1.5475545394058174,
+)
 
 
 def test_regression_near_coincident_v1_v4():
@@ -275,22 +297,26 @@ def test_near_coincident_exact_path():
     check_envelope(c["envelope"], S, C, tol=1e-13, exact=True)
     for a in c["envelope"].arcs:
         if a.n:
-            assert is_zero(a.start.x * (a.start.x - c[f"V{a.n}"].x)
-                           + a.start.y * (a.start.y - c[f"V{a.n}"].y))
+            assert is_zero(
+                a.start.x * (a.start.x - c[f"V{a.n}"].x) + a.start.y * (a.start.y - c[f"V{a.n}"].y)
+            )
 
 
 # ---------------------------------------------------------------------------
 # 2. condition (1) within rounding: refused; just outside: numbers with an accuracy
 # ---------------------------------------------------------------------------
-@pytest.mark.parametrize("case", [
-    dict(phi1=HALF_PI, xi1=1e-15),                       # φ1 − ξ1 ≈ π/2, φ1 + ξ1 ≈ π/2
-    dict(phi1=1.0, xi1=HALF_PI - 1.0 + 1e-15),           # φ1 + ξ1 = π/2 + 1e-15
-    dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0 + 1e-13)),  # side 1 within 1e-13 rad
-    dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0 + 4e-16)),
-    dict(phi1=2.5, xi1=2.5 - HALF_PI + 1e-14),           # φ1 − ξ1 = π/2 − 1e-14
-    dict(phi1=0.2, mu1=math.tan(HALF_PI - 0.2 + 1e-13)),
-    dict(phi1=2.0, mu1=math.tan(2.0 - HALF_PI + 5e-13)),  # φ1 − ξ1 = π/2 − 5e-13
-])
+@pytest.mark.parametrize(
+    "case",
+    [
+        dict(phi1=HALF_PI, xi1=1e-15),  # φ1 − ξ1 ≈ π/2, φ1 + ξ1 ≈ π/2
+        dict(phi1=1.0, xi1=HALF_PI - 1.0 + 1e-15),  # φ1 + ξ1 = π/2 + 1e-15
+        dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0 + 1e-13)),  # side 1 within 1e-13 rad
+        dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0 + 4e-16)),
+        dict(phi1=2.5, xi1=2.5 - HALF_PI + 1e-14),  # φ1 − ξ1 = π/2 − 1e-14
+        dict(phi1=0.2, mu1=math.tan(HALF_PI - 0.2 + 1e-13)),
+        dict(phi1=2.0, mu1=math.tan(2.0 - HALF_PI + 5e-13)),  # φ1 − ξ1 = π/2 − 5e-13
+    ],
+)
 def test_within_rounding_of_condition_1_is_refused(case):
     kw = dict(x1=1.0, x2=1.0, y=1.0, phi2=HALF_PI, xi2=0.7, **case)
     with pytest.raises(InvalidGraspError) as info:
@@ -301,11 +327,14 @@ def test_within_rounding_of_condition_1_is_refused(case):
     assert any(s in msg for s in ("φ1 + ξ1", "φ1 − ξ1"))
 
 
-@pytest.mark.parametrize("case", [
-    dict(phi1=1.0, xi1=HALF_PI - 1.0),              # π/2 typed as a float sum
-    dict(phi1=HALF_PI, xi1=1e-17),
-    dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0)),
-])
+@pytest.mark.parametrize(
+    "case",
+    [
+        dict(phi1=1.0, xi1=HALF_PI - 1.0),  # π/2 typed as a float sum
+        dict(phi1=HALF_PI, xi1=1e-17),
+        dict(phi1=1.0, mu1=math.tan(HALF_PI - 1.0)),
+    ],
+)
 def test_half_ulp_from_condition_1_suggests_exact_input(case):
     kw = dict(x1=1.0, x2=1.0, y=1.0, phi2=HALF_PI, xi2=0.7, **case)
     with pytest.raises(InvalidGraspError, match=r"within rounding.*pi/2"):
@@ -318,15 +347,18 @@ def test_just_outside_threshold_agrees_with_exact(margin, which):
     # the bounds −π/2 and 3π/2 never bind: with 0 < ξ < π/2 the margins to π/2 are smaller
     if which == "up-low":  # φ1 + ξ1 = π/2 + margin
         phi1, xi = 1.0, HALF_PI - 1.0 + margin
-    else:                  # φ1 − ξ1 = π/2 − margin
+    else:  # φ1 − ξ1 = π/2 − margin
         phi1, xi = 2.0, 2.0 - HALF_PI + margin
     kw = dict(x1=1.0, x2=1.5, y=0.7, phi1=phi1, phi2=1.3, mu1=math.tan(xi), mu2=0.9)
     m = rel_margin(kw["phi1"], kw["phi2"], kw["mu1"], kw["mu2"])
     assert REL_MARGIN < m < 1e-5
     check_float_grasp(kw)
     # the same parameters, rationalised, through the exact path: same V_n
-    g_exact = Grasp(*(sp.Rational(v) for v in seven(kw)[:5]), mu1=sp.Rational(kw["mu1"]),
-                    mu2=sp.Rational(kw["mu2"]))
+    g_exact = Grasp(
+        *(sp.Rational(v) for v in seven(kw)[:5]),
+        mu1=sp.Rational(kw["mu1"]),
+        mu2=sp.Rational(kw["mu2"]),
+    )
     cf = internal_force_diagram(Grasp(**kw))
     rel = construction_tol(kw)
     Vmax = max(math.hypot(float(v.x), float(v.y)) for v in g_exact.V)
@@ -337,8 +369,9 @@ def test_just_outside_threshold_agrees_with_exact(margin, which):
 
 @pytest.mark.parametrize("margin", [2e-12, 1e-9])
 def test_float_construction_full_accuracy_near_condition_1(margin):
-    kw = dict(x1=1.0, x2=1.5, y=0.7, phi1=1.0, phi2=1.3, mu1=math.tan(HALF_PI - 1.0 + margin),
-              mu2=0.9)
+    kw = dict(
+        x1=1.0, x2=1.5, y=0.7, phi1=1.0, phi2=1.3, mu1=math.tan(HALF_PI - 1.0 + margin), mu2=0.9
+    )
     S, C = ref_SC(*seven(kw))
     c = internal_force_diagram(Grasp(**kw))
     for n in range(4):
@@ -346,11 +379,14 @@ def test_float_construction_full_accuracy_near_condition_1(margin):
         assert math.hypot(float(v.x) - S[n], float(v.y) - C[n]) <= 1e-14 * np.hypot(S, C).max()
 
 
-@pytest.mark.parametrize("case", [
-    dict(phi1=2 * math.pi / 3, xi1=math.pi / 3),   # φ1 + ξ1 = π: upper side vertical
-    dict(phi1=math.pi / 3, xi1=math.pi / 3),       # φ1 − ξ1 = 0: lower side vertical
-    dict(phi1=HALF_PI, xi1=HALF_PI * (1 - 1e-16)),  # both sides nearly vertical
-])
+@pytest.mark.parametrize(
+    "case",
+    [
+        dict(phi1=2 * math.pi / 3, xi1=math.pi / 3),  # φ1 + ξ1 = π: upper side vertical
+        dict(phi1=math.pi / 3, xi1=math.pi / 3),  # φ1 − ξ1 = 0: lower side vertical
+        dict(phi1=HALF_PI, xi1=HALF_PI * (1 - 1e-16)),  # both sides nearly vertical
+    ],
+)
 def test_vertical_cone_sides(case):
     kw = dict(x1=1.0, x2=1.0, y=1.0, phi2=HALF_PI, xi2=0.7, **case)
     check_float_grasp(kw)
@@ -376,10 +412,14 @@ def hard_float_grasps(draw) -> dict:
     up1, up2 = draw(st.booleans()), draw(st.booleans())
     tiny = st.sampled_from([0.0, 1e-16, -1e-16, 1e-14, -1e-12, 1e-10, -1e-8])
     if kind == "coincident":
-        return near_coincident(x1, x2, y, 1 if up1 else 3, 2 if up2 else 4,
-                               draw(tiny), draw(tiny), u1, u2) \
-            if contact_with_side(through_origin(x1, y, up1), up1, u1) \
-            and contact_with_side(through_origin(x2, y, up2), up2, u2) else {}
+        return (
+            near_coincident(
+                x1, x2, y, 1 if up1 else 3, 2 if up2 else 4, draw(tiny), draw(tiny), u1, u2
+            )
+            if contact_with_side(through_origin(x1, y, up1), up1, u1)
+            and contact_with_side(through_origin(x2, y, up2), up2, u2)
+            else {}
+        )
     if kind == "vertical":
         a1 = (math.pi if up1 else 0.0) + draw(tiny)
         a2 = draw(st.floats(-1.4, 1.4)) + (math.pi if up2 else 0.0)
@@ -396,12 +436,15 @@ def hard_float_grasps(draw) -> dict:
         return {}
     if draw(st.booleans()):  # friction by the cone half angle ξ (22)
         return dict(x1=x1, x2=x2, y=y, phi1=c1[0], phi2=c2[0], xi1=c1[1], xi2=c2[1])
-    return dict(x1=x1, x2=x2, y=y, phi1=c1[0], phi2=c2[0], mu1=math.tan(c1[1]),
-                mu2=math.tan(c2[1]))
+    return dict(x1=x1, x2=x2, y=y, phi1=c1[0], phi2=c2[0], mu1=math.tan(c1[1]), mu2=math.tan(c2[1]))
 
 
-@settings(max_examples=60, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@settings(
+    max_examples=60,
+    deadline=None,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
 @given(hard_float_grasps())
 def test_random_hard_float_grasps(kw):
     assume(kw)
@@ -413,7 +456,6 @@ def test_random_hard_float_grasps(kw):
         return
     assume(m > REL_MARGIN * (1 + 1e-6))
     check_float_grasp(kw, lp_thetas=4)
-
 
 
 @settings(max_examples=200, deadline=None)
@@ -429,6 +471,15 @@ def test_float_xi_gives_the_correctly_rounded_mu(xi: float) -> None:
 
 def test_near_bound_float_grasp_from_xi() -> None:
     """The hypothesis find: φ1 + ξ1 within 4e-7 of π/2, |V1| ≈ 6.3e6."""
-    check_float_grasp({"x1": 1.0, "x2": 1.0, "y": 1.0, "phi1": 0.34926470093316486,
-                       "phi2": 1.1780972450961724, "xi1": 1.2215318503411545,
-                       "xi2": 1.1780972450961724}, lp_thetas=2)
+    check_float_grasp(
+        {
+            "x1": 1.0,
+            "x2": 1.0,
+            "y": 1.0,
+            "phi1": 0.34926470093316486,
+            "phi2": 1.1780972450961724,
+            "xi1": 1.2215318503411545,
+            "xi2": 1.1780972450961724,
+        },
+        lp_thetas=2,
+    )

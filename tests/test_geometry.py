@@ -66,13 +66,20 @@ pi = sympy.pi
 a, b = sympy.symbols("a b")
 
 # Property tests stay small: the whole file must run in well under 30 s.
-FAST = settings(max_examples=40, deadline=None,
-                suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
-SLOW = settings(max_examples=12, deadline=None,
-                suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+FAST = settings(
+    max_examples=40,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
+SLOW = settings(
+    max_examples=12,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
 
 
 # --------------------------------------------------------------------------- helpers
+
 
 def _rational(f: Fraction) -> sympy.Rational:
     return R(f.numerator, f.denominator)
@@ -80,8 +87,9 @@ def _rational(f: Fraction) -> sympy.Rational:
 
 rationals = st.fractions(min_value=-8, max_value=8, max_denominator=9).map(_rational)
 small_rationals = st.fractions(min_value=-3, max_value=3, max_denominator=5).map(_rational)
-positive_rationals = st.fractions(min_value=Fraction(1, 4), max_value=6,
-                                  max_denominator=7).map(_rational)
+positive_rationals = st.fractions(min_value=Fraction(1, 4), max_value=6, max_denominator=7).map(
+    _rational
+)
 points = st.builds(Point, rationals, rationals)
 vectors = st.tuples(rationals, rationals).filter(lambda v: v != (0, 0)).map(lambda v: Point(*v))
 
@@ -160,6 +168,7 @@ def no_float(*objs: object) -> bool:
 
 # --------------------------------------------------------------------------- values
 
+
 @pytest.mark.parametrize(
     ("obj", "field"),
     [
@@ -189,9 +198,13 @@ def test_points_equal_iff_coordinates_equal(x1, y1, x2, y2):
 
 
 def test_values_are_hashable_and_usable_as_keys():
-    objs = [Point(sqrt(3) / 2, R(1, 2)), Line(Point(0, 0), Point(1, 1)),
-            Circle(Point(1, 0), 2), Segment(Point(0, 0), Point(1, 0)),
-            Ray(Point(0, 0), Point(0, 1))]
+    objs = [
+        Point(sqrt(3) / 2, R(1, 2)),
+        Line(Point(0, 0), Point(1, 1)),
+        Circle(Point(1, 0), 2),
+        Segment(Point(0, 0), Point(1, 0)),
+        Ray(Point(0, 0), Point(0, 1)),
+    ]
     table = {o: i for i, o in enumerate(objs)}
     for i, o in enumerate(objs):
         twin = dataclasses.replace(o)
@@ -227,14 +240,30 @@ def test_strings_are_read_exactly():
 def test_constructors_keep_their_type():
     p, q, r = Point(0, 0), Point(2, 0), Point(1, 3)
     lpq = line_through(p, q)
-    for obj in (lpq, line_with_direction(p, Point(1, 1)), parallel(lpq, r),
-                perpendicular(lpq, r), Segment(p, q).line, Ray(p, q).line):
+    for obj in (
+        lpq,
+        line_with_direction(p, Point(1, 1)),
+        parallel(lpq, r),
+        perpendicular(lpq, r),
+        Segment(p, q).line,
+        Ray(p, q).line,
+    ):
         assert type(obj) is Line
     for obj in (circle_on_diameter(p, q), circle_through(r, p)):
         assert type(obj) is Circle
-    for obj in (meet(lpq, perpendicular(lpq, r)), foot(r, lpq), reflect(r, lpq),
-                midpoint(p, q), p + q, q - p, -q, q.scale(3), q.perp(), lpq.at(2),
-                Point.canonical(1, 2)):
+    for obj in (
+        meet(lpq, perpendicular(lpq, r)),
+        foot(r, lpq),
+        reflect(r, lpq),
+        midpoint(p, q),
+        p + q,
+        q - p,
+        -q,
+        q.scale(3),
+        q.perp(),
+        lpq.at(2),
+        Point.canonical(1, 2),
+    ):
         assert type(obj) is Point
     pts = intersect_circles(Circle(p, 4), Circle(q, 4))
     assert isinstance(pts, tuple) and all(type(x) is Point for x in pts)
@@ -253,6 +282,7 @@ def test_line_circle_accessors():
 
 
 # --------------------------------------------------------------------------- lines
+
 
 @FAST
 @given(points, vectors, points, vectors)
@@ -341,6 +371,7 @@ def test_predicates():
 
 
 # --------------------------------------------------------------------------- circles
+
 
 @FAST
 @given(points, vectors, points, positive_rationals)
@@ -449,8 +480,11 @@ def test_tangent_circles_give_one_point(centre, r1, r2, t, internal):
     u = on_unit_circle(t)
     dist = abs(r1 - r2) if internal else r1 + r2
     c2c = Point(centre.x + dist * u[0], centre.y + dist * u[1])
-    touch = Point(centre.x + r1 * u[0], centre.y + r1 * u[1]) if r1 >= r2 or not internal \
+    touch = (
+        Point(centre.x + r1 * u[0], centre.y + r1 * u[1])
+        if r1 >= r2 or not internal
         else Point(centre.x - r1 * u[0], centre.y - r1 * u[1])
+    )
     pts = intersect_circles(Circle(centre, r1**2), Circle(c2c, r2**2))
     assert pts == (touch,)
 
@@ -468,10 +502,14 @@ def test_tangent_with_radicals():
 def test_intersection_examples_by_hand():
     # unit circles at (0,0) and (1,0): x = 1/2, y = ±sqrt(3)/2, left of +x first
     assert intersect_circles(Circle(Point(0, 0), 1), Circle(Point(1, 0), 1)) == (
-        Point(R(1, 2), sqrt(3) / 2), Point(R(1, 2), -sqrt(3) / 2))
+        Point(R(1, 2), sqrt(3) / 2),
+        Point(R(1, 2), -sqrt(3) / 2),
+    )
     # swapping the circles swaps the branch
     assert intersect_circles(Circle(Point(1, 0), 1), Circle(Point(0, 0), 1)) == (
-        Point(R(1, 2), -sqrt(3) / 2), Point(R(1, 2), sqrt(3) / 2))
+        Point(R(1, 2), -sqrt(3) / 2),
+        Point(R(1, 2), sqrt(3) / 2),
+    )
     # x-axis against radius 2: (2, 0) lies further along +x
     x_axis = Line(Point(0, 0), Point(1, 0))
     assert intersect_line_circle(x_axis, Circle(Point(0, 0), 4)) == (Point(2, 0), Point(-2, 0))
@@ -544,6 +582,7 @@ def test_symbolic_intersection_records_discriminant():
 
 # ---- second intersection
 
+
 @FAST
 @given(points, points, points)
 def test_second_intersection(k, m1, m2):
@@ -582,6 +621,7 @@ def test_second_intersection_tangent_and_concentric():
 
 # --------------------------------------------------------------------------- degeneracies
 
+
 def test_meet_of_parallel_lines_names_both():
     l1 = Line(Point(0, 1), Point(1, 2))
     l2 = Line(Point(5, 0), Point(-2, -4))
@@ -593,26 +633,37 @@ def test_meet_of_parallel_lines_names_both():
 
 
 DEGENERATE = [
-    (lambda: meet(Line(Point(0, 0), Point(1, 1)), Line(Point(0, 0), Point(3, 3))),
-     ParallelLinesError),
-    (lambda: meet(Line(Point(0, 0), Point(sqrt(2), 1)), Line(Point(1, 0), Point(2, sqrt(2)))),
-     ParallelLinesError),
-    (lambda: meet(Line(Point(0.0, 0.0), Point(0.1, 0.3)), Line(Point(1.0, 0.0), Point(1.0, 3.0))),
-     ParallelLinesError),
+    (
+        lambda: meet(Line(Point(0, 0), Point(1, 1)), Line(Point(0, 0), Point(3, 3))),
+        ParallelLinesError,
+    ),
+    (
+        lambda: meet(Line(Point(0, 0), Point(sqrt(2), 1)), Line(Point(1, 0), Point(2, sqrt(2)))),
+        ParallelLinesError,
+    ),
+    (
+        lambda: meet(
+            Line(Point(0.0, 0.0), Point(0.1, 0.3)), Line(Point(1.0, 0.0), Point(1.0, 3.0))
+        ),
+        ParallelLinesError,
+    ),
     (lambda: line_through(Point(1, 1), Point(1, 1)), CoincidentPointsError),
     (lambda: line_through(Point(sqrt(2) * sqrt(2), 0), Point(2, 0)), CoincidentPointsError),
     (lambda: line_through(Point(0.5, 0.5), Point(0.5, 0.5)), CoincidentPointsError),
     (lambda: Line(Point(1, 1), Point(0, 0)), ZeroDirectionError),
-    (lambda: line_with_direction(Point(1, 1), Point(sqrt(8) - 2 * sqrt(2), 0)),
-     ZeroDirectionError),
+    (lambda: line_with_direction(Point(1, 1), Point(sqrt(8) - 2 * sqrt(2), 0)), ZeroDirectionError),
     (lambda: Line(Point(1, 1), Point(0.0, 0.0)), ZeroDirectionError),
     (lambda: Segment(Point(1, 2), Point(1, 2)), CoincidentPointsError),
     (lambda: circle_on_diameter(Point(3, 4), Point(3, 4)), DegenerateCircleError),
     (lambda: circle_on_diameter(Point(0.5, 1.0), Point(0.5, 1.0)), DegenerateCircleError),
-    (lambda: intersect_circles(Circle(Point(2, 2), 1), Circle(Point(2, 2), 4)),
-     DegenerateCircleError),
-    (lambda: intersection(Line(Point(0, 0), Point(1, 0)), Line(Point(3, 0), Point(-2, 0))),
-     ParallelLinesError),
+    (
+        lambda: intersect_circles(Circle(Point(2, 2), 1), Circle(Point(2, 2), 4)),
+        DegenerateCircleError,
+    ),
+    (
+        lambda: intersection(Line(Point(0, 0), Point(1, 0)), Line(Point(3, 0), Point(-2, 0))),
+        ParallelLinesError,
+    ),
 ]
 
 
@@ -645,14 +696,16 @@ def test_intersection_of_coincident_lines_raises():
 
 
 def test_no_nan_on_near_degenerate_floats():
-    pts = intersect_line_circle(Line(Point(0.0, 1.0), Point(1.0, 0.0)),
-                                Circle(Point(0.0, 0.0), 1.0))
+    pts = intersect_line_circle(
+        Line(Point(0.0, 1.0), Point(1.0, 0.0)), Circle(Point(0.0, 0.0), 1.0)
+    )
     assert len(pts) == 1
     for p in pts:
         assert all(math.isfinite(v) for v in evaluate(p))
 
 
 # --------------------------------------------------------------------------- symbolic
+
 
 def test_meet_with_symbolic_directions_records_the_denominator():
     l1 = Line(Point(0, 0), Point(1, a))
@@ -671,8 +724,9 @@ def test_symbolic_values_agree_with_numbers_after_substitution():
     for av, bv in ((1, 2), (R(-3, 4), 5), (0, 0)):
         num = meet(Line(Point(av, 0), Point(1, 2)), Line(Point(0, bv), Point(-1, 3)))
         assert _subs_point(m, {a: av, b: bv}) == num
-    assert evaluate(m, {a: 1, b: 2}) == pytest.approx(evaluate(
-        meet(Line(Point(1, 0), Point(1, 2)), Line(Point(0, 2), Point(-1, 3)))))
+    assert evaluate(m, {a: 1, b: 2}) == pytest.approx(
+        evaluate(meet(Line(Point(1, 0), Point(1, 2)), Line(Point(0, 2), Point(-1, 3))))
+    )
 
 
 def test_decide_zero_and_sign():
@@ -704,10 +758,23 @@ def test_exact_results_hold_no_float():
     lpq, lpr = line_through(p, q), line_through(p, r)
     m = meet(perpendicular(lpq, r), lpr)
     c1, c2 = circle_on_diameter(ORIGIN, p), circle_on_diameter(ORIGIN, r)
-    objs = [lpq, lpr, m, foot(r, lpq), reflect(r, lpr), midpoint(p, r), c1, c2,
-            second_intersection(c1, c2, ORIGIN), *intersect_circles(c1, Circle(q, 2)),
-            *intersect_line_circle(lpr, c1), distance2(p, r), distance(p, r),
-            signed_length(p, r, lpr), angle_of(Point(s3, -1))]
+    objs = [
+        lpq,
+        lpr,
+        m,
+        foot(r, lpq),
+        reflect(r, lpr),
+        midpoint(p, r),
+        c1,
+        c2,
+        second_intersection(c1, c2, ORIGIN),
+        *intersect_circles(c1, Circle(q, 2)),
+        *intersect_line_circle(lpr, c1),
+        distance2(p, r),
+        distance(p, r),
+        signed_length(p, r, lpr),
+        angle_of(Point(s3, -1)),
+    ]
     assert no_float(*objs)
 
 
@@ -737,6 +804,7 @@ def test_evaluate():
 
 
 # --------------------------------------------------------------------------- measurement
+
 
 def test_signed_length_along_the_x_axis():
     x_axis = Line(Point(0, 0), Point(1, 0))
@@ -791,6 +859,7 @@ def test_angle_of_gives_a_parallel_unit_vector(v):
 
 # --------------------------------------------------------------------------- known bugs
 
+
 def test_decide_sign_uses_the_symbols_assumptions():
     p = sympy.Symbol("p", positive=True)
     assert decide_sign(p) == 1
@@ -816,13 +885,22 @@ def test_small_float_perpendicular_lines_meet():
 
 
 # --------------------------------------------------------------------------- atan shortcut
-_RADICALS = [sympy.Integer(1), sympy.Integer(2), sympy.Rational(1, 2), sympy.sqrt(2), sympy.sqrt(3),
-             sympy.sqrt(6), sympy.sqrt(5)]
+_RADICALS = [
+    sympy.Integer(1),
+    sympy.Integer(2),
+    sympy.Rational(1, 2),
+    sympy.sqrt(2),
+    sympy.sqrt(3),
+    sympy.sqrt(6),
+    sympy.sqrt(5),
+]
 
 
 @settings(max_examples=150, deadline=None)
-@given(st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3),
-       st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3))
+@given(
+    st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3),
+    st.lists(st.tuples(st.integers(-3, 3), st.sampled_from(_RADICALS)), min_size=1, max_size=3),
+)
 def test_angle_of_is_atan2_on_radical_vectors(xs, ys):
     """angle_of skips sympy's atan eval; its value must still be atan2(x, -y) (eq. (26)),
     checked at 50 digits against mpmath, with the argument of any atan positive."""
@@ -847,7 +925,7 @@ def test_angle_of_gives_multiples_of_pi_where_sympy_knows_them(k):
 
     a = sympy.pi * k / 12
     s, c = sincos(a)
-    assert angle_of(Point(s, -c)) == a   # e(a) = (sin a, -cos a)
+    assert angle_of(Point(s, -c)) == a  # e(a) = (sin a, -cos a)
     assert angle_of(Point(sympy.sqrt(2) - 1, -1)) == sympy.pi / 8
     assert angle_of(Point(-1 - sympy.sqrt(2), 1)) == -5 * sympy.pi / 8
 

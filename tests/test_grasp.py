@@ -37,10 +37,12 @@ r3 = sqrt(3)
 #: exact θ values used for exact checks
 THETAS = (sp.Integer(0), pi / 6, pi / 3, pi / 2, 2 * pi / 3, 5 * pi / 4, 7 * pi / 4, -pi / 5)
 
-FAST = settings(max_examples=60, deadline=None, database=None,
-                suppress_health_check=[HealthCheck.too_slow])
-EXACT = settings(max_examples=15, deadline=None, database=None,
-                 suppress_health_check=[HealthCheck.too_slow])
+FAST = settings(
+    max_examples=60, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
+EXACT = settings(
+    max_examples=15, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 
 
 def friction_expressions(F: sp.Matrix, mu1, mu2) -> tuple[sp.Expr, ...]:
@@ -55,14 +57,18 @@ def friction_expressions(F: sp.Matrix, mu1, mu2) -> tuple[sp.Expr, ...]:
 class TestFig6:
     # tangents of φ ± ξ for φ1 = φ2 = π/3, ξ1 = π/4, ξ2 = π/3, by hand
     T1P = -(2 + r3)  # tan(π/3 + π/4) = tan(7π/12)
-    T2P = -r3        # tan(π/3 + π/3) = tan(2π/3)
-    T1M = 2 - r3     # tan(π/3 - π/4) = tan(π/12)
+    T2P = -r3  # tan(π/3 + π/3) = tan(2π/3)
+    T1M = 2 - r3  # tan(π/3 - π/4) = tan(π/12)
     T2M = sp.Integer(0)  # tan(π/3 - π/3) = tan(0)
 
     def test_hand_tangents(self):
         # the hand values themselves, checked against sympy's tan
-        for angle, value in ((7 * pi / 12, self.T1P), (2 * pi / 3, self.T2P),
-                             (pi / 12, self.T1M), (sp.Integer(0), self.T2M)):
+        for angle, value in (
+            (7 * pi / 12, self.T1P),
+            (2 * pi / 3, self.T2P),
+            (pi / 12, self.T1M),
+            (sp.Integer(0), self.T2M),
+        ):
             assert sp.simplify(sp.tan(angle) - value) == 0
 
     def expected(self):
@@ -71,9 +77,9 @@ class TestFig6:
         h = (x1 + x2) / 2
         return [
             (-h + y * self.T1P, x2 * self.T1P),  # (28), (29)
-            (h - y * self.T2P, x1 * self.T2P),   # (34), (35)
+            (h - y * self.T2P, x1 * self.T2P),  # (34), (35)
             (-h + y * self.T1M, x2 * self.T1M),  # (36), (37)
-            (h - y * self.T2M, x1 * self.T2M),   # (38), (39)
+            (h - y * self.T2M, x1 * self.T2M),  # (38), (39)
         ]
 
     def test_V_by_hand(self):
@@ -156,8 +162,10 @@ def test_table1_exact_decimal():
     assert g.mu2 == R(6, 5) and g.mu2.is_Rational and not g.mu2.atoms(sp.Float)
     assert g.mu1 == 1 and g.mu1.is_Integer
     assert Grasp.preset("table1c").mu2 == R(7, 5)
-    same = [Grasp(2, 2, 1, "pi/2", "pi/2", mu1=1, mu2=v)
-            for v in ("1.2", Fraction(6, 5), R(6, 5), "6/5")]
+    same = [
+        Grasp(2, 2, 1, "pi/2", "pi/2", mu1=1, mu2=v)
+        for v in ("1.2", Fraction(6, 5), R(6, 5), "6/5")
+    ]
     assert all(h == g for h in same)
 
 
@@ -313,8 +321,9 @@ def test_internal_force_eq17(name):
         assert is_zero(g.internal_force(theta, FE) - kg * FE / D)
         assert is_zero(g.internal_force(theta, R(5, 2)) - kg * R(5, 2) / D)
     ts = np.linspace(0, 2 * np.pi, 37)
-    np.testing.assert_allclose(g.internal_force(ts, 2.5),
-                               g.k_grasp(ts) * 2.5 / float(D), rtol=1e-14, atol=1e-14)
+    np.testing.assert_allclose(
+        g.internal_force(ts, 2.5), g.k_grasp(ts) * 2.5 / float(D), rtol=1e-14, atol=1e-14
+    )
     assert isinstance(g.internal_force(0.3, 2.0), float)
 
 
@@ -344,8 +353,9 @@ def test_array_shapes():
     assert np.asarray(g.k([0.1, 0.2])).shape == (4, 2)
     assert isinstance(g.k(pi / 3), tuple) and len(g.k(pi / 3)) == 4
     # θ = 0 straight down: k_n(0) = −C_n
-    np.testing.assert_allclose(g.k(0.0), [1.5 + math.sqrt(3), 1.5, 1.5 - math.sqrt(3), 0.0],
-                               atol=1e-14)
+    np.testing.assert_allclose(
+        g.k(0.0), [1.5 + math.sqrt(3), 1.5, 1.5 - math.sqrt(3), 0.0], atol=1e-14
+    )
 
 
 def test_symbolic_grasp_refuses_numeric_theta():
@@ -356,8 +366,9 @@ def test_symbolic_grasp_refuses_numeric_theta():
 @pytest.mark.parametrize("name", PRESET_NAMES)
 def test_float_grasp_matches_exact(name):
     p = PRESET_PARAMS[name]
-    gf = Grasp(*[float(v) for v in (p.x1, p.x2, p.y, p.phi1, p.phi2)],
-               mu1=float(p.mu1), mu2=float(p.mu2))
+    gf = Grasp(
+        *[float(v) for v in (p.x1, p.x2, p.y, p.phi1, p.phi2)], mu1=float(p.mu1), mu2=float(p.mu2)
+    )
     ge = Grasp.preset(name)
     assert gf.numeric and not ge.numeric
     for Vf, Ve in zip(gf.V, ge.V):
@@ -434,11 +445,17 @@ BAD = [
     (_args(xi1="pi/4"), InvalidGraspError, ["contact 1", "mu1", "xi1", "exactly one"]),
     (_args(mu2=None), InvalidGraspError, ["contact 2", "mu2", "xi2"]),
     # condition (1): φ − ξ < π/2 fails — φ1 = 5π/6, ξ1 = π/4: φ1 − ξ1 = 7π/12 ≈ 0.583π
-    (_args(phi1="5*pi/6"), InvalidGraspError, ["contact 1", "φ1 − ξ1", "0.583π", "P2",
-                                                "condition (1)"]),
+    (
+        _args(phi1="5*pi/6"),
+        InvalidGraspError,
+        ["contact 1", "φ1 − ξ1", "0.583π", "P2", "condition (1)"],
+    ),
     # φ + ξ > π/2 fails — φ1 = π/6, ξ1 = π/4: φ1 + ξ1 = 5π/12 ≈ 0.417π
-    (_args(phi1="pi/6"), InvalidGraspError, ["contact 1", "φ1 + ξ1", "0.417π", "P2",
-                                              "condition (1)"]),
+    (
+        _args(phi1="pi/6"),
+        InvalidGraspError,
+        ["contact 1", "φ1 + ξ1", "0.417π", "P2", "condition (1)"],
+    ),
     (_args(phi2="5*pi/6"), InvalidGraspError, ["contact 2", "φ2 − ξ2", "0.583π", "P1"]),
     (_args(phi2="pi/6"), InvalidGraspError, ["contact 2", "φ2 + ξ2", "0.417π", "P1"]),
     # boundaries of (1) are excluded (strict inequalities): φ + ξ = π/2, φ − ξ = π/2
@@ -477,8 +494,16 @@ def test_good_input_does_not_raise():
     Grasp(**_args())
     Grasp(**_args(phi1="pi/4", mu1="1.01"))  # just inside (1)
     Grasp(**_args(y=0))  # y = 0 is allowed (y ≥ 0)
-    Grasp(**_args(phi1="pi - 1/10", phi2="pi - 1/10", mu1=None, mu2=None,
-                  xi1="pi/2 - 1/100", xi2="pi/2 - 1/100"))
+    Grasp(
+        **_args(
+            phi1="pi - 1/10",
+            phi2="pi - 1/10",
+            mu1=None,
+            mu2=None,
+            xi1="pi/2 - 1/100",
+            xi2="pi/2 - 1/100",
+        )
+    )
     # φ = π is in the range of §2.2.1 but (1) then needs ξ > π/2: never valid
     with pytest.raises(InvalidGraspError, match="φ1 − ξ1"):
         Grasp(**_args(phi1="pi", mu1=None, xi1="pi/2 - 1/1000"))
@@ -507,8 +532,11 @@ def test_unknown_preset():
         Grasp.symbolic("nu")
 
 
-@given(phi=st.floats(min_value=1e-3, max_value=math.pi),
-       xi=st.floats(min_value=1e-3, max_value=math.pi / 2 - 1e-3), contact=st.sampled_from([1, 2]))
+@given(
+    phi=st.floats(min_value=1e-3, max_value=math.pi),
+    xi=st.floats(min_value=1e-3, max_value=math.pi / 2 - 1e-3),
+    contact=st.sampled_from([1, 2]),
+)
 @settings(max_examples=60, deadline=None, database=None)
 def test_condition1_decides_validity(phi, xi, contact):
     """Valid iff |φ − π/2| < ξ: exactly condition (1) given 0 < φ ≤ π, 0 < ξ < π/2.
@@ -518,8 +546,12 @@ def test_condition1_decides_validity(phi, xi, contact):
     """
     assume(abs(abs(phi - math.pi / 2) - xi) > 1e-9)
     ok = dict(phi="pi/2", xi="pi/4")
-    a = {f"phi{contact}": phi, f"xi{contact}": xi,
-         f"phi{3 - contact}": ok["phi"], f"xi{3 - contact}": ok["xi"]}
+    a = {
+        f"phi{contact}": phi,
+        f"xi{contact}": xi,
+        f"phi{3 - contact}": ok["phi"],
+        f"xi{3 - contact}": ok["xi"],
+    }
     valid = abs(phi - math.pi / 2) < xi
     assert phi - xi > -math.pi / 2 and phi + xi < 3 * math.pi / 2
     if valid:
@@ -550,14 +582,18 @@ def test_symbolic_assumptions(friction):
     for i in (0, 1):
         p, x = phi[i], xi[i]
         for rel in (p - x > -pi / 2, p - x < pi / 2, p + x > pi / 2, p + x < 3 * pi / 2):
-            rel_gt = rel if isinstance(rel, sp.StrictGreaterThan) else \
-                sp.StrictGreaterThan(rel.rhs - rel.lhs, 0)
+            rel_gt = (
+                rel
+                if isinstance(rel, sp.StrictGreaterThan)
+                else sp.StrictGreaterThan(rel.rhs - rel.lhs, 0)
+            )
             assert _normal(rel_gt) in have, f"{rel} not among the assumptions"
         assert _normal(pi - p >= 0) in have  # φ ≤ π
     assert not g.numeric
     # substituting Table I(a) gives the preset back
-    h = Grasp.symbolic("mu").subs({gs.x1: 2, gs.x2: 2, gs.y: 1, gs.phi1: pi / 2,
-                                   gs.phi2: pi / 2, gs.mu1: 1, gs.mu2: R(6, 5)})
+    h = Grasp.symbolic("mu").subs(
+        {gs.x1: 2, gs.x2: 2, gs.y: 1, gs.phi1: pi / 2, gs.phi2: pi / 2, gs.mu1: 1, gs.mu2: R(6, 5)}
+    )
     assert h.V == Grasp.preset("table1a").V
 
 
@@ -596,8 +632,9 @@ def test_random_k_grasp_properties(p):
     # independent: eqs. (18)-(21), μ form, with numpy
     kp = np.array(k_paper(GRID, *p.floats, lib=np))
     np.testing.assert_allclose(ks, kp, rtol=1e-9, atol=1e-9 * (1 + np.abs(kp).max()))
-    np.testing.assert_allclose(kg, np.maximum(kp.max(axis=0), 0), rtol=1e-9,
-                               atol=1e-9 * (1 + np.abs(kp).max()))
+    np.testing.assert_allclose(
+        kg, np.maximum(kp.max(axis=0), 0), rtol=1e-9, atol=1e-9 * (1 + np.abs(kp).max())
+    )
 
 
 @FAST
@@ -615,8 +652,9 @@ def test_random_k_antisymmetric_and_thales(p):
         dot = np.einsum("ij,ij->j", P, P - v[:, None])
         assert np.abs(dot).max() <= 1e-9 * scale**2
         # and equivalently |P − V_n/2| = |V_n|/2
-        np.testing.assert_allclose(np.linalg.norm(P - v[:, None] / 2, axis=0),
-                                   np.linalg.norm(v) / 2, atol=1e-9 * scale)
+        np.testing.assert_allclose(
+            np.linalg.norm(P - v[:, None] / 2, axis=0), np.linalg.norm(v) / 2, atol=1e-9 * scale
+        )
 
 
 @FAST
@@ -673,10 +711,19 @@ def test_vectorised_contact_forces_balance_and_bind():
     F = g.contact_forces(t, k)
     assert F.shape == (4, t.size)
     x1, x2, y, mu1, mu2 = 2.0, 2.0, 2.0, 0.5, 1.4  # Table I(c), φ = π/2: n1 = (-1, 0), n2 = (1, 0)
-    forces = [((x1, y), (-1.0, 0.0)), ((x1, y), (0.0, 1.0)),
-              ((-x2, y), (1.0, 0.0)), ((-x2, y), (0.0, 1.0))]
-    L = np.array([[f[0] for _, f in forces], [f[1] for _, f in forces],
-                  [p[0] * f[1] - p[1] * f[0] for p, f in forces]])
+    forces = [
+        ((x1, y), (-1.0, 0.0)),
+        ((x1, y), (0.0, 1.0)),
+        ((-x2, y), (1.0, 0.0)),
+        ((-x2, y), (0.0, 1.0)),
+    ]
+    L = np.array(
+        [
+            [f[0] for _, f in forces],
+            [f[1] for _, f in forces],
+            [p[0] * f[1] - p[1] * f[0] for p, f in forces],
+        ]
+    )
     assert np.abs(L @ F - np.vstack([-np.sin(t), np.cos(t), 0 * t])).max() < 1e-12
     ineq = np.vstack([mu1 * F[0] - F[1], mu2 * F[2] - F[3], mu1 * F[0] + F[1], mu2 * F[2] + F[3]])
     assert ineq.min() > -1e-12

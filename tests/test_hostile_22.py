@@ -28,8 +28,12 @@ from graspcompass.inputs import float_value, real_value
 SLOW = "param t > 0\nA = point (0, 0)\nB = point (1, t)\n" + "".join(
     f"c{i} = circle_through {p} {q}\nC{i} = point ({i}/(t+{i}), -{i + 2})\n"
     f"l{i} = line_through {p} C{i}\nR{i} = intersect_line_circle l{i} c{i} (1)\n"
-    for i, p, q in zip(range(1, 12), ["A", "B", *(f"R{j}" for j in range(1, 10))],
-                       ["B", *(f"R{j}" for j in range(1, 11))]))
+    for i, p, q in zip(
+        range(1, 12),
+        ["A", "B", *(f"R{j}" for j in range(1, 10))],
+        ["B", *(f"R{j}" for j in range(1, 11))],
+    )
+)
 
 
 def _one_line_refusal(capsys, argv, fragment=""):
@@ -56,8 +60,9 @@ def test_a_slow_file_stops_at_timeout(command, tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "slow.gc").write_text(SLOW)
     with no_hang(command, 60):
-        err = _one_line_refusal(capsys, [command, "slow.gc", "--set", "t=1/3", "--timeout",
-                                         "1"], "--timeout")
+        err = _one_line_refusal(
+            capsys, [command, "slow.gc", "--set", "t=1/3", "--timeout", "1"], "--timeout"
+        )
     assert "longer than 1 s" in err
     assert sorted(os.listdir(tmp_path)) == ["slow.gc"]  # no half-written output
 
@@ -73,11 +78,19 @@ def test_a_fifo_is_refused_not_waited_for(tmp_path, capsys):
     _one_line_refusal(capsys, ["steps", "/dev/zero"], "not a regular file")
 
 
-@pytest.mark.parametrize("value", [2**(10**6), -(2**5000), Fraction(1, 2**2000),
-                                   Decimal("1e999999"), Decimal("-1e-999999"),
-                                   sp.Integer(2) ** 4000, sp.Rational(1, 3**2000)],
-                         ids=["2**10**6", "-2**5000", "Fraction", "Decimal", "-Decimal",
-                              "Integer", "Rational"])
+@pytest.mark.parametrize(
+    "value",
+    [
+        2 ** (10**6),
+        -(2**5000),
+        Fraction(1, 2**2000),
+        Decimal("1e999999"),
+        Decimal("-1e-999999"),
+        sp.Integer(2) ** 4000,
+        sp.Rational(1, 3**2000),
+    ],
+    ids=["2**10**6", "-2**5000", "Fraction", "Decimal", "-Decimal", "Integer", "Rational"],
+)
 def test_python_numbers_are_bounded_before_any_work(value):
     """``Grasp(x1=2**(10**6))`` and ``Decimal('1e999999')`` were accepted."""
     with no_hang("big number", 10):
@@ -128,8 +141,22 @@ def test_a_far_centre_of_mass_is_sized_in_floats_not_factored(capsys):
     """
     import json
 
-    base = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
-            "--mass", "1", "--mu", "0.3", "--json"]
+    base = [
+        "size",
+        "--p1",
+        "50mm,0",
+        "--p2",
+        "-50mm,0",
+        "--n1",
+        "-1,0",
+        "--n2",
+        "1,0",
+        "--mass",
+        "1",
+        "--mu",
+        "0.3",
+        "--json",
+    ]
     with no_hang("size --com 1e300", 30):
         assert main([*base, "--com", "1e300,0"]) == 0
     far = json.loads(capsys.readouterr().out)["worst_squeeze_N"]
@@ -140,8 +167,23 @@ def test_a_far_centre_of_mass_is_sized_in_floats_not_factored(capsys):
 
 def test_non_finite_results_are_refused_before_printing(capsys):
     """``size --mass 1e308`` printed "inf N per jaw … nan×"; --json wrote Infinity and NaN."""
-    base = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
-            "--com", "25mm,0", "--mass", "1e308", "--mu", "0.3"]
+    base = [
+        "size",
+        "--p1",
+        "50mm,0",
+        "--p2",
+        "-50mm,0",
+        "--n1",
+        "-1,0",
+        "--n2",
+        "1,0",
+        "--com",
+        "25mm,0",
+        "--mass",
+        "1e308",
+        "--mu",
+        "0.3",
+    ]
     _one_line_refusal(capsys, base, "beyond double precision")
     _one_line_refusal(capsys, [*base, "--json"], "beyond double precision")
     _one_line_refusal(capsys, ["k", "--theta=1e308"], "beyond double precision")
@@ -149,22 +191,26 @@ def test_non_finite_results_are_refused_before_printing(capsys):
 
 def test_draw_step_minus_one_is_out_of_range(capsys):
     """``draw --step=-1`` was accepted while 47 was refused as out of 0-46."""
-    _one_line_refusal(capsys, ["draw", "--step=-1", "-o", os.devnull, "--format", "png"],
-                      "0 to 46")
+    _one_line_refusal(capsys, ["draw", "--step=-1", "-o", os.devnull, "--format", "png"], "0 to 46")
 
 
 # -- drawings: SVG and DXF ------------------------------------------------------------------
-_PLAIN = ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" '
-          'viewBox="0 0 100 60"><rect x="10" y="10" width="80" height="40"/></svg>')
+_PLAIN = (
+    '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="60mm" '
+    'viewBox="0 0 100 60"><rect x="10" y="10" width="80" height="40"/></svg>'
+)
 
 
 def _nested_use(levels: int) -> str:
     defs = ['<rect id="u0" x="0" y="0" width="10" height="10"/>']
-    defs += [f'<g id="u{i}"><use href="#u{i - 1}"/><use href="#u{i - 1}"/></g>'
-             for i in range(1, levels)]
-    return ('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
-            f'viewBox="0 0 100 100"><defs>{"".join(defs)}</defs><use href="#u{levels - 1}"/>'
-            '</svg>')
+    defs += [
+        f'<g id="u{i}"><use href="#u{i - 1}"/><use href="#u{i - 1}"/></g>' for i in range(1, levels)
+    ]
+    return (
+        '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+        f'viewBox="0 0 100 100"><defs>{"".join(defs)}</defs><use href="#u{levels - 1}"/>'
+        "</svg>"
+    )
 
 
 def _read(path, **kw):
@@ -183,19 +229,22 @@ def test_nested_use_is_counted_before_it_is_expanded(tmp_path):
         _read(p)
     p.write_text(_nested_use(4))  # 8 copies of the square, all at one place: still read
     assert _read(p).area == pytest.approx(1e-4)  # 10 mm × 10 mm
-    p.write_text('<svg xmlns="http://www.w3.org/2000/svg"><g id="a"><use href="#a"/></g>'
-                 '<rect width="1" height="1"/></svg>')
+    p.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg"><g id="a"><use href="#a"/></g>'
+        '<rect width="1" height="1"/></svg>'
+    )
     with pytest.raises(InputError, match="itself"):
         _read(p)
 
 
-@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-be", "utf-16-le", "utf-8-sig",
-                                      "utf-32"])
+@pytest.mark.parametrize("encoding", ["utf-16", "utf-16-be", "utf-16-le", "utf-8-sig", "utf-32"])
 def test_entities_are_refused_in_any_encoding(encoding, tmp_path):
     """A UTF-16 SVG with an internal ``<!ENTITY>`` passed the byte test."""
     body = _PLAIN.replace('height="40"', 'height="&a;"')
-    for dtd in ('<!DOCTYPE svg [<!ENTITY a "40">]>',
-                '<!DOCTYPE svg [<!ENTITY % p "<!ENTITY a \'40\'>"> %p;]>'):
+    for dtd in (
+        '<!DOCTYPE svg [<!ENTITY a "40">]>',
+        "<!DOCTYPE svg [<!ENTITY % p \"<!ENTITY a '40'>\"> %p;]>",
+    ):
         text = f'<?xml version="1.0" encoding="{encoding.upper()}"?>{dtd}{body}'
         p = tmp_path / "e.svg"
         p.write_bytes(text.encode(encoding))
@@ -207,17 +256,25 @@ def test_entities_are_refused_in_any_encoding(encoding, tmp_path):
 def test_an_svg_reads_the_same_in_every_encoding(encoding, tmp_path):
     """The UTF-16 file was read 0.54 ppm larger (``width="…mm"`` read from raw bytes)."""
     p = tmp_path / "p.svg"
-    p.write_bytes((f'<?xml version="1.0" encoding="{encoding.upper()}"?>'
-                   '<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" '
-                   '"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd">' + _PLAIN
-                   ).encode(encoding))
+    p.write_bytes(
+        (
+            f'<?xml version="1.0" encoding="{encoding.upper()}"?>'
+            '<!DOCTYPE svg PUBLIC "-//W3C//DTD SVG 1.1//EN" '
+            '"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd">' + _PLAIN
+        ).encode(encoding)
+    )
     poly = _read(p)
     assert poly.area == 0.08 * 0.04 and poly.bounds == (0.01, -0.05, 0.09, -0.01)
 
 
-@pytest.mark.parametrize("shape", ['<circle cx="0" cy="0" r="1e300"/>',
-                                   '<rect width="1" height="1" transform="scale(1e300)"/>',
-                                   '<rect width="1e400" height="1"/>'])
+@pytest.mark.parametrize(
+    "shape",
+    [
+        '<circle cx="0" cy="0" r="1e300"/>',
+        '<rect width="1" height="1" transform="scale(1e300)"/>',
+        '<rect width="1e400" height="1"/>',
+    ],
+)
 def test_svg_coordinates_beyond_the_budget(shape, tmp_path):
     """A circle of radius 1e300: ``cannot convert float NaN to integer`` (a ValueError)."""
     p = tmp_path / "big.svg"
@@ -245,8 +302,11 @@ def _dxf(tmp_path, units=None, radius=10.0, bulges=None):
     if bulges is None:
         msp.add_circle((0, 0), radius)
     else:
-        msp.add_lwpolyline([(0, 0, 0, 0, bulges[0]), (10, 0, 0, 0, bulges[1]), (10, 10),
-                            (0, 10)], format="xyseb", close=True)
+        msp.add_lwpolyline(
+            [(0, 0, 0, 0, bulges[0]), (10, 0, 0, 0, bulges[1]), (10, 10), (0, 10)],
+            format="xyseb",
+            close=True,
+        )
     path = tmp_path / "part.dxf"
     doc.saveas(path)
     return path
@@ -303,18 +363,46 @@ def test_animation_frames_are_bounded_before_drawing(tmp_path, capsys):
     budget with tens of thousands of frames, each kept until the file is written."""
     out = tmp_path / "x.gif"
     with no_hang("animate", 60):
-        _one_line_refusal(capsys, ["animate", "--fps", "120", "--hold", "60", "--pause", "60",
-                                   "--caption-seconds", "60", "--frames-per-step", "120",
-                                   "--dpi", "10", "-o", str(out)], "frames; at most 20000")
+        _one_line_refusal(
+            capsys,
+            [
+                "animate",
+                "--fps",
+                "120",
+                "--hold",
+                "60",
+                "--pause",
+                "60",
+                "--caption-seconds",
+                "60",
+                "--frames-per-step",
+                "120",
+                "--dpi",
+                "10",
+                "-o",
+                str(out),
+            ],
+            "frames; at most 20000",
+        )
     assert not out.exists()
 
 
 # -- errors that are not the named ones: Point and batch through the one boundary -------------
-@pytest.mark.parametrize(("value", "error"), [
-    (1j, "ComplexValueError"), (sp.I, "ComplexValueError"), (sp.oo, "NonFiniteValueError"),
-    (sp.zoo, "NonFiniteValueError"), (sp.nan, "NonFiniteValueError"), (None, "WrongTypeError"),
-    (True, "WrongTypeError"), (b"1", "WrongTypeError"), (2**5000, "InputTooLargeError"),
-    ("1/0", "ExpressionError")])
+@pytest.mark.parametrize(
+    ("value", "error"),
+    [
+        (1j, "ComplexValueError"),
+        (sp.I, "ComplexValueError"),
+        (sp.oo, "NonFiniteValueError"),
+        (sp.zoo, "NonFiniteValueError"),
+        (sp.nan, "NonFiniteValueError"),
+        (None, "WrongTypeError"),
+        (True, "WrongTypeError"),
+        (b"1", "WrongTypeError"),
+        (2**5000, "InputTooLargeError"),
+        ("1/0", "ExpressionError"),
+    ],
+)
 def test_point_takes_coordinates_through_the_boundary(value, error):
     """``Point(1j, 0)``, ``I``, ``oo``, ``zoo``, ``nan`` passed; None, True, bytes: TypeError."""
     from graspcompass.geometry import Point
@@ -322,17 +410,28 @@ def test_point_takes_coordinates_through_the_boundary(value, error):
     with pytest.raises(GraspCompassError) as info:
         Point(value, 0)
     assert type(info.value).__name__ == error or error in {
-        c.__name__ for c in type(info.value).__mro__}
+        c.__name__ for c in type(info.value).__mro__
+    }
 
 
 _HALF = math.pi / 2
 _GRASP = (1.0, 1.0, 0.5, _HALF, _HALF, 0.5, 0.5)
 
 
-@pytest.mark.parametrize(("x1", "error"), [
-    ("1", WrongTypeError), (None, WrongTypeError), ([[1.0], [1.0, 2.0]], WrongTypeError),
-    ([None], WrongTypeError), (["1"], WrongTypeError), (1j, "ComplexValueError"),
-    ([1j], "ComplexValueError"), (sp.Symbol("a"), WrongTypeError), (object(), WrongTypeError)])
+@pytest.mark.parametrize(
+    ("x1", "error"),
+    [
+        ("1", WrongTypeError),
+        (None, WrongTypeError),
+        ([[1.0], [1.0, 2.0]], WrongTypeError),
+        ([None], WrongTypeError),
+        (["1"], WrongTypeError),
+        (1j, "ComplexValueError"),
+        ([1j], "ComplexValueError"),
+        (sp.Symbol("a"), WrongTypeError),
+        (object(), WrongTypeError),
+    ],
+)
 def test_batch_refusals_are_named(x1, error):
     """``batch`` raised TypeError/ValueError for strings, None, ragged lists, complex values."""
     from graspcompass import batch
@@ -346,8 +445,7 @@ def test_batch_refusals_are_named(x1, error):
 def test_batch_takes_exact_python_numbers_as_floats():
     from graspcompass import batch
 
-    exact = batch.worst_squeeze(Fraction(1, 1), Decimal("1"), sp.Rational(1, 2), *_GRASP[3:],
-                                1.0)
+    exact = batch.worst_squeeze(Fraction(1, 1), Decimal("1"), sp.Rational(1, 2), *_GRASP[3:], 1.0)
     assert exact == batch.worst_squeeze(*_GRASP, 1.0)
 
 
@@ -381,8 +479,11 @@ def test_disguised_zero_denominator_is_refused_at_the_boundary(capsys):
     from graspcompass.geometry import Point
 
     assert sp.sqrtdenest(sp.sqrt(5 + 2 * sp.sqrt(6))) == sp.sqrt(2) + sp.sqrt(3)  # the premise
-    for make in (lambda: real_value(DISGUISED, "x1"), lambda: Point(DISGUISED, 0),
-                 lambda: Grasp(**{**Grasp.preset("table1a").params, "x1": DISGUISED})):
+    for make in (
+        lambda: real_value(DISGUISED, "x1"),
+        lambda: Point(DISGUISED, 0),
+        lambda: Grasp(**{**Grasp.preset("table1a").params, "x1": DISGUISED}),
+    ):
         with pytest.raises(GraspCompassError, match="exactly 0"):
             make()
     with pytest.raises(NonFiniteValueError):
@@ -396,8 +497,12 @@ def test_disguised_zero_is_not_negative(capsys):
     from graspcompass.inputs import force_value
 
     assert force_value("sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6))") == 0
-    assert main(["k", "--theta", "0", "--external-force",
-                 "sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6))", "--json"]) == 0
+    assert (
+        main(
+            ["k", "--theta", "0", "--external-force", "sqrt(2)+sqrt(3)-sqrt(5+2*sqrt(6))", "--json"]
+        )
+        == 0
+    )
     assert '"F_int": 0.0' in capsys.readouterr().out
 
 
@@ -414,9 +519,21 @@ def _disguised_zero(a: int, b: int) -> str:
 
 
 @settings(max_examples=40, deadline=None)
-@given(a=st.integers(1, 10**6), b=st.integers(1, 10**6),
-       form=st.sampled_from(["1/{z}", "{z}**-1", "2/(3*{z})", "1 + 1/{z}", "{z}**(-3)",
-                             "sqrt(2)/({z}*5)", "1/({z}*sqrt(3))"]))
+@given(
+    a=st.integers(1, 10**6),
+    b=st.integers(1, 10**6),
+    form=st.sampled_from(
+        [
+            "1/{z}",
+            "{z}**-1",
+            "2/(3*{z})",
+            "1 + 1/{z}",
+            "{z}**(-3)",
+            "sqrt(2)/({z}*5)",
+            "1/({z}*sqrt(3))",
+        ]
+    ),
+)
 def test_every_disguised_zero_divisor_is_refused(a, b, form):
     """The class: a zero in disguise as a divisor or the base of a negative power, in any
     place of the text (squares are not zeros in disguise: the hypothesis keeps a*b non-square
@@ -440,9 +557,11 @@ def test_a_near_zero_divisor_that_is_not_zero_is_kept(a, b, c):
 
 
 def test_a_file_refuses_a_disguised_zero_denominator(tmp_path, capsys):
-    for text in (f"let z = {DISGUISED}\nO = point (z, 0)\n",
-                 f"param t > 0\nlet z = t/{_disguised_zero(2, 7)}\nO = point (z, 0)\n",
-                 f"O = point (1/{_disguised_zero(5, 11)}, 0)\n"):
+    for text in (
+        f"let z = {DISGUISED}\nO = point (z, 0)\n",
+        f"param t > 0\nlet z = t/{_disguised_zero(2, 7)}\nO = point (z, 0)\n",
+        f"O = point (1/{_disguised_zero(5, 11)}, 0)\n",
+    ):
         (tmp_path / "z.gc").write_text(text)
         _one_line_refusal(capsys, ["steps", str(tmp_path / "z.gc")], "exactly 0")
 
@@ -458,19 +577,26 @@ def test_a_builder_refuses_a_disguised_zero_denominator():
     b.let("w", 1 / (zero + sp.Rational(1, 7)))  # 7: kept
 
 
-@pytest.mark.parametrize("lets", [
-    ["let a = (t+1)**64", "let b = (a+1)**64"],  # degree 4096
-    ["let a = (t+1)**8", "let b = (a+1)**8", "let c = (b+1)**8"],  # 512
-    ["let a = t**32", "let b = a*a*a"],  # 96 by products
-    ["let a = (t+1)**16", "let b = 1/(a+1)**8"],  # 128 in a denominator
-    ["param s > 0", "param u > 0", "param v > 0", "let a = (s+t+u+v+1)**40"],  # C(44,4) terms
-])
+@pytest.mark.parametrize(
+    "lets",
+    [
+        ["let a = (t+1)**64", "let b = (a+1)**64"],  # degree 4096
+        ["let a = (t+1)**8", "let b = (a+1)**8", "let c = (b+1)**8"],  # 512
+        ["let a = t**32", "let b = a*a*a"],  # 96 by products
+        ["let a = (t+1)**16", "let b = 1/(a+1)**8"],  # 128 in a denominator
+        ["param s > 0", "param u > 0", "param v > 0", "let a = (s+t+u+v+1)**40"],  # C(44,4) terms
+    ],
+)
 def test_a_let_chain_is_refused_before_the_work(lets, tmp_path, capsys):
     """A ``let`` chain that would make a polynomial of huge degree (or too many terms) is
     refused while the file is read, in a fraction of a second, with the degree named."""
     f = tmp_path / "chain.gc"
-    f.write_text("\n".join(["param t > 0", *lets, "O = point (0, 0)",
-                             f"A = point ({lets[-1].split()[1]}, 0)"]) + "\n")
+    f.write_text(
+        "\n".join(
+            ["param t > 0", *lets, "O = point (0, 0)", f"A = point ({lets[-1].split()[1]}, 0)"]
+        )
+        + "\n"
+    )
     with no_hang("a let chain", 10):
         err = _one_line_refusal(capsys, ["steps", str(f)], "degree")
     assert "too costly" in err
@@ -479,8 +605,7 @@ def test_a_let_chain_is_refused_before_the_work(lets, tmp_path, capsys):
 def test_a_let_chain_within_the_budget_is_read(tmp_path, capsys):
     """Degree 64 in one name (the largest allowed) still reads and replays."""
     f = tmp_path / "ok.gc"
-    f.write_text("param t > 0\nlet a = t**8\nlet b = a**8\nO = point (0, 0)\n"
-                 "A = point (b, 1)\n")
+    f.write_text("param t > 0\nlet a = t**8\nlet b = a**8\nO = point (0, 0)\nA = point (b, 1)\n")
     assert main(["steps", str(f), "--set", "t=1"]) == 0
     assert "(1, 1)" in capsys.readouterr().out
 
@@ -495,16 +620,20 @@ def test_language_parse_refuses_what_is_not_text_with_a_named_error(text):
 
 
 # -- refusals that gave a false reason ---------------------------------------------------------
-_BRACKET = os.path.join(os.path.dirname(__file__), "..", "docs", "_static", "outlines",
-                        "bracket.svg")
+_BRACKET = os.path.join(
+    os.path.dirname(__file__), "..", "docs", "_static", "outlines", "bracket.svg"
+)
 
 
 @pytest.mark.parametrize("extra", [["--mass", "1e308"], ["--mass", "1", "--g", "1e308"]])
 def test_plan_overflow_is_not_called_no_force_closure(extra, capsys):
-    """"none of the 190 pairs is force-closure" for huge masses: they are, the squeeze
+    """ "none of the 190 pairs is force-closure" for huge masses: they are, the squeeze
     overflows."""
-    err = _one_line_refusal(capsys, ["plan", "--shape", _BRACKET, "--mu", "0.5",
-                                     "--samples", "40", *extra], "beyond double precision")
+    err = _one_line_refusal(
+        capsys,
+        ["plan", "--shape", _BRACKET, "--mu", "0.5", "--samples", "40", *extra],
+        "beyond double precision",
+    )
     assert "none of the" not in err
 
 
@@ -512,8 +641,11 @@ def test_a_huge_value_is_not_called_symbolic(tmp_path, capsys):
     """``--set a=1e300`` was refused as "the construction is symbolic"."""
     f = tmp_path / "t.gc"
     f.write_text("param a > 0\nO = point (0, 0)\nA = point (a, 0)\nc = circle_through O A\n")
-    err = _one_line_refusal(capsys, ["draw", str(f), "--set", "a=1e300", "-o",
-                                     str(tmp_path / "t.png")], "beyond double precision")
+    err = _one_line_refusal(
+        capsys,
+        ["draw", str(f), "--set", "a=1e300", "-o", str(tmp_path / "t.png")],
+        "beyond double precision",
+    )
     assert "symbolic" not in err
     from graspcompass import internal_force_diagram
     from graspcompass.layout import numeric_objects
@@ -526,8 +658,9 @@ def test_a_virtual_file_system_is_not_a_full_disk(capsys):
     """``-o /proc/x`` was refused as "no space left on the device"."""
     if not os.path.isdir("/proc") or os.statvfs("/proc").f_blocks:
         pytest.skip("no /proc without blocks here")
-    err = _one_line_refusal(capsys, ["export", "--format", "svg", "-o", "/proc/x.svg"],
-                            "virtual file system")
+    err = _one_line_refusal(
+        capsys, ["export", "--format", "svg", "-o", "/proc/x.svg"], "virtual file system"
+    )
     assert "space" not in err
     if os.path.exists("/dev/full"):
         _one_line_refusal(capsys, ["draw", "-o", "/dev/full", "--format", "png"], "no space")

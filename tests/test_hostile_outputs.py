@@ -22,8 +22,9 @@ def _payload(tmp_path: Path) -> tuple[str, Path]:
 
 
 # -- 1. the proof checker's boundary ------------------------------------------------
-@pytest.mark.parametrize("wrap", [np.array, lambda s: [s], lambda s: (s,)],
-                         ids=["ndarray", "list", "tuple"])
+@pytest.mark.parametrize(
+    "wrap", [np.array, lambda s: [s], lambda s: (s,)], ids=["ndarray", "list", "tuple"]
+)
 def test_violations_never_runs_text_in_containers(tmp_path: Path, wrap) -> None:
     from graspcompass.proof import violations
 
@@ -53,8 +54,18 @@ class _Sneaky:
         return self.code
 
 
-@pytest.mark.parametrize("call", ["prove_identity", "prove_sign", "reduce_expr", "trig_to_poly",
-                                  "is_identically_zero", "assumption", "domain"])
+@pytest.mark.parametrize(
+    "call",
+    [
+        "prove_identity",
+        "prove_sign",
+        "reduce_expr",
+        "trig_to_poly",
+        "is_identically_zero",
+        "assumption",
+        "domain",
+    ],
+)
 def test_proof_functions_never_sympify_outside_values(tmp_path: Path, call: str) -> None:
     import random
 
@@ -105,8 +116,10 @@ def test_replay_reads_angles_at_the_boundary(tmp_path: Path, bad: str) -> None:
 
     code, marker = _payload(tmp_path)
     value = {"code": code, "list": [code], "array": np.array([code])}[bad]
-    specs = [StepSpec("A", "point", (), "mark", "A", "-", (0, 0)),
-             StepSpec("L", "line_at_angle", ("A",), "ruler", "L", "-", (value,))]
+    specs = [
+        StepSpec("A", "point", (), "mark", "A", "-", (0, 0)),
+        StepSpec("L", "line_at_angle", ("A",), "ruler", "L", "-", (value,)),
+    ]
     with pytest.raises(InputError, match=r"L\.params\[0\]"):
         replay(specs)
     assert not marker.exists()
@@ -152,8 +165,7 @@ def test_export_writers_refuse_a_missing_folder(c1a, tmp_path: Path, ext: str) -
 
 
 @pytest.mark.parametrize("ext", ["svg", "ggb", "tex", "html"])
-def test_export_writers_turn_write_errors_into_output_errors(c1a, tmp_path: Path,
-                                                             ext: str) -> None:
+def test_export_writers_turn_write_errors_into_output_errors(c1a, tmp_path: Path, ext: str) -> None:
     write = _writers()[ext]
     with pytest.raises(OutputError, match="that is a folder"):
         write(c1a, tmp_path)
@@ -182,8 +194,9 @@ def test_export_writer_removes_a_half_written_file(c1a, tmp_path: Path, monkeypa
 def small_anim(c1a):
     from graspcompass.render.animate import animate_construction
 
-    return animate_construction(c1a, frames_per_step=1, pause_frames=1, hold_frames=1,
-                                figsize=(1.5, 1.5), dpi=20)
+    return animate_construction(
+        c1a, frames_per_step=1, pause_frames=1, hold_frames=1, figsize=(1.5, 1.5), dpi=20
+    )
 
 
 @pytest.mark.parametrize("ext", ["gif", "html"])
@@ -198,8 +211,9 @@ def test_write_animation_refuses_a_missing_folder(small_anim, tmp_path: Path, ex
         write_animation(small_anim, tmp_path / f"dir.{ext}", quiet=True)
 
 
-def test_write_animation_removes_a_half_written_file(small_anim, tmp_path: Path,
-                                                     monkeypatch) -> None:
+def test_write_animation_removes_a_half_written_file(
+    small_anim, tmp_path: Path, monkeypatch
+) -> None:
     from graspcompass.render import timeline
 
     def full(frames, path, fps, palette_sample=None) -> int:
@@ -213,7 +227,8 @@ def test_write_animation_removes_a_half_written_file(small_anim, tmp_path: Path,
 
 
 def test_write_animation_removes_the_file_of_a_failed_or_interrupted_write(
-        small_anim, tmp_path: Path, monkeypatch) -> None:
+    small_anim, tmp_path: Path, monkeypatch
+) -> None:
     from graspcompass.render import timeline
 
     def interrupted(frames, path, fps, palette_sample=None) -> int:

@@ -35,12 +35,15 @@ def test_read_and_written_back():
     assert "hypothesis outside: p**2 + q**2 > 1" in prog.to_text()
 
 
-@pytest.mark.parametrize("line, what", [
-    ("hypothesis h: 1 > 0", "has none"),
-    ("hypothesis h: p == 1", "REL one of"),
-    ("hypothesis h: z > 1", "unknown name 'z'"),
-    ("hypothesis condition1: p > 1", "twice or a reserved"),
-])
+@pytest.mark.parametrize(
+    "line, what",
+    [
+        ("hypothesis h: 1 > 0", "has none"),
+        ("hypothesis h: p == 1", "REL one of"),
+        ("hypothesis h: z > 1", "unknown name 'z'"),
+        ("hypothesis condition1: p > 1", "twice or a reserved"),
+    ],
+)
 def test_bad_hypotheses_are_refused_with_their_line(line, what):
     with pytest.raises(ConstructionSyntaxError, match=what) as err:
         parse("param p real\n" + line, "f.gc")
@@ -52,8 +55,10 @@ def test_the_builder_makes_the_same_program():
     b.param("p", "real")
     b.param("q", "real")
     b.hypothesis("outside", "p**2 + q**2 > 1")
-    assert b.build().inequalities == parse("param p real\nparam q real\n"
-                                           "hypothesis outside: p**2 + q**2 > 1").inequalities
+    assert (
+        b.build().inequalities
+        == parse("param p real\nparam q real\nhypothesis outside: p**2 + q**2 > 1").inequalities
+    )
 
 
 def test_sign_from_hypotheses_by_hand():
@@ -65,15 +70,14 @@ def test_sign_from_hypotheses_by_hand():
     assert sign_from(p - 2, H) is None  # p > 1 does not give p > 2
     assert sign_from(p * q, H) is None  # q's sign is unknown
     assert sign_from(sp.sqrt(p - 1) * (p + 1), H)[0] == 1
-    kept, implied = discharge(["p - 1 ≠ 0 (A and B are distinct)", "q ≠ 0"], H,
-                              {"p": p, "q": q})
+    kept, implied = discharge(["p - 1 ≠ 0 (A and B are distinct)", "q ≠ 0"], H, {"p": p, "q": q})
     assert kept == ["q ≠ 0"] and implied[0].endswith("(from the hypothesis h)")
 
 
 def test_the_checker_uses_and_states_the_hypothesis():
-    text = OUTSIDE + ("claim sign p**2 + q**2 - 1 > 0\n"
-                      "claim sign p > 1\n"
-                      "claim sign p**2 + q**2 > 2\n")
+    text = OUTSIDE + (
+        "claim sign p**2 + q**2 - 1 > 0\nclaim sign p > 1\nclaim sign p**2 + q**2 > 2\n"
+    )
     report = check_program(parse(text))
     statuses = [r.status.value for r in report.claims]
     assert statuses == ["PROVED", "REFUTED", "REFUTED"]
@@ -93,8 +97,10 @@ def test_the_checker_uses_and_states_the_hypothesis():
 
 
 def test_without_the_hypothesis_the_claim_is_refuted():
-    text = OUTSIDE.replace("hypothesis outside: p**2 + q**2 > 1\n", "") + \
-        "claim sign p**2 + q**2 - 1 > 0\n"
+    text = (
+        OUTSIDE.replace("hypothesis outside: p**2 + q**2 > 1\n", "")
+        + "claim sign p**2 + q**2 - 1 > 0\n"
+    )
     assert check_program(parse(text)).claims[0].status.value == "REFUTED"
 
 
@@ -106,8 +112,7 @@ def test_a_hypothesis_decides_the_branch():
 
     text = (Path(__file__).parent.parent / path).read_text("utf-8")
     first = check_program(parse(text)).claims[0]
-    assert first.status.value == "PROVED" and "hypothesis beyond: p > 1" in \
-        first.result.hypotheses
+    assert first.status.value == "PROVED" and "hypothesis beyond: p > 1" in first.result.hypotheses
     other = text.replace("hypothesis beyond: p > 1", "hypothesis before: p < 1")
     got = [r.status.value for r in check_program(parse(other)).claims[:4]]
     assert got == ["REFUTED", "REFUTED", "PROVED", "PROVED"]  # Y == B, X == A now
@@ -121,15 +126,18 @@ def test_branch_roots_by_hand():
     p, q = sp.symbols("p q", real=True)
     H = (Inequality("h", ">", p, sp.Integer(1)),)
     assert branch_roots(sp.sqrt((p - 1) ** 2 * (q**2 + 1)), H) == (p - 1) * sp.sqrt(q**2 + 1)
-    assert branch_roots(sp.sqrt(sp.expand((p - 1) ** 2 * (q**2 + 1))), H) == \
-        (p - 1) * sp.sqrt(q**2 + 1)
+    assert branch_roots(sp.sqrt(sp.expand((p - 1) ** 2 * (q**2 + 1))), H) == (p - 1) * sp.sqrt(
+        q**2 + 1
+    )
     assert branch_roots(sp.sqrt(sp.expand((1 - p) ** 2)), H) == p - 1
     assert branch_roots(sp.sqrt((q - 1) ** 2), H) == sp.sqrt((q - 1) ** 2)  # q's sign unknown
 
 
 def test_contradictory_hypotheses_prove_nothing():
-    text = ("param p real\nhypothesis big: p > 1\nhypothesis small: p < 0\n"
-            "A = point (p, 0)\nclaim sign p > 5\nclaim sign p**2 + 1 > 0\n")
+    text = (
+        "param p real\nhypothesis big: p > 1\nhypothesis small: p < 0\n"
+        "A = point (p, 0)\nclaim sign p > 5\nclaim sign p**2 + 1 > 0\n"
+    )
     got = [r.status.value for r in check_program(parse(text)).claims]
     # vacuous under p > 1 and p < 0: neither is reported as a proof (the second is true
     # for every p, but the file states it under its hypotheses)

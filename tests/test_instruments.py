@@ -24,10 +24,17 @@ def _expected_v(x1, x2, y, phi1, phi2, xi1, xi2):
     foot = {1: np.array([x1, 0.0]), 2: np.array([-x2, 0.0])}
     om = (x1 - x2) / 2
     out = {}
-    for n, (i, ang) in {1: (1, phi1 + xi1), 2: (2, phi2 + xi2), 3: (1, phi1 - xi1),
-                        4: (2, phi2 - xi2)}.items():
-        d = (np.array([-math.sin(ang), -math.cos(ang)]) if i == 1
-             else np.array([math.sin(ang), -math.cos(ang)]))
+    for n, (i, ang) in {
+        1: (1, phi1 + xi1),
+        2: (2, phi2 + xi2),
+        3: (1, phi1 - xi1),
+        4: (2, phi2 - xi2),
+    }.items():
+        d = (
+            np.array([-math.sin(ang), -math.cos(ang)])
+            if i == 1
+            else np.array([math.sin(ang), -math.cos(ang)])
+        )
         xn = p[i][0] - p[i][1] * d[0] / d[1]
         f = foot[3 - i]
         normal = np.array([-d[1], d[0]])  # the perpendicular through f has direction ⊥ d
@@ -56,10 +63,13 @@ def test_bisection_arcs_cross_above_and_below_the_midpoint(fig6):
     assert np.allclose(sorted(b.points), [(0, -1.5), (0, 1.5)])
 
 
-@pytest.mark.parametrize("preset, args", [
-    ("fig6", (S3 / 2, S3 / 2, 0.5, math.pi / 3, math.pi / 3, math.pi / 4, math.pi / 3)),
-    ("table1a", (2, 2, 1, math.pi / 2, math.pi / 2, math.atan(1.0), math.atan(1.2))),
-])
+@pytest.mark.parametrize(
+    "preset, args",
+    [
+        ("fig6", (S3 / 2, S3 / 2, 0.5, math.pi / 3, math.pi / 3, math.pi / 4, math.pi / 3)),
+        ("table1a", (2, 2, 1, math.pi / 2, math.pi / 2, math.atan(1.0), math.atan(1.2))),
+    ],
+)
 def test_transfers_end_at_the_coordinates_of_v(preset, args):
     c = internal_force_diagram(Grasp.preset(preset))
     sc = scene_of(c)

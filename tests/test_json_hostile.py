@@ -101,8 +101,12 @@ def test_a_dozen_square_roots_is_refused_at_once(table1a):
     # before: a 760-byte file with a dozen different square roots took over 40 s
     doc = copy.deepcopy(table1a)
     roots = [f"sqrt({p})" for p in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37)]
-    doc["grasp"].update(x1="+".join(roots[:3]), x2="+".join(roots[3:6]),
-                        y="+".join(roots[6:9]), mu1="+".join(roots[9:]))
+    doc["grasp"].update(
+        x1="+".join(roots[:3]),
+        x2="+".join(roots[3:6]),
+        y="+".join(roots[6:9]),
+        mu1="+".join(roots[9:]),
+    )
     short = dict(doc, steps=[], generator="x")
     assert len(json.dumps(short)) < 1000
     for d in (short, doc):
@@ -116,13 +120,16 @@ def test_free_replay_of_a_dozen_square_roots_is_refused_at_once(table1a):
     r = [f"sqrt({p})" for p in (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37)]
     step = copy.deepcopy(table1a["steps"][0])
     steps = []
-    for i, (name, op, inputs, params) in enumerate([
+    for i, (name, op, inputs, params) in enumerate(
+        [
             ("O", "point", [], ["0", "0"]),
             ("A", "point", [], ["+".join(r[0:3]), "+".join(r[3:6])]),
             ("B", "point", [], ["+".join(r[6:9]), "+".join(r[9:12])]),
             ("c1", "circle_on_diameter", ["O", "A"], []),
             ("c2", "circle_on_diameter", ["O", "B"], []),
-            ("X", "second_intersection", ["c1", "c2", "O"], [])]):
+            ("X", "second_intersection", ["c1", "c2", "O"], []),
+        ]
+    ):
         steps.append(dict(step, index=i, name=name, op=op, inputs=inputs, params=params))
     doc = dict(table1a, steps=steps, grasp=None)
     assert "without a grasp" in refused(json.dumps(doc))
@@ -133,16 +140,16 @@ def test_free_replay_of_a_dozen_square_roots_is_refused_at_once(table1a):
 def test_irrational_numbers_the_kernel_is_slow_with_are_refused(table1a):
     # sin/cos of 1 rad next to square roots took 8 s and more to construct before the
     # kernel's flint algebra (issue 20); now such a grasp is written and read back
-    g = Grasp(x1="sqrt(2)", x2="0.3", y="0.4", phi1="1", phi2="118deg", xi1="67deg",
-              xi2="49deg")
+    g = Grasp(x1="sqrt(2)", x2="0.3", y="0.4", phi1="1", phi2="118deg", xi1="67deg", xi2="49deg")
     assert loads(dumps(internal_force_diagram(g))).grasp == g
     text = edited(table1a, ("grasp", "phi1"), "1")
     doc = json.loads(text)
     doc["grasp"]["x1"] = "2"
     doc["grasp"]["mu1"] = "pi/4"
     assert "uses pi" in refused(json.dumps(doc))
-    msg = refused(edited(table1a, ("grasp", "mu1"), "sqrt(2)+sqrt(3)+sqrt(5)+sqrt(7)"),
-                  JSONTooLargeError)
+    msg = refused(
+        edited(table1a, ("grasp", "mu1"), "sqrt(2)+sqrt(3)+sqrt(5)+sqrt(7)"), JSONTooLargeError
+    )
     assert "4 distinct irrational numbers" in msg and "at most 3" in msg
 
 
@@ -187,7 +194,8 @@ def test_steps_beyond_the_recipe_and_false_skips_are_refused(table1a):
     assert "the recipe of this grasp has 47 steps" in refused(json.dumps(doc))
     assert "the grasp makes B12" in refused(edited(table1a, ("skipped",), [["B12", "tangent"]]))
     assert "not a step the recipe may leave out" in refused(
-        edited(table1a, ("skipped",), [["P1", "x"]]))
+        edited(table1a, ("skipped",), [["P1", "x"]])
+    )
     # steps out of order: the first one that is not the recipe's is named
     doc = copy.deepcopy(table1a)
     doc["steps"][3], doc["steps"][4] = doc["steps"][4], doc["steps"][3]
@@ -205,7 +213,8 @@ def test_expression_text_goes_through_the_safe_parser(table1a, tmp_path):
     assert msg.startswith("grasp.x1:") and not marker.exists()
     assert refused(edited(table1a, ("grasp", "y"), "2**(1/3)")).startswith("grasp:")
     assert "sqrt(12345678901234567890123)" in refused(
-        edited(table1a, ("grasp", "mu1"), "sqrt(12345678901234567890123)"), JSONTooLargeError)
+        edited(table1a, ("grasp", "mu1"), "sqrt(12345678901234567890123)"), JSONTooLargeError
+    )
 
 
 # ---------------------------------------------------------------------------
@@ -218,87 +227,171 @@ MALFORMED: list[tuple[str, Any, str]] = [
     ("top level list", lambda d: "[1, 2]", "not a graspcompass.construction/1 document"),
     ("top level string", lambda d: '"graspcompass.construction/1"', "not a graspcompass"),
     ("wrong schema name", lambda d: edited(d, ("schema",), "other/1"), "not a graspcompass"),
-    ("wrong schema version", lambda d: edited(d, ("schema",), "graspcompass.construction/2"),
-     "not a graspcompass"),
+    (
+        "wrong schema version",
+        lambda d: edited(d, ("schema",), "graspcompass.construction/2"),
+        "not a graspcompass",
+    ),
     ("schema not a string", lambda d: edited(d, ("schema",), 1), "not a graspcompass"),
     ("unknown top key", lambda d: edited(d, ("extra",), 1), "extra: unknown key"),
-    ("missing steps", lambda d: edited(d, ("steps",), delete=True),
-     "the document: the key 'steps' is missing"),
-    ("missing grasp key", lambda d: edited(d, ("grasp", "phi2"), delete=True),
-     "grasp: the key 'phi2' is missing"),
-    ("missing step key", lambda d: edited(d, ("steps", 4, "op"), delete=True),
-     "steps[4]: the key 'op' is missing"),
+    (
+        "missing steps",
+        lambda d: edited(d, ("steps",), delete=True),
+        "the document: the key 'steps' is missing",
+    ),
+    (
+        "missing grasp key",
+        lambda d: edited(d, ("grasp", "phi2"), delete=True),
+        "grasp: the key 'phi2' is missing",
+    ),
+    (
+        "missing step key",
+        lambda d: edited(d, ("steps", 4, "op"), delete=True),
+        "steps[4]: the key 'op' is missing",
+    ),
     ("grasp a list", lambda d: edited(d, ("grasp",), [1, 2]), "grasp: expected"),
     ("steps an object", lambda d: edited(d, ("steps",), {"0": 1}), "steps: expected a list"),
     ("step a string", lambda d: edited(d, ("steps", 2), "O"), "steps[2]: expected a step"),
     ("name an int", lambda d: edited(d, ("steps", 0, "name"), 0), "steps[0].name: expected"),
-    ("inputs a string", lambda d: edited(d, ("steps", 8, "inputs"), "P1"),
-     "steps[8].inputs: expected a list"),
+    (
+        "inputs a string",
+        lambda d: edited(d, ("steps", 8, "inputs"), "P1"),
+        "steps[8].inputs: expected a list",
+    ),
     ("input an int", lambda d: edited(d, ("steps", 8, "inputs", 0), 3), "steps[8].inputs[0]"),
-    ("params a number", lambda d: edited(d, ("steps", 3, "params"), 2),
-     "steps[3].params: expected a list"),
-    ("param a list", lambda d: edited(d, ("steps", 3, "params", 1), [1]),
-     "steps[3].params[1]: expected a number"),
-    ("param a bool", lambda d: edited(d, ("steps", 3, "params", 1), True),
-     "steps[3].params[1]: expected a number"),
+    (
+        "params a number",
+        lambda d: edited(d, ("steps", 3, "params"), 2),
+        "steps[3].params: expected a list",
+    ),
+    (
+        "param a list",
+        lambda d: edited(d, ("steps", 3, "params", 1), [1]),
+        "steps[3].params[1]: expected a number",
+    ),
+    (
+        "param a bool",
+        lambda d: edited(d, ("steps", 3, "params", 1), True),
+        "steps[3].params[1]: expected a number",
+    ),
     ("key a string", lambda d: edited(d, ("steps", 3, "key"), "yes"), "steps[3].key: expected"),
-    ("index a float", lambda d: edited(d, ("steps", 3, "index"), 3.0),
-     "steps[3].index: expected an integer"),
-    ("unknown op", lambda d: edited(d, ("steps", 5, "op"), "eval"),
-     "steps[5].op: unknown operation"),
+    (
+        "index a float",
+        lambda d: edited(d, ("steps", 3, "index"), 3.0),
+        "steps[3].index: expected an integer",
+    ),
+    (
+        "unknown op",
+        lambda d: edited(d, ("steps", 5, "op"), "eval"),
+        "steps[5].op: unknown operation",
+    ),
     ("unknown kind", lambda d: edited(d, ("steps", 5, "kind"), "spline"), "steps[5].kind"),
-    ("value of the wrong kind", lambda d: edited(d, ("steps", 3, "value"), {"exact": "1"}),
-     "steps[3].value.exact: unknown key"),
-    ("value point float a string", lambda d: edited(d, ("steps", 3, "value", "float"), "1,2"),
-     "steps[3].value.float: expected a pair"),
-    ("deep value", lambda d: edited(d, ("steps", 3, "value", "x"), [[[[[[[[[[[["1"]]]]]]]]]]]]),
-     "steps[3].value.x: expected a text"),
+    (
+        "value of the wrong kind",
+        lambda d: edited(d, ("steps", 3, "value"), {"exact": "1"}),
+        "steps[3].value.exact: unknown key",
+    ),
+    (
+        "value point float a string",
+        lambda d: edited(d, ("steps", 3, "value", "float"), "1,2"),
+        "steps[3].value.float: expected a pair",
+    ),
+    (
+        "deep value",
+        lambda d: edited(d, ("steps", 3, "value", "x"), [[[[[[[[[[[["1"]]]]]]]]]]]]),
+        "steps[3].value.x: expected a text",
+    ),
     ("extra deep nesting", lambda d: "[" * 100_000 + "]" * 100_000, "not read: the JSON text"),
-    ("deep inside the grasp", lambda d: edited(d, ("grasp", "title"), json.loads(
-        "[" * 500 + "]" * 500)), "grasp.title: expected a text or null"),
+    (
+        "deep inside the grasp",
+        lambda d: edited(d, ("grasp", "title"), json.loads("[" * 500 + "]" * 500)),
+        "grasp.title: expected a text or null",
+    ),
     ("NaN", lambda d: edited(d, ("grasp", "x1"), float("nan")), "not JSON: NaN"),
     ("Infinity", lambda d: edited(d, ("grasp", "x1"), float("inf")), "not JSON: Infinity"),
     ("-Infinity", lambda d: edited(d, ("grasp", "x1"), float("-inf")), "not JSON: -Infinity"),
-    ("overflowing float", lambda d: edited(d, ("grasp", "x1"), 1.0).replace(
-        '"x1": 1.0', '"x1": 1e999'), "not JSON: the number '1e999'"),
-    ("huge integer", lambda d: edited(d, ("grasp", "x1"), 1.0).replace(
-        '"x1": 1.0', '"x1": ' + "9" * 5000), "the integer '99"),
-    ("huge JSON number", lambda d: edited(d, ("grasp", "x1"), 1e300),
-     "grasp.x1: expected a number from"),
-    ("huge exact number", lambda d: edited(d, ("grasp", "x1"), "1e300"),
-     "grasp.x1: expected a number at most 1e+15"),
-    ("duplicate key", lambda d: edited(d, ("grasp", "x1"), "2").replace(
-        '"x1": "2"', '"x1": "2", "x1": "3"'), "grasp: the key 'x1' appears twice"),
-    ("bits a string", lambda d: edited(d, ("grasp", "x1"), {"float": "1", "bits": "53"}),
-     "grasp.x1.bits: expected an integer"),
-    ("float record extra key", lambda d: edited(d, ("grasp", "x1"),
-                                                {"float": "1", "bits": 53, "eval": 1}),
-     "grasp.x1.eval: unknown key"),
-    ("expression a list", lambda d: edited(d, ("grasp", "x1"), ["sqrt", 2]),
-     "grasp.x1: expected a number"),
+    (
+        "overflowing float",
+        lambda d: edited(d, ("grasp", "x1"), 1.0).replace('"x1": 1.0', '"x1": 1e999'),
+        "not JSON: the number '1e999'",
+    ),
+    (
+        "huge integer",
+        lambda d: edited(d, ("grasp", "x1"), 1.0).replace('"x1": 1.0', '"x1": ' + "9" * 5000),
+        "the integer '99",
+    ),
+    (
+        "huge JSON number",
+        lambda d: edited(d, ("grasp", "x1"), 1e300),
+        "grasp.x1: expected a number from",
+    ),
+    (
+        "huge exact number",
+        lambda d: edited(d, ("grasp", "x1"), "1e300"),
+        "grasp.x1: expected a number at most 1e+15",
+    ),
+    (
+        "duplicate key",
+        lambda d: edited(d, ("grasp", "x1"), "2").replace('"x1": "2"', '"x1": "2", "x1": "3"'),
+        "grasp: the key 'x1' appears twice",
+    ),
+    (
+        "bits a string",
+        lambda d: edited(d, ("grasp", "x1"), {"float": "1", "bits": "53"}),
+        "grasp.x1.bits: expected an integer",
+    ),
+    (
+        "float record extra key",
+        lambda d: edited(d, ("grasp", "x1"), {"float": "1", "bits": 53, "eval": 1}),
+        "grasp.x1.eval: unknown key",
+    ),
+    (
+        "expression a list",
+        lambda d: edited(d, ("grasp", "x1"), ["sqrt", 2]),
+        "grasp.x1: expected a number",
+    ),
     ("expression null", lambda d: edited(d, ("grasp", "mu1"), None), "grasp.mu1: expected"),
     ("expression an object", lambda d: edited(d, ("grasp", "y"), {"a": 1}), "grasp.y"),
     ("expression junk", lambda d: edited(d, ("grasp", "y"), "1 +* 2"), "grasp.y: cannot read"),
-    ("friction junk", lambda d: edited(d, ("grasp", "friction"), {"1": "mu"}),
-     "grasp.friction: the key '2' is missing"),
+    (
+        "friction junk",
+        lambda d: edited(d, ("grasp", "friction"), {"1": "mu"}),
+        "grasp.friction: the key '2' is missing",
+    ),
     ("shape junk", lambda d: edited(d, ("grasp", "shape"), ["circle", -1]), "grasp.shape"),
     ("invalid grasp", lambda d: edited(d, ("grasp", "x1"), "-3"), "grasp: x1 + x2 = -1 must be"),
-    ("lone surrogate", lambda d: edited(d, ("grasp", "title"), "a\ud800b"),
-     "grasp.title: control character or lone surrogate"),
+    (
+        "lone surrogate",
+        lambda d: edited(d, ("grasp", "title"), "a\ud800b"),
+        "grasp.title: control character or lone surrogate",
+    ),
     ("NUL in a text", lambda d: edited(d, ("grasp", "title"), "a\x00b"), "grasp.title: control"),
-    ("unicode junk name", lambda d: edited(d, ("steps", 0, "name"), "O\u202e"),
-     "steps[0].name: expected a step name"),
-    ("newline in a key", lambda d: edited(d, ("grasp", "\n"), None),
-     "grasp['\\n']: unknown key"),
-    ("newline after a name", lambda d: edited(d, ("steps", 0, "name"), "O\n"),
-     "steps[0].name: expected a step name"),
-    ("unicode digits in a float", lambda d: edited(d, ("grasp", "x1"),
-                                                   {"float": "\u0663", "bits": 53}),
-     "grasp.x1.float: expected a fraction"),
-    ("long title", lambda d: edited(d, ("grasp", "title"), "t" * 5000),
-     "grasp.title: a text of 5000 characters"),
-    ("many steps", lambda d: edited(d, ("steps",), [d["steps"][0]] * 1000),
-     "steps: a list of 1000 items is longer than 64"),
+    (
+        "unicode junk name",
+        lambda d: edited(d, ("steps", 0, "name"), "O\u202e"),
+        "steps[0].name: expected a step name",
+    ),
+    ("newline in a key", lambda d: edited(d, ("grasp", "\n"), None), "grasp['\\n']: unknown key"),
+    (
+        "newline after a name",
+        lambda d: edited(d, ("steps", 0, "name"), "O\n"),
+        "steps[0].name: expected a step name",
+    ),
+    (
+        "unicode digits in a float",
+        lambda d: edited(d, ("grasp", "x1"), {"float": "\u0663", "bits": 53}),
+        "grasp.x1.float: expected a fraction",
+    ),
+    (
+        "long title",
+        lambda d: edited(d, ("grasp", "title"), "t" * 5000),
+        "grasp.title: a text of 5000 characters",
+    ),
+    (
+        "many steps",
+        lambda d: edited(d, ("steps",), [d["steps"][0]] * 1000),
+        "steps: a list of 1000 items is longer than 64",
+    ),
     ("skipped junk", lambda d: edited(d, ("skipped",), [["B12"]]), "skipped[0]: expected a pair"),
     ("twenty megabytes", lambda d: " " * (20 * 2**20), "the JSON text has"),
 ]
@@ -387,17 +480,45 @@ def _paths(value: Any, path: tuple = ()) -> list[tuple]:
 
 
 _JSON_LEAF = st.one_of(
-    st.none(), st.booleans(), st.integers(min_value=-(10**40), max_value=10**40),
-    st.floats(allow_nan=True, allow_infinity=True), st.text(max_size=30),
-    st.sampled_from(["1", "0", "-1", "1/2", "sqrt(2)", "pi/2", "x1", "1e400", "2**(1/3)",
-                     "O", "P1", "B12", "mu", "xi", "point", "meet", "circle", "envelope",
-                     "graspcompass.construction/1"]),
-    st.fixed_dictionaries({"float": st.sampled_from(["1/3", "1", "-3/4", "x"]),
-                           "bits": st.integers(-5, 2000)}),
+    st.none(),
+    st.booleans(),
+    st.integers(min_value=-(10**40), max_value=10**40),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.text(max_size=30),
+    st.sampled_from(
+        [
+            "1",
+            "0",
+            "-1",
+            "1/2",
+            "sqrt(2)",
+            "pi/2",
+            "x1",
+            "1e400",
+            "2**(1/3)",
+            "O",
+            "P1",
+            "B12",
+            "mu",
+            "xi",
+            "point",
+            "meet",
+            "circle",
+            "envelope",
+            "graspcompass.construction/1",
+        ]
+    ),
+    st.fixed_dictionaries(
+        {"float": st.sampled_from(["1/3", "1", "-3/4", "x"]), "bits": st.integers(-5, 2000)}
+    ),
 )
-_JSON = st.recursive(_JSON_LEAF, lambda inner: st.one_of(
-    st.lists(inner, max_size=3), st.dictionaries(st.text(max_size=5), inner, max_size=3)),
-    max_leaves=6)
+_JSON = st.recursive(
+    _JSON_LEAF,
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=3), st.dictionaries(st.text(max_size=5), inner, max_size=3)
+    ),
+    max_leaves=6,
+)
 
 
 def _swap(value: Any) -> Any:
@@ -446,20 +567,29 @@ def mutated(draw: st.DrawFn, doc: dict[str, Any]) -> dict[str, Any]:
 
 
 _DOC = to_document(internal_force_diagram(Grasp.preset("table1a")))
-_FLOAT_DOC = to_document(internal_force_diagram(
-    Grasp(1.0, 1.3, 0.5, 1.2, 1.4, mu1=0.7, mu2=sp.Float(0.8, 30))))
+_FLOAT_DOC = to_document(
+    internal_force_diagram(Grasp(1.0, 1.3, 0.5, 1.2, 1.4, mu1=0.7, mu2=sp.Float(0.8, 30)))
+)
 _EXAMPLES = int(os.environ.get("GRASPCOMPASS_FUZZ_EXAMPLES", "120"))
 
 
-@settings(max_examples=_EXAMPLES, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(
+    max_examples=_EXAMPLES,
+    deadline=None,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
 @given(mutated(_DOC))
 def test_mutated_documents_are_refused_or_re_export_identically(doc):
     _refused_or_the_same(doc)
 
 
-@settings(max_examples=max(_EXAMPLES // 2, 10), deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(
+    max_examples=max(_EXAMPLES // 2, 10),
+    deadline=None,
+    database=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
 @given(mutated(_FLOAT_DOC))
 def test_mutated_float_documents_are_refused_or_re_export_identically(doc):
     _refused_or_the_same(doc)

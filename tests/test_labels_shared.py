@@ -62,7 +62,7 @@ def test_svg_labels_do_not_overlap_each_other_or_markers(construction) -> None:
     assert len(boxes) >= 10
     names = sorted(boxes)
     for i, a in enumerate(names):
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             assert _overlap(boxes[a], boxes[b]) == 0.0, (a, b)
         for p, (cx, cy, r) in markers.items():
             if p != a:
@@ -75,8 +75,11 @@ def test_fig6_labels_around_O_apart() -> None:
     boxes, _ = _svg_labels(to_svg(c))
     o = "O" if "O" in boxes else "inset-O"  # named in the zoomed inset where they crowd
     assert o in boxes
-    near = [n for n, b in boxes.items() if n != o
-            and abs(b[0] - boxes[o][0]) < 120 and abs(b[1] - boxes[o][1]) < 120]
+    near = [
+        n
+        for n, b in boxes.items()
+        if n != o and abs(b[0] - boxes[o][0]) < 120 and abs(b[1] - boxes[o][1]) < 120
+    ]
     assert near  # labels crowd around O, and none covers O's
     assert all(_overlap(boxes[o], boxes[n]) == 0.0 for n in near)
 
@@ -101,8 +104,11 @@ def test_tikz_labels_have_the_svg_anchors(construction) -> None:
             assert (mx - cx) * dx > 0, lab.names
         if dy:
             assert (cy - my) * dy > 0, lab.names  # SVG's y points down
-        node = re.search(rf"\\node\[label, anchor=([a-z ]+)\] at \(([-\d.]+), ([-\d.]+)\) "
-                         rf"\{{\${re.escape(_tex(lab.names))}\$\}};", tikz)
+        node = re.search(
+            rf"\\node\[label, anchor=([a-z ]+)\] at \(([-\d.]+), ([-\d.]+)\) "
+            rf"\{{\${re.escape(_tex(lab.names))}\$\}};",
+            tikz,
+        )
         assert node is not None, lab.names
         assert node.group(1) == ANCHORS[lab.direction]
         assert (float(node.group(2)), float(node.group(3))) == pytest.approx(lab.at, abs=1e-9)
@@ -151,11 +157,13 @@ def test_the_shared_sizes_are_the_default_theme() -> None:
 
 
 def test_labelling_and_scene_do_not_import_matplotlib() -> None:
-    code = ("import sys, graspcompass.labelling, graspcompass.layout; "
-            "import graspcompass.export._scene as s; "
-            "from graspcompass import Grasp, internal_force_diagram; "
-            "s.build_scene(internal_force_diagram(Grasp.preset('fig6'))); "
-            "assert 'matplotlib' not in sys.modules")
+    code = (
+        "import sys, graspcompass.labelling, graspcompass.layout; "
+        "import graspcompass.export._scene as s; "
+        "from graspcompass import Grasp, internal_force_diagram; "
+        "s.build_scene(internal_force_diagram(Grasp.preset('fig6'))); "
+        "assert 'matplotlib' not in sys.modules"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, timeout=120)
 
 
@@ -184,5 +192,8 @@ def test_huge_curves_cost_what_the_frame_holds(radius: float) -> None:
     near = np.array([[120.0 - 400.0, 95.0], [120.0, 95.0], [120.0 + 400.0, 95.0]])
     if radius >= 1e12:  # the 100-gon's first edge: from (120, 95) to the right, level
         assert [p.direction for p in placed] == [
-            p.direction for p in labelling.place(anchors, texts, curves=[near[1:]],
-                                                 frame=(0, 0, 388.08, 388.08))]
+            p.direction
+            for p in labelling.place(
+                anchors, texts, curves=[near[1:]], frame=(0, 0, 388.08, 388.08)
+            )
+        ]

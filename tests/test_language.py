@@ -81,19 +81,41 @@ Pq = parallel_to_points A B C      # through C along B - A = (2, 0)
 T = quarter_turn B C               # B - C = (2, -2) turned clockwise: (-2, -2), plus C
 """
 EXPECTED = {
-    "A": Point(0, 0), "B": Point(2, 0), "C": Point(0, 2),
-    "l": Line(Point(0, 0), Point(2, 0)), "m": Line(Point(0, 2), Point(1, 1)),
-    "h": Line(Point(0, 0), Point(1, 0)), "p": Line(Point(0, 2), Point(0, 2)),
-    "q": Line(Point(0, 2), Point(2, 0)), "F": Point(0, 0), "M": Point(1, 1),
-    "X": Point(-2, 0), "R": Point(0, -2), "c1": Circle(Point(0, 0), 4),
-    "c2": Circle(Point(1, 0), 1), "c3": Circle(Point(2, 0), 4), "I0": Point(2, 0),
-    "I1": Point(-2, 0), "J": Point(1, sqrt(3)), "K": Point(1, -sqrt(3)), "s": sp.Integer(2),
-    "V": Point(-2, 6), "P1": Point(2, 4), "P2": Point(0, 2),
-    "cc": Circle(Point(1, 1), 2), "cr": Circle(Point(0, 2), 9), "cs": Circle(Point(0, 2), 4),
-    "bs": Line(Point(0, 0), Point(4, 4)), "ta": Line(Point(2, 0), Point(0, 2)),
-    "Tp": Point(1, sqrt(3)), "rt": Point(0, 2), "ho": Point(1, 1), "pr": Point(-2, 4),
+    "A": Point(0, 0),
+    "B": Point(2, 0),
+    "C": Point(0, 2),
+    "l": Line(Point(0, 0), Point(2, 0)),
+    "m": Line(Point(0, 2), Point(1, 1)),
+    "h": Line(Point(0, 0), Point(1, 0)),
+    "p": Line(Point(0, 2), Point(0, 2)),
+    "q": Line(Point(0, 2), Point(2, 0)),
+    "F": Point(0, 0),
+    "M": Point(1, 1),
+    "X": Point(-2, 0),
+    "R": Point(0, -2),
+    "c1": Circle(Point(0, 0), 4),
+    "c2": Circle(Point(1, 0), 1),
+    "c3": Circle(Point(2, 0), 4),
+    "I0": Point(2, 0),
+    "I1": Point(-2, 0),
+    "J": Point(1, sqrt(3)),
+    "K": Point(1, -sqrt(3)),
+    "s": sp.Integer(2),
+    "V": Point(-2, 6),
+    "P1": Point(2, 4),
+    "P2": Point(0, 2),
+    "cc": Circle(Point(1, 1), 2),
+    "cr": Circle(Point(0, 2), 9),
+    "cs": Circle(Point(0, 2), 4),
+    "bs": Line(Point(0, 0), Point(4, 4)),
+    "ta": Line(Point(2, 0), Point(0, 2)),
+    "Tp": Point(1, sqrt(3)),
+    "rt": Point(0, 2),
+    "ho": Point(1, 1),
+    "pr": Point(-2, 4),
     "ra": Line(Point(1, 0), Point(0, 2)),
-    "Pq": Line(Point(0, 2), Point(2, 0)), "T": Point(-2, 0),
+    "Pq": Line(Point(0, 2), Point(2, 0)),
+    "T": Point(-2, 0),
 }
 PRESETS = ("fig6", "table1a", "table1b", "table1c")
 
@@ -101,6 +123,7 @@ PRESETS = ("fig6", "table1a", "table1b", "table1c")
 @contextmanager
 def hang_bound(seconds: int):
     """Fail instead of hanging: SIGALRM after ``seconds``."""
+
     def stop(signum, frame):
         raise TimeoutError(f"parse took more than {seconds} s")
 
@@ -115,13 +138,37 @@ def hang_bound(seconds: int):
 
 # -- the operation records -------------------------------------------------------------
 def test_every_operation_of_the_kernel_has_a_record():
-    expected = {"point", "line_through", "line_with_direction", "line_at_angle",
-                "perpendicular", "parallel", "foot", "midpoint", "meet", "reflect",
-                "circle_through", "circle_on_diameter", "intersect_line_circle",
-                "intersect_circles", "second_intersection", "signed_length",
-                "point_from_lengths", "point_on_line", "point_on_circle", "circumcircle",
-                "circle_radius", "circle_compass", "bisector", "tangent_at", "tangent_point",
-                "rotate", "homothety", "point_reflect", "radical_axis"}
+    expected = {
+        "point",
+        "line_through",
+        "line_with_direction",
+        "line_at_angle",
+        "perpendicular",
+        "parallel",
+        "foot",
+        "midpoint",
+        "meet",
+        "reflect",
+        "circle_through",
+        "circle_on_diameter",
+        "intersect_line_circle",
+        "intersect_circles",
+        "second_intersection",
+        "signed_length",
+        "point_from_lengths",
+        "point_on_line",
+        "point_on_circle",
+        "circumcircle",
+        "circle_radius",
+        "circle_compass",
+        "bisector",
+        "tangent_at",
+        "tangent_point",
+        "rotate",
+        "homothety",
+        "point_reflect",
+        "radical_axis",
+    }
     expected |= {"parallel_to_points", "quarter_turn"}  # issue 25: the n-contact recipe
     assert set(OPERATIONS) == expected
     assert all(OPS[k] is op.function for k, op in OPERATIONS.items())
@@ -140,15 +187,24 @@ def test_ggb_templates_agree_with_the_geogebra_export():
     seen = set()
     for s in c.steps:
         op = OPERATIONS.get(s.op)
-        if op is None or op.ggb is None or s.op in ("point", "line_with_direction",
-                                                     "signed_length", "point_from_lengths"):
+        if (
+            op is None
+            or op.ggb is None
+            or s.op in ("point", "line_with_direction", "signed_length", "point_from_lengths")
+        ):
             continue
         d = definition(s, steps, with_grasp=False)
         ours = op.ggb_for(tuple(ggb_label(n) for n in s.inputs), s.params)
         assert ours == f"{d.command}[{', '.join(d.inputs)}]", s.name
         seen.add(s.op)
-    assert seen == {"foot", "midpoint", "meet", "perpendicular", "circle_on_diameter",
-                    "second_intersection"}
+    assert seen == {
+        "foot",
+        "midpoint",
+        "meet",
+        "perpendicular",
+        "circle_on_diameter",
+        "second_intersection",
+    }
 
 
 def test_every_step_of_the_recipe_has_a_role():
@@ -177,8 +233,10 @@ def test_symbolic_replay_keeps_the_parameter():
 
 
 def test_degenerate_step_names_step_line_and_objects():
-    text = ("A = point (0, 0)\nl = line_with_direction A (1, 0)\n"
-            "m = line_with_direction A (2, 0)\nX = meet l m\n")
+    text = (
+        "A = point (0, 0)\nl = line_with_direction A (1, 0)\n"
+        "m = line_with_direction A (2, 0)\nX = meet l m\n"
+    )
     with pytest.raises(DegenerateStepError) as info:
         replay(parse(text, "par.gc"))
     err = info.value
@@ -188,37 +246,60 @@ def test_degenerate_step_names_step_line_and_objects():
 
 
 def test_optional_step_is_left_out_when_degenerate():
-    text = ("A = point (0, 0)\nB = point (2, 0)\nC = point (4, 0)\nc1 = circle_on_diameter A B\n"
-            "c2 = circle_on_diameter A C\nT = second_intersection c1 c2 A optional\n")
+    text = (
+        "A = point (0, 0)\nB = point (2, 0)\nC = point (4, 0)\nc1 = circle_on_diameter A B\n"
+        "c2 = circle_on_diameter A C\nT = second_intersection c1 c2 A optional\n"
+    )
     c = replay(parse(text))
     assert "T" not in c and c.skipped[0][0] == "T" and "tangent" in c.skipped[0][1]
     with pytest.raises(DegenerateStepError, match=":6:1: step T"):
         replay(parse(text.replace(" optional", "")))
     with pytest.raises(DegenerateStepError, match="no branch 1"):
-        replay(parse("A = point (0, 0)\nB = point (1, 0)\nc = circle_through A B\n"
-                     "d = circle_through B A\nl = line_through A B\n"
-                     "T = intersect_line_circle l c (1)\nc2 = circle_on_diameter A B\n"
-                     "U = intersect_circles c c2 (1)\n"))
+        replay(
+            parse(
+                "A = point (0, 0)\nB = point (1, 0)\nc = circle_through A B\n"
+                "d = circle_through B A\nl = line_through A B\n"
+                "T = intersect_line_circle l c (1)\nc2 = circle_on_diameter A B\n"
+                "U = intersect_circles c c2 (1)\n"
+            )
+        )
 
 
 def test_replay_on_float_values_of_a_mapping():
-    vals = {"x1": 2.0, "x2": 2.0, "y": 1.0, "phi1": math.pi / 2, "phi2": math.pi / 2,
-            "mu1": 1.0, "mu2": 1.2}
+    vals = {
+        "x1": 2.0,
+        "x2": 2.0,
+        "y": 1.0,
+        "phi1": math.pi / 2,
+        "phi2": math.pi / 2,
+        "mu1": 1.0,
+        "mu2": 1.2,
+    }
     a = replay(paper_program(), vals)
     b = internal_force_diagram(Grasp(**vals))
     assert a.steps == b.steps
 
 
-@pytest.mark.parametrize("text, values, what", [
-    ("param a real\nA = point (1/a, 0)", {"a": 0}, "t.gc:2:1: step A: the value 1/a is not finite"),
-    ("param a real\nA = point (1/a, 0)", {"a": 0.0}, "t.gc:2:1: step A: the value 1/a is not a "
-     "finite real"),
-    ("param a real\nA = point (sqrt(a), 0)", {"a": -1}, "sqrt(a) is not a real number"),
-    ("param a real\nA = point (sqrt(a), 0)", {"a": -1.0}, "sqrt(a) is not a finite real"),
-    ("param a > 0\nA = point (a, 0)", {"a": -1}, "t.gc:1:1: a = -1 is outside its domain"),
-    ("param a angle\nA = point (a, 0)", {"a": "4"}, "a = 4 is outside its domain (angle"),
-    ("param a half_angle\nA = point (a, 0)", {"a": "pi/2"}, "outside its domain (half_angle"),
-])
+@pytest.mark.parametrize(
+    "text, values, what",
+    [
+        (
+            "param a real\nA = point (1/a, 0)",
+            {"a": 0},
+            "t.gc:2:1: step A: the value 1/a is not finite",
+        ),
+        (
+            "param a real\nA = point (1/a, 0)",
+            {"a": 0.0},
+            "t.gc:2:1: step A: the value 1/a is not a finite real",
+        ),
+        ("param a real\nA = point (sqrt(a), 0)", {"a": -1}, "sqrt(a) is not a real number"),
+        ("param a real\nA = point (sqrt(a), 0)", {"a": -1.0}, "sqrt(a) is not a finite real"),
+        ("param a > 0\nA = point (a, 0)", {"a": -1}, "t.gc:1:1: a = -1 is outside its domain"),
+        ("param a angle\nA = point (a, 0)", {"a": "4"}, "a = 4 is outside its domain (angle"),
+        ("param a half_angle\nA = point (a, 0)", {"a": "pi/2"}, "outside its domain (half_angle"),
+    ],
+)
 def test_replay_refuses_bad_values(text, values, what):
     with pytest.raises(InputError, match=re.escape(what)):
         replay(parse(text, "t.gc"), values)
@@ -234,8 +315,21 @@ def _same_protocol(a, b):
     assert a.names == b.names
     assert a.skipped == b.skipped
     for x, y in zip(a.steps, b.steps):
-        for f in ("index", "name", "op", "instrument", "inputs", "obj", "conditions", "caption",
-                  "ref", "params", "key", "role", "n"):
+        for f in (
+            "index",
+            "name",
+            "op",
+            "instrument",
+            "inputs",
+            "obj",
+            "conditions",
+            "caption",
+            "ref",
+            "params",
+            "key",
+            "role",
+            "n",
+        ):
             assert getattr(x, f) == getattr(y, f), (x.name, f)
     assert a.steps == b.steps
 
@@ -253,25 +347,49 @@ def test_shipped_recipe_is_todays_protocol_symbolic():
     assert "envelope" not in c and c.conditions
 
 
-GRASP_VALUES = st.fixed_dictionaries(dict(
-    x1=st.integers(1, 40), x2=st.integers(1, 40), y=st.integers(0, 40),
-    phi1=st.integers(1, 24), phi2=st.integers(1, 24), mu1=st.integers(1, 30),
-    mu2=st.integers(1, 30)))
+GRASP_VALUES = st.fixed_dictionaries(
+    dict(
+        x1=st.integers(1, 40),
+        x2=st.integers(1, 40),
+        y=st.integers(0, 40),
+        phi1=st.integers(1, 24),
+        phi2=st.integers(1, 24),
+        mu1=st.integers(1, 30),
+        mu2=st.integers(1, 30),
+    )
+)
 
 
 def _grasp(v, floats):
     """A grasp from small integers: lengths in tenths, φ in multiples of π/24, μ in tenths."""
     if floats:
-        return Grasp(v["x1"] / 10, v["x2"] / 10, v["y"] / 10, v["phi1"] * math.pi / 24,
-                     v["phi2"] * math.pi / 24, mu1=v["mu1"] / 10, mu2=v["mu2"] / 10)
-    return Grasp(f"{v['x1']}/10", f"{v['x2']}/10", f"{v['y']}/10", f"{v['phi1']}*pi/24",
-                 f"{v['phi2']}*pi/24", mu1=f"{v['mu1']}/10", mu2=f"{v['mu2']}/10")
+        return Grasp(
+            v["x1"] / 10,
+            v["x2"] / 10,
+            v["y"] / 10,
+            v["phi1"] * math.pi / 24,
+            v["phi2"] * math.pi / 24,
+            mu1=v["mu1"] / 10,
+            mu2=v["mu2"] / 10,
+        )
+    return Grasp(
+        f"{v['x1']}/10",
+        f"{v['x2']}/10",
+        f"{v['y']}/10",
+        f"{v['phi1']}*pi/24",
+        f"{v['phi2']}*pi/24",
+        mu1=f"{v['mu1']}/10",
+        mu2=f"{v['mu2']}/10",
+    )
 
 
 @pytest.mark.parametrize("floats", [False, True], ids=["exact", "float"])
 # two grasps in three break condition (1) and are skipped: not a sign of a bad strategy
-@settings(max_examples=12, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+@settings(
+    max_examples=12,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
 @given(values=GRASP_VALUES)
 def test_shipped_recipe_is_todays_protocol_on_random_grasps(floats, values):
     try:
@@ -341,13 +459,20 @@ def test_builder_refuses_like_the_parser():
 
 
 def test_claims_are_data():
-    p = parse("param a > 0\nhypothesis condition1\nA = point (a, 0)\nB = point (0, a)\n"
-              "l = line_through A B\ns = signed_length A B l\n"
-              "claim A == point(a, 0)\nclaim s == sqrt(2)*a\nclaim on A l\n"
-              "claim sign s - a >= 0 under condition1\nclaim parallel l l\n")
+    p = parse(
+        "param a > 0\nhypothesis condition1\nA = point (a, 0)\nB = point (0, a)\n"
+        "l = line_through A B\ns = signed_length A B l\n"
+        "claim A == point(a, 0)\nclaim s == sqrt(2)*a\nclaim on A l\n"
+        "claim sign s - a >= 0 under condition1\nclaim parallel l l\n"
+    )
     kinds = [(c.kind, c.relation, c.under) for c in p.claims]
-    assert kinds == [("equal", "==", ()), ("equal", "==", ()), ("on", "", ()),
-                     ("sign", ">=", ("condition1",)), ("parallel", "", ())]
+    assert kinds == [
+        ("equal", "==", ()),
+        ("equal", "==", ()),
+        ("on", "", ()),
+        ("sign", ">=", ("condition1",)),
+        ("parallel", "", ()),
+    ]
     s = sp.Symbol("s", real=True)
     assert p.claims[1].terms[1] == Value(sqrt(2) * p.params[0].symbol)
     assert p.claims[3].terms[0] == Value(s - p.params[0].symbol)
@@ -400,8 +525,10 @@ def test_parse_error_names_file_line_and_column(marked, what):
 
 
 def test_branch_value_checked():
-    text = ("A = point (0, 0)\nB = point (1, 0)\nc = circle_through A B\n"
-            "X = intersect_circles c c (2)\n")
+    text = (
+        "A = point (0, 0)\nB = point (1, 0)\nc = circle_through A B\n"
+        "X = intersect_circles c c (2)\n"
+    )
     with pytest.raises(ConstructionSyntaxError) as info:
         parse(text)
     assert (info.value.line, info.value.column) == (4, 28)
@@ -418,14 +545,65 @@ def test_limits():
 
 
 # -- fuzz: only ConstructionSyntaxError or a Program -------------------------------------------
-WORDS = ["A", "B", "l", "c", "X", "=", "==", "point", "meet", "foot", "line_through",
-         "circle_through", "intersect_circles", "(0, 0)", "(1, 2)", "(0)", "(1", ")", "(",
-         '"cap"', '"', "ref", "role", "V", "1", "key", "optional", "param", "> 0", "angle",
-         "hypothesis", "condition1", "let", "claim", "collinear", "on", "sign", "under", "#",
-         "x-axis", "-", "sqrt(2)", "(pi/3, 10**99999)", "(x, )", "\\", "envelope", "é", "\t",
-         "(sin(a), cos(a))", ">", "<=", "point(1, 2)", "9" * 30]
-PREFIX = ("param a angle\nhypothesis condition1\nA = point (0, 0)\nB = point (1, 0)\n"
-          "l = line_through A B\nc = circle_through A B\n")
+WORDS = [
+    "A",
+    "B",
+    "l",
+    "c",
+    "X",
+    "=",
+    "==",
+    "point",
+    "meet",
+    "foot",
+    "line_through",
+    "circle_through",
+    "intersect_circles",
+    "(0, 0)",
+    "(1, 2)",
+    "(0)",
+    "(1",
+    ")",
+    "(",
+    '"cap"',
+    '"',
+    "ref",
+    "role",
+    "V",
+    "1",
+    "key",
+    "optional",
+    "param",
+    "> 0",
+    "angle",
+    "hypothesis",
+    "condition1",
+    "let",
+    "claim",
+    "collinear",
+    "on",
+    "sign",
+    "under",
+    "#",
+    "x-axis",
+    "-",
+    "sqrt(2)",
+    "(pi/3, 10**99999)",
+    "(x, )",
+    "\\",
+    "envelope",
+    "é",
+    "\t",
+    "(sin(a), cos(a))",
+    ">",
+    "<=",
+    "point(1, 2)",
+    "9" * 30,
+]
+PREFIX = (
+    "param a angle\nhypothesis condition1\nA = point (0, 0)\nB = point (1, 0)\n"
+    "l = line_through A B\nc = circle_through A B\n"
+)
 
 
 @settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -18,9 +18,11 @@ PAGES = ("language-reference.md", "geometry-gallery.md")
 
 def _examples(page: str) -> list[tuple[int, str]]:
     text = (DOCS / page).read_text("utf-8")
-    return [(text.count("\n", 0, m.start()) + 2, m.group(1))
-            for m in re.finditer(r"^```text\n(.*?)^```", text, re.S | re.M)
-            if "claim" in m.group(1)]
+    return [
+        (text.count("\n", 0, m.start()) + 2, m.group(1))
+        for m in re.finditer(r"^```text\n(.*?)^```", text, re.S | re.M)
+        if "claim" in m.group(1)
+    ]
 
 
 EXAMPLES = [(page, line, body) for page in PAGES for line, body in _examples(page)]
@@ -30,12 +32,13 @@ def test_every_operation_has_a_reference_entry_with_an_example():
     text = (DOCS / "language-reference.md").read_text("utf-8")
     for name in OPERATIONS:
         head = text.index(f"### `{name}`")
-        assert "```text" in text[head: text.find("### ", head + 4)], name
+        assert "```text" in text[head : text.find("### ", head + 4)], name
     assert len(_examples("geometry-gallery.md")) >= 10
 
 
-@pytest.mark.parametrize(("page", "line", "body"), EXAMPLES,
-                         ids=[f"{p}:{n}" for p, n, _ in EXAMPLES])
+@pytest.mark.parametrize(
+    ("page", "line", "body"), EXAMPLES, ids=[f"{p}:{n}" for p, n, _ in EXAMPLES]
+)
 def test_example_is_proved(page, line, body):
     report = check_program(parse(body, f"{page}:{line}"), timeout=60)
     assert [r.result.status.value for r in report.claims] == ["PROVED"] * len(report.claims)

@@ -31,8 +31,18 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src"
 
 #: Rank of each layer, lowest first; proof and scene are siblings, as are render and export.
-RANKS = {"boundary": 0, "geometry": 1, "grasp": 2, "construction": 3, "proof": 4,
-         "scene": 4, "render": 5, "export": 5, "applications": 6, "cli": 7}
+RANKS = {
+    "boundary": 0,
+    "geometry": 1,
+    "grasp": 2,
+    "construction": 3,
+    "proof": 4,
+    "scene": 4,
+    "render": 5,
+    "export": 5,
+    "applications": 6,
+    "cli": 7,
+}
 
 #: Module (or package) name -> layer; the longest matching prefix wins.
 LAYERS = {
@@ -94,7 +104,8 @@ def _module_name(path: Path, root: Path) -> tuple[str, bool]:
 
 def _is_type_checking(test: ast.expr) -> bool:
     return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
-        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING")
+        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING"
+    )
 
 
 def _imports(tree: ast.AST) -> Iterable[ast.Import | ast.ImportFrom]:
@@ -110,8 +121,9 @@ def _imports(tree: ast.AST) -> Iterable[ast.Import | ast.ImportFrom]:
         stack.extend(ast.iter_child_nodes(node))
 
 
-def import_graph(root: Path, top: str = "graspcompass"
-                 ) -> tuple[dict[str, set[str]], dict[str, set[str]]]:
+def import_graph(
+    root: Path, top: str = "graspcompass"
+) -> tuple[dict[str, set[str]], dict[str, set[str]]]:
     """``(graph, external)`` of the package ``top`` under ``root``.
 
     ``graph`` maps each module to the package modules it imports; ``external`` to the
@@ -133,13 +145,17 @@ def import_graph(root: Path, top: str = "graspcompass"
                 targets = [a.name for a in node.names]
             elif node.level == 0:
                 base = node.module or ""
-                targets = [f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base
-                           for a in node.names]
+                targets = [
+                    f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base
+                    for a in node.names
+                ]
             else:
                 up = here[: len(here) - node.level + 1]
                 base = ".".join(up + ([node.module] if node.module else []))
-                targets = [f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base
-                           for a in node.names]
+                targets = [
+                    f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base
+                    for a in node.names
+                ]
             for target in targets:
                 if target == top or target.startswith(top + "."):
                     while target not in modules and "." in target:
@@ -199,18 +215,28 @@ def layer_of(module: str, layers: Mapping[str, str] = LAYERS) -> str:
     raise KeyError(f"{module} is in no layer: add it to LAYERS")
 
 
-def upward(graph: Mapping[str, Iterable[str]], layers: Mapping[str, str] = LAYERS
-           ) -> list[tuple[str, str]]:
+def upward(
+    graph: Mapping[str, Iterable[str]], layers: Mapping[str, str] = LAYERS
+) -> list[tuple[str, str]]:
     """The edges ``(a, b)`` where ``a`` is on a lower layer than ``b``."""
-    return sorted((a, b) for a, targets in graph.items() for b in targets
-                  if RANKS[layer_of(a, layers)] < RANKS[layer_of(b, layers)])
+    return sorted(
+        (a, b)
+        for a, targets in graph.items()
+        for b in targets
+        if RANKS[layer_of(a, layers)] < RANKS[layer_of(b, layers)]
+    )
 
 
-def painters_only(external: Mapping[str, Iterable[str]], layers: Mapping[str, str] = LAYERS
-                  ) -> list[tuple[str, str]]:
+def painters_only(
+    external: Mapping[str, Iterable[str]], layers: Mapping[str, str] = LAYERS
+) -> list[tuple[str, str]]:
     """``(module, package)`` for a module below render/export importing matplotlib."""
-    return sorted((m, p) for m, pkgs in external.items() for p in pkgs
-                  if p in PAINTERS_ONLY and RANKS[layer_of(m, layers)] < RANKS["render"])
+    return sorted(
+        (m, p)
+        for m, pkgs in external.items()
+        for p in pkgs
+        if p in PAINTERS_ONLY and RANKS[layer_of(m, layers)] < RANKS["render"]
+    )
 
 
 # --- the checker on graphs made to fail ----------------------------------------------
@@ -291,13 +317,18 @@ def test_the_allowed_upward_edge_is_needed_and_the_kernel_is_below_the_inputs(pa
     """The exception is real (else drop it), and the exact kernel never reads inputs."""
     graph, _ = package
     assert ALLOWED_UP <= set(upward(graph))
-    kernel = [m for m in graph if m == "graspcompass.geometry.exact"
-              or m.startswith("graspcompass.geometry._exact_")]
+    kernel = [
+        m
+        for m in graph
+        if m == "graspcompass.geometry.exact" or m.startswith("graspcompass.geometry._exact_")
+    ]
     assert len(kernel) >= 5
     for m in kernel:
         assert {t for t in graph[m] if layer_of(t) == "boundary"} <= {
-            "graspcompass.boundary.errors", "graspcompass.boundary.expr",
-            "graspcompass.boundary.limits"}, m
+            "graspcompass.boundary.errors",
+            "graspcompass.boundary.expr",
+            "graspcompass.boundary.limits",
+        }, m
 
 
 def test_nothing_below_the_painters_imports_matplotlib(package) -> None:
@@ -307,8 +338,10 @@ def test_nothing_below_the_painters_imports_matplotlib(package) -> None:
 
 def test_modules_are_small() -> None:
     """No module over 600 lines, the median near 150 (issue 21, the project brief)."""
-    sizes = {p: len(p.read_text(encoding="utf-8").splitlines())
-             for p in (SRC / "graspcompass").rglob("*.py")}
+    sizes = {
+        p: len(p.read_text(encoding="utf-8").splitlines())
+        for p in (SRC / "graspcompass").rglob("*.py")
+    }
     assert [str(p.relative_to(SRC)) for p, n in sizes.items() if n > 600] == []
     median = sorted(sizes.values())[len(sizes) // 2]
     assert median <= 200, median

@@ -42,8 +42,12 @@ from graspcompass.render.theme import QUALITIES
 SMALL = dict(figsize=(3.0, 3.4), dpi=40)
 #: Tiny construction frames: their captions as small as the theme's (the 14 px rule of the
 #: GIF is tested in tests/test_anim_camera.py), no camera.
-CSMALL = dict(SMALL, min_text_px=0, camera=False,
-              quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0))
+CSMALL = dict(
+    SMALL,
+    min_text_px=0,
+    camera=False,
+    quality=replace(QUALITIES["standard"], caption_size=8.5, scale=1.0),
+)
 #: Issue 12: a caption stays at least 2.5 s, and longer by its length (15 characters a
 #: second is the reading rate chosen for a lecture; see docs/howto/export.md).
 LEAST_SECONDS, CHARS_PER_SECOND = 2.5, 15.0
@@ -56,8 +60,7 @@ def fig6():
 
 @pytest.fixture(scope="module")
 def small(fig6):
-    return animate_construction(fig6, frames_per_step=2, pause_frames=2, hold_frames=2,
-                                **CSMALL)
+    return animate_construction(fig6, frames_per_step=2, pause_frames=2, hold_frames=2, **CSMALL)
 
 
 def printed_steps(preset: str) -> list[tuple[int, str]]:
@@ -81,8 +84,9 @@ def test_caption_numbers_are_those_of_graspcompass_steps(fig6, small):
             head = small.caption_at(f).split("\n")[0]
             assert head.startswith(f"Step {number} of {first}–{last} · "), (name, head)
     # the PNG key frames carry the same numbers
-    assert [name for _, name in small.key_frames()] == \
-        [f"step-{number:02d}-{name}" for number, name in printed]
+    assert [name for _, name in small.key_frames()] == [
+        f"step-{number:02d}-{name}" for number, name in printed
+    ]
 
 
 # -- labels ---------------------------------------------------------------------------------
@@ -110,8 +114,12 @@ def test_no_label_shows_a_point_before_its_step(fig6, small):
                 seen_parts.add(name)
     # and at the end every point is named
     small.render(-1)
-    final = {n for t in small.axes.texts if t.get_visible() and t.get_text().startswith("$")
-             for n in _names_in(t.get_text(), set(index))}
+    final = {
+        n
+        for t in small.axes.texts
+        if t.get_visible() and t.get_text().startswith("$")
+        for n in _names_in(t.get_text(), set(index))
+    }
     points = {s.name for s in fig6.steps if s.kind == "point" and not s.name.startswith("B")}
     assert final == points == seen_parts
 
@@ -161,7 +169,7 @@ def test_dimmed_steps_keep_a_projector_contrast(fig6, small, step):
     s = fig6.step(step)
     small.render(small.timeline.last_frame_of_step(s.index))
     inputs, checked = set(s.inputs), 0
-    for t in fig6.steps[:s.index]:
+    for t in fig6.steps[: s.index]:
         if t.name in inputs or t.kind == "envelope":
             continue
         for a in small.artists[t.name]:
@@ -173,8 +181,12 @@ def test_dimmed_steps_keep_a_projector_contrast(fig6, small, step):
                 checked += 1
     assert checked > 40
     # and they are dimmed: some drawn lighter than their own colour
-    assert any((a.get_alpha() or 1.0) < 0.9 for t in fig6.steps[:s.index]
-               if t.name not in inputs for a in small.artists[t.name])
+    assert any(
+        (a.get_alpha() or 1.0) < 0.9
+        for t in fig6.steps[: s.index]
+        if t.name not in inputs
+        for a in small.artists[t.name]
+    )
 
 
 # -- lecture quality ------------------------------------------------------------------------
@@ -221,16 +233,26 @@ def test_lecture_captions_stay_long_enough_to_read(fig6, lecture):
         assert seconds >= LEAST_SECONDS - 1e-9, (s.name, seconds)
         assert seconds >= unwrapped / CHARS_PER_SECOND - 1 / fps, (s.name, seconds)
     hold = [f for f in range(lecture.frame_count) if tl.at(f).kind == "hold"]
-    assert len(hold) / fps >= max(6.0, len(lecture.caption_at(hold[0])) / CHARS_PER_SECOND) \
-        - 1 / fps
+    assert (
+        len(hold) / fps >= max(6.0, len(lecture.caption_at(hold[0])) / CHARS_PER_SECOND) - 1 / fps
+    )
     # the still frames that make up the time are not drawn again
     assert lecture.drawn_frames < lecture.frame_count / 2
 
 
 def test_still_frames_repeat_the_frame_before(fig6):
-    anim = animate_construction(fig6, quality="lecture", figsize=(3.2, 1.8), dpi=30, fps=4,
-                                frames_per_step=1, pause_frames=1, hold_frames=1,
-                                caption_seconds=1.0, reading_rate=0)
+    anim = animate_construction(
+        fig6,
+        quality="lecture",
+        figsize=(3.2, 1.8),
+        dpi=30,
+        fps=4,
+        frames_per_step=1,
+        pause_frames=1,
+        hold_frames=1,
+        caption_seconds=1.0,
+        reading_rate=0,
+    )
     tl = anim.timeline
     rest = [i for i, seg in enumerate(tl.segments) if seg.kind == "rest"]
     assert rest
@@ -264,8 +286,12 @@ def test_main_job_captions_are_whole(fig6):
 # -- the sweep ------------------------------------------------------------------------------
 def _jshtml_frames(html: str) -> list[np.ndarray]:
     found = re.findall(r"data:image/png;base64,([^\"']+)", html)
-    return [np.asarray(Image.open(io.BytesIO(base64.b64decode(re.sub(r"\\n|\s", "", m))))
-                       .convert("RGB")) for m in found]
+    return [
+        np.asarray(
+            Image.open(io.BytesIO(base64.b64decode(re.sub(r"\\n|\s", "", m)))).convert("RGB")
+        )
+        for m in found
+    ]
 
 
 def test_gallery_sweep_shows_its_text_panel(fig6):
@@ -290,8 +316,16 @@ def paper_V(preset: str) -> np.ndarray:
     """V_n = (S_n, C_n) of eqs. (28)-(39), (4, 2)."""
     x1, x2, y, p1, p2, k1, k2 = dict(
         table1a=(2.0, 2.0, 1.0, math.pi / 2, math.pi / 2, math.atan(1.0), math.atan(1.2)),
-        fig6=(math.sqrt(3) / 2, math.sqrt(3) / 2, 0.5, math.pi / 3, math.pi / 3, math.pi / 4,
-              math.pi / 3))[preset]
+        fig6=(
+            math.sqrt(3) / 2,
+            math.sqrt(3) / 2,
+            0.5,
+            math.pi / 3,
+            math.pi / 3,
+            math.pi / 4,
+            math.pi / 3,
+        ),
+    )[preset]
     h = (x1 + x2) / 2
     t = [math.tan(p1 + k1), math.tan(p2 + k2), math.tan(p1 - k1), math.tan(p2 - k2)]
     S = [-h + y * t[0], h - y * t[1], -h + y * t[2], h - y * t[3]]
@@ -334,12 +368,21 @@ def parser():
     return p
 
 
-@pytest.mark.parametrize("bad", [
-    ["--quality", "poster"], ["--quality", "lecture", "--dpi", "72"],
-    ["--dpi", "72", "--quality", "lecture"], ["--pause", "-1"], ["--hold", "x"],
-    ["--caption-seconds", "1e9"], ["--pause", "nan"], ["--circle", "5"], ["--fps", "0"],
-    ["--dpi", "inf"],
-])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        ["--quality", "poster"],
+        ["--quality", "lecture", "--dpi", "72"],
+        ["--dpi", "72", "--quality", "lecture"],
+        ["--pause", "-1"],
+        ["--hold", "x"],
+        ["--caption-seconds", "1e9"],
+        ["--pause", "nan"],
+        ["--circle", "5"],
+        ["--fps", "0"],
+        ["--dpi", "inf"],
+    ],
+)
 def test_option_errors_are_one_line_usage_errors(bad, capsys):
     with pytest.raises(SystemExit) as e:
         parser().parse_args(["animate", *bad])
@@ -349,15 +392,27 @@ def test_option_errors_are_one_line_usage_errors(bad, capsys):
 
 
 def test_option_errors_load_neither_sympy_nor_matplotlib():
-    calls = [["animate", "--quality", "poster"], ["animate", "--quality", "lecture", "--dpi", "50"],
-             ["animate", "--pause", "-2"], ["animate", "--hold", "inf"],
-             ["animate", "--caption-seconds", "x"], ["animate", "--circle", "0"]]
-    code = ("import contextlib, io, sys\nfrom graspcompass.cli import main\n"
-            f"with contextlib.redirect_stderr(io.StringIO()):\n"
-            f"    codes = [main(a) for a in {calls!r}]\n"
-            "print(codes, [m for m in ('sympy', 'matplotlib', 'numpy') if m in sys.modules])")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=120, env={**os.environ, "PYTHONWARNINGS": "ignore"})
+    calls = [
+        ["animate", "--quality", "poster"],
+        ["animate", "--quality", "lecture", "--dpi", "50"],
+        ["animate", "--pause", "-2"],
+        ["animate", "--hold", "inf"],
+        ["animate", "--caption-seconds", "x"],
+        ["animate", "--circle", "0"],
+    ]
+    code = (
+        "import contextlib, io, sys\nfrom graspcompass.cli import main\n"
+        f"with contextlib.redirect_stderr(io.StringIO()):\n"
+        f"    codes = [main(a) for a in {calls!r}]\n"
+        "print(codes, [m for m in ('sympy', 'matplotlib', 'numpy') if m in sys.modules])"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={**os.environ, "PYTHONWARNINGS": "ignore"},
+    )
     assert out.stdout.split("] [")[0] == "[" + ", ".join(["2"] * len(calls))
     assert out.stdout.strip().endswith("[]"), out.stdout
 
@@ -371,8 +426,20 @@ def test_cli_lecture_options_reach_the_animation(tmp_path, monkeypatch, capsys):
         return path
 
     monkeypatch.setattr(FrameAnimation, "save", fake_save)
-    args = parser().parse_args(["animate", "table1a", "--quality", "lecture", "--pause", "2",
-                                "--hold", "3", "-o", str(tmp_path / "l.gif")])
+    args = parser().parse_args(
+        [
+            "animate",
+            "table1a",
+            "--quality",
+            "lecture",
+            "--pause",
+            "2",
+            "--hold",
+            "3",
+            "-o",
+            str(tmp_path / "l.gif"),
+        ]
+    )
     assert run(args, grasp_from_args(args)) == 0
     anim, fps = made["anim"], made["fps"]
     w, h = anim.figure.get_size_inches() * anim.figure.dpi
@@ -383,7 +450,19 @@ def test_cli_lecture_options_reach_the_animation(tmp_path, monkeypatch, capsys):
     assert hold[0] >= 3 * 15
     assert "1280×720" in capsys.readouterr().out
     # the sweep: one circle, at lecture size
-    args = parser().parse_args(["animate", "table1a", "--kind", "sweep", "--circle", "3",
-                                "--frames", "4", "-o", str(tmp_path / "s.gif")])
+    args = parser().parse_args(
+        [
+            "animate",
+            "table1a",
+            "--kind",
+            "sweep",
+            "--circle",
+            "3",
+            "--frames",
+            "4",
+            "-o",
+            str(tmp_path / "s.gif"),
+        ]
+    )
     assert run(args, grasp_from_args(args)) == 0
     assert made["anim"].circle == 3

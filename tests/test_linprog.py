@@ -26,8 +26,7 @@ from scipy.optimize import linprog
 from conftest import PRESET_NAMES, PRESET_PARAMS, float_params, grasp_matrix_numpy
 from graspcompass import Grasp
 
-HIGHS = dict(primal_feasibility_tolerance=1e-10, dual_feasibility_tolerance=1e-10,
-             presolve=True)
+HIGHS = dict(primal_feasibility_tolerance=1e-10, dual_feasibility_tolerance=1e-10, presolve=True)
 
 
 def lp_k_grasp(x1, x2, y, phi1, phi2, mu1, mu2, theta):
@@ -37,15 +36,25 @@ def lp_k_grasp(x1, x2, y, phi1, phi2, mu1, mu2, theta):
     D = x1 + x2
     FN = np.array([math.sin(phi1), math.cos(phi1), math.sin(phi2), math.cos(phi2)]) / D
     c = FN / (FN @ FN)  # k(F) = c·F
-    A_ub = -np.array([
-        [mu1, -1.0, 0.0, 0.0],   # μ1 N1 − F1 ≥ 0
-        [0.0, 0.0, mu2, -1.0],   # μ2 N2 − F2 ≥ 0
-        [mu1, 1.0, 0.0, 0.0],    # μ1 N1 + F1 ≥ 0
-        [0.0, 0.0, mu2, 1.0],    # μ2 N2 + F2 ≥ 0
-        c,                       # k ≥ 0
-    ])
-    res = linprog(c, A_ub=A_ub, b_ub=np.zeros(5), A_eq=L, b_eq=M,
-                  bounds=[(None, None)] * 4, method="highs", options=HIGHS)
+    A_ub = -np.array(
+        [
+            [mu1, -1.0, 0.0, 0.0],  # μ1 N1 − F1 ≥ 0
+            [0.0, 0.0, mu2, -1.0],  # μ2 N2 − F2 ≥ 0
+            [mu1, 1.0, 0.0, 0.0],  # μ1 N1 + F1 ≥ 0
+            [0.0, 0.0, mu2, 1.0],  # μ2 N2 + F2 ≥ 0
+            c,  # k ≥ 0
+        ]
+    )
+    res = linprog(
+        c,
+        A_ub=A_ub,
+        b_ub=np.zeros(5),
+        A_eq=L,
+        b_eq=M,
+        bounds=[(None, None)] * 4,
+        method="highs",
+        options=HIGHS,
+    )
     assert res.status == 0, res.message
     F = res.x
     # the LP solution is a genuine solution of the force balance and the contact conditions
@@ -99,8 +108,9 @@ def test_lp_detects_wrong_answer():
         assert abs(lp_k_grasp(*p.floats, float(zero[0]))[0]) < 1e-9
 
 
-@settings(max_examples=40, deadline=None, database=None,
-          suppress_health_check=[HealthCheck.too_slow])
+@settings(
+    max_examples=40, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 @given(float_params())
 def test_random_grasps_match_linprog(p):
     g = p.grasp()

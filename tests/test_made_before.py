@@ -38,8 +38,12 @@ def _names_of_label(text: str, names: list[str]) -> set[str]:
 def _check_scene(c, n: int) -> None:
     made = set(c.upto(n).names)
     cut = scene_of(c).upto(n)
-    drawn = ({x[0] for x in cut.lines} | {x[0] for x in cut.lengths}
-             | {x[0] for x in cut.circles} | {m for g, _ in cut.points for m in g})
+    drawn = (
+        {x[0] for x in cut.lines}
+        | {x[0] for x in cut.lengths}
+        | {x[0] for x in cut.circles}
+        | {m for g, _ in cut.points for m in g}
+    )
     assert drawn <= made, (n, drawn - made)
     named = {m for lab in cut.labels for m in lab.names}
     assert named <= made, (n, named - made)
@@ -54,17 +58,22 @@ def _check_svg(c, n: int) -> None:
     made = set(c.upto(n).names)
     names = [s.name for s in c.steps]
     root = ET.fromstring(to_svg(c, step=n).encode())
-    ids = {g.get("id").removeprefix("inset-") for g in root.iterfind(".//s:g", NS)
-           if g.get("id") and g.get("class") not in ("panel", "drawing")}
+    ids = {
+        g.get("id").removeprefix("inset-")
+        for g in root.iterfind(".//s:g", NS)
+        if g.get("id") and g.get("class") not in ("panel", "drawing")
+    }
     assert ids <= made, (n, ids - made)
     for t in root.iterfind(".//s:g[@class='point']/s:text", NS):
-        text = (t.text or "") + "".join(
-            ("_" + (sub.text or "")) + (sub.tail or "") for sub in t)
+        text = (t.text or "") + "".join(("_" + (sub.text or "")) + (sub.tail or "") for sub in t)
         parts = {p.strip() for p in re.split("[=,]", text)}
         by_svg = {label_tex(m).replace("{", "").replace("}", ""): m for m in names}
         assert {by_svg[p] for p in parts} <= made, (n, text)
-    used = {p.get("data-step") for p in root.iterfind(".//s:polyline", NS)
-            if "instrument" in (p.get("class") or "")}
+    used = {
+        p.get("data-step")
+        for p in root.iterfind(".//s:polyline", NS)
+        if "instrument" in (p.get("class") or "")
+    }
     assert used <= made, (n, used - made)
     if n == len(c.steps) - 1:
         assert used, "the compass arcs and right angles of the whole construction"
@@ -87,7 +96,8 @@ def _check_png(c, n: int) -> None:
     assert len(shown) == len(scene_of(c).upto(n).instruments), n
     sides = _sides(c)
     assert {k for k in ("cone1", "cone2") if k in arts} == {
-        k for k in ("cone1", "cone2") if sides[k] <= made}
+        k for k in ("cone1", "cone2") if sides[k] <= made
+    }
     ax = arts["O"][0].axes
     for t in ax.texts:
         if isinstance(t, Annotation) and t.get_text().startswith("$"):
@@ -114,8 +124,7 @@ def _grasp(draw) -> Grasp:
     (p1, k1), (p2, k2) = angle(), angle()
     x1, x2 = draw(st.integers(10, 200)) / 100, draw(st.integers(10, 200)) / 100
     y = draw(st.integers(0, 150)) / 100
-    return Grasp(x1, x2, y, f"{p1}*pi/180", f"{p2}*pi/180", xi1=f"{k1}*pi/180",
-                 xi2=f"{k2}*pi/180")
+    return Grasp(x1, x2, y, f"{p1}*pi/180", f"{p2}*pi/180", xi1=f"{k1}*pi/180", xi2=f"{k2}*pi/180")
 
 
 @settings(max_examples=6, deadline=None, suppress_health_check=list(HealthCheck))
@@ -141,8 +150,15 @@ def test_animation_frames_show_nothing_before_it_is_made(grasp) -> None:
 
     c = internal_force_diagram(grasp)
     names = [s.name for s in c.steps]
-    anim = animate_construction(c, frames_per_step=3, pause_frames=1, hold_frames=1, dpi=30,
-                                caption_seconds=0, reading_rate=0)
+    anim = animate_construction(
+        c,
+        frames_per_step=3,
+        pause_frames=1,
+        hold_frames=1,
+        dpi=30,
+        caption_seconds=0,
+        reading_rate=0,
+    )
     sides = _sides(c)
     cones = {k: anim.artists[k][0] for k in ("cone1", "cone2")}
     index = {s.name: s.index for s in c.steps}
@@ -159,8 +175,11 @@ def test_animation_frames_show_nothing_before_it_is_made(grasp) -> None:
             done = st_.kind != "draw" or st_.progress >= 1.0
             made = set(c.upto(n if done else n - 1).names)
             for t in anim.axes.texts:
-                if (isinstance(t, Annotation) and t.get_visible()
-                        and re.fullmatch(r"\$.*\$", t.get_text())):
+                if (
+                    isinstance(t, Annotation)
+                    and t.get_visible()
+                    and re.fullmatch(r"\$.*\$", t.get_text())
+                ):
                     assert _names_of_label(t.get_text(), names) <= made, (n, f, t.get_text())
             for k, poly in cones.items():
                 assert isinstance(poly, Polygon)

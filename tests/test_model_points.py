@@ -50,8 +50,10 @@ def test_violations_finds_each_kind_of_defect():
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.integers(0, 10**6), st.sets(st.sampled_from(
-    [x1, x2, y, phi1, phi2, xi1, xi2, mu1, mu2, theta, F_e]), min_size=1))
+@given(
+    st.integers(0, 10**6),
+    st.sets(st.sampled_from([x1, x2, y, phi1, phi2, xi1, xi2, mu1, mu2, theta, F_e]), min_size=1),
+)
 def test_samples_are_points_of_the_model(seed, syms):
     m = _model()
     p = m.sample(sorted(syms, key=str), random.Random(seed))

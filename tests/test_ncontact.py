@@ -69,19 +69,23 @@ def test_table1c_circle_4_is_redundant():
     # independent: barycentric coordinates of V4 in V1 V2 V3 are all positive
     (a, b, c, d) = [sp.Matrix(list(v)) for v in g.V]
     lam = sp.Matrix([[a[0], b[0], c[0]], [a[1], b[1], c[1]], [1, 1, 1]]).solve(
-        sp.Matrix([d[0], d[1], 1]))
+        sp.Matrix([d[0], d[1], 1])
+    )
     assert all(x > 0 for x in lam)
 
 
 def _random_rational_grasp(rng):
     while True:
         try:
-            return Grasp(sp.Rational(rng.randint(2, 30), 10), sp.Rational(rng.randint(2, 30), 10),
-                         sp.Rational(rng.randint(0, 25), 10),
-                         sp.pi * sp.Rational(rng.randint(30, 70), 100),
-                         sp.pi * sp.Rational(rng.randint(30, 70), 100),
-                         mu1=sp.Rational(rng.randint(2, 15), 10),
-                         mu2=sp.Rational(rng.randint(2, 15), 10))
+            return Grasp(
+                sp.Rational(rng.randint(2, 30), 10),
+                sp.Rational(rng.randint(2, 30), 10),
+                sp.Rational(rng.randint(0, 25), 10),
+                sp.pi * sp.Rational(rng.randint(30, 70), 100),
+                sp.pi * sp.Rational(rng.randint(30, 70), 100),
+                mu1=sp.Rational(rng.randint(2, 15), 10),
+                mu2=sp.Rational(rng.randint(2, 15), 10),
+            )
         except InvalidGraspError:
             continue
 
@@ -140,6 +144,7 @@ def _fraction_hull(points):
 
     def cross(o, a, b):
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
     lo, up = [], []
     for p in pts:
         while len(lo) >= 2 and cross(lo[-2], lo[-1], p) <= 0:
@@ -166,17 +171,22 @@ def test_exact_vertices_match_cdd_gmp_on_rational_grasps():
             assert type(exc).__name__ == "DegenerateGraspError"
             continue
         verts, rays = _cdd_points(contacts)
-        mine = {(Fraction(int(p[0].p), int(p[0].q)), Fraction(int(p[1].p), int(p[1].q)))
-                for p in (c.q for c in Q.all_candidates())}
+        mine = {
+            (Fraction(int(p[0].p), int(p[0].q)), Fraction(int(p[1].p), int(p[1].q)))
+            for p in (c.q for c in Q.all_candidates())
+        }
         assert mine == set(verts)  # the same dual vertices, projected
         screened = NContactGrasp(g.contacts).polygon()  # float screen + exact tiling
-        assert [c.q for c in screened.candidates[:len(screened.vertex_index)]] == \
-            [c.q for c in Q.candidates[:len(Q.vertex_index)]]
+        assert [c.q for c in screened.candidates[: len(screened.vertex_index)]] == [
+            c.q for c in Q.candidates[: len(Q.vertex_index)]
+        ]
         assert g.force_closure == (not rays)
         if not rays:
             want = _fraction_hull(verts)
-            got = {(Fraction(int(v.x.p), int(v.x.q)), Fraction(int(v.y.p), int(v.y.q)))
-                   for v in Q.vertices}
+            got = {
+                (Fraction(int(v.x.p), int(v.x.q)), Fraction(int(v.y.p), int(v.y.q)))
+                for v in Q.vertices
+            }
             assert got == want
             checked += 1
     assert checked >= 5
@@ -185,8 +195,17 @@ def test_exact_vertices_match_cdd_gmp_on_rational_grasps():
 def test_exact_path_with_angles_in_degrees_agrees_with_floats():
     cs = [(1, 0, "180deg", "1/2"), (-1, "1/5", "10deg", "3/5"), ("1/5", -1, "95deg", "2/5")]
     g = NContactGrasp(cs)
-    f = NContactGrasp([(float(sp.sympify(x)), float(sp.sympify(y)),
-                        math.radians(float(a[:-3])), float(sp.sympify(m))) for x, y, a, m in cs])
+    f = NContactGrasp(
+        [
+            (
+                float(sp.sympify(x)),
+                float(sp.sympify(y)),
+                math.radians(float(a[:-3])),
+                float(sp.sympify(m)),
+            )
+            for x, y, a, m in cs
+        ]
+    )
     assert g.force_closure and f.force_closure
     t = np.linspace(0, 2 * math.pi, 100)
     assert np.allclose(g.k(t), f.k(t), rtol=1e-9)
@@ -221,11 +240,16 @@ def test_non_closure_arc_and_infinity():
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.one_of(st.none(), st.booleans(), st.text(max_size=8), st.floats(allow_nan=True),
-                 st.lists(st.integers(), max_size=7).filter(lambda v: len(v) not in (4, 5)),
-                 st.dictionaries(st.text(max_size=3),
-                                                                        st.integers(),
-                                                                        max_size=3)))
+@given(
+    st.one_of(
+        st.none(),
+        st.booleans(),
+        st.text(max_size=8),
+        st.floats(allow_nan=True),
+        st.lists(st.integers(), max_size=7).filter(lambda v: len(v) not in (4, 5)),
+        st.dictionaries(st.text(max_size=3), st.integers(), max_size=3),
+    )
+)
 def test_hostile_contacts_are_refused_by_name(junk):
     with pytest.raises(InvalidContactError):
         NContactGrasp([junk, (1, 0, -1, 0, 1)])
@@ -267,8 +291,17 @@ def _cli(capsys, *argv):
 def test_cli_k_with_contacts_json(capsys):
     import json
 
-    status, out, err = _cli(capsys, "k", "--contact", "1,0,-1,0,1/2", "--contact=-1,0,1,0,1/2",
-                            "--contact=0,-1,0,1,1/2", "--theta", "0,90deg", "--json")
+    status, out, err = _cli(
+        capsys,
+        "k",
+        "--contact",
+        "1,0,-1,0,1/2",
+        "--contact=-1,0,1,0,1/2",
+        "--contact=0,-1,0,1,1/2",
+        "--theta",
+        "0,90deg",
+        "--json",
+    )
     assert status == 0, err
     rows = json.loads(out)
     assert [r["theta"] for r in rows] == ["0", "pi/2"]
@@ -281,19 +314,33 @@ def test_cli_k_with_contacts_json(capsys):
 def test_cli_k_with_contacts_null_where_not_held(capsys):
     import json
 
-    status, out, err = _cli(capsys, "k", "--contact", "1,0,-1,0,1/2", "--contact=0,-1,0,1,1/2",
-                            "--effort", "sum-normal", "--theta", "0,pi", "--json")
+    status, out, err = _cli(
+        capsys,
+        "k",
+        "--contact",
+        "1,0,-1,0,1/2",
+        "--contact=0,-1,0,1,1/2",
+        "--effort",
+        "sum-normal",
+        "--theta",
+        "0,pi",
+        "--json",
+    )
     assert status == 0, err
     rows = json.loads(out)
     assert rows[0]["k"] is not None and rows[1]["k"] is None  # nothing pulls the object down
 
 
-@pytest.mark.parametrize("argv", [["--contact", "1,0,-1,0,1/2"],
-                                  ["--contact", "1,0,-1,0,1/2", "--contact", "1,2"],
-                                  ["--contact", "1,0,-1,0,1/2", "--contact", "0,1,0,-1,x"],
-                                  ["--contact", "1,0,0,0,1", "--contact", "0,1,0,-1,1"],
-                                  ["--contact", "1,0,-1,0,1", "--contact", "0,1,0,-1,1",
-                                   "--effort", "pair:1,7"]])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["--contact", "1,0,-1,0,1/2"],
+        ["--contact", "1,0,-1,0,1/2", "--contact", "1,2"],
+        ["--contact", "1,0,-1,0,1/2", "--contact", "0,1,0,-1,x"],
+        ["--contact", "1,0,0,0,1", "--contact", "0,1,0,-1,1"],
+        ["--contact", "1,0,-1,0,1", "--contact", "0,1,0,-1,1", "--effort", "pair:1,7"],
+    ],
+)
 def test_cli_k_with_contacts_refuses_bad_input(capsys, argv):
     status, _out, err = _cli(capsys, "k", *argv)
     assert status == 2 and err.count("\n") == 1 and "error" in err
@@ -306,8 +353,9 @@ def test_draw_ncontact_figure(tmp_path):
     matplotlib.use("Agg")
     from graspcompass.render.ncontact import draw_ncontact
 
-    g = NContactGrasp([(1, 0, -1, 0, "1/2"), (0, -1, 0, 1, "1/2"), ("-1/2", "-1/2", "40deg",
-                                                                   "3/10")])
+    g = NContactGrasp(
+        [(1, 0, -1, 0, "1/2"), (0, -1, 0, 1, "1/2"), ("-1/2", "-1/2", "40deg", "3/10")]
+    )
     fig = draw_ncontact(g)
     ax = fig.axes[0]
     assert len(ax.patches) >= len(g.vertices())  # a Thales circle per vertex (and arrows)
@@ -318,17 +366,31 @@ def test_draw_ncontact_figure(tmp_path):
 
 def test_cli_draw_with_contacts(capsys, tmp_path):
     out = tmp_path / "n.svg"
-    status, stdout, err = _cli(capsys, "draw", "--contact", "1,0,180deg,1/2",
-                               "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
-                               "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "-o", str(out))
+    status, stdout, err = _cli(
+        capsys,
+        "draw",
+        "--contact",
+        "1,0,180deg,1/2",
+        "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
+        "--contact=-1/2,-sqrt(3)/2,60deg,1/2",
+        "-o",
+        str(out),
+    )
     assert status == 0, err
     assert out.read_text().lstrip().startswith("<?xml") and "wrote" in stdout
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.lists(st.tuples(st.floats(-1.5, 1.5), st.floats(-1.5, 1.5), st.floats(0, 6.283),
-                          st.floats(0.1, 1.0)), min_size=3, max_size=5),
-       st.floats(0, 6.283))
+@given(
+    st.lists(
+        st.tuples(
+            st.floats(-1.5, 1.5), st.floats(-1.5, 1.5), st.floats(0, 6.283), st.floats(0.1, 1.0)
+        ),
+        min_size=3,
+        max_size=5,
+    ),
+    st.floats(0, 6.283),
+)
 def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
     """Primal check from first principles: nonnegative edge weights, the contact forces
     balance the load F_e e(θ) (force and moment about O), and their effort is v(θ)."""
@@ -346,8 +408,9 @@ def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
     fx = sum(f[0] for f in r["forces"])
     fy = sum(f[1] for f in r["forces"])
     tz = sum(c.p[0] * f[1] - c.p[1] * f[0] for c, f in zip(g.contacts, r["forces"]))
-    scale = 1 + sum(abs(w) for w in r["weights"].values()) * (1 + max(
-        math.hypot(*c.p) for c in g.contacts))
+    scale = 1 + sum(abs(w) for w in r["weights"].values()) * (
+        1 + max(math.hypot(*c.p) for c in g.contacts)
+    )
     assert abs(fx + math.sin(theta)) <= 1e-8 * scale
     assert abs(fy - math.cos(theta)) <= 1e-8 * scale
     assert abs(tz) <= 1e-8 * scale
@@ -358,10 +421,20 @@ def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
 def test_cli_k_with_contacts_exact(capsys):
     import json
 
-    status, out, err = _cli(capsys, "k", "--contact", "1,0,180deg,1/2",
-                            "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
-                            "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "--theta", "0",
-                            "--exact", "--external-force", "2", "--json")
+    status, out, err = _cli(
+        capsys,
+        "k",
+        "--contact",
+        "1,0,180deg,1/2",
+        "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
+        "--contact=-1/2,-sqrt(3)/2,60deg,1/2",
+        "--theta",
+        "0",
+        "--exact",
+        "--external-force",
+        "2",
+        "--json",
+    )
     assert status == 0, err
     row = json.loads(out)[0]
     from _ncontact_lp import lp_value  # the LP written in the tests

@@ -26,8 +26,12 @@ REL = 1e-9
 
 
 def _efforts(rng, n):
-    return ["sum-normal", f"pair:{1 + n // 2},1", [float(v) for v in rng.uniform(0.5, 2.0, n)],
-            "max-normal"]
+    return [
+        "sum-normal",
+        f"pair:{1 + n // 2},1",
+        [float(v) for v in rng.uniform(0.5, 2.0, n)],
+        "max-normal",
+    ]
 
 
 def _compare(contacts, effort, thetas, com=(0.0, 0.0), fast=False):
@@ -36,11 +40,15 @@ def _compare(contacts, effort, thetas, com=(0.0, 0.0), fast=False):
     per θ."""
     g = NContactGrasp(contacts, com=com, effort=effort)
     got = g.k(thetas)
-    want = (SweepLP(contacts, effort, com)(thetas) if fast else
-            np.array([lp_value(contacts, t, effort, com) for t in thetas]))
+    want = (
+        SweepLP(contacts, effort, com)(thetas)
+        if fast
+        else np.array([lp_value(contacts, t, effort, com) for t in thetas])
+    )
     fin = np.isfinite(want)
     assert np.array_equal(np.isfinite(got), fin), (
-        f"feasible arcs differ at θ = {thetas[np.isfinite(got) != fin][:5]}")
+        f"feasible arcs differ at θ = {thetas[np.isfinite(got) != fin][:5]}"
+    )
     rel = np.abs(got[fin] - want[fin]) / np.maximum(1.0, np.abs(want[fin]))
     assert rel.size == 0 or rel.max() <= REL, rel.max()
     return g, fin
@@ -77,9 +85,10 @@ def test_thousand_grasps_four_efforts_against_the_lp(block):
         n = 3 + k % 4
         contacts = random_contacts(rng, n, closure=k % 3 != 2)
         com = tuple(float(v) for v in rng.uniform(-0.2, 0.2, 2))
-        thetas = np.sort((rng.uniform(0, 2 * math.pi)
-                          + np.linspace(0, 2 * math.pi, FEW_THETA, endpoint=False))
-                         % (2 * math.pi))
+        thetas = np.sort(
+            (rng.uniform(0, 2 * math.pi) + np.linspace(0, 2 * math.pi, FEW_THETA, endpoint=False))
+            % (2 * math.pi)
+        )
         for effort in _efforts(rng, n):
             g, fin = _compare_fast(contacts, effort, thetas, com=com)
         kinds[g.force_closure] += 1
@@ -123,8 +132,13 @@ def test_feasible_arc_matches_the_sampled_lp():
         assert 0 < hi - lo <= math.pi + 1e-12
         inside = (THETA_720 - lo) % (2 * math.pi) <= hi - lo
         feasible = np.isfinite(SweepLP(contacts, "sum-normal")(THETA_720))
-        near = np.minimum(np.abs((THETA_720 - lo + math.pi) % (2 * math.pi) - math.pi),
-                          np.abs((THETA_720 - hi + math.pi) % (2 * math.pi) - math.pi)) < 1e-9
+        near = (
+            np.minimum(
+                np.abs((THETA_720 - lo + math.pi) % (2 * math.pi) - math.pi),
+                np.abs((THETA_720 - hi + math.pi) % (2 * math.pi) - math.pi),
+            )
+            < 1e-9
+        )
         assert np.array_equal(inside[~near], feasible[~near])
         if seen == 6:
             break
@@ -139,8 +153,9 @@ def test_two_contacts_paper_effort_against_the_lp(seed):
     y = rng.uniform(0.0, 2.0)
     phi1, phi2 = rng.uniform(1.2, 1.9, 2)
     mu1, mu2 = rng.uniform(0.3, 1.2, 2)
-    g = Grasp(float(x1), float(x2), float(y), float(phi1), float(phi2), mu1=float(mu1),
-              mu2=float(mu2))
+    g = Grasp(
+        float(x1), float(x2), float(y), float(phi1), float(phi2), mu1=float(mu1), mu2=float(mu2)
+    )
     h = NContactGrasp.from_grasp(g)
     contacts = [(c.p[0], c.p[1], c.n[0], c.n[1], float(c.mu)) for c in h.contacts]
     want = SweepLP(contacts, "paper")(THETA_720)
@@ -159,8 +174,15 @@ def test_paper_effort_where_k_geq_0_is_active():
         phi1, phi2 = rng.uniform(0.9, 2.3, 2)
         mu1, mu2 = rng.uniform(0.2, 1.5, 2)
         try:
-            g = Grasp(float(x1), float(x2), float(y), float(phi1), float(phi2),
-                      mu1=float(mu1), mu2=float(mu2))
+            g = Grasp(
+                float(x1),
+                float(x2),
+                float(y),
+                float(phi1),
+                float(phi2),
+                mu1=float(mu1),
+                mu2=float(mu2),
+            )
         except ValueError:
             continue
         h = NContactGrasp.from_grasp(g)
@@ -186,8 +208,9 @@ def test_regression_normal_cone_sharing_the_feasible_cone_start():
     contacts = [(x, y, math.cos(a), math.sin(a), m) for x, y, a, m in raw]
     _compare(contacts, "sum-normal", THETA_720[::3])
     exact = NContactGrasp([(0, 0, 1, 1), (0, 0, 2, "1/2"), (0, 1, 0, 1)])
-    assert np.allclose(exact.k(THETA_720[::3]), NContactGrasp(raw).k(THETA_720[::3]),
-                       rtol=1e-12, equal_nan=True)
+    assert np.allclose(
+        exact.k(THETA_720[::3]), NContactGrasp(raw).k(THETA_720[::3]), rtol=1e-12, equal_nan=True
+    )
 
 
 def test_degenerate_grid_grasps_against_the_lp():
@@ -200,8 +223,15 @@ def test_degenerate_grid_grasps_against_the_lp():
         contacts = []
         for _ in range(n):
             a = float(rng.integers(0, 8)) * math.pi / 4
-            contacts.append((float(rng.integers(-2, 3)) / 2, float(rng.integers(-2, 3)) / 2,
-                             math.cos(a), math.sin(a), float(rng.choice([0.25, 0.5, 1.0]))))
+            contacts.append(
+                (
+                    float(rng.integers(-2, 3)) / 2,
+                    float(rng.integers(-2, 3)) / 2,
+                    math.cos(a),
+                    math.sin(a),
+                    float(rng.choice([0.25, 0.5, 1.0])),
+                )
+            )
         thetas = np.sort(rng.uniform(0, 2 * math.pi, 6))
         for effort in ["sum-normal", "max-normal", f"pair:1,{n}"]:
             try:
@@ -231,11 +261,17 @@ def test_worst_direction_against_the_lp():
 
 
 def test_worst_exact_matches_float():
-    exact = NContactGrasp([("1", "0", "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
-                           ("-1/2", "-sqrt(3)/2", "60deg", "1/2")])
+    exact = NContactGrasp(
+        [
+            ("1", "0", "180deg", "1/2"),
+            ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+            ("-1/2", "-sqrt(3)/2", "60deg", "1/2"),
+        ]
+    )
     s3 = math.sqrt(3) / 2
-    flt = NContactGrasp([(1.0, 0, -1, 0, 0.5), (-0.5, s3, 0.5, -s3, 0.5),
-                         (-0.5, -s3, 0.5, s3, 0.5)])
+    flt = NContactGrasp(
+        [(1.0, 0, -1, 0, 0.5), (-0.5, s3, 0.5, -s3, 0.5), (-0.5, -s3, 0.5, s3, 0.5)]
+    )
     (ve, te), (vf, _) = exact.worst(), flt.worst()
     assert float(ve) == pytest.approx(vf, rel=1e-12)
     assert float(exact.k(te)) == pytest.approx(float(ve), rel=1e-12)

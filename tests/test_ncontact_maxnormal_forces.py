@@ -72,8 +72,11 @@ def test_forces_against_the_lp(n: int) -> None:
 def test_exact_three_fingers() -> None:
     """Three fingers 120° apart, μ = 1/2, a unit load straight down: exact balance, the
     largest normal force equal to k(0) and to the LP's value."""
-    spec = [(1, 0, "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
-            ("-1/2", "-sqrt(3)/2", "60deg", "1/2")]
+    spec = [
+        (1, 0, "180deg", "1/2"),
+        ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+        ("-1/2", "-sqrt(3)/2", "60deg", "1/2"),
+    ]
     g = NContactGrasp(spec, effort="max-normal")
     for theta in ("0", "pi/5", "2*pi/3", "7*pi/4"):
         r = g.forces(theta)
@@ -90,14 +93,17 @@ def test_exact_three_fingers() -> None:
         assert all(float(w) >= 0 for w in r["weights"].values())
         assert all(float(v - r["effort"]) <= 1e-30 for v in N)
         assert any(decide_zero(v - r["effort"]) for v in N)
-        floats = [(float(c.p[0]), float(c.p[1]), float(c.n[0]), float(c.n[1]), float(c.mu))
-                  for c in g.contacts]
+        floats = [
+            (float(c.p[0]), float(c.p[1]), float(c.n[0]), float(c.n[1]), float(c.mu))
+            for c in g.contacts
+        ]
         assert abs(float(r["effort"]) - lp_value(floats, float(t), "max-normal")) <= 1e-9
 
 
 def test_no_force_closure_outside_the_arc() -> None:
-    g = NContactGrasp([("1", "0", "180deg", "1/2"), ("0", "-1", "90deg", "1/2")],
-                      effort="max-normal")
+    g = NContactGrasp(
+        [("1", "0", "180deg", "1/2"), ("0", "-1", "90deg", "1/2")], effort="max-normal"
+    )
     assert g.forces("pi")["forces"] is None and g.forces("pi")["effort"] == sp.oo
     r = g.forces("pi/4")
     assert r["forces"] is not None and float(r["effort"]) > 0
@@ -113,25 +119,43 @@ def test_k_command_lists_the_edges_that_carry_load(capsys: pytest.CaptureFixture
     from _ncontact_lp import lp_data
     from graspcompass.cli import main
 
-    spec = ["1,0,180deg,1/2", "-1/2,sqrt(3)/2,-60deg,1/2", "-1/2,-sqrt(3)/2,60deg,1/2",
-            "0,1,0,-1,1/3"]
-    assert main(["k", *(f"--contact={c}" for c in spec), "--effort", "max-normal",
-                 "--theta", "0:360:15deg", "--json"]) == 0
+    spec = [
+        "1,0,180deg,1/2",
+        "-1/2,sqrt(3)/2,-60deg,1/2",
+        "-1/2,-sqrt(3)/2,60deg,1/2",
+        "0,1,0,-1,1/3",
+    ]
+    assert (
+        main(
+            [
+                "k",
+                *(f"--contact={c}" for c in spec),
+                "--effort",
+                "max-normal",
+                "--theta",
+                "0:360:15deg",
+                "--json",
+            ]
+        )
+        == 0
+    )
     rows = json.loads(capsys.readouterr().out)
     r3 = math.sqrt(3)
-    floats = [(1, 0, -1, 0, 0.5), (-0.5, r3 / 2, 0.5, -r3 / 2, 0.5),
-              (-0.5, -r3 / 2, 0.5, r3 / 2, 0.5), (0, 1, 0, -1, 1 / 3)]
+    floats = [
+        (1, 0, -1, 0, 0.5),
+        (-0.5, r3 / 2, 0.5, -r3 / 2, 0.5),
+        (-0.5, -r3 / 2, 0.5, r3 / 2, 0.5),
+        (0, 1, 0, -1, 1 / 3),
+    ]
     c, A_eq, A_ub, b_ub = lp_data(floats, "max-normal")
     names = [f"P{i + 1}{s}" for i in range(4) for s in "+-"]
     assert len(rows) == 24
     for row in rows:
         t = math.radians(row["theta_deg"])
         b = -np.array([math.sin(t), -math.cos(t), 0.0])
-        full = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=(0, None),
-                       method="highs")
+        full = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=(0, None), method="highs")
         assert row["tight"], row
         bounds = [(0, None) if n in row["tight"] else (0, 0) for n in names] + [(0, None)]
-        part = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=bounds,
-                       method="highs")
+        part = linprog(c, A_eq=A_eq, b_eq=b, A_ub=A_ub, b_ub=b_ub, bounds=bounds, method="highs")
         assert part.status == 0 and abs(part.fun - full.fun) <= 1e-9 * (1 + full.fun)
         assert abs(row["k"] - full.fun) <= 1e-9 * (1 + full.fun)

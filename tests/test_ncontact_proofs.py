@@ -32,8 +32,9 @@ def test_wrong_claims_are_refuted() -> None:
     # a point on an edge of the triangle is not strictly inside
     V = ((0, 0), (2, 0), (0, 2), (1, 0))
     assert redundant_inside(V).status is Status.REFUTED
-    assert redundant_inside(((0, 0), (2, 0), (0, 2), (sp.Rational(1, 2),) * 2)).status \
-        is Status.PROVED
+    assert (
+        redundant_inside(((0, 0), (2, 0), (0, 2), (sp.Rational(1, 2),) * 2)).status is Status.PROVED
+    )
 
 
 def test_v1_formula_dual_feasibility_and_slackness_proved() -> None:

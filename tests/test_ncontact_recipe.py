@@ -25,8 +25,11 @@ from graspcompass.ncontact import NContactGrasp
 from graspcompass.proof.program_check import check_program
 from graspcompass.proof.prove import Status
 
-THREE = [("1", "0", "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
-         ("-1/2", "-sqrt(3)/2", "60deg", "1/2")]
+THREE = [
+    ("1", "0", "180deg", "1/2"),
+    ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+    ("-1/2", "-sqrt(3)/2", "60deg", "1/2"),
+]
 
 
 def _short() -> str:
@@ -76,8 +79,9 @@ def test_rational_grasps_constructed_vertices_are_the_enumerated_ones(seed) -> N
             g = NContactGrasp(cs, effort=effort)
             Q = g.polygon()
             for (p, _), i in zip(_constructed(g), Q.vertex_index):
-                assert (p.x, p.y) == tuple(sp.nsimplify(v) for v in Q.candidates[i].q) or \
-                    _same(p, Q.candidates[i].q)
+                assert (p.x, p.y) == tuple(sp.nsimplify(v) for v in Q.candidates[i].q) or _same(
+                    p, Q.candidates[i].q
+                )
 
 
 def test_two_contacts_paper_effort_gives_the_paper_vertices() -> None:
@@ -111,8 +115,9 @@ def test_short_recipe_with_a_wrong_cost_point_is_refuted() -> None:
 
 def test_steps_and_draw_from_a_contacts_file(tmp_path, capsys) -> None:
     f = tmp_path / "three.txt"
-    f.write_text("# three fingers\n" + "\n".join(",".join(c) for c in THREE)
-                 + "\neffort sum-normal\n")
+    f.write_text(
+        "# three fingers\n" + "\n".join(",".join(c) for c in THREE) + "\neffort sum-normal\n"
+    )
     assert cli.main(["steps", "--contacts", str(f)]) == 0
     out = capsys.readouterr().out
     assert "q6" in out and "circle6" in out and "quarter_turn" not in out
@@ -126,9 +131,14 @@ def test_steps_and_draw_from_a_contacts_file(tmp_path, capsys) -> None:
     assert "circle" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("text, what", [("1,0,180deg,1/2\nhello\n", "expected a contact"),
-                                        ("# nothing\n", "no contact"),
-                                        ("1,0,180deg\n0,1,0deg\n", "expected 4 or 5")])
+@pytest.mark.parametrize(
+    "text, what",
+    [
+        ("1,0,180deg,1/2\nhello\n", "expected a contact"),
+        ("# nothing\n", "no contact"),
+        ("1,0,180deg\n0,1,0deg\n", "expected 4 or 5"),
+    ],
+)
 def test_contacts_file_errors_exit_2(tmp_path, capsys, text, what) -> None:
     f = tmp_path / "bad.txt"
     f.write_text(text)
@@ -157,8 +167,9 @@ def test_size_three_jaws_worst_squeeze_against_the_lp(capsys) -> None:
     assert grid.max() * load <= rec["worst_N"] * (1 + 1e-9)
     assert grid.max() * load == pytest.approx(rec["worst_N"], rel=1e-4)
     # the farthest vertex by hand: q = (7 - 4√3, 3√3 - 4) (three-force basis)
-    assert rec["max_q"] == pytest.approx(math.hypot(7 - 4 * math.sqrt(3), 3 * math.sqrt(3) - 4),
-                                         rel=1e-12)
+    assert rec["max_q"] == pytest.approx(
+        math.hypot(7 - 4 * math.sqrt(3), 3 * math.sqrt(3) - 4), rel=1e-12
+    )
 
 
 def test_size_contact_refuses_two_jaw_options(capsys) -> None:

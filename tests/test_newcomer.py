@@ -12,19 +12,29 @@ import pytest
 from graspcompass.cli import build_parser, main
 
 #: What each command needs besides the option under test (so that parsing reaches it).
-_NEEDS = {"size": ["--p1=0,0", "--p2=1,0", "--mass=1"], "plan": ["--shape=x.svg"],
-          "check": ["x.gc"]}
+_NEEDS = {
+    "size": ["--p1=0,0", "--p2=1,0", "--mass=1"],
+    "plan": ["--shape=x.svg"],
+    "check": ["x.gc"],
+}
 
 
 def _value_options() -> list[tuple[str, str]]:
     """Every (command, option) that takes one value."""
     p = build_parser()
     sub = next(a for a in p._actions if isinstance(a, argparse._SubParsersAction))
-    found = [(None, s) for a in p._actions for s in a.option_strings
-             if a.nargs is None and s.startswith("--")]
+    found = [
+        (None, s)
+        for a in p._actions
+        for s in a.option_strings
+        if a.nargs is None and s.startswith("--")
+    ]
     for name, sp in sub.choices.items():
-        found += [(name, a.option_strings[-1]) for a in sp._actions
-                  if a.option_strings and a.nargs is None]
+        found += [
+            (name, a.option_strings[-1])
+            for a in sp._actions
+            if a.option_strings and a.nargs is None
+        ]
     return found
 
 
@@ -48,8 +58,10 @@ def test_item1_every_value_option_takes_a_leading_dash(command, option, value):
     spaced, err1 = _parse([*head, option, value])
     joined, err2 = _parse([*head, f"{option}={value}"])
     assert "expected one argument" not in err1, err1
-    assert err1.replace(f"{option} {value}", "") == err2.replace(f"{option}={value}", ""), \
-        (err1, err2)
+    assert err1.replace(f"{option} {value}", "") == err2.replace(f"{option}={value}", ""), (
+        err1,
+        err2,
+    )
     if joined is not None:
         assert vars(spaced) == vars(joined)
 
@@ -69,8 +81,25 @@ def test_item8_double_dash_value_is_a_user_error(argv, capsys):
 
 
 def test_item1_readme_size_without_equals(capsys):
-    argv = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n1", "-1,0", "--n2", "1,0",
-            "--com", "25mm,0", "--mass", "1kg", "--mu", "0.3", "--g", "9.81"]
+    argv = [
+        "size",
+        "--p1",
+        "50mm,0",
+        "--p2",
+        "-50mm,0",
+        "--n1",
+        "-1,0",
+        "--n2",
+        "1,0",
+        "--com",
+        "25mm,0",
+        "--mass",
+        "1kg",
+        "--mu",
+        "0.3",
+        "--g",
+        "9.81",
+    ]
     assert main(argv) == 0
     assert "25.01 N per jaw" in capsys.readouterr().out
 
@@ -79,15 +108,18 @@ def test_item1_readme_size_without_equals(capsys):
 _C10, _S10 = "-0.98480775301", "-0.17364817767"  # cos 10°, sin 10° to 11 digits
 
 
-@pytest.mark.parametrize("normal", [(_C10, _S10), ("-3", "0"), ("-1/2", "1/7"),
-                                    (float(_C10), float(_S10)), (-1e-30, 1e-31)])
+@pytest.mark.parametrize(
+    "normal",
+    [(_C10, _S10), ("-3", "0"), ("-1/2", "1/7"), (float(_C10), float(_S10)), (-1e-30, 1e-31)],
+)
 def test_item2_any_nonzero_normal_is_scaled_to_one(normal):
     import sympy as sp
 
     from graspcompass.world import place_grasp
 
-    wg = place_grasp([("0.05", "0"), ("-0.05", "0")], [normal, ("1", "0")], mu=("0.5", "0.5"),
-                     com=("0.025", "0"))
+    wg = place_grasp(
+        [("0.05", "0"), ("-0.05", "0")], [normal, ("1", "0")], mu=("0.5", "0.5"), com=("0.025", "0")
+    )
     n = wg.normals[0]
     if isinstance(normal[0], float):
         length = (normal[0] ** 2 + normal[1] ** 2) ** 0.5
@@ -103,16 +135,36 @@ def test_item2_a_zero_normal_is_refused(normal):
     from graspcompass.world import NormalNotUnitError, place_grasp
 
     with pytest.raises(NormalNotUnitError, match="zero vector"):
-        place_grasp([("0.05", "0"), ("-0.05", "0")], [normal, ("1", "0")], mu=("0.5", "0.5"),
-                    com=("0.025", "0"))
+        place_grasp(
+            [("0.05", "0"), ("-0.05", "0")],
+            [normal, ("1", "0")],
+            mu=("0.5", "0.5"),
+            com=("0.025", "0"),
+        )
 
 
 def test_item2_cli_rounded_normal(capsys):
     """``--n1=-0.98480775301,-0.17364817767`` was "not a unit vector (length 1)"."""
     import math
 
-    argv = ["size", "--p1", "50mm,0", "--p2", "-50mm,0", "--n2", "1,0", "--com", "25mm,0",
-            "--mass", "1kg", "--mu", "0.3", "--g", "9.81", "--json"]
+    argv = [
+        "size",
+        "--p1",
+        "50mm,0",
+        "--p2",
+        "-50mm,0",
+        "--n2",
+        "1,0",
+        "--com",
+        "25mm,0",
+        "--mass",
+        "1kg",
+        "--mu",
+        "0.3",
+        "--g",
+        "9.81",
+        "--json",
+    ]
     assert main([*argv, f"--n1={_C10},{_S10}"]) == 0
     rounded = capsys.readouterr().out
     c, s = math.cos(math.radians(10)), math.sin(math.radians(10))
@@ -151,8 +203,9 @@ def test_item3_crosscheck_and_mp4_name_their_extra(monkeypatch, capsys):
     assert "scipy" in _names(extras["crosscheck"]) and "imageio-ffmpeg" in _names(extras["mp4"])
     assert {"scipy", "imageio-ffmpeg"} <= _names(extras["test"])  # tested in CI
     real = importlib.util.find_spec
-    monkeypatch.setattr(importlib.util, "find_spec",
-                        lambda name, *a: None if name == "scipy" else real(name, *a))
+    monkeypatch.setattr(
+        importlib.util, "find_spec", lambda name, *a: None if name == "scipy" else real(name, *a)
+    )
     assert main(["crosscheck", "--grasps", "1", "--thetas", "1"]) == 2
     assert "pip install 'graspcompass[crosscheck]'" in capsys.readouterr().err
 
@@ -172,8 +225,25 @@ def test_item3_cli_writes_an_mp4(tmp_path, capsys):
     """``animate … .mp4`` through the mp4 extra's ffmpeg; the file read back by ffmpeg."""
     imageio_ffmpeg = pytest.importorskip("imageio_ffmpeg", reason="the test extra brings it")
     out = tmp_path / "s.mp4"
-    assert main(["animate", "--kind", "sweep", "--frames", "5", "--dpi", "20", "--fps", "5",
-                 "-q", "-o", str(out)]) == 0, capsys.readouterr().err
+    assert (
+        main(
+            [
+                "animate",
+                "--kind",
+                "sweep",
+                "--frames",
+                "5",
+                "--dpi",
+                "20",
+                "--fps",
+                "5",
+                "-q",
+                "-o",
+                str(out),
+            ]
+        )
+        == 0
+    ), capsys.readouterr().err
     frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(out))
     assert frames == 5 and seconds == pytest.approx(1.0, abs=0.05)
 
@@ -185,8 +255,9 @@ def test_item4_animate_takes_a_file(tmp_path, monkeypatch, capsys):
     assert main(["recipe", "-o", "mine.gc", "-q"]) == 0
     assert main(["animate", "mine.gc", "--frames-per-step", "1", "--dpi", "20", "-q"]) == 0
     assert (tmp_path / "mine-construction.gif").stat().st_size > 0
-    assert main(["animate", "table1a", "--kind", "sweep", "--frames", "2", "--dpi", "20",
-                 "-q"]) == 0
+    assert (
+        main(["animate", "table1a", "--kind", "sweep", "--frames", "2", "--dpi", "20", "-q"]) == 0
+    )
     assert (tmp_path / "table1a-sweep.gif").exists()
     capsys.readouterr()
     assert main(["animate", "nosuch.gc"]) == 2
@@ -208,8 +279,9 @@ def test_item5_exit_status_3_is_undecided_everywhere(capsys):
     assert "bug" in EXIT_STATUSES[4]
     assert main(["--help"]) == 0
     top = capsys.readouterr().out
-    assert re.search(r"^\s+3\s+undecided", top, re.M) and re.search(r"^\s+4\s+an internal", top,
-                                                                     re.M)
+    assert re.search(r"^\s+3\s+undecided", top, re.M) and re.search(
+        r"^\s+4\s+an internal", top, re.M
+    )
     assert main(["check", "--help"]) == 0
     assert "3 something undecided" in capsys.readouterr().out
     root = Path(__file__).parents[1]
@@ -225,8 +297,13 @@ def _table1a_k(theta, x1="2"):
     """
     import sympy as sp
 
-    x1, x2, y, mu1, mu2 = sp.Rational(x1), sp.Integer(2), sp.Integer(1), sp.Integer(1), \
-        sp.Rational(6, 5)
+    x1, x2, y, mu1, mu2 = (
+        sp.Rational(x1),
+        sp.Integer(2),
+        sp.Integer(1),
+        sp.Integer(1),
+        sp.Rational(6, 5),
+    )
     tan = {1: -1 / mu1, 2: -1 / mu2, 3: 1 / mu1, 4: 1 / mu2}
     half = (x1 + x2) / 2
     S = {1: -half + y * tan[1], 3: -half + y * tan[3], 2: half - y * tan[2], 4: half - y * tan[4]}
@@ -244,8 +321,17 @@ def test_item6_k_json_is_the_exact_value_rounded(x1, capsys):
     thetas = "0,pi/2,pi,3*pi/2,30deg,1,7*pi/12,atan(2/3),atan2(-5,3)"
     assert main(["k", "--preset", "table1a", "--x1", x1, "--theta", thetas, "--json"]) == 0
     rows = json.loads(capsys.readouterr().out)
-    angles = [0, sp.pi / 2, sp.pi, 3 * sp.pi / 2, sp.pi / 6, sp.Integer(1), 7 * sp.pi / 12,
-              sp.atan(sp.Rational(2, 3)), sp.atan2(-5, 3)]
+    angles = [
+        0,
+        sp.pi / 2,
+        sp.pi,
+        3 * sp.pi / 2,
+        sp.pi / 6,
+        sp.Integer(1),
+        7 * sp.pi / 12,
+        sp.atan(sp.Rational(2, 3)),
+        sp.atan2(-5, 3),
+    ]
     for row, th in zip(rows, angles, strict=True):
         ks = [sp.nsimplify(v) if v.is_Rational else v for v in _table1a_k(th, x1)]
         expected = [float(sp.N(v, 50)) + 0.0 for v in ks]
@@ -267,13 +353,32 @@ def test_item6_k_table_prints_exact_zero(capsys):
 
 
 # -- item 7: hints that save a user ----------------------------------------------------------
-@pytest.mark.parametrize(("argv", "hint"), [
-    (["k", "--phi1", "90"], "a number without a unit is in radians: for 90 degrees write 90deg"),
-    (["k", "--xi2", "30"], "for 30 degrees write 30deg"),
-    (["k", "--mu1", "0,5"], "the decimal separator is a point"),
-    (["size", "--p1=0,0", "--p2=1,0", "--n1=1,0", "--n2=-1,0", "--com=0.5,0", "--mass", "1,5",
-      "--mu", "0.3"], "decimal separator"),
-])
+@pytest.mark.parametrize(
+    ("argv", "hint"),
+    [
+        (
+            ["k", "--phi1", "90"],
+            "a number without a unit is in radians: for 90 degrees write 90deg",
+        ),
+        (["k", "--xi2", "30"], "for 30 degrees write 30deg"),
+        (["k", "--mu1", "0,5"], "the decimal separator is a point"),
+        (
+            [
+                "size",
+                "--p1=0,0",
+                "--p2=1,0",
+                "--n1=1,0",
+                "--n2=-1,0",
+                "--com=0.5,0",
+                "--mass",
+                "1,5",
+                "--mu",
+                "0.3",
+            ],
+            "decimal separator",
+        ),
+    ],
+)
 def test_item7_refusals_say_what_to_type(argv, hint, capsys):
     assert main(argv) == 2
     err = capsys.readouterr().err
@@ -299,7 +404,8 @@ def test_item7_every_command_has_a_description():
     p = build_parser()
     sub = next(a for a in p._actions if isinstance(a, argparse._SubParsersAction))
     assert all(sp.description for sp in sub.choices.values()), [
-        n for n, sp in sub.choices.items() if not sp.description]
+        n for n, sp in sub.choices.items() if not sp.description
+    ]
 
 
 @pytest.mark.parametrize("columns", [60, 80, 100, 160])

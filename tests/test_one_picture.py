@@ -27,9 +27,10 @@ def test_png_and_svg_share_the_view_box(preset: str) -> None:
 def _renamed(program):
     """The paper's program with every object renamed (roles and indices kept)."""
     new = {s.name: f"obj{i}" for i, s in enumerate(program.steps)}
-    steps = tuple(dataclasses.replace(s, name=new[s.name],
-                                      inputs=tuple(new.get(n, n) for n in s.inputs))
-                  for s in program.steps)
+    steps = tuple(
+        dataclasses.replace(s, name=new[s.name], inputs=tuple(new.get(n, n) for n in s.inputs))
+        for s in program.steps
+    )
     return dataclasses.replace(program, steps=steps, claims=()), new
 
 
@@ -45,8 +46,9 @@ def test_renamed_construction_draws_the_same_picture() -> None:
     # break points small and unlabelled, axes labelled x and y, by role
     for name in ("B12", "B34"):
         if name in a.names:
-            assert (arts_a[name][0].get_markersize()
-                    == pytest.approx(arts_b[new[name]][0].get_markersize()))
+            assert arts_a[name][0].get_markersize() == pytest.approx(
+                arts_b[new[name]][0].get_markersize()
+            )
     texts = lambda ax: sorted(t.get_text() for t in ax.texts)  # noqa: E731
     assert {"x", "y"} <= set(texts(ax_b))
     sa, sb = build_scene(a), build_scene(b)
@@ -92,11 +94,15 @@ def test_one_palette_for_png_svg_tikz_and_geogebra() -> None:
     assert _scene.COLORS is PALETTE
     assert DEFAULT_THEME.circle_colors == tuple(PALETTE[f"circle{n}"] for n in (1, 2, 3, 4))
     assert (DEFAULT_THEME.side_color, DEFAULT_THEME.axis_color, DEFAULT_THEME.envelope_fill) == (
-        PALETTE["side"], PALETTE["axis"], PALETTE["fill"])
+        PALETTE["side"],
+        PALETTE["axis"],
+        PALETTE["fill"],
+    )
     for role, (r, g, b) in geogebra._RGB.items():
         assert f"#{r:02x}{g:02x}{b:02x}" == PALETTE[role] and rgb(role) == (r, g, b)
     svg = __import__("graspcompass.export.svg", fromlist=["to_svg"]).to_svg(
-        internal_force_diagram(Grasp.preset("fig6")))
+        internal_force_diagram(Grasp.preset("fig6"))
+    )
     for n in (1, 2, 3, 4):
         assert PALETTE[f"circle{n}"] in svg
 
@@ -143,7 +149,7 @@ def test_geogebra_labels_where_the_svg_puts_them(preset: str) -> None:
             assert (sy - cy) * dy > 0, (lab.names, lab.direction)  # screen y points down
     names = sorted(boxes)
     for i, a in enumerate(names):
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             (a0, a1, a2, a3), _ = boxes[a]
             (b0, b1, b2, b3), _ = boxes[b]
             w, h = min(a2, b2) - max(a0, b0), min(a3, b3) - max(a1, b1)

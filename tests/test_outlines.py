@@ -26,8 +26,12 @@ read_outline = outlines.read_outline
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "_static" / "outlines"
 
 
-def svg(tmp_path: Path, body: str, size: str = 'width="200mm" height="200mm" '
-        'viewBox="0 0 200 200"', name: str = "part.svg") -> Path:
+def svg(
+    tmp_path: Path,
+    body: str,
+    size: str = 'width="200mm" height="200mm" viewBox="0 0 200 200"',
+    name: str = "part.svg",
+) -> Path:
     p = tmp_path / name
     p.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" {size}>{body}</svg>')
     return p
@@ -45,12 +49,10 @@ def test_millimetre_polygon_reads_exactly_with_y_up(tmp_path: Path) -> None:
 
 
 def test_transforms_are_applied(tmp_path: Path) -> None:
-    body = ('<g transform="translate(100,20) scale(2)"><rect x="0" y="0" width="10" '
-            'height="5"/></g>')
+    body = '<g transform="translate(100,20) scale(2)"><rect x="0" y="0" width="10" height="5"/></g>'
     poly = read_outline(svg(tmp_path, body))
     # x' = 100 + 2x, y' = 20 + 2y, then y up
-    assert vertices_mm(poly) == {(100.0, -20.0), (120.0, -20.0), (120.0, -30.0),
-                                 (100.0, -30.0)}
+    assert vertices_mm(poly) == {(100.0, -20.0), (120.0, -20.0), (120.0, -30.0), (100.0, -30.0)}
 
 
 def test_circle_is_flattened_within_the_tolerance(tmp_path: Path) -> None:
@@ -69,7 +71,7 @@ def test_circle_is_flattened_within_the_tolerance(tmp_path: Path) -> None:
 def test_units_and_the_unit_option(tmp_path: Path) -> None:
     rect = '<rect x="0" y="0" width="10" height="10"/>'
     inch = read_outline(svg(tmp_path, rect, 'width="1in" height="1in" viewBox="0 0 10 10"'))
-    assert abs(inch.area - (0.0254 ** 2)) < 1e-12  # 10 user units = 1 inch
+    assert abs(inch.area - (0.0254**2)) < 1e-12  # 10 user units = 1 inch
     plain = svg(tmp_path, rect, 'width="100" height="100"', name="plain.svg")
     assert abs(read_outline(plain).area - (10 * 0.0254 / 96) ** 2) < 1e-12  # CSS px
     assert abs(read_outline(plain, unit="1mm").area - 1e-4) < 1e-12
@@ -78,8 +80,10 @@ def test_units_and_the_unit_option(tmp_path: Path) -> None:
 
 
 def test_largest_shape_or_the_named_one(tmp_path: Path) -> None:
-    body = ('<rect id="small" x="0" y="0" width="5" height="5"/>'
-            '<rect id="big" x="50" y="50" width="40" height="30"/>')
+    body = (
+        '<rect id="small" x="0" y="0" width="5" height="5"/>'
+        '<rect id="big" x="50" y="50" width="40" height="30"/>'
+    )
     p = svg(tmp_path, body)
     assert abs(read_outline(p).area * 1e6 - 1200) < 1e-6
     assert abs(read_outline(p, element="small").area * 1e6 - 25) < 1e-6
@@ -87,12 +91,15 @@ def test_largest_shape_or_the_named_one(tmp_path: Path) -> None:
         read_outline(p, element="nope")
 
 
-@pytest.mark.parametrize("body, match", [
-    ('<path d="M 0 0 L 10 0 L 10 10"/>', "no closed shape"),
-    ('<polygon points="0,0 10,10 10,0 0,10"/>', "crosses itself"),
-    ('<polygon points="0,0 10,0 20,0"/>', "crosses itself|no closed shape"),
-    ("", "no closed shape"),
-])
+@pytest.mark.parametrize(
+    "body, match",
+    [
+        ('<path d="M 0 0 L 10 0 L 10 10"/>', "no closed shape"),
+        ('<polygon points="0,0 10,10 10,0 0,10"/>', "crosses itself"),
+        ('<polygon points="0,0 10,0 20,0"/>', "crosses itself|no closed shape"),
+        ("", "no closed shape"),
+    ],
+)
 def test_bad_outlines_are_refused(tmp_path: Path, body: str, match: str) -> None:
     with pytest.raises(OutlineError, match=match):
         read_outline(svg(tmp_path, body))
@@ -100,9 +107,11 @@ def test_bad_outlines_are_refused(tmp_path: Path, body: str, match: str) -> None
 
 def test_hostile_files_are_refused(tmp_path: Path) -> None:
     bomb = tmp_path / "bomb.svg"
-    bomb.write_text('<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "aaaaaaaaaa">'
-                    '<!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;">]><svg xmlns="http://www.w3.org/'
-                    '2000/svg"><text>&b;</text></svg>')
+    bomb.write_text(
+        '<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "aaaaaaaaaa">'
+        '<!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;">]><svg xmlns="http://www.w3.org/'
+        '2000/svg"><text>&b;</text></svg>'
+    )
     with pytest.raises(InputError, match="entities"):
         read_outline(bomb)
     junk = tmp_path / "junk.svg"
@@ -138,10 +147,14 @@ def test_dxf_units_and_bulges(tmp_path: Path) -> None:
     metres = dxf(tmp_path, 6, lambda m: m.add_lwpolyline(square, close=True), "m.dxf")
     assert abs(read_outline(metres).area - 1200.0) < 1e-9  # 40 m × 30 m
     plain = dxf(tmp_path, 0, lambda m: m.add_lwpolyline(square, close=True), "plain.dxf")
-    assert abs(read_outline(plain, unit="1in").area - 1200 * 0.0254 ** 2) < 1e-12
+    assert abs(read_outline(plain, unit="1in").area - 1200 * 0.0254**2) < 1e-12
     # a half disc: the bulge 1 is a half circle of radius 20 over the chord (0,0)-(40,0)
-    half = dxf(tmp_path, 4, lambda m: m.add_lwpolyline(
-        [(0, 0, 0, 0, 1), (40, 0, 0, 0, 0)], format="xyseb", close=True), "half.dxf")
+    half = dxf(
+        tmp_path,
+        4,
+        lambda m: m.add_lwpolyline([(0, 0, 0, 0, 1), (40, 0, 0, 0, 0)], format="xyseb", close=True),
+        "half.dxf",
+    )
     assert abs(read_outline(half).area * 1e6 - math.pi * 400 / 2) < 0.5
 
 
@@ -163,8 +176,11 @@ def test_shipped_bracket_reads_the_same_from_svg_and_dxf() -> None:
 
 
 @settings(max_examples=25, deadline=None)
-@given(st.lists(st.tuples(st.integers(0, 199), st.integers(0, 199)), min_size=3, max_size=8,
-                unique=True))
+@given(
+    st.lists(
+        st.tuples(st.integers(0, 199), st.integers(0, 199)), min_size=3, max_size=8, unique=True
+    )
+)
 def test_random_polygons_round_trip(tmp_path_factory, pts: list[tuple[int, int]]) -> None:
     from shapely.geometry import MultiPoint
 
@@ -185,32 +201,57 @@ def test_outline_feeds_place_grasp() -> None:
     # the paper frame's origin is the centroid: x1 + x2 is the jaws' distance
     g = wg.grasp  # which contact is P1 follows the frame's rule (world.py)
     assert abs(float(g.x1 + g.x2) - 0.100) < 1e-12
-    assert sorted([float(g.x1), float(g.x2)]) == pytest.approx(sorted([0.110 - cx, cx - 0.010]),
-                                                               abs=1e-12)
+    assert sorted([float(g.x1), float(g.x2)]) == pytest.approx(
+        sorted([0.110 - cx, cx - 0.010]), abs=1e-12
+    )
     assert abs(float(g.y) - abs(-0.050 - cy)) < 1e-12
 
 
 def test_size_shape_equals_size_outline(capsys) -> None:
-    common = ["--p1", "110mm,-50mm", "--p2", "10mm,-50mm", "--mass", "0.5kg", "--mu", "0.4",
-              "--json"]
+    common = [
+        "--p1",
+        "110mm,-50mm",
+        "--p2",
+        "10mm,-50mm",
+        "--mass",
+        "0.5kg",
+        "--mu",
+        "0.4",
+        "--json",
+    ]
     assert cli.main(["size", "--shape", str(DOCS / "bracket.dxf"), *common]) == 0
     from_file = json.loads(capsys.readouterr().out)
-    verts = ";".join(f"{x * 1000}mm,{y * 1000}mm" for x, y in
-                     list(read_outline(DOCS / "bracket.dxf").exterior.coords)[:-1])
+    verts = ";".join(
+        f"{x * 1000}mm,{y * 1000}mm"
+        for x, y in list(read_outline(DOCS / "bracket.dxf").exterior.coords)[:-1]
+    )
     assert cli.main(["size", f"--outline={verts}", *common]) == 0
     typed = json.loads(capsys.readouterr().out)
     assert abs(from_file["worst_squeeze_N"] - typed["worst_squeeze_N"]) < 1e-9
 
 
-@pytest.mark.parametrize("extra, needle", [
-    (["--shape", "/no/such.svg"], "cannot read"),
-    (["--shape", "part.png"], ".svg or .dxf"),
-    (["--shape", str(DOCS / "bracket.svg"), "--outline", "0,0;1,0;0,1"], "not both"),
-    (["--shape-unit", "1mm", "--n1=-1,0", "--n2", "1,0", "--com", "0,0"], "--shape"),
-])
+@pytest.mark.parametrize(
+    "extra, needle",
+    [
+        (["--shape", "/no/such.svg"], "cannot read"),
+        (["--shape", "part.png"], ".svg or .dxf"),
+        (["--shape", str(DOCS / "bracket.svg"), "--outline", "0,0;1,0;0,1"], "not both"),
+        (["--shape-unit", "1mm", "--n1=-1,0", "--n2", "1,0", "--com", "0,0"], "--shape"),
+    ],
+)
 def test_size_shape_errors_are_one_line(extra: list[str], needle: str, capsys) -> None:
-    argv = ["size", "--p1", "110mm,-50mm", "--p2", "10mm,-50mm", "--mass", "1", "--mu", "0.4",
-            *extra]
+    argv = [
+        "size",
+        "--p1",
+        "110mm,-50mm",
+        "--p2",
+        "10mm,-50mm",
+        "--mass",
+        "1",
+        "--mu",
+        "0.4",
+        *extra,
+    ]
     assert cli.main(argv) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and needle in err[0], err

@@ -43,7 +43,8 @@ def test_sampling_skips_vertices_and_gives_inward_normals() -> None:
     inside = pts + 1e-4 * nrm
     assert (np.abs(inside[:, 0]) < 0.05).all() and (np.abs(inside[:, 1]) < 0.03).all()
     assert {(0.0, -0.03), (0.0, 0.03), (0.05, 0.0), (-0.05, 0.0)} <= {
-        (round(x, 12) + 0.0, round(y, 12) + 0.0) for x, y in pts}
+        (round(x, 12) + 0.0, round(y, 12) + 0.0) for x, y in pts
+    }
 
 
 def test_rectangle_best_pair_from_first_principles() -> None:
@@ -58,15 +59,16 @@ def test_rectangle_best_pair_from_first_principles() -> None:
     centred = {frozenset({(0.0, -0.03), (0.0, 0.03)}), frozenset({(0.05, 0.0), (-0.05, 0.0)})}
     best = plan.top(3)
     for p in best[:2]:
-        assert frozenset((round(x, 12) + 0.0, round(y, 12) + 0.0) for x, y in p.contacts) \
-            in centred
+        assert frozenset((round(x, 12) + 0.0, round(y, 12) + 0.0) for x, y in p.contacts) in centred
         assert p.squeeze == pytest.approx(expected, rel=1e-12)
         assert p.squeeze_per_kg == pytest.approx(expected / 2.0, rel=1e-12)
     assert best[2].squeeze > expected * (1 + 1e-6)
     # an LP over the load directions (the paper's least internal force, per jaw)
     (p1, p2), (n1, n2) = best[0].contacts, best[0].normals
-    lp = max(lp_squeeze(p1, p2, n1, n2, MU, MU, plan.com, 2.0 * G * e(t))[0]
-             for t in np.linspace(0, 2 * np.pi, 721))
+    lp = max(
+        lp_squeeze(p1, p2, n1, n2, MU, MU, plan.com, 2.0 * G * e(t))[0]
+        for t in np.linspace(0, 2 * np.pi, 721)
+    )
     assert lp == pytest.approx(expected, rel=1e-4)
     assert np.nanmin(plan.squeeze) == pytest.approx(expected, rel=1e-12)
 
@@ -105,7 +107,8 @@ def test_pair_frames_swap_puts_the_centre_of_mass_below() -> None:
     fr = pair_frames([[-1.0, 1.0]], [[1.0, 0.0]], [[1.0, 1.0]], [[-1.0, 0.0]], (0.0, 0.0))
     assert bool(fr["swapped"][0]) and fr["y"][0] == pytest.approx(1.0)
     assert fr["phi1"][0] == pytest.approx(math.pi / 2) and fr["phi2"][0] == pytest.approx(
-        math.pi / 2)
+        math.pi / 2
+    )
 
 
 def test_result_is_read_only_and_json_ready() -> None:
@@ -116,16 +119,19 @@ def test_result_is_read_only_and_json_ready() -> None:
     assert d["pairs"] == 120 and len(d["top"]) == 3 and d["top"][0]["rank"] == 1
 
 
-@pytest.mark.parametrize("kwargs, error, text", [
-    (dict(samples=1000), InputTooLargeError, str(MAX_PAIRS)),
-    (dict(samples=2), InputError, "at least 3"),
-    (dict(samples=True), InputError, "integer"),
-    (dict(mu=0.0), InputError, "mu"),
-    (dict(mu=float("nan")), InputError, "mu"),
-    (dict(mass=-1.0), InputError, "mass"),
-    (dict(per="both"), InputError, "per"),
-    (dict(com=("x", 0)), InputError, "com"),
-])
+@pytest.mark.parametrize(
+    "kwargs, error, text",
+    [
+        (dict(samples=1000), InputTooLargeError, str(MAX_PAIRS)),
+        (dict(samples=2), InputError, "at least 3"),
+        (dict(samples=True), InputError, "integer"),
+        (dict(mu=0.0), InputError, "mu"),
+        (dict(mu=float("nan")), InputError, "mu"),
+        (dict(mass=-1.0), InputError, "mass"),
+        (dict(per="both"), InputError, "per"),
+        (dict(com=("x", 0)), InputError, "com"),
+    ],
+)
 def test_bad_arguments(kwargs, error, text) -> None:
     with pytest.raises(error, match=text):
         plan_contacts(PLATE, **{"mu": MU, **kwargs})
@@ -145,8 +151,27 @@ def test_bad_outlines_and_no_force_closure() -> None:
 # -- the command line ----------------------------------------------------------------------
 def test_cli_bracket_json_and_drawing(tmp_path, capsys) -> None:
     out = tmp_path / "plan.png"
-    assert main(["plan", "--shape", str(BRACKET), "--mass", "500g", "--mu", "0.5", "--samples",
-                 "60", "--top", "3", "--json", "--draw", str(out)]) == 0
+    assert (
+        main(
+            [
+                "plan",
+                "--shape",
+                str(BRACKET),
+                "--mass",
+                "500g",
+                "--mu",
+                "0.5",
+                "--samples",
+                "60",
+                "--top",
+                "3",
+                "--json",
+                "--draw",
+                str(out),
+            ]
+        )
+        == 0
+    )
     d = json.loads(capsys.readouterr().out)
     assert len(d["top"]) == 3 and d["mass_kg"] == 0.5 and out.stat().st_size > 10_000
     best = d["top"][0]
@@ -165,39 +190,68 @@ def _one_line_exit_2(argv, capsys, text):
 
 def test_cli_bad_inputs_one_line_exit_2(tmp_path, capsys) -> None:
     open_path = tmp_path / "open.svg"
-    open_path.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm" '
-                         'viewBox="0 0 10 10"><path d="M 0 0 L 10 0 L 10 10"/></svg>')
+    open_path.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="10mm" height="10mm" '
+        'viewBox="0 0 10 10"><path d="M 0 0 L 10 0 L 10 10"/></svg>'
+    )
     tri = tmp_path / "tri.svg"
-    tri.write_text('<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
-                   'viewBox="0 0 100 100"><path d="M 0 90 L 100 90 L 50 3.4 Z"/></svg>')
+    tri.write_text(
+        '<svg xmlns="http://www.w3.org/2000/svg" width="100mm" height="100mm" '
+        'viewBox="0 0 100 100"><path d="M 0 90 L 100 90 L 50 3.4 Z"/></svg>'
+    )
     _one_line_exit_2(["plan", "--shape", str(open_path)], capsys, "closed")
     _one_line_exit_2(["plan", "--shape", str(tri), "--mu", "0.3"], capsys, "force-closure")
-    _one_line_exit_2(["plan", "--shape", str(BRACKET), "--samples", "100000"], capsys,
-                     "at most 200")
+    _one_line_exit_2(
+        ["plan", "--shape", str(BRACKET), "--samples", "100000"], capsys, "at most 200"
+    )
     _one_line_exit_2(["plan", "--shape", str(tmp_path / "none.svg")], capsys, "none.svg")
     _one_line_exit_2(["plan", "--shape", "part.png"], capsys, ".svg or .dxf")
     _one_line_exit_2(["plan", "--shape", str(BRACKET), "--mu", "-1"], capsys, "--mu")
     _one_line_exit_2(["plan", "--shape", str(BRACKET), "--mass", "5lb"], capsys, "unit")
-    _one_line_exit_2(["plan", "--shape", str(BRACKET), "--draw", "/no/such/folder/p.png"],
-                     capsys, "/no/such/folder")
+    _one_line_exit_2(
+        ["plan", "--shape", str(BRACKET), "--draw", "/no/such/folder/p.png"],
+        capsys,
+        "/no/such/folder",
+    )
     _one_line_exit_2(["plan", "--shape", str(BRACKET), "--top", "0"], capsys, "--top")
 
 
-@pytest.mark.parametrize("argv", [
-    ["plan", "--shape", "part.svg", "--samples", "100000"],
-    ["plan", "--shape", "part.txt"], ["plan", "--shape", "p.svg", "--mass", "5lb"],
-])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["plan", "--shape", "part.svg", "--samples", "100000"],
+        ["plan", "--shape", "part.txt"],
+        ["plan", "--shape", "p.svg", "--mass", "5lb"],
+    ],
+)
 def test_cli_refusals_load_no_heavy_module(argv) -> None:
-    code = ("import contextlib, io\nfrom graspcompass.cli import main\nwith "
-            f"contextlib.redirect_stderr(io.StringIO()):\n    assert main({argv!r}) == 2")
+    code = (
+        "import contextlib, io\nfrom graspcompass.cli import main\nwith "
+        f"contextlib.redirect_stderr(io.StringIO()):\n    assert main({argv!r}) == 2"
+    )
     assert not any(_loaded_after(code).values())
 
 
 def test_as_a_process() -> None:
-    out = subprocess.run([sys.executable, "-m", "graspcompass", "plan", "--shape", str(BRACKET),
-                          "--samples", "20", "--top", "1", "--exact", "0"], capture_output=True,
-                         text=True,
-                         timeout=120)
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "graspcompass",
+            "plan",
+            "--shape",
+            str(BRACKET),
+            "--samples",
+            "20",
+            "--top",
+            "1",
+            "--exact",
+            "0",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert out.returncode == 0 and out.stdout.count("\n") == 4, out.stderr
 
 
@@ -237,11 +291,16 @@ def _paper_squeeze(a, na, b, nb, com, mu, g, frame=False):
     xi = math.atan(mu)
     ok = np.ones(np.shape(x1), bool)
     for phi in (phi1, phi2):
-        ok &= (phi > 0) & (phi <= np.pi) & (phi - xi > -np.pi / 2) & (phi - xi < np.pi / 2) \
-            & (phi + xi > np.pi / 2) & (phi + xi < 3 * np.pi / 2)
+        ok &= (
+            (phi > 0)
+            & (phi <= np.pi)
+            & (phi - xi > -np.pi / 2)
+            & (phi - xi < np.pi / 2)
+            & (phi + xi > np.pi / 2)
+            & (phi + xi < 3 * np.pi / 2)
+        )
     h = (x1 + x2) / 2
-    t1, t2, t3, t4 = (np.tan(p + s * xi) for p, s in ((phi1, 1), (phi2, 1), (phi1, -1),
-                                                       (phi2, -1)))
+    t1, t2, t3, t4 = (np.tan(p + s * xi) for p, s in ((phi1, 1), (phi2, 1), (phi1, -1), (phi2, -1)))
     S = [y * t1 - h, h - y * t2, y * t3 - h, h - y * t4]
     C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
     if frame:
@@ -266,14 +325,15 @@ def brute_force(ring, ea, eb, com, mu, n=601, fn=None, rounds=3, starts=1):
     fn = fn or (lambda a, na, b, nb: paper_squeeze(a, na, b, nb, com, mu))
 
     def grid(lo_s, hi_s, lo_t, hi_t, n):
-        s, t = np.meshgrid(np.linspace(lo_s, hi_s, n), np.linspace(lo_t, hi_t, n),
-                           indexing="ij")
+        s, t = np.meshgrid(np.linspace(lo_s, hi_s, n), np.linspace(lo_t, hi_t, n), indexing="ij")
         return s, t, fn(a0 + s[..., None] * da, na, b0 + t[..., None] * db, nb)
 
     s, t, q = grid(0.0, 1.0, 0.0, 1.0, n)
     pad = np.pad(np.where(np.isnan(q), np.inf, q), 1, constant_values=np.inf)
-    local = np.isfinite(q) & np.all([q <= pad[1 + i:1 + i + n, 1 + j:1 + j + n]
-                                      for i in (-1, 0, 1) for j in (-1, 0, 1)], axis=0)
+    local = np.isfinite(q) & np.all(
+        [q <= pad[1 + i : 1 + i + n, 1 + j : 1 + j + n] for i in (-1, 0, 1) for j in (-1, 0, 1)],
+        axis=0,
+    )
     cand = np.flatnonzero(local.ravel())
     cand = cand[np.argsort(q.ravel()[cand])][:starts] if starts > 1 else [np.nanargmin(q)]
     out = np.inf
@@ -318,12 +378,18 @@ def paper_squeeze_tilted(a, na, b, nb, com, mu, gdir, tau, accel=0.0, g=G):
 @given(st.lists(st.floats(-1, 1), min_size=12, max_size=12), st.floats(0.2, 1.5))
 def test_edge_closed_form_is_the_papers(v, mu) -> None:
     """V_n from equilibrium in the world frame (the module) = eqs. (28)-(39) in the paper frame."""
-    a0, a1, b0, b1 = (0.5 * v[0], -1 + 0.3 * v[1]), (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]), \
-        (0.5 * v[4], 1 + 0.3 * v[5]), (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7])
+    a0, a1, b0, b1 = (
+        (0.5 * v[0], -1 + 0.3 * v[1]),
+        (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]),
+        (0.5 * v[4], 1 + 0.3 * v[5]),
+        (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7]),
+    )
     com = (0.4 * v[8], 0.4 * v[9])
     pair = EdgePair.of(a0, a1, b0, b1, com, mu)
-    s, t = np.linspace(0, 1, 7) * 0.98 + 0.01 * (1 + v[10]), np.linspace(1, 0, 7) * 0.98 \
-        + 0.01 * (1 + v[11])
+    s, t = (
+        np.linspace(0, 1, 7) * 0.98 + 0.01 * (1 + v[10]),
+        np.linspace(1, 0, 7) * 0.98 + 0.01 * (1 + v[11]),
+    )
     q = edge_pair_values(pair, Load(g=G), s, t)
     a, b = pair.points(s, t)
     na, nb = pair.normals()
@@ -350,8 +416,9 @@ def test_exact_rectangle_centred_pair_in_closed_form() -> None:
 def test_exact_bracket_against_brute_force_and_samples(mu, com) -> None:
     from graspcompass.outlines import read_outline
 
-    plan = plan_contacts(read_outline(BRACKET), mu=mu, mass=1.0, samples=60, g=G, com=com,
-                         exact=1 if com else 2)
+    plan = plan_contacts(
+        read_outline(BRACKET), mu=mu, mass=1.0, samples=60, g=G, com=com, exact=1 if com else 2
+    )
     assert plan.exact
     ring = np.asarray(plan.outline)
     for p in plan.exact:
@@ -363,14 +430,17 @@ def test_exact_bracket_against_brute_force_and_samples(mu, com) -> None:
         assert p.squeeze <= grid * (1 + 2e-6)
         # no sampled pair on these two edges does better
         on = ((plan.edges[plan.i] == ea) & (plan.edges[plan.j] == eb)) | (
-            (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea))
+            (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea)
+        )
         sampled = plan.squeeze[on & plan.force_closure]
         assert p.lower_bound <= sampled.min() * (1 + 1e-12)
         assert p.squeeze <= sampled.min() and p.sampled_squeeze == sampled.min()
         # the optimum's squeeze against the LP over the load directions
         (p1, p2), (n1, n2) = p.contacts, p.normals
-        lp = max(lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * e(t))[0]
-                 for t in np.linspace(0, 2 * np.pi, 121))
+        lp = max(
+            lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * e(t))[0]
+            for t in np.linspace(0, 2 * np.pi, 121)
+        )
         assert lp <= p.squeeze * (1 + 1e-9) and lp == pytest.approx(p.squeeze, rel=2e-3)
     assert plan.exact[0].squeeze <= plan.top(1)[0].squeeze
 
@@ -393,20 +463,34 @@ def test_exact_adjacent_edges_of_a_triangle(mu) -> None:
 TRAPEZE = [(-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03)]
 
 
-@pytest.mark.parametrize("shape, mu, com, gdir, tilt, accel, boundary", [
-    # the least squeeze approached on the boundary of condition (1), finite there
-    ("trapeze", 0.6, (0.01, 0.005), (0.0, -1.0), 25, 1.0, True),
-    ("bracket", 0.5, None, (0.6, -0.8), 30, 0.0, False),
-])
-def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, tilt, accel,
-                                                         boundary) -> None:
+@pytest.mark.parametrize(
+    "shape, mu, com, gdir, tilt, accel, boundary",
+    [
+        # the least squeeze approached on the boundary of condition (1), finite there
+        ("trapeze", 0.6, (0.01, 0.005), (0.0, -1.0), 25, 1.0, True),
+        ("bracket", 0.5, None, (0.6, -0.8), 30, 0.0, False),
+    ],
+)
+def test_exact_under_tilt_range_against_grid_and_samples(
+    shape, mu, com, gdir, tilt, accel, boundary
+) -> None:
     """Under a tilt range: proved, ≤ every sampled pair, and the brute-force grid's optimum."""
     from graspcompass.outlines import read_outline
 
     outline = TRAPEZE if shape == "trapeze" else read_outline(BRACKET)
     tau = math.radians(tilt)
-    plan = plan_contacts(outline, mu=mu, mass=1.0, samples=40, g=G, com=com, gravity=gdir,
-                         tilt=f"{tilt}deg", accel=accel, exact=1)
+    plan = plan_contacts(
+        outline,
+        mu=mu,
+        mass=1.0,
+        samples=40,
+        g=G,
+        com=com,
+        gravity=gdir,
+        tilt=f"{tilt}deg",
+        accel=accel,
+        exact=1,
+    )
     p = plan.exact[0]
     ring = np.asarray(plan.outline)
     ea, eb = p.edges
@@ -421,7 +505,8 @@ def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, t
     assert p.squeeze <= grid * (1 + p.tol) and grid <= p.squeeze * (1 + 1e-4)
     # no sampled pair on these two edges does better
     on = ((plan.edges[plan.i] == ea) & (plan.edges[plan.j] == eb)) | (
-        (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea))
+        (plan.edges[plan.i] == eb) & (plan.edges[plan.j] == ea)
+    )
     sampled = plan.squeeze[on & plan.force_closure]
     assert p.lower_bound <= sampled.min() * (1 + 1e-12) and p.squeeze <= sampled.min()
     assert p.sampled_squeeze == sampled.min()
@@ -431,10 +516,18 @@ def test_exact_under_tilt_range_against_grid_and_samples(shape, mu, com, gdir, t
     assert here == pytest.approx(p.squeeze, rel=1e-9)
     # ... and by dense sampling of the orientations (A = 0: an LP per orientation)
     if not accel:
-        lp = max(lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * rot)[0] for rot in (
-            np.array([math.cos(r) * gdir[0] - math.sin(r) * gdir[1],
-                      math.sin(r) * gdir[0] + math.cos(r) * gdir[1]])
-            for r in np.linspace(-tau, tau, 41)))
+        lp = max(
+            lp_squeeze(p1, p2, n1, n2, mu, mu, plan.com, G * rot)[0]
+            for rot in (
+                np.array(
+                    [
+                        math.cos(r) * gdir[0] - math.sin(r) * gdir[1],
+                        math.sin(r) * gdir[0] + math.cos(r) * gdir[1],
+                    ]
+                )
+                for r in np.linspace(-tau, tau, 41)
+            )
+        )
         assert lp <= p.squeeze * (1 + 1e-9) and lp == pytest.approx(p.squeeze, rel=1e-3)
     # what is proved, stated: the boundary of (1), the orientations, the tolerance
     assert p.on_boundary is boundary and (p.cone_margin <= 1e-6) is boundary
@@ -452,8 +545,9 @@ def _boxes_hold(pair, load, rng, n=200, corner=False):
     bounds = _Bounds(pair, load)
     c, h = rng.uniform(0, 1, (n, 2)), 10 ** rng.uniform(-4, -1, n)
     if corner:
-        c[: n // 2] = np.stack([1 - 10 ** rng.uniform(-4, -0.5, n // 2),
-                                10 ** rng.uniform(-4, -0.5, n // 2)], axis=-1)
+        c[: n // 2] = np.stack(
+            [1 - 10 ** rng.uniform(-4, -0.5, n // 2), 10 ** rng.uniform(-4, -0.5, n // 2)], axis=-1
+        )
     s_box = np.clip(c[:, 0] - h, 0, 1), np.clip(c[:, 0] + h, 0, 1)
     t_box = np.clip(c[:, 1] - h, 0, 1), np.clip(c[:, 1] + h, 0, 1)
     lower, feasible = bounds.lower(s_box, t_box)
@@ -475,12 +569,21 @@ def test_box_lower_bounds_hold_across_the_boundary_of_condition_1() -> None:
     straddling = 0
     for _ in range(9):
         v = rng.uniform(-1, 1, 10)
-        pair = EdgePair.of((0.5 * v[0], -1 + 0.3 * v[1]), (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]),
-                           (0.5 * v[4], 1 + 0.3 * v[5]), (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7]),
-                           (0.4 * v[8], 0.4 * v[9]), rng.uniform(0.2, 1.5))
+        pair = EdgePair.of(
+            (0.5 * v[0], -1 + 0.3 * v[1]),
+            (1.5 + 0.5 * v[2], -1 + 0.3 * v[3]),
+            (0.5 * v[4], 1 + 0.3 * v[5]),
+            (-1.5 + 0.5 * v[6], 1 + 0.3 * v[7]),
+            (0.4 * v[8], 0.4 * v[9]),
+            rng.uniform(0.2, 1.5),
+        )
         ang = rng.uniform(-math.pi, math.pi)
-        load = Load(g=G, accel=float(rng.choice([0.0, 3.0, 20.0])),
-                    gravity=(math.cos(ang), math.sin(ang)), tau=float(rng.uniform(0, 1.2)))
+        load = Load(
+            g=G,
+            accel=float(rng.choice([0.0, 3.0, 20.0])),
+            gravity=(math.cos(ang), math.sin(ang)),
+            tau=float(rng.uniform(0, 1.2)),
+        )
         straddling += _boxes_hold(pair, load, rng)
     assert straddling >= 10
 
@@ -490,8 +593,9 @@ def test_box_lower_bounds_hold_at_a_shared_vertex_for_mu_above_1() -> None:
     rng = np.random.default_rng(3)
     for _ in range(6):
         v = rng.uniform(-1, 1, 6)
-        P = np.array([(0.0, 0.0), (0.1 + 0.05 * v[0], 0.02 * v[1]),
-                      (0.03 * v[2], 0.1 + 0.05 * v[3])])
+        P = np.array(
+            [(0.0, 0.0), (0.1 + 0.05 * v[0], 0.02 * v[1]), (0.03 * v[2], 0.1 + 0.05 * v[3])]
+        )
         com = P.mean(axis=0) + 0.01 * v[4:6]
         pair = EdgePair.of(P[0], P[1], P[1], P[2], com, rng.uniform(0.8, 2.5))
         _boxes_hold(pair, Load(g=G, accel=float(rng.choice([0.0, 3.0]))), rng, corner=True)
@@ -499,8 +603,9 @@ def test_box_lower_bounds_hold_at_a_shared_vertex_for_mu_above_1() -> None:
 
 def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
     """The search under a tilt range: its lower bound is below a fine grid's least value."""
-    pair = EdgePair.of((-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03),
-                       (0.01, 0.005), 0.6)
+    pair = EdgePair.of(
+        (-0.05, -0.03), (0.05, -0.03), (0.04, 0.03), (-0.05, 0.03), (0.01, 0.005), 0.6
+    )
     load = Load(g=G, accel=1.0, gravity=(0.0, -1.0), tau=math.radians(25))
     opt = refine_edge_pair(pair, load, tol=1e-5, max_boxes=4000)
     s, t = np.meshgrid(np.linspace(0, 1, 801), np.linspace(0, 1, 801), indexing="ij")
@@ -516,8 +621,9 @@ def test_refine_edge_pair_tilt_range_lower_bound_holds() -> None:
 def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
     """Every orientation within ±τ of gravity, by an LP per orientation (test_sizing)."""
     tau, gdir, m = math.radians(30), np.array([0.6, -0.8]), 1.5
-    plan = plan_contacts(PLATE, mu=MU, mass=m, samples=24, g=G, gravity=tuple(gdir),
-                         tilt="30deg", accel=0.0, exact=0)
+    plan = plan_contacts(
+        PLATE, mu=MU, mass=m, samples=24, g=G, gravity=tuple(gdir), tilt="30deg", accel=0.0, exact=0
+    )
     assert plan.exact == () and plan.tilt == pytest.approx(tau)
     assert "±30°" in plan.orientations()
     rhos = np.linspace(-tau, tau, 61)
@@ -526,8 +632,9 @@ def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
     for k in picks:
         p = plan.pair(int(k))
         (p1, p2), (n1, n2) = p.contacts, p.normals
-        lp = max(lp_squeeze(p1, p2, n1, n2, MU, MU, plan.com, m * G * rot(r) @ gdir)[0]
-                 for r in rhos)
+        lp = max(
+            lp_squeeze(p1, p2, n1, n2, MU, MU, plan.com, m * G * rot(r) @ gdir)[0] for r in rhos
+        )
         assert p.squeeze >= lp * (1 - 1e-9) and p.squeeze == pytest.approx(lp, rel=2e-3, abs=1e-9)
         wg = place_grasp(list(p.contacts), list(p.normals), mu=(MU, MU), com=plan.com)
         s = size_gripper(wg, m, g=G, gravity=tuple(gdir), tilt=tau)
@@ -542,33 +649,43 @@ def test_tilt_range_ranking_against_lp_over_sampled_orientations() -> None:
 
 
 @settings(max_examples=40, deadline=None)
-@given(st.floats(-3, 3), st.floats(-3, 3), st.floats(0.1, 3), st.floats(0, 3.2),
-       st.floats(-math.pi, math.pi))
+@given(
+    st.floats(-3, 3),
+    st.floats(-3, 3),
+    st.floats(0.1, 3),
+    st.floats(0, 3.2),
+    st.floats(-math.pi, math.pi),
+)
 def test_arc_max_many_is_arc_max(S, C, gmag, tau, ang) -> None:
     from graspcompass.sizing._arc import arc_max_many
     from graspcompass.sizing.core import _arc_max
 
     w = (gmag * math.cos(ang), gmag * math.sin(ang))
     want, _ = _arc_max(S, C, math.hypot(S, C), w, gmag, tau, False)
-    brute = max(S * (math.cos(r) * w[0] - math.sin(r) * w[1])
-                + C * (math.sin(r) * w[0] + math.cos(r) * w[1])
-                for r in np.linspace(-tau, tau, 2001))
+    brute = max(
+        S * (math.cos(r) * w[0] - math.sin(r) * w[1])
+        + C * (math.sin(r) * w[0] + math.cos(r) * w[1])
+        for r in np.linspace(-tau, tau, 2001)
+    )
     got = float(arc_max_many(S, C, w, tau))
     assert got == pytest.approx(want, rel=1e-12, abs=1e-12)
     assert got >= brute - 1e-12 and got == pytest.approx(brute, abs=1e-5 * (1 + gmag))
 
 
-@pytest.mark.parametrize("kwargs, error, text", [
-    (dict(tilt="10deg"), SizingError, "gravity"),
-    (dict(gravity=(0, 0)), SizingError, "zero vector"),
-    (dict(gravity=(0, -1), tilt=-0.1), SizingError, "tilt"),
-    (dict(gravity=(0, -1), tilt="10"), InputError, "unit"),
-    (dict(gravity=("x", 1)), InputError, "gravity"),
-    (dict(exact=-1), InputError, "exact"),
-    (dict(exact=True), InputError, "exact"),
-    (dict(tol=0.0), InputError, "tol"),
-    (dict(tol=0.5), InputError, "tol"),
-])
+@pytest.mark.parametrize(
+    "kwargs, error, text",
+    [
+        (dict(tilt="10deg"), SizingError, "gravity"),
+        (dict(gravity=(0, 0)), SizingError, "zero vector"),
+        (dict(gravity=(0, -1), tilt=-0.1), SizingError, "tilt"),
+        (dict(gravity=(0, -1), tilt="10"), InputError, "unit"),
+        (dict(gravity=("x", 1)), InputError, "gravity"),
+        (dict(exact=-1), InputError, "exact"),
+        (dict(exact=True), InputError, "exact"),
+        (dict(tol=0.0), InputError, "tol"),
+        (dict(tol=0.5), InputError, "tol"),
+    ],
+)
 def test_bad_orientation_and_exact_arguments(kwargs, error, text) -> None:
     with pytest.raises(error, match=text):
         plan_contacts(PLATE, **{"mu": MU, "samples": 12, **kwargs})
@@ -580,8 +697,25 @@ def test_cli_exact_and_tilt_json(capsys) -> None:
     ex = d["exact"][0]
     assert ex["certified"] and ex["lower_bound_N"] <= ex["squeeze_N"] <= ex["sampled_squeeze_N"]
     assert "branch and bound" in d["exact_method"] and d["orientations"] == "every orientation"
-    assert main(["plan", "--shape", str(BRACKET), "--samples", "40", "--gravity", "0,-1",
-                 "--tilt", "15deg", "--exact", "1", "--json"]) == 0
+    assert (
+        main(
+            [
+                "plan",
+                "--shape",
+                str(BRACKET),
+                "--samples",
+                "40",
+                "--gravity",
+                "0,-1",
+                "--tilt",
+                "15deg",
+                "--exact",
+                "1",
+                "--json",
+            ]
+        )
+        == 0
+    )
     d = json.loads(capsys.readouterr().out)
     assert d["tilt_deg"] == pytest.approx(15) and d["gravity"] == [0, -1]
     ex = d["exact"][0]  # proved under the tilt range too, and says over which orientations
@@ -592,14 +726,17 @@ def test_cli_exact_and_tilt_json(capsys) -> None:
     assert "proved >=" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("extra, text", [
-    (["--tilt", "10deg"], "--tilt needs --gravity"),
-    (["--gravity", "0,0"], "zero vector"),
-    (["--gravity", "0,-1", "--tilt", "10"], "unit"),
-    (["--gravity", "0,-1", "--tilt=-10deg"], "tilt"),
-    (["--gravity", "1"], "--gravity"),
-    (["--exact", "99"], "--exact"),
-    (["--tol", "0"], "--tol"),
-])
+@pytest.mark.parametrize(
+    "extra, text",
+    [
+        (["--tilt", "10deg"], "--tilt needs --gravity"),
+        (["--gravity", "0,0"], "zero vector"),
+        (["--gravity", "0,-1", "--tilt", "10"], "unit"),
+        (["--gravity", "0,-1", "--tilt=-10deg"], "tilt"),
+        (["--gravity", "1"], "--gravity"),
+        (["--exact", "99"], "--exact"),
+        (["--tol", "0"], "--tol"),
+    ],
+)
 def test_cli_bad_orientation_one_line_exit_2(extra, text, capsys) -> None:
     _one_line_exit_2(["plan", "--shape", str(BRACKET), "--samples", "12", *extra], capsys, text)

@@ -77,8 +77,7 @@ def test_every_claim_is_decided_and_errata_are_corrected(reports):
 
 def test_the_errata_found_are_exactly_the_known_ones(reports):
     refuted = {r.claim.id for r in reports if r.result.status is Status.REFUTED}
-    assert refuted == {"eq23-printed-upper", "eq23-printed-lower", "A1-printed",
-                       "s5-V1V2-printed"}
+    assert refuted == {"eq23-printed-upper", "eq23-printed-lower", "A1-printed", "s5-V1V2-printed"}
 
 
 def test_eq23_counterexample_by_hand():
@@ -88,8 +87,11 @@ def test_eq23_counterexample_by_hand():
     lhs, rhs = (c * m + s) / (s * m - c), (s + c * m) / (c - s * m)
     assert sp.simplify(lhs + rhs) == 0 and lhs != rhs
     r = check(claim("eq23-printed-upper"))
-    assert_refuted(r, (sp.cos(phi1) * mu1 + sp.sin(phi1)) / (sp.sin(phi1) * mu1 - sp.cos(phi1)),
-                   (sp.sin(phi1) + sp.cos(phi1) * mu1) / (sp.cos(phi1) - sp.sin(phi1) * mu1))
+    assert_refuted(
+        r,
+        (sp.cos(phi1) * mu1 + sp.sin(phi1)) / (sp.sin(phi1) * mu1 - sp.cos(phi1)),
+        (sp.sin(phi1) + sp.cos(phi1) * mu1) / (sp.cos(phi1) - sp.sin(phi1) * mu1),
+    )
 
 
 def test_A1_counterexample_is_checked():
@@ -134,17 +136,28 @@ def _mutants():
         ("k1 tan form, φ−ξ for φ+ξ", P.k_tan_printed[0].subs(xi1, -xi1), P.k_mu_printed[0]),
         ("k2 μ form, sign of s/2 term", P.k_mu_printed[1] - D * s, P.k_tan_printed[1]),
         ("k3 μ form, x1 for x2", P.k_mu_printed[2].subs(x2, x1), P.k_tan_printed[2]),
-        ("k4 index swap (contact 1 data)", P.k_tan_printed[3],
-         P.k_tan_printed[3].subs({phi2: phi1, xi2: xi1})),
-        ("V1, sign of y tan", (-D / 2 - y * sp.tan(phi1 + xi1)) * s - P.C_printed[0] * c,
-         P.k_tan_printed[0]),
-        ("C2 with x2 for x1", P.S_printed[1] * s - x2 * sp.tan(phi2 + xi2) * c,
-         P.k_tan_printed[1]),
-        ("Thales with radius |V|", (((sp.Symbol("a") * s) * s - sp.Symbol("a") / 2) ** 2
-                                    + (sp.Symbol("a") * s * c) ** 2), sp.Symbol("a") ** 2),
+        (
+            "k4 index swap (contact 1 data)",
+            P.k_tan_printed[3],
+            P.k_tan_printed[3].subs({phi2: phi1, xi2: xi1}),
+        ),
+        (
+            "V1, sign of y tan",
+            (-D / 2 - y * sp.tan(phi1 + xi1)) * s - P.C_printed[0] * c,
+            P.k_tan_printed[0],
+        ),
+        ("C2 with x2 for x1", P.S_printed[1] * s - x2 * sp.tan(phi2 + xi2) * c, P.k_tan_printed[1]),
+        (
+            "Thales with radius |V|",
+            (((sp.Symbol("a") * s) * s - sp.Symbol("a") / 2) ** 2 + (sp.Symbol("a") * s * c) ** 2),
+            sp.Symbol("a") ** 2,
+        ),
         ("A6 without π", sp.tan(phi1 + xi1), -sp.tan(phi1 + xi1)),
-        ("A2 mixing contacts", P.F_N_printed[0] ** 2 + P.F_N_printed[3] ** 2,
-         (F_e / D) ** 2 + P.F_N_printed[1] ** 2 - P.F_N_printed[0] ** 2),
+        (
+            "A2 mixing contacts",
+            P.F_N_printed[0] ** 2 + P.F_N_printed[3] ** 2,
+            (F_e / D) ** 2 + P.F_N_printed[1] ** 2 - P.F_N_printed[0] ** 2,
+        ),
     ]
 
 
@@ -194,8 +207,11 @@ def test_fig8_mutation_is_refuted():
 def test_fig8_classification_on_table1():
     # §4.2: case (a) V3 left, V4 right; (b) the reverse; (c) both right.  Independently:
     # O_M inside cone 1 iff φ1 − ξ1 < α = atan((x1 + x2)/(2y)).
-    for name, inside1, inside2 in (("table1a", True, True), ("table1b", False, False),
-                                   ("table1c", False, True)):
+    for name, inside1, inside2 in (
+        ("table1a", True, True),
+        ("table1b", False, False),
+        ("table1c", False, True),
+    ):
         g = Grasp.preset(name)
         alpha = sp.atan((g.x1 + g.x2) / (2 * g.y))
         assert bool(g.phi1 - g.xi1 < alpha) is inside1
@@ -236,8 +252,9 @@ def test_certify_symbolic_construction():
 # -- numerical cross-check -----------------------------------------------------
 def test_linprog_matches_by_hand_table1a():
     # Table I(a) at θ = 0: k1 = −C1 = 2 (V1 = (−3, −2) by hand) is the largest
-    assert k_linprog(2, 2, 1, float(sp.pi / 2), float(sp.pi / 2), 1.0, 1.2, 0.0) == \
-        pytest.approx(2.0, abs=1e-9)
+    assert k_linprog(2, 2, 1, float(sp.pi / 2), float(sp.pi / 2), 1.0, 1.2, 0.0) == pytest.approx(
+        2.0, abs=1e-9
+    )
 
 
 def test_crosscheck_small(capsys):

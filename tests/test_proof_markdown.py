@@ -31,8 +31,13 @@ def render(md: str) -> str:
     from mdit_py_plugins.deflist import deflist_plugin
     from mdit_py_plugins.dollarmath import dollarmath_plugin
 
-    return (markdown_it.MarkdownIt("commonmark").enable("table")
-            .use(dollarmath_plugin).use(deflist_plugin).render(md))
+    return (
+        markdown_it.MarkdownIt("commonmark")
+        .enable("table")
+        .use(dollarmath_plugin)
+        .use(deflist_plugin)
+        .render(md)
+    )
 
 
 def text_of(html: str) -> str:
@@ -44,8 +49,12 @@ def reports() -> list:
     ids = ("s5-V1V2-printed", "s5-V1V2-corrected", "s5-collinear-12", "eq5")
     rs = run_catalogue([c for c in CLAIMS if c.id in ids], quiet=True)
     # a statement with every Markdown special character
-    return [*rs, dataclasses.replace(rs[-1], claim=dataclasses.replace(
-        rs[-1].claim, id="hostile", statement=HOSTILE))]
+    return [
+        *rs,
+        dataclasses.replace(
+            rs[-1], claim=dataclasses.replace(rs[-1].claim, id="hostile", statement=HOSTILE)
+        ),
+    ]
 
 
 def test_verify_report_is_escaped_with_math(reports: list) -> None:
@@ -58,8 +67,7 @@ def test_verify_report_is_escaped_with_math(reports: list) -> None:
     math = re.findall(r'<span class="math inline">(.*?)</span>', html)
     assert r"\xi_{1} = \frac{5 \pi}{12}" in math and r"\phi_{1} = \frac{17 \pi}{24}" in math
     # the condition a1**2 - 2*a1*b1 + ... != 0 (once bold) is math, and ≠
-    assert any(m.startswith("a_{1}^{2} - 2 a_{1} b_{1}") and m.endswith(r"\ne 0")
-               for m in math)
+    assert any(m.startswith("a_{1}^{2} - 2 a_{1} b_{1}") and m.endswith(r"\ne 0") for m in math)
     # a condition too long to read at once is math too, one piece per term
     assert sum(m.startswith(("+ \\sin", "- \\sin")) for m in math) >= 7
 
@@ -83,8 +91,10 @@ def test_docs_have_one_errata_section() -> None:
 
 
 def test_check_report_is_escaped_with_math() -> None:
-    src = ("param a > 0\nparam b > 0\nA = point (a, 0)\nB = point (b*b, 0)\n"
-           "claim A == point (a*a, 0)\nclaim sign a*b > 0\n")
+    src = (
+        "param a > 0\nparam b > 0\nA = point (a, 0)\nB = point (b*b, 0)\n"
+        "claim A == point (a*a, 0)\nclaim sign a*b > 0\n"
+    )
     report = dataclasses.replace(check_program(parse(src)), file="my_*file*_.gc")
     md = check_markdown(report)
     html = render(md)

@@ -69,9 +69,11 @@ def test_mu_divisor_is_implied_by_condition_1():
 
 def test_wrong_identities_are_refuted_with_points_of_the_model():
     lhs = (sp.tan(phi1) + mu1) / (1 - sp.tan(phi1) * mu1)
-    for wrong, right in ((sp.tan(phi1 - xi1), lhs),  # sign slip
-                         (sp.sin(phi1 + xi2), sp.sin(phi1 + xi1)),  # index slip
-                         (sp.cos(phi2 - xi2), sp.cos(phi2) * sp.cos(xi2) - s1 * sp.sin(xi2))):
+    for wrong, right in (
+        (sp.tan(phi1 - xi1), lhs),  # sign slip
+        (sp.sin(phi1 + xi2), sp.sin(phi1 + xi1)),  # index slip
+        (sp.cos(phi2 - xi2), sp.cos(phi2) * sp.cos(xi2) - s1 * sp.sin(xi2)),
+    ):
         r = prove_identity(wrong, right)
         assert r.status is Status.REFUTED, (wrong, r)
         assert _violations(r.counterexample) == []
@@ -138,10 +140,20 @@ def test_sin_24_phi_is_linear_work():
 def _forge_false_identity():
     """A 'proof' of sin² − cos² = 1 from the wrong relation s² − c² − 1."""
     rel = [["1/1", [2, 0]], ["-1/1", [0, 2]], ["-1/1", [0, 0]]]
-    return {"kind": "identity", "denominators": [], "entries": [{
-        "vars": ["sin(phi1)", "cos(phi1)"], "numerator": rel, "cofactors": [[["1/1", [0, 0]]]],
-        "relations": [{"kind": "pythagoras", "angle": "phi1", "sin": 0, "cos": 1,
-                       "poly": rel}]}]}
+    return {
+        "kind": "identity",
+        "denominators": [],
+        "entries": [
+            {
+                "vars": ["sin(phi1)", "cos(phi1)"],
+                "numerator": rel,
+                "cofactors": [[["1/1", [0, 0]]]],
+                "relations": [
+                    {"kind": "pythagoras", "angle": "phi1", "sin": 0, "cos": 1, "poly": rel}
+                ],
+            }
+        ],
+    }
 
 
 def test_certificates_recheck_and_tampering_is_rejected():
@@ -187,8 +199,9 @@ def test_sign_certificates_recheck_and_a_crossing_interval_is_rejected():
     flipped["sign"] = -1
     assert not recheck(flipped)
     undeclared = copy.deepcopy(cert)  # an interval that no hypothesis states
-    undeclared["intervals"] = [iv for iv in undeclared["intervals"]
-                               if iv["form"] != {"phi1": 1, "xi1": 1}]
+    undeclared["intervals"] = [
+        iv for iv in undeclared["intervals"] if iv["form"] != {"phi1": 1, "xi1": 1}
+    ]
     assert not recheck(undeclared)
 
 
@@ -202,8 +215,7 @@ def trig_products(draw):
         terms = []
         for _ in range(draw(st.integers(1, 2))):
             angs = draw(st.lists(st.sampled_from(_ANGLES), min_size=1, max_size=3))
-            signs = draw(st.lists(st.sampled_from([1, -1]), min_size=len(angs),
-                                  max_size=len(angs)))
+            signs = draw(st.lists(st.sampled_from([1, -1]), min_size=len(angs), max_size=len(angs)))
             u = sum(s * a for s, a in zip(signs, angs))
             fn = draw(st.sampled_from([sp.sin, sp.cos]))
             terms.append(draw(st.integers(-3, 3)) * fn(u))
@@ -223,8 +235,7 @@ def test_random_true_identities_carry_certificates_that_recheck(expr):
     entry = r.certificate["entries"][0]
     if entry["numerator"]:
         bad = copy.deepcopy(r.certificate)
-        bad["entries"][0]["numerator"][0][0] = "1/7" if entry["numerator"][0][0] != "1/7" \
-            else "2/7"
+        bad["entries"][0]["numerator"][0][0] = "1/7" if entry["numerator"][0][0] != "1/7" else "2/7"
         assert not recheck(bad)
 
 

@@ -20,8 +20,8 @@ RELATIONS = [w**2 - (2 + c1 + a**2), s1**2 + c1**2 - 1, s2**2 + c2**2 - 1]
 monomials = st.tuples(*[st.integers(0, 3)] * 6)
 coeffs = st.fractions(min_value=-5, max_value=5, max_denominator=4)
 polys = st.dictionaries(monomials, coeffs, max_size=8).map(
-    lambda d: R.from_dict({m: R.domain(c.numerator, c.denominator) for m, c in d.items()
-                           if c}))
+    lambda d: R.from_dict({m: R.domain(c.numerator, c.denominator) for m, c in d.items() if c})
+)
 
 
 @settings(max_examples=60, deadline=None)

@@ -22,8 +22,13 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 def _all_of(path: Path) -> list[str] | None:
     """The literal ``__all__`` of a module's source, or None."""
     for node in ast.parse(path.read_text(encoding="utf-8")).body:
-        targets = (node.targets if isinstance(node, ast.Assign)
-                   else [node.target] if isinstance(node, ast.AnnAssign) else [])
+        targets = (
+            node.targets
+            if isinstance(node, ast.Assign)
+            else [node.target]
+            if isinstance(node, ast.AnnAssign)
+            else []
+        )
         if any(isinstance(t, ast.Name) and t.id == "__all__" for t in targets):
             try:
                 return list(ast.literal_eval(node.value))
@@ -82,7 +87,11 @@ def test_only_the_old_paths_compute_their_all() -> None:
     """A computed ``__all__`` (``list(home.__all__)``) is only the old public paths' re-export
     of their new home, which the next test checks name by name."""
     assert {m for m in COMPUTED if not MODULES.get(m)} == {
-        "graspcompass.errors", "graspcompass.limits", "graspcompass.expr", "graspcompass.inputs"}
+        "graspcompass.errors",
+        "graspcompass.limits",
+        "graspcompass.expr",
+        "graspcompass.inputs",
+    }
 
 
 @pytest.mark.parametrize("old", sorted(OLD_PATHS))
@@ -97,8 +106,14 @@ def test_the_old_public_paths_give_the_same_objects(old: str) -> None:
 
 def test_the_old_private_paths_are_gone_and_the_new_ones_work() -> None:
     """The private modules moved without a copy left behind (no second home)."""
-    for gone in ("graspcompass._cli_k", "graspcompass._world_place", "graspcompass._grasp_checks",
-                 "graspcompass._floatpath", "graspcompass._infiles", "graspcompass._output"):
+    for gone in (
+        "graspcompass._cli_k",
+        "graspcompass._world_place",
+        "graspcompass._grasp_checks",
+        "graspcompass._floatpath",
+        "graspcompass._infiles",
+        "graspcompass._output",
+    ):
         with pytest.raises(ModuleNotFoundError):
             importlib.import_module(gone)
     from graspcompass.boundary._infiles import read_bounded
@@ -131,10 +146,12 @@ def test_errors_pickle_under_their_public_path() -> None:
     from graspcompass.grasp import InvalidGraspError
     from graspcompass.world import VertexContactError
 
-    for cls, path in ((InputTooLargeError, "graspcompass.errors"),
-                      (ExpressionError, "graspcompass.expr"),
-                      (InvalidGraspError, "graspcompass.grasp"),
-                      (VertexContactError, "graspcompass.world")):
+    for cls, path in (
+        (InputTooLargeError, "graspcompass.errors"),
+        (ExpressionError, "graspcompass.expr"),
+        (InvalidGraspError, "graspcompass.grasp"),
+        (VertexContactError, "graspcompass.world"),
+    ):
         assert cls.__module__ == path
         again = pickle.loads(pickle.dumps(cls("a message")))
         assert type(again) is cls and str(again) == "a message"

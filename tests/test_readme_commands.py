@@ -36,7 +36,8 @@ README = ROOT / "README.md"
 pytestmark = pytest.mark.skipif(
     not (os.environ.get("CI") or os.environ.get("GRASPCOMPASS_README_VENV")),
     reason="minutes: set GRASPCOMPASS_README_VENV=1 (CI sets it) to run the README's commands "
-           "in a fresh virtual environment")
+    "in a fresh virtual environment",
+)
 
 
 # -- the README's commands ------------------------------------------------------------------
@@ -55,7 +56,7 @@ def readme_commands(text: str) -> list[tuple[str, list[str]]]:
 def split_comment(command: str) -> tuple[str, str]:
     """The command and its ``# comment`` (a ``#`` after two spaces)."""
     m = re.search(r"\s{2,}#\s?(.*)$", command)
-    return (command[:m.start()].strip(), m.group(1)) if m else (command.strip(), "")
+    return (command[: m.start()].strip(), m.group(1)) if m else (command.strip(), "")
 
 
 def test_readme_commands_are_found():
@@ -75,7 +76,8 @@ def _closure(requirements: list[str], extras: tuple[str, ...] = ()) -> set[str]:
         text, extra_names = todo.pop()
         req = Requirement(text)
         env_ok = req.marker is None or any(
-            req.marker.evaluate({"extra": e}) for e in (extra_names or ("",)))
+            req.marker.evaluate({"extra": e}) for e in (extra_names or ("",))
+        )
         if not env_ok:
             continue
         name = metadata.distribution(req.name).metadata["Name"].lower().replace("_", "-")
@@ -113,17 +115,28 @@ def venv(tmp_path_factory):
     deps.mkdir()
     subprocess.run([sys.executable, "-m", "venv", str(env_dir)], check=True)
     py = env_dir / "bin" / "python"
-    site = Path(subprocess.run([str(py), "-c", "import sysconfig; print(sysconfig.get_paths()"
-                                "['purelib'])"], check=True, capture_output=True,
-                               text=True).stdout.strip())
+    site = Path(
+        subprocess.run(
+            [str(py), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout.strip()
+    )
     (site / "_readme_deps.pth").write_text(str(deps) + "\n")
     build = root / "src"
-    shutil.copytree(ROOT, build, ignore=shutil.ignore_patterns(
-        ".git", "docs", "gallery", "tests", "bench", "*.egg-info", "build", "__pycache__"))
+    shutil.copytree(
+        ROOT,
+        build,
+        ignore=shutil.ignore_patterns(
+            ".git", "docs", "gallery", "tests", "bench", "*.egg-info", "build", "__pycache__"
+        ),
+    )
     (build / "docs").mkdir()  # the README's image is not needed to install
     # the build backend (setuptools >= 77) comes from the index, as for `pip install .`
-    subprocess.run([str(py), "-m", "pip", "install", "--quiet", "--no-deps", str(build)],
-                   check=True)
+    subprocess.run(
+        [str(py), "-m", "pip", "install", "--quiet", "--no-deps", str(build)], check=True
+    )
     _link(_closure(_project()["dependencies"]), deps)
     return env_dir, deps
 
@@ -133,12 +146,14 @@ def _run(env_dir: Path, command: str, cwd: Path) -> subprocess.CompletedProcess:
     env.pop("DISPLAY", None)
     env["PATH"] = f"{env_dir / 'bin'}{os.pathsep}{env.get('PATH', '')}"
     cmd, _, grep = command.partition(" | grep -E ")
-    proc = subprocess.run(cmd, shell=True, cwd=cwd, env=env, capture_output=True, text=True,
-                          timeout=900)
+    proc = subprocess.run(
+        cmd, shell=True, cwd=cwd, env=env, capture_output=True, text=True, timeout=900
+    )
     if grep:
         pattern = re.compile(grep.strip().strip('"'))
-        proc.stdout = "".join(line + "\n" for line in proc.stdout.splitlines()
-                              if pattern.search(line))
+        proc.stdout = "".join(
+            line + "\n" for line in proc.stdout.splitlines() if pattern.search(line)
+        )
     return proc
 
 

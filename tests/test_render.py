@@ -96,8 +96,11 @@ def test_each_preset_renders_and_saves(constructions, preset, tmp_path):
     from graspcompass.scene.labelling import FRAME_PT
     from graspcompass.scene.picture import INSET_PT, scene_of
 
-    extra = 0.0 if scene_of(constructions[preset]).inset is None else \
-        max(0.0, (INSET_PT - FRAME_PT) / 72.0)
+    extra = (
+        0.0
+        if scene_of(constructions[preset]).inset is None
+        else max(0.0, (INSET_PT - FRAME_PT) / 72.0)
+    )
     assert image.shape[0] == round((7.4 + extra) * 150) and image.shape[1] >= 1050
     assert image.shape[2] in (3, 4)
     assert (tmp_path / f"{preset}.svg").read_text().lstrip().startswith("<?xml")
@@ -170,8 +173,14 @@ def test_view_box_holds_the_key_points(constructions, preset):
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     S, C = paper_SC(preset)
     xs, ys, *_ = PAPER[preset]
-    pts = [(0, 0), (xs, ys), (-PAPER[preset][1], ys), *zip(S, C), *((-s, 0) for s in S),
-           *((0, -cc) for cc in C)]
+    pts = [
+        (0, 0),
+        (xs, ys),
+        (-PAPER[preset][1], ys),
+        *zip(S, C),
+        *((-s, 0) for s in S),
+        *((0, -cc) for cc in C),
+    ]
     for px, py in pts:  # X_n = (-S_n, 0) since O_M = O here; Y_n = (0, -C_n)
         assert x0 < px < x1 and y0 < py < y1
     # no more than 3 × the largest of |V_n| and the object size each way, plus margins
@@ -211,8 +220,9 @@ def test_computer_plot_radius_is_k_grasp(preset):
     xy = arts["k_grasp"][0].get_xydata()
     np.testing.assert_allclose(np.hypot(xy[:, 0], xy[:, 1]), expect, rtol=0, atol=1e-9)
     # and in the direction e(θ) = (sin θ, −cos θ), eq. (26)
-    np.testing.assert_allclose(xy, np.column_stack([expect * np.sin(theta),
-                                                    -expect * np.cos(theta)]), atol=1e-9)
+    np.testing.assert_allclose(
+        xy, np.column_stack([expect * np.sin(theta), -expect * np.cos(theta)]), atol=1e-9
+    )
 
 
 def test_computer_plot_overlay_and_components(constructions):
@@ -239,8 +249,9 @@ def test_k_plot_curves():
     S, C = paper_SC("table1c")
     for n in (1, 2, 3, 4):
         np.testing.assert_allclose(lines[n - 1].get_xdata(), np.degrees(theta))
-        np.testing.assert_allclose(lines[n - 1].get_ydata(),
-                                   S[n - 1] * np.sin(theta) - C[n - 1] * np.cos(theta), atol=1e-9)
+        np.testing.assert_allclose(
+            lines[n - 1].get_ydata(), S[n - 1] * np.sin(theta) - C[n - 1] * np.cos(theta), atol=1e-9
+        )
     np.testing.assert_allclose(lines[4].get_ydata(), paper_k_grasp("table1c", theta), atol=1e-9)
 
 
@@ -321,7 +332,9 @@ def test_import_graspcompass_does_not_import_matplotlib():
 
 def test_render_does_not_import_pyplot():
     env = {**os.environ, "PYTHONPATH": str(SRC)}
-    code = ("import graspcompass.render, sys; from graspcompass import Grasp, "
-            "internal_force_diagram as d; graspcompass.render.figure_diagram(d(Grasp.preset("
-            "'fig6'))); assert 'matplotlib.pyplot' not in sys.modules")
+    code = (
+        "import graspcompass.render, sys; from graspcompass import Grasp, "
+        "internal_force_diagram as d; graspcompass.render.figure_diagram(d(Grasp.preset("
+        "'fig6'))); assert 'matplotlib.pyplot' not in sys.modules"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, env=env)

@@ -26,7 +26,8 @@ def test_one_group_points_wedge_and_label_tex() -> None:
     assert picture.group_points is layout.group_points
     assert picture.label_tex is layout.label_tex
     assert layout.group_points([("O", (0.0, 0.0)), ("O_M", (0.0, 1e-12))], 1e-9) == [
-        (("O", "O_M"), (0.0, 0.0))]
+        (("O", "O_M"), (0.0, 0.0))
+    ]
 
 
 def test_numeric_objects_and_the_scene_are_computed_once(monkeypatch) -> None:
@@ -63,8 +64,10 @@ def test_png_svg_and_tikz_build_one_scene(monkeypatch) -> None:
 
 
 def test_scene_does_not_import_matplotlib() -> None:
-    code = ("import sys, graspcompass.scene as s; "
-            "from graspcompass import Grasp, internal_force_diagram; "
-            "s.scene_of(internal_force_diagram(Grasp.preset('fig6'))).upto(17); "
-            "assert 'matplotlib' not in sys.modules, 'matplotlib imported'")
+    code = (
+        "import sys, graspcompass.scene as s; "
+        "from graspcompass import Grasp, internal_force_diagram; "
+        "s.scene_of(internal_force_diagram(Grasp.preset('fig6'))).upto(17); "
+        "assert 'matplotlib' not in sys.modules, 'matplotlib imported'"
+    )
     subprocess.run([sys.executable, "-c", code], check=True, timeout=120)

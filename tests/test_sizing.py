@@ -55,18 +55,25 @@ def lp_squeeze(p1, p2, n1, n2, mu1, mu2, com, load):
     u = (p1 - p2) / np.linalg.norm(p1 - p2)
     r1, r2 = p1 - c, p2 - c
     # variables x = (f1x, f1y, f2x, f2y)
-    A_eq = np.array([[1, 0, 1, 0], [0, 1, 0, 1],
-                     [-r1[1], r1[0], -r2[1], r2[0]]], float)
+    A_eq = np.array([[1, 0, 1, 0], [0, 1, 0, 1], [-r1[1], r1[0], -r2[1], r2[0]]], float)
     b_eq = np.array([-f[0], -f[1], 0.0])
     rows = []
     for i, (n, t, mu) in enumerate(((n1, t1, mu1), (n2, t2, mu2))):
         for sg in (1, -1):  # sg t·f_i − μ n·f_i <= 0
             row = np.zeros(4)
-            row[2 * i:2 * i + 2] = sg * t - mu * n
+            row[2 * i : 2 * i + 2] = sg * t - mu * n
             rows.append(row)
     cost = np.concatenate([-u, u]) / 2
-    res = linprog(cost, A_ub=np.array(rows), b_ub=np.zeros(4), A_eq=A_eq, b_eq=b_eq,
-                  bounds=[(None, None)] * 4, method="highs", options=HIGHS)
+    res = linprog(
+        cost,
+        A_ub=np.array(rows),
+        b_ub=np.zeros(4),
+        A_eq=A_eq,
+        b_eq=b_eq,
+        bounds=[(None, None)] * 4,
+        method="highs",
+        options=HIGHS,
+    )
     assert res.status == 0, res.message
     return max(0.0, float(res.fun)), res.x
 
@@ -86,14 +93,17 @@ class Part:
 
     def world(self, exact: bool = False):
         conv = str if exact else float
-        return place_grasp([tuple(map(conv, self.p1)), tuple(map(conv, self.p2))],
-                           [tuple(map(conv, self.n1)), tuple(map(conv, self.n2))],
-                           mu=(conv(self.mu1), conv(self.mu2)),
-                           com=tuple(map(conv, self.com)))
+        return place_grasp(
+            [tuple(map(conv, self.p1)), tuple(map(conv, self.p2))],
+            [tuple(map(conv, self.n1)), tuple(map(conv, self.n2))],
+            mu=(conv(self.mu1), conv(self.mu2)),
+            com=tuple(map(conv, self.com)),
+        )
 
     def lp(self, load):
-        return lp_squeeze(self.p1, self.p2, self.n1, self.n2, float(self.mu1),
-                          float(self.mu2), self.com, load)
+        return lp_squeeze(
+            self.p1, self.p2, self.n1, self.n2, float(self.mu1), float(self.mu2), self.com, load
+        )
 
 
 def _unit(deg: float, inward_x: float) -> tuple[str, str]:
@@ -104,20 +114,88 @@ def _unit(deg: float, inward_x: float) -> tuple[str, str]:
 
 PARTS = [
     # the issue's worked example: jaws 100 mm apart, CoM 25 mm towards jaw A
-    Part("worked", ("0.05", "0"), ("-0.05", "0"), ("-1", "0"), ("1", "0"), "0.3", "0.3",
-         ("0.025", "0"), 1.0),
-    Part("centred", ("0.05", "0"), ("-0.05", "0"), ("-1", "0"), ("1", "0"), "0.3", "0.3",
-         ("0", "0"), 1.0),
-    Part("offset-below", ("0.04", "0.01"), ("-0.06", "0.01"), ("-1", "0"), ("1", "0"),
-         "0.4", "0.4", ("0.01", "-0.02"), 0.5, 3.0),
-    Part("unequal-friction", ("0.03", "0"), ("-0.03", "0"), ("-1", "0"), ("1", "0"),
-         "0.2", "0.6", ("-0.01", "-0.005"), 2.0, 1.5),
-    Part("tilted-jaws", ("0.04", "0"), ("-0.04", "0"), ("-0.96", "0.28"), ("0.8", "0.6"),
-         "0.8", "1", ("0.005", "-0.01"), 0.75, 2.0),
-    Part("rotated-frame", ("0.03", "0.04"), ("-0.03", "-0.04"), ("-0.6", "-0.8"),
-         ("0.6", "0.8"), "0.5", "0.35", ("0.012", "0"), 1.2, 9.80665),
-    Part("heavy-rubber", ("0.1", "0.02"), ("-0.1", "0.02"), ("-1", "0"), ("1", "0"),
-         "1.2", "1.2", ("-0.06", "-0.03"), 5.0, 0.5),
+    Part(
+        "worked",
+        ("0.05", "0"),
+        ("-0.05", "0"),
+        ("-1", "0"),
+        ("1", "0"),
+        "0.3",
+        "0.3",
+        ("0.025", "0"),
+        1.0,
+    ),
+    Part(
+        "centred",
+        ("0.05", "0"),
+        ("-0.05", "0"),
+        ("-1", "0"),
+        ("1", "0"),
+        "0.3",
+        "0.3",
+        ("0", "0"),
+        1.0,
+    ),
+    Part(
+        "offset-below",
+        ("0.04", "0.01"),
+        ("-0.06", "0.01"),
+        ("-1", "0"),
+        ("1", "0"),
+        "0.4",
+        "0.4",
+        ("0.01", "-0.02"),
+        0.5,
+        3.0,
+    ),
+    Part(
+        "unequal-friction",
+        ("0.03", "0"),
+        ("-0.03", "0"),
+        ("-1", "0"),
+        ("1", "0"),
+        "0.2",
+        "0.6",
+        ("-0.01", "-0.005"),
+        2.0,
+        1.5,
+    ),
+    Part(
+        "tilted-jaws",
+        ("0.04", "0"),
+        ("-0.04", "0"),
+        ("-0.96", "0.28"),
+        ("0.8", "0.6"),
+        "0.8",
+        "1",
+        ("0.005", "-0.01"),
+        0.75,
+        2.0,
+    ),
+    Part(
+        "rotated-frame",
+        ("0.03", "0.04"),
+        ("-0.03", "-0.04"),
+        ("-0.6", "-0.8"),
+        ("0.6", "0.8"),
+        "0.5",
+        "0.35",
+        ("0.012", "0"),
+        1.2,
+        9.80665,
+    ),
+    Part(
+        "heavy-rubber",
+        ("0.1", "0.02"),
+        ("-0.1", "0.02"),
+        ("-1", "0"),
+        ("1", "0"),
+        "1.2",
+        "1.2",
+        ("-0.06", "-0.03"),
+        5.0,
+        0.5,
+    ),
 ]
 PART_IDS = [p.name for p in PARTS]
 
@@ -219,8 +297,10 @@ def test_given_gravity_tilts_and_acceleration_vector_against_brute_force(p) -> N
     g, A = 9.80665, p.accel
     grav, a = np.array([0.3, -1.0]), np.array([0.5, 1.0])
     ghat = grav / np.linalg.norm(grav)
-    circle = np.stack([np.sin(np.radians(np.arange(0, 360, 1.0))),
-                       -np.cos(np.radians(np.arange(0, 360, 1.0)))], -1)
+    circle = np.stack(
+        [np.sin(np.radians(np.arange(0, 360, 1.0))), -np.cos(np.radians(np.arange(0, 360, 1.0)))],
+        -1,
+    )
     # (a) the given orientation, ball |a'| <= A: the worst is on the ball's rim
     s = size_gripper(wg, p.mass, gravity=tuple(grav), accel=A)
     loads = p.mass * (g * ghat + A * circle)
@@ -233,8 +313,9 @@ def test_given_gravity_tilts_and_acceleration_vector_against_brute_force(p) -> N
     s = size_gripper(wg, p.mass, gravity=tuple(grav), accel=tuple(a), tilt="25deg")
     rho = np.radians(np.linspace(-25, 25, 2001))
     w = g * ghat - a
-    rot = np.stack([np.cos(rho) * w[0] - np.sin(rho) * w[1],
-                    np.sin(rho) * w[0] + np.cos(rho) * w[1]], -1)
+    rot = np.stack(
+        [np.cos(rho) * w[0] - np.sin(rho) * w[1], np.sin(rho) * w[0] + np.cos(rho) * w[1]], -1
+    )
     brute = _model_squeeze(wg, p.mass * rot)
     assert brute.max() == pytest.approx(float(s.squeeze), rel=1e-6)
     assert brute.max() <= float(s.squeeze) * (1 + 1e-12)
@@ -242,16 +323,29 @@ def test_given_gravity_tilts_and_acceleration_vector_against_brute_force(p) -> N
     gb = e(math.radians(s.best_gravity_direction_deg))  # reached, within the tilts
     best_rho = math.atan2(ghat[0] * gb[1] - ghat[1] * gb[0], ghat @ gb)
     assert abs(best_rho) <= tilt + 1e-12
-    wb = np.array([math.cos(best_rho) * w[0] - math.sin(best_rho) * w[1],
-                   math.sin(best_rho) * w[0] + math.cos(best_rho) * w[1]])
+    wb = np.array(
+        [
+            math.cos(best_rho) * w[0] - math.sin(best_rho) * w[1],
+            math.sin(best_rho) * w[0] + math.cos(best_rho) * w[1],
+        ]
+    )
     assert _model_squeeze(wg, p.mass * wb[None])[0] == pytest.approx(s.best_squeeze, rel=1e-9)
-    assert abs(math.radians(((s.gravity_direction_deg or 0) - math.degrees(
-        math.atan2(ghat[0], -ghat[1])) + 180) % 360 - 180)) <= tilt + 1e-12
+    assert (
+        abs(
+            math.radians(
+                ((s.gravity_direction_deg or 0) - math.degrees(math.atan2(ghat[0], -ghat[1])) + 180)
+                % 360
+                - 180
+            )
+        )
+        <= tilt + 1e-12
+    )
     # (c) any orientation with a given acceleration vector: the load m(gĝ − a) turns whole
     s2 = size_gripper(wg, p.mass, gravity=tuple(grav), accel=tuple(a), tilt="180deg")
     r = max(math.hypot(float(v.x), float(v.y)) for v in wg.grasp.V)
     assert float(s2.squeeze) == pytest.approx(
-        p.mass * np.linalg.norm(w) * r / float(wg.grasp.D), rel=1e-12)
+        p.mass * np.linalg.norm(w) * r / float(wg.grasp.D), rel=1e-12
+    )
 
 
 def test_exact_and_float_paths_agree(part) -> None:
@@ -262,12 +356,12 @@ def test_exact_and_float_paths_agree(part) -> None:
         assert float(getattr(se, name)) == pytest.approx(float(getattr(s, name)), rel=1e-12)
     assert se.worst_direction_deg == pytest.approx(s.worst_direction_deg, abs=1e-9)
     assert se.best_squeeze == pytest.approx(s.best_squeeze, rel=1e-9)
-    assert (se.worst_slipping_contact, se.worst_side) == (s.worst_slipping_contact,
-                                                          s.worst_side)
+    assert (se.worst_slipping_contact, se.worst_side) == (s.worst_slipping_contact, s.worst_side)
     # the vectorised float64 path of many grasps gives the same number
     g = wg.grasp
-    many = worst_squeeze_many(*(float(v) for v in (g.x1, g.x2, g.y, g.phi1, g.phi2, g.mu1,
-                                                   g.mu2)), p.mass, accel=p.accel)
+    many = worst_squeeze_many(
+        *(float(v) for v in (g.x1, g.x2, g.y, g.phi1, g.phi2, g.mu1, g.mu2)), p.mass, accel=p.accel
+    )
     assert float(many) == pytest.approx(float(s.worst_squeeze), rel=1e-9)
 
 
@@ -280,7 +374,7 @@ def test_slipping_contact_and_way_from_the_lp(part) -> None:
     i = "AB".index(s.worst_slipping_contact)  # place_grasp names the first contact A
     n = np.array([float(v) for v in (p.n1, p.n2)[i]])
     n /= np.linalg.norm(n)
-    f = x[2 * i:2 * i + 2]
+    f = x[2 * i : 2 * i + 2]
     fn = f @ n
     ft = f - fn * n
     mu = float((p.mu1, p.mu2)[i])
@@ -324,8 +418,12 @@ def random_parts(draw):
     return tuple(map(tuple, (p1, p2, n1, n2))), (mu1, mu2), tuple(com)
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow],
-          phases=(Phase.explicit, Phase.reuse, Phase.generate))  # no shrinking: time budget
+@settings(
+    max_examples=25,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
+    phases=(Phase.explicit, Phase.reuse, Phase.generate),
+)  # no shrinking: time budget
 @given(random_parts(), st.floats(0.05, 20), st.floats(0, 20))
 def test_random_parts_against_brute_force(part, mass, A) -> None:
     (p1, p2, n1, n2), (mu1, mu2), com = part
@@ -336,20 +434,25 @@ def test_random_parts_against_brute_force(part, mass, A) -> None:
     brute = _model_squeeze(wg, loads)
     assert brute.max() <= float(s.worst_squeeze) * (1 + 1e-9)
     assert brute.max() >= float(s.worst_squeeze) * math.cos(math.radians(0.25)) * (1 - 1e-9)
-    assert float(size_gripper(wg, mass, accel=A, per="total").worst_squeeze) == \
-        pytest.approx(2 * float(s.worst_squeeze), rel=1e-15)
+    assert float(size_gripper(wg, mass, accel=A, per="total").worst_squeeze) == pytest.approx(
+        2 * float(s.worst_squeeze), rel=1e-15
+    )
     # best orientation (ball of accelerations at each): brute force over gravity directions
     gl = mass * 9.80665 * np.stack([np.sin(th), -np.cos(th)], -1)
     ring = mass * A * np.stack([np.sin(th[::8]), -np.cos(th[::8])], -1)  # every 4°
-    per_g = _model_squeeze(wg, (gl[:, None] + ring[None]).reshape(-1, 2)).reshape(
-        len(th), -1).max(axis=1)
+    per_g = (
+        _model_squeeze(wg, (gl[:, None] + ring[None]).reshape(-1, 2))
+        .reshape(len(th), -1)
+        .max(axis=1)
+    )
     r = max(math.hypot(float(v.x), float(v.y)) for v in wg.grasp.V)
     slack = mass * A * r * (1 - math.cos(math.radians(2))) / float(wg.grasp.D)
     assert s.best_squeeze <= per_g.min() * (1 + 1e-9) + slack
     # a larger μ never needs more squeeze
     more = place_grasp([p1, p2], [n1, n2], mu=(mu1 * 1.5, mu2 * 1.5), com=com)
-    assert float(size_gripper(more, mass, accel=A).worst_squeeze) <= \
-        float(s.worst_squeeze) * (1 + 1e-12)
+    assert float(size_gripper(more, mass, accel=A).worst_squeeze) <= float(s.worst_squeeze) * (
+        1 + 1e-12
+    )
 
 
 # -- inverse questions -------------------------------------------------------------------------
@@ -363,8 +466,9 @@ def test_least_mu_for_parallel_jaws_by_hand() -> None:
     hand = x / math.sqrt((F * D / (m * (9.80665 + A))) ** 2 - (D / 2) ** 2)
     assert r.mu == pytest.approx(hand, rel=1e-10) and r.mu_force_closure == 0.0
     # at that μ the squeeze is the limit; the LP agrees at the worst load
-    at = place_grasp(PARTS[0].world().contacts, PARTS[0].world().normals, mu=(r.mu, r.mu),
-                     com=(0.025, 0.0))
+    at = place_grasp(
+        PARTS[0].world().contacts, PARTS[0].world().normals, mu=(r.mu, r.mu), com=(0.025, 0.0)
+    )
     s = size_gripper(at, m, accel=A)
     assert float(s.worst_squeeze) == pytest.approx(F, rel=1e-10)
     load = m * (9.80665 + A) * e(math.radians(s.worst_direction_deg))
@@ -383,15 +487,17 @@ def test_least_mu_tilted_jaws_has_a_force_closure_floor() -> None:
     # each normal makes atan(0.28/0.96) and atan(0.6/0.8) with the line: closure needs 0.75
     assert r.mu_force_closure == pytest.approx(0.75, rel=1e-12)
     assert r.mu > 0.75
-    assert float(size_gripper(wg.grasp.replace(mu1=r.mu, mu2=r.mu), p.mass,
-                              per="total").worst_squeeze) == pytest.approx(100, rel=1e-9)
+    assert float(
+        size_gripper(wg.grasp.replace(mu1=r.mu, mu2=r.mu), p.mass, per="total").worst_squeeze
+    ) == pytest.approx(100, rel=1e-9)
 
 
 def test_force_closure_verdict() -> None:
     ok = force_closure([(1, 0), (-1, 0)], [(-1, 0), (1, 0)], mu=("0.3", "0.3"))
     assert ok.holds and ok.message.startswith("force-closure")
-    bad = force_closure([("0.04", 0), ("-0.04", 0)], [("-0.8", "0.6"), (1, 0)],
-                        mu=("0.5", "0.5"), names=("L", "R"))
+    bad = force_closure(
+        [("0.04", 0), ("-0.04", 0)], [("-0.8", "0.6"), (1, 0)], mu=("0.5", "0.5"), names=("L", "R")
+    )
     assert not bad.holds and bad.least_mu[0] == pytest.approx(0.75)
     assert "squeezing harder cannot hold this part" in bad.message and "contact L" in bad.message
     away = force_closure([(1, 0), (-1, 0)], [(1, 0), (1, 0)], mu=(1, 1))
@@ -419,24 +525,27 @@ def test_units() -> None:
         size_gripper(Grasp.preset("table1a"), 1, gravity=(0, -1), tilt="30")
 
 
-@pytest.mark.parametrize("kwargs, error, text", [
-    (dict(mass=float("nan")), NonFiniteValueError, "nan"),
-    (dict(mass="sqrt(-1)"), InputError, "not a real number"),
-    (dict(mass=1j), InputError, "mass"),
-    (dict(mass=-1), SizingError, "mass must be positive"),
-    (dict(mass="0kg"), SizingError, "mass must be positive"),
-    (dict(mass=True), WrongTypeError, "mass"),
-    (dict(mass="5lb"), UnknownUnitError, "5lb"),
-    (dict(mass=1, g=0), SizingError, "g"),
-    (dict(mass=1, safety="1/2"), SizingError, "safety factor must be at least 1"),
-    (dict(mass=1, per="both"), SizingError, "'jaw' or 'total'"),
-    (dict(mass=1, accel=-2), SizingError, "acceleration bound"),
-    (dict(mass=1, accel=(1, 2)), SizingError, "needs the gravity direction"),
-    (dict(mass=1, tilt="5deg"), SizingError, "needs the gravity direction"),
-    (dict(mass=1, gravity=(0, 0)), SizingError, "zero vector"),
-    (dict(mass=1, gravity="down"), WrongTypeError, "pair"),
-    (dict(mass="__import__('os')"), InputError, "cannot read"),
-])
+@pytest.mark.parametrize(
+    "kwargs, error, text",
+    [
+        (dict(mass=float("nan")), NonFiniteValueError, "nan"),
+        (dict(mass="sqrt(-1)"), InputError, "not a real number"),
+        (dict(mass=1j), InputError, "mass"),
+        (dict(mass=-1), SizingError, "mass must be positive"),
+        (dict(mass="0kg"), SizingError, "mass must be positive"),
+        (dict(mass=True), WrongTypeError, "mass"),
+        (dict(mass="5lb"), UnknownUnitError, "5lb"),
+        (dict(mass=1, g=0), SizingError, "g"),
+        (dict(mass=1, safety="1/2"), SizingError, "safety factor must be at least 1"),
+        (dict(mass=1, per="both"), SizingError, "'jaw' or 'total'"),
+        (dict(mass=1, accel=-2), SizingError, "acceleration bound"),
+        (dict(mass=1, accel=(1, 2)), SizingError, "needs the gravity direction"),
+        (dict(mass=1, tilt="5deg"), SizingError, "needs the gravity direction"),
+        (dict(mass=1, gravity=(0, 0)), SizingError, "zero vector"),
+        (dict(mass=1, gravity="down"), WrongTypeError, "pair"),
+        (dict(mass="__import__('os')"), InputError, "cannot read"),
+    ],
+)
 def test_hostile_input_is_refused_with_a_named_error(kwargs, error, text) -> None:
     with no_hang("size_gripper", 30), pytest.raises(error, match=text.replace("(", r"\(")):
         size_gripper(Grasp.preset("table1a"), **kwargs)

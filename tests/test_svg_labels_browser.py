@@ -47,11 +47,10 @@ def faults(panels) -> list[str]:
     bad = []
     for panel in panels:
         pts = panel["pts"]
-        centre = {p["id"]: ((p["m"][0] + p["m"][2]) / 2, (p["m"][1] + p["m"][3]) / 2)
-                  for p in pts}
+        centre = {p["id"]: ((p["m"][0] + p["m"][2]) / 2, (p["m"][1] + p["m"][3]) / 2) for p in pts}
         labelled = [p for p in pts if p["t"] is not None]
         for i, p in enumerate(labelled):
-            for q in labelled[i + 1:]:
+            for q in labelled[i + 1 :]:
                 if _overlap(p["t"], q["t"]) > 0.0:
                     bad.append(f"{panel['panel']}: label {p['id']} over label {q['id']}")
             for q in pts:
@@ -59,8 +58,11 @@ def faults(panels) -> list[str]:
                     bad.append(f"{panel['panel']}: label {p['id']} over marker {q['id']}")
             own = _dist(centre[p["id"]], p["t"])
             for q in pts:  # a marker over the label's own marker is its place too
-                if (q["id"] != p["id"] and _overlap(q["m"], p["m"]) == 0.0
-                        and _dist(centre[q["id"]], p["t"]) <= own):
+                if (
+                    q["id"] != p["id"]
+                    and _overlap(q["m"], p["m"]) == 0.0
+                    and _dist(centre[q["id"]], p["t"]) <= own
+                ):
                     bad.append(f"{panel['panel']}: label {p['id']} nearer {q['id']}")
     return bad
 
@@ -72,15 +74,24 @@ def random_grasps(count: int, seed: int = 23) -> list[Grasp]:
         phi1, phi2 = rnd.randint(25, 155), rnd.randint(25, 155)
         xi1 = rnd.randint(abs(phi1 - 90) + 3, 80)
         xi2 = rnd.randint(abs(phi2 - 90) + 3, 80)
-        out.append(Grasp(rnd.randint(15, 200) / 100, rnd.randint(15, 200) / 100,
-                         rnd.randint(0, 120) / 100, f"{phi1}*pi/180", f"{phi2}*pi/180",
-                         xi1=f"{xi1}*pi/180", xi2=f"{xi2}*pi/180"))
+        out.append(
+            Grasp(
+                rnd.randint(15, 200) / 100,
+                rnd.randint(15, 200) / 100,
+                rnd.randint(0, 120) / 100,
+                f"{phi1}*pi/180",
+                f"{phi2}*pi/180",
+                xi1=f"{xi1}*pi/180",
+                xi2=f"{xi2}*pi/180",
+            )
+        )
     return out
 
 
 def measure(page, svg: str):
-    page.set_content(f"<!doctype html><html><body style='margin:0'>{svg.split('?>', 1)[1]}"
-                     "</body></html>")
+    page.set_content(
+        f"<!doctype html><html><body style='margin:0'>{svg.split('?>', 1)[1]}</body></html>"
+    )
     return page.evaluate(MEASURE)
 
 

@@ -38,8 +38,12 @@ def _k(theta: float) -> list[float]:
     h = (x1 + x2) / 2
     t1p, t1m = math.tan(phi + xi[0]), math.tan(phi - xi[0])
     t2p, t2m = math.tan(phi + xi[1]), math.tan(phi - xi[1])
-    V = [(-h + y * t1p, x2 * t1p), (h - y * t2p, x1 * t2p), (-h + y * t1m, x2 * t1m),
-         (h - y * t2m, x1 * t2m)]
+    V = [
+        (-h + y * t1p, x2 * t1p),
+        (h - y * t2p, x1 * t2p),
+        (-h + y * t1m, x2 * t1m),
+        (h - y * t2m, x1 * t2m),
+    ]
     return [S * math.sin(theta) - C * math.cos(theta) for S, C in V]
 
 

@@ -37,8 +37,7 @@ CASES = [
 
 
 def _kind(value: object) -> str:
-    if isinstance(value, tuple) and len(value) == 4 and all(
-            isinstance(v, sp.Expr) for v in value):
+    if isinstance(value, tuple) and len(value) == 4 and all(isinstance(v, sp.Expr) for v in value):
         return "exact4"
     if isinstance(value, np.ndarray):
         return "array4" if value.shape == (4,) else "array"
@@ -48,8 +47,7 @@ def _kind(value: object) -> str:
 
 
 @pytest.mark.parametrize(("theta", "k", "k_grasp", "force"), CASES)
-def test_the_overloads_say_what_comes_back(theta: object, k: str, k_grasp: str,
-                                           force: str) -> None:
+def test_the_overloads_say_what_comes_back(theta: object, k: str, k_grasp: str, force: str) -> None:
     assert _kind(G.k(theta)) == k
     assert _kind(G.k_grasp(theta)) == k_grasp
     assert _kind(G.internal_force(theta)) == force
@@ -64,8 +62,7 @@ def test_float_results_are_plain_floats_not_sympy() -> None:
 
 
 @pytest.mark.skipif(not hasattr(typing, "get_overloads"), reason="Python 3.11")
-@pytest.mark.parametrize(("method", "count"), [("k", 3), ("k_grasp", 4),
-                                               ("internal_force", 4)])
+@pytest.mark.parametrize(("method", "count"), [("k", 3), ("k_grasp", 4), ("internal_force", 4)])
 def test_every_overload_is_covered(method: str, count: int) -> None:
     assert len(typing.get_overloads(getattr(Grasp, method))) == count
 

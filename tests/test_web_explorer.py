@@ -51,7 +51,7 @@ def test_installed_package_has_the_web_files() -> None:
 def test_page_is_one_self_contained_file(fig6: Construction) -> None:
     page = to_html(fig6, title="Fig. 6 <explorer>")
     low = page.lower()
-    assert "<script src" not in low and "<link rel=\"stylesheet\"" not in low
+    assert "<script src" not in low and '<link rel="stylesheet"' not in low
     assert "@import" not in low and "sourcemappingurl" not in low
     assert "<title>Fig. 6 &lt;explorer&gt;</title>" in page
     assert page.count("</script>") == 4  # data, JSXGraph, the labels, the explorer
@@ -127,8 +127,11 @@ def opened(browser: Any, page_path: Path) -> Iterator[tuple[Page, dict[str, floa
 def page(opened: tuple[Page, dict[str, float]]) -> Iterator[Page]:
     """The page back at its start: the Fig. 6 grasp, θ = 0, every step shown."""
     p, start = opened
-    p.js("s => { graspcompass.pause(); graspcompass.set(s); graspcompass.step(-1); "
-         "graspcompass.fit(); }", start)
+    p.js(
+        "s => { graspcompass.pause(); graspcompass.set(s); graspcompass.step(-1); "
+        "graspcompass.fit(); }",
+        start,
+    )
     p.errors.clear()
     yield p
     assert not p.errors, p.errors
@@ -166,8 +169,7 @@ def assert_matches_python(page: Page) -> Grasp:
     return g
 
 
-def test_loads_with_the_network_off(opened: tuple[Page, dict[str, float]],
-                                    page_path: Path) -> None:
+def test_loads_with_the_network_off(opened: tuple[Page, dict[str, float]], page_path: Path) -> None:
     """The page (opened offline, every other request aborted) asked for nothing but itself,
     whatever the other tests did with it before."""
     p, _ = opened
@@ -187,10 +189,15 @@ def test_start_values_are_the_closed_form(page: Page, fig6: Construction) -> Non
 def user_at(page: Page, px: float, py: float) -> tuple[float, float, float]:
     """The user coordinates under the viewport pixel (px, py) in the view now, and the
     size of a pixel in user units."""
-    return tuple(page.js("""([px, py]) => { const b = graspcompass.board;
+    return tuple(
+        page.js(
+            """([px, py]) => { const b = graspcompass.board;
         const r = b.containerObj.getBoundingClientRect();
         const c = new JXG.Coords(JXG.COORDS_BY_SCREEN, [px - r.left, py - r.top], b).usrCoords;
-        return [c[1], c[2], 1 / b.unitX]; }""", [px, py]))
+        return [c[1], c[2], 1 / b.unitX]; }""",
+            [px, py],
+        )
+    )
 
 
 def in_view(page: Page, name: str) -> bool:
@@ -238,8 +245,15 @@ def test_drag_P1_with_the_mouse(page: Page) -> None:
 
 
 def test_sliders_move_the_diagram(page: Page) -> None:
-    for name, value in (("x2", "1.3"), ("phi1", "75"), ("mu2", "0.9"), ("mu1", "1.25"),
-                        ("y", "0.8"), ("theta", "123.5"), ("phi2", "100")):
+    for name, value in (
+        ("x2", "1.3"),
+        ("phi1", "75"),
+        ("mu2", "0.9"),
+        ("mu1", "1.25"),
+        ("y", "0.8"),
+        ("theta", "123.5"),
+        ("phi2", "100"),
+    ):
         page.page.fill(f"#gc-slider-{name}", value)
     p = page.params()
     assert p["x2"] == 1.3 and p["mu2"] == 0.9 and p["y"] == 0.8
@@ -262,8 +276,10 @@ def test_step_navigator(page: Page, fig6: Construction) -> None:
     steps = fig6.steps
 
     def shown() -> tuple[str, str, str]:
-        return tuple(page.page.inner_text(s) for s in  # type: ignore[return-value]
-                     ("#gc-stepno", "#gc-caption-text", "#gc-ref"))
+        return tuple(
+            page.page.inner_text(s)
+            for s in ("#gc-stepno", "#gc-caption-text", "#gc-ref")  # type: ignore[return-value]
+        )
 
     def expect(i: int) -> None:
         s = steps[i]
@@ -321,10 +337,13 @@ def random_grasps(count: int, seed: int = 12) -> list[dict[str, float]]:
 def test_random_grasps_match_the_closed_form(page: Page) -> None:
     """The page's model (no drawing) on 40 random grasps: V_n, k_grasp and the envelope."""
     grasps = random_grasps(40)
-    got = page.js("""ps => ps.map(p => {
+    got = page.js(
+        """ps => ps.map(p => {
         const q = graspcompass.model.compute(Object.assign({theta: 0.7}, p));
         return {V: q.V, k: q.kgrasp, arcs: q.arcs.map(a => [a.n, a.theta0]), worst: q.worst.k};
-      })""", grasps)
+      })""",
+        grasps,
+    )
     for p, q in zip(grasps, got):
         g = python_grasp(p)
         V = [(float(v.x), float(v.y)) for v in g.V]
@@ -349,8 +368,9 @@ def rounded(message: str) -> str:
     """Python's message as the page shows it: each exact value "v ≈ r" as r, longer
     decimals to 4 significant digits, >= and <= as ≥ and ≤."""
     out = re.sub(r"\S+ ≈ (\S+)", r"\1", message)
-    out = re.sub(r"-?\d+\.\d{5,}(?:e[+-]?\d+)?", lambda m: f"{float(m.group()):.4g}", out,
-                 flags=re.I)
+    out = re.sub(
+        r"-?\d+\.\d{5,}(?:e[+-]?\d+)?", lambda m: f"{float(m.group()):.4g}", out, flags=re.I
+    )
     return out.replace(">=", "≥").replace("<=", "≤")
 
 
@@ -389,11 +409,24 @@ def test_invalid_grasp_shows_the_inequality(page: Page) -> None:
 def test_messages_agree_with_python_on_many_values(page: Page) -> None:
     """The page's wording of every check, against Grasp for the same floats."""
     base = dict(x1=1.0, x2=1.5, y=0.5, phi1=1.2, phi2=1.4, mu1=0.8, mu2=0.9)
-    cases = [dict(x1=-1.6), dict(x2=-1.5), dict(x1=-0.3, x2=0.2999), dict(y=-123456.7),
-             dict(y=-2e15), dict(mu1=-0.0001),
-             dict(mu2=0.0), dict(phi1=0.0), dict(phi2=3.3), dict(phi1=0.5), dict(phi1=0.3,
-             mu1=3.0), dict(phi2=2.9, mu2=0.1), dict(phi2=4.5 - math.atan(9.0), mu2=9.0),
-             dict(x1=math.nan), dict(mu2=math.inf), dict(y=-math.inf)]
+    cases = [
+        dict(x1=-1.6),
+        dict(x2=-1.5),
+        dict(x1=-0.3, x2=0.2999),
+        dict(y=-123456.7),
+        dict(y=-2e15),
+        dict(mu1=-0.0001),
+        dict(mu2=0.0),
+        dict(phi1=0.0),
+        dict(phi2=3.3),
+        dict(phi1=0.5),
+        dict(phi1=0.3, mu1=3.0),
+        dict(phi2=2.9, mu2=0.1),
+        dict(phi2=4.5 - math.atan(9.0), mu2=9.0),
+        dict(x1=math.nan),
+        dict(mu2=math.inf),
+        dict(y=-math.inf),
+    ]
     for case in cases:
         p = {**base, **case}
         got = page.js("p => graspcompass.model.validate(Object.assign({theta: 0}, p))", p)

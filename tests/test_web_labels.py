@@ -79,20 +79,24 @@ def port(browser: Any) -> Iterator[Any]:
 def _js_place(port: Any, problems: list[dict[str, Any]]) -> list[list[dict[str, Any]]]:
     return port.evaluate(
         "ps => ps.map(p => GCLabelling.place(p.anchors, p.texts, Object.assign({spec: SPEC}, "
-        "p.opts)))", problems)
+        "p.opts)))",
+        problems,
+    )
 
 
 def _py_place(p: dict[str, Any]) -> list[labelling.Placement]:
     o = p["opts"]
-    return labelling.place(p["anchors"], p["texts"],
-                           curves=[np.asarray(c, dtype=float).reshape(-1, 2) for c in
-                                   o.get("curves", [])],
-                           frame=tuple(o["frame"]) if o.get("frame") else None,
-                           avoid=[tuple(b) for b in o.get("avoid", [])],
-                           font_size=o.get("fontSize", labelling.FONT_PT),
-                           marker_size=o.get("markerSize", labelling.MARKER_PT),
-                           gap=o.get("gap", labelling.GAP_PT),
-                           obstacles=o.get("obstacles", []))
+    return labelling.place(
+        p["anchors"],
+        p["texts"],
+        curves=[np.asarray(c, dtype=float).reshape(-1, 2) for c in o.get("curves", [])],
+        frame=tuple(o["frame"]) if o.get("frame") else None,
+        avoid=[tuple(b) for b in o.get("avoid", [])],
+        font_size=o.get("fontSize", labelling.FONT_PT),
+        marker_size=o.get("markerSize", labelling.MARKER_PT),
+        gap=o.get("gap", labelling.GAP_PT),
+        obstacles=o.get("obstacles", []),
+    )
 
 
 def _same(js: list[dict[str, Any]], py: list[labelling.Placement]) -> None:
@@ -109,8 +113,15 @@ point = st.tuples(coord, coord)
 # polylines with repeated points, spikes and the odd non-finite vertex (dropped, as in Python)
 huge = st.floats(-1e300, 1e300, allow_nan=False)
 # huge vertices too: a circle near a bound of condition (1) is a huge polygon on the page
-vertex = st.one_of(point, point, point, st.just((math.nan, 0.0)), st.just((math.inf, 5.0)),
-                   st.tuples(huge, coord), st.tuples(coord, huge))
+vertex = st.one_of(
+    point,
+    point,
+    point,
+    st.just((math.nan, 0.0)),
+    st.just((math.inf, 5.0)),
+    st.tuples(huge, coord),
+    st.tuples(coord, huge),
+)
 
 
 @st.composite
@@ -120,49 +131,71 @@ def problems(draw) -> dict[str, Any]:
     if n > 2 and draw(st.booleans()):  # coincident and near-coincident points
         anchors[1] = anchors[0]
         anchors[2] = (anchors[0][0] + 1e-9, anchors[0][1])
-    texts = ["$" + " = ".join(draw(st.lists(st.sampled_from(NAMES), min_size=1, max_size=3)))
-             + "$" for _ in range(n)]
+    texts = [
+        "$" + " = ".join(draw(st.lists(st.sampled_from(NAMES), min_size=1, max_size=3))) + "$"
+        for _ in range(n)
+    ]
     curves = draw(st.lists(st.lists(vertex, min_size=0, max_size=12), max_size=5))
     if draw(st.booleans()):  # repeated vertices: zero-length segments
         curves.append([anchors[0], anchors[0], (anchors[0][0] + 30.0, anchors[0][1])])
     opts: dict[str, Any] = {
         "curves": [[list(v) for v in c] for c in curves],
         "obstacles": [list(v) for v in draw(st.lists(point, max_size=6))],
-        "frame": draw(st.one_of(st.none(), st.just([0.0, 0.0, 388.08, 388.08]),
-                                st.just([0.0, 0.0, 388.08, 250.0]))),
+        "frame": draw(
+            st.one_of(
+                st.none(), st.just([0.0, 0.0, 388.08, 388.08]), st.just([0.0, 0.0, 388.08, 250.0])
+            )
+        ),
         "avoid": [[x, y, x + 20.0, y + 10.0] for x, y in draw(st.lists(point, max_size=3))],
     }
     if draw(st.booleans()):
-        opts.update(fontSize=draw(st.sampled_from([8.0, 10.0, 14.5])),
-                    markerSize=draw(st.sampled_from([2.0, 4.0, 9.0])),
-                    gap=draw(st.sampled_from([0.0, 2.5, 6.0])))
+        opts.update(
+            fontSize=draw(st.sampled_from([8.0, 10.0, 14.5])),
+            markerSize=draw(st.sampled_from([2.0, 4.0, 9.0])),
+            gap=draw(st.sampled_from([0.0, 2.5, 6.0])),
+        )
     return {"anchors": [list(a) for a in anchors], "texts": texts, "opts": opts}
 
 
-@settings(max_examples=20, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture,
-                                  HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(
+    max_examples=20,
+    deadline=None,
+    suppress_health_check=[
+        HealthCheck.function_scoped_fixture,
+        HealthCheck.too_slow,
+        HealthCheck.data_too_large,
+    ],
+)
 @given(st.lists(problems(), min_size=1, max_size=5))
 def test_port_places_as_python(port: Any, batch: list[dict[str, Any]]) -> None:
     for js, p in zip(_js_place(port, batch), batch):
         _same(js, _py_place(p))
 
 
-@settings(max_examples=40, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
-@given(st.lists(st.lists(vertex, max_size=10), max_size=4),
-       st.one_of(st.none(), st.tuples(coord, coord).map(lambda p: [p[0], p[1], p[0] + 90,
-                                                                   p[1] + 60])))
+@settings(
+    max_examples=40,
+    deadline=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow],
+)
+@given(
+    st.lists(st.lists(vertex, max_size=10), max_size=4),
+    st.one_of(st.none(), st.tuples(coord, coord).map(lambda p: [p[0], p[1], p[0] + 90, p[1] + 60])),
+)
 def test_port_resamples_as_python(port: Any, curves: list, window: list | None) -> None:
     """The same samples of the curves, bit for bit; with a window, the same ones in it
     (without one, only curves of a sane size: a huge one has too many samples)."""
     if window is None:
         curves = [[v for v in c if max(map(abs, v)) < 1e4] for c in curves]
-    got = port.evaluate("([c, w]) => GCLabelling.resample(c, 1.5, w)",
-                        [[[list(v) for v in c] for c in curves], window])
+    got = port.evaluate(
+        "([c, w]) => GCLabelling.resample(c, 1.5, w)",
+        [[[list(v) for v in c] for c in curves], window],
+    )
     js = np.asarray(got, dtype=float).reshape(-1, 2)
-    py = labelling.resample([np.asarray(c, dtype=float).reshape(-1, 2) for c in curves], 1.5,
-                            window=tuple(window) if window else None)
+    py = labelling.resample(
+        [np.asarray(c, dtype=float).reshape(-1, 2) for c in curves],
+        1.5,
+        window=tuple(window) if window else None,
+    )
     if window is None:
         assert js.tolist() == py.tolist()
     else:
@@ -181,16 +214,28 @@ def test_port_on_a_crowd_on_a_grid(port: Any) -> None:
     anchors = [[float(x), float(y)] for x in xs for y in xs]
     curves = [[[0.0, float(y)], [388.08, float(y)]] for y in xs + 4.5]
     curves += [[[float(x) + 4.5, 0.0], [float(x) + 4.5, 388.08]] for x in xs]
-    p = {"anchors": anchors, "texts": [f"$V_{{{i}}}$" for i in range(len(anchors))],
-         "opts": {"curves": curves, "frame": [0.0, 0.0, 388.08, 388.08]}}
+    p = {
+        "anchors": anchors,
+        "texts": [f"$V_{{{i}}}$" for i in range(len(anchors))],
+        "opts": {"curves": curves, "frame": [0.0, 0.0, 388.08, 388.08]},
+    }
     (js,) = _js_place(port, [p])
     _same(js, _py_place(p))
     assert len({tuple(a["direction"]) for a in js}) > 3  # the crowd is spread, not one side
 
 
 def test_port_sizes_texts_as_python(port: Any) -> None:
-    texts = ["$O$", "$P_{1x}$", "$O = O_M = Y_4$", "$B_{12}$", "$\\theta_1$", "$worst$", "$$",
-             "$_{}$", "$a b  c$"]
+    texts = [
+        "$O$",
+        "$P_{1x}$",
+        "$O = O_M = Y_4$",
+        "$B_{12}$",
+        "$\\theta_1$",
+        "$worst$",
+        "$$",
+        "$_{}$",
+        "$a b  c$",
+    ]
     got = port.evaluate("ts => ts.map(t => GCLabelling.textSize(t, 10, SPEC))", texts)
     assert [tuple(g) for g in got] == [labelling.text_size(t, 10.0) for t in texts]
 
@@ -211,9 +256,14 @@ def _page_labels(page: Any, preset: str, step: int) -> list[tuple[tuple[str, ...
     labels = page.evaluate(
         "([p, s]) => { const box = document.getElementById('gc-preset'); box.value = p; "
         "box.dispatchEvent(new Event('change')); graspcompass.step(s); graspcompass.fit(); "
-        "return graspcompass.labels(); }", [preset, step])
-    return [(tuple(lab["names"]), tuple(lab["direction"])) for lab in labels
-            if lab["names"][0] not in ("H", "worst", "best") and lab["shown"]]
+        "return graspcompass.labels(); }",
+        [preset, step],
+    )
+    return [
+        (tuple(lab["names"]), tuple(lab["direction"]))
+        for lab in labels
+        if lab["names"][0] not in ("H", "worst", "best") and lab["shown"]
+    ]
 
 
 def test_page_labels_do_not_cover_each_other(explorer: Any) -> None:
@@ -226,10 +276,11 @@ def test_page_labels_do_not_cover_each_other(explorer: Any) -> None:
             "t.style.visibility !== 'hidden' && t.textContent.trim() && "
             "!/^[−-]?[0-9.]+$/.test(t.textContent.trim()))"  # not the ticks
             ".map(t => { const r = t.getBoundingClientRect(); "
-            "return [t.textContent, r.left, r.top, r.right, r.bottom]; })")
+            "return [t.textContent, r.left, r.top, r.right, r.bottom]; })"
+        )
         assert len(rects) >= 10, rects
         for i, a in enumerate(rects):
-            for b in rects[i + 1:]:
+            for b in rects[i + 1 :]:
                 w = min(a[3], b[3]) - max(a[1], b[1])
                 h = min(a[4], b[4]) - max(a[2], b[2])
                 assert w <= 1.0 or h <= 1.0, (preset, a, b)
@@ -243,11 +294,16 @@ def _page_vs_python(page: Any) -> None:
     got = page.evaluate("graspcompass.labels()")
     given_ = page.evaluate("graspcompass.labelInputs()")
     o = given_["opts"]
-    want = fitting.fit(given_["anchors"], given_["texts"],
-                       curves=[np.array(c, dtype=float).reshape(-1, 2) for c in o["curves"]],
-                       frame=tuple(o["frame"]), obstacles=o["obstacles"],
-                       font_size=given_["fontSize"], marker_sizes=given_["markerSizes"],
-                       optional=[True] * len(given_["texts"]))
+    want = fitting.fit(
+        given_["anchors"],
+        given_["texts"],
+        curves=[np.array(c, dtype=float).reshape(-1, 2) for c in o["curves"]],
+        frame=tuple(o["frame"]),
+        obstacles=o["obstacles"],
+        font_size=given_["fontSize"],
+        marker_sizes=given_["markerSizes"],
+        optional=[True] * len(given_["texts"]),
+    )
     paper = [g for g in got if g["names"][0] not in ("H", "worst", "best")]
     assert len(paper) == len(want)
     for a, b in zip(paper, want):
@@ -265,10 +321,19 @@ def test_page_places_as_python_after_drags_and_zooms(explorer: Any) -> None:
     for _ in range(6):
         phi = rng.uniform(1.2, 1.9, 2)
         mu = rng.uniform(0.4, 1.5, 2)
-        err = explorer.evaluate("p => graspcompass.set(p)", {
-            "x1": float(rng.uniform(0.3, 2)), "x2": float(rng.uniform(0.3, 2)),
-            "y": float(rng.uniform(0, 1)), "phi1": float(phi[0]), "phi2": float(phi[1]),
-            "mu1": float(mu[0]), "mu2": float(mu[1]), "theta": float(rng.uniform(0, 6))})
+        err = explorer.evaluate(
+            "p => graspcompass.set(p)",
+            {
+                "x1": float(rng.uniform(0.3, 2)),
+                "x2": float(rng.uniform(0.3, 2)),
+                "y": float(rng.uniform(0, 1)),
+                "phi1": float(phi[0]),
+                "phi2": float(phi[1]),
+                "mu1": float(mu[0]),
+                "mu2": float(mu[1]),
+                "theta": float(rng.uniform(0, 6)),
+            },
+        )
         if err:
             continue
         _page_vs_python(explorer)
@@ -276,8 +341,10 @@ def test_page_places_as_python_after_drags_and_zooms(explorer: Any) -> None:
     explorer.evaluate("() => { graspcompass.board.zoomIn(); }")
     explorer.wait_for_timeout(100)
     _page_vs_python(explorer)
-    explorer.evaluate("() => { const b = graspcompass.board.getBoundingBox(); "
-                      "graspcompass.board.setBoundingBox([b[0] + 0.3, b[1], b[2] + 0.3, b[3]]); }")
+    explorer.evaluate(
+        "() => { const b = graspcompass.board.getBoundingBox(); "
+        "graspcompass.board.setBoundingBox([b[0] + 0.3, b[1], b[2] + 0.3, b[3]]); }"
+    )
     explorer.wait_for_timeout(100)
     _page_vs_python(explorer)
     assert explorer.evaluate("graspcompass.labelInputs().anchors") != before
@@ -290,8 +357,10 @@ def test_page_near_a_bound_of_condition_1(explorer: Any) -> None:
     explorer.evaluate("() => { graspcompass.step(-1); graspcompass.fit(); }")
     errors = []
     for eps in (1e-3, 1e-6, 1e-9, 1e-11, 1e-13, 0.0):
-        err = explorer.evaluate("e => graspcompass.set({phi1: Math.PI / 2 - "
-                                "Math.atan(graspcompass.get('mu1')) + e})", eps)
+        err = explorer.evaluate(
+            "e => graspcompass.set({phi1: Math.PI / 2 - Math.atan(graspcompass.get('mu1')) + e})",
+            eps,
+        )
         errors.append(err)
         if err is None:
             _page_vs_python(explorer)
@@ -310,10 +379,16 @@ def _fit_problem(rnd: np.random.Generator, n: int) -> dict[str, Any]:
     names = ["O", "P1", "P2x", "X1", "Y3", "V4", "O_M", "B12", "X4", "Y2"]
     texts = ["$" + label_tex(names[i % len(names)]) + "$" for i in range(n)]
     curves = [rnd.uniform(0, 388, (int(rnd.integers(2, 6)), 2)).tolist() for _ in range(3)]
-    return {"anchors": pts.tolist(), "texts": texts,
-            "opts": {"curves": curves, "frame": [0.0, 0.0, 388.0, 388.0],
-                     "obstacles": (centre + rnd.normal(0, 10, (3, 2))).tolist(),
-                     "optional": [bool(b) for b in rnd.integers(0, 2, n)]}}
+    return {
+        "anchors": pts.tolist(),
+        "texts": texts,
+        "opts": {
+            "curves": curves,
+            "frame": [0.0, 0.0, 388.0, 388.0],
+            "obstacles": (centre + rnd.normal(0, 10, (3, 2))).tolist(),
+            "optional": [bool(b) for b in rnd.integers(0, 2, n)],
+        },
+    }
 
 
 def test_port_of_fit_gives_the_python_placement(port: Any) -> None:
@@ -325,20 +400,26 @@ def test_port_of_fit_gives_the_python_placement(port: Any) -> None:
     problems = [_fit_problem(rnd, int(rnd.integers(1, 12))) for _ in range(40)]
     got = port.evaluate(
         "([ps, sp]) => ps.map(p => GCLabelling.fit(p.anchors, p.texts, "
-        "Object.assign({fitSpec: sp}, p.opts)))", [problems, fitting.spec()])
+        "Object.assign({fitSpec: sp}, p.opts)))",
+        [problems, fitting.spec()],
+    )
     compared = 0
     for p, js in zip(problems, got):
         o = p["opts"]
-        want = fitting.fit(p["anchors"], p["texts"], curves=[np.array(c) for c in o["curves"]],
-                           frame=tuple(o["frame"]), obstacles=o["obstacles"],
-                           optional=o["optional"])
+        want = fitting.fit(
+            p["anchors"],
+            p["texts"],
+            curves=[np.array(c) for c in o["curves"]],
+            frame=tuple(o["frame"]),
+            obstacles=o["obstacles"],
+            optional=o["optional"],
+        )
         assert len(js) == len(want)
         for a, b in zip(want, js):
             assert (a is None) == (b is None)
             if a is None:
                 continue
-            assert (tuple(b["direction"]), b["leader"], b["ok"]) == (a.direction, a.leader,
-                                                                      a.ok)
+            assert (tuple(b["direction"]), b["leader"], b["ok"]) == (a.direction, a.leader, a.ok)
             assert b["box"] == pytest.approx(list(a.box), abs=1e-9)
             compared += 1
     assert compared > 100
@@ -349,8 +430,9 @@ def test_extent_port_is_the_metrics_of_the_font(port: Any) -> None:
     from graspcompass.scene import metrics
 
     texts = ["$O = O_M = Y_4$", "$P_{1x}, V_4$", "$X_2$", "$B_{12}$"]
-    got = port.evaluate("([ts, sp]) => ts.map(t => GCLabelling.extent(t, 10, sp.metrics))",
-                        [texts, fitting.spec()])
+    got = port.evaluate(
+        "([ts, sp]) => ts.map(t => GCLabelling.extent(t, 10, sp.metrics))", [texts, fitting.spec()]
+    )
     for t, g in zip(texts, got):
         assert g == pytest.approx(list(metrics.extent(t, 10.0)), abs=1e-12)
 
@@ -366,12 +448,15 @@ def test_page_labels_name_their_points_in_chromium(explorer: Any) -> None:
     for preset in PRESETS:
         explorer.evaluate(
             "p => { const box = document.getElementById('gc-preset'); box.value = p; "
-            "box.dispatchEvent(new Event('change')); graspcompass.fit(); }", preset)
+            "box.dispatchEvent(new Event('change')); graspcompass.fit(); }",
+            preset,
+        )
         c = internal_force_diagram(Grasp.preset(preset))
         steps = [s.index for s in c.steps if s.kind == "point" and s.role != "break_point"]
         for i in [*steps[2::4], len(c.steps) - 1]:
-            pts = explorer.evaluate("s => { graspcompass.step(s); "
-                                    "return graspcompass.labelRects(); }", i)
+            pts = explorer.evaluate(
+                "s => { graspcompass.step(s); return graspcompass.labelRects(); }", i
+            )
             found = faults([{"panel": f"{preset}@{i}", "pts": pts}])
             if found:
                 report[f"{preset}@{i}"] = found
@@ -379,10 +464,18 @@ def test_page_labels_name_their_points_in_chromium(explorer: Any) -> None:
     shown = 0
     for g in random_grasps(12, seed=2323):
         p = {k: float(v) for k, v in g.params.items()}
-        err = explorer.evaluate("p => { const e = graspcompass.set(p); graspcompass.fit(); "
-                                "return e; }", {"x1": p["x1"], "x2": p["x2"], "y": p["y"],
-                                                "phi1": p["phi1"], "phi2": p["phi2"],
-                                                "mu1": p["mu1"], "mu2": p["mu2"]})
+        err = explorer.evaluate(
+            "p => { const e = graspcompass.set(p); graspcompass.fit(); return e; }",
+            {
+                "x1": p["x1"],
+                "x2": p["x2"],
+                "y": p["y"],
+                "phi1": p["phi1"],
+                "phi2": p["phi2"],
+                "mu1": p["mu1"],
+                "mu2": p["mu2"],
+            },
+        )
         if err:
             continue
         pts = explorer.evaluate("graspcompass.labelRects()")
@@ -401,7 +494,9 @@ def test_page_leaves_out_few_labels(explorer: Any) -> None:
         labels = explorer.evaluate(
             "p => { const box = document.getElementById('gc-preset'); box.value = p; "
             "box.dispatchEvent(new Event('change')); graspcompass.step(-1); graspcompass.fit(); "
-            "return graspcompass.labels(); }", preset)
+            "return graspcompass.labels(); }",
+            preset,
+        )
         paper = [lab for lab in labels if lab["names"][0] not in ("H", "worst", "best")]
         assert len(paper) >= 8
         assert sum(not lab["shown"] for lab in paper) <= 2, (preset, paper)
@@ -419,9 +514,12 @@ def test_phone_layout_centre_labels_do_not_pile_up(browser: Any, tmp_path: Any) 
         page.goto(path.as_uri())
         page.wait_for_selector("body[data-ready='1']", timeout=20_000)
         for preset in PRESETS:
-            page.evaluate("p => { const box = document.getElementById('gc-preset'); "
-                          "box.value = p; box.dispatchEvent(new Event('change')); "
-                          "graspcompass.step(-1); graspcompass.fit(); }", preset)
+            page.evaluate(
+                "p => { const box = document.getElementById('gc-preset'); "
+                "box.value = p; box.dispatchEvent(new Event('change')); "
+                "graspcompass.step(-1); graspcompass.fit(); }",
+                preset,
+            )
             pts = page.evaluate("graspcompass.labelRects()")
             assert sum(q["t"] is not None for q in pts) >= 8, preset
             assert not faults([{"panel": preset, "pts": pts}])

@@ -33,8 +33,13 @@ THETAS = np.linspace(0.0, 2 * math.pi, 720, endpoint=False)
 
 def tri() -> NContactGrasp:
     """Three fingers on a circle, 120° apart, μ = 1/2 (exact)."""
-    return NContactGrasp([(1, 0, "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
-                          ("-1/2", "-sqrt(3)/2", "60deg", "1/2")])
+    return NContactGrasp(
+        [
+            (1, 0, "180deg", "1/2"),
+            ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+            ("-1/2", "-sqrt(3)/2", "60deg", "1/2"),
+        ]
+    )
 
 
 # -- without a browser --------------------------------------------------------------------------
@@ -48,17 +53,30 @@ def test_page_is_one_self_contained_file() -> None:
 
 
 def test_custom_effort_is_refused() -> None:
-    g = NContactGrasp([(1, 0, -1, 0, "1/2"), (-1, 0, 1, 0, "1/2"), (0, -1, 0, 1, "1/2")],
-                      effort=[1, 2, 3])
+    g = NContactGrasp(
+        [(1, 0, -1, 0, "1/2"), (-1, 0, 1, 0, "1/2"), (0, -1, 0, 1, "1/2")], effort=[1, 2, 3]
+    )
     with pytest.raises(ValueError, match="named efforts only"):
         to_ncontact_html(g)
 
 
 def test_export_command_writes_the_page(tmp_path: Path) -> None:
     out = tmp_path / "three.html"
-    rc = main(["export", "--contact=1,0,180deg,1/2", "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
-               "--contact=-1/2,-sqrt(3)/2,60deg,1/2", "--effort", "max-normal", "--format",
-               "html", "-o", str(out), "-q"])
+    rc = main(
+        [
+            "export",
+            "--contact=1,0,180deg,1/2",
+            "--contact=-1/2,sqrt(3)/2,-60deg,1/2",
+            "--contact=-1/2,-sqrt(3)/2,60deg,1/2",
+            "--effort",
+            "max-normal",
+            "--format",
+            "html",
+            "-o",
+            str(out),
+            "-q",
+        ]
+    )
     assert rc == 0
     text = out.read_text("utf-8")
     assert '"effort": "max-normal"' in text and "window.graspcompass" in text
@@ -69,8 +87,19 @@ def test_export_command_writes_the_page(tmp_path: Path) -> None:
 
 
 def test_export_step_is_refused_for_the_page(tmp_path: Path, capsys: Any) -> None:
-    rc = main(["export", "--contact=1,0,180deg,1/2", "--contact=-1,0,0deg,1/2", "--format",
-               "html", "--step", "3", "-o", str(tmp_path / "x.html")])
+    rc = main(
+        [
+            "export",
+            "--contact=1,0,180deg,1/2",
+            "--contact=-1,0,0deg,1/2",
+            "--format",
+            "html",
+            "--step",
+            "3",
+            "-o",
+            str(tmp_path / "x.html"),
+        ]
+    )
     err = capsys.readouterr().err
     assert rc == 2 and "--step does not apply" in err and len(err.strip().splitlines()) == 1
     assert not (tmp_path / "x.html").exists()
@@ -125,16 +154,24 @@ def random_state(rng: random.Random, n: int, effort: str, closure: bool) -> dict
     for _ in range(n):
         a = start + rng.uniform(0, span)
         r = rng.uniform(0.8, 1.2)
-        contacts.append({"x": cx + r * math.cos(a), "y": cy + r * math.sin(a),
-                         "angle": a + math.pi + rng.uniform(-0.5, 0.5),
-                         "mu": rng.uniform(0.15, 0.8)})
+        contacts.append(
+            {
+                "x": cx + r * math.cos(a),
+                "y": cy + r * math.sin(a),
+                "angle": a + math.pi + rng.uniform(-0.5, 0.5),
+                "mu": rng.uniform(0.15, 0.8),
+            }
+        )
     com = [rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2)] if rng.random() < 0.3 else [0.0, 0.0]
     return {"contacts": contacts, "com": com, "effort": effort, "theta": 0.0}
 
 
 def python_of(state: dict[str, Any]) -> NContactGrasp:
-    return NContactGrasp([(c["x"], c["y"], c["angle"], c["mu"]) for c in state["contacts"]],
-                         com=tuple(float(v) for v in state["com"]), effort=state["effort"])
+    return NContactGrasp(
+        [(c["x"], c["y"], c["angle"], c["mu"]) for c in state["contacts"]],
+        com=tuple(float(v) for v in state["com"]),
+        effort=state["effort"],
+    )
 
 
 JS_RESULT = """s => { try { const Q = graspcompass.compute(s);
@@ -172,8 +209,9 @@ def compare(page: Any, state: dict[str, Any]) -> str:
         return "no arc"
     assert "error" not in got, (got, state)
     same_points(got["vertices"], Q.float_vertices(), "vertices")
-    same_points(got["redundant"], np.array([c.floats() for c in Q.redundant]).reshape(-1, 2),
-                "redundant")
+    same_points(
+        got["redundant"], np.array([c.floats() for c in Q.redundant]).reshape(-1, 2), "redundant"
+    )
     assert got["closure"] == g.force_closure
     lo, hi = Q.arc()
     assert abs(got["arc"][0] - lo) <= TOL and abs(got["arc"][1] - hi) <= TOL, (got["arc"], lo, hi)
@@ -191,10 +229,15 @@ def compare(page: Any, state: dict[str, Any]) -> str:
 def test_loads_offline_and_starts_with_pythons_q(tri_page: Any) -> None:
     assert tri_page.asked == [] and tri_page.errors == []
     assert tri_page.evaluate("graspcompass.error()") is None
-    g = NContactGrasp([(c["x"], c["y"], c["angle"], c["mu"])
-                       for c in tri_page.evaluate("graspcompass.state()")["contacts"]])
-    same_points(tri_page.evaluate("graspcompass.vertices()"), g.polygon().float_vertices(),
-                "vertices")
+    g = NContactGrasp(
+        [
+            (c["x"], c["y"], c["angle"], c["mu"])
+            for c in tri_page.evaluate("graspcompass.state()")["contacts"]
+        ]
+    )
+    same_points(
+        tri_page.evaluate("graspcompass.vertices()"), g.polygon().float_vertices(), "vertices"
+    )
     # the exact Q of the regular three-finger grasp: six vertices, |q| all equal
     V = tri().polygon().float_vertices()
     assert len(V) == 6 and np.ptp(np.hypot(V[:, 0], V[:, 1])) < 1e-12
@@ -260,8 +303,9 @@ def test_dragging_a_contact_and_a_normal_redraws_q(tri_page: Any) -> None:
 def test_invalid_drag_keeps_the_last_drawing_and_says_why(browser: Any, tmp_path: Path) -> None:
     """μ = 0: P1's and P3's pushes have torques of opposite signs about O only while P3 is
     left of O; dragged right of it, no load but a horizontal one can be held."""
-    g = NContactGrasp([(1.0, 0.3, math.pi, 0.0), (-1.0, 0.0, 0.0, 0.0),
-                       (-0.5, -1.0, math.pi / 2, 0.0)])
+    g = NContactGrasp(
+        [(1.0, 0.3, math.pi, 0.0), (-1.0, 0.0, 0.0, 0.0), (-0.5, -1.0, math.pi / 2, 0.0)]
+    )
     assert g.arc() is not None
     path = tmp_path / "bad.html"
     path.write_text(to_ncontact_html(g), "utf-8")
@@ -334,6 +378,7 @@ def test_construction_is_drawn_and_follows_a_drag(tri_page: Any) -> None:
     for k, q2 in enumerate(after):
         c2 = p.evaluate("k => graspcompass.construct(k)", k)
         assert c2 is not None and math.dist(c2["q"], q2) <= 1e-9 * (1 + math.hypot(*q2))
-    p.evaluate("x => { graspcompass.set({contacts: [{x}]}); graspcompass.showConstruction(null); }",
-               x0)
+    p.evaluate(
+        "x => { graspcompass.set({contacts: [{x}]}); graspcompass.showConstruction(null); }", x0
+    )
     assert p.errors == []

@@ -63,16 +63,34 @@ def fresh(desk: Any) -> Any:
 
 
 def test_table_exact_zero_is_0_and_every_value_has_the_stated_precision(fresh: Any) -> None:
-    cells = fresh.evaluate("() => Object.fromEntries([...document.querySelectorAll("
-                           "'#gc-info [data-r]')].map(e => [e.dataset.r, e.textContent]))")
+    cells = fresh.evaluate(
+        "() => Object.fromEntries([...document.querySelectorAll("
+        "'#gc-info [data-r]')].map(e => [e.dataset.r, e.textContent]))"
+    )
     # Fig. 6: φ2 = ξ2 = π/3, so C4 = x1 tan(φ2 − ξ2) = 0 (eq. (39)) and k4(0) = −C4 = 0 (32)
     assert cells["C4"] == "0" and cells["k4"] == "0"
     # S1 = −(x1 + x2)/2 + y tan(φ1 + ξ1) = −√3/2 + tan(105°)/2 (eq. (28)), to 3 decimals
     s1 = -math.sqrt(3) / 2 + math.tan(math.radians(105)) / 2
     assert cells["S1"] == f"{s1:.3f}".replace("-", "−")
     assert "3 decimals" in cells["prec"]
-    for key in ("S1", "S2", "S3", "S4", "C1", "C2", "C3", "k1", "k2", "k3", "kgrasp", "wk",
-                "bk", "Fint", "wF", "bF"):
+    for key in (
+        "S1",
+        "S2",
+        "S3",
+        "S4",
+        "C1",
+        "C2",
+        "C3",
+        "k1",
+        "k2",
+        "k3",
+        "kgrasp",
+        "wk",
+        "bk",
+        "Fint",
+        "wF",
+        "bF",
+    ):
         assert re.fullmatch(r"0|−?\d+\.\d{3}", cells[key]), (key, cells[key])
     for key in ("theta", "wtheta", "btheta"):
         assert re.fullmatch(r"(0|\d+\.\d)°", cells[key]), (key, cells[key])
@@ -83,28 +101,33 @@ def test_O_M_has_a_capital_subscript_M(fresh: Any) -> None:
     # at step 12, O = O_M made and named (the final view of Fig. 6 leaves the crowded
     # centre's label out: no place keeps the rules there until one zooms in)
     fresh.evaluate("() => graspcompass.step(12)")
-    texts = fresh.evaluate("() => [...document.querySelectorAll('#gc-board text')]"
-                           ".filter(t => t.querySelector('tspan') && "
-                           "t.getAttribute('display') !== 'none' && "
-                           "t.style.visibility !== 'hidden')"
-                           ".map(t => [t.textContent, [...t.querySelectorAll('tspan')]"
-                           ".map(s => [s.textContent, s.getAttribute('baseline-shift')])])")
+    texts = fresh.evaluate(
+        "() => [...document.querySelectorAll('#gc-board text')]"
+        ".filter(t => t.querySelector('tspan') && "
+        "t.getAttribute('display') !== 'none' && "
+        "t.style.visibility !== 'hidden')"
+        ".map(t => [t.textContent, [...t.querySelectorAll('tspan')]"
+        ".map(s => [s.textContent, s.getAttribute('baseline-shift')])])"
+    )
     assert texts, "no label with a subscript"
     # every subscript a smaller, lowered <tspan> (the metrics the labels are placed with),
     # none a Unicode subscript glyph
     for text, subs in texts:
         assert not set(text) & set("ₘₓ₀₁₂₃₄₅₆₇₈₉"), text
         assert subs and all(float(b.rstrip("px").rstrip("em")) < 0 for _, b in subs), subs
-    assert any("OM" in text and ["M"] == [t for t, _ in subs if t == "M"]
-               for text, subs in texts), texts
+    assert any(
+        "OM" in text and ["M"] == [t for t, _ in subs if t == "M"] for text, subs in texts
+    ), texts
     board = fresh.evaluate("() => document.getElementById('gc-board').textContent")
     assert "ₘ" not in board
     fresh.evaluate("() => graspcompass.step(-1)")
 
 
 def test_buttons_use_svg_icons_not_rare_glyphs(fresh: Any) -> None:
-    buttons = fresh.evaluate("() => [...document.querySelectorAll('.gc-buttons button')]"
-                             ".map(b => [b.textContent.trim(), !!b.querySelector('svg')])")
+    buttons = fresh.evaluate(
+        "() => [...document.querySelectorAll('.gc-buttons button')]"
+        ".map(b => [b.textContent.trim(), !!b.querySelector('svg')])"
+    )
     assert len(buttons) == 6
     for text, _ in buttons:
         assert re.fullmatch(r"[a-z ]+", text), text  # letters every font has
@@ -127,13 +150,15 @@ def test_no_debug_line(fresh: Any) -> None:
 
 
 def _rects(page: Any, selectors: list[str]) -> list[dict[str, float]]:
-    return page.evaluate("ss => ss.map(s => { const r = document.querySelector(s)"
-                         ".getBoundingClientRect(); return {s, left: r.left, right: r.right, "
-                         "top: r.top, bottom: r.bottom, height: r.height}; })", selectors)
+    return page.evaluate(
+        "ss => ss.map(s => { const r = document.querySelector(s)"
+        ".getBoundingClientRect(); return {s, left: r.left, right: r.right, "
+        "top: r.top, bottom: r.bottom, height: r.height}; })",
+        selectors,
+    )
 
 
-CONTROLS = ["#gc-first", "#gc-prev", "#gc-next", "#gc-last", "#gc-play", "#gc-fit",
-            "#gc-caption"]
+CONTROLS = ["#gc-first", "#gc-prev", "#gc-next", "#gc-last", "#gc-play", "#gc-fit", "#gc-caption"]
 
 
 def test_controls_above_the_fold_at_1280x800(fresh: Any) -> None:
@@ -151,8 +176,10 @@ def test_phone_layout_390x844(browser: Any, page_path: Path) -> None:
         board = _rects(phone, ["#gc-board"])[0]
         assert board["right"] <= 390 and board["top"] < 400 and board["bottom"] <= 844
         phone.click("#gc-prev")  # tappable: the step goes back
-        assert phone.evaluate("graspcompass.get('step')") == len(
-            internal_force_diagram(Grasp.preset("fig6")).steps) - 2
+        assert (
+            phone.evaluate("graspcompass.get('step')")
+            == len(internal_force_diagram(Grasp.preset("fig6")).steps) - 2
+        )
         assert not phone.errors, phone.errors
     finally:
         phone.close()

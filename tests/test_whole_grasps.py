@@ -78,8 +78,7 @@ def whole_grasp(draw) -> dict[str, str]:
         v = draw(st.integers(low, 250)) / 100
         return f"{v:.{digits}f}" if f"{v:.{digits}f}" != f"{0:.{digits}f}" or low == 0 else "0.1"
 
-    params = {"x1": length(10), "x2": length(10),
-              "y": draw(st.sampled_from(("0", length(0))))}
+    params = {"x1": length(10), "x2": length(10), "y": draw(st.sampled_from(("0", length(0))))}
     for i in (1, 2):
         phi = draw(typed_angle(Fraction(1), Fraction(180)))
         lo = abs(_degrees(phi) - 90) + 1  # condition (1): |φ - π/2| < ξ < π/2, margin 1°
@@ -90,13 +89,18 @@ def whole_grasp(draw) -> dict[str, str]:
 
 def _paper_V(p: dict[str, str]) -> list[tuple[mpmath.mpf, mpmath.mpf]]:
     """V_n = (S_n, C_n) of eqs. (28)-(39) at 50 digits, from the typed text."""
-    x1, x2, y = (mpmath.mpf(Fraction(p[k]).numerator) / Fraction(p[k]).denominator
-                 for k in ("x1", "x2", "y"))
+    x1, x2, y = (
+        mpmath.mpf(Fraction(p[k]).numerator) / Fraction(p[k]).denominator for k in ("x1", "x2", "y")
+    )
     f1, f2, k1, k2 = (_mp(_degrees(p[k])) for k in ("phi1", "phi2", "xi1", "xi2"))
     t = [mpmath.tan(f1 + k1), mpmath.tan(f2 + k2), mpmath.tan(f1 - k1), mpmath.tan(f2 - k2)]
     h = (x1 + x2) / 2
-    return [(-h + y * t[0], x2 * t[0]), (h - y * t[1], x1 * t[1]),
-            (-h + y * t[2], x2 * t[2]), (h - y * t[3], x1 * t[3])]
+    return [
+        (-h + y * t[0], x2 * t[0]),
+        (h - y * t[1], x1 * t[1]),
+        (-h + y * t[2], x2 * t[2]),
+        (h - y * t[3], x1 * t[3]),
+    ]
 
 
 def _mpv(e: sp.Expr) -> mpmath.mpf:
@@ -147,12 +151,9 @@ def _check(p: dict[str, str], exact_V: bool = True) -> None:
 #: the grasps of the issue and the slowest ones found by bench/bench_whole_grasps.py
 ISSUE_GRASPS = [
     dict(x1="1.2", x2="0.3", y="0.4", phi1="61deg", phi2="118deg", xi1="67deg", xi2="49deg"),
-    dict(x1="1.5", x2="0.7", y="1.18", phi1="162.0deg", phi2="6.3deg", xi1="75deg",
-         xi2="86.9deg"),
-    dict(x1="0.4", x2="1.4", y="0.2", phi1="117.7deg", phi2="1*pi/12", xi1="72.9deg",
-         xi2="89deg"),
-    dict(x1="2.05", x2="0.3", y="0", phi1="3*pi/7", phi2="108.5deg", xi1="7*pi/18",
-         xi2="60.5deg"),
+    dict(x1="1.5", x2="0.7", y="1.18", phi1="162.0deg", phi2="6.3deg", xi1="75deg", xi2="86.9deg"),
+    dict(x1="0.4", x2="1.4", y="0.2", phi1="117.7deg", phi2="1*pi/12", xi1="72.9deg", xi2="89deg"),
+    dict(x1="2.05", x2="0.3", y="0", phi1="3*pi/7", phi2="108.5deg", xi1="7*pi/18", xi2="60.5deg"),
 ]
 
 
@@ -161,8 +162,11 @@ def test_issue_grasps_are_exact(params):
     _check(params)
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow,
-                                                                 HealthCheck.filter_too_much])
+@settings(
+    max_examples=12,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
 @given(whole_grasp())
 def test_whole_typed_grasps_match_the_closed_form_and_the_lp(params):
     _check(params)
@@ -174,8 +178,13 @@ def test_steps_of_a_whole_typed_grasp_from_the_command_line(tmp_path):
     import sys
 
     args = [f"--{k}={v}" for k, v in ISSUE_GRASPS[0].items()]
-    out = subprocess.run([sys.executable, "-m", "graspcompass", "steps", *args],
-                         capture_output=True, text=True, timeout=120, check=True).stdout
+    out = subprocess.run(
+        [sys.executable, "-m", "graspcompass", "steps", *args],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=True,
+    ).stdout
     rows = {line.split()[1]: line for line in out.splitlines() if line[:2].strip().isdigit()}
     assert {"V1", "V2", "V3", "V4", "B12", "B34", "envelope"} <= set(rows)
     assert "cos(29*pi/180)" in rows["V1"] or "sin(29*pi/180)" in rows["V1"]  # exact, not float

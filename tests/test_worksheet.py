@@ -37,8 +37,9 @@ V_STEPS = ("X{n}", "perp{n}", "Y{n}", "OMX{n}", "OY{n}", "V{n}")
 ASYM = dict(x1=2.0, x2=1.0, y=0.5, phi1=math.pi / 3, phi2=math.pi / 2, mu1=1.0, mu2=0.8)
 
 
-def closed_form_V(x1: float, x2: float, y: float, phi1: float, phi2: float, mu1: float,
-                  mu2: float) -> list[tuple[float, float]]:
+def closed_form_V(
+    x1: float, x2: float, y: float, phi1: float, phi2: float, mu1: float, mu2: float
+) -> list[tuple[float, float]]:
     """V_n = (S_n, C_n), eqs. (28)-(30), (33)-(39), with tan ξ_i = μ_i (eq. (22))."""
     xi1, xi2 = math.atan(mu1), math.atan(mu2)
     h = (x1 + x2) / 2
@@ -49,8 +50,15 @@ def closed_form_V(x1: float, x2: float, y: float, phi1: float, phi2: float, mu1:
     return list(zip(S, C))
 
 
-FIG6 = dict(x1=math.sqrt(3) / 2, x2=math.sqrt(3) / 2, y=0.5, phi1=math.pi / 3,
-            phi2=math.pi / 3, mu1=1.0, mu2=math.sqrt(3))
+FIG6 = dict(
+    x1=math.sqrt(3) / 2,
+    x2=math.sqrt(3) / 2,
+    y=0.5,
+    phi1=math.pi / 3,
+    phi2=math.pi / 3,
+    mu1=1.0,
+    mu2=math.sqrt(3),
+)
 
 
 # -- reading the PDF ---------------------------------------------------------------------------
@@ -79,8 +87,11 @@ def pdf_segments(data: bytes) -> list[tuple[float, float, float, float]]:
 
 def horizontal_bars(data: bytes, length_mm: float) -> list[tuple[float, ...]]:
     want = length_mm / 25.4 * 72
-    return [s for s in pdf_segments(data)
-            if abs(s[1] - s[3]) < 1e-6 and abs(abs(s[2] - s[0]) - want) < 1e-3]
+    return [
+        s
+        for s in pdf_segments(data)
+        if abs(s[1] - s[3]) < 1e-6 and abs(abs(s[2] - s[0]) - want) < 1e-3
+    ]
 
 
 def mm_per_unit(ws: Worksheet, page: int) -> tuple[float, float]:
@@ -96,7 +107,7 @@ def marker_mm(ws: Worksheet, page: int, name: str) -> tuple[float, float]:
     """Where the marker of point ``name`` is drawn on ``page``, mm from the lower left."""
     fig, ax = ws.figures[page], ws.axes[page]
     line = ws.artists[page][name][0]
-    (x, y), = line.get_xydata()
+    ((x, y),) = line.get_xydata()
     px, py = ax.transData.transform((x, y))
     return px / fig.dpi * 25.4, py / fig.dpi * 25.4
 
@@ -165,8 +176,9 @@ def test_both_pages_put_the_drawing_in_the_same_place(fig6_all: tuple[Worksheet,
 
 # -- the solution against the closed form -----------------------------------------------------
 @pytest.mark.parametrize("n", [1, 2, 3, 4])
-def test_solution_page_puts_V_n_at_the_closed_form(fig6_all: tuple[Worksheet, bytes],
-                                                   n: int) -> None:
+def test_solution_page_puts_V_n_at_the_closed_form(
+    fig6_all: tuple[Worksheet, bytes], n: int
+) -> None:
     ws, _ = fig6_all
     S, C = closed_form_V(**FIG6)[n - 1]
     ox, oy = marker_mm(ws, 1, "O")
@@ -212,14 +224,12 @@ def test_instructions_of_one_V_n_in_protocol_order(which: str) -> None:
     assert _in_order(steps)
     want = [c.step(s.format(n=n)).index for s in V_STEPS]
     assert [k for k in steps if k in want] == want
-    assert {c.step(s).index for s in ("P1x", "P2x", "O_M", f"side{n}", f"circle{n}")} <= set(
-        steps)
+    assert {c.step(s).index for s in ("P1x", "P2x", "O_M", f"side{n}", f"circle{n}")} <= set(steps)
     for i in ins:  # each carries the paper's reference of its step
         assert c.step(i.names[-1]).ref in i.text
 
 
-def test_instructions_of_all_mention_every_step_in_order(fig6_all: tuple[Worksheet, bytes]
-                                                         ) -> None:
+def test_instructions_of_all_mention_every_step_in_order(fig6_all: tuple[Worksheet, bytes]) -> None:
     ws, _ = fig6_all
     c = internal_force_diagram(Grasp.preset("fig6"))
     steps = [k for i in ws.instructions for k in i.steps]
@@ -253,8 +263,9 @@ def _check_text(ws: Worksheet, page: int) -> None:
         assert not bb.overlaps(drawing), t.get_text()
 
 
-def test_text_stays_on_the_page_and_off_the_drawing(fig6_all: tuple[Worksheet, bytes],
-                                                    asym_v3: Worksheet) -> None:
+def test_text_stays_on_the_page_and_off_the_drawing(
+    fig6_all: tuple[Worksheet, bytes], asym_v3: Worksheet
+) -> None:
     ws, _ = fig6_all
     _check_text(ws, 0)
     _check_text(ws, 1)
@@ -275,8 +286,15 @@ def test_page_1_shows_the_givens_only(fig6_all: tuple[Worksheet, bytes]) -> None
 def test_given_levels_and_names() -> None:
     c = internal_force_diagram(Grasp.preset("fig6"))
     sel = selected_names(c, "V2")
-    assert given_names(sel, "perpendiculars")[5:] == ("side2", "P1x", "P2x", "O_M", "X2",
-                                                      "perp2", "Y2")
+    assert given_names(sel, "perpendiculars")[5:] == (
+        "side2",
+        "P1x",
+        "P2x",
+        "O_M",
+        "X2",
+        "perp2",
+        "Y2",
+    )
     assert given_names(sel, "grasp") == ("O", "x-axis", "y-axis", "P1", "P2")
     assert given_names(sel, ["O_M", "X2"])[-2:] == ("O_M", "X2")
     with pytest.raises(ValueError, match="not a step of this worksheet"):
@@ -298,7 +316,12 @@ def test_any_size_of_grasp_gets_a_round_scale() -> None:
     from graspcompass.render.handdrawing import round_scale
 
     assert [round_scale(f) for f in (12.9, 10.0, 9.99, 0.0437, 2345.6)] == [
-        12.0, 10.0, 9.9, 0.043, 2340.0]
+        12.0,
+        10.0,
+        9.9,
+        0.043,
+        2340.0,
+    ]
     big = Grasp(x1=100, x2=200, y=50, phi1="pi/2", phi2="pi/2", mu1="1/2", mu2="1/2")
     ws = worksheet_pages(big, steps="V4")
     assert 0.1 < ws.scale < 1 and mm_per_unit(ws, 0)[0] == pytest.approx(ws.scale, rel=1e-12)
@@ -312,11 +335,24 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
-def test_command_writes_the_worksheet(tmp_path: Path, capsys: pytest.CaptureFixture[str]
-                                      ) -> None:
+def test_command_writes_the_worksheet(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "t.pdf"
-    args = _parser().parse_args(["worksheet", "--preset", "table1a", "--steps", "V2",
-                                 "--given", "sides", "--scale", "12", "-q", "-o", str(out)])
+    args = _parser().parse_args(
+        [
+            "worksheet",
+            "--preset",
+            "table1a",
+            "--steps",
+            "V2",
+            "--given",
+            "sides",
+            "--scale",
+            "12",
+            "-q",
+            "-o",
+            str(out),
+        ]
+    )
     assert cw.run(args) == 0
     data = out.read_bytes()
     assert pdf_pages(data) == 2
@@ -331,9 +367,17 @@ def test_command_writes_the_worksheet(tmp_path: Path, capsys: pytest.CaptureFixt
     assert p.parse_args(["worksheet"]).quiet is False
 
 
-@pytest.mark.parametrize("argv", [["--scale", "0"], ["--scale", "inf"], ["--steps", "V5"],
-                                  ["--given", "P1x;rm"], ["--scale", "x"],
-                                  ["--scale", "-3"]])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["--scale", "0"],
+        ["--scale", "inf"],
+        ["--steps", "V5"],
+        ["--given", "P1x;rm"],
+        ["--scale", "x"],
+        ["--scale", "-3"],
+    ],
+)
 def test_command_refuses_bad_options(argv: list[str]) -> None:
     with pytest.raises(SystemExit) as err:
         _parser().parse_args(["worksheet", *argv])
@@ -348,6 +392,7 @@ def test_command_checks_the_output_before_any_work(tmp_path: Path) -> None:
     with pytest.raises(OutputError, match="does not exist"):
         cw.run(_parser().parse_args(["worksheet", "-o", str(tmp_path / "no" / "w.pdf")]))
     with pytest.raises(ValueError, match="not a step"):
-        cw.run(_parser().parse_args(["worksheet", "--given", "nothing", "-o",
-                                     str(tmp_path / "w.pdf")]))
+        cw.run(
+            _parser().parse_args(["worksheet", "--given", "nothing", "-o", str(tmp_path / "w.pdf")])
+        )
     assert not (tmp_path / "w.pdf").exists()

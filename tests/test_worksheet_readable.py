@@ -25,8 +25,15 @@ from matplotlib.text import Text
 from graspcompass import Grasp, layout
 from graspcompass.render.handdrawing import Worksheet, worksheet_pages
 
-OWN = dict(x1="1.2", x2="0.3", y="0.4", phi1="61*pi/180", phi2="118*pi/180",
-           xi1="67*pi/180", xi2="49*pi/180")
+OWN = dict(
+    x1="1.2",
+    x2="0.3",
+    y="0.4",
+    phi1="61*pi/180",
+    phi2="118*pi/180",
+    xi1="67*pi/180",
+    xi2="49*pi/180",
+)
 
 
 @pytest.fixture(scope="module")
@@ -55,7 +62,7 @@ def test_no_text_over_text(which: str, page: int, request: pytest.FixtureRequest
     boxes = _boxes(ws, page)
     assert len(boxes) > 40
     for i, (ta, a) in enumerate(boxes):
-        for tb, b in boxes[i + 1:]:
+        for tb, b in boxes[i + 1 :]:
             w = min(a.x1, b.x1) - max(a.x0, b.x0)
             h = min(a.y1, b.y1) - max(a.y0, b.y0)
             assert w <= 0.3 or h <= -0.5, (ta, tb, w, h)
@@ -76,8 +83,7 @@ def test_cone_sides_are_long_and_carry_their_angles(fig6: Worksheet) -> None:
 
 
 @pytest.mark.parametrize("which", ["fig6", "own"])
-def test_contact_labels_clear_of_the_cone_sides(which: str,
-                                                request: pytest.FixtureRequest) -> None:
+def test_contact_labels_clear_of_the_cone_sides(which: str, request: pytest.FixtureRequest) -> None:
     ws = request.getfixturevalue(which)
     ax = ws.axes[0]
     r = ws.figures[0].canvas.get_renderer()
@@ -86,11 +92,13 @@ def test_contact_labels_clear_of_the_cone_sides(which: str,
         (label,) = [a for a in ws.artists[0][name] if isinstance(a, Text)]
         bb = label.get_window_extent(r)
         for ln in sides:
-            xy = np.column_stack([np.linspace(*ln.get_xdata()[:2], 200),
-                                  np.linspace(*ln.get_ydata()[:2], 200)])
+            xy = np.column_stack(
+                [np.linspace(*ln.get_xdata()[:2], 200), np.linspace(*ln.get_ydata()[:2], 200)]
+            )
             px = ax.transData.transform(xy)
-            inside = ((px[:, 0] > bb.x0) & (px[:, 0] < bb.x1) & (px[:, 1] > bb.y0)
-                      & (px[:, 1] < bb.y1))
+            inside = (
+                (px[:, 0] > bb.x0) & (px[:, 0] < bb.x1) & (px[:, 1] > bb.y0) & (px[:, 1] < bb.y1)
+            )
             assert not inside.any(), (which, name)
 
 

@@ -34,14 +34,16 @@ from graspcompass.world import (
 )
 
 R = sp.Rational
-SETTINGS = settings(max_examples=25, deadline=None, database=None,
-                    suppress_health_check=[HealthCheck.too_slow])
+SETTINGS = settings(
+    max_examples=25, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow]
+)
 
 #: rational points on the unit circle (Pythagorean triples), for exact rotations and normals
 TRIPLES = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25), (20, 21, 29), (0, 1, 1)]
-UNIT = sorted({(R(a * sa, c), R(b * sb, c)) for a, b, c in TRIPLES for sa in (1, -1)
-               for sb in (1, -1)} | {(R(b * sb, c), R(a * sa, c)) for a, b, c in TRIPLES
-                                      for sa in (1, -1) for sb in (1, -1)})
+UNIT = sorted(
+    {(R(a * sa, c), R(b * sb, c)) for a, b, c in TRIPLES for sa in (1, -1) for sb in (1, -1)}
+    | {(R(b * sb, c), R(a * sa, c)) for a, b, c in TRIPLES for sa in (1, -1) for sb in (1, -1)}
+)
 
 
 def rot(v, c, s):
@@ -69,8 +71,10 @@ def paper_grasps(draw, y_positive=True):
 @st.composite
 def motions(draw):
     c, s = draw(st.sampled_from(UNIT))
-    t = (R(draw(st.integers(-50, 50)), draw(st.integers(1, 7))),
-         R(draw(st.integers(-50, 50)), draw(st.integers(1, 7))))
+    t = (
+        R(draw(st.integers(-50, 50)), draw(st.integers(1, 7))),
+        R(draw(st.integers(-50, 50)), draw(st.integers(1, 7))),
+    )
     return c, s, t
 
 
@@ -81,8 +85,12 @@ def world_data(paper, motion, swap):
     a = (move((x1, y), c, s, t), rot(n1, c, s), mu1)
     b = (move((-x2, y), c, s, t), rot(n2, c, s), mu2)
     first, second = (b, a) if swap else (a, b)
-    return dict(contacts=[first[0], second[0]], normals=[first[1], second[1]],
-                mu=(first[2], second[2]), com=t)
+    return dict(
+        contacts=[first[0], second[0]],
+        normals=[first[1], second[1]],
+        mu=(first[2], second[2]),
+        com=t,
+    )
 
 
 @SETTINGS
@@ -107,15 +115,22 @@ def test_rigid_motions_give_the_same_exact_grasp(paper, m1, m2, swap):
 
 
 def float_world(paper, angle, t, swap):
-    x1, x2, y, n1, n2, mu1, mu2 = (tuple(float(v) for v in p) if isinstance(p, tuple)
-                                   else float(p) for p in paper)
+    x1, x2, y, n1, n2, mu1, mu2 = (
+        tuple(float(v) for v in p) if isinstance(p, tuple) else float(p) for p in paper
+    )
     c, s = math.cos(angle), math.sin(angle)
     return world_data((x1, x2, y, n1, n2, mu1, mu2), (c, s, t), swap)
 
 
 @SETTINGS
-@given(paper_grasps(), st.floats(-math.pi, math.pi), st.floats(-3, 3), st.floats(-3, 3),
-       st.booleans(), st.floats(0, 2 * math.pi))
+@given(
+    paper_grasps(),
+    st.floats(-math.pi, math.pi),
+    st.floats(-3, 3),
+    st.floats(-3, 3),
+    st.booleans(),
+    st.floats(0, 2 * math.pi),
+)
 def test_rigid_motions_float(paper, angle, tx, ty, swap, theta_w):
     """Floats: the same paper-frame parameters to 1e-12, and the same least squeeze
     k_grasp for the same force relative to the object (the world direction turned
@@ -150,7 +165,7 @@ def lp_least_squeeze(contacts, normals, mus, com, force):
         t = np.array([-n[1], n[0]])
         for sgn in (1, -1):  # mu (f·n) ± f·t >= 0, written as <= 0
             row = np.zeros(4)
-            row[2 * i: 2 * i + 2] = -(mu * n + sgn * t)
+            row[2 * i : 2 * i + 2] = -(mu * n + sgn * t)
             A_ub.append(row)
             b_ub.append(0.0)
     squeeze = np.concatenate([u / 2, -u / 2])
@@ -159,8 +174,15 @@ def lp_least_squeeze(contacts, normals, mus, com, force):
     ra, rb = a - c, b - c
     A_eq = [[1, 0, 1, 0], [0, 1, 0, 1], [-ra[1], ra[0], -rb[1], rb[0]]]
     b_eq = [-force[0], -force[1], 0.0]
-    res = linprog(squeeze, A_ub=np.array(A_ub), b_ub=b_ub, A_eq=A_eq, b_eq=b_eq,
-                  bounds=[(None, None)] * 4, method="highs")
+    res = linprog(
+        squeeze,
+        A_ub=np.array(A_ub),
+        b_ub=b_ub,
+        A_eq=A_eq,
+        b_eq=b_eq,
+        bounds=[(None, None)] * 4,
+        method="highs",
+    )
     assert res.status == 0, res.message
     return res.fun, res.x[:2], res.x[2:]
 
@@ -194,8 +216,9 @@ def test_least_internal_force_matches_an_lp(grasp, phi, magnitude):
     wg = place_grasp(contacts, normals, mu=mus, com=com)
     force = (magnitude * math.cos(phi), magnitude * math.sin(phi))
     squeeze, fa, fb = lp_least_squeeze(contacts, normals, mus, com, force)
-    scale = magnitude * (1 + max(abs(float(v)) for v in wg.grasp.S + wg.grasp.C)
-                         / float(wg.grasp.D))
+    scale = magnitude * (
+        1 + max(abs(float(v)) for v in wg.grasp.S + wg.grasp.C) / float(wg.grasp.D)
+    )
     assert wg.internal_force(force) == pytest.approx(squeeze, abs=1e-7 * scale)
     forces = wg.contact_forces(force)
     assert np.allclose(forces["A"], fa, atol=1e-6 * scale)
@@ -211,8 +234,9 @@ def test_lp_on_exact_grasps_and_the_paper_example():
     down = rot((0, -10), c, s)  # 10 N along the object's -y: θ = 0
     assert wg.internal_force(down) == 5  # k/(x1 + x2) F_e = 2/4 · 10
     d = world_data(paper, (c, s, t), True)
-    squeeze, _, _ = lp_least_squeeze(d["contacts"], d["normals"], d["mu"], d["com"],
-                                     [float(v) for v in down])
+    squeeze, _, _ = lp_least_squeeze(
+        d["contacts"], d["normals"], d["mu"], d["com"], [float(v) for v in down]
+    )
     assert squeeze == pytest.approx(5, abs=1e-9)
     fs = wg.contact_forces(down)
     total = [canon(fs["A"][i] + fs["B"][i] + down[i]) for i in (0, 1)]
@@ -243,8 +267,11 @@ def test_tilted_part():
     assert wg.grasp == Grasp.preset("table1a") and wg.origin == t
     assert wg.beta == sp.atan2(s, c)
     assert wg.theta_to_paper(0) == -sp.atan(R(4, 3))
-    wf = place_grasp([tuple(float(v) for v in p) for p in contacts],
-                     outline=Polygon([tuple(float(v) for v in p) for p in box]), mu=(1, 1.2))
+    wf = place_grasp(
+        [tuple(float(v) for v in p) for p in contacts],
+        outline=Polygon([tuple(float(v) for v in p) for p in box]),
+        mu=(1, 1.2),
+    )
     for k in ("x1", "x2", "y", "phi1", "phi2"):
         assert float(wf.grasp.params[k]) == pytest.approx(float(wg.grasp.params[k]), abs=1e-12)
 
@@ -261,8 +288,9 @@ def test_non_convex_outline_centroid_and_normals():
     assert wg.normals == ((-1, 0), (1, 0)) and wg.names == ("B", "A")
     assert wg.grasp == Grasp(3, 3, R(7, 6), "pi/2", "pi/2", mu1=1, mu2=1)
     # inside the notch the inward normals point apart: an expanding grip is refused
-    with pytest.raises(NormalOutwardError,
-                       match=r"contact A at \(4, 2\).*points away from contact B"):
+    with pytest.raises(
+        NormalOutwardError, match=r"contact A at \(4, 2\).*points away from contact B"
+    ):
         place_grasp([(4, 2), (2, 2)], outline=U_SHAPE, mu=(1, 1))
 
 
@@ -275,38 +303,77 @@ def test_vertex_contacts():
     assert wg.grasp == Grasp(1, 1, 0, "pi/2", "pi/2", mu1=2, mu2=2)
     # a normal given for the vertex contact is used instead
     n = (R(-3, 5), R(4, 5))
-    wg = place_grasp([(1, 0), (-1, 0)], [n, None], outline=diamond, mu=(2, 2),
-                     at_vertex="bisector")
+    wg = place_grasp([(1, 0), (-1, 0)], [n, None], outline=diamond, mu=(2, 2), at_vertex="bisector")
     assert wg.names == ("A", "B") and wg.normals == (n, (1, 0))
 
 
 # -- refusals, each naming the contact -------------------------------------------------------
-@pytest.mark.parametrize("kwargs, error, words", [
-    (dict(contacts=[(2, 1), (-2, 9)], outline=BOX, mu=(1, 1)), ContactOffOutlineError,
-     "contact B at .-2, 9. does not lie on the outline"),
-    (dict(contacts=[(2.0, 1.0), (-2.1, 1.0)], outline=Polygon(BOX), mu=(1, 1)),
-     ContactOffOutlineError, "contact B"),
-    (dict(contacts=[(2, 4), (-2, 1)], outline=BOX, mu=(1, 1)), VertexContactError,
-     "contact A at .2, 4. is at a vertex"),
-    (dict(contacts=[(2, 1), (-2, 1)], normals=[(0, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
-     NormalNotUnitError, "contact A at .2, 1.: its normal .0, 0. is the zero vector"),
-    (dict(contacts=[(2, 1), (-2, 1)], normals=[(1, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
-     NormalOutwardError, "contact A at .2, 1.: its inward normal .1, 0. points away from "
-     "contact B"),
-    (dict(contacts=[(2, 1), (-2, 1)], normals=[(-1, 0), (-1, 0)], outline=BOX, mu=(1, 1)),
-     NormalOutwardError, "contact B at .-2, 1.: its normal .-1, 0. points out of the outline"),
-    (dict(contacts=[(R(1, 20), 0), (R(-1, 20), 0)], normals=[(R(-3, 5), R(4, 5)), (1, 0)],
-          mu=("0.3", "0.3"), com=(0, "-0.01")), FrictionConeError,
-     r"contact A at \(1/20, 0\): its friction cone \(μ = 3/10, half angle 16.7°\) does not "
-     r"contain contact B at \(-1/20, 0\): the inward normal \(-3/5, 4/5\) makes 53.13°"),
-    (dict(contacts=[(2.0, 1.0), (-2.0, 1.0)], normals=[(-1.0, 0.0), (0.6, -0.8)],
-          xi=("30deg", "30deg"), com=(0, 0)), FrictionConeError,
-     "contact B at .-2, 1.: its friction cone .half angle 30°"),
-    (dict(contacts=[(2, 1), (2, 1)], normals=[(-1, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
-     CoincidentContactsError, "contacts A and B are the same point"),
-    (dict(contacts=[(0, 0), (2, 2)], outline=[(0, 0), (2, 2), (2, 0), (0, 2)], mu=(1, 1)),
-     OutlineError, "simple polygon"),
-])
+@pytest.mark.parametrize(
+    "kwargs, error, words",
+    [
+        (
+            dict(contacts=[(2, 1), (-2, 9)], outline=BOX, mu=(1, 1)),
+            ContactOffOutlineError,
+            "contact B at .-2, 9. does not lie on the outline",
+        ),
+        (
+            dict(contacts=[(2.0, 1.0), (-2.1, 1.0)], outline=Polygon(BOX), mu=(1, 1)),
+            ContactOffOutlineError,
+            "contact B",
+        ),
+        (
+            dict(contacts=[(2, 4), (-2, 1)], outline=BOX, mu=(1, 1)),
+            VertexContactError,
+            "contact A at .2, 4. is at a vertex",
+        ),
+        (
+            dict(contacts=[(2, 1), (-2, 1)], normals=[(0, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
+            NormalNotUnitError,
+            "contact A at .2, 1.: its normal .0, 0. is the zero vector",
+        ),
+        (
+            dict(contacts=[(2, 1), (-2, 1)], normals=[(1, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
+            NormalOutwardError,
+            "contact A at .2, 1.: its inward normal .1, 0. points away from contact B",
+        ),
+        (
+            dict(contacts=[(2, 1), (-2, 1)], normals=[(-1, 0), (-1, 0)], outline=BOX, mu=(1, 1)),
+            NormalOutwardError,
+            "contact B at .-2, 1.: its normal .-1, 0. points out of the outline",
+        ),
+        (
+            dict(
+                contacts=[(R(1, 20), 0), (R(-1, 20), 0)],
+                normals=[(R(-3, 5), R(4, 5)), (1, 0)],
+                mu=("0.3", "0.3"),
+                com=(0, "-0.01"),
+            ),
+            FrictionConeError,
+            r"contact A at \(1/20, 0\): its friction cone \(μ = 3/10, half angle 16.7°\) does not "
+            r"contain contact B at \(-1/20, 0\): the inward normal \(-3/5, 4/5\) makes 53.13°",
+        ),
+        (
+            dict(
+                contacts=[(2.0, 1.0), (-2.0, 1.0)],
+                normals=[(-1.0, 0.0), (0.6, -0.8)],
+                xi=("30deg", "30deg"),
+                com=(0, 0),
+            ),
+            FrictionConeError,
+            "contact B at .-2, 1.: its friction cone .half angle 30°",
+        ),
+        (
+            dict(contacts=[(2, 1), (2, 1)], normals=[(-1, 0), (1, 0)], mu=(1, 1), com=(0, 0)),
+            CoincidentContactsError,
+            "contacts A and B are the same point",
+        ),
+        (
+            dict(contacts=[(0, 0), (2, 2)], outline=[(0, 0), (2, 2), (2, 0), (0, 2)], mu=(1, 1)),
+            OutlineError,
+            "simple polygon",
+        ),
+    ],
+)
 def test_refusals_name_the_contact(kwargs, error, words):
     with pytest.raises(error, match=words) as info:
         place_grasp(**kwargs)
@@ -315,8 +382,13 @@ def test_refusals_name_the_contact(kwargs, error, words):
 
 def test_names_and_input_errors():
     with pytest.raises(FrictionConeError, match="contact left jaw at"):
-        place_grasp([(2, 1), (-2, 1)], [(R(-3, 5), R(4, 5)), (1, 0)], mu=(1, 1), com=(0, 0),
-                    names=("left jaw", "right jaw"))
+        place_grasp(
+            [(2, 1), (-2, 1)],
+            [(R(-3, 5), R(4, 5)), (1, 0)],
+            mu=(1, 1),
+            com=(0, 0),
+            names=("left jaw", "right jaw"),
+        )
     from graspcompass.errors import InputError
 
     with pytest.raises(InputError, match="contact B: give its friction"):
@@ -324,29 +396,37 @@ def test_names_and_input_errors():
     with pytest.raises(InputError, match="com: give the centre of mass"):
         place_grasp([(2, 1), (-2, 1)], [(-1, 0), (1, 0)], mu=(1, 1))
     with pytest.raises(InputError, match="contact A x"):
-        place_grasp([("__import__('os')", 1), (-2, 1)], [(-1, 0), (1, 0)], mu=(1, 1),
-                    com=(0, 0))
+        place_grasp([("__import__('os')", 1), (-2, 1)], [(-1, 0), (1, 0)], mu=(1, 1), com=(0, 0))
 
 
 def test_exact_text_stays_exact_and_floats_go_numeric():
-    wg = place_grasp([("0.05", 0), ("-0.05", 0)], [(-1, 0), (1, 0)], mu=("0.3", "0.3"),
-                     com=("0.025", "-0.01"))
+    wg = place_grasp(
+        [("0.05", 0), ("-0.05", 0)], [(-1, 0), (1, 0)], mu=("0.3", "0.3"), com=("0.025", "-0.01")
+    )
     assert not wg.grasp.numeric and wg.grasp.x1 == R(1, 40) and wg.grasp.x2 == R(3, 40)
-    wf = place_grasp([(0.05, 0), (-0.05, 0)], [(-1, 0), (1, 0)], mu=("0.3", "0.3"),
-                     com=(0.025, -0.01))
+    wf = place_grasp(
+        [(0.05, 0), (-0.05, 0)], [(-1, 0), (1, 0)], mu=("0.3", "0.3"), com=(0.025, -0.01)
+    )
     assert wf.grasp.numeric and float(wf.grasp.x1) == pytest.approx(0.025, abs=1e-15)
     # the issue's worked example: 1 kg, jaws 100 mm apart, μ = 0.3, CoM 25 mm off centre
     g = 9.80665
     assert float(wg.internal_force((0, -g))) == pytest.approx(
-        lp_least_squeeze([(0.05, 0), (-0.05, 0)], [(-1, 0), (1, 0)], (0.3, 0.3),
-                         (0.025, -0.01), (0, -g))[0], rel=1e-9)
+        lp_least_squeeze(
+            [(0.05, 0), (-0.05, 0)], [(-1, 0), (1, 0)], (0.3, 0.3), (0.025, -0.01), (0, -g)
+        )[0],
+        rel=1e-9,
+    )
 
 
 def test_fig6_placed_in_the_world_and_mixed_inputs():
     """Fig. 6's circle: contacts on the unit circle, normals to its centre (§4.1)."""
     r3 = "sqrt(3)/2"
-    wg = place_grasp([(r3, "1/2"), ("-" + r3, "1/2")], [("-" + r3, "-1/2"), (r3, "-1/2")],
-                     xi=("pi/4", "pi/3"), com=(0, 0))
+    wg = place_grasp(
+        [(r3, "1/2"), ("-" + r3, "1/2")],
+        [("-" + r3, "-1/2"), (r3, "-1/2")],
+        xi=("pi/4", "pi/3"),
+        com=(0, 0),
+    )
     assert wg.grasp == Grasp.preset("fig6") and wg.beta == 0
     # a float force on an exact grasp gives floats; an exact force exact values
     f = wg.internal_force((0.0, -1.0))
@@ -364,8 +444,12 @@ def test_more_refusals():
     with pytest.raises(SymbolicValueError):
         place_grasp(**{**ok, "com": (sp.Symbol("c"), 0)})
     with pytest.raises(WorldGraspError, match="distance between contacts A and B"):
-        place_grasp([(0, 0), (1, "1 + sqrt(2)")], [(R(-3, 5), R(-4, 5)), (R(3, 5), R(4, 5))],
-                    mu=(5, 5), com=(1, 0))
+        place_grasp(
+            [(0, 0), (1, "1 + sqrt(2)")],
+            [(R(-3, 5), R(-4, 5)), (R(3, 5), R(4, 5))],
+            mu=(5, 5),
+            com=(1, 0),
+        )
     with pytest.raises(InputError, match="force: the external force must not be zero"):
         place_grasp(**ok).internal_force((0, 0))
 
@@ -385,7 +469,8 @@ def test_centre_of_mass_on_the_contact_line_keeps_the_order():
     assert ab.beta == 0 and ba.beta == sp.pi
     for t in (0.0, 0.7, 2.0, 4.0):  # one world force, two frames: the same squeeze
         assert g.internal_force(ab.theta_to_paper(t)) == pytest.approx(
-            h.internal_force(ba.theta_to_paper(t)), abs=1e-12)
+            h.internal_force(ba.theta_to_paper(t)), abs=1e-12
+        )
     assert ab.world_degrees(0) == 0.0 and ba.world_degrees(0) == 180.0
 
 

@@ -27,8 +27,9 @@ from graspcompass.render import animate_construction, draw_construction
 
 construction = gc.internal_force_diagram(gc.Grasp.preset("fig6"))
 # small and light for the web page: 2 frames per step, 60 dpi
-animation = animate_construction(construction, fps=8, frames_per_step=2, pause_frames=2,
-                                 hold_frames=8, dpi=60)
+animation = animate_construction(
+    construction, fps=8, frames_per_step=2, pause_frames=2, hold_frames=8, dpi=60
+)
 print(f"{animation.frame_count} frames for {len(construction)} steps")
 
 # %%
@@ -43,8 +44,7 @@ for name, ax in zip(moments, axes.flat):
     step = construction.step(name)
     draw_construction(construction, step=step.index, ax=ax, highlight_last=True)
     # the protocol's own numbers, as ``graspcompass steps`` prints them: 0 to len - 1
-    ax.set_title(f"after step {step.index} (of 0–{len(construction) - 1}): {name}",
-                 fontsize=11)
+    ax.set_title(f"after step {step.index} (of 0–{len(construction) - 1}): {name}", fontsize=11)
 plt.show()
 
 for name in moments:

@@ -38,8 +38,11 @@ def extremes(construction):
     worst = (sp.Mod(angle_of(V[n]), 2 * sp.pi), distance(ORIGIN, V[n]), f"V{n + 1}")
     env = construction["envelope"]
     arc = min(env.arcs, key=lambda a: float(distance(ORIGIN, a.start)))
-    best = (sp.Mod(arc.theta_start, 2 * sp.pi), distance(ORIGIN, arc.start),
-            "O" if arc.start == ORIGIN else "a break point")
+    best = (
+        sp.Mod(arc.theta_start, 2 * sp.pi),
+        distance(ORIGIN, arc.start),
+        "O" if arc.start == ORIGIN else "a break point",
+    )
     return worst, best
 
 
@@ -52,10 +55,12 @@ for name in gc.PRESETS:
     g = gc.Grasp.preset(name)
     (tw, kw, at), (tb, kb, bt) = extremes(gc.internal_force_diagram(g))
     d = float(g.x1 + g.x2)
-    print(f"{name:8} worst: θ = {float(tw) * 180 / np.pi:6.1f}° (at {at}), "
-          f"α = {float(-tw % (2 * sp.pi)) * 180 / np.pi:6.1f}°, F_int = {float(kw) / d:.3f}·W"
-          f"   best: θ = {float(tb) * 180 / np.pi:6.1f}° ({bt}), "
-          f"F_int = {float(kb) / d:.3f}·W")
+    print(
+        f"{name:8} worst: θ = {float(tw) * 180 / np.pi:6.1f}° (at {at}), "
+        f"α = {float(-tw % (2 * sp.pi)) * 180 / np.pi:6.1f}°, F_int = {float(kw) / d:.3f}·W"
+        f"   best: θ = {float(tb) * 180 / np.pi:6.1f}° ({bt}), "
+        f"F_int = {float(kb) / d:.3f}·W"
+    )
 
 # %%
 # Exactly, for the grasp of Fig. 6
@@ -69,27 +74,44 @@ for word, t, kk in (("worst", theta_w, k_w), ("best ", theta_b, k_b)):
 # a numeric check against eq. (25) on a fine grid
 theta = np.linspace(0, 2 * np.pi, 200_001)
 k = grasp.k_grasp(theta)
-print(f"grid: max k_grasp = {k.max():.6f} (exact {float(k_w):.6f}), "
-      f"min k_grasp = {k.min():.6f} (exact {float(k_b):.6f})")
+print(
+    f"grid: max k_grasp = {k.max():.6f} (exact {float(k_w):.6f}), "
+    f"min k_grasp = {k.min():.6f} (exact {float(k_b):.6f})"
+)
 
 # %%
 # In the diagram
 # --------------
 fig, ax = plt.subplots(figsize=(6.5, 6.5), layout="constrained")
 draw_construction(construction, ax=ax, labels=False)
-for t, kk, color, word, off in ((theta_w, k_w, "#e63946", "worst", (10, -12)),
-                                (theta_b, k_b, "#2a9d8f", "best", (40, 50))):
+for t, kk, color, word, off in (
+    (theta_w, k_w, "#e63946", "worst", (10, -12)),
+    (theta_b, k_b, "#2a9d8f", "best", (40, 50)),
+):
     t, kk = float(t), float(kk)
     e = np.array([np.sin(t), -np.cos(t)])
-    ax.annotate("", xy=tuple(kk * e), xytext=(0, 0),
-                arrowprops=dict(arrowstyle="-|>", color=color, lw=2.5), zorder=8)
+    ax.annotate(
+        "",
+        xy=tuple(kk * e),
+        xytext=(0, 0),
+        arrowprops=dict(arrowstyle="-|>", color=color, lw=2.5),
+        zorder=8,
+    )
     ax.plot(*(kk * e), "o", color=color, ms=8, zorder=9)
-    ax.annotate(f"{word}: θ = {np.degrees(t):.1f}°\nk = {kk:.3f}", kk * e, xytext=off,
-                textcoords="offset points", arrowprops=dict(arrowstyle="-", color=color),
-                color=color, fontsize=10, fontweight="bold",
-                bbox=dict(fc="white", ec="none", alpha=0.8))
-ax.set_title("Fig. 6 grasp: the worst (red) and the best (green) direction of the weight",
-             fontsize=10)
+    ax.annotate(
+        f"{word}: θ = {np.degrees(t):.1f}°\nk = {kk:.3f}",
+        kk * e,
+        xytext=off,
+        textcoords="offset points",
+        arrowprops=dict(arrowstyle="-", color=color),
+        color=color,
+        fontsize=10,
+        fontweight="bold",
+        bbox=dict(fc="white", ec="none", alpha=0.8),
+    )
+ax.set_title(
+    "Fig. 6 grasp: the worst (red) and the best (green) direction of the weight", fontsize=10
+)
 plt.show()
 
 # %%
@@ -102,14 +124,19 @@ force = grasp.internal_force(theta_of_orientation(alpha), 1.0)
 fig, ax = plt.subplots(figsize=(8, 3.6), layout="constrained")
 ax.plot(np.degrees(alpha), force, color="#0b1f4b", lw=2)
 d = float(grasp.D)
-ax.axhline(float(k_w) / d, color="#e63946", ls="--", lw=1,
-           label="max |V_n| / (x1 + x2): any orientation")
+ax.axhline(
+    float(k_w) / d, color="#e63946", ls="--", lw=1, label="max |V_n| / (x1 + x2): any orientation"
+)
 for t, kk, color in ((theta_w, k_w, "#e63946"), (theta_b, k_b, "#2a9d8f")):
     a = np.degrees(float(theta_of_orientation(float(t))))
     ax.plot([a], [float(kk) / d], "o", color=color, ms=8)
-ax.set(xlim=(0, 360), xticks=np.arange(0, 361, 45), ylim=(0, None),
-       xlabel=r"object turned counter-clockwise by $\alpha$ [deg]",
-       ylabel=r"$F_{int}$ for $W = 1$")
+ax.set(
+    xlim=(0, 360),
+    xticks=np.arange(0, 361, 45),
+    ylim=(0, None),
+    xlabel=r"object turned counter-clockwise by $\alpha$ [deg]",
+    ylabel=r"$F_{int}$ for $W = 1$",
+)
 ax.legend(loc="upper right", fontsize=9)
 ax.grid(alpha=0.3)
 plt.show()

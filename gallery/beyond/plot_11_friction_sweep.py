@@ -34,8 +34,17 @@ from graspcompass.render import draw_construction
 
 def grasp(mu: str) -> gc.Grasp:
     """Table I(a) with μ1 = μ2 = mu (an exact decimal such as "0.7")."""
-    return gc.Grasp(2, 2, 1, "pi/2", "pi/2", mu1=mu, mu2=mu, shape=("rectangle", 4, 8),
-                    title=f"Table I(a) geometry, μ1 = μ2 = {mu}")
+    return gc.Grasp(
+        2,
+        2,
+        1,
+        "pi/2",
+        "pi/2",
+        mu1=mu,
+        mu2=mu,
+        shape=("rectangle", 4, 8),
+        title=f"Table I(a) geometry, μ1 = μ2 = {mu}",
+    )
 
 
 # %%
@@ -51,12 +60,20 @@ for mu in mus:
     ax.plot(xy[:, 0], xy[:, 1], color=cmap(norm(float(mu))), lw=2, label=f"μ = {mu}")
     v3, v4 = c["V3"].evalf(), c["V4"].evalf()
     ax.plot([v3[0], v4[0]], [v3[1], v4[1]], "o", color=cmap(norm(float(mu))), ms=4)
-    print(f"μ = {mu:4}:  V3 = {c['V3']},  V4 = {c['V4']},  max k_grasp = max|V_n| = "
-          f"{max(float(abs(complex(*c[f'V{n}'].evalf()))) for n in (1, 2, 3, 4)):.3f}")
+    print(
+        f"μ = {mu:4}:  V3 = {c['V3']},  V4 = {c['V4']},  max k_grasp = max|V_n| = "
+        f"{max(float(abs(complex(*c[f'V{n}'].evalf()))) for n in (1, 2, 3, 4)):.3f}"
+    )
 t = np.linspace(0, 2 * np.pi, 721)
 limit = 2 * np.abs(np.sin(t))  # μ → ∞
-ax.plot(limit * np.sin(t), -limit * np.cos(t), color="black", ls="--", lw=1,
-        label=r"μ → ∞: $2|\sin\theta|$")
+ax.plot(
+    limit * np.sin(t),
+    -limit * np.cos(t),
+    color="black",
+    ls="--",
+    lw=1,
+    label=r"μ → ∞: $2|\sin\theta|$",
+)
 ax.axhline(0, color="0.4", lw=0.6)
 ax.axvline(0, color="0.4", lw=0.6)
 ax.set_aspect("equal")
@@ -97,8 +114,9 @@ fig, ax = plt.subplots(figsize=(5.2, 5.2), dpi=60, layout="constrained")
 
 def show(i: int) -> list:
     ax.clear()
-    draw_construction(gc.internal_force_diagram(grasp(frames[i])), ax=ax, labels=False,
-                      show_computer_plot=False)
+    draw_construction(
+        gc.internal_force_diagram(grasp(frames[i])), ax=ax, labels=False, show_computer_plot=False
+    )
     ax.set(xlim=(-8, 8), ylim=(-8, 8))
     ax.set_title(f"μ1 = μ2 = {frames[i]}")
     return []

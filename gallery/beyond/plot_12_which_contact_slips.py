@@ -76,29 +76,41 @@ for arc in envelope.arcs:
     N1, F1, N2, F2 = (float(v) for v in grasp.contact_forces(mid, k))
     ineq = [mu[1] * N1 - F1, mu[2] * N2 - F2, mu[1] * N1 + F1, mu[2] * N2 + F2]
     i, side, way = meaning(arc.n)
-    print(f"θ in [{np.degrees(t0):5.1f}°, {np.degrees(t1):5.1f}°]: circle {arc.n}, contact {i} "
-          f"on the {side} side, slides {'down' if way < 0 else 'up'};  (8)-(11) at "
-          f"θ = {np.degrees(mid) % 360:5.1f}°: " + ", ".join(f"{v:+.2e}" for v in ineq))
+    print(
+        f"θ in [{np.degrees(t0):5.1f}°, {np.degrees(t1):5.1f}°]: circle {arc.n}, contact {i} "
+        f"on the {side} side, slides {'down' if way < 0 else 'up'};  (8)-(11) at "
+        f"θ = {np.degrees(mid) % 360:5.1f}°: " + ", ".join(f"{v:+.2e}" for v in ineq)
+    )
 
 # %%
 # The picture
 # -----------
 th = DEFAULT_THEME
-fig, (ax, bx) = plt.subplots(1, 2, figsize=(12, 6), layout="constrained",
-                             gridspec_kw=dict(width_ratios=[1, 1.15]))
+fig, (ax, bx) = plt.subplots(
+    1, 2, figsize=(12, 6), layout="constrained", gridspec_kw=dict(width_ratios=[1, 1.15])
+)
 draw_construction(construction, step=construction.step("P2").index, ax=ax)
 for arc in envelope.arcs:
     t = np.linspace(float(arc.theta_start), float(arc.theta_end), 200)
     r = grasp.k_grasp(t)
     i, side, way = meaning(arc.n)
-    ax.plot(r * np.sin(t), -r * np.cos(t), color=th.circle_color(arc.n), lw=4,
-            solid_capstyle="butt", label=f"circle {arc.n}: contact {i}, {side} side, "
-                                         f"slides {'down' if way < 0 else 'up'}")
+    ax.plot(
+        r * np.sin(t),
+        -r * np.cos(t),
+        color=th.circle_color(arc.n),
+        lw=4,
+        solid_capstyle="butt",
+        label=f"circle {arc.n}: contact {i}, {side} side, slides {'down' if way < 0 else 'up'}",
+    )
     p = np.array((grasp.P1 if i == 1 else grasp.P2).evalf())
     d = 0.55 * way * tangent[i]
     shift = 0.12 * (1 if arc.n > 2 else -1) * np.array([tangent[i][1], -tangent[i][0]])
-    ax.annotate("", xy=tuple(p + shift + d), xytext=tuple(p + shift),
-                arrowprops=dict(arrowstyle="-|>", color=th.circle_color(arc.n), lw=2.2))
+    ax.annotate(
+        "",
+        xy=tuple(p + shift + d),
+        xytext=tuple(p + shift),
+        arrowprops=dict(arrowstyle="-|>", color=th.circle_color(arc.n), lw=2.2),
+    )
 ax.set(xlim=(-4, 2.4), ylim=(-4, 1.8))
 ax.legend(loc="lower right", fontsize=8)
 ax.set_title("arcs of the envelope by binding limit; arrows: the object slides")
@@ -111,15 +123,28 @@ for arc in envelope.arcs:
         if b > a:
             bx.axvspan(a, b, color=th.circle_color(arc.n), alpha=0.18)
     centre = (t0 + t1) / 2 % 360 if t1 - t0 < 300 else 0
-    bx.text(centre, 4.05, f"contact {i}\nslides {'down' if way < 0 else 'up'}",
-            ha="center", va="top", fontsize=9, color=th.circle_color(arc.n))
+    bx.text(
+        centre,
+        4.05,
+        f"contact {i}\nslides {'down' if way < 0 else 'up'}",
+        ha="center",
+        va="top",
+        fontsize=9,
+        color=th.circle_color(arc.n),
+    )
 theta = np.linspace(0, 2 * np.pi, 1441)
 for n, k in enumerate(grasp.k(theta), 1):
     bx.plot(np.degrees(theta), k, color=th.circle_color(n), lw=1, ls="--", label=f"$k_{n}$")
-bx.plot(np.degrees(theta), grasp.k_grasp(theta), color=th.envelope_color, lw=2.5,
-        label="$k_{grasp}$")
-bx.set(xlim=(0, 360), ylim=(-0.5, 4.4), xticks=np.arange(0, 361, 45),
-       xlabel=r"direction of the external force $\theta$ [deg]", ylabel="$k$")
+bx.plot(
+    np.degrees(theta), grasp.k_grasp(theta), color=th.envelope_color, lw=2.5, label="$k_{grasp}$"
+)
+bx.set(
+    xlim=(0, 360),
+    ylim=(-0.5, 4.4),
+    xticks=np.arange(0, 361, 45),
+    xlabel=r"direction of the external force $\theta$ [deg]",
+    ylabel="$k$",
+)
 bx.legend(loc="lower left", fontsize=8, ncol=5)
 bx.set_title("which limit binds, for every direction of the external force")
 plt.show()

@@ -41,12 +41,13 @@ path.write_text(BRACKET_SVG)
 outline = read_outline(path)  # metres, y up
 
 plan = plan_contacts(outline, mu=0.5, mass=0.2, samples=120)
-print(f"{len(plan.i)} pairs of {len(plan.points)} contacts, "
-      f"{int(plan.force_closure.sum())} force-closure with μ = 0.5")
+print(
+    f"{len(plan.i)} pairs of {len(plan.points)} contacts, "
+    f"{int(plan.force_closure.sum())} force-closure with μ = 0.5"
+)
 for p in plan.top(5):
     a, b = (f"({x * 1e3:.1f}, {y * 1e3:.1f})" for x, y in p.contacts)
-    print(f"#{p.rank}: {a} – {b} mm: {p.squeeze:.3f} N per jaw "
-          f"({p.squeeze_per_kg:.2f} N/kg)")
+    print(f"#{p.rank}: {a} – {b} mm: {p.squeeze:.3f} N per jaw ({p.squeeze_per_kg:.2f} N/kg)")
 
 # %%
 # The best pairs and their friction cones
@@ -85,9 +86,11 @@ plt.show()
 # found.  ``lower_bound`` is proved, and ``squeeze`` is within the tolerance of it.
 for p in plan.exact:
     a, b = (f"({x * 1e3:.2f}, {y * 1e3:.2f})" for x, y in p.contacts)
-    print(f"edges {p.edges}: {a} – {b} mm, {p.squeeze:.5f} N per jaw (proved >= "
-          f"{p.lower_bound:.5f}); best sample on these edges {p.sampled_squeeze:.5f} N: "
-          f"{100 * p.improvement:.2f}% less")
+    print(
+        f"edges {p.edges}: {a} – {b} mm, {p.squeeze:.5f} N per jaw (proved >= "
+        f"{p.lower_bound:.5f}); best sample on these edges {p.sampled_squeeze:.5f} N: "
+        f"{100 * p.improvement:.2f}% less"
+    )
 
 # %%
 # The orientations the part will see
@@ -96,8 +99,9 @@ for p in plan.exact:
 # the worst case is over that arc of load directions only (as ``graspcompass size
 # --gravity 0,-1 --tilt 20deg``), and other pairs win: gripping the top edge and the floor
 # of the notch needs about 40 % less than the best pair for every orientation.
-tilted = plan_contacts(outline, mu=0.5, mass=0.2, samples=120, gravity=(0, -1),
-                       tilt=math.radians(20))
+tilted = plan_contacts(
+    outline, mu=0.5, mass=0.2, samples=120, gravity=(0, -1), tilt=math.radians(20)
+)
 print(tilted.orientations())
 for p in tilted.top(3):
     a, b = (f"({x * 1e3:.1f}, {y * 1e3:.1f})" for x, y in p.contacts)
@@ -113,9 +117,11 @@ for p in tilted.top(3):
 # off from it.
 for p in tilted.exact:
     a, b = (f"({x * 1e3:.2f}, {y * 1e3:.2f})" for x, y in p.contacts)
-    print(f"edges {p.edges}: {a} – {b} mm, {p.squeeze:.5f} N (proved >= {p.lower_bound:.5f}"
-          f"{', on the boundary of (1)' if p.on_boundary else ''}); "
-          f"{100 * p.improvement:.2f}% less than the best sample")
+    print(
+        f"edges {p.edges}: {a} – {b} mm, {p.squeeze:.5f} N (proved >= {p.lower_bound:.5f}"
+        f"{', on the boundary of (1)' if p.on_boundary else ''}); "
+        f"{100 * p.improvement:.2f}% less than the best sample"
+    )
 print(tilted.exact[0].claim())
 fig, ax = plt.subplots(figsize=(7, 4.6), layout="constrained")
 draw_plan_outline(ax, tilted, top=3)

@@ -29,8 +29,13 @@ G, MASS, MU = 9.81, 1.0, 0.3
 offsets = np.linspace(0.0, 0.045, 19)  # the centre of mass, metres towards jaw 1
 worst, vendor, slips = [], [], []
 for d in offsets:
-    part = place_grasp([(0.05, 0.0), (-0.05, 0.0)], [(-1.0, 0.0), (1.0, 0.0)],
-                       mu=(MU, MU), com=(float(d), 0.0), names=("jaw 1", "jaw 2"))
+    part = place_grasp(
+        [(0.05, 0.0), (-0.05, 0.0)],
+        [(-1.0, 0.0), (1.0, 0.0)],
+        mu=(MU, MU),
+        com=(float(d), 0.0),
+        names=("jaw 1", "jaw 2"),
+    )
     s = size_gripper(part, MASS, g=G)
     worst.append(s.worst_squeeze)
     vendor.append(s.vendor_squeeze)
@@ -40,8 +45,9 @@ fig, ax = plt.subplots(figsize=(7, 4.2), layout="constrained")
 ax.plot(offsets * 1000, worst, "o-", label="the paper's worst case over all orientations")
 ax.plot(offsets * 1000, vendor, "--", label="vendor formula m g S / (μ n), n = 2")
 ax.axvline(25, color="0.6", lw=0.8)
-ax.annotate(f"{worst[10]:.1f} N at 25 mm", (25, worst[10]), xytext=(8, -14),
-            textcoords="offset points")
+ax.annotate(
+    f"{worst[10]:.1f} N at 25 mm", (25, worst[10]), xytext=(8, -14), textcoords="offset points"
+)
 ax.set_xlabel("centre of mass off centre, towards jaw 1 (mm)")
 ax.set_ylabel("squeeze per jaw (N)")
 ax.set_title("1 kg part, jaws 100 mm apart, μ = 0.3")
@@ -49,9 +55,16 @@ ax.legend(loc="upper left")
 
 # %%
 # The worked example of the issue: 25 mm off centre.
-part = place_grasp([(0.05, 0.0), (-0.05, 0.0)], [(-1.0, 0.0), (1.0, 0.0)], mu=(MU, MU),
-                   com=(0.025, 0.0), names=("jaw 1", "jaw 2"))
+part = place_grasp(
+    [(0.05, 0.0), (-0.05, 0.0)],
+    [(-1.0, 0.0), (1.0, 0.0)],
+    mu=(MU, MU),
+    com=(0.025, 0.0),
+    names=("jaw 1", "jaw 2"),
+)
 s = size_gripper(part, MASS, g=G)
-print(f"worst {s.worst_squeeze:.2f} N per jaw (load towards {s.worst_direction_deg:.1f}°, "
-      f"{s.worst_slipping_contact} slips); vendor {s.vendor_squeeze:.2f} N; "
-      f"ratio {s.worst_squeeze / s.vendor_squeeze:.2f}")
+print(
+    f"worst {s.worst_squeeze:.2f} N per jaw (load towards {s.worst_direction_deg:.1f}°, "
+    f"{s.worst_slipping_contact} slips); vendor {s.vendor_squeeze:.2f} N; "
+    f"ratio {s.worst_squeeze / s.vendor_squeeze:.2f}"
+)

@@ -19,16 +19,28 @@ import matplotlib.pyplot as plt
 from graspcompass.ncontact import NContactGrasp
 from graspcompass.render.ncontact import draw_ncontact
 
-three = NContactGrasp([("1", "0", "180deg", "1/2"), ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
-                       ("-1/2", "-sqrt(3)/2", "60deg", "1/2")])
-hand = NContactGrasp([("0", "-1/2", "90deg", "3/5"), ("-3/4", "1/2", "-90deg", "2/5"),
-                      ("0", "1/2", "-90deg", "2/5"), ("3/4", "1/2", "-90deg", "2/5")])
+three = NContactGrasp(
+    [
+        ("1", "0", "180deg", "1/2"),
+        ("-1/2", "sqrt(3)/2", "-60deg", "1/2"),
+        ("-1/2", "-sqrt(3)/2", "60deg", "1/2"),
+    ]
+)
+hand = NContactGrasp(
+    [
+        ("0", "-1/2", "90deg", "3/5"),
+        ("-3/4", "1/2", "-90deg", "2/5"),
+        ("0", "1/2", "-90deg", "2/5"),
+        ("3/4", "1/2", "-90deg", "2/5"),
+    ]
+)
 fig, (a, b) = plt.subplots(1, 2, figsize=(11, 5.2))
 draw_ncontact(three, ax=a, title="three fingers, μ = 1/2: Q is a hexagon")
 draw_ncontact(hand, ax=b, title="a four-finger hand: five vertices of Q")
 for g, ax in ((three, a), (hand, b)):
     value, theta = g.worst()
-    ax.set_xlabel(f"worst load direction θ = {float(theta) * 57.29578:.1f}°, "
-                  f"max |q| = {float(value):.4f}")
+    ax.set_xlabel(
+        f"worst load direction θ = {float(theta) * 57.29578:.1f}°, max |q| = {float(value):.4f}"
+    )
 fig.tight_layout()
 plt.show()

@@ -41,8 +41,10 @@ a, b = sp.Integer(2), sp.Integer(1)
 for t in (sp.Rational(1, 3), sp.Integer(-2), sp.Integer(0)):
     c = replay(program, {"a": a, "b": b, "t": t})
     lam = (a * t - b) / (t**2 + 1)
-    print(f"t = {t}: H = {c['H']}, first principles ({lam * t}, {-lam}):",
-          (c["H"].x, c["H"].y) == (lam * t, -lam))
+    print(
+        f"t = {t}: H = {c['H']}, first principles ({lam * t}, {-lam}):",
+        (c["H"].x, c["H"].y) == (lam * t, -lam),
+    )
 
 # %%
 # The drawing

@@ -31,10 +31,17 @@ print("\n".join(line for line in text.splitlines() if line.startswith(("param", 
 grasp = gc.Grasp.preset("table1c")
 program = paper_program()
 c = replay(program, grasp)
-print(len(program.steps), "steps in the file,", len(c), "in the protocol; left out:",
-      [name for name, _ in c.skipped])
-print("internal_force_diagram gives this protocol (it replays the file):",
-      c.steps == gc.internal_force_diagram(grasp).steps)
+print(
+    len(program.steps),
+    "steps in the file,",
+    len(c),
+    "in the protocol; left out:",
+    [name for name, _ in c.skipped],
+)
+print(
+    "internal_force_diagram gives this protocol (it replays the file):",
+    c.steps == gc.internal_force_diagram(grasp).steps,
+)
 for n in (1, 2, 3, 4):
     print(f"V{n} = {c[f'V{n}']}")
 

@@ -59,13 +59,23 @@ __all__ = [
 
 #: Where each public name lives; it is imported on first use (:mod:`graspcompass._lazy`).
 _HOMES = {
-    "Construction": "construction", "Step": "construction",
+    "Construction": "construction",
+    "Step": "construction",
     "internal_force_diagram": "construction",
-    "GraspCompassError": "errors", "InputError": "errors",
-    "ExpressionError": "expr", "parse_exact": "expr",
-    "Circle": "geometry", "GeometryError": "geometry", "Line": "geometry", "Point": "geometry",
-    "FrozenGraspError": "grasp", "Grasp": "grasp", "InvalidGraspError": "grasp",
+    "GraspCompassError": "errors",
+    "InputError": "errors",
+    "ExpressionError": "expr",
+    "parse_exact": "expr",
+    "Circle": "geometry",
+    "GeometryError": "geometry",
+    "Line": "geometry",
+    "Point": "geometry",
+    "FrozenGraspError": "grasp",
+    "Grasp": "grasp",
+    "InvalidGraspError": "grasp",
     "PRESETS": "presets",
-    "WorldGrasp": "world", "WorldGraspError": "world", "place_grasp": "world",
+    "WorldGrasp": "world",
+    "WorldGraspError": "world",
+    "place_grasp": "world",
 }
 __getattr__, __dir__ = attach(__name__, _HOMES)

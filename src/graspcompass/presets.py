@@ -23,8 +23,15 @@ __all__ = ["PRESETS"]
 #: (the outline drawn) and ``title``.
 PRESETS: dict[str, dict[str, Any]] = {
     "fig6": dict(
-        params=dict(x1="sqrt(3)/2", x2="sqrt(3)/2", y="1/2", phi1="pi/3", phi2="pi/3",
-                    xi1="pi/4", xi2="pi/3"),
+        params=dict(
+            x1="sqrt(3)/2",
+            x2="sqrt(3)/2",
+            y="1/2",
+            phi1="pi/3",
+            phi2="pi/3",
+            xi1="pi/4",
+            xi2="pi/3",
+        ),
         shape=("circle", 1),
         title="Fig. 6: circular object, P1 = (√3/2, 1/2), φ = π/3, ξ1 = π/4, ξ2 = π/3",
     ),

@@ -33,8 +33,9 @@ class Progress:
         Where to draw (default ``sys.stderr``); nothing is drawn unless it is a TTY.
     """
 
-    def __init__(self, total: int, label: str = "", quiet: bool = False,
-                 stream: TextIO | None = None) -> None:
+    def __init__(
+        self, total: int, label: str = "", quiet: bool = False, stream: TextIO | None = None
+    ) -> None:
         self.total, self.label, self.done = max(total, 1), label, 0
         self.stream = sys.stderr if stream is None else stream
         isatty = getattr(self.stream, "isatty", lambda: False)

@@ -127,9 +127,17 @@ def _core(xp: Any, p: list) -> tuple[list, list, Any]:
         C = [x2 * t1, x1 * t2, x2 * t3, x1 * t4]
         # condition (1): d1, d2 < 0 < d3, d4; with sin φ > 0 it implies μ > 0 exactly (d3 − d1
         # = 2 fl(μ sin φ) in sign).  nan fails every comparison; the sum catches infinities.
-        ok = ((D > 0) & (y >= 0) & (phi1 > 0) & (phi1 <= math.pi) & (phi2 > 0)
-              & (phi2 <= math.pi) & (xp.maximum(d1, d2) < 0) & (xp.minimum(d3, d4) > 0)
-              & (h + y + mu1 + mu2 < math.inf))
+        ok = (
+            (D > 0)
+            & (y >= 0)
+            & (phi1 > 0)
+            & (phi1 <= math.pi)
+            & (phi2 > 0)
+            & (phi2 <= math.pi)
+            & (xp.maximum(d1, d2) < 0)
+            & (xp.minimum(d3, d4) > 0)
+            & (h + y + mu1 + mu2 < math.inf)
+        )
     return S, C, ok
 
 
@@ -141,8 +149,12 @@ def _margin_ok(xp: Any, p: list, margin: float) -> Any:
     for phi, mu in ((phi1, mu1), (phi2, mu2)):
         xi = xp.atan(mu)
         lo, up = phi - xi, phi + xi
-        m = ((lo + half > margin * half) & (half - lo > margin * half)
-             & (up - half > margin * half) & (3 * half - up > margin * 3 * half))
+        m = (
+            (lo + half > margin * half)
+            & (half - lo > margin * half)
+            & (up - half > margin * half)
+            & (3 * half - up > margin * 3 * half)
+        )
         ok = m if ok is None else ok & m
     return ok
 
@@ -160,7 +172,7 @@ def _blocks(xp: Any, arrays: list) -> list[list] | None:
     if n <= 2 * _CHUNK or any(a.ndim and a.shape != shape for a in arrays):
         return None
     flat = [a.reshape(-1) if a.ndim else a for a in arrays]
-    return [[a[lo:lo + _CHUNK] if a.ndim else a for a in flat] for lo in range(0, n, _CHUNK)]
+    return [[a[lo : lo + _CHUNK] if a.ndim else a for a in flat] for lo in range(0, n, _CHUNK)]
 
 
 # -- the public functions --------------------------------------------------------------------
@@ -179,8 +191,9 @@ def _quiet(fn: Any) -> Any:
 
 
 @_quiet
-def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
-          margin: float = 0.0) -> Any:
+def valid(
+    x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *, margin: float = 0.0
+) -> Any:
     """Which grasps lie in the domain of the method: condition (1) and the ranges.
 
     ``x1 + x2 > 0``, ``y >= 0``, ``0 < φ_i <= π``, ``μ_i > 0``, all finite (and
@@ -219,8 +232,9 @@ def valid(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
 
 
 @_quiet
-def closed_form(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
-                on_invalid: str = "raise") -> tuple[Any, Any]:
+def closed_form(
+    x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *, on_invalid: str = "raise"
+) -> tuple[Any, Any]:
     """``S_n`` and ``C_n`` of eqs. (28)-(39), ``V_n = (S_n, C_n)`` (30), (33), of many grasps.
 
     Parameters
@@ -260,8 +274,18 @@ def closed_form(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: A
 
 
 @_quiet
-def k(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
-      on_invalid: str = "raise") -> Any:
+def k(
+    theta: Any,
+    x1: Any,
+    x2: Any,
+    y: Any,
+    phi1: Any,
+    phi2: Any,
+    mu1: Any,
+    mu2: Any,
+    *,
+    on_invalid: str = "raise",
+) -> Any:
     """The lower limits ``k_n(θ) = S_n sin θ − C_n cos θ`` (eqs. (27), (32)) of many grasps.
 
     ``theta`` broadcasts with the parameters; the result has shape
@@ -297,8 +321,18 @@ def _k_grasp(xp: Any, theta: Any, p: list, on_invalid: str) -> tuple[Any, Any, l
 
 
 @_quiet
-def k_grasp(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any, *,
-            on_invalid: str = "raise") -> Any:
+def k_grasp(
+    theta: Any,
+    x1: Any,
+    x2: Any,
+    y: Any,
+    phi1: Any,
+    phi2: Any,
+    mu1: Any,
+    mu2: Any,
+    *,
+    on_invalid: str = "raise",
+) -> Any:
     """The least internal-force parameter ``max(k_1, k_2, k_3, k_4, 0)`` (eq. (25)).
 
     ``theta`` (rad, eq. (26)) broadcasts with the parameters; the result has
@@ -318,8 +352,19 @@ def k_grasp(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any
 
 
 @_quiet
-def internal_force(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any,
-                   mu2: Any, external_force: Any = 1.0, *, on_invalid: str = "raise") -> Any:
+def internal_force(
+    theta: Any,
+    x1: Any,
+    x2: Any,
+    y: Any,
+    phi1: Any,
+    phi2: Any,
+    mu1: Any,
+    mu2: Any,
+    external_force: Any = 1.0,
+    *,
+    on_invalid: str = "raise",
+) -> Any:
     """The least internal force ``F_int = k_grasp(θ)/(x1 + x2) · F_e`` (eq. (17)).
 
     ``external_force`` (F_e >= 0, broadcasting too) is not checked.
@@ -331,16 +376,30 @@ def internal_force(theta: Any, x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, m
     5.0
     """
     _check_mode(on_invalid)
-    xp, p, (t, fe) = _prepare((x1, x2, y, phi1, phi2, mu1, mu2), (theta, external_force),
-                              ("theta", "external_force"))
+    xp, p, (t, fe) = _prepare(
+        (x1, x2, y, phi1, phi2, mu1, mu2), (theta, external_force), ("theta", "external_force")
+    )
     kg = _k_grasp(xp, t, p, on_invalid)[0]
     return kg / (p[0] + p[1]) * fe
 
 
 @_quiet
-def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any,
-                  mass: Any, *, g: Any = 9.80665, accel: Any = 0.0, safety: Any = 1.0,
-                  per: str = "jaw", on_invalid: str = "raise") -> Any:
+def worst_squeeze(
+    x1: Any,
+    x2: Any,
+    y: Any,
+    phi1: Any,
+    phi2: Any,
+    mu1: Any,
+    mu2: Any,
+    mass: Any,
+    *,
+    g: Any = 9.80665,
+    accel: Any = 0.0,
+    safety: Any = 1.0,
+    per: str = "jaw",
+    on_invalid: str = "raise",
+) -> Any:
     """The squeeze that holds each part in every orientation, for many grasps.
 
     ``S_f m (g + A) max_n |V_n| / (x1 + x2)`` per jaw, twice that with
@@ -370,8 +429,11 @@ def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
     _check_mode(on_invalid)
     if per not in ("jaw", "total"):
         raise InputError(f"per: expected 'jaw' or 'total', got {per!r}")
-    xp, p, (m, gg, a, sf) = _prepare((x1, x2, y, phi1, phi2, mu1, mu2),
-                                     (mass, g, accel, safety), ("mass", "g", "accel", "safety"))
+    xp, p, (m, gg, a, sf) = _prepare(
+        (x1, x2, y, phi1, phi2, mu1, mu2),
+        (mass, g, accel, safety),
+        ("mass", "g", "accel", "safety"),
+    )
     factor = 1.0 if per == "jaw" else 2.0
     blocks = _blocks(xp, [*p, m, gg, a, sf])
     if blocks is None:
@@ -383,7 +445,9 @@ def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
         out, ok = np.empty(math.prod(shape)), np.empty(math.prod(shape), dtype=bool)
         for lo, b in zip(range(0, out.size, _CHUNK), blocks):
             bm, bg, ba, bsf = b[7:]  # the block's mass, g, acceleration, safety factor
-            out[lo:lo + _CHUNK], ok[lo:lo + _CHUNK] = _squeeze(xp, b[:7], bm, bg, ba, bsf, factor)
+            out[lo : lo + _CHUNK], ok[lo : lo + _CHUNK] = _squeeze(
+                xp, b[:7], bm, bg, ba, bsf, factor
+            )
         out, ok = out.reshape(shape), ok.reshape(shape)
     if on_invalid == "raise":
         _refuse(xp, [xp.broadcast_to(v, shape) for v in p], ok)
@@ -391,8 +455,7 @@ def worst_squeeze(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2:
     return _nan_where(xp, ok, out)
 
 
-def _squeeze(xp: Any, p: list, m: Any, g: Any, a: Any, sf: Any, factor: float
-             ) -> tuple[Any, Any]:
+def _squeeze(xp: Any, p: list, m: Any, g: Any, a: Any, sf: Any, factor: float) -> tuple[Any, Any]:
     S, C, ok = _core(xp, p)
     with np.errstate(all="ignore"):
         r2 = None

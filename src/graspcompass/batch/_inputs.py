@@ -86,14 +86,20 @@ def _refuse(xp: Any, p: list, ok: Any) -> None:
     first = int(xp.argmax(_astype(xp, bad, xp.int8)))
     shape = tuple(ok.shape)
     index = tuple(int(i) for i in np.unravel_index(first, shape)) if shape else ()
-    vals = {name: float(xp.reshape(xp.broadcast_to(a, shape), (-1,))[first])
-            for name, a in zip(PARAMETERS, p)}
+    vals = {
+        name: float(xp.reshape(xp.broadcast_to(a, shape), (-1,))[first])
+        for name, a in zip(PARAMETERS, p)
+    }
     reason = _reason(vals)
     shown = ", ".join(f"{k}={v!r}" for k, v in vals.items())
     raise InvalidGraspsError(
         f"{count} of {math.prod(shape)} grasps are invalid; the first, at index {index} "
         f"({shown}), fails {reason}. Pass on_invalid='nan' for nan results there, or "
-        "select the valid ones with graspcompass.batch.valid", index, count, reason)
+        "select the valid ones with graspcompass.batch.valid",
+        index,
+        count,
+        reason,
+    )
 
 
 def _outside(v: Any, name: str) -> Any:
@@ -113,16 +119,17 @@ def _outside(v: Any, name: str) -> Any:
     if isinstance(v, (list, tuple)):
         n = _nested_size(v)
         if n > MAX_ARRAY_SIZE:
-            raise InputTooLargeError(f"{name}: a list of about {n} values; at most "
-                                     f"{MAX_ARRAY_SIZE} (give an array)")
+            raise InputTooLargeError(
+                f"{name}: a list of about {n} values; at most {MAX_ARRAY_SIZE} (give an array)"
+            )
         try:
             return np.asarray(v)
         except (ValueError, TypeError, OverflowError):
-            raise WrongTypeError(f"{name}: expected numbers, got a ragged or mixed list") \
-                from None
+            raise WrongTypeError(f"{name}: expected numbers, got a ragged or mixed list") from None
     if isinstance(v, (str, bytes, dict, set, type(None))):
-        raise WrongTypeError(f"{name}: expected numbers or an array, got "
-                             f"{type(v).__name__} {str(v)[:40]!r}")
+        raise WrongTypeError(
+            f"{name}: expected numbers or an array, got {type(v).__name__} {str(v)[:40]!r}"
+        )
     if isinstance(v, (numbers.Real, Decimal)) or type(v).__module__.startswith("sympy"):
         from ..boundary.inputs import real_value  # loads sympy: only for such values
 
@@ -141,23 +148,27 @@ def _prepare(values: tuple, extra: tuple = (), extra_names: tuple = ()) -> tuple
     try:
         xp = _namespace(*values)
     except TypeError as exc:
-        raise WrongTypeError(f"the arguments mix array libraries or are not arrays: "
-                             f"{str(exc)[:120]}") from None
+        raise WrongTypeError(
+            f"the arguments mix array libraries or are not arrays: {str(exc)[:120]}"
+        ) from None
     arrs = _floats(xp, values, names)
     shapes = [tuple(a.shape) for a in arrs]
     try:
         shape = np.broadcast_shapes(*shapes)
     except (ValueError, TypeError):  # dask's unknown sizes are None: not checked here
         if any(None in s or any(isinstance(d, float) for d in s) for s in shapes):
-            return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
-        raise InputError("the arguments do not broadcast together: shapes "
-                         + ", ".join(f"{n} {s}" for n, s in zip(names, shapes))) from None
+            return xp, arrs[: len(PARAMETERS)], arrs[len(PARAMETERS) :]
+        raise InputError(
+            "the arguments do not broadcast together: shapes "
+            + ", ".join(f"{n} {s}" for n, s in zip(names, shapes))
+        ) from None
     size, largest = math.prod(shape), max((math.prod(s) for s in shapes), default=1)
     if size > MAX_ARRAY_SIZE and size > largest and not _is(xp, "dask"):
         raise InputTooLargeError(
             f"the arguments broadcast to shape {shape}, {size} grasps, from arrays of at most "
-            f"{largest}: beyond {MAX_ARRAY_SIZE} the caller makes the full-size arrays")
-    return xp, arrs[:len(PARAMETERS)], arrs[len(PARAMETERS):]
+            f"{largest}: beyond {MAX_ARRAY_SIZE} the caller makes the full-size arrays"
+        )
+    return xp, arrs[: len(PARAMETERS)], arrs[len(PARAMETERS) :]
 
 
 def _check_mode(on_invalid: str) -> None:

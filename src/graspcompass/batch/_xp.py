@@ -28,8 +28,9 @@ def _namespace(*values: Any) -> Any:
     except ImportError:  # numpy alone works without array-api-compat
         if all(isinstance(v, np.ndarray) for v in arrays):
             return np
-        raise ImportError("arrays other than numpy need array-api-compat: pip install "
-                          "'graspcompass[batch]'") from None
+        raise ImportError(
+            "arrays other than numpy need array-api-compat: pip install 'graspcompass[batch]'"
+        ) from None
     if not arrays:
         arrays = [np.empty(0)]
     return array_namespace(*arrays)
@@ -110,8 +111,9 @@ def _sincos(xp: Any, x: Any) -> tuple[Any, Any]:
     return xp.reshape(s, shape), xp.reshape(c, shape)
 
 
-def _sincos_numpy(x: np.ndarray, s_tab: np.ndarray, c_tab: np.ndarray
-                  ) -> tuple[np.ndarray, np.ndarray]:
+def _sincos_numpy(
+    x: np.ndarray, s_tab: np.ndarray, c_tab: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """:func:`_sincos` for numpy, operation for operation (bit-identical), in place."""
     shape, x = x.shape, x.reshape(-1)
     j = np.multiply(x, _envelope._INV_H)

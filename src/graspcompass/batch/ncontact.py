@@ -32,10 +32,10 @@ def _rows(contacts: np.ndarray, weights: np.ndarray, com: np.ndarray) -> tuple:
     nrm = contacts[..., 2:4] / np.linalg.norm(contacts[..., 2:4], axis=-1, keepdims=True)
     mu = contacts[..., 4:5]
     jn = np.stack([-nrm[..., 1], nrm[..., 0]], axis=-1)
-    d = np.stack([nrm + mu * jn, nrm - mu * jn], axis=-2)          # (..., n, 2, 2)
+    d = np.stack([nrm + mu * jn, nrm - mu * jn], axis=-2)  # (..., n, 2, 2)
     pp = np.broadcast_to(p[..., None, :], d.shape)
     torque = pp[..., 0] * d[..., 1] - pp[..., 1] * d[..., 0]
-    G = np.concatenate([d, torque[..., None]], axis=-1)            # (..., n, 2, 3)
+    G = np.concatenate([d, torque[..., None]], axis=-1)  # (..., n, 2, 3)
     c = (weights[..., None] * np.ones(2)) * np.einsum("...k,...sk->...s", nrm, d)
     shape = (*G.shape[:-3], G.shape[-3] * 2)
     return G.reshape((*shape, 3)), c.reshape(shape)
@@ -51,12 +51,18 @@ def _q_rays(G: np.ndarray) -> np.ndarray:
     dots = np.einsum("...jk,...pk->...pj", G, r)
     gn = np.linalg.norm(G, axis=-1)[..., None, :]
     moving = np.linalg.norm(r[..., :2], axis=-1) > 1e-12
-    return np.concatenate([np.all(sg * dots <= _TOL * gn, axis=-1) & moving
-                           for sg in (1.0, -1.0)], axis=-1)
+    return np.concatenate(
+        [np.all(sg * dots <= _TOL * gn, axis=-1) & moving for sg in (1.0, -1.0)], axis=-1
+    )
 
 
-def ncontact_k(contacts: Any, theta: Any, effort: Any = "sum-normal", com: Any = (0.0, 0.0),
-               external_force: float = 1.0) -> np.ndarray:
+def ncontact_k(
+    contacts: Any,
+    theta: Any,
+    effort: Any = "sum-normal",
+    com: Any = (0.0, 0.0),
+    external_force: float = 1.0,
+) -> np.ndarray:
     """The least effort of each grasp at each θ: shape ``broadcast(grasps) + θ.shape``.
 
     Parameters
@@ -93,43 +99,48 @@ def ncontact_k(contacts: Any, theta: Any, effort: Any = "sum-normal", com: Any =
     else:
         w = np.broadcast_to(np.asarray(effort, dtype=float), P.shape[:-1])
     com = np.broadcast_to(np.asarray(com, dtype=float), (*P.shape[:-2], 2))
-    G, c = _rows(P, w, com)                                        # (..., 2n, 3), (..., 2n)
+    G, c = _rows(P, w, com)  # (..., 2n, 3), (..., 2n)
     combos = np.array(list(itertools.combinations(range(2 * n), 3)))
-    A = G[..., combos, :]                                          # (..., C, 3, 3)
-    b = c[..., combos]                                             # (..., C, 3)
+    A = G[..., combos, :]  # (..., C, 3, 3)
+    b = c[..., combos]  # (..., C, 3)
     scale = np.prod(np.linalg.norm(A, axis=-1), axis=-1)
     det = np.linalg.det(A)
     ok = np.abs(det) > 1e-12 * scale
     A_safe = np.where(ok[..., None, None], A, np.eye(3))
-    y = np.linalg.solve(A_safe, b[..., None])[..., 0]              # (..., C, 3)
+    y = np.linalg.solve(A_safe, b[..., None])[..., 0]  # (..., C, 3)
     slack = c[..., None, :] - np.einsum("...jk,...ck->...cj", G, y)
-    tol = _TOL * (1.0 + np.abs(c)[..., None, :] + np.linalg.norm(G, axis=-1)[..., None, :]
-                  * np.linalg.norm(y, axis=-1)[..., None])
-    feas = ok & np.all(slack >= -tol, axis=-1)                     # (..., C)
+    tol = _TOL * (
+        1.0
+        + np.abs(c)[..., None, :]
+        + np.linalg.norm(G, axis=-1)[..., None, :] * np.linalg.norm(y, axis=-1)[..., None]
+    )
+    feas = ok & np.all(slack >= -tol, axis=-1)  # (..., C)
     q = -y[..., :2]
     th = np.asarray(theta, dtype=float)
     e = np.stack([np.sin(th), -np.cos(th)], axis=-1).reshape(-1, 2)
     val = np.einsum("...ck,tk->...ct", q, e)
-    val = np.where(feas[..., None], val, -np.inf).max(axis=-2)     # (..., T)
+    val = np.where(feas[..., None], val, -np.inf).max(axis=-2)  # (..., T)
     # recession directions of the dual: r with G r <= 0 (from pairs of rows, both signs)
     pairs = np.array(list(itertools.combinations(range(2 * n), 2)))
-    r = np.cross(G[..., pairs[:, 0], :], G[..., pairs[:, 1], :])   # (..., Pp, 3)
+    r = np.cross(G[..., pairs[:, 0], :], G[..., pairs[:, 1], :])  # (..., Pp, 3)
     r = r / np.maximum(np.linalg.norm(r, axis=-1, keepdims=True), 1e-300)
     dots = np.einsum("...jk,...pk->...pj", G, r)
     gn = np.linalg.norm(G, axis=-1)[..., None, :]
     unbounded = np.zeros(val.shape, dtype=bool)
     for sg in (1.0, -1.0):
-        ray = np.all(sg * dots <= _TOL * gn, axis=-1) & (np.linalg.norm(r[..., :2], axis=-1)
-                                                          > 1e-12)
-        rho = -sg * r[..., :2]                                     # Q's direction: -r_f
+        ray = np.all(sg * dots <= _TOL * gn, axis=-1) & (
+            np.linalg.norm(r[..., :2], axis=-1) > 1e-12
+        )
+        rho = -sg * r[..., :2]  # Q's direction: -r_f
         hit = np.einsum("...pk,tk->...pt", rho, e) > 1e-12
         unbounded |= np.any(ray[..., None] & hit, axis=-2)
     out = np.where(unbounded | ~np.isfinite(val), math.inf, val) * external_force
     return out.reshape(val.shape[:-1] + th.shape)
 
 
-def ncontact_worst(contacts: Any, effort: Any = "sum-normal", com: Any = (0.0, 0.0),
-                   external_force: float = 1.0) -> np.ndarray:
+def ncontact_worst(
+    contacts: Any, effort: Any = "sum-normal", com: Any = (0.0, 0.0), external_force: float = 1.0
+) -> np.ndarray:
     """``F_e max_q |q|`` per grasp (the worst direction's least effort): shape ``(...)``.
 
     ``inf`` without force closure.  The maximum of ``|q|`` over Q is reached at a vertex and
@@ -139,21 +150,27 @@ def ncontact_worst(contacts: Any, effort: Any = "sum-normal", com: Any = (0.0, 0
     if P.ndim < 2 or P.shape[-1] != 5 or P.shape[-2] < 2:
         raise ValueError(f"contacts: expected shape (..., n >= 2, 5), got {P.shape}")
     n = P.shape[-2]
-    w = (np.ones(P.shape[:-1]) if isinstance(effort, str) and effort == "sum-normal" else
-         np.broadcast_to(np.asarray(effort, dtype=float), P.shape[:-1]))
+    w = (
+        np.ones(P.shape[:-1])
+        if isinstance(effort, str) and effort == "sum-normal"
+        else np.broadcast_to(np.asarray(effort, dtype=float), P.shape[:-1])
+    )
     comb = np.broadcast_to(np.asarray(com, dtype=float), (*P.shape[:-2], 2))
     G, c = _rows(P, w, comb)
     combos = np.array(list(itertools.combinations(range(2 * n), 3)))
     A = G[..., combos, :]
     scale = np.prod(np.linalg.norm(A, axis=-1), axis=-1)
     ok = np.abs(np.linalg.det(A)) > 1e-12 * scale
-    y = np.linalg.solve(np.where(ok[..., None, None], A, np.eye(3)),
-                        c[..., combos][..., None])[..., 0]
+    y = np.linalg.solve(np.where(ok[..., None, None], A, np.eye(3)), c[..., combos][..., None])[
+        ..., 0
+    ]
     slack = c[..., None, :] - np.einsum("...jk,...ck->...cj", G, y)
-    tol = _TOL * (1.0 + np.abs(c)[..., None, :] + np.linalg.norm(G, axis=-1)[..., None, :]
-                  * np.linalg.norm(y, axis=-1)[..., None])
+    tol = _TOL * (
+        1.0
+        + np.abs(c)[..., None, :]
+        + np.linalg.norm(G, axis=-1)[..., None, :] * np.linalg.norm(y, axis=-1)[..., None]
+    )
     feas = ok & np.all(slack >= -tol, axis=-1)
     r2 = np.where(feas, y[..., 0] ** 2 + y[..., 1] ** 2, -np.inf).max(axis=-1)
     held = ~np.any(_q_rays(G), axis=-1)
-    return np.where(held & np.isfinite(r2), np.sqrt(np.maximum(r2, 0.0)), math.inf) * \
-        external_force
+    return np.where(held & np.isfinite(r2), np.sqrt(np.maximum(r2, 0.0)), math.inf) * external_force

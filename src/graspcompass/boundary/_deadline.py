@@ -36,8 +36,10 @@ _EARLY = 0.005  # an alarm may ring this much before the monotonic clock agrees
 @contextlib.contextmanager
 def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[None]:
     """Raise ``error()`` inside the block if it is still running after ``seconds``."""
-    if not hasattr(signal, "setitimer") or threading.current_thread() is not \
-            threading.main_thread():  # pragma: no cover
+    if (
+        not hasattr(signal, "setitimer")
+        or threading.current_thread() is not threading.main_thread()
+    ):  # pragma: no cover
         yield
         return
     now = time.monotonic()
@@ -52,8 +54,10 @@ def deadline(seconds: float, error: Callable[[], BaseException]) -> Iterator[Non
         raise error()
 
     signal.signal(signal.SIGALRM, _ring)
-    signal.setitimer(signal.ITIMER_REAL,
-                     max(min(seconds, outer_left) if outer_end is not None else seconds, 1e-4))
+    signal.setitimer(
+        signal.ITIMER_REAL,
+        max(min(seconds, outer_left) if outer_end is not None else seconds, 1e-4),
+    )
     try:
         yield
     finally:
@@ -67,6 +71,10 @@ def command_deadline(seconds: float | None) -> contextlib.AbstractContextManager
     """The ``--timeout`` of a command: :class:`OutOfTime` after ``seconds`` (None: none)."""
     if seconds is None:
         return contextlib.nullcontext()
-    return deadline(seconds, lambda: OutOfTime(
-        f"the command took longer than {seconds:g} s (--timeout S allows more): its input "
-        "makes too much work"))
+    return deadline(
+        seconds,
+        lambda: OutOfTime(
+            f"the command took longer than {seconds:g} s (--timeout S allows more): its input "
+            "makes too much work"
+        ),
+    )

@@ -38,8 +38,9 @@ def read_bounded(path: str | os.PathLike[str], limit: int) -> bytes:
         ``path`` is not a file name (``str`` or :class:`os.PathLike` of one).
     """
     if not isinstance(path, (str, os.PathLike)) or not isinstance(os.fspath(path), str):
-        raise WrongTypeError(f"expected a file name (str or pathlib.Path), got "
-                             f"{type(path).__name__}")
+        raise WrongTypeError(
+            f"expected a file name (str or pathlib.Path), got {type(path).__name__}"
+        )
     name = os.fspath(path)
     try:
         if name == "-":
@@ -49,8 +50,11 @@ def read_bounded(path: str | os.PathLike[str], limit: int) -> bytes:
             with os.fdopen(fd, "rb") as f:
                 mode = os.fstat(f.fileno()).st_mode
                 if not stat.S_ISREG(mode):
-                    what = "a folder" if stat.S_ISDIR(mode) else (
-                        "a FIFO" if stat.S_ISFIFO(mode) else "not a regular file")
+                    what = (
+                        "a folder"
+                        if stat.S_ISDIR(mode)
+                        else ("a FIFO" if stat.S_ISFIFO(mode) else "not a regular file")
+                    )
                     raise InputError(f"cannot read {name!r}: it is {what}; give a file")
                 data = f.read(limit + 1)
     except OSError as exc:

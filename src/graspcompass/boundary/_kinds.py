@@ -9,8 +9,15 @@ from ._numpy import is_a
 
 
 def _kind(value: object) -> str:
-    kinds = {type(None): "None", bool: "a bool", dict: "a dict", list: "a list",
-             tuple: "a tuple", set: "a set", bytes: "bytes"}
+    kinds = {
+        type(None): "None",
+        bool: "a bool",
+        dict: "a dict",
+        list: "a list",
+        tuple: "a tuple",
+        set: "a set",
+        bytes: "bytes",
+    }
     if is_a(value, "bool_"):
         return "a bool"
     kind = type(value).__name__

@@ -49,8 +49,9 @@ def _name_max(folder: Path) -> int:
         return 255
 
 
-def check_folder(folder: str | os.PathLike[str],
-                 path: str | os.PathLike[str] | None = None) -> Path:
+def check_folder(
+    folder: str | os.PathLike[str], path: str | os.PathLike[str] | None = None
+) -> Path:
     """``folder`` as a :class:`~pathlib.Path` if files can be written in it.
 
     Parameters
@@ -87,8 +88,11 @@ def check_folder(folder: str | os.PathLike[str],
     if full:
         raise _fail(shown, "no space left on the device")
     if virtual and path is not None and not os.path.lexists(path):  # /proc, /sys: no storage
-        raise _fail(shown, f"the folder {str(d)!r} is on a virtual file system (such as /proc "
-                           "or /sys), where no new file can be made")
+        raise _fail(
+            shown,
+            f"the folder {str(d)!r} is on a virtual file system (such as /proc "
+            "or /sys), where no new file can be made",
+        )
     return d
 
 
@@ -226,8 +230,9 @@ def finite_record(record: Any, advice: str, where: str = "") -> None:
     from .errors import NonFiniteValueError
 
     if isinstance(record, float) and not math.isfinite(record):
-        raise NonFiniteValueError(f"{where or 'a result'} is {record}, beyond double precision: "
-                                  f"{advice}")
+        raise NonFiniteValueError(
+            f"{where or 'a result'} is {record}, beyond double precision: {advice}"
+        )
     if isinstance(record, dict):
         for key, value in record.items():
             finite_record(value, advice, f"{where}.{key}" if where else str(key))

@@ -67,22 +67,49 @@ _ALLOWED = (
     " and parentheses are allowed"
 )
 _FUNCTIONS: dict[str, tuple[Callable[..., sympy.Expr], int]] = {
-    "sqrt": (sympy.sqrt, 1), "sin": (sympy.sin, 1), "cos": (sympy.cos, 1), "tan": (sympy.tan, 1),
-    "asin": (sympy.asin, 1), "acos": (sympy.acos, 1), "atan": (sympy.atan, 1),
+    "sqrt": (sympy.sqrt, 1),
+    "sin": (sympy.sin, 1),
+    "cos": (sympy.cos, 1),
+    "tan": (sympy.tan, 1),
+    "asin": (sympy.asin, 1),
+    "acos": (sympy.acos, 1),
+    "atan": (sympy.atan, 1),
     "atan2": (sympy.atan2, 2),
 }
 _CONSTANTS: dict[str, sympy.Expr] = {"pi": sympy.pi, "deg": _DEGREE}
 _BINOPS: dict[type, Callable[[sympy.Expr, sympy.Expr], sympy.Expr]] = {
-    ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-    ast.Div: operator.truediv, ast.Pow: operator.pow,
+    ast.Add: operator.add,
+    ast.Sub: operator.sub,
+    ast.Mult: operator.mul,
+    ast.Div: operator.truediv,
+    ast.Pow: operator.pow,
 }
-_OPERATORS = {ast.FloorDiv: "//", ast.Mod: "%", ast.MatMult: "@", ast.BitAnd: "&",
-              ast.BitOr: "|", ast.BitXor: "^", ast.LShift: "<<", ast.RShift: ">>",
-              ast.Invert: "~", ast.Not: "not"}
-_FOUND = {ast.Attribute: "attribute access", ast.Subscript: "subscript", ast.Lambda: "lambda",
-          ast.IfExp: "conditional expression", ast.Compare: "comparison",
-          ast.BoolOp: "boolean operator", ast.List: "list", ast.Tuple: "tuple", ast.Set: "set",
-          ast.Dict: "dict", ast.NamedExpr: "assignment", ast.JoinedStr: "f-string"}
+_OPERATORS = {
+    ast.FloorDiv: "//",
+    ast.Mod: "%",
+    ast.MatMult: "@",
+    ast.BitAnd: "&",
+    ast.BitOr: "|",
+    ast.BitXor: "^",
+    ast.LShift: "<<",
+    ast.RShift: ">>",
+    ast.Invert: "~",
+    ast.Not: "not",
+}
+_FOUND = {
+    ast.Attribute: "attribute access",
+    ast.Subscript: "subscript",
+    ast.Lambda: "lambda",
+    ast.IfExp: "conditional expression",
+    ast.Compare: "comparison",
+    ast.BoolOp: "boolean operator",
+    ast.List: "list",
+    ast.Tuple: "tuple",
+    ast.Set: "set",
+    ast.Dict: "dict",
+    ast.NamedExpr: "assignment",
+    ast.JoinedStr: "f-string",
+}
 _DECIMAL_EXPONENT = re.compile(r"[eE]([-+]?\d+)$")
 _NAME_TAIL = re.compile(r"[\w.]*$")
 
@@ -119,8 +146,9 @@ def _fail(text: str, why: str) -> ExpressionError:
 
 def _refuse(text: str, found: str) -> ExpressionError:
     if found == "tuple":  # a comma between numbers: 0,5 written for 0.5
-        return _fail(text, "a comma is not part of a number: the decimal separator is a point "
-                           "(0.5, not 0,5)")
+        return _fail(
+            text, "a comma is not part of a number: the decimal separator is a point (0.5, not 0,5)"
+        )
     return _fail(text, f"{_ALLOWED} (found {found})")
 
 
@@ -144,8 +172,13 @@ def _split_unit(text: str) -> tuple[str, bool]:
 class _Reader:
     """Walk an :mod:`ast` tree with a whitelist, building sympy objects within the limits."""
 
-    def __init__(self, source: str, text: str, symbols: Mapping[str, sympy.Expr] | None,
-                 inherited: Mapping[str, tuple[Condition, ...]] | None = None):
+    def __init__(
+        self,
+        source: str,
+        text: str,
+        symbols: Mapping[str, sympy.Expr] | None,
+        inherited: Mapping[str, tuple[Condition, ...]] | None = None,
+    ):
         self.source, self.text, self.symbols = source, text, dict(symbols or {})
         self.inherited = dict(inherited or {})  # a name's own conditions (a let value)
         self.conditions: dict[Condition, None] = {}  # collected as written, in order
@@ -163,11 +196,17 @@ class _Reader:
         if infinite:
             raise _fail(self.text, "the value is not finite (division by zero?)")
         if bits > MAX_BITS:
-            raise _fail(self.text, f"a number in the value has more than {MAX_BITS} bits "
-                        f"(about {_digits(MAX_BITS)} decimal digits)")
+            raise _fail(
+                self.text,
+                f"a number in the value has more than {MAX_BITS} bits "
+                f"(about {_digits(MAX_BITS)} decimal digits)",
+            )
         if nodes > MAX_NODES:
-            raise _fail(self.text, f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
-                        "out at length); simplify the text")
+            raise _fail(
+                self.text,
+                f"the value grows beyond {MAX_NODES} nodes (sympy writes it "
+                "out at length); simplify the text",
+            )
         self._degree_at_most(_degree(value), value)
         return value
 
@@ -175,19 +214,26 @@ class _Reader:
         """Refuse a value whose polynomial would be too large to compute with exactly:
         degree over :data:`MAX_DEGREE`, or more than :data:`MAX_TERMS` possible terms
         (``C(n + degree, n)`` in ``n`` names), known before anything is expanded."""
-        if degree == 0 or (degree <= MAX_DEGREE and math.comb(len(self.symbols) + degree, degree)
-                           <= MAX_TERMS):
+        if degree == 0 or (
+            degree <= MAX_DEGREE and math.comb(len(self.symbols) + degree, degree) <= MAX_TERMS
+        ):
             return  # within the budget whatever names the value uses
         names = sorted(map(str, value.free_symbols))
         shown = ", ".join(names)
         if degree > MAX_DEGREE:
-            raise _fail(self.text, f"the value would have degree {degree} in {shown}, more "
-                        f"than {MAX_DEGREE} (too costly to compute exactly)")
+            raise _fail(
+                self.text,
+                f"the value would have degree {degree} in {shown}, more "
+                f"than {MAX_DEGREE} (too costly to compute exactly)",
+            )
         terms = math.comb(len(names) + degree, degree)
         if terms > MAX_TERMS:
-            raise _fail(self.text, f"the value would have degree {degree} in {len(names)} names "
-                        f"({shown}): up to {terms} terms, more than {MAX_TERMS} (too costly to "
-                        "compute exactly)")
+            raise _fail(
+                self.text,
+                f"the value would have degree {degree} in {len(names)} names "
+                f"({shown}): up to {terms} terms, more than {MAX_TERMS} (too costly to "
+                "compute exactly)",
+            )
 
     def _divisor(self, value: sympy.Expr) -> None:
         """Refuse dividing by a number that is 0, also in disguise.
@@ -203,8 +249,10 @@ class _Reader:
         if sign is None and not _has_function(value):
             sign = _algebraic_sign(value)
         if sign == 0:
-            raise _fail(self.text, f"the value is not finite (division by {_short(value)}, "
-                        "which is exactly 0)")
+            raise _fail(
+                self.text,
+                f"the value is not finite (division by {_short(value)}, which is exactly 0)",
+            )
         if sign is None:
             self._sign(value, value)  # raises: cannot decide the sign
 
@@ -272,8 +320,11 @@ class _Reader:
     def _spend(self, value: sympy.Expr) -> None:
         self.work += _total_bits(value)
         if self.work > MAX_WORK_BITS:
-            raise _fail(self.text, f"the numbers in its roots and functions add up to more than "
-                        f"{MAX_WORK_BITS} bits (too costly to compute exactly)")
+            raise _fail(
+                self.text,
+                f"the numbers in its roots and functions add up to more than "
+                f"{MAX_WORK_BITS} bits (too costly to compute exactly)",
+            )
 
     def _call(self, node: ast.Call) -> sympy.Expr:
         if not isinstance(node.func, ast.Name):
@@ -293,9 +344,12 @@ class _Reader:
         args = [self.read(arg) for arg in node.args]
         for arg in args:
             if name != "sqrt" and _max_bits(arg) > MAX_ARGUMENT_BITS:
-                raise _fail(self.text, f"the argument of {name} holds a number of more than "
-                            f"{MAX_ARGUMENT_BITS} bits (about {_digits(MAX_ARGUMENT_BITS)} "
-                            "decimal digits)")
+                raise _fail(
+                    self.text,
+                    f"the argument of {name} holds a number of more than "
+                    f"{MAX_ARGUMENT_BITS} bits (about {_digits(MAX_ARGUMENT_BITS)} "
+                    "decimal digits)",
+                )
             self._spend(arg)
         if name == "sqrt":
             self._real_root(args[0], sympy.Rational(1, 2))
@@ -330,15 +384,19 @@ class _Reader:
         sign = real_sign(value)
         if sign is None:
             where = "" if value == shown else f", needed for {_short(shown)}"
-            raise _fail(self.text, f"cannot decide the sign of {_short(value)} exactly (it is "
-                        f"zero or too close to zero to tell{where})")
+            raise _fail(
+                self.text,
+                f"cannot decide the sign of {_short(value)} exactly (it is "
+                f"zero or too close to zero to tell{where})",
+            )
         return sign
 
     def _complex(self, shown: sympy.Expr, approx: complex, why: str) -> None:
         sign = "-" if approx.imag < 0 else "+"
         value = f"{approx.real:.3g} {sign} {abs(approx.imag):.3g}*I"
         raise ComplexExpressionError(
-            _fail(self.text, f"{_short(shown)} = {value} is not a real number ({why})").args[0])
+            _fail(self.text, f"{_short(shown)} = {value} is not a real number ({why})").args[0]
+        )
 
     def _real_arcsine(self, name: str, arg: sympy.Expr) -> None:
         """Refuse ``asin(x)``, ``acos(x)`` for ``|x| > 1``: their values are complex."""
@@ -348,32 +406,43 @@ class _Reader:
             with mpmath.workdps(50):
                 x = _mpf(arg)
                 approx = complex(mpmath.asin(x) if name == "asin" else mpmath.acos(x))
-            self._complex(_FUNCTIONS[name][0](arg, evaluate=False), approx,
-                          f"{name} needs -1 <= x <= 1")
+            self._complex(
+                _FUNCTIONS[name][0](arg, evaluate=False), approx, f"{name} needs -1 <= x <= 1"
+            )
 
     def _real_root(self, base: sympy.Expr, exponent: sympy.Rational) -> None:
         """Refuse a negative base under a root: its principal value is complex."""
         if base.free_symbols or exponent.q == 1 or self._sign(base, base) >= 0:
             return
         approx = complex(mpmath.power(_mpf(base), mpmath.mpf(exponent.p) / exponent.q))
-        hint = ("a root of a negative number is complex" if exponent.q % 2 == 0 else
-                "the principal root of a negative number is complex; write -(8**(1/3)) for "
-                "the real cube root of -8")
+        hint = (
+            "a root of a negative number is complex"
+            if exponent.q % 2 == 0
+            else "the principal root of a negative number is complex; write -(8**(1/3)) for "
+            "the real cube root of -8"
+        )
         self._complex(sympy.Pow(base, exponent, evaluate=False), approx, hint)
 
     def _power(self, node: ast.BinOp) -> sympy.Expr:
         self._enter()
         base, exponent = self.read(node.left), self.read(node.right)
         if not exponent.is_Rational:
-            raise _fail(self.text, f"exponents must be rational numbers such as 2, -1 or 1/3 "
-                        f"(found {_short(exponent)})")
+            raise _fail(
+                self.text,
+                f"exponents must be rational numbers such as 2, -1 or 1/3 "
+                f"(found {_short(exponent)})",
+            )
         if abs(exponent.p) > MAX_EXPONENT or exponent.q > MAX_EXPONENT:
-            raise _fail(self.text, f"exponents p/q with |p| or q larger than {MAX_EXPONENT} are "
-                        "refused (they could take forever to compute)")
+            raise _fail(
+                self.text,
+                f"exponents p/q with |p| or q larger than {MAX_EXPONENT} are "
+                "refused (they could take forever to compute)",
+            )
         self._degree_at_most(_degree(base) * abs(exponent.p), base)
         if _max_bits(base) * abs(exponent.p) > MAX_BITS:
-            raise _fail(self.text, "the power is too large to compute exactly (more than "
-                        f"{MAX_BITS} bits)")
+            raise _fail(
+                self.text, f"the power is too large to compute exactly (more than {MAX_BITS} bits)"
+            )
         if exponent.q > 1:
             self._spend(base)  # an exact root may factor the integers of its base
             self._real_root(base, exponent)

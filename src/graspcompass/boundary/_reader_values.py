@@ -18,8 +18,17 @@ __all__ = ["real_sign"]
 
 #: What sympy may raise on a value it cannot handle; ``AttributeError`` is sympy's cache
 #: wrapper failing on a lazy "cannot determine truth value" message (sympy 1.12-1.14).
-_SYMPY_FAILURES = (ValueError, TypeError, ArithmeticError, AttributeError, RecursionError,
-                   MemoryError, IndexError, KeyError, NotImplementedError)
+_SYMPY_FAILURES = (
+    ValueError,
+    TypeError,
+    ArithmeticError,
+    AttributeError,
+    RecursionError,
+    MemoryError,
+    IndexError,
+    KeyError,
+    NotImplementedError,
+)
 
 
 def real_sign(value: sympy.Expr) -> int | None:
@@ -108,8 +117,11 @@ def _algebraic_sign(value: sympy.Expr) -> int | None:
     distinct roots and no ``pi``, its minimal polynomial decides: it is ``x`` exactly when
     the value is 0.
     """
-    roots = {p for p in sympy.preorder_traversal(value)
-             if p.is_Pow and p.exp.is_Rational and p.exp.q == 2}
+    roots = {
+        p
+        for p in sympy.preorder_traversal(value)
+        if p.is_Pow and p.exp.is_Rational and p.exp.q == 2
+    }
     try:
         denested = sympy.expand(value.xreplace({r: sympy.sqrtdenest(r) for r in roots}))
         if denested == 0:

@@ -72,7 +72,17 @@ class SymbolicValueError(InputError, TypeError):
 class OutputError(GraspCompassError):
     """An output that cannot be written (missing folder, full disk, no permission)."""
 
-for _cls in (GraspCompassError, InputError, ComplexValueError, NonFiniteValueError,
-             WrongTypeError, NotTextError, InputTooLargeError, SymbolicValueError, OutputError):
+
+for _cls in (
+    GraspCompassError,
+    InputError,
+    ComplexValueError,
+    NonFiniteValueError,
+    WrongTypeError,
+    NotTextError,
+    InputTooLargeError,
+    SymbolicValueError,
+    OutputError,
+):
     _cls.__module__ = "graspcompass.errors"  # pickled and documented under the public path
 del _cls

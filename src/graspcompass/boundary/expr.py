@@ -90,9 +90,12 @@ __all__ = [
 _PLAIN = re.compile(r"\s*(-?(?:0|[1-9][0-9]{0,8}))\s*|\s*([A-Za-z_][A-Za-z0-9_]*)\s*")
 
 
-def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
-           inherited: Mapping[str, tuple[Condition, ...]] | None = None,
-           out: list[Condition] | None = None) -> sympy.Expr:
+def _parse(
+    text: str,
+    symbols: Mapping[str, sympy.Expr] | None,
+    inherited: Mapping[str, tuple[Condition, ...]] | None = None,
+    out: list[Condition] | None = None,
+) -> sympy.Expr:
     if not isinstance(text, str):
         raise NotTextError(f"expected a str, got {type(text).__name__}")
     if len(text) > MAX_LENGTH:
@@ -104,12 +107,15 @@ def _parse(text: str, symbols: Mapping[str, sympy.Expr] | None,
             return sympy.Integer(int(plain.group(1)))
         name = plain.group(2)
         value = (symbols or {}).get(name)
-        if (isinstance(value, sympy.Symbol) and name not in _CONSTANTS
-                and not name.endswith("deg") and not name.startswith("__")
-                and not keyword.iskeyword(name)):
+        if (
+            isinstance(value, sympy.Symbol)
+            and name not in _CONSTANTS
+            and not name.endswith("deg")
+            and not name.startswith("__")
+            and not keyword.iskeyword(name)
+        ):
             if out is not None:
-                out += [c for c in dict.fromkeys((inherited or {}).get(name, ()))
-                        if c not in out]
+                out += [c for c in dict.fromkeys((inherited or {}).get(name, ())) if c not in out]
             return value
     body, degrees = _split_unit(text)
     source = body.strip()
@@ -172,9 +178,12 @@ def parse_exact(text: str, *, symbols: Mapping[str, sympy.Symbol] | None = None)
     return _parse(text, symbols)
 
 
-def parse_with_conditions(text: str, *, symbols: Mapping[str, sympy.Expr] | None = None,
-                          inherited: Mapping[str, tuple[Condition, ...]] | None = None
-                          ) -> tuple[sympy.Expr, tuple[Condition, ...]]:
+def parse_with_conditions(
+    text: str,
+    *,
+    symbols: Mapping[str, sympy.Expr] | None = None,
+    inherited: Mapping[str, tuple[Condition, ...]] | None = None,
+) -> tuple[sympy.Expr, tuple[Condition, ...]]:
     """:func:`parse_exact`, and the conditions under which the text is defined as written.
 
     sympy evaluates ``x*(x - y)/(x - y)`` to ``x`` and ``z/z`` to ``1`` as it builds the

@@ -144,16 +144,14 @@ def exact_denominators(value: sp.Expr, name: str) -> sp.Expr:
     from ..geometry.exact import canon, decide_zero, has_float
 
     for node in sp.preorder_traversal(value):
-        if not (node.is_Pow and node.exp.is_negative) or node.base.is_Atom \
-                or has_float(node.base):
+        if not (node.is_Pow and node.exp.is_negative) or node.base.is_Atom or has_float(node.base):
             continue
         zero = decide_zero(node.base)
         if zero is None:
             zero = decide_zero(canon(sp.sqrtdenest(node.base)))
         if zero is not False:
             what = "which is exactly 0" if zero else "which cannot be shown to be nonzero"
-            raise NonFiniteValueError(f"{name}: the value divides by {_shown(node.base)}, "
-                                      f"{what}")
+            raise NonFiniteValueError(f"{name}: the value divides by {_shown(node.base)}, {what}")
     return value
 
 
@@ -176,15 +174,20 @@ def _int_bits(name: str, *ints: int) -> None:
     """Refuse integers of more than :data:`~graspcompass.boundary.limits.MAX_INT_BITS` bits."""
     for i in ints:
         if i.bit_length() > MAX_INT_BITS:
-            raise InputTooLargeError(f"{name}: a number of {i.bit_length()} bits; at most "
-                                     f"{MAX_INT_BITS} bits (about {MAX_INT_BITS * 3 // 10} "
-                                     "decimal digits) are allowed")
+            raise InputTooLargeError(
+                f"{name}: a number of {i.bit_length()} bits; at most "
+                f"{MAX_INT_BITS} bits (about {MAX_INT_BITS * 3 // 10} "
+                "decimal digits) are allowed"
+            )
 
 
 def _sympy_value(value: sp.Basic, name: str, shown: object) -> sp.Expr:
     """Check a sympy object: an expression, finite, not complex, of bounded size."""
-    if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase) or value.has(
-            sp.AccumBounds):
+    if (
+        not isinstance(value, sp.Expr)
+        or isinstance(value, sp.MatrixBase)
+        or value.has(sp.AccumBounds)
+    ):
         raise WrongTypeError(f"{name}: expected a number, got {_kind(value)} {_shown(shown)}")
     for atom in value.atoms(sp.Rational):
         _int_bits(name, int(atom.p), int(atom.q))
@@ -268,17 +271,22 @@ def real_value(value: Any, name: str) -> sp.Expr:
             raise NonFiniteValueError(f"{name}: expected a finite number, got {_shown(value)}")
         digits, exponent = value.as_tuple()[1:]
         if (len(digits) + abs(int(exponent))) * 3.33 > MAX_INT_BITS:  # before 10**exponent
-            raise InputTooLargeError(f"{name}: the Decimal {_shown(value)} has more than "
-                                     f"{MAX_INT_BITS} bits; at most {MAX_INT_BITS} bits "
-                                     f"(about {MAX_INT_BITS * 3 // 10} decimal digits)")
+            raise InputTooLargeError(
+                f"{name}: the Decimal {_shown(value)} has more than "
+                f"{MAX_INT_BITS} bits; at most {MAX_INT_BITS} bits "
+                f"(about {MAX_INT_BITS * 3 // 10} decimal digits)"
+            )
         exact = Fraction(value)
         return sp.Rational(exact.numerator, exact.denominator)
     if isinstance(value, complex) or is_a(value, "complexfloating"):
         raise _complex(name, value)
     if is_a(value, "ndarray") and value.ndim == 0:
         return real_value(value.item(), name)
-    what = ("one number" if isinstance(value, (list, tuple, set)) or is_a(value, "ndarray")
-            else "a number")
+    what = (
+        "one number"
+        if isinstance(value, (list, tuple, set)) or is_a(value, "ndarray")
+        else "a number"
+    )
     raise WrongTypeError(f"{name}: expected {what}, got {_kind(value)} {_shown(value)}")
 
 
@@ -308,8 +316,11 @@ def float_value(value: Any, name: str) -> float:
     """
     if type(value) is float:  # not a numpy float: no long double to overflow
         out = value
-    elif isinstance(value, bool) or is_a(value, "bool_") or not (
-            isinstance(value, float) or is_a(value, "floating")):
+    elif (
+        isinstance(value, bool)
+        or is_a(value, "bool_")
+        or not (isinstance(value, float) or is_a(value, "floating"))
+    ):
         raise WrongTypeError(f"{name}: expected a float, got {_kind(value)} {_shown(value)}")
     else:
         with np.errstate(over="ignore", invalid="ignore"):  # a long double beyond a double
@@ -357,36 +368,44 @@ def float_array(value: Any, name: str) -> np.ndarray:
     theta: expected finite numbers, got theta[1] = nan
     """
     if isinstance(value, (list, tuple)) and _nested_size(value) > MAX_ARRAY_SIZE:
-        raise InputTooLargeError(f"{name}: more than {MAX_ARRAY_SIZE} values (a list of "
-                                 f"about {_nested_size(value)}), refused before it is copied")
+        raise InputTooLargeError(
+            f"{name}: more than {MAX_ARRAY_SIZE} values (a list of "
+            f"about {_nested_size(value)}), refused before it is copied"
+        )
     if not isinstance(value, np.ndarray):
         if not isinstance(value, (list, tuple)):
             raise WrongTypeError(f"{name}: expected an array of floats, got {_kind(value)}")
         try:
             value = np.asarray(value)
         except (ValueError, TypeError, OverflowError):
-            raise WrongTypeError(f"{name}: expected an array of numbers, got a ragged or "
-                                 f"mixed {_kind(value)[2:]}") from None
+            raise WrongTypeError(
+                f"{name}: expected an array of numbers, got a ragged or mixed {_kind(value)[2:]}"
+            ) from None
     if value.size > MAX_ARRAY_SIZE:
         raise InputTooLargeError(
-            f"{name}: an array of {value.size} values; at most {MAX_ARRAY_SIZE} are allowed")
+            f"{name}: an array of {value.size} values; at most {MAX_ARRAY_SIZE} are allowed"
+        )
     kind = value.dtype.kind
     if kind == "c":
-        raise ComplexValueError(f"{name}: expected real numbers, got a complex array "
-                                f"({value.dtype})")
+        raise ComplexValueError(
+            f"{name}: expected real numbers, got a complex array ({value.dtype})"
+        )
     if kind not in "iuf":
         what = {"b": "bools", "U": "text", "S": "bytes", "O": "Python objects"}.get(
-            kind, str(value.dtype))
-        raise WrongTypeError(f"{name}: expected an array of floats, got an array of {what}"
-                             + (" (give exact values one at a time, as text)"
-                                if kind in "UO" else ""))
+            kind, str(value.dtype)
+        )
+        raise WrongTypeError(
+            f"{name}: expected an array of floats, got an array of {what}"
+            + (" (give exact values one at a time, as text)" if kind in "UO" else "")
+        )
     out = np.asarray(value, dtype=float)
     finite = np.isfinite(out)
     if not finite.all():
         where = tuple(int(i) for i in np.argwhere(~finite)[0])
         index = ", ".join(map(str, where))
-        raise NonFiniteValueError(f"{name}: expected finite numbers, got "
-                                  f"{name}[{index}] = {float(out[where])!r}")
+        raise NonFiniteValueError(
+            f"{name}: expected finite numbers, got {name}[{index}] = {float(out[where])!r}"
+        )
     return out
 
 
@@ -491,8 +510,9 @@ def substitutions(
     True
     """
     if not isinstance(values, Mapping):
-        raise WrongTypeError(f"{name}: expected a mapping of symbols to values, got "
-                             f"{_kind(values)}")
+        raise WrongTypeError(
+            f"{name}: expected a mapping of symbols to values, got {_kind(values)}"
+        )
     if len(values) > MAX_SUBSTITUTIONS:
         raise InputTooLargeError(f"{name}: more than {MAX_SUBSTITUTIONS} entries")
     known = {s.name: s for s in symbols}
@@ -503,8 +523,9 @@ def substitutions(
         elif isinstance(key, str):
             symbol = known.get(key)
         else:
-            raise WrongTypeError(f"{name}: keys must be symbols or their names, got "
-                                 f"{_kind(key)} {_shown(key)}")
+            raise WrongTypeError(
+                f"{name}: keys must be symbols or their names, got {_kind(key)} {_shown(key)}"
+            )
         if symbol is None:
             if strict:
                 have = ", ".join(sorted(known)) or "none"

@@ -14,10 +14,23 @@ Examples
 
 from __future__ import annotations
 
-__all__ = ["COMMAND_SECONDS", "EXACT_ANGLES", "EXACT_VALUES", "MAX_ANGLES",
-           "MAX_ARGUMENT_BITS", "MAX_BITS", "MAX_DEGREE", "MAX_DEPTH", "MAX_EXPONENT",
-           "MAX_INT_BITS", "MAX_LENGTH", "MAX_LIST_LENGTH", "MAX_NODES", "MAX_TERMS",
-           "MAX_WORK_BITS"]
+__all__ = [
+    "COMMAND_SECONDS",
+    "EXACT_ANGLES",
+    "EXACT_VALUES",
+    "MAX_ANGLES",
+    "MAX_ARGUMENT_BITS",
+    "MAX_BITS",
+    "MAX_DEGREE",
+    "MAX_DEPTH",
+    "MAX_EXPONENT",
+    "MAX_INT_BITS",
+    "MAX_LENGTH",
+    "MAX_LIST_LENGTH",
+    "MAX_NODES",
+    "MAX_TERMS",
+    "MAX_WORK_BITS",
+]
 
 #: Longest text :func:`~graspcompass.expr.parse_exact` reads.
 MAX_LENGTH = 200

@@ -58,68 +58,93 @@ EXIT_STATUSES = {
     0: "done",
     1: "a check found a problem (verify, crosscheck; check: a claim refuted)",
     2: "a user error: a bad option or value, an input refused, an output that cannot be "
-       "written (one line on stderr)",
+    "written (one line on stderr)",
     3: "undecided (check: a claim neither proved nor refuted, or --timeout reached)",
-    4: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the "
-       "traceback)",
+    4: "an internal error, a bug (one line on stderr; GRASPCOMPASS_DEBUG=1 shows the traceback)",
     130: "interrupted",
 }
 _FORMATS = ("png", "svg", "pdf")
 
 
-
-
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of the ``graspcompass`` command."""
     p = _Parser(
-        prog="graspcompass", formatter_class=argparse.RawDescriptionHelpFormatter,
+        prog="graspcompass",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
         description=(
             "Ruler-and-compass internal force diagram of a two-point grasp "
             "(Ito, Tanaka, Sasaki, Robotica 2012). Without a command: the main job on "
-            "the paper's Fig. 6 grasp."),
-        epilog="exit status:\n" + "\n".join(
+            "the paper's Fig. 6 grasp."
+        ),
+        epilog="exit status:\n"
+        + "\n".join(
             textwrap.fill(v, 78, initial_indent=f"  {k:<4} ", subsequent_indent=" " * 7)
-            for k, v in EXIT_STATUSES.items())
-        + "\n\n" + textwrap.fill(
+            for k, v in EXIT_STATUSES.items()
+        )
+        + "\n\n"
+        + textwrap.fill(
             "outputs: every option value and output path is checked before any work; a "
             "missing folder is refused (only the main job's --out folder itself is made, and "
-            "it says so).", 78))
+            "it says so).",
+            78,
+        ),
+    )
     p.add_argument("--version", action="version", version=f"graspcompass {__version__}")
-    p.add_argument("--out", default="graspcompass-out", metavar="DIR",
-                   help="output folder of the main job (default: ./graspcompass-out; made if "
-                        "missing, in an existing folder)")
-    p.add_argument("-q", "--quiet", action="store_true", default=False,
-                   help="print nothing but errors")
+    p.add_argument(
+        "--out",
+        default="graspcompass-out",
+        metavar="DIR",
+        help="output folder of the main job (default: ./graspcompass-out; made if "
+        "missing, in an existing folder)",
+    )
+    p.add_argument(
+        "-q", "--quiet", action="store_true", default=False, help="print nothing but errors"
+    )
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
     d = sub.add_parser(
-        "draw", help="draw the diagram to a PNG, SVG or PDF file",
+        "draw",
+        help="draw the diagram to a PNG, SVG or PDF file",
         description="Draw the internal force diagram (Fig. 6): the friction cones, the "
-                    "construction of V1-V4 (§3.3), the four circles and their outer envelope, "
-                    "with the computer plot of k_grasp over the paper's recipe; or the "
-                    "drawing of a construction file, or the state after one step.",
-        epilog="exit status: 0, or 2 for a user error.")
+        "construction of V1-V4 (§3.3), the four circles and their outer envelope, "
+        "with the computer plot of k_grasp over the paper's recipe; or the "
+        "drawing of a construction file, or the state after one step.",
+        epilog="exit status: 0, or 2 for a user error.",
+    )
     _add_grasp_options(d)
     _file.add_file_options(d)
-    d.add_argument("-o", "--output", metavar="FILE",
-                   help="output file, in an existing folder (default: PRESET.png, or the "
-                        "construction file's name with .png)")
+    d.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file, in an existing folder (default: PRESET.png, or the "
+        "construction file's name with .png)",
+    )
     d.add_argument("--format", choices=_FORMATS, help="file format (default: from the extension)")
-    d.add_argument("--step", type=int, metavar="N",
-                   help="draw the state after protocol step N (default: the whole diagram)")
-    d.add_argument("--no-overlay", action="store_true",
-                   help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
-                        "the paper's recipe)")
+    d.add_argument(
+        "--step",
+        type=int,
+        metavar="N",
+        help="draw the state after protocol step N (default: the whole diagram)",
+    )
+    d.add_argument(
+        "--no-overlay",
+        action="store_true",
+        help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
+        "the paper's recipe)",
+    )
     quiet_option(d)
     from ._ncontact import add_options as _add_ncontact_draw
 
     _add_ncontact_draw(d)
 
     s = sub.add_parser(
-        "steps", help="print the construction protocol",
+        "steps",
+        help="print the construction protocol",
         description="Print the construction protocol of §3.3 (or of a construction file): "
-                    "each step's name, instrument, the paper's reference and its exact value.",
-        epilog="exit status: 0, or 2 for a user error.")
+        "each step's name, instrument, the paper's reference and its exact value.",
+        epilog="exit status: 0, or 2 for a user error.",
+    )
     _add_grasp_options(s)
     _file.add_file_options(s)
     s.add_argument("--json", action="store_true", help="print the steps as JSON")
@@ -128,32 +153,48 @@ def build_parser() -> argparse.ArgumentParser:
     _add_ncontact_steps(s)
 
     k = sub.add_parser(
-        "k", help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
+        "k",
+        help="k_n(θ), k_grasp(θ) and F_int (eqs. (17)-(25))",
         description="k_n(θ), k_grasp(θ) and F_int for a list of directions θ of the external "
-                    "force.",
+        "force.",
         epilog=f"limits: --theta is at most {limits.MAX_LIST_LENGTH} characters and gives at "
-               f"most {limits.MAX_ANGLES} angles. Up to {limits.EXACT_ANGLES} angles are read "
-               "exactly (the θ column shows pi/6); more are made in double precision from the "
-               "exact start and step of each range (a note on stderr says so) and the rows "
-               f"stream out as they are computed. --exact: at most {limits.EXACT_VALUES} "
-               "angles. Values that overflow a double (above 1.8e308) are refused. "
-               "exit status: 0, or 2 for a user error.")
+        f"most {limits.MAX_ANGLES} angles. Up to {limits.EXACT_ANGLES} angles are read "
+        "exactly (the θ column shows pi/6); more are made in double precision from the "
+        "exact start and step of each range (a note on stderr says so) and the rows "
+        f"stream out as they are computed. --exact: at most {limits.EXACT_VALUES} "
+        "angles. Values that overflow a double (above 1.8e308) are refused. "
+        "exit status: 0, or 2 for a user error.",
+    )
     _add_grasp_options(k)
-    k.add_argument("--theta", default="0:360:30deg", metavar="ANGLES",
-                   help="angles: a list and/or ranges start:stop:step (stop excluded), radians "
-                        "unless suffixed with deg (default: 0:360:30deg)")
-    k.add_argument("--external-force", default="1", metavar="EXPR",
-                   help="magnitude F_e of the external force, finite and >= 0 (default: 1)")
-    k.add_argument("--exact", action="store_true",
-                   help=f"also print exact values (at most {limits.EXACT_VALUES} angles)")
+    k.add_argument(
+        "--theta",
+        default="0:360:30deg",
+        metavar="ANGLES",
+        help="angles: a list and/or ranges start:stop:step (stop excluded), radians "
+        "unless suffixed with deg (default: 0:360:30deg)",
+    )
+    k.add_argument(
+        "--external-force",
+        default="1",
+        metavar="EXPR",
+        help="magnitude F_e of the external force, finite and >= 0 (default: 1)",
+    )
+    k.add_argument(
+        "--exact",
+        action="store_true",
+        help=f"also print exact values (at most {limits.EXACT_VALUES} angles)",
+    )
     k.add_argument("--json", action="store_true", help="print JSON")
     from ._ncontact import add_options as _add_ncontact
 
     _add_ncontact(k)
 
-    sub.add_parser("presets", help="list the built-in grasps of the paper",
-                   description="List the built-in grasps of the paper (Fig. 6, Table I "
-                               "(a)-(c)), for --preset.")
+    sub.add_parser(
+        "presets",
+        help="list the built-in grasps of the paper",
+        description="List the built-in grasps of the paper (Fig. 6, Table I "
+        "(a)-(c)), for --preset.",
+    )
     _register_animate(sub, _add_grasp_options)
     _export.register(sub, _add_grasp_options)
     _worksheet.register(sub, _add_grasp_options)
@@ -166,14 +207,22 @@ def build_parser() -> argparse.ArgumentParser:
     _crosscheck.register(sub)
     for name in TIMED:
         _add_timeout(sub.choices[name])
-    _add_timeout(sub.choices["explore"], "until the window opens (reading a file, the first "
-                 "drawing); the window itself stays open as long as you like")
+    _add_timeout(
+        sub.choices["explore"],
+        "until the window opens (reading a file, the first "
+        "drawing); the window itself stays open as long as you like",
+    )
     return p
 
 
-
-def _draw(c: Construction, path: Path, fmt: str | None, step: int | None,
-          overlay: bool, title: str | None = None) -> Path:
+def _draw(
+    c: Construction,
+    path: Path,
+    fmt: str | None,
+    step: int | None,
+    overlay: bool,
+    title: str | None = None,
+) -> Path:
     from ..render import figure_diagram, save_figure
 
     fig = figure_diagram(c, step=step, overlay=overlay, title=title)
@@ -201,8 +250,10 @@ def _out_folder(text: str, quiet: bool) -> Path:
 
 def _cmd_main(args: argparse.Namespace) -> int:
     out = _out_folder(args.out, args.quiet)
-    png, svg, steps, gif = (check_target(out / name) for name in (
-        "fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", MAIN_ANIMATION))
+    png, svg, steps, gif = (
+        check_target(out / name)
+        for name in ("fig6-diagram.png", "fig6-diagram.svg", "fig6-steps.json", MAIN_ANIMATION)
+    )
     from ..construction import internal_force_diagram, to_records
     from ..grasp import Grasp
 
@@ -227,21 +278,29 @@ def _cmd_draw(args: argparse.Namespace) -> int:
 
     if _ncontact.wants_contacts(args) and args.step is None:
         return _ncontact.draw(args)
-    stem = ("ncontact-steps" if _ncontact.wants_contacts(args) else
-            _file.output_stem(args, args.preset))
+    stem = (
+        "ncontact-steps" if _ncontact.wants_contacts(args) else _file.output_stem(args, args.preset)
+    )
     name = args.output if args.output is not None else f"{stem}.{args.format or 'png'}"
     fmt = args.format
     if fmt is None and Path(name).suffix.lower().lstrip(".") not in _FORMATS:
-        raise ValueError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf "
-                         "file name or --format")
+        raise ValueError(
+            f"cannot tell the format of {name!r}: use a .png, .svg or .pdf file name or --format"
+        )
     path = check_target(name)
     made = _file.construction(args, lambda: grasp_from_args(args))
     c = made.construction
     if args.step is not None and not 0 <= args.step < len(c):
-        raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
-                         f"steps, 0 to {len(c) - 1}")
-    title = None if made.paper else Path(made.shown).name + (
-        f": {c.grasp.title}" if getattr(c.grasp, "title", None) else "")
+        raise ValueError(
+            f"--step {args.step} is out of range: the protocol has {len(c)} "
+            f"steps, 0 to {len(c) - 1}"
+        )
+    title = (
+        None
+        if made.paper
+        else Path(made.shown).name
+        + (f": {c.grasp.title}" if getattr(c.grasp, "title", None) else "")
+    )
     _draw(c, path, fmt, args.step, made.paper and not args.no_overlay, title)
     if not args.quiet:
         print(f"wrote {path}")
@@ -287,13 +346,23 @@ def _cmd_explore(args: argparse.Namespace) -> int:
     return _export.run_explore(args, grasp_from_args(args))
 
 
-
-_COMMANDS = {None: _cmd_main, "draw": _cmd_draw, "steps": _cmd_steps, "k": _cmd_k,
-             "presets": _cmd_presets, "animate": _cmd_animate, "verify": _verify.run,
-             "crosscheck": _crosscheck.run, "export": _cmd_export, "explore": _cmd_explore,
-             "worksheet": _worksheet.run, "recipe": _recipe.run,
-             "check": _check.run, "size": _size.run,
-             "plan": _plan.run}
+_COMMANDS = {
+    None: _cmd_main,
+    "draw": _cmd_draw,
+    "steps": _cmd_steps,
+    "k": _cmd_k,
+    "presets": _cmd_presets,
+    "animate": _cmd_animate,
+    "verify": _verify.run,
+    "crosscheck": _crosscheck.run,
+    "export": _cmd_export,
+    "explore": _cmd_explore,
+    "worksheet": _worksheet.run,
+    "recipe": _recipe.run,
+    "check": _check.run,
+    "size": _size.run,
+    "plan": _plan.run,
+}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -334,8 +403,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     except Exception as exc:  # a bug: one line, not a traceback
         if os.environ.get("GRASPCOMPASS_DEBUG"):
             raise
-        print(f"graspcompass: internal error: {type(exc).__name__}: {_message(exc)} (a bug; "
-              "please report it with the command line)", file=sys.stderr)
+        print(
+            f"graspcompass: internal error: {type(exc).__name__}: {_message(exc)} (a bug; "
+            "please report it with the command line)",
+            file=sys.stderr,
+        )
         return 4
 
 

@@ -96,8 +96,7 @@ MAX_SECONDS = 60.0
 MAIN_FIGSIZE, MAIN_DPI = (6.4, 7.2), 100.0
 
 
-def bounded(kind: type, low: float, high: float, *, low_open: bool = False
-            ) -> Callable[[str], Any]:
+def bounded(kind: type, low: float, high: float, *, low_open: bool = False) -> Callable[[str], Any]:
     """An argparse ``type`` reading ``kind`` (int or float) within ``[low, high]``.
 
     nan, infinities and text are refused with a one-line message naming the
@@ -170,15 +169,21 @@ def _preset_or_file(name: str) -> str:
         return name
     raise argparse.ArgumentTypeError(
         f"{name!r} is neither a preset ({', '.join(sorted(PRESETS))}) nor a file: give a "
-        "preset, or a construction file (FILE or --file FILE)")
+        "preset, or a construction file (FILE or --file FILE)"
+    )
 
 
 class _PresetOrFile(argparse.Action):
     """Stores a preset's name as ``preset``, a file's as ``file`` (as ``draw FILE``: beside
     ``--file`` it is refused as two files)."""
 
-    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
-                 values: Any, option_string: str | None = None) -> None:
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: Any,
+        option_string: str | None = None,
+    ) -> None:
         setattr(namespace, "preset" if values in PRESETS else "file", values)
 
 
@@ -186,86 +191,166 @@ class _Checked(argparse.Action):
     """Stores the option, then refuses ``--quality lecture`` with ``--dpi`` below
     :data:`MIN_LECTURE_DPI` (whichever of the two comes last), as a usage error."""
 
-    def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace,
-                 values: Any, option_string: str | None = None) -> None:
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: Any,
+        option_string: str | None = None,
+    ) -> None:
         setattr(namespace, self.dest, values)
         dpi = getattr(namespace, "dpi", None)
-        if getattr(namespace, "quality", None) == "lecture" and dpi is not None \
-                and dpi < MIN_LECTURE_DPI:
-            parser.error(f"--quality lecture needs --dpi {MIN_LECTURE_DPI:g} or more (1280 "
-                         f"pixels wide), got --dpi {dpi:g}")
+        if (
+            getattr(namespace, "quality", None) == "lecture"
+            and dpi is not None
+            and dpi < MIN_LECTURE_DPI
+        ):
+            parser.error(
+                f"--quality lecture needs --dpi {MIN_LECTURE_DPI:g} or more (1280 "
+                f"pixels wide), got --dpi {dpi:g}"
+            )
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> argparse.ArgumentParser:
+def register(
+    subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
+) -> argparse.ArgumentParser:
     """Add the ``animate`` sub-command to ``subparsers``; returns its parser."""
     p = subparsers.add_parser(
-        "animate", help="animate the construction, the force sweep or the turning object",
+        "animate",
+        help="animate the construction, the force sweep or the turning object",
         description="Write an animation: the ruler-and-compass construction step by step "
-                    "(§3.3), the external force sweeping round (Fig. 3) or the object turning "
-                    "under gravity (Fig. 1), as GIF, MP4 (pip install 'graspcompass[mp4]', or a "
-                    "system ffmpeg) or HTML.",
+        "(§3.3), the external force sweeping round (Fig. 3) or the object turning "
+        "under gravity (Fig. 1), as GIF, MP4 (pip install 'graspcompass[mp4]', or a "
+        "system ffmpeg) or HTML.",
         epilog="limits: every option is checked before any work; the output folder must "
-               f"exist; an animation has at most {MAX_PIXELS:.0e} pixels in all its drawn frames "
-               f"(lower --dpi or --frames) and at most {MAX_ANIMATION_FRAMES} frames in all. "
-               "exit status: 0, or 2 for a user error.")
-    p.add_argument("target", nargs="?", type=_preset_or_file, default=argparse.SUPPRESS,
-                   metavar="PRESET|FILE",
-                   help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
-                        "construction file ('-' reads stdin; same as --file)", action=_PresetOrFile)
+        f"exist; an animation has at most {MAX_PIXELS:.0e} pixels in all its drawn frames "
+        f"(lower --dpi or --frames) and at most {MAX_ANIMATION_FRAMES} frames in all. "
+        "exit status: 0, or 2 for a user error.",
+    )
+    p.add_argument(
+        "target",
+        nargs="?",
+        type=_preset_or_file,
+        default=argparse.SUPPRESS,
+        metavar="PRESET|FILE",
+        help=f"a preset ({', '.join(sorted(PRESETS))}; same as --preset) or a "
+        "construction file ('-' reads stdin; same as --file)",
+        action=_PresetOrFile,
+    )
     add_grasp_options(p)
     _file.add_file_options(p, positional=False)
     from ._ncontact import add_options as _add_ncontact
 
     _add_ncontact(p)
-    p.add_argument("--kind", choices=KINDS, default="construction",
-                   help="what to animate (default: construction)")
-    p.add_argument("-o", "--output", metavar="FILE",
-                   help="output .gif, .mp4 or .html file (default: PRESET-KIND.gif, or "
-                        "the construction file's name for PRESET)")
-    p.add_argument("--quality", choices=QUALITY_NAMES, default="standard", action=_Checked,
-                   help="standard: 640x720 pixels, 10 fps, every text at least 14 pixels, "
-                        "each caption at least 2 s; lecture: for a projector, 1280x720 "
-                        "pixels, a title card, captions at 20 pt beside the diagram, each on "
-                        "screen at least 2.5 s and longer by its length, key steps 3 s "
-                        "longer; both zoom to the step being drawn; the options below left "
-                        "out take the quality's values (default: standard)")
-    p.add_argument("--fps", type=bounded(float, MIN_FPS, MAX_FPS), default=None, metavar="N",
-                   help=f"frames per second, {MIN_FPS:g} to {MAX_FPS:g} (default: 10; lecture: "
-                        "15)")
-    p.add_argument("--frames", type=bounded(int, 1, MAX_FRAMES), default=120, metavar="N",
-                   help=f"frames of one turn, for --kind sweep and orientation, 1 to {MAX_FRAMES} "
-                        "(default: 120)")
-    p.add_argument("--frames-per-step", type=bounded(int, 1, MAX_FRAMES_PER_STEP), default=None,
-                   metavar="N", help="frames drawing each protocol step, for --kind "
-                                     f"construction, 1 to {MAX_FRAMES_PER_STEP} (default: 8; "
-                                     "lecture: 12)")
+    p.add_argument(
+        "--kind",
+        choices=KINDS,
+        default="construction",
+        help="what to animate (default: construction)",
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output .gif, .mp4 or .html file (default: PRESET-KIND.gif, or "
+        "the construction file's name for PRESET)",
+    )
+    p.add_argument(
+        "--quality",
+        choices=QUALITY_NAMES,
+        default="standard",
+        action=_Checked,
+        help="standard: 640x720 pixels, 10 fps, every text at least 14 pixels, "
+        "each caption at least 2 s; lecture: for a projector, 1280x720 "
+        "pixels, a title card, captions at 20 pt beside the diagram, each on "
+        "screen at least 2.5 s and longer by its length, key steps 3 s "
+        "longer; both zoom to the step being drawn; the options below left "
+        "out take the quality's values (default: standard)",
+    )
+    p.add_argument(
+        "--fps",
+        type=bounded(float, MIN_FPS, MAX_FPS),
+        default=None,
+        metavar="N",
+        help=f"frames per second, {MIN_FPS:g} to {MAX_FPS:g} (default: 10; lecture: 15)",
+    )
+    p.add_argument(
+        "--frames",
+        type=bounded(int, 1, MAX_FRAMES),
+        default=120,
+        metavar="N",
+        help=f"frames of one turn, for --kind sweep and orientation, 1 to {MAX_FRAMES} "
+        "(default: 120)",
+    )
+    p.add_argument(
+        "--frames-per-step",
+        type=bounded(int, 1, MAX_FRAMES_PER_STEP),
+        default=None,
+        metavar="N",
+        help="frames drawing each protocol step, for --kind "
+        f"construction, 1 to {MAX_FRAMES_PER_STEP} (default: 8; "
+        "lecture: 12)",
+    )
     seconds = bounded(float, 0, MAX_SECONDS)
-    p.add_argument("--pause", type=seconds, default=None, metavar="S",
-                   help="seconds resting on each key result (V1-V4, the circles, the "
-                        f"envelope), for --kind construction, 0 to {MAX_SECONDS:g} "
-                        "(default: 1; lecture: 3)")
-    p.add_argument("--hold", type=seconds, default=None, metavar="S",
-                   help="seconds holding the finished diagram at the end, for --kind "
-                        f"construction, 0 to {MAX_SECONDS:g} (default: 3; lecture: 6, and "
-                        "long enough to read its caption)")
-    p.add_argument("--caption-seconds", type=seconds, default=None, metavar="S",
-                   help="least seconds each step's caption stays on screen (a still frame "
-                        f"makes up the time), for --kind construction, 0 to {MAX_SECONDS:g} "
-                        "(default: 2; lecture: 2.5, and 1 s per 15 characters)")
-    p.add_argument("--circle", type=bounded(int, 1, 4), default=None, metavar="N",
-                   help="for --kind sweep: only the circle on O V_N, 1 to 4, with the foot "
-                        "H_N and its right angle (Thales, Fig. 3) (default: all four)")
-    p.add_argument("--weight", type=bounded(float, MIN_WEIGHT, MAX_WEIGHT), default=1.0,
-                   metavar="W", help="weight of the object, for --kind orientation, "
-                                     f"{MIN_WEIGHT:g} to {MAX_WEIGHT:g} (default: 1)")
-    p.add_argument("--dpi", type=bounded(float, MIN_DPI, MAX_DPI), default=None, metavar="N",
-                   action=_Checked,
-                   help=f"resolution in dots per inch, {MIN_DPI:g} to {MAX_DPI:g}; pixels = "
-                        "inches x dpi (default: 80, 8x9 inches; lecture: 100, 12.8x7.2 "
-                        f"inches, and at least {MIN_LECTURE_DPI:g})")
-    p.add_argument("--theme", choices=("default", "paper"), default="default",
-                   help="colour theme (default: default)")
+    p.add_argument(
+        "--pause",
+        type=seconds,
+        default=None,
+        metavar="S",
+        help="seconds resting on each key result (V1-V4, the circles, the "
+        f"envelope), for --kind construction, 0 to {MAX_SECONDS:g} "
+        "(default: 1; lecture: 3)",
+    )
+    p.add_argument(
+        "--hold",
+        type=seconds,
+        default=None,
+        metavar="S",
+        help="seconds holding the finished diagram at the end, for --kind "
+        f"construction, 0 to {MAX_SECONDS:g} (default: 3; lecture: 6, and "
+        "long enough to read its caption)",
+    )
+    p.add_argument(
+        "--caption-seconds",
+        type=seconds,
+        default=None,
+        metavar="S",
+        help="least seconds each step's caption stays on screen (a still frame "
+        f"makes up the time), for --kind construction, 0 to {MAX_SECONDS:g} "
+        "(default: 2; lecture: 2.5, and 1 s per 15 characters)",
+    )
+    p.add_argument(
+        "--circle",
+        type=bounded(int, 1, 4),
+        default=None,
+        metavar="N",
+        help="for --kind sweep: only the circle on O V_N, 1 to 4, with the foot "
+        "H_N and its right angle (Thales, Fig. 3) (default: all four)",
+    )
+    p.add_argument(
+        "--weight",
+        type=bounded(float, MIN_WEIGHT, MAX_WEIGHT),
+        default=1.0,
+        metavar="W",
+        help="weight of the object, for --kind orientation, "
+        f"{MIN_WEIGHT:g} to {MAX_WEIGHT:g} (default: 1)",
+    )
+    p.add_argument(
+        "--dpi",
+        type=bounded(float, MIN_DPI, MAX_DPI),
+        default=None,
+        metavar="N",
+        action=_Checked,
+        help=f"resolution in dots per inch, {MIN_DPI:g} to {MAX_DPI:g}; pixels = "
+        "inches x dpi (default: 80, 8x9 inches; lecture: 100, 12.8x7.2 "
+        f"inches, and at least {MIN_LECTURE_DPI:g})",
+    )
+    p.add_argument(
+        "--theme",
+        choices=("default", "paper"),
+        default="default",
+        help="colour theme (default: default)",
+    )
     quiet_option(p, "print nothing but errors (no progress bar)")
     return p
 
@@ -311,35 +396,59 @@ def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     if args.kind == "construction":
         pause, hold = getattr(args, "pause", None), getattr(args, "hold", None)
         anim = animate_construction(
-            c, fps=fps, frames_per_step=getattr(args, "frames_per_step", None), theme=theme,
-            dpi=dpi, quality=q, pause_frames=None if pause is None else q.frames(pause, fps),
+            c,
+            fps=fps,
+            frames_per_step=getattr(args, "frames_per_step", None),
+            theme=theme,
+            dpi=dpi,
+            quality=q,
+            pause_frames=None if pause is None else q.frames(pause, fps),
             hold_frames=None if hold is None else q.frames(hold, fps),
-            caption_seconds=getattr(args, "caption_seconds", None))
+            caption_seconds=getattr(args, "caption_seconds", None),
+        )
     else:
         look = theme.scaled(q.scale) if q.scale != 1 else theme
         if args.kind == "sweep":
-            anim = animate_sweep(c, frames=args.frames, circle=getattr(args, "circle", None),
-                                 fps=fps, dpi=dpi, figsize=q.sweep_figsize, theme=look)
+            anim = animate_sweep(
+                c,
+                frames=args.frames,
+                circle=getattr(args, "circle", None),
+                fps=fps,
+                dpi=dpi,
+                figsize=q.sweep_figsize,
+                theme=look,
+            )
         else:
-            anim = animate_orientation(c, weight=args.weight, frames=args.frames, fps=fps,
-                                       dpi=dpi, figsize=q.sweep_figsize, theme=look)
+            anim = animate_orientation(
+                c,
+                weight=args.weight,
+                frames=args.frames,
+                fps=fps,
+                dpi=dpi,
+                figsize=q.sweep_figsize,
+                theme=look,
+            )
     width, height = anim.figure.get_size_inches() * anim.figure.dpi
     pixels = anim.drawn_frames * round(width) * round(height)  # a still repeats a frame
     if pixels > MAX_PIXELS:
         raise InputTooLargeError(
             f"the animation would draw {anim.drawn_frames} frames of {round(width)}×"
             f"{round(height)} pixels ({pixels:.2e} in all); at most {MAX_PIXELS:.0e}: lower "
-            "--dpi or --frames")
+            "--dpi or --frames"
+        )
     if anim.frame_count > MAX_ANIMATION_FRAMES:
         raise InputTooLargeError(
             f"the animation would have {anim.frame_count} frames; at most "
             f"{MAX_ANIMATION_FRAMES}: lower --fps, --hold, --pause, --caption-seconds, "
-            "--frames-per-step or --frames")
+            "--frames-per-step or --frames"
+        )
     with writing(path):
         anim.save(path, fps=fps, quiet=quiet)
     if not quiet:
-        print(f"wrote {path} ({anim.frame_count} frames of {round(width)}×{round(height)} "
-              f"pixels at {fps:g} fps, {anim.frame_count / fps:.1f} s)")
+        print(
+            f"wrote {path} ({anim.frame_count} frames of {round(width)}×{round(height)} "
+            f"pixels at {fps:g} fps, {anim.frame_count / fps:.1f} s)"
+        )
     return 0
 
 
@@ -354,7 +463,8 @@ def main_animation(construction: Construction) -> ConstructionAnimation:
     return animate_construction(construction, figsize=MAIN_FIGSIZE, dpi=MAIN_DPI)
 
 
-def write_main_animation(construction: Construction, out_dir: str | Path,
-                         quiet: bool = False) -> Path:
+def write_main_animation(
+    construction: Construction, out_dir: str | Path, quiet: bool = False
+) -> Path:
     """Write :func:`main_animation` of ``construction`` to ``out_dir/fig6-construction.gif``."""
     return main_animation(construction).save(Path(out_dir) / MAIN_ANIMATION, quiet=quiet)

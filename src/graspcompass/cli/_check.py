@@ -56,40 +56,55 @@ class CheckTimeout(BaseException):
     ``except Exception`` on the way can swallow it."""
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> None:
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add the ``check`` sub-command (``add_grasp_options`` is not used: a file has its
     own parameters)."""
     del add_grasp_options
     c = subparsers.add_parser(
-        "check", help="prove a construction file's steps and claims; grade it against the "
-                      "paper",
+        "check",
+        help="prove a construction file's steps and claims; grade it against the paper",
         description="Replay a file of the construction language (docs/language.md) with "
-                    "symbolic parameters, certify every step, prove every claim for all "
-                    "admissible parameters and print a table: status, hypotheses, "
-                    "non-degeneracy conditions, time. PROVED is an exact argument; REFUTED "
-                    "comes with a counterexample, a point of the model at which the file, "
-                    "replayed exactly, contradicts the statement.",
+        "symbolic parameters, certify every step, prove every claim for all "
+        "admissible parameters and print a table: status, hypotheses, "
+        "non-degeneracy conditions, time. PROVED is an exact argument; REFUTED "
+        "comes with a counterexample, a point of the model at which the file, "
+        "replayed exactly, contradicts the statement.",
         epilog="exit status: 0 all proved, 1 something refuted, 3 something undecided, 2 a "
-               f"usage or parse error. A file is at most {MAX_FILE_BYTES} bytes.")
+        f"usage or parse error. A file is at most {MAX_FILE_BYTES} bytes.",
+    )
     c.add_argument("file", metavar="FILE", help="the construction file ('-' reads stdin)")
-    c.add_argument("--against", choices=["paper"],
-                   help="also prove that each object named like a point of the paper (X1..X4, "
-                        "Y1..Y4, V1..V4, circle1..circle4, O_M, P1x, P2x) is the paper's, for "
-                        "every grasp satisfying condition (1)")
+    c.add_argument(
+        "--against",
+        choices=["paper"],
+        help="also prove that each object named like a point of the paper (X1..X4, "
+        "Y1..Y4, V1..V4, circle1..circle4, O_M, P1x, P2x) is the paper's, for "
+        "every grasp satisfying condition (1)",
+    )
     c.add_argument("--json", action="store_true", help="print the report as JSON")
     c.add_argument("--markdown", metavar="FILE.md", help="also write the report as Markdown")
-    c.add_argument("--draw", metavar="OUT.png",
-                   help="draw the first refuted object at its counterexample, the file's and "
-                        "the paper's side by side (PNG, SVG or PDF)")
-    c.add_argument("--steps", action="store_true",
-                   help="list every step in the table (default: only the steps not proved)")
-    c.add_argument("--timeout", type=_seconds, default=DEFAULT_TIMEOUT, metavar="S",
-                   help=f"stop after S seconds (default {DEFAULT_TIMEOUT:g}; a file can make the "
-                        "symbolic replay arbitrarily long): the verdicts reached by then are "
-                        "kept, the rest are UNDECIDED (timed out, exit status 3)")
-    c.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
-                   help="no progress bar")
+    c.add_argument(
+        "--draw",
+        metavar="OUT.png",
+        help="draw the first refuted object at its counterexample, the file's and "
+        "the paper's side by side (PNG, SVG or PDF)",
+    )
+    c.add_argument(
+        "--steps",
+        action="store_true",
+        help="list every step in the table (default: only the steps not proved)",
+    )
+    c.add_argument(
+        "--timeout",
+        type=_seconds,
+        default=DEFAULT_TIMEOUT,
+        metavar="S",
+        help=f"stop after S seconds (default {DEFAULT_TIMEOUT:g}; a file can make the "
+        "symbolic replay arbitrarily long): the verdicts reached by then are "
+        "kept, the rest are UNDECIDED (timed out, exit status 3)",
+    )
+    c.add_argument(
+        "-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help="no progress bar"
+    )
 
 
 def read_file(name: str) -> tuple[str, str]:
@@ -116,8 +131,10 @@ def _draw(program: Any, report: Any, path: Path) -> str:
     from ..render import save_figure
     from ..render.grading import figure_counterexample
 
-    row = next((r for r in (*report.targets, *report.claims)
-                if r.kind == "target" and r.counterexample), None)
+    row = next(
+        (r for r in (*report.targets, *report.claims) if r.kind == "target" and r.counterexample),
+        None,
+    )
     if row is None:
         return "nothing to draw: no object of the file was refuted against the paper"
     save_figure(figure_counterexample(program, row.name, row.counterexample), path)
@@ -145,8 +162,9 @@ def run(args: argparse.Namespace) -> int:
     draw = check_target(args.draw) if args.draw is not None else None
     if draw is not None:
         if args.against != "paper":
-            raise ValueError("--draw needs --against paper (it draws a refuted object next to "
-                             "the paper's)")
+            raise ValueError(
+                "--draw needs --against paper (it draws a refuted object next to the paper's)"
+            )
         if draw.suffix.lower() not in (".png", ".svg", ".pdf"):
             raise ValueError(f"--draw writes .png, .svg or .pdf, got {str(draw)!r}")
     text, shown = read_file(args.file)
@@ -163,14 +181,19 @@ def run(args: argparse.Namespace) -> int:
     stop = args.timeout
     # the check keeps every verdict reached within --timeout; this alarm, a little
     # later, only stops a run that the check's own budget could not interrupt
-    alarm = deadline(stop + max(5.0, stop / 10),
-                     lambda: CheckTimeout(f"the check took longer than {stop:g} s (--timeout)"))
+    alarm = deadline(
+        stop + max(5.0, stop / 10),
+        lambda: CheckTimeout(f"the check took longer than {stop:g} s (--timeout)"),
+    )
     bar_size = len(program.steps) + len(program.claims)
     try:
         with alarm, Progress(bar_size, "check", quiet=quiet) as bar:
-            report = check_program(program, args.against,
-                                   progress=lambda done, total, name: bar.update(note=name),
-                                   timeout=stop)
+            report = check_program(
+                program,
+                args.against,
+                progress=lambda done, total, name: bar.update(note=name),
+                timeout=stop,
+            )
     except CheckTimeout as exc:
         print(f"graspcompass: {exc}: nothing decided", file=sys.stderr)
         return 3
@@ -180,8 +203,11 @@ def run(args: argparse.Namespace) -> int:
     print(to_json(report) if args.json else to_table(report, steps=args.steps))
     late = sum(r.result.method == TIMED_OUT for r in report.rows)
     if late:
-        print(f"graspcompass: {late} of {len(report.rows)} rows timed out after {stop:g} s "
-              "(--timeout): UNDECIDED; the other verdicts stand", file=sys.stderr)
+        print(
+            f"graspcompass: {late} of {len(report.rows)} rows timed out after {stop:g} s "
+            "(--timeout): UNDECIDED; the other verdicts stand",
+            file=sys.stderr,
+        )
     if draw is not None:
         with writing(draw):
             note = _draw(program, report, draw)

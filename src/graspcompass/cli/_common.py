@@ -49,7 +49,7 @@ def one_line(text: str, first: bool = True) -> str:
     lines = text.strip().splitlines() if first else [text.strip()]
     line = "".join(c if c.isprintable() else repr(c)[1:-1] for c in (lines[0] if lines else ""))
     if len(line) > MAX_MESSAGE:
-        line = f"{line[:MAX_MESSAGE - 40]} ... ({len(line)} characters in all)"
+        line = f"{line[: MAX_MESSAGE - 40]} ... ({len(line)} characters in all)"
     return line
 
 
@@ -66,16 +66,21 @@ class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {one_line(message, first=False)} (see --help)\n")
 
-    def parse_known_args(self, args: Sequence[str] | None = None,  # type: ignore[override]
-                         namespace: argparse.Namespace | None = None
-                         ) -> tuple[argparse.Namespace, list[str]]:
+    def parse_known_args(
+        self,
+        args: Sequence[str] | None = None,  # type: ignore[override]
+        namespace: argparse.Namespace | None = None,
+    ) -> tuple[argparse.Namespace, list[str]]:
         argv = list(sys.argv[1:] if args is None else args)
         return super().parse_known_args(self._join_dash_values(argv), namespace)
 
     def _join_dash_values(self, argv: list[str]) -> list[str]:
         """``--opt -value`` as ``--opt=-value`` for this parser's one-value options."""
-        takes_value = {s for s, a in self._option_string_actions.items()
-                       if a.nargs is None and s.startswith("--")}
+        takes_value = {
+            s
+            for s, a in self._option_string_actions.items()
+            if a.nargs is None and s.startswith("--")
+        }
         nested = any(isinstance(a, argparse._SubParsersAction) for a in self._actions)
         out: list[str] = []
         i = 0
@@ -109,18 +114,23 @@ class _Parser(argparse.ArgumentParser):
 
 def _add_grasp_options(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group(
-        "grasp", "a preset, optionally with parameters overridden; values are exact "
-        "expressions such as sqrt(3)/2, pi/3, 60deg or 1.2 (= 6/5)")
-    g.add_argument("--preset", default="fig6", choices=sorted(PRESETS),
-                   help="start from one of the paper's examples (default: fig6)")
+        "grasp",
+        "a preset, optionally with parameters overridden; values are exact "
+        "expressions such as sqrt(3)/2, pi/3, 60deg or 1.2 (= 6/5)",
+    )
+    g.add_argument(
+        "--preset",
+        default="fig6",
+        choices=sorted(PRESETS),
+        help="start from one of the paper's examples (default: fig6)",
+    )
     for name in _PARAMS:
         g.add_argument(f"--{name}", metavar="EXPR", help=f"set {name}")
 
 
 #: The commands that take ``--timeout`` (``check`` and ``verify`` have their own, which
 #: keep the verdicts reached in time; ``explore``'s bounds the work before its window opens).
-TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan",
-         "crosscheck")
+TIMED = ("draw", "steps", "k", "animate", "export", "worksheet", "size", "plan", "crosscheck")
 
 
 def _seconds(text: str) -> float:
@@ -130,10 +140,15 @@ def _seconds(text: str) -> float:
 
 
 def _add_timeout(p: argparse.ArgumentParser, what: str = "") -> None:
-    p.add_argument("--timeout", type=_seconds, default=limits.COMMAND_SECONDS, metavar="S",
-                   help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
-                        f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
-                        f"the work arbitrarily long){'; ' + what if what else ''}")
+    p.add_argument(
+        "--timeout",
+        type=_seconds,
+        default=limits.COMMAND_SECONDS,
+        metavar="S",
+        help=f"stop after S seconds, 1 to 86400, with exit status 2 (default "
+        f"{limits.COMMAND_SECONDS:g}: a construction file or a value can make "
+        f"the work arbitrarily long){'; ' + what if what else ''}",
+    )
 
 
 def grasp_from_args(args: argparse.Namespace) -> Grasp:

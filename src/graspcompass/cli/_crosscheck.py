@@ -21,18 +21,31 @@ CROSSCHECK_GRASPS, CROSSCHECK_THETAS, CROSSCHECK_RUNS = 200, 3600, 36_000
 def register(sub: Any) -> None:
     """Add the ``crosscheck`` sub-command to ``sub`` (argparse's sub-parsers)."""
     x = sub.add_parser(
-        "crosscheck", help="closed form vs scipy linprog on random grasps",
+        "crosscheck",
+        help="closed form vs scipy linprog on random grasps",
         description="Compare the closed form k_grasp(θ) (eq. (25)) with the least internal "
-                    "force found by scipy's linprog on random grasps and directions "
-                    "(needs scipy: pip install 'graspcompass[crosscheck]').",
+        "force found by scipy's linprog on random grasps and directions "
+        "(needs scipy: pip install 'graspcompass[crosscheck]').",
         epilog=f"limits: --grasps × --thetas at most {CROSSCHECK_RUNS} linprog problems. "
-               "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.")
-    x.add_argument("--grasps", type=bounded(int, 1, CROSSCHECK_GRASPS), default=20,
-                   metavar="N", help=f"random grasps, 1 to {CROSSCHECK_GRASPS} (20)")
-    x.add_argument("--thetas", type=bounded(int, 1, CROSSCHECK_THETAS), default=36,
-                   metavar="M", help=f"θ grid size, 1 to {CROSSCHECK_THETAS} (36)")
-    x.add_argument("--seed", type=bounded(int, 0, 2**63 - 1), default=0,
-                   help="random seed, 0 to 2**63 - 1 (0)")
+        "exit status: 0 when they agree to 1e-7, 1 otherwise, 2 for a usage error.",
+    )
+    x.add_argument(
+        "--grasps",
+        type=bounded(int, 1, CROSSCHECK_GRASPS),
+        default=20,
+        metavar="N",
+        help=f"random grasps, 1 to {CROSSCHECK_GRASPS} (20)",
+    )
+    x.add_argument(
+        "--thetas",
+        type=bounded(int, 1, CROSSCHECK_THETAS),
+        default=36,
+        metavar="M",
+        help=f"θ grid size, 1 to {CROSSCHECK_THETAS} (36)",
+    )
+    x.add_argument(
+        "--seed", type=bounded(int, 0, 2**63 - 1), default=0, help="random seed, 0 to 2**63 - 1 (0)"
+    )
     quiet_option(x, "no progress bar")
 
 
@@ -44,9 +57,13 @@ def run(args: argparse.Namespace) -> int:
     from ..proof.crosscheck import run_crosscheck
 
     if args.grasps * args.thetas > CROSSCHECK_RUNS:
-        raise ValueError(f"--grasps × --thetas = {args.grasps * args.thetas} linprog problems; "
-                         f"at most {CROSSCHECK_RUNS}")
+        raise ValueError(
+            f"--grasps × --thetas = {args.grasps * args.thetas} linprog problems; "
+            f"at most {CROSSCHECK_RUNS}"
+        )
     r = run_crosscheck(args.grasps, args.thetas, args.seed, quiet=args.quiet)
-    print(f"{r.grasps} random grasps × {r.thetas} directions: largest |k_grasp − linprog| = "
-          f"{r.max_abs_diff:.3e}")
+    print(
+        f"{r.grasps} random grasps × {r.thetas} directions: largest |k_grasp − linprog| = "
+        f"{r.max_abs_diff:.3e}"
+    )
     return 0 if r.max_abs_diff < 1e-7 else 1

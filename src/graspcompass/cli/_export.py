@@ -30,60 +30,93 @@ __all__ = ["register", "run_explore", "run_export"]
 _FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
 #: Longest ``--title``.
 MAX_TITLE = 200
-_EXT = {"ggb": "ggb", "tikz": "tex", "svg": "svg", "json": "json", "png": "png", "pdf": "pdf",
-        "html": "html"}
+_EXT = {
+    "ggb": "ggb",
+    "tikz": "tex",
+    "svg": "svg",
+    "json": "json",
+    "png": "png",
+    "pdf": "pdf",
+    "html": "html",
+}
 
 
 def _title(text: str) -> str:
     """An argparse ``type``: a title of printable characters, at most :data:`MAX_TITLE`."""
     if len(text) > MAX_TITLE:
-        raise argparse.ArgumentTypeError(f"a title has at most {MAX_TITLE} characters, got "
-                                         f"{len(text)}")
+        raise argparse.ArgumentTypeError(
+            f"a title has at most {MAX_TITLE} characters, got {len(text)}"
+        )
     bad = next((c for c in text if not c.isprintable()), None)
     if bad is not None:
-        raise argparse.ArgumentTypeError(f"a title has printable characters only, got "
-                                         f"{bad!r} in {text[:40]!r}")
+        raise argparse.ArgumentTypeError(
+            f"a title has printable characters only, got {bad!r} in {text[:40]!r}"
+        )
     return text
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> None:
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add the ``export`` and ``explore`` sub-commands to ``subparsers``.
 
     ``add_grasp_options`` adds the common ``--preset`` and parameter options.
     """
     e = subparsers.add_parser(
-        "export", help="export the construction: GeoGebra, TikZ, SVG, JSON, PNG or PDF",
+        "export",
+        help="export the construction: GeoGebra, TikZ, SVG, JSON, PNG or PDF",
         description="Write the construction of the grasp to a file: a live GeoGebra .ggb "
-                    "(sliders x1, x2, y, φ1, φ2, μ1, μ2, draggable P1), TikZ for pdflatex, a "
-                    "standalone SVG, the protocol as JSON (schema graspcompass.construction/1),"
-                    " or PNG/PDF through the renderer.",
+        "(sliders x1, x2, y, φ1, φ2, μ1, μ2, draggable P1), TikZ for pdflatex, a "
+        "standalone SVG, the protocol as JSON (schema graspcompass.construction/1),"
+        " or PNG/PDF through the renderer.",
         epilog="The folder of -o must exist; the path is checked before any work. "
-               "exit status: 0, or 2 for a user error.")
+        "exit status: 0, or 2 for a user error.",
+    )
     add_grasp_options(e)
     _file.add_file_options(e)
     from ._ncontact import add_options as _add_ncontact
 
     _add_ncontact(e)
-    e.add_argument("--format", choices=_FORMATS,
-                   help="file format (default: from the extension of -o)")
-    e.add_argument("-o", "--output", metavar="FILE",
-                   help="output file, in an existing folder (default: PRESET.EXT, or the "
-                        "construction file's name with .EXT, in the current folder)")
-    e.add_argument("--step", type=int, metavar="N",
-                   help="export the state after protocol step N (default: every step)")
-    e.add_argument("--title", metavar="TEXT", type=_title,
-                   help=f"title of the picture, at most {MAX_TITLE} printable characters "
-                        "(default: the grasp's)")
-    e.add_argument("--fragment", action="store_true",
-                   help="TikZ only: write the tikzpicture alone, for \\input in a document")
-    e.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
-                   help="print nothing but errors")
+    e.add_argument(
+        "--format", choices=_FORMATS, help="file format (default: from the extension of -o)"
+    )
+    e.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file, in an existing folder (default: PRESET.EXT, or the "
+        "construction file's name with .EXT, in the current folder)",
+    )
+    e.add_argument(
+        "--step",
+        type=int,
+        metavar="N",
+        help="export the state after protocol step N (default: every step)",
+    )
+    e.add_argument(
+        "--title",
+        metavar="TEXT",
+        type=_title,
+        help=f"title of the picture, at most {MAX_TITLE} printable characters "
+        "(default: the grasp's)",
+    )
+    e.add_argument(
+        "--fragment",
+        action="store_true",
+        help="TikZ only: write the tikzpicture alone, for \\input in a document",
+    )
+    e.add_argument(
+        "-q",
+        "--quiet",
+        action="store_true",
+        default=argparse.SUPPRESS,
+        help="print nothing but errors",
+    )
 
     x = subparsers.add_parser(
-        "explore", help="open the interactive explorer (sliders, draggable contacts)",
+        "explore",
+        help="open the interactive explorer (sliders, draggable contacts)",
         description="A window with sliders for x1, x2, y, φ1, φ2, μ1, μ2 and draggable P1 and "
-                    "P2; the construction, circles, envelope and worst/best case follow live.")
+        "P2; the construction, circles, envelope and worst/best case follow live.",
+    )
     add_grasp_options(x)
     _file.add_file_options(x)
 
@@ -144,15 +177,22 @@ def run_export(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> 
         c = _file.without_sliders(made)
     if args.step is not None:
         if not -len(c) <= args.step < len(c):
-            raise ValueError(f"--step {args.step} is out of range: the protocol has {len(c)} "
-                             f"steps, 0 to {len(c) - 1}")
+            raise ValueError(
+                f"--step {args.step} is out of range: the protocol has {len(c)} "
+                f"steps, 0 to {len(c) - 1}"
+            )
         c = c.upto(args.step)
     with writing(path):
         if fmt == "tikz" and args.fragment:
             write_tikz(c, path, standalone=False, title=title)
-        elif (fmt == "ggb" and not made.paper and made.program is not None and c.grasp is None
-              and args.step is None and all(p.name in (made.values or {})
-                                            for p in made.program.params)):
+        elif (
+            fmt == "ggb"
+            and not made.paper
+            and made.program is not None
+            and c.grasp is None
+            and args.step is None
+            and all(p.name in (made.values or {}) for p in made.program.params)
+        ):
             from ..export.geogebra import write_ggb  # the file's sliders and Prove per claim
 
             write_ggb(c, path, title, made.program, made.values)

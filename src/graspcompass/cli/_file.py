@@ -49,8 +49,17 @@ from dataclasses import dataclass, replace
 from pathlib import PurePath
 from typing import Any
 
-__all__ = ["GRASP_PARAMS", "MAX_SETS", "FileConstruction", "add_file_options", "construction",
-           "file_name", "output_stem", "paper_only", "without_sliders"]
+__all__ = [
+    "GRASP_PARAMS",
+    "MAX_SETS",
+    "FileConstruction",
+    "add_file_options",
+    "construction",
+    "file_name",
+    "output_stem",
+    "paper_only",
+    "without_sliders",
+]
 
 #: Parameters whose values come from the grasp options (``--preset``, ``--x1`` ...).
 GRASP_PARAMS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
@@ -64,9 +73,11 @@ def _assignment(text: str) -> tuple[str, str]:
     m = _SET.fullmatch(text)
     if m is None or not m.group(2).strip():
         shown = text if len(text) <= 40 else text[:30] + "..."
-        raise argparse.ArgumentTypeError(f"write NAME=VALUE (a parameter of the file and an "
-                                         f"exact expression such as 2, sqrt(3)/2 or pi/3), "
-                                         f"got {shown!r}")
+        raise argparse.ArgumentTypeError(
+            f"write NAME=VALUE (a parameter of the file and an "
+            f"exact expression such as 2, sqrt(3)/2 or pi/3), "
+            f"got {shown!r}"
+        )
     return m.group(1), m.group(2).strip()
 
 
@@ -82,18 +93,35 @@ def add_file_options(p: argparse.ArgumentParser, positional: bool = True) -> Non
         its preset there, and takes ``--file`` only).
     """
     g = p.add_argument_group(
-        "construction file", "replay a file of the construction language (docs/language.md) "
+        "construction file",
+        "replay a file of the construction language (docs/language.md) "
         "instead of the paper's recipe; parameters named x1, x2, y, phi1, phi2, mu1, mu2, "
-        "xi1, xi2 take the grasp's values, the others --set values")
+        "xi1, xi2 take the grasp's values, the others --set values",
+    )
     if positional:
-        g.add_argument("file", nargs="?", default=None, metavar="FILE",
-                       help="a construction file ('-' reads stdin); same as --file")
-    g.add_argument("--file", dest="file_option", default=None, metavar="FILE",
-                   help="a construction file ('-' reads stdin)")
-    g.add_argument("--set", action="append", type=_assignment, default=None,
-                   metavar="NAME=EXPR",
-                   help="the value of a parameter of the file that is not a grasp parameter, "
-                        "an exact expression (repeat for each)")
+        g.add_argument(
+            "file",
+            nargs="?",
+            default=None,
+            metavar="FILE",
+            help="a construction file ('-' reads stdin); same as --file",
+        )
+    g.add_argument(
+        "--file",
+        dest="file_option",
+        default=None,
+        metavar="FILE",
+        help="a construction file ('-' reads stdin)",
+    )
+    g.add_argument(
+        "--set",
+        action="append",
+        type=_assignment,
+        default=None,
+        metavar="NAME=EXPR",
+        help="the value of a parameter of the file that is not a grasp parameter, "
+        "an exact expression (repeat for each)",
+    )
 
 
 def file_name(args: argparse.Namespace) -> str | None:
@@ -106,8 +134,7 @@ def file_name(args: argparse.Namespace) -> str | None:
     """
     positional, option = getattr(args, "file", None), getattr(args, "file_option", None)
     if positional is not None and option is not None:
-        raise ValueError(f"two construction files: {positional!r} and --file {option!r}; "
-                         "give one")
+        raise ValueError(f"two construction files: {positional!r} and --file {option!r}; give one")
     return positional if positional is not None else option
 
 
@@ -151,9 +178,11 @@ def paper_only(made: FileConstruction, what: str) -> None:
         One line naming the file and what to use instead.
     """
     if not made.paper:
-        raise ValueError(f"{what} shows the paper's recipe (its four circles, k_grasp); "
-                         f"{made.shown} has other steps: draw it with draw, animate or export "
-                         "--format svg, ggb, tikz, json, png or pdf")
+        raise ValueError(
+            f"{what} shows the paper's recipe (its four circles, k_grasp); "
+            f"{made.shown} has other steps: draw it with draw, animate or export "
+            "--format svg, ggb, tikz, json, png or pdf"
+        )
 
 
 def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileConstruction:
@@ -187,8 +216,10 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
 
     if wants_contacts(args):
         if name is not None:
-            raise ValueError("--contact and a construction file: give one (the n-contact "
-                             "recipe is written from the contacts)")
+            raise ValueError(
+                "--contact and a construction file: give one (the n-contact "
+                "recipe is written from the contacts)"
+            )
         from ..construction.language import parse, replay
         from ..construction.ncontact_recipe import ncontact_recipe
         from ._ncontact import grasp_from_args as contacts_grasp
@@ -197,8 +228,10 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
         return FileConstruction(replay(program), False, "ncontact.gc")
     if name is None:
         if sets:
-            raise ValueError(f"--set {sets[0][0]}=...: --set gives values to the parameters "
-                             "of a construction file; give the file (FILE or --file)")
+            raise ValueError(
+                f"--set {sets[0][0]}=...: --set gives values to the parameters "
+                "of a construction file; give the file (FILE or --file)"
+            )
         from ..construction import internal_force_diagram
 
         return FileConstruction(internal_force_diagram(grasp()), True, "paper.gc")
@@ -215,12 +248,14 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
         if key in values:
             raise ValueError(f"--set {key} is given twice")
         if key in GRASP_PARAMS:
-            raise ValueError(f"--set {key}: {key} is a grasp parameter; give it with --{key} "
-                             "(or --preset)")
+            raise ValueError(
+                f"--set {key}: {key} is a grasp parameter; give it with --{key} (or --preset)"
+            )
         if key not in declared:
             listed = ", ".join(declared) if declared else "none"
-            raise ValueError(f"--set {key}: {shown} has no parameter {key!r} (its parameters: "
-                             f"{listed})")
+            raise ValueError(
+                f"--set {key}: {shown} has no parameter {key!r} (its parameters: {listed})"
+            )
         try:
             values[key] = parse_exact(value)
         except ExpressionError as exc:
@@ -228,13 +263,17 @@ def construction(args: argparse.Namespace, grasp: Callable[[], Any]) -> FileCons
     own = [p for p in program.params if p.name not in GRASP_PARAMS]
     for p in own:
         if p.name not in values:
-            raise ValueError(f"{shown}:{p.line}:1: no value for the parameter {p.name!r}: give "
-                             f"--set {p.name}=VALUE")
+            raise ValueError(
+                f"{shown}:{p.line}:1: no value for the parameter {p.name!r}: give "
+                f"--set {p.name}=VALUE"
+            )
     uses_grasp = len(own) < len(program.params)
     given = [k for k in GRASP_PARAMS if getattr(args, k, None) is not None]
     if not uses_grasp and given:
-        raise ValueError(f"--{given[0]} is not used: {shown} has no grasp parameter (its "
-                         f"parameters: {', '.join(declared) or 'none'}; give them with --set)")
+        raise ValueError(
+            f"--{given[0]} is not used: {shown} has no grasp parameter (its "
+            f"parameters: {', '.join(declared) or 'none'}; give them with --set)"
+        )
     paper = paper_program()
     is_paper = program.steps == paper.steps and program.params == paper.params
     if not own:

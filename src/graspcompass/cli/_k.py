@@ -54,8 +54,10 @@ CHUNK = 20_000
 #: Digits of the evaluation the exact path's printed doubles are rounded from.
 DIGITS = 60
 
-_JSON_RECORD = (' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
-                '"F_int": %r, "limiting": %d}')
+_JSON_RECORD = (
+    ' {"theta": "%r", "theta_deg": %r, "k": [%r, %r, %r, %r], "k_grasp": %r, '
+    '"F_int": %r, "limiting": %d}'
+)
 _HEAD = ["θ", "deg", "k1", "k2", "k3", "k4", "k_grasp", "F_int", "limit"]
 
 
@@ -133,8 +135,9 @@ def read_angles(text: str) -> tuple[list[sp.Expr] | None, np.ndarray]:
         exact, floats = None, _float_angles(text)
     bad = np.flatnonzero(~np.isfinite(floats))
     if bad.size:
-        raise NonFiniteValueError(f"--theta: angle {bad[0] + 1} is too large for double "
-                                  "precision (|θ| > 1.8e308)")
+        raise NonFiniteValueError(
+            f"--theta: angle {bad[0] + 1} is too large for double precision (|θ| > 1.8e308)"
+        )
     return exact, floats
 
 
@@ -175,7 +178,8 @@ def _values(g: Grasp, t: np.ndarray, fe: float) -> tuple[np.ndarray, np.ndarray,
         if not np.all(np.isfinite(arr)):
             raise NonFiniteValueError(
                 f"{name} overflows double precision for this grasp and force (a value beyond "
-                "1.8e308): give the lengths or the force in other units")
+                "1.8e308): give the lengths or the force in other units"
+            )
     return ks, kg, fint
 
 
@@ -188,17 +192,20 @@ def _check_range(g: Grasp, fe: float) -> None:
         largest = max(math.hypot(_float(S), _float(C)) for S, C in zip(g.S, g.C))
         bound = largest * fe / _float(g.D) if fe else largest
     if not math.isfinite(bound):
-        raise NonFiniteValueError("k_n or F_int overflows double precision for this grasp and "
-                                  "force (a value beyond 1.8e308): give the lengths or the "
-                                  "force in other units")
+        raise NonFiniteValueError(
+            "k_n or F_int overflows double precision for this grasp and "
+            "force (a value beyond 1.8e308): give the lengths or the "
+            "force in other units"
+        )
 
 
 def _limiting(ks: np.ndarray, kg: np.ndarray) -> np.ndarray:
     return np.where(kg > 0, np.argmax(ks, axis=0) + 1, 0)
 
 
-def run(args: argparse.Namespace, g: Grasp | Callable[[], Grasp], out: IO[str] | None = None
-        ) -> int:
+def run(
+    args: argparse.Namespace, g: Grasp | Callable[[], Grasp], out: IO[str] | None = None
+) -> int:
     """Run ``graspcompass k`` for the grasp ``g``; returns the exit status (0).
 
     Parameters
@@ -221,22 +228,31 @@ def run(args: argparse.Namespace, g: Grasp | Callable[[], Grasp], out: IO[str] |
     fe, fe_float = _fe(args.external_force)
     exact, t = read_angles(args.theta)
     if args.exact and (exact is None or len(exact) > EXACT_VALUES):
-        raise InputTooLargeError(f"--exact computes exact values for at most {EXACT_VALUES} "
-                                 f"angles; --theta gives {t.size}")
+        raise InputTooLargeError(
+            f"--exact computes exact values for at most {EXACT_VALUES} "
+            f"angles; --theta gives {t.size}"
+        )
     if callable(g):
         g = g()
     if exact is None:
         _check_range(g, fe_float)  # before the first row: an error is then the only line
         if not getattr(args, "quiet", False):
-            print(f"graspcompass: note: {t.size} angles: θ read in double precision (exactly "
-                  f"for at most {EXACT_ANGLES} angles)", file=sys.stderr)
+            print(
+                f"graspcompass: note: {t.size} angles: θ read in double precision (exactly "
+                f"for at most {EXACT_ANGLES} angles)",
+                file=sys.stderr,
+            )
         _stream(args, g, t, fe_float, out)
         return 0
     _check_range(g, fe_float)
     records = []
     for th, (deg, ks, kg, fint, lim) in zip(exact, rounded_rows(g, exact, fe)):
         rec: dict[str, Any] = {
-            "theta": str(th), "theta_deg": deg, "k": ks, "k_grasp": kg, "F_int": fint,
+            "theta": str(th),
+            "theta_deg": deg,
+            "k": ks,
+            "k_grasp": kg,
+            "F_int": fint,
             "limiting": lim,
         }
         if args.exact:
@@ -247,19 +263,30 @@ def run(args: argparse.Namespace, g: Grasp | Callable[[], Grasp], out: IO[str] |
     if args.json:
         print(json.dumps(records, indent=1), file=out)
         return 0
-    rows = [[r["theta"], f"{r['theta_deg']:.4g}", *(f"{v:.6g}" for v in r["k"]),
-             f"{r['k_grasp']:.6g}", f"{r['F_int']:.6g}",
-             f"k{r['limiting']}" if r["limiting"] else "-"] for r in records]
+    rows = [
+        [
+            r["theta"],
+            f"{r['theta_deg']:.4g}",
+            *(f"{v:.6g}" for v in r["k"]),
+            f"{r['k_grasp']:.6g}",
+            f"{r['F_int']:.6g}",
+            f"k{r['limiting']}" if r["limiting"] else "-",
+        ]
+        for r in records
+    ]
     print(table(rows, _HEAD), file=out)
     if args.exact:
         for r in records:
-            print(f"θ = {r['theta']}: k_grasp = {r['k_grasp_exact']}, F_int = {r['F_int_exact']}",
-                  file=out)
+            print(
+                f"θ = {r['theta']}: k_grasp = {r['k_grasp_exact']}, F_int = {r['F_int_exact']}",
+                file=out,
+            )
     return 0
 
 
-def rounded_rows(g: Grasp, thetas: list[sp.Expr], fe: sp.Expr
-                 ) -> Iterator[tuple[float, list[float], float, float, int]]:
+def rounded_rows(
+    g: Grasp, thetas: list[sp.Expr], fe: sp.Expr
+) -> Iterator[tuple[float, list[float], float, float, int]]:
     """``(θ in degrees, [k1..k4], k_grasp, F_int, limiting n)`` per exact θ, rounded from exact.
 
     ``k_n(θ) = S_n sin θ − C_n cos θ`` (eqs. (18)-(21)) is evaluated at
@@ -281,6 +308,7 @@ def rounded_rows(g: Grasp, thetas: list[sp.Expr], fe: sp.Expr
     from ..geometry.exact import canon, decide_zero
 
     with mpmath.workdps(DIGITS + 10):
+
         def mp(value: Any) -> Any:
             return mpmath.mpf(sp.N(value, DIGITS + 10))
 
@@ -306,9 +334,11 @@ def _double(value: Any) -> float:
     """The double nearest ``value`` (an mpmath number), refused beyond the largest one."""
     out = float(value)
     if not math.isfinite(out):
-        raise NonFiniteValueError("a value of k_n, k_grasp, F_int or θ in degrees is beyond "
-                                  "double precision (1.8e308): give the lengths, the force "
-                                  "or the angles in other units")
+        raise NonFiniteValueError(
+            "a value of k_n, k_grasp, F_int or θ in degrees is beyond "
+            "double precision (1.8e308): give the lengths, the force "
+            "or the angles in other units"
+        )
     return out + 0.0  # -0.0 prints as 0
 
 
@@ -332,7 +362,7 @@ def table(rows: list[list[str]], head: list[str]) -> str:
 
 def _chunks(g: Grasp, t: np.ndarray, fe: float) -> Iterator[tuple[np.ndarray, ...]]:
     for lo in range(0, t.size, CHUNK):
-        tc = t[lo:lo + CHUNK]
+        tc = t[lo : lo + CHUNK]
         ks, kg, fint = _values(g, tc, fe)
         yield tc, ks, kg, fint, _limiting(ks, kg)
 
@@ -343,9 +373,17 @@ def _stream(args: argparse.Namespace, g: Grasp, t: np.ndarray, fe: float, out: I
         out.write("[")
         sep = "\n"
         for tc, ks, kg, fint, lim in _chunks(g, t, fe):
-            records = [_JSON_RECORD % cells for cells in zip(
-                tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(),
-                fint.tolist(), lim.tolist())]
+            records = [
+                _JSON_RECORD % cells
+                for cells in zip(
+                    tc.tolist(),
+                    np.degrees(tc).tolist(),
+                    *ks.tolist(),
+                    kg.tolist(),
+                    fint.tolist(),
+                    lim.tolist(),
+                )
+            ]
             out.write(sep + ",\n".join(records))
             out.flush()
             sep = ",\n"
@@ -358,7 +396,19 @@ def _stream(args: argparse.Namespace, g: Grasp, t: np.ndarray, fe: float, out: I
     row = "  ".join(["%-12.9g", "%-8.4g", *["%-11.6g"] * 6]) + "  %s\n"
     for tc, ks, kg, fint, lim in _chunks(g, t, fe):
         names = [f"k{n}" if n else "-" for n in lim.tolist()]
-        out.write("".join([row % cells for cells in zip(
-            tc.tolist(), np.degrees(tc).tolist(), *ks.tolist(), kg.tolist(), fint.tolist(),
-            names)]))
+        out.write(
+            "".join(
+                [
+                    row % cells
+                    for cells in zip(
+                        tc.tolist(),
+                        np.degrees(tc).tolist(),
+                        *ks.tolist(),
+                        kg.tolist(),
+                        fint.tolist(),
+                        names,
+                    )
+                ]
+            )
+        )
         out.flush()

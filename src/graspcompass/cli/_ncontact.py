@@ -34,19 +34,30 @@ _HEAD = ["θ", "deg", "k", "F", "tight"]
 def add_options(p: argparse.ArgumentParser) -> None:
     """Add ``--contact``, ``--effort`` and ``--com`` to the ``k`` command."""
     g = p.add_argument_group(
-        "n contacts", "give --contact once per contact (n >= 2) instead of the two-contact "
-        "grasp options")
-    g.add_argument("--contact", action="append", metavar="X,Y,NX,NY,MU",
-                   help="a contact: point, inward normal (or one angle X,Y,ANGLE,MU), friction "
-                        "coefficient; write --contact=-1,... for a value starting with '-'")
-    g.add_argument("--effort", default=None, metavar="NAME",
-                   help="paper (n = 2: the paper's k, default for 2 contacts), sum-normal "
-                        "(default for more), pair:I,J or max-normal")
-    g.add_argument("--com", default="0,0", metavar="X,Y",
-                   help="centre of mass (default: 0,0)")
-    g.add_argument("--contacts", metavar="FILE",
-                   help="a contacts file: one contact X,Y,NX,NY,MU (or X,Y,ANGLE,MU) a line, "
-                        "'#' starts a comment; 'com X,Y' and 'effort NAME' lines are allowed")
+        "n contacts",
+        "give --contact once per contact (n >= 2) instead of the two-contact grasp options",
+    )
+    g.add_argument(
+        "--contact",
+        action="append",
+        metavar="X,Y,NX,NY,MU",
+        help="a contact: point, inward normal (or one angle X,Y,ANGLE,MU), friction "
+        "coefficient; write --contact=-1,... for a value starting with '-'",
+    )
+    g.add_argument(
+        "--effort",
+        default=None,
+        metavar="NAME",
+        help="paper (n = 2: the paper's k, default for 2 contacts), sum-normal "
+        "(default for more), pair:I,J or max-normal",
+    )
+    g.add_argument("--com", default="0,0", metavar="X,Y", help="centre of mass (default: 0,0)")
+    g.add_argument(
+        "--contacts",
+        metavar="FILE",
+        help="a contacts file: one contact X,Y,NX,NY,MU (or X,Y,ANGLE,MU) a line, "
+        "'#' starts a comment; 'com X,Y' and 'effort NAME' lines are allowed",
+    )
 
 
 def contacts_file(name: str) -> tuple[list[str], str | None, str | None]:
@@ -75,8 +86,10 @@ def contacts_file(name: str) -> tuple[list[str], str | None, str | None]:
         elif "," in line:
             contacts.append(line)
         else:
-            raise InputError(f"{shown}:{i}: expected a contact X,Y,NX,NY,MU, 'com X,Y' or "
-                             f"'effort NAME', got {line[:40]!r}")
+            raise InputError(
+                f"{shown}:{i}: expected a contact X,Y,NX,NY,MU, 'com X,Y' or "
+                f"'effort NAME', got {line[:40]!r}"
+            )
     if not contacts:
         raise InputError(f"{shown}: no contact in the file")
     return contacts, com, effort
@@ -106,13 +119,13 @@ def grasp_from_args(args: argparse.Namespace) -> NContactGrasp:
     texts, com_text, effort = list(args.contact or []), None, None
     if getattr(args, "contacts", None):
         if texts:
-            raise InputError("give the contacts either with --contact or in --contacts FILE, "
-                             "not both")
+            raise InputError(
+                "give the contacts either with --contact or in --contacts FILE, not both"
+            )
         texts, com_text, effort = contacts_file(args.contacts)
     if len(texts) < 2:
         raise InputError("--contact: give at least two contacts")
-    contacts = [tuple(_values(t, f"--contact {i + 1}", (4, 5)))
-                for i, t in enumerate(texts)]
+    contacts = [tuple(_values(t, f"--contact {i + 1}", (4, 5))) for i, t in enumerate(texts)]
     if com_text is not None and args.com != "0,0":
         raise InputError("--com and a 'com' line of the contacts file: give one")
     com = tuple(_values(com_text or args.com, "--com", (2,)))
@@ -133,12 +146,16 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
 
     want_exact = bool(getattr(args, "exact", False))
     if want_exact and (exact is None or len(exact) > EXACT_VALUES):
-        raise InputError(f"--exact computes exact values for at most {EXACT_VALUES} angles; "
-                         f"--theta gives {t.size}")
+        raise InputError(
+            f"--exact computes exact values for at most {EXACT_VALUES} angles; "
+            f"--theta gives {t.size}"
+        )
     g = grasp_from_args(args)
     if want_exact and g.numeric:
-        raise InputError("--exact needs exact contacts (no value of --contact may be a float "
-                         "written with an exponent)")
+        raise InputError(
+            "--exact needs exact contacts (no value of --contact may be a float "
+            "written with an exponent)"
+        )
     Q = g.polygon()
     with np.errstate(all="ignore"):
         k = np.asarray(Q.support(t), dtype=float).reshape(-1)
@@ -146,18 +163,34 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     labels = g.constraint_labels()
     e = np.stack([np.sin(t), -np.cos(t)])
     arg = np.argmax(V @ e, axis=0) if V.size else np.zeros(t.size, dtype=int)
-    tight = [" ".join(labels[r] for r in Q.candidates[Q.vertex_index[i]].bases[0]
-                      if r < len(labels)) if g.effort.linear else "" for i in range(len(V))]
+    tight = [
+        " ".join(labels[r] for r in Q.candidates[Q.vertex_index[i]].bases[0] if r < len(labels))
+        if g.effort.linear
+        else ""
+        for i in range(len(V))
+    ]
     twin = _float_twin(g) if not g.effort.linear else None  # max-normal: forces per θ
     names = [str(v) for v in exact] if exact is not None else [repr(float(v)) for v in t]
     records: list[dict[str, Any]] = []
     for i, name in enumerate(names):
         held = math.isfinite(k[i])
-        records.append({"theta": name, "theta_deg": float(np.degrees(t[i])),
-                        "k": float(k[i]) if held else None,
-                        "F": float(k[i] * fe) if held else None,
-                        "tight": (_carrying(twin, float(t[i])) if twin is not None else
-                                  tight[arg[i]].split() if tight else None) if held else None})
+        records.append(
+            {
+                "theta": name,
+                "theta_deg": float(np.degrees(t[i])),
+                "k": float(k[i]) if held else None,
+                "F": float(k[i] * fe) if held else None,
+                "tight": (
+                    _carrying(twin, float(t[i]))
+                    if twin is not None
+                    else tight[arg[i]].split()
+                    if tight
+                    else None
+                )
+                if held
+                else None,
+            }
+        )
         if want_exact and exact is not None:
             kx = Q.support_exact(exact[i])[0]
             records[-1]["k_exact"] = str(kx)
@@ -165,20 +198,34 @@ def run(args: argparse.Namespace, out: IO[str] | None = None) -> int:
     if args.json:
         print(json.dumps(records, indent=1), file=out)
         return 0
-    rows = [[r["theta"], f"{r['theta_deg']:.4g}",
-             f"{r['k']:.6g}" if r["k"] is not None else "-",
-             f"{r['F']:.6g}" if r["F"] is not None else "-",
-             " ".join(r["tight"]) if r["tight"] else "-"] for r in records]
+    rows = [
+        [
+            r["theta"],
+            f"{r['theta_deg']:.4g}",
+            f"{r['k']:.6g}" if r["k"] is not None else "-",
+            f"{r['F']:.6g}" if r["F"] is not None else "-",
+            " ".join(r["tight"]) if r["tight"] else "-",
+        ]
+        for r in records
+    ]
     print(table(rows, _HEAD), file=out)
     if want_exact:
         for r in records:
             print(f"θ = {r['theta']}: k = {r['k_exact']}, F = {r['F_exact']}", file=out)
     arc = Q.arc()
     closure = "yes" if g.force_closure else "no"
-    span = ("every direction" if arc == (0.0, 2 * math.pi) else "no open arc" if arc is None
-            else f"θ in [{math.degrees(arc[0]):.6g}°, {math.degrees(arc[1]):.6g}°]")
-    print(f"{g.n} contacts, effort {g.effort.name}: Q has {len(V)} vertices; force closure: "
-          f"{closure}; the load is held for {span}", file=out)
+    span = (
+        "every direction"
+        if arc == (0.0, 2 * math.pi)
+        else "no open arc"
+        if arc is None
+        else f"θ in [{math.degrees(arc[0]):.6g}°, {math.degrees(arc[1]):.6g}°]"
+    )
+    print(
+        f"{g.n} contacts, effort {g.effort.name}: Q has {len(V)} vertices; force closure: "
+        f"{closure}; the load is held for {span}",
+        file=out,
+    )
     return 0
 
 
@@ -188,9 +235,14 @@ def _float_twin(g: Any) -> Any:
 
     if g.numeric:
         return g
-    return NContactGrasp([(float(c.p[0]), float(c.p[1]), float(c.n[0]), float(c.n[1]),
-                           float(c.mu)) for c in g.contacts],
-                         com=tuple(float(v) for v in g.com), effort=g.effort.name)
+    return NContactGrasp(
+        [
+            (float(c.p[0]), float(c.p[1]), float(c.n[0]), float(c.n[1]), float(c.mu))
+            for c in g.contacts
+        ],
+        com=tuple(float(v) for v in g.com),
+        effort=g.effort.name,
+    )
 
 
 def _carrying(g: Any, theta: float) -> list[str] | None:
@@ -212,8 +264,9 @@ def draw(args: argparse.Namespace) -> int:
     name = args.output if args.output is not None else f"ncontact.{args.format or 'png'}"
     fmt = args.format or Path(name).suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
-        raise InputError(f"cannot tell the format of {name!r}: use a .png, .svg or .pdf file "
-                         "name or --format")
+        raise InputError(
+            f"cannot tell the format of {name!r}: use a .png, .svg or .pdf file name or --format"
+        )
     path = check_target(name)
     g = grasp_from_args(args)
     import matplotlib

@@ -27,8 +27,7 @@ from typing import Any
 __all__ = ["register", "run"]
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> None:
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add the ``recipe`` sub-command to ``subparsers``.
 
     The recipe does not depend on a grasp, so ``add_grasp_options`` is not used;
@@ -36,18 +35,29 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     """
     del add_grasp_options  # the shipped file holds symbols, not one grasp's values
     r = subparsers.add_parser(
-        "recipe", help="print the paper's recipe as a file of the construction language",
+        "recipe",
+        help="print the paper's recipe as a file of the construction language",
         description="Print the drawing recipe of §3.3 (V_n) and §3.2 (the circles) as it "
-                    "ships: one step a line (NAME = OPERATION INPUTS (VALUES) ...), symbolic "
-                    "parameters with their domains, condition (1) as a named hypothesis, and "
-                    "the closed form (27)-(39) as claims. The language is described in "
-                    "docs/language.md.",
+        "ships: one step a line (NAME = OPERATION INPUTS (VALUES) ...), symbolic "
+        "parameters with their domains, condition (1) as a named hypothesis, and "
+        "the closed form (27)-(39) as claims. The language is described in "
+        "docs/language.md.",
         epilog="The folder of -o must exist; the path is checked before any work. "
-               "exit status: 0, or 2 for a user error.")
-    r.add_argument("-o", "--output", metavar="FILE.gc",
-                   help="write the recipe to this file instead of printing it")
-    r.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
-                   help="print nothing but errors (with -o)")
+        "exit status: 0, or 2 for a user error.",
+    )
+    r.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE.gc",
+        help="write the recipe to this file instead of printing it",
+    )
+    r.add_argument(
+        "-q",
+        "--quiet",
+        action="store_true",
+        default=argparse.SUPPRESS,
+        help="print nothing but errors (with -o)",
+    )
 
 
 def run(args: argparse.Namespace) -> int:

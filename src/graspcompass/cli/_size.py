@@ -49,19 +49,26 @@ _NAMES = ("jaw1", "jaw2")
 def add_outline_options(group: Any, *, shape_required: bool) -> None:
     """``--shape``, ``--shape-unit`` and ``--com``: the part's outline from a drawing and
     its centre of mass, as ``graspcompass size`` and ``graspcompass plan`` read them."""
-    group.add_argument("--shape", required=shape_required, metavar="FILE",
-                       help="the part's outline from a drawing: an SVG or DXF file; the "
-                            "closed shape of largest area, curves flattened, in the "
-                            "drawing's units")
-    group.add_argument("--shape-unit", metavar="LENGTH",
-                       help="with --shape: the length of one drawing unit when the file "
-                            "does not say (default: SVG 96 per inch, DXF mm)")
-    group.add_argument("--com", metavar="X,Y", help="centre of mass (default: the "
-                       "outline's centroid)")
+    group.add_argument(
+        "--shape",
+        required=shape_required,
+        metavar="FILE",
+        help="the part's outline from a drawing: an SVG or DXF file; the "
+        "closed shape of largest area, curves flattened, in the "
+        "drawing's units",
+    )
+    group.add_argument(
+        "--shape-unit",
+        metavar="LENGTH",
+        help="with --shape: the length of one drawing unit when the file "
+        "does not say (default: SVG 96 per inch, DXF mm)",
+    )
+    group.add_argument(
+        "--com", metavar="X,Y", help="centre of mass (default: the outline's centroid)"
+    )
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> None:
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add the ``size`` sub-command to ``subparsers``.
 
     The part is given in its own world frame, not as a preset, so
@@ -70,60 +77,93 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
     """
     del add_grasp_options
     s = subparsers.add_parser(
-        "size", help="size a gripper: the squeeze in newtons (per jaw or total), worst case, "
-                     "vendor formula",
+        "size",
+        help="size a gripper: the squeeze in newtons (per jaw or total), worst case, "
+        "vendor formula",
         description="The least squeeze a two-jaw gripper needs to hold a part (Ito, Tanaka, "
-                    "Sasaki 2012, eq. (17)): in the worst orientation and acceleration, in a "
-                    "given orientation or range of tilts, with the contact that slips and "
-                    "which way, the best orientation, and the vendor formula m(g + a)·S/μ "
-                    "beside it. 'Per jaw' is each jaw's push along the line between the "
-                    "contacts (the paper's internal force F_int); 'total' is both jaws "
-                    "together, twice it.",
+        "Sasaki 2012, eq. (17)): in the worst orientation and acceleration, in a "
+        "given orientation or range of tilts, with the contact that slips and "
+        "which way, the best orientation, and the vendor formula m(g + a)·S/μ "
+        "beside it. 'Per jaw' is each jaw's push along the line between the "
+        "contacts (the paper's internal force F_int); 'total' is both jaws "
+        "together, twice it.",
         epilog="Values: exact expressions such as 0.05, 1/20 or sqrt(2)/2. Lengths are metres "
-               "unless a unit is written (m, cm, mm, um: 100mm); the mass kg (kg, g, mg, t: "
-               "500g); accelerations m/s^2 (or g: 0.5g); forces N (N, kN, mN); angles need "
-               "deg or rad. Directions in the output are degrees counter-clockwise from the "
-               "frame's -y axis (the paper's θ, eq. (26)): 0 is the frame's down. "
-               "exit status: 0; 2 for a user error, including a grasp that is not "
-               "force-closure (squeezing harder cannot hold the part).")
+        "unless a unit is written (m, cm, mm, um: 100mm); the mass kg (kg, g, mg, t: "
+        "500g); accelerations m/s^2 (or g: 0.5g); forces N (N, kN, mN); angles need "
+        "deg or rad. Directions in the output are degrees counter-clockwise from the "
+        "frame's -y axis (the paper's θ, eq. (26)): 0 is the frame's down. "
+        "exit status: 0; 2 for a user error, including a grasp that is not "
+        "force-closure (squeezing harder cannot hold the part).",
+    )
     part = s.add_argument_group("the part, in one world frame (right-handed, y up)")
     part.add_argument("--p1", metavar="X,Y", help="contact of jaw 1 (required unless --contact)")
     part.add_argument("--p2", metavar="X,Y", help="contact of jaw 2 (required unless --contact)")
-    part.add_argument("--contact", action="append", metavar="X,Y,NX,NY,MU",
-                      help="n jaws or fingers (three-jaw grippers, hands): one contact a time "
-                           "(point, inward normal or one angle, μ); the worst squeeze over all "
-                           "orientations is F_e max|q| (docs/ncontact.md)")
+    part.add_argument(
+        "--contact",
+        action="append",
+        metavar="X,Y,NX,NY,MU",
+        help="n jaws or fingers (three-jaw grippers, hands): one contact a time "
+        "(point, inward normal or one angle, μ); the worst squeeze over all "
+        "orientations is F_e max|q| (docs/ncontact.md)",
+    )
     part.add_argument("--contacts", metavar="FILE", help="the --contact lines in a file")
-    part.add_argument("--effort", metavar="NAME", help="with --contact: sum-normal (default), "
-                      "max-normal or pair:I,J")
-    part.add_argument("--n1", metavar="X,Y",
-                      help="inward normal at jaw 1's contact (any nonzero length)")
-    part.add_argument("--n2", metavar="X,Y",
-                      help="inward normal at jaw 2's contact (any nonzero length)")
-    part.add_argument("--outline", metavar="X,Y;X,Y;...",
-                      help="the part's outline (vertices separated by ';'): normals of the "
-                           "edges the contacts lie on, centroid as the default --com")
+    part.add_argument(
+        "--effort",
+        metavar="NAME",
+        help="with --contact: sum-normal (default), max-normal or pair:I,J",
+    )
+    part.add_argument(
+        "--n1", metavar="X,Y", help="inward normal at jaw 1's contact (any nonzero length)"
+    )
+    part.add_argument(
+        "--n2", metavar="X,Y", help="inward normal at jaw 2's contact (any nonzero length)"
+    )
+    part.add_argument(
+        "--outline",
+        metavar="X,Y;X,Y;...",
+        help="the part's outline (vertices separated by ';'): normals of the "
+        "edges the contacts lie on, centroid as the default --com",
+    )
     add_outline_options(part, shape_required=False)
     part.add_argument("--mass", required=True, metavar="M", help="mass (kg unless a unit: 500g)")
     part.add_argument("--mu", metavar="MU", help="friction coefficient of both pads")
     part.add_argument("--mu1", metavar="MU", help="friction coefficient at jaw 1")
     part.add_argument("--mu2", metavar="MU", help="friction coefficient at jaw 2")
     load = s.add_argument_group("the load")
-    load.add_argument("--g", default="9.80665", metavar="G",
-                      help="magnitude of gravity (default 9.80665 m/s^2)")
-    load.add_argument("--gravity", metavar="X,Y", help="gravity's direction in the frame "
-                      "(default: any orientation of the part)")
-    load.add_argument("--tilt", metavar="ANGLE", help="with --gravity: the part may turn by "
-                      "up to ±ANGLE (deg or rad needed: 15deg)")
-    load.add_argument("--accel", metavar="A", help="acceleration bound |a| <= A in any "
-                      "direction (m/s^2, or 0.5g)")
-    load.add_argument("--accel-vector", metavar="X,Y", help="with --gravity: a given "
-                      "acceleration of the part, in the frame")
+    load.add_argument(
+        "--g", default="9.80665", metavar="G", help="magnitude of gravity (default 9.80665 m/s^2)"
+    )
+    load.add_argument(
+        "--gravity",
+        metavar="X,Y",
+        help="gravity's direction in the frame (default: any orientation of the part)",
+    )
+    load.add_argument(
+        "--tilt",
+        metavar="ANGLE",
+        help="with --gravity: the part may turn by up to ±ANGLE (deg or rad needed: 15deg)",
+    )
+    load.add_argument(
+        "--accel", metavar="A", help="acceleration bound |a| <= A in any direction (m/s^2, or 0.5g)"
+    )
+    load.add_argument(
+        "--accel-vector",
+        metavar="X,Y",
+        help="with --gravity: a given acceleration of the part, in the frame",
+    )
     s.add_argument("--safety", default="1", metavar="S", help="safety factor >= 1 (default 1)")
-    s.add_argument("--per", choices=("jaw", "total"), default="jaw",
-                   help="report the squeeze per jaw (default) or the total of both jaws")
-    s.add_argument("--max-force", metavar="F", help="the gripper's squeeze (per --per): also "
-                   "print the least μ (both pads) for which it suffices")
+    s.add_argument(
+        "--per",
+        choices=("jaw", "total"),
+        default="jaw",
+        help="report the squeeze per jaw (default) or the total of both jaws",
+    )
+    s.add_argument(
+        "--max-force",
+        metavar="F",
+        help="the gripper's squeeze (per --per): also "
+        "print the least μ (both pads) for which it suffices",
+    )
     s.add_argument("--json", action="store_true", help="print a JSON object")
 
 
@@ -148,8 +188,7 @@ def read_pair(text: str, option: str, kind: str | None) -> tuple[Any, ...]:
     """
     parts = [p.strip() for p in _split(text)]
     if len(parts) != 2 or not all(parts):
-        raise InputError(f"{option}: expected X,Y (two values separated by a comma), got "
-                        f"{text!r}")
+        raise InputError(f"{option}: expected X,Y (two values separated by a comma), got {text!r}")
     out: list[Any] = []
     for p in parts:
         if kind is None:
@@ -173,20 +212,21 @@ def _check_cheap(args: argparse.Namespace) -> None:
         if args.outline is not None:
             raise InputError("give the outline as --outline or as --shape FILE, not both")
         if not args.shape.lower().endswith((".svg", ".dxf")):
-            raise InputError(f"--shape {args.shape!r}: an outline is read from a .svg or .dxf "
-                             "file")
+            raise InputError(f"--shape {args.shape!r}: an outline is read from a .svg or .dxf file")
     elif args.shape_unit is not None:
         raise InputError("--shape-unit goes with --shape FILE")
     if args.outline is not None:
         vertices = args.outline.split(";")
         if len(vertices) < 3:
-            raise InputError(f"--outline: expected at least 3 vertices X,Y;X,Y;X,Y, got "
-                            f"{args.outline!r}")
+            raise InputError(
+                f"--outline: expected at least 3 vertices X,Y;X,Y;X,Y, got {args.outline!r}"
+            )
         for i, v in enumerate(vertices):
             read_pair(v, f"--outline vertex {i + 1}", "length")
     elif (args.n1 is None or args.n2 is None) and args.shape is None:
-        raise InputError("give the inward normals (--n1 and --n2) or the part's --outline "
-                         "(or --shape FILE)")
+        raise InputError(
+            "give the inward normals (--n1 and --n2) or the part's --outline (or --shape FILE)"
+        )
     if args.com is None and args.outline is None and args.shape is None:
         raise InputError("give the centre of mass --com (or an --outline: its centroid)")
     if args.mu is not None and (args.mu1 is not None or args.mu2 is not None):
@@ -194,15 +234,22 @@ def _check_cheap(args: argparse.Namespace) -> None:
     if args.mu is None and (args.mu1 is None or args.mu2 is None):
         raise InputError("give the friction: --mu for both pads, or --mu1 and --mu2")
     if args.accel is not None and args.accel_vector is not None:
-        raise InputError("give either --accel (a bound in any direction) or --accel-vector (a "
-                         "given acceleration), not both")
+        raise InputError(
+            "give either --accel (a bound in any direction) or --accel-vector (a "
+            "given acceleration), not both"
+        )
     if args.accel_vector is not None and args.gravity is None:
         raise InputError("--accel-vector needs --gravity (the same frame as the contacts)")
     if args.tilt is not None and args.gravity is None:
         raise InputError("--tilt needs --gravity (the orientation it tilts from)")
-    checks = [("--mass", args.mass, "mass"), ("--g", args.g, "acceleration"),
-              ("--accel", args.accel, "acceleration"), ("--tilt", args.tilt, "angle"),
-              ("--max-force", args.max_force, "force"), ("--safety", args.safety, None)]
+    checks = [
+        ("--mass", args.mass, "mass"),
+        ("--g", args.g, "acceleration"),
+        ("--accel", args.accel, "acceleration"),
+        ("--tilt", args.tilt, "angle"),
+        ("--max-force", args.max_force, "force"),
+        ("--safety", args.safety, None),
+    ]
     for opt, text, kind in checks:
         if text is None:
             continue
@@ -232,26 +279,47 @@ def _run_ncontact(args: argparse.Namespace) -> int:
     from ..sizing.ncontact import size_ncontact
     from ._ncontact import grasp_from_args
 
-    for opt in ("p1", "p2", "n1", "n2", "outline", "shape", "gravity", "tilt", "accel_vector",
-                "max_force", "mu", "mu1", "mu2"):
+    for opt in (
+        "p1",
+        "p2",
+        "n1",
+        "n2",
+        "outline",
+        "shape",
+        "gravity",
+        "tilt",
+        "accel_vector",
+        "max_force",
+        "mu",
+        "mu1",
+        "mu2",
+    ):
         if getattr(args, opt, None) is not None:
-            raise InputError(f"--{opt.replace('_', '-')} is for two jaws; with --contact give "
-                             "μ in each contact")
+            raise InputError(
+                f"--{opt.replace('_', '-')} is for two jaws; with --contact give μ in each contact"
+            )
     if args.per != "jaw":
         raise InputError("--per is for two jaws; with --contact the effort says what is summed")
-    ns = argparse.Namespace(contact=args.contact, contacts=args.contacts,
-                            com=args.com or "0,0", effort=args.effort or "sum-normal")
-    rec = size_ncontact(grasp_from_args(ns), args.mass, g=args.g, accel=args.accel,
-                        safety=args.safety)
+    ns = argparse.Namespace(
+        contact=args.contact,
+        contacts=args.contacts,
+        com=args.com or "0,0",
+        effort=args.effort or "sum-normal",
+    )
+    rec = size_ncontact(
+        grasp_from_args(ns), args.mass, g=args.g, accel=args.accel, safety=args.safety
+    )
     if args.json:
         print(json.dumps(rec, indent=1, allow_nan=False))
         return 0
     what = {"sum-normal": "sum of the normal forces", "max-normal": "largest normal force"}
-    print(f"{rec['contacts']} contacts, effort {rec['effort']} "
-          f"({what.get(rec['effort'], 'the named normal forces')}): worst squeeze "
-          f"{rec['worst_N']:.6g} N over all orientations (load {rec['load_N']:.6g} N "
-          f"× max|q| = {rec['max_q']:.6g}), at θ = {rec['theta_deg']:.2f}° "
-          "(the load's direction from the part's -y axis)")
+    print(
+        f"{rec['contacts']} contacts, effort {rec['effort']} "
+        f"({what.get(rec['effort'], 'the named normal forces')}): worst squeeze "
+        f"{rec['worst_N']:.6g} N over all orientations (load {rec['load_N']:.6g} N "
+        f"× max|q| = {rec['max_q']:.6g}), at θ = {rec['theta_deg']:.2f}° "
+        "(the load's direction from the part's -y axis)"
+    )
     return 0
 
 
@@ -268,8 +336,9 @@ def run(args: argparse.Namespace) -> int:
     if args.contact or args.contacts:
         return _run_ncontact(args)
     if args.p1 is None or args.p2 is None:
-        raise InputError("the following arguments are required: --p1, --p2 (or --contact, "
-                         "once per contact)")
+        raise InputError(
+            "the following arguments are required: --p1, --p2 (or --contact, once per contact)"
+        )
     _check_cheap(args)
     from ..sizing import NotForceClosureError, force_closure, least_mu, size_gripper
     from ..world import FrictionConeError, place_grasp
@@ -282,9 +351,14 @@ def run(args: argparse.Namespace) -> int:
         verdict = force_closure(contacts, normals, mu, names=_NAMES)
         if not verdict.holds:
             raise NotForceClosureError(verdict.message)
-    outline = None if args.outline is None else [
-        _pair_values(v, f"--outline vertex {i + 1}", "length")
-        for i, v in enumerate(args.outline.split(";"))]
+    outline = (
+        None
+        if args.outline is None
+        else [
+            _pair_values(v, f"--outline vertex {i + 1}", "length")
+            for i, v in enumerate(args.outline.split(";"))
+        ]
+    )
     if args.shape is not None:
         from ..outlines import read_outline
 
@@ -293,8 +367,9 @@ def run(args: argparse.Namespace) -> int:
     try:
         wg = place_grasp(contacts, normals, mu=mu, com=com, outline=outline, names=_NAMES)
     except FrictionConeError as exc:
-        raise NotForceClosureError(f"not force-closure: squeezing harder cannot hold this "
-                                   f"part: {exc}") from None
+        raise NotForceClosureError(
+            f"not force-closure: squeezing harder cannot hold this part: {exc}"
+        ) from None
     gravity = None if args.gravity is None else _pair_values(args.gravity, "--gravity", None)
     accel: Any = args.accel
     if args.accel_vector is not None:
@@ -305,13 +380,17 @@ def run(args: argparse.Namespace) -> int:
     if args.max_force is not None:
         lm = least_mu(wg, args.max_force, args.mass, accel=accel, **kw)
     record = s.to_dict()
-    record["force_closure_verdict"] = ("force-closure: each friction cone contains the other "
-                                       "contact (condition (1))")
+    record["force_closure_verdict"] = (
+        "force-closure: each friction cone contains the other contact (condition (1))"
+    )
     if lm is not None:
-        record["least_mu"] = {"mu": lm.mu, "mu_force_closure": lm.mu_force_closure,
-                              f"squeeze_infinite_friction_{args.per}_N":
-                                  lm.squeeze_infinite_friction,
-                              f"max_force_{args.per}_N": lm.force_limit, "message": lm.message}
+        record["least_mu"] = {
+            "mu": lm.mu,
+            "mu_force_closure": lm.mu_force_closure,
+            f"squeeze_infinite_friction_{args.per}_N": lm.squeeze_infinite_friction,
+            f"max_force_{args.per}_N": lm.force_limit,
+            "message": lm.message,
+        }
     from ..boundary._output import finite_record
 
     finite_record(record, "give the mass, the lengths or the accelerations in other units")
@@ -325,9 +404,12 @@ def run(args: argparse.Namespace) -> int:
 def _text(d: dict[str, Any], s: Any, lm: Any) -> str:
     per = "per jaw" if d["per"] == "jaw" else "total (both jaws)"
     head = "PER JAW" if d["per"] == "jaw" else "TOTAL (both jaws)"
-    other = ("the total of both jaws is twice this" if d["per"] == "jaw" else
-             "each jaw pushes half of this")
-    a = (f", |a| <= {d['accel_bound_m_s2']:.4g} m/s^2" if d["accel_bound_m_s2"] else "")
+    other = (
+        "the total of both jaws is twice this"
+        if d["per"] == "jaw"
+        else "each jaw pushes half of this"
+    )
+    a = f", |a| <= {d['accel_bound_m_s2']:.4g} m/s^2" if d["accel_bound_m_s2"] else ""
     if d["accel_vector_m_s2"] is not None:
         a += ", a = ({:.4g}, {:.4g}) m/s^2".format(*d["accel_vector_m_s2"])
     lines = [
@@ -339,17 +421,27 @@ def _text(d: dict[str, Any], s: Any, lm: Any) -> str:
         f"sliding towards {d['slip_direction_deg']:.4g}° against that jaw",
     ]
     if d["case"] != "any orientation":
-        slip = ("nothing slips" if d["case_slipping_contact"] is None else
-                f"contact {d['case_slipping_contact']} slips")
-        load = ("" if d["load_direction_deg"] is None else
-                f", worst load towards {d['load_direction_deg']:.4g}°")
+        slip = (
+            "nothing slips"
+            if d["case_slipping_contact"] is None
+            else f"contact {d['case_slipping_contact']} slips"
+        )
+        load = (
+            ""
+            if d["load_direction_deg"] is None
+            else f", worst load towards {d['load_direction_deg']:.4g}°"
+        )
         lines.append(f"{d['case']}: {d['squeeze_N']:.4g} N {per}{load}; {slip}")
     if d["accel_direction_deg"] is not None:
         lines.append(f"worst acceleration direction: {d['accel_direction_deg']:.4g}°")
-    lines.append(f"best orientation: {d['best_squeeze_N']:.4g} N {per}, with gravity towards "
-                 f"{d['best_gravity_direction_deg']:.4g}° in the part's frame")
-    lines.append(f"vendor formula {d['vendor_formula']}: {d['vendor_squeeze_N']:.4g} N {per}; "
-                 f"the paper's worst case is {d['ratio']:.3g}× that")
+    lines.append(
+        f"best orientation: {d['best_squeeze_N']:.4g} N {per}, with gravity towards "
+        f"{d['best_gravity_direction_deg']:.4g}° in the part's frame"
+    )
+    lines.append(
+        f"vendor formula {d['vendor_formula']}: {d['vendor_squeeze_N']:.4g} N {per}; "
+        f"the paper's worst case is {d['ratio']:.3g}× that"
+    )
     if lm is not None:
         lines.append(f"least friction: {lm.message}")
     return "\n".join(lines)

@@ -49,8 +49,10 @@ def fit_line(line: str, cols: int) -> str:
     if len(line) <= cols:
         return line
     indent = " " * (len(line) - len(line.lstrip()) + 4)
-    return "\n".join(textwrap.wrap(line, cols, subsequent_indent=indent,
-                                   break_on_hyphens=False)) or line
+    return (
+        "\n".join(textwrap.wrap(line, cols, subsequent_indent=indent, break_on_hyphens=False))
+        or line
+    )
 
 
 def table(reports: Sequence[Any], cols: int | None = None) -> str:
@@ -58,8 +60,10 @@ def table(reports: Sequence[Any], cols: int | None = None) -> str:
     from ..proof import to_table
 
     cols = width() if cols is None else max(MIN_WIDTH, cols)
-    rows = [(r.claim.id, r.claim.ref, r.result.status.value, f"{r.result.seconds:.2f}",
-             r.result.method) for r in reports]
+    rows = [
+        (r.claim.id, r.claim.ref, r.result.status.value, f"{r.result.seconds:.2f}", r.result.method)
+        for r in reports
+    ]
     head = ("id", "paper", "status", "s", "method")
     w = [max(len(str(x[i])) for x in [head, *rows]) for i in range(4)]
     start = sum(w) + 2 * 4
@@ -75,7 +79,7 @@ def table(reports: Sequence[Any], cols: int | None = None) -> str:
             continue
         lines.append(f"{left}  {method[0]}".rstrip())
         lines += [" " * start + more for more in method[1:]]
-    tail = to_table(reports).split("\n")[1 + len(rows):]
+    tail = to_table(reports).split("\n")[1 + len(rows) :]
     return "\n".join(lines + [fit_line(line, cols) for line in tail])
 
 
@@ -84,29 +88,48 @@ def register(sub: Any, _add_grasp_options: Callable[[argparse.ArgumentParser], N
     from . import _check
 
     v = sub.add_parser(
-        "verify", help="machine-check every claim of the paper (symbolic)",
+        "verify",
+        help="machine-check every claim of the paper (symbolic)",
         description="Check every claim of the paper for general symbolic parameters under "
         "condition (1) (and μ = tan ξ where both appear); print each claim's status, "
         "hypotheses and non-degeneracy conditions.",
         epilog="exit status: 0 when every claim is decided (none UNDECIDED) and every REFUTED "
         "claim names a correction that is PROVED (with --certify: and every construction "
-        "step holds); 1 otherwise; 2 for a usage error.")
-    v.add_argument("--json", action="store_true",
-                   help="print the results as JSON (with hypotheses, conditions, certificates)")
-    v.add_argument("--markdown", metavar="FILE",
-                   help="write the report as a Markdown page (its folder must exist)")
-    v.add_argument("--ncontact", action="store_true",
-                   help="also prove the n-contact claims (docs/ncontact.md): V1..V4 as dual "
-                        "vertices of the n-contact LP, their dual feasibility, complementary "
-                        "slackness, the shorter recipe, a symbolic three-finger grasp (about "
-                        "20 s more)")
-    v.add_argument("--certify", action="store_true",
-                   help="also certify the symbolic construction (every admissible grasp) and, "
-                   "if grasp options are given, that grasp's construction")
-    v.add_argument("--timeout", type=_check._seconds, default=None, metavar="S",
-                   help="stop after S seconds for the whole run (catalogue and --certify; "
-                        "default: no limit): the verdicts reached by then are kept, the rest "
-                        "are UNDECIDED (timed out, exit status 1)")
+        "step holds); 1 otherwise; 2 for a usage error.",
+    )
+    v.add_argument(
+        "--json",
+        action="store_true",
+        help="print the results as JSON (with hypotheses, conditions, certificates)",
+    )
+    v.add_argument(
+        "--markdown",
+        metavar="FILE",
+        help="write the report as a Markdown page (its folder must exist)",
+    )
+    v.add_argument(
+        "--ncontact",
+        action="store_true",
+        help="also prove the n-contact claims (docs/ncontact.md): V1..V4 as dual "
+        "vertices of the n-contact LP, their dual feasibility, complementary "
+        "slackness, the shorter recipe, a symbolic three-finger grasp (about "
+        "20 s more)",
+    )
+    v.add_argument(
+        "--certify",
+        action="store_true",
+        help="also certify the symbolic construction (every admissible grasp) and, "
+        "if grasp options are given, that grasp's construction",
+    )
+    v.add_argument(
+        "--timeout",
+        type=_check._seconds,
+        default=None,
+        metavar="S",
+        help="stop after S seconds for the whole run (catalogue and --certify; "
+        "default: no limit): the verdicts reached by then are kept, the rest "
+        "are UNDECIDED (timed out, exit status 1)",
+    )
     _add_grasp_options(v)
     quiet_option(v, "no progress bar")
 
@@ -130,8 +153,9 @@ def run(args: argparse.Namespace) -> int:
     from ..construction import internal_force_diagram
     from ..grasp import Grasp
 
-    if args.certify and (any(getattr(args, k, None) is not None for k in _PARAMS)
-                         or args.preset != "fig6"):
+    if args.certify and (
+        any(getattr(args, k, None) is not None for k in _PARAMS) or args.preset != "fig6"
+    ):
         grasp_from_args(args)  # a bad grasp option is refused before the long run
     from ..proof._budget import TIMED_OUT, Budget
 
@@ -153,18 +177,25 @@ def run(args: argparse.Namespace) -> int:
         print(table(reports))
     if args.certify:
         out = sys.stderr if args.json else sys.stdout
-        text, ok = _certify_table("certify: the symbolic construction (all admissible grasps)",
-                                  symbolic, budget)
+        text, ok = _certify_table(
+            "certify: the symbolic construction (all admissible grasps)", symbolic, budget
+        )
         print("\n" + text, file=out)
         given = any(getattr(args, k, None) is not None for k in _PARAMS)
         if given or args.preset != "fig6":
-            t2, ok2 = _certify_table(f"certify: {args.preset} with the options given",
-                                     internal_force_diagram(grasp_from_args(args)), budget)
+            t2, ok2 = _certify_table(
+                f"certify: {args.preset} with the options given",
+                internal_force_diagram(grasp_from_args(args)),
+                budget,
+            )
             print("\n" + t2, file=out)
             ok = ok and ok2
         status = status or (0 if ok else 1)
         late += sum(TIMED_OUT in line for line in text.splitlines())
     if late:
-        print(f"graspcompass: {late} claims or steps timed out after {args.timeout:g} s "
-              "(--timeout): UNDECIDED; the other verdicts stand", file=sys.stderr)
+        print(
+            f"graspcompass: {late} claims or steps timed out after {args.timeout:g} s "
+            "(--timeout): UNDECIDED; the other verdicts stand",
+            file=sys.stderr,
+        )
     return status

@@ -46,11 +46,13 @@ def _scale(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected millimetres per unit, a number such as 40, "
-                                         f"got {text[:40]!r}") from None
+        raise argparse.ArgumentTypeError(
+            f"expected millimetres per unit, a number such as 40, got {text[:40]!r}"
+        ) from None
     if not (math.isfinite(value) and SCALE_MIN <= value <= SCALE_MAX):
-        raise argparse.ArgumentTypeError(f"the scale is from {SCALE_MIN:g} to {SCALE_MAX:g} mm "
-                                         f"per unit, got {text[:40]!r}")
+        raise argparse.ArgumentTypeError(
+            f"the scale is from {SCALE_MIN:g} to {SCALE_MAX:g} mm per unit, got {text[:40]!r}"
+        )
     return value
 
 
@@ -64,40 +66,64 @@ def _given(text: str) -> str:
     if not names or not all(re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]{0,15}", n) for n in names):
         raise argparse.ArgumentTypeError(
             f"expected one of {', '.join(_LEVELS)} or step names separated by commas (as "
-            f"graspcompass steps prints them, e.g. P1x,P2x,O_M,X1), got {text[:40]!r}")
+            f"graspcompass steps prints them, e.g. P1x,P2x,O_M,X1), got {text[:40]!r}"
+        )
     return ",".join(names)
 
 
-def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]
-             ) -> None:
+def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentParser], None]) -> None:
     """Add the ``worksheet`` sub-command to ``subparsers``.
 
     ``add_grasp_options`` adds the common ``--preset`` and parameter options.
     """
     w = subparsers.add_parser(
-        "worksheet", help="a printable PDF worksheet: draw the diagram by hand",
+        "worksheet",
+        help="a printable PDF worksheet: draw the diagram by hand",
         description="Write a two-page A4 PDF: page 1 the grasp with its friction cones at a "
-                    "stated scale, with room to draw and the steps of §3.3 as numbered "
-                    "instructions (numbered as graspcompass steps prints them); page 2 the "
-                    "solution at the same scale, with the signed lengths to check.",
+        "stated scale, with room to draw and the steps of §3.3 as numbered "
+        "instructions (numbered as graspcompass steps prints them); page 2 the "
+        "solution at the same scale, with the signed lengths to check.",
         epilog="--given: grasp (O, the axes, P1, P2, the cones), feet (also P1x, P2x, O_M), "
-               "sides (also the extended cone sides and X_n), perpendiculars (also the "
-               "perpendiculars and Y_n), or step names such as P1x,P2x,O_M. "
-               "The folder of -o must exist; the path is checked before any work. "
-               "exit status: 0, or 2 for a user error.")
+        "sides (also the extended cone sides and X_n), perpendiculars (also the "
+        "perpendiculars and Y_n), or step names such as P1x,P2x,O_M. "
+        "The folder of -o must exist; the path is checked before any work. "
+        "exit status: 0, or 2 for a user error.",
+    )
     add_grasp_options(w)
-    w.add_argument("-o", "--output", metavar="FILE.pdf",
-                   help="output file (default: PRESET-worksheet.pdf in the current folder)")
-    w.add_argument("--steps", choices=_STEPS, default="all",
-                   help="instructions for every step or for one V_n (default: all)")
-    w.add_argument("--given", type=_given, default="grasp", metavar="WHAT",
-                   help=f"what page 1 already shows: {', '.join(_LEVELS)}, or step names "
-                        "separated by commas (default: grasp)")
-    w.add_argument("--scale", type=_scale, metavar="MM_PER_UNIT",
-                   help="millimetres on paper per unit of the grasp (default: the largest "
-                        "round value that fits the page, whole mm from 10 mm up)")
-    w.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
-                   help="print nothing but errors")
+    w.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE.pdf",
+        help="output file (default: PRESET-worksheet.pdf in the current folder)",
+    )
+    w.add_argument(
+        "--steps",
+        choices=_STEPS,
+        default="all",
+        help="instructions for every step or for one V_n (default: all)",
+    )
+    w.add_argument(
+        "--given",
+        type=_given,
+        default="grasp",
+        metavar="WHAT",
+        help=f"what page 1 already shows: {', '.join(_LEVELS)}, or step names "
+        "separated by commas (default: grasp)",
+    )
+    w.add_argument(
+        "--scale",
+        type=_scale,
+        metavar="MM_PER_UNIT",
+        help="millimetres on paper per unit of the grasp (default: the largest "
+        "round value that fits the page, whole mm from 10 mm up)",
+    )
+    w.add_argument(
+        "-q",
+        "--quiet",
+        action="store_true",
+        default=argparse.SUPPRESS,
+        help="print nothing but errors",
+    )
 
 
 def run(args: argparse.Namespace, grasp: Grasp | None = None) -> int:
@@ -127,8 +153,9 @@ def run(args: argparse.Namespace, grasp: Grasp | None = None) -> int:
         from ._common import grasp_from_args
 
         grasp = grasp_from_args(args)
-    ws = worksheet_pages(internal_force_diagram(grasp), steps=args.steps, given=args.given,
-                         scale=args.scale)
+    ws = worksheet_pages(
+        internal_force_diagram(grasp), steps=args.steps, given=args.given, scale=args.scale
+    )
     with writing(path):
         ws.save(path)
     if not getattr(args, "quiet", False):

@@ -82,8 +82,10 @@ class Inequality:
 
     def holds(self, point: Mapping[Any, Any]) -> bool:
         """Whether it holds, exactly, at ``point`` (symbol or name -> exact value)."""
-        subs = {(s if isinstance(s, sp.Symbol) else sp.Symbol(str(s))): sp.sympify(v)
-                for s, v in point.items()}
+        subs = {
+            (s if isinstance(s, sp.Symbol) else sp.Symbol(str(s))): sp.sympify(v)
+            for s, v in point.items()
+        }
         by_name = {str(s): v for s, v in subs.items()}
         e = self.expr0
         v = e.xreplace({s: by_name[str(s)] for s in e.free_symbols if str(s) in by_name})
@@ -97,4 +99,3 @@ class Inequality:
         if sign is None:
             sign = bool(sp.N(z, 50) > 0) if self.relation0 == ">" else bool(sp.N(z, 50) >= 0)
         return bool(sign)
-

@@ -95,13 +95,14 @@ class _Line:
                 end = _group_end(text, m.end() - 1)
                 if end < 0:
                     raise err("unbalanced parenthesis: '(' is not closed", col)
-                self.tokens.append(("values", text[m.end(): end - 1], col))
+                self.tokens.append(("values", text[m.end() : end - 1], col))
                 pos = end
                 continue
             if m.lastgroup == "string":
                 raw = m.group("string")[1:-1]
-                self.tokens.append(("string", re.sub(r"\\(.)", r"\1", raw) if "\\" in raw
-                                    else raw, col))
+                self.tokens.append(
+                    ("string", re.sub(r"\\(.)", r"\1", raw) if "\\" in raw else raw, col)
+                )
             else:
                 self.tokens.append((m.lastgroup, m.group(m.lastgroup), col))
             pos = m.end()
@@ -143,31 +144,39 @@ def _statement(body: str, chk: _Checker, number: int, err: Any) -> None:
             return chk.param(toks[1][1], domain, number)
         if kind == "word" and first == "hypothesis":
             if len(toks) != 2 or toks[1][0] != "word":
-                raise _Problem("write hypothesis NAME (e.g. condition1) or hypothesis NAME: "
-                               "VALUE > VALUE", "name")
+                raise _Problem(
+                    "write hypothesis NAME (e.g. condition1) or hypothesis NAME: VALUE > VALUE",
+                    "name",
+                )
             return chk.hypothesis(toks[1][1])
         _step(toks, chk, number, slots)
     except _Problem as p:
-        raise err(p.what, slots.get(p.slot, slots.get(p.slot[0] if isinstance(p.slot, tuple)
-                                                      else None, col))) from None
+        raise err(
+            p.what,
+            slots.get(p.slot, slots.get(p.slot[0] if isinstance(p.slot, tuple) else None, col)),
+        ) from None
 
 
 def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None:
-    if len(toks) < 3 or toks[0][0] != "word" or toks[1][:2] != ("rel", "=") \
-            or toks[2][0] != "word":
+    if len(toks) < 3 or toks[0][0] != "word" or toks[1][:2] != ("rel", "=") or toks[2][0] != "word":
         slots["x"] = toks[min(1, len(toks) - 1)][2]
-        raise _Problem("expected NAME = OPERATION INPUT... (or param, hypothesis, let, "
-                       "claim)", "x" if toks[0][0] == "word" else "name")
+        raise _Problem(
+            "expected NAME = OPERATION INPUT... (or param, hypothesis, let, claim)",
+            "x" if toks[0][0] == "word" else "name",
+        )
     slots["name"], slots["op"] = toks[0][2], toks[2][2]
     op = toks[2][1]
-    arity = None if op == _ENVELOPE else (len(OPERATIONS[op].inputs) if op in OPERATIONS
-                                          else None)
+    arity = None if op == _ENVELOPE else (len(OPERATIONS[op].inputs) if op in OPERATIONS else None)
     if op not in OPERATIONS and op != _ENVELOPE:
         chk.step(toks[0][1], op, (), (), None, "", "", (), False, False, number)
     i = 3
     inputs: list[str] = []
-    while i < len(toks) and toks[i][0] == "word" and toks[i][1] not in _KEYWORDS and (
-            arity is None or len(inputs) < arity):
+    while (
+        i < len(toks)
+        and toks[i][0] == "word"
+        and toks[i][1] not in _KEYWORDS
+        and (arity is None or len(inputs) < arity)
+    ):
         slots[("input", len(inputs))] = toks[i][2]
         inputs.append(toks[i][1])
         i += 1
@@ -209,13 +218,15 @@ def _step(toks: list, chk: _Checker, number: int, slots: dict[Any, int]) -> None
         elif kind == "word" and text in ("key", "optional"):
             key, optional = key or text == "key", optional or text == "optional"
         elif kind == "values":
-            raise _Problem("the values go in one pair of parentheses, after the inputs",
-                           "clause")
+            raise _Problem("the values go in one pair of parentheses, after the inputs", "clause")
         elif kind == "word" and arity and text not in _KEYWORDS:
             raise _Problem(f"too many inputs: {op} takes {arity}", "clause")
         else:
-            raise _Problem(f"unexpected {text!r}: a caption \"…\", ref \"…\", role NAME N, "
-                           "key or optional may follow the inputs", "clause")
+            raise _Problem(
+                f'unexpected {text!r}: a caption "…", ref "…", role NAME N, '
+                "key or optional may follow the inputs",
+                "clause",
+            )
         i += 1
     chk.step(toks[0][1], op, inputs, values, caption, ref, role, n, key, optional, number)
 
@@ -227,7 +238,7 @@ def _claim(body: str, chk: _Checker, number: int, err: Any) -> None:
     m = re.search(r"\bunder\b", body[start:])
     rest_end = len(body) if m is None else start + m.start()
     if m is not None:
-        for u in re.finditer(r"\S+", body[start + m.end():]):
+        for u in re.finditer(r"\S+", body[start + m.end() :]):
             under.append(u.group())
             slots_under.append(start + m.end() + u.start() + 1)
         if not under:
@@ -264,10 +275,13 @@ def _claim(body: str, chk: _Checker, number: int, err: Any) -> None:
         rel = _find_relation(text)
         if rel is None:
             slots["x"] = col0
-            raise _Problem("a claim is NAME == TERM, sign EXPR > EXPR, on P c, or one of "
-                           f"{', '.join(_CLAIM_KINDS)}", "x")
+            raise _Problem(
+                "a claim is NAME == TERM, sign EXPR > EXPR, on P c, or one of "
+                f"{', '.join(_CLAIM_KINDS)}",
+                "x",
+            )
         pos, sym = rel
-        sides = [text[:pos], text[pos + len(sym):]]
+        sides = [text[:pos], text[pos + len(sym) :]]
         offsets = [off, off + pos + len(sym)]
         terms: list[Any] = []
         for i, (s, o) in enumerate(zip(sides, offsets)):

@@ -30,8 +30,7 @@ if TYPE_CHECKING:
 _FLOAT_DIGITS = 40  # working digits of a float grasp's values, rounded once to doubles
 
 
-def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
-              ) -> dict[sp.Basic, sp.Expr]:
+def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None) -> dict[sp.Basic, sp.Expr]:
     """Symbol (and sin/cos of a parameter) -> value, from a Grasp or a mapping."""
     if grasp is None:
         return {}
@@ -44,8 +43,7 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
     table: dict[sp.Basic, sp.Expr] = {}
     for p in program.params:
         if p.name not in given:
-            raise InputError(f"{program.file}:{p.line}:1: no value for the parameter "
-                             f"{p.name!r}")
+            raise InputError(f"{program.file}:{p.line}:1: no value for the parameter {p.name!r}")
         table[p.symbol] = given[p.name]
         if isinstance(grasp, Mapping):
             _check_domain(program, p, given[p.name])
@@ -53,8 +51,10 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
         return table  # floats: each step's value is evaluated from them (_float_value)
     known = {}  # the grasp's own exact sin φi, cos φi (computed when it was made)
     if not isinstance(grasp, Mapping):
-        known = {getattr(grasp, f"phi{i}"): (getattr(grasp, f"s{i}"), getattr(grasp, f"c{i}"))
-                 for i in (1, 2)}
+        known = {
+            getattr(grasp, f"phi{i}"): (getattr(grasp, f"s{i}"), getattr(grasp, f"c{i}"))
+            for i in (1, 2)
+        }
     for atom in program.trig_atoms:  # exact sines of the grasp's angles (no nested radicals)
         angle = atom.args[0].xreplace(table)
         s, c = known[angle] if angle in known else sincos(angle)
@@ -63,9 +63,13 @@ def _bindings(program: Program, grasp: Grasp | Mapping[str, Any] | None
 
 
 #: Domain -> (bound, sign of value - bound, whether the bound itself is allowed).
-_BOUNDS = {"positive": ((0, 1, False),), "friction": ((0, 1, False),),
-           "nonnegative": ((0, 1, True),), "angle": ((0, 1, False), (sp.pi, -1, True)),
-           "half_angle": ((0, 1, False), (sp.pi / 2, -1, False))}
+_BOUNDS = {
+    "positive": ((0, 1, False),),
+    "friction": ((0, 1, False),),
+    "nonnegative": ((0, 1, True),),
+    "angle": ((0, 1, False), (sp.pi, -1, True)),
+    "half_angle": ((0, 1, False), (sp.pi / 2, -1, False)),
+}
 
 
 def _check_domain(program: Program, p: Param, value: sp.Expr) -> None:
@@ -73,8 +77,10 @@ def _check_domain(program: Program, p: Param, value: sp.Expr) -> None:
     for bound, direction, equal in _BOUNDS.get(p.domain, ()):
         sign = decide_sign(value - bound)
         if sign is not None and sign != direction and not (sign == 0 and equal):
-            raise InputError(f"{program.file}:{p.line}:1: {p.name} = {value} is outside its "
-                             f"domain ({p.domain}: {DOMAINS[p.domain]})")
+            raise InputError(
+                f"{program.file}:{p.line}:1: {p.name} = {value} is outside its "
+                f"domain ({p.domain}: {DOMAINS[p.domain]})"
+            )
 
 
 def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
@@ -85,8 +91,7 @@ def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
     double precision for a nearly horizontal cone side)."""
     if not v.free_symbols:
         return v
-    if v.is_Symbol or (v.is_Mul and len(v.args) == 2 and v.args[0] == -1
-                       and v.args[1].is_Symbol):
+    if v.is_Symbol or (v.is_Mul and len(v.args) == 2 and v.args[0] == -1 and v.args[1].is_Symbol):
         return v.xreplace(table)
     try:
         with mpmath.workdps(_FLOAT_DIGITS):
@@ -98,8 +103,14 @@ def _float_value(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> sp.Expr:
     return canon(sp.Float(value))
 
 
-_MP_FUNCTIONS = {sp.sin: mpmath.sin, sp.cos: mpmath.cos, sp.tan: mpmath.tan,
-                 sp.asin: mpmath.asin, sp.acos: mpmath.acos, sp.atan: mpmath.atan}
+_MP_FUNCTIONS = {
+    sp.sin: mpmath.sin,
+    sp.cos: mpmath.cos,
+    sp.tan: mpmath.tan,
+    sp.asin: mpmath.asin,
+    sp.acos: mpmath.acos,
+    sp.atan: mpmath.atan,
+}
 
 
 def _mp(v: sp.Expr, table: Mapping[sp.Basic, sp.Expr]) -> mpmath.mpf:

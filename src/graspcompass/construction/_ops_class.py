@@ -40,9 +40,21 @@ from ..geometry.exact import canon, decide_zero, has_float
 from ..geometry.roots import constructed_sqrt
 from ..geometry.trig import sincos
 
-__all__ = ["bisector", "circle_compass", "circle_radius", "circumcircle", "homothety",
-           "on_circle_check", "point_on_circle", "point_on_line", "point_reflect",
-           "radical_axis", "rotate", "tangent_at", "tangent_point"]
+__all__ = [
+    "bisector",
+    "circle_compass",
+    "circle_radius",
+    "circumcircle",
+    "homothety",
+    "on_circle_check",
+    "point_on_circle",
+    "point_on_line",
+    "point_reflect",
+    "radical_axis",
+    "rotate",
+    "tangent_at",
+    "tangent_point",
+]
 
 
 def _conds(*objs: object) -> frozenset:
@@ -69,8 +81,9 @@ def on_circle_check(known: Point, c: Circle, what: str) -> None:
     if has_float(power):
         scale = abs(float(c.radius2)) + float(c.center.x) ** 2 + float(c.center.y) ** 2
     if decide_zero(power, scale) is False:
-        raise NoIntersectionError(f"{known} is not on the circle {c}: {what} needs a point "
-                                  "of the circle", known, c)
+        raise NoIntersectionError(
+            f"{known} is not on the circle {c}: {what} needs a point of the circle", known, c
+        )
 
 
 def _turn(p: Point, centre: Point, s: sp.Expr, c: sp.Expr, conds: frozenset) -> Point:
@@ -95,14 +108,21 @@ def circumcircle(a: Point, b: Point, c: Point) -> Circle:
     """
     u, v = b - a, c - a
     d = 2 * u.cross(v)
-    conds = _k._nonzero(d, DegenerateCircleError,
-                        lambda: f"{a}, {b} and {c} are collinear: no circle passes through "
-                                "them", a, b, c, scale=_k._size(u, v))
+    conds = _k._nonzero(
+        d,
+        DegenerateCircleError,
+        lambda: f"{a}, {b} and {c} are collinear: no circle passes through them",
+        a,
+        b,
+        c,
+        scale=_k._size(u, v),
+    )
     uu, vv = u.dot(u), v.dot(v)
-    centre = Point.canonical(a.x + (v.y * uu - u.y * vv) / d, a.y + (u.x * vv - v.x * uu) / d,
-                             _conds(a, b, c) | conds)
+    centre = Point.canonical(
+        a.x + (v.y * uu - u.y * vv) / d, a.y + (u.x * vv - v.x * uu) / d, _conds(a, b, c) | conds
+    )
     w = centre - a
-    return Circle(centre, canon(w.x ** 2 + w.y ** 2), conds)
+    return Circle(centre, canon(w.x**2 + w.y**2), conds)
 
 
 def circle_radius(centre: Point, r: sp.Expr) -> Circle:
@@ -113,7 +133,7 @@ def circle_radius(centre: Point, r: sp.Expr) -> Circle:
 def circle_compass(centre: Point, a: Point, b: Point) -> Circle:
     """The circle about ``centre`` with the radius |AB| (Euclid I.2's compass)."""
     d = b - a
-    return Circle(centre, canon(d.x ** 2 + d.y ** 2), _conds(a, b))
+    return Circle(centre, canon(d.x**2 + d.y**2), _conds(a, b))
 
 
 def bisector(a: Point, b: Point, c: Point) -> Line:
@@ -122,8 +142,7 @@ def bisector(a: Point, b: Point, c: Point) -> Line:
     u, v = a - b, c - b
     for w, other in ((u, a), (v, c)):
         if decide_zero(w.x) and decide_zero(w.y):
-            raise CoincidentPointsError(f"an angle needs arms: {other} is its vertex {b}",
-                                        other, b)
+            raise CoincidentPointsError(f"an angle needs arms: {other} is its vertex {b}", other, b)
     lu, lv = constructed_sqrt(canon(u.dot(u))), constructed_sqrt(canon(v.dot(v)))
     d = Point.canonical(u.x * lv + v.x * lu, u.y * lv + v.y * lu)
     return Line(b, d, _conds(a, b, c))
@@ -144,12 +163,15 @@ def polar(p: Point, circle: Circle) -> Line:
     nn = canon(n.dot(n))
     zero = decide_zero(nn)
     if zero:
-        raise DegenerateCircleError(f"the centre {p} of the circle has no tangent through it",
-                                    p, circle)
+        raise DegenerateCircleError(
+            f"the centre {p} of the circle has no tangent through it", p, circle
+        )
     k = circle.radius2 / nn
-    return Line(Point.canonical(circle.center.x + k * n.x, circle.center.y + k * n.y),
-                Point.canonical(-n.y, n.x), _conds(p, circle) | ({nn} if zero is None
-                                                                 else frozenset()))
+    return Line(
+        Point.canonical(circle.center.x + k * n.x, circle.center.y + k * n.y),
+        Point.canonical(-n.y, n.x),
+        _conds(p, circle) | ({nn} if zero is None else frozenset()),
+    )
 
 
 def tangent_point(p: Point, circle: Circle, branch: sp.Expr) -> Point:
@@ -158,9 +180,13 @@ def tangent_point(p: Point, circle: Circle, branch: sp.Expr) -> Point:
     pts = _k.intersect_line_circle(polar(p, circle), circle)
     k = int(branch)
     if len(pts) <= k:
-        raise NoIntersectionError(f"{p} is inside the circle {circle}: no tangent through it"
-                                  if not pts else f"{p} is on the circle {circle}: one "
-                                  f"tangent, no branch {k}", p, circle)
+        raise NoIntersectionError(
+            f"{p} is inside the circle {circle}: no tangent through it"
+            if not pts
+            else f"{p} is on the circle {circle}: one tangent, no branch {k}",
+            p,
+            circle,
+        )
     return pts[k]
 
 
@@ -173,8 +199,9 @@ def rotate(p: Point, centre: Point, angle: sp.Expr) -> Point:
 
 def homothety(p: Point, centre: Point, k: sp.Expr) -> Point:
     """The image of ``p`` by the homothety of ``centre`` and ratio k: C + k (P − C)."""
-    return Point.canonical(centre.x + k * (p.x - centre.x), centre.y + k * (p.y - centre.y),
-                           _conds(p, centre))
+    return Point.canonical(
+        centre.x + k * (p.x - centre.x), centre.y + k * (p.y - centre.y), _conds(p, centre)
+    )
 
 
 def point_reflect(p: Point, centre: Point) -> Point:

@@ -45,28 +45,58 @@ MAX_LINE_LENGTH = 1000
 MAX_LINES = 10_000
 #: Domain words of ``param NAME DOMAIN`` -> what they mean.
 DOMAINS: Mapping[str, str] = {
-    "positive": "> 0", "nonnegative": ">= 0", "angle": "0 < value <= pi (a normal angle φ)",
-    "friction": "a friction coefficient μ > 0", "half_angle": "0 < ξ < pi/2 (tan ξ = μ)",
+    "positive": "> 0",
+    "nonnegative": ">= 0",
+    "angle": "0 < value <= pi (a normal angle φ)",
+    "friction": "a friction coefficient μ > 0",
+    "half_angle": "0 < ξ < pi/2 (tan ξ = μ)",
     "real": "any real number",
 }
 #: Hypotheses a file may name (``hypothesis NAME``, ``claim ... under NAME``).
 HYPOTHESES: Mapping[str, str] = {
     "condition1": "condition (1), §2.2.2: each friction cone contains the other contact "
-                  "(−π/2 < φi − ξi < π/2 < φi + ξi < 3π/2)",
+    "(−π/2 < φi − ξi < π/2 < φi + ξi < 3π/2)",
 }
 _ENVELOPE = "envelope"
 _RELATIONS = ("==", "!=", ">=", "<=", ">", "<")
-_CLAIM_KINDS = {"collinear": ("point", 3), "concurrent": ("line", 3),
-                "concyclic": ("point", 4), "perpendicular": ("line", 2), "parallel": ("line", 2),
-                "congruent": ("point", 4), "equal_angles": ("point", 6), "tangent": (None, 2)}
+_CLAIM_KINDS = {
+    "collinear": ("point", 3),
+    "concurrent": ("line", 3),
+    "concyclic": ("point", 4),
+    "perpendicular": ("line", 2),
+    "parallel": ("line", 2),
+    "congruent": ("point", 4),
+    "equal_angles": ("point", 6),
+    "tangent": (None, 2),
+}
 #: Claims of names followed by ``== VALUE``: a ratio of lengths, a sum of directed angles.
 _VALUE_CLAIMS = {"ratio": 4, "angles": 3}
-_KEYWORDS = frozenset({"param", "hypothesis", "let", "claim", "ref", "role", "key", "optional",
-                       "under", "sign", "on", *_CLAIM_KINDS, *_VALUE_CLAIMS, "point", "pi",
-                       "deg"})
+_KEYWORDS = frozenset(
+    {
+        "param",
+        "hypothesis",
+        "let",
+        "claim",
+        "ref",
+        "role",
+        "key",
+        "optional",
+        "under",
+        "sign",
+        "on",
+        *_CLAIM_KINDS,
+        *_VALUE_CLAIMS,
+        "point",
+        "pi",
+        "deg",
+    }
+)
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:-[A-Za-z0-9_]+)*")
-_TOKEN = re.compile(r"""\s*(?:(?P<string>"(?:[^"\\\n]|\\.)*")|(?P<word>[A-Za-z_][A-Za-z0-9_]*
-    (?:-[A-Za-z0-9_]+)*)|(?P<int>\d+)|(?P<rel>==|!=|>=|<=|>|<|=)|(?P<open>\())""", re.X)
+_TOKEN = re.compile(
+    r"""\s*(?:(?P<string>"(?:[^"\\\n]|\\.)*")|(?P<word>[A-Za-z_][A-Za-z0-9_]*
+    (?:-[A-Za-z0-9_]+)*)|(?P<int>\d+)|(?P<rel>==|!=|>=|<=|>|<|=)|(?P<open>\())""",
+    re.X,
+)
 
 
 # -- errors ---------------------------------------------------------------------------
@@ -201,8 +231,13 @@ class Program:
     def trig_atoms(self) -> frozenset:
         """``sin(a)`` and ``cos(a)`` of expressions in the parameters, in the steps' values
         (replay gives them the grasp's exact values; computed once per program)."""
-        return frozenset(a for s in self.steps for v in s.values
-                         for a in v.atoms(sp.sin, sp.cos) if a.free_symbols)
+        return frozenset(
+            a
+            for s in self.steps
+            for v in s.values
+            for a in v.atoms(sp.sin, sp.cos)
+            if a.free_symbols
+        )
 
     @property
     def kinds(self) -> dict[str, str]:
@@ -224,11 +259,21 @@ def _symbol(name: str, domain: str) -> sp.Symbol:
         return model
     if domain in ("positive", "friction", "half_angle", "angle"):
         return sp.Symbol(name, positive=True)
-    return sp.Symbol(name, nonnegative=True) if domain == "nonnegative" else sp.Symbol(
-        name, real=True)
+    return (
+        sp.Symbol(name, nonnegative=True) if domain == "nonnegative" else sp.Symbol(name, real=True)
+    )
 
 
 # documented and pickled as graspcompass.construction.program's (which re-exports them)
-for _cls in (ConstructionSyntaxError, DegenerateStepError, Param, Statement, Ref, Value,
-             PointValue, Claim, Program):
+for _cls in (
+    ConstructionSyntaxError,
+    DegenerateStepError,
+    Param,
+    Statement,
+    Ref,
+    Value,
+    PointValue,
+    Claim,
+    Program,
+):
     _cls.__module__ = "graspcompass.construction.program"

@@ -50,13 +50,18 @@ def format_program(p: Any, value_claims: Collection[str]) -> str:
         out.append(" ".join(parts))
     for c in p.claims:
         if c.kind in value_claims:
-            line = (f"claim {c.kind} " + " ".join(_term(t) for t in c.terms[:-1]) + " == "
-                    + _term(c.terms[-1]))
+            line = (
+                f"claim {c.kind} "
+                + " ".join(_term(t) for t in c.terms[:-1])
+                + " == "
+                + _term(c.terms[-1])
+            )
         elif c.kind in ("equal", "sign"):
             body = f"{_term(c.terms[0])} {c.relation} {_term(c.terms[1])}"
             line = f"claim {'sign ' * (c.kind == 'sign')}{body}"
         else:
             line = f"claim {c.kind} " + " ".join(_term(t) for t in c.terms)
-        out.append(line + "".join(f" under {h}" if i == 0 else f" {h}"
-                                  for i, h in enumerate(c.under)))
+        out.append(
+            line + "".join(f" under {h}" if i == 0 else f" {h}" for i, h in enumerate(c.under))
+        )
     return "\n".join(out) + "\n"

@@ -53,7 +53,8 @@ def describe(obj: Any, ascii: bool = False) -> str:
         theta = "theta" if ascii else "θ"
         parts = [
             ("O" if a.is_zero else f"circle {a.n}") + f" for {theta} in [{text(a.theta_start)}, "
-            f"{text(a.theta_end)}]" for a in obj.arcs
+            f"{text(a.theta_end)}]"
+            for a in obj.arcs
         ]
         return "; ".join(parts)
     return text(obj)
@@ -65,13 +66,26 @@ def _value(obj: Any) -> dict[str, Any]:
     if isinstance(obj, Line):
         return {"point": _value(obj.point), "direction": _value(obj.direction)}
     if isinstance(obj, Circle):
-        return {"center": _value(obj.center), "radius2": text(obj.radius2),
-                "radius": None if obj.radius2.free_symbols else _num(sp.sqrt(obj.radius2))}
+        return {
+            "center": _value(obj.center),
+            "radius2": text(obj.radius2),
+            "radius": None if obj.radius2.free_symbols else _num(sp.sqrt(obj.radius2)),
+        }
     if isinstance(obj, Envelope):
-        return {"arcs": [
-            {"circle": a.n, "theta_start": text(a.theta_start), "theta_end": text(a.theta_end),
-             "theta_start_deg": _deg(a.theta_start), "theta_end_deg": _deg(a.theta_end),
-             "start": _value(a.start), "end": _value(a.end)} for a in obj.arcs]}
+        return {
+            "arcs": [
+                {
+                    "circle": a.n,
+                    "theta_start": text(a.theta_start),
+                    "theta_end": text(a.theta_end),
+                    "theta_start_deg": _deg(a.theta_start),
+                    "theta_end_deg": _deg(a.theta_end),
+                    "start": _value(a.start),
+                    "end": _value(a.end),
+                }
+                for a in obj.arcs
+            ]
+        }
     return {"exact": text(obj), "float": _num(obj)}
 
 

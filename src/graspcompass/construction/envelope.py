@@ -73,6 +73,7 @@ _FLOAT_MERGE = 1e-13
 class EnvelopeError(GraspCompassError):
     """The construction's break point does not lie at the computed break angle."""
 
+
 @dataclass(frozen=True)
 class Arc:
     """One piece of the envelope, for θ from ``theta_start`` to ``theta_end``.
@@ -221,8 +222,9 @@ def _breaks(Vm: list[tuple[mpmath.mpf, mpmath.mpf]], merge: float) -> list[tuple
         mid = (cuts[i] + b) / 2
         # in double precision when the largest k leads by far more than rounding
         s, c = math.sin(float(mid)), math.cos(float(mid))
-        kf = sorted([(0.0, 0), *((x * s - y * c, -n) for n, (x, y) in enumerate(Vf, 1))],
-                    reverse=True)
+        kf = sorted(
+            [(0.0, 0), *((x * s - y * c, -n) for n, (x, y) in enumerate(Vf, 1))], reverse=True
+        )
         if kf[0][0] - kf[1][0] > clear:
             win.append(-kf[0][1])
             continue
@@ -250,8 +252,9 @@ def _merge_short(breaks: list[tuple[Any, int, int]], tol: float) -> list[tuple[A
     return out
 
 
-def _float_arcs(Vm: list[tuple[mpmath.mpf, mpmath.mpf]],
-                breaks: list[tuple[Any, int, int]]) -> list[Arc]:
+def _float_arcs(
+    Vm: list[tuple[mpmath.mpf, mpmath.mpf]], breaks: list[tuple[Any, int, int]]
+) -> list[Arc]:
     points = []
     for t, a, b in breaks:
         if a == 0 or b == 0:
@@ -259,13 +262,21 @@ def _float_arcs(Vm: list[tuple[mpmath.mpf, mpmath.mpf]],
             continue
         ks = _ks(Vm, t)
         k = max((ks[a] + ks[b]) / 2, 0)
-        points.append(Point(sp.Float(float(k * mpmath.sin(t))),
-                            sp.Float(float(-k * mpmath.cos(t)))))
+        points.append(
+            Point(sp.Float(float(k * mpmath.sin(t))), sp.Float(float(-k * mpmath.cos(t))))
+        )
     thetas = [sp.Float(float(t)) for t, _, _ in breaks]
     m = len(breaks)
-    return [Arc(breaks[j][2], thetas[j],
-                thetas[j + 1] if j + 1 < m else sp.Float(float(breaks[0][0] + 2 * mpmath.pi)),
-                points[j], points[(j + 1) % m]) for j in range(m)]
+    return [
+        Arc(
+            breaks[j][2],
+            thetas[j],
+            thetas[j + 1] if j + 1 < m else sp.Float(float(breaks[0][0] + 2 * mpmath.pi)),
+            points[j],
+            points[(j + 1) % m],
+        )
+        for j in range(m)
+    ]
 
 
 def _gap(a: Any, b: Any) -> Any:
@@ -273,8 +284,9 @@ def _gap(a: Any, b: Any) -> Any:
     return abs((a - b + mpmath.pi) % (2 * mpmath.pi) - mpmath.pi)
 
 
-def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
-                breaks: list[tuple[Any, int, int]]) -> list[Arc]:
+def _exact_arcs(
+    objects: Mapping[str, Any], V: tuple[Point, ...], breaks: list[tuple[Any, int, int]]
+) -> list[Arc]:
     found = []  # (θ numeric, θ exact, point)
     for t, a, b in breaks:
         lo, hi = sorted((a, b))
@@ -294,7 +306,8 @@ def _exact_arcs(objects: Mapping[str, Any], V: tuple[Point, ...],
             if _gap(tp, t) > 1e-20 or _gap(tp, te) > 1e-20:
                 raise EnvelopeError(
                     f"B{lo}{hi} = {p} lies at θ = {mpmath.nstr(tp, 17)}, not at the break "
-                    f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest")
+                    f"angle {mpmath.nstr(t, 17)} where k{lo} = k{hi} is largest"
+                )
             # e's angle is B's exactly when B is a multiple of e (a file's own B need not be)
             along = not numeric_point(p) and _parallel(p, e)
             found.append((tp, _angle(e if along else p, tp), p))
@@ -340,9 +353,11 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     """
     missing = [f"V{n}" for n in (1, 2, 3, 4) if not isinstance(objects.get(f"V{n}"), Point)]
     if missing:
-        raise EnvelopeError(f"the envelope is drawn from the four points V1..V4 (eq. (25)): "
-                            f"{', '.join(missing)} missing (a step with role V n, or named "
-                            "so, for each of them)")
+        raise EnvelopeError(
+            f"the envelope is drawn from the four points V1..V4 (eq. (25)): "
+            f"{', '.join(missing)} missing (a step with role V n, or named "
+            "so, for each of them)"
+        )
     V = tuple(objects[f"V{n}"] for n in (1, 2, 3, 4))
     numeric = any(has_float(c) for v in V for c in (v.x, v.y))
     for dps in _PRECISIONS:  # exact V_n of very different sizes need more digits
@@ -354,8 +369,9 @@ def outer_envelope(objects: Mapping[str, Any]) -> Envelope:
     raise AssertionError("unreachable")  # pragma: no cover
 
 
-def _envelope(objects: Mapping[str, Any], V: tuple[Point, ...], numeric: bool,
-              dps: int) -> Envelope:
+def _envelope(
+    objects: Mapping[str, Any], V: tuple[Point, ...], numeric: bool, dps: int
+) -> Envelope:
     with mpmath.workdps(dps):
         Vm = [(mpf(v.x, dps), mpf(v.y, dps)) for v in V]
         breaks = _breaks(Vm, _EXACT_MERGE)

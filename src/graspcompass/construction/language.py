@@ -173,19 +173,20 @@ def parse(text: str, file: str = "<text>") -> Program:
     graspcompass.construction.program.ConstructionSyntaxError: f.gc:1:18: unknown name 'A' ...
     """
     if not isinstance(text, str):
-        raise NotTextError(f"expected the text of a construction file (a str), got "
-                           f"{type(text).__name__}")
+        raise NotTextError(
+            f"expected the text of a construction file (a str), got {type(text).__name__}"
+        )
     lines = text.split("\n")
     if len(lines) > MAX_LINES:
         raise ConstructionSyntaxError(f"more than {MAX_LINES} lines", file, MAX_LINES + 1, 1)
     chk = _Checker()
     for number, raw in enumerate(lines, 1):
+
         def err(what: str, col: int, number: int = number) -> ConstructionSyntaxError:
             return ConstructionSyntaxError(what, file, number, col)
 
         if len(raw) > MAX_LINE_LENGTH:
-            raise err(f"the line is longer than {MAX_LINE_LENGTH} characters",
-                      MAX_LINE_LENGTH + 1)
+            raise err(f"the line is longer than {MAX_LINE_LENGTH} characters", MAX_LINE_LENGTH + 1)
         body = _strip_comment(raw.rstrip("\r"))
         if not body.strip():
             continue
@@ -196,8 +197,7 @@ def parse(text: str, file: str = "<text>") -> Program:
 # -- replay ---------------------------------------------------------------------------------
 
 
-def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
-           ) -> Construction:
+def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None) -> Construction:
     """Run a program's steps in order with the exact kernel.
 
     Parameters
@@ -243,21 +243,48 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
             if symbolic:
                 continue
             ins = tuple(n for n in s.inputs if n in env)
-            steps.append(Step(len(steps), s.name, _ENVELOPE, "compass", ins,
-                              outer_envelope(_by_role(steps, env)), (), s.caption, s.ref, (),
-                              s.key, s.role, s.n))
+            steps.append(
+                Step(
+                    len(steps),
+                    s.name,
+                    _ENVELOPE,
+                    "compass",
+                    ins,
+                    outer_envelope(_by_role(steps, env)),
+                    (),
+                    s.caption,
+                    s.ref,
+                    (),
+                    s.key,
+                    s.role,
+                    s.n,
+                )
+            )
             env[s.name] = steps[-1].obj
             continue
         try:
             if floats:
                 values = tuple(_float_value(v, table) for v in s.values)
             else:
-                values = tuple(_exact_value(v, table) if v.free_symbols else v
-                               for v in s.values) if table else s.values
+                values = (
+                    tuple(_exact_value(v, table) if v.free_symbols else v for v in s.values)
+                    if table
+                    else s.values
+                )
         except (InputError, ArithmeticError, ValueError) as exc:
             raise InputError(f"{program.file}:{s.line}:1: step {s.name}: {exc}") from None
-        spec = StepSpec(s.name, s.op, s.inputs, OPERATIONS[s.op].instrument, s.caption, s.ref,
-                        values, s.key, s.role, s.n)
+        spec = StepSpec(
+            s.name,
+            s.op,
+            s.inputs,
+            OPERATIONS[s.op].instrument,
+            s.caption,
+            s.ref,
+            values,
+            s.key,
+            s.role,
+            s.n,
+        )
         try:
             step = run_step(spec, env, len(steps))
         except GeometryError as exc:
@@ -266,17 +293,25 @@ def replay(program: Program, grasp: Grasp | Mapping[str, Any] | None = None
                 continue
             raise DegenerateStepError(
                 f"{program.file}:{s.line}:1: step {s.name} = {s.op} {' '.join(s.inputs)} is "
-                f"degenerate: {exc}", s.name, s.line, *(env[n] for n in s.inputs)) from exc
+                f"degenerate: {exc}",
+                s.name,
+                s.line,
+                *(env[n] for n in s.inputs),
+            ) from exc
         except ZeroDivisionError as exc:  # a divisor that is 0 modulo sin² + cos² = 1
             raise DegenerateStepError(
                 f"{program.file}:{s.line}:1: step {s.name} = {s.op} {' '.join(s.inputs)} "
                 "divides by an expression that is 0 for every value of the parameters "
-                "(0/0: it exists nowhere)", s.name, s.line,
-                *(env[n] for n in s.inputs)) from exc
+                "(0/0: it exists nowhere)",
+                s.name,
+                s.line,
+                *(env[n] for n in s.inputs),
+            ) from exc
         env[s.name] = step.obj
         steps.append(step)
-    return Construction(tuple(steps), grasp if not isinstance(grasp, Mapping) else None,
-                        tuple(skipped))
+    return Construction(
+        tuple(steps), grasp if not isinstance(grasp, Mapping) else None, tuple(skipped)
+    )
 
 
 def _by_role(steps: list[Step], env: dict[str, Any]) -> dict[str, Any]:
@@ -364,7 +399,8 @@ def _paper_steps() -> Program:
     lines = paper_text().split("\n")
     kept = ["" if line.lstrip().startswith("claim ") else line for line in lines]
     try:  # its let values too, which only claims use: a step that used one would not parse
-        return parse("\n".join("" if line.lstrip().startswith("let ") else line
-                               for line in kept), "paper.gc")
+        return parse(
+            "\n".join("" if line.lstrip().startswith("let ") else line for line in kept), "paper.gc"
+        )
     except InputError:
         return parse("\n".join(kept), "paper.gc")

@@ -100,26 +100,34 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
     Q = g.polygon()
     n2 = 2 * g.n
     com = g.com
-    lines = [f"# The internal force diagram of {g.n} contacts, effort {g.effort.name}: "
-             "each vertex of Q as the quarter turn of the velocity image of O (docs/ncontact.md)",
-             f"O = point {_pt(com)} role given ref \"§2.2.1\" \"The centre of mass O\""]
+    lines = [
+        f"# The internal force diagram of {g.n} contacts, effort {g.effort.name}: "
+        "each vertex of Q as the quarter turn of the velocity image of O (docs/ncontact.md)",
+        f'O = point {_pt(com)} role given ref "§2.2.1" "The centre of mass O"',
+    ]
     edges = g.edges()
     for i, c in enumerate(g.contacts):
-        lines.append(f"P{i + 1} = point {_pt(c.p)} role contact {i + 1} ref \"§2.2.1\" "
-                     f"\"Contact point P{i + 1}\"")
+        lines.append(
+            f'P{i + 1} = point {_pt(c.p)} role contact {i + 1} ref "§2.2.1" '
+            f'"Contact point P{i + 1}"'
+        )
     for j, (i, s, d) in enumerate(edges):
         tag = "+" if s > 0 else "−"
-        lines.append(f"l{j + 1} = line_with_direction P{i + 1} {_pt(d)} role edge {j + 1} "
-                     f"ref \"§2.2.2\" \"Edge {tag} of the friction cone at P{i + 1}: its line of "
-                     "action\"")
+        lines.append(
+            f"l{j + 1} = line_with_direction P{i + 1} {_pt(d)} role edge {j + 1} "
+            f'ref "§2.2.2" "Edge {tag} of the friction cone at P{i + 1}: its line of '
+            'action"'
+        )
     linear = g.effort.linear
     weights = g.effort.weights or ()
     if linear:
         for i, w in enumerate(weights):
             t = (com[0] + w[1], com[1] - w[0])
-            lines.append(f"T{i + 1} = point {_pt(t)} role cost_point {i + 1} ref "
-                         f"\"docs/ncontact.md\" \"Cost point T{i + 1} = O + (w{i + 1} turned a "
-                         "quarter turn clockwise)\"")
+            lines.append(
+                f"T{i + 1} = point {_pt(t)} role cost_point {i + 1} ref "
+                f'"docs/ncontact.md" "Cost point T{i + 1} = O + (w{i + 1} turned a '
+                'quarter turn clockwise)"'
+            )
     O = _f(com)  # noqa: E741 - the paper's name of the centre of mass
     P = [_f(c.p) for c in g.contacts]
     D = [_f(d) for _, _, d in edges]
@@ -131,9 +139,11 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
         if j not in cost_lines:
             cost_lines.add(j)
             i = edges[j][0]
-            lines.append(f"c{j + 1} = parallel l{j + 1} T{i + 1} role cost_line {j + 1} ref "
-                         f"\"docs/ncontact.md step 1\" \"Cost line of edge {j + 1}: the "
-                         f"parallel to it through T{i + 1}\"")
+            lines.append(
+                f"c{j + 1} = parallel l{j + 1} T{i + 1} role cost_line {j + 1} ref "
+                f'"docs/ncontact.md step 1" "Cost line of edge {j + 1}: the '
+                f'parallel to it through T{i + 1}"'
+            )
         return f"c{j + 1}"
 
     def three_force(k: int, pair: tuple, a: int) -> list[str] | None:
@@ -148,16 +158,17 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
         cl = cost_line(a)
         pi, pk, ti = f"P{i + 1}", f"P{kk + 1}", f"T{i + 1}"
         return [
-            f"m{k} = parallel_to_points {pi} {pk} {ti} role transfer {k} ref \"docs/ncontact.md "
-            f"step 2\" \"Parallel to {pi}{pk} through {ti}\"",
-            f"I{k} = meet {cl} m{k} role image {k} ref \"docs/ncontact.md step 2\" \"The image "
-            f"of {pk}: where {cl} meets m{k}\"",
-            f"o{k} = parallel_to_points {pi} O {ti} role transfer {k} ref \"docs/ncontact.md "
-            f"step 3\" \"Parallel to {pi}O through {ti}\"",
-            f"b{k} = parallel_to_points {pk} O I{k} role transfer {k} ref \"docs/ncontact.md "
-            f"step 3\" \"Parallel to {pk}O through I{k}\"",
-            f"R{k} = meet o{k} b{k} role image {k} ref \"docs/ncontact.md step 3\" \"The image "
-            f"R{k} of O\""]
+            f'm{k} = parallel_to_points {pi} {pk} {ti} role transfer {k} ref "docs/ncontact.md '
+            f'step 2" "Parallel to {pi}{pk} through {ti}"',
+            f'I{k} = meet {cl} m{k} role image {k} ref "docs/ncontact.md step 2" "The image '
+            f'of {pk}: where {cl} meets m{k}"',
+            f'o{k} = parallel_to_points {pi} O {ti} role transfer {k} ref "docs/ncontact.md '
+            f'step 3" "Parallel to {pi}O through {ti}"',
+            f'b{k} = parallel_to_points {pk} O I{k} role transfer {k} ref "docs/ncontact.md '
+            f'step 3" "Parallel to {pk}O through I{k}"',
+            f'R{k} = meet o{k} b{k} role image {k} ref "docs/ncontact.md step 3" "The image '
+            f'R{k} of O"',
+        ]
 
     def general(k: int, basis: tuple) -> list[str] | None:
         for a, b, c in itertools.permutations(basis):
@@ -173,19 +184,18 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
                 continue
             ca, cb, cc = cost_line(a), cost_line(b), cost_line(c)
             la, lb, lc = f"l{a + 1}", f"l{b + 1}", f"l{c + 1}"
-            ref = "ref \"docs/ncontact.md, general basis\""
+            ref = 'ref "docs/ncontact.md, general basis"'
             return [
-                f"A{k}b = meet {la} {lb} role image {k} {ref} \"Where {la} meets {lb}\"",
-                f"A{k}c = meet {la} {lc} role image {k} {ref} \"Where {la} meets {lc}\"",
-                f"B{k}b = meet {ca} {cb} role image {k} {ref} \"Its image: where {ca} meets "
-                f"{cb}\"",
-                f"B{k}c = meet {ca} {cc} role image {k} {ref} \"Its image: where {ca} meets "
-                f"{cc}\"",
-                f"o{k} = parallel_to_points A{k}b O B{k}b role transfer {k} {ref} \"Parallel to "
-                f"A{k}b O through B{k}b\"",
-                f"b{k} = parallel_to_points A{k}c O B{k}c role transfer {k} {ref} \"Parallel to "
-                f"A{k}c O through B{k}c\"",
-                f"R{k} = meet o{k} b{k} role image {k} {ref} \"The image R{k} of O\""]
+                f'A{k}b = meet {la} {lb} role image {k} {ref} "Where {la} meets {lb}"',
+                f'A{k}c = meet {la} {lc} role image {k} {ref} "Where {la} meets {lc}"',
+                f'B{k}b = meet {ca} {cb} role image {k} {ref} "Its image: where {ca} meets {cb}"',
+                f'B{k}c = meet {ca} {cc} role image {k} {ref} "Its image: where {ca} meets {cc}"',
+                f'o{k} = parallel_to_points A{k}b O B{k}b role transfer {k} {ref} "Parallel to '
+                f'A{k}b O through B{k}b"',
+                f'b{k} = parallel_to_points A{k}c O B{k}c role transfer {k} {ref} "Parallel to '
+                f'A{k}c O through B{k}c"',
+                f'R{k} = meet o{k} b{k} role image {k} {ref} "The image R{k} of O"',
+            ]
         return None
 
     for k, idx in enumerate(Q.vertex_index, start=1):
@@ -197,8 +207,9 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
                 if len(es) != 3:
                     continue
                 owners = [edges[j][0] for j in es]
-                pairs = [(x, y) for x, y in itertools.combinations(es, 2)
-                         if edges[x][0] == edges[y][0]]
+                pairs = [
+                    (x, y) for x, y in itertools.combinations(es, 2) if edges[x][0] == edges[y][0]
+                ]
                 if pairs:
                     a = next(j for j in es if j not in pairs[0])
                     steps = three_force(k, pairs[0], a) or general(k, es)
@@ -208,18 +219,27 @@ def ncontact_recipe(grasp: NContactGrasp) -> str:
                     break
         if steps:
             lines += steps
-            lines.append(f"q{k} = quarter_turn R{k} O role V {k} key ref \"docs/ncontact.md step "
-                         f"4\" \"Turn R{k} a quarter turn clockwise about O: the vertex q{k}\"")
+            lines.append(
+                f'q{k} = quarter_turn R{k} O role V {k} key ref "docs/ncontact.md step '
+                f'4" "Turn R{k} a quarter turn clockwise about O: the vertex q{k}"'
+            )
         else:
-            why = ("a sign constraint in its basis" if linear else
-                   "the effort max-normal has no cost points")
-            lines.append(f"q{k} = point {_pt(cand.q)} role V {k} key ref \"docs/ncontact.md\" "
-                         f"\"The vertex q{k}, given (not constructed: {why})\"")
+            why = (
+                "a sign constraint in its basis"
+                if linear
+                else "the effort max-normal has no cost points"
+            )
+            lines.append(
+                f'q{k} = point {_pt(cand.q)} role V {k} key ref "docs/ncontact.md" '
+                f'"The vertex q{k}, given (not constructed: {why})"'
+            )
     for k, idx in enumerate(Q.vertex_index, start=1):
         if _at(Q.candidates[idx].q, com):
             lines.append(f"# q{k} = O: its circle is the point O (no effort on its arc)")
             continue
-        lines.append(f"circle{k} = circle_on_diameter O q{k} role circle {k} key ref "
-                     f"\"§3.2 eq. (31)-(32)\" \"Circle on the diameter O q{k}: q{k}'s part of "
-                     "the polar diagram\"")
+        lines.append(
+            f"circle{k} = circle_on_diameter O q{k} role circle {k} key ref "
+            f'"§3.2 eq. (31)-(32)" "Circle on the diameter O q{k}: q{k}\'s part of '
+            'the polar diagram"'
+        )
     return "\n".join(lines) + "\n"

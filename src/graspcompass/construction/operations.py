@@ -45,8 +45,23 @@ KINDS = ("point", "line", "circle", "number")
 PARAM_KINDS = ("number", "angle", "branch")
 #: Roles a step may play in a drawing (``""``: none), set by the recipe as data.
 ROLES: tuple[str, ...] = (
-    "", "given", "axis", "contact", "cone_side", "foot", "midpoint", "X", "perpendicular",
-    "Y", "S_length", "C_length", "V", "circle", "break_point", "envelope")
+    "",
+    "given",
+    "axis",
+    "contact",
+    "cone_side",
+    "foot",
+    "midpoint",
+    "X",
+    "perpendicular",
+    "Y",
+    "S_length",
+    "C_length",
+    "V",
+    "circle",
+    "break_point",
+    "envelope",
+)
 
 
 def kind_of(obj: object) -> str:
@@ -104,8 +119,7 @@ class Operation:
     draws: str
     doc: str
 
-    def caption_for(self, name: str, inputs: tuple[str, ...], params: tuple[Any, ...] = ()
-                    ) -> str:
+    def caption_for(self, name: str, inputs: tuple[str, ...], params: tuple[Any, ...] = ()) -> str:
         """The default caption of a step ``name`` made from ``inputs`` and ``params``."""
         values = {f"p{i}": str(p) for i, p in enumerate(params)}
         values.update({f"p{i}": "?" for i in range(len(params), len(self.params))})
@@ -121,7 +135,8 @@ class Operation:
 
 #: Name -> record of every operation of the kernel.
 OPERATIONS: Mapping[str, Operation] = MappingProxyType(
-    {row.name: Operation(*row) for row in _table.ROWS})
+    {row.name: Operation(*row) for row in _table.ROWS}
+)
 
 #: Roles of the n-contact vertex recipe (issue 25), kept apart from the paper's.
 ROLES = (*ROLES, "edge", "cost_point", "cost_line", "transfer", "image")

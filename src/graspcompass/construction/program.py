@@ -66,6 +66,7 @@ __all__ = [
     "Value",
 ]
 
+
 # -- the Python builder -----------------------------------------------------------------------
 class ConstructionBuilder:
     """Make a :class:`Program` from Python, with the same checks as :func:`parse`.
@@ -115,9 +116,19 @@ class ConstructionBuilder:
         """A named value (text in the safe expression syntax, an int or a sympy expression)."""
         self._run(self._chk.let, name, value, self._calls + 1)
 
-    def step(self, name: str, op: str, *inputs: str, values: Iterable[Any] = (),
-             caption: str | None = None, ref: str = "", role: str = "",
-             n: Iterable[int] = (), key: bool = False, optional: bool = False) -> Statement:
+    def step(
+        self,
+        name: str,
+        op: str,
+        *inputs: str,
+        values: Iterable[Any] = (),
+        caption: str | None = None,
+        ref: str = "",
+        role: str = "",
+        n: Iterable[int] = (),
+        key: bool = False,
+        optional: bool = False,
+    ) -> Statement:
         """Add the step ``name = op inputs (values)``; returns its :class:`Statement`.
 
         Parameters
@@ -131,11 +142,24 @@ class ConstructionBuilder:
         caption, ref, role, n, key, optional
             As the clauses of the language (the caption defaults to the operation's).
         """
-        return self._run(self._chk.step, name, op, inputs, values, caption, ref, role, n,
-                         key, optional, self._calls + 1)
+        return self._run(
+            self._chk.step,
+            name,
+            op,
+            inputs,
+            values,
+            caption,
+            ref,
+            role,
+            n,
+            key,
+            optional,
+            self._calls + 1,
+        )
 
-    def claim(self, kind: str, *terms: Any, relation: str = "==",
-              under: Iterable[str] = ()) -> None:
+    def claim(
+        self, kind: str, *terms: Any, relation: str = "==", under: Iterable[str] = ()
+    ) -> None:
         """A claim: ``kind`` is ``equal``, ``sign``, ``on``, ``collinear``, ``concurrent``,
         ``perpendicular`` or ``parallel``; terms are names, text, or ``(x, y)`` points."""
         rel = relation if kind in ("equal", "sign") else ""

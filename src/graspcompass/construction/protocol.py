@@ -113,8 +113,18 @@ class Step:
     @property
     def spec(self) -> StepSpec:
         """The declaration that makes this step again."""
-        return StepSpec(self.name, self.op, self.inputs, self.instrument, self.caption,
-                        self.ref, self.params, self.key, self.role, self.n)
+        return StepSpec(
+            self.name,
+            self.op,
+            self.inputs,
+            self.instrument,
+            self.caption,
+            self.ref,
+            self.params,
+            self.key,
+            self.role,
+            self.n,
+        )
 
 
 @dataclass(frozen=True)
@@ -177,8 +187,12 @@ class Construction:
         return replace(self, steps=self.steps[: (i % n) + 1])
 
 
-def run_step(spec: StepSpec, env: dict[str, Any], index: int,
-             extra_ops: dict[str, Callable[..., Any]] | None = None) -> Step:
+def run_step(
+    spec: StepSpec,
+    env: dict[str, Any],
+    index: int,
+    extra_ops: dict[str, Callable[..., Any]] | None = None,
+) -> Step:
     """Run one declaration against the named objects ``env``; return the step."""
     ops = OPS if not extra_ops else {**OPS, **extra_ops}
     args = [env[n] for n in spec.inputs]
@@ -187,12 +201,26 @@ def run_step(spec: StepSpec, env: dict[str, Any], index: int,
     for a in args:
         before |= getattr(a, "conditions", frozenset())
     new = tuple(sorted(getattr(obj, "conditions", frozenset()) - before, key=sp.default_sort_key))
-    return Step(index, spec.name, spec.op, spec.instrument, spec.inputs, obj, new,
-                spec.caption, spec.ref, spec.params, spec.key, spec.role, spec.n)
+    return Step(
+        index,
+        spec.name,
+        spec.op,
+        spec.instrument,
+        spec.inputs,
+        obj,
+        new,
+        spec.caption,
+        spec.ref,
+        spec.params,
+        spec.key,
+        spec.role,
+        spec.n,
+    )
 
 
-def replay(specs: Sequence[StepSpec], grasp: Grasp | None = None,
-           subs: dict | None = None) -> Construction:
+def replay(
+    specs: Sequence[StepSpec], grasp: Grasp | None = None, subs: dict | None = None
+) -> Construction:
     """Run step declarations in order; ``subs`` substitutes symbols in the params.
 
     Examples
@@ -209,9 +237,16 @@ def replay(specs: Sequence[StepSpec], grasp: Grasp | None = None,
     # numpy arrays and other objects refused by name), never sympify'd
     from ..boundary.inputs import real_value, substitutions
 
-    specs = [replace(spec, params=tuple(
-        p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")
-        for j, p in enumerate(spec.params))) for spec in specs]
+    specs = [
+        replace(
+            spec,
+            params=tuple(
+                p if isinstance(p, sp.Basic) else real_value(p, f"{spec.name}.params[{j}]")
+                for j, p in enumerate(spec.params)
+            ),
+        )
+        for spec in specs
+    ]
     if subs:
         known = set().union(*(p.free_symbols for spec in specs for p in spec.params))
         subs = substitutions(subs, known, "subs", strict=False)

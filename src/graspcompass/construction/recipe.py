@@ -38,71 +38,204 @@ def diagram_specs(grasp: Grasp) -> list[StepSpec]:
     """
     S = StepSpec
     specs = [
-        S("O", "point", (), "mark", "Origin O at the object's centre of mass", "§2.2.1",
-          (0, 0), role="given"),
-        S("x-axis", "line_with_direction", ("O",), "ruler",
-          "The x-axis, parallel to the line through the contacts", "§2.2.1", (1, 0),
-          role="axis", n=(1,)),
-        S("y-axis", "line_with_direction", ("O",), "ruler",
-          "The y-axis, perpendicular to the line through the contacts", "§2.2.1", (0, 1),
-          role="axis", n=(2,)),
-        S("P1", "point", (), "mark", "Contact point P1 = (x1, y)", "§2.2.1",
-          (grasp.x1, grasp.y), role="contact", n=(1,)),
-        S("P2", "point", (), "mark", "Contact point P2 = (−x2, y)", "§2.2.1",
-          (-grasp.x2, grasp.y), role="contact", n=(2,)),
+        S(
+            "O",
+            "point",
+            (),
+            "mark",
+            "Origin O at the object's centre of mass",
+            "§2.2.1",
+            (0, 0),
+            role="given",
+        ),
+        S(
+            "x-axis",
+            "line_with_direction",
+            ("O",),
+            "ruler",
+            "The x-axis, parallel to the line through the contacts",
+            "§2.2.1",
+            (1, 0),
+            role="axis",
+            n=(1,),
+        ),
+        S(
+            "y-axis",
+            "line_with_direction",
+            ("O",),
+            "ruler",
+            "The y-axis, perpendicular to the line through the contacts",
+            "§2.2.1",
+            (0, 1),
+            role="axis",
+            n=(2,),
+        ),
+        S(
+            "P1",
+            "point",
+            (),
+            "mark",
+            "Contact point P1 = (x1, y)",
+            "§2.2.1",
+            (grasp.x1, grasp.y),
+            role="contact",
+            n=(1,),
+        ),
+        S(
+            "P2",
+            "point",
+            (),
+            "mark",
+            "Contact point P2 = (−x2, y)",
+            "§2.2.1",
+            (-grasp.x2, grasp.y),
+            role="contact",
+            n=(2,),
+        ),
     ]
     for n in (1, 3, 2, 4):
         i = 1 if n in (1, 3) else 2
         d = grasp.side_direction(n)
         sign = "+" if n in (1, 2) else "−"
-        specs.append(S(
-            f"side{n}", "line_with_direction", (f"P{i}",), "ruler",
-            f"The {_SIDE_WORD[n]} side of the friction cone at P{i} (angle φ{i} {sign} ξ{i})",
-            "§2.2.2, Fig. 2", (d.x, d.y), role="cone_side", n=(n,)))
+        specs.append(
+            S(
+                f"side{n}",
+                "line_with_direction",
+                (f"P{i}",),
+                "ruler",
+                f"The {_SIDE_WORD[n]} side of the friction cone at P{i} (angle φ{i} {sign} ξ{i})",
+                "§2.2.2, Fig. 2",
+                (d.x, d.y),
+                role="cone_side",
+                n=(n,),
+            )
+        )
     specs += [
-        S("P1x", "foot", ("P1", "x-axis"), "perpendicular",
-          "Drop a perpendicular from P1 to the x-axis: its foot P1x", "§3.3",
-          role="foot", n=(1,)),
-        S("P2x", "foot", ("P2", "x-axis"), "perpendicular",
-          "Drop a perpendicular from P2 to the x-axis: its foot P2x", "§3.3",
-          role="foot", n=(2,)),
-        S("O_M", "midpoint", ("P1x", "P2x"), "compass",
-          "Bisect P1x P2x: its midpoint O_M", "§3.3", role="midpoint"),
+        S(
+            "P1x",
+            "foot",
+            ("P1", "x-axis"),
+            "perpendicular",
+            "Drop a perpendicular from P1 to the x-axis: its foot P1x",
+            "§3.3",
+            role="foot",
+            n=(1,),
+        ),
+        S(
+            "P2x",
+            "foot",
+            ("P2", "x-axis"),
+            "perpendicular",
+            "Drop a perpendicular from P2 to the x-axis: its foot P2x",
+            "§3.3",
+            role="foot",
+            n=(2,),
+        ),
+        S(
+            "O_M",
+            "midpoint",
+            ("P1x", "P2x"),
+            "compass",
+            "Bisect P1x P2x: its midpoint O_M",
+            "§3.3",
+            role="midpoint",
+        ),
     ]
     for n in (1, 2, 3, 4):
         i = 1 if n in (1, 3) else 2
         foot = "P2x" if i == 1 else "P1x"
         ref = f"§3.3 V{n} step"
         specs += [
-            S(f"X{n}", "meet", (f"side{n}", "x-axis"), "ruler",
-              f"Extend the {_SIDE_WORD[n]} side of the cone at P{i} to the x-axis: X{n}",
-              f"{ref} (1), Fig. 4({'abcd'[n - 1]})", role="X", n=(n,)),
-            S(f"perp{n}", "perpendicular", (f"side{n}", foot), "perpendicular",
-              f"Perpendicular from {foot} to the {_SIDE_WORD[n]} side of the cone at P{i}",
-              f"{ref} (2)", role="perpendicular", n=(n,)),
-            S(f"Y{n}", "meet", (f"perp{n}", "y-axis"), "ruler",
-              f"The perpendicular meets the y-axis at Y{n}", f"{ref} (2)",
-              role="Y", n=(n,)),
-            S(f"OMX{n}", "signed_length", ("O_M", f"X{n}", "x-axis"), "compass",
-              f"Signed length O_M X{n} = −S{n}", f"{ref} (1), eq. {_S_EQ[n]}",
-              role="S_length", n=(n,)),
-            S(f"OY{n}", "signed_length", ("O", f"Y{n}", "y-axis"), "compass",
-              f"Signed length O Y{n} = −C{n}", f"{ref} (2), eq. {_C_EQ[n]}",
-              role="C_length", n=(n,)),
-            S(f"V{n}", "point_from_lengths", (f"OMX{n}", f"OY{n}"), "compass",
-              f"Plot V{n} = (−O_M X{n}, −O Y{n})", f"{ref} (3), eq. (30)/(33)",
-              (-1, -1), key=True, role="V", n=(n,)),
+            S(
+                f"X{n}",
+                "meet",
+                (f"side{n}", "x-axis"),
+                "ruler",
+                f"Extend the {_SIDE_WORD[n]} side of the cone at P{i} to the x-axis: X{n}",
+                f"{ref} (1), Fig. 4({'abcd'[n - 1]})",
+                role="X",
+                n=(n,),
+            ),
+            S(
+                f"perp{n}",
+                "perpendicular",
+                (f"side{n}", foot),
+                "perpendicular",
+                f"Perpendicular from {foot} to the {_SIDE_WORD[n]} side of the cone at P{i}",
+                f"{ref} (2)",
+                role="perpendicular",
+                n=(n,),
+            ),
+            S(
+                f"Y{n}",
+                "meet",
+                (f"perp{n}", "y-axis"),
+                "ruler",
+                f"The perpendicular meets the y-axis at Y{n}",
+                f"{ref} (2)",
+                role="Y",
+                n=(n,),
+            ),
+            S(
+                f"OMX{n}",
+                "signed_length",
+                ("O_M", f"X{n}", "x-axis"),
+                "compass",
+                f"Signed length O_M X{n} = −S{n}",
+                f"{ref} (1), eq. {_S_EQ[n]}",
+                role="S_length",
+                n=(n,),
+            ),
+            S(
+                f"OY{n}",
+                "signed_length",
+                ("O", f"Y{n}", "y-axis"),
+                "compass",
+                f"Signed length O Y{n} = −C{n}",
+                f"{ref} (2), eq. {_C_EQ[n]}",
+                role="C_length",
+                n=(n,),
+            ),
+            S(
+                f"V{n}",
+                "point_from_lengths",
+                (f"OMX{n}", f"OY{n}"),
+                "compass",
+                f"Plot V{n} = (−O_M X{n}, −O Y{n})",
+                f"{ref} (3), eq. (30)/(33)",
+                (-1, -1),
+                key=True,
+                role="V",
+                n=(n,),
+            ),
         ]
     for n in (1, 2, 3, 4):
-        specs.append(S(
-            f"circle{n}", "circle_on_diameter", ("O", f"V{n}"), "compass",
-            f"Circle on the diameter O V{n}: the polar graph of k{n}(θ)",
-            "§3.2 eq. (31)-(32), Fig. 3", key=True, role="circle", n=(n,)))
+        specs.append(
+            S(
+                f"circle{n}",
+                "circle_on_diameter",
+                ("O", f"V{n}"),
+                "compass",
+                f"Circle on the diameter O V{n}: the polar graph of k{n}(θ)",
+                "§3.2 eq. (31)-(32), Fig. 3",
+                key=True,
+                role="circle",
+                n=(n,),
+            )
+        )
     for n, m in combinations((1, 2, 3, 4), 2):
-        specs.append(S(
-            f"B{n}{m}", "second_intersection", (f"circle{n}", f"circle{m}", "O"), "mark",
-            f"Second intersection of circles {n} and {m}: there k{n}(θ) = k{m}(θ)",
-            "§3.3 outside extraction, §5", role="break_point", n=(n, m)))
+        specs.append(
+            S(
+                f"B{n}{m}",
+                "second_intersection",
+                (f"circle{n}", f"circle{m}", "O"),
+                "mark",
+                f"Second intersection of circles {n} and {m}: there k{n}(θ) = k{m}(θ)",
+                "§3.3 outside extraction, §5",
+                role="break_point",
+                n=(n, m),
+            )
+        )
     return specs
 
 
@@ -163,8 +296,19 @@ def _internal_force_diagram_from_specs(grasp: Grasp) -> Construction:
     if not symbolic:
         names = [s.name for s in steps if s.op in ("circle_on_diameter", "second_intersection")]
         env_obj = outer_envelope(env)
-        steps.append(Step(
-            len(steps), "envelope", "envelope", "compass", tuple(names), env_obj, (),
-            "Outer envelope of the four circles: the polar graph of k_grasp(θ)",
-            "§3.3 outside extraction, eq. (25), Fig. 5", key=True, role="envelope"))
+        steps.append(
+            Step(
+                len(steps),
+                "envelope",
+                "envelope",
+                "compass",
+                tuple(names),
+                env_obj,
+                (),
+                "Outer envelope of the four circles: the polar graph of k_grasp(θ)",
+                "§3.3 outside extraction, eq. (25), Fig. 5",
+                key=True,
+                role="envelope",
+            )
+        )
     return Construction(tuple(steps), grasp, tuple(skipped))

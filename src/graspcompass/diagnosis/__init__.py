@@ -69,8 +69,17 @@ from ..geometry.exact import canon, decide_sign
 if TYPE_CHECKING:
     from ..grasp import Grasp
 
-__all__ = ["INEQUALITIES", "SLIP_DTYPE", "TIE_TOL", "Inequality", "Slip", "SlipInterval",
-           "slip", "slip_intervals", "zero_force_intervals"]
+__all__ = [
+    "INEQUALITIES",
+    "SLIP_DTYPE",
+    "TIE_TOL",
+    "Inequality",
+    "Slip",
+    "SlipInterval",
+    "slip",
+    "slip_intervals",
+    "zero_force_intervals",
+]
 
 #: Relative tolerance of a float tie: ``|k_n − k_m| <= TIE_TOL · max|V_n|`` (floats only;
 #: exact values tie when exactly equal).  The float k_n are correct to a few ε max|V_n|.
@@ -122,11 +131,20 @@ INEQUALITIES: dict[int, Inequality] = {
 #: zero-force region (n = 0); ``runner_up`` is −1 (and ``margin`` 0) if every index ties;
 #: ``binding[j]`` is True for each index j = 0..4 attaining k_grasp (both j = 1, 3 or
 #: both j = 2, 4: that contact carries no force, see :attr:`Slip.unloaded`).
-SLIP_DTYPE = np.dtype([
-    ("theta", "f8"), ("n", "i1"), ("contact", "i1"), ("side", "i1"),
-    ("slide_x", "f8"), ("slide_y", "f8"), ("k_grasp", "f8"), ("runner_up", "i1"),
-    ("margin", "f8"), ("binding", "?", (5,)),
-])
+SLIP_DTYPE = np.dtype(
+    [
+        ("theta", "f8"),
+        ("n", "i1"),
+        ("contact", "i1"),
+        ("side", "i1"),
+        ("slide_x", "f8"),
+        ("slide_y", "f8"),
+        ("k_grasp", "f8"),
+        ("runner_up", "i1"),
+        ("margin", "f8"),
+        ("binding", "?", (5,)),
+    ]
+)
 
 
 def _slide(grasp: Grasp, n: int) -> tuple[Any, Any]:
@@ -198,8 +216,7 @@ class Slip:
         ``N_i = F_i = 0``; such a contact carries no force and is about to lose contact
         rather than slide one way (e.g. where e(θ) is along the line from O to the other
         contact, which then carries the external force alone)."""
-        return tuple(i for i, pair in ((1, (1, 3)), (2, (2, 4)))
-                     if set(pair) <= set(self.binding))
+        return tuple(i for i, pair in ((1, (1, 3)), (2, (2, 4))) if set(pair) <= set(self.binding))
 
     @property
     def inequality(self) -> Inequality | None:
@@ -230,30 +247,46 @@ class Slip:
         the surface relative to finger 1, in direction (0, -1). Next to bind: k2 of
         eq. (19), margin 0.3333.
         """
-        nxt = ("none" if self.runner_up is None else "no internal force (k = 0)"
-               if self.runner_up == 0 else
-               f"k{self.runner_up} of eq. {INEQUALITIES[self.runner_up].limit}")
+        nxt = (
+            "none"
+            if self.runner_up is None
+            else "no internal force (k = 0)"
+            if self.runner_up == 0
+            else f"k{self.runner_up} of eq. {INEQUALITIES[self.runner_up].limit}"
+        )
         ties = [j for j in self.binding if j != self.n]
-        also = ("" if not ties else " Tie: " + ", ".join(
-            "k = 0" if j == 0 else f"condition {INEQUALITIES[j].equation} (k{j})"
-            for j in ties) + " binds as well.")
+        also = (
+            ""
+            if not ties
+            else " Tie: "
+            + ", ".join(
+                "k = 0" if j == 0 else f"condition {INEQUALITIES[j].equation} (k{j})" for j in ties
+            )
+            + " binds as well."
+        )
         for i in self.unloaded:
-            also += (f" Both sides of the cone at P{i} bind: N{i} = F{i} = 0, contact {i} "
-                     "carries no force and is about to lose contact rather than slide.")
+            also += (
+                f" Both sides of the cone at P{i} bind: N{i} = F{i} = 0, contact {i} "
+                "carries no force and is about to lose contact rather than slide."
+            )
         if self.inequality is None:
-            return ("zero-force region: k_grasp = 0, the external force is resisted with no "
-                    "internal force (the contact forces F_T of eq. (13) lie inside both "
-                    f"friction cones) and no contact is about to slip. Next to bind: {nxt}, "
-                    f"margin {_words(self.margin)}." + also)
+            return (
+                "zero-force region: k_grasp = 0, the external force is resisted with no "
+                "internal force (the contact forces F_T of eq. (13) lie inside both "
+                f"friction cones) and no contact is about to slip. Next to bind: {nxt}, "
+                f"margin {_words(self.margin)}." + also
+            )
         q = self.inequality
         assert self.slide is not None
         d = f"({_words(self.slide[0])}, {_words(self.slide[1])})"
-        return (f"condition {q.equation} {q.text} binds (k{q.n} of eq. {q.limit} is largest, "
-                f"k_grasp = {_words(self.k_grasp)}): the contact force at P{q.contact} lies on "
-                f"the {q.side} side of its friction cone; with less internal force the object "
-                f"slips at P{q.contact}, its contact point sliding {q.way} along the surface "
-                f"relative to finger {q.contact}, in direction {d}. Next to bind: {nxt}, "
-                f"margin {_words(self.margin)}." + also)
+        return (
+            f"condition {q.equation} {q.text} binds (k{q.n} of eq. {q.limit} is largest, "
+            f"k_grasp = {_words(self.k_grasp)}): the contact force at P{q.contact} lies on "
+            f"the {q.side} side of its friction cone; with less internal force the object "
+            f"slips at P{q.contact}, its contact point sliding {q.way} along the surface "
+            f"relative to finger {q.contact}, in direction {d}. Next to bind: {nxt}, "
+            f"margin {_words(self.margin)}." + also
+        )
 
 
 @dataclass(frozen=True)
@@ -292,7 +325,8 @@ def _sign(expr: sp.Expr, what: str) -> int:
     if s is None:
         raise SymbolicValueError(
             f"cannot decide the sign of {what} = {expr}: the slip diagnosis needs numbers; "
-            "substitute values first (Grasp.subs)")
+            "substitute values first (Grasp.subs)"
+        )
     return s
 
 
@@ -302,8 +336,9 @@ def _exact(grasp: Grasp, theta: sp.Expr) -> Slip:
     for j in range(1, 5):
         if _sign(cand[j] - cand[best], f"k{j} − k{best}" if best else f"k{j}") == 1:
             best = j
-    binding = tuple(j for j in range(5)
-                    if j == best or _sign(cand[j] - cand[best], "a difference of k's") == 0)
+    binding = tuple(
+        j for j in range(5) if j == best or _sign(cand[j] - cand[best], "a difference of k's") == 0
+    )
     rest = [j for j in range(5) if j not in binding]
     runner: int | None = None
     for j in rest:
@@ -354,9 +389,15 @@ def _numeric(grasp: Grasp, t: np.ndarray, tie_tol: float) -> np.ndarray:
 def _record(row: np.void | np.ndarray) -> Slip:
     n = int(row["n"])
     runner = int(row["runner_up"])
-    return Slip(float(row["theta"]), n, tuple(int(j) for j in np.flatnonzero(row["binding"])),
-                float(row["k_grasp"]), None if runner < 0 else runner, float(row["margin"]),
-                (float(row["slide_x"]), float(row["slide_y"])) if n else None)
+    return Slip(
+        float(row["theta"]),
+        n,
+        tuple(int(j) for j in np.flatnonzero(row["binding"])),
+        float(row["k_grasp"]),
+        None if runner < 0 else runner,
+        float(row["margin"]),
+        (float(row["slide_x"]), float(row["slide_y"])) if n else None,
+    )
 
 
 def _as_float(theta: sp.Expr) -> float:
@@ -364,7 +405,8 @@ def _as_float(theta: sp.Expr) -> float:
         v = float(theta)
     except TypeError:
         raise SymbolicValueError(
-            f"theta = {theta} is not a number: a float grasp needs a numeric θ") from None
+            f"theta = {theta} is not a number: a float grasp needs a numeric θ"
+        ) from None
     if not math.isfinite(v):
         raise NonFiniteValueError(f"theta = {theta} is beyond double precision")
     return v
@@ -421,9 +463,12 @@ def slip(grasp: Grasp, theta: Any, *, tie_tol: float = TIE_TOL) -> Slip | np.nda
 
 def _envelope(grasp: Grasp) -> Any:
     if any(v.free_symbols for v in grasp.params.values()):
-        raise SymbolicValueError("the θ-intervals of a symbolic grasp depend on its values; "
-                                 "substitute values first (Grasp.subs)")
+        raise SymbolicValueError(
+            "the θ-intervals of a symbolic grasp depend on its values; "
+            "substitute values first (Grasp.subs)"
+        )
     from ..construction import internal_force_diagram
+
     return internal_force_diagram(grasp)["envelope"]
 
 
@@ -457,10 +502,14 @@ def slip_intervals(grasp: Grasp) -> tuple[SlipInterval, ...]:
     env = _envelope(grasp)
     out = []
     for a in env.arcs:
-        same = (a.n,) if not a.n else tuple(
-            m for m in (1, 2, 3, 4) if m == a.n or _same_circle(grasp, env.V, a.n, m))
-        out.append(SlipInterval(a.n, a.theta_start, a.theta_end, same,
-                                _slide(grasp, a.n) if a.n else None))
+        same = (
+            (a.n,)
+            if not a.n
+            else tuple(m for m in (1, 2, 3, 4) if m == a.n or _same_circle(grasp, env.V, a.n, m))
+        )
+        out.append(
+            SlipInterval(a.n, a.theta_start, a.theta_end, same, _slide(grasp, a.n) if a.n else None)
+        )
     return tuple(out)
 
 

@@ -55,15 +55,36 @@ __all__ = [
 
 #: Where each writer lives; imported on first use, so that :func:`guess_format` and
 #: the command line's checks load no writer (:mod:`graspcompass._lazy`).
-__getattr__, __dir__ = attach(__name__, {
-    "json": "json", "SCHEMA": "json", "dumps": "json", "loads": "json",
-    "read_ggb_xml": "geogebra", "to_ggb": "geogebra", "write_ggb": "geogebra",
-    "to_svg": "svg", "write_svg": "svg", "to_tikz": "tikz", "write_tikz": "tikz"})
+__getattr__, __dir__ = attach(
+    __name__,
+    {
+        "json": "json",
+        "SCHEMA": "json",
+        "dumps": "json",
+        "loads": "json",
+        "read_ggb_xml": "geogebra",
+        "to_ggb": "geogebra",
+        "write_ggb": "geogebra",
+        "to_svg": "svg",
+        "write_svg": "svg",
+        "to_tikz": "tikz",
+        "write_tikz": "tikz",
+    },
+)
 
 #: The formats :func:`export` writes.
 FORMATS = ("ggb", "tikz", "svg", "json", "png", "pdf", "html")
-_EXTENSIONS = {".ggb": "ggb", ".tex": "tikz", ".tikz": "tikz", ".svg": "svg", ".json": "json",
-               ".png": "png", ".pdf": "pdf", ".html": "html", ".htm": "html"}
+_EXTENSIONS = {
+    ".ggb": "ggb",
+    ".tex": "tikz",
+    ".tikz": "tikz",
+    ".svg": "svg",
+    ".json": "json",
+    ".png": "png",
+    ".pdf": "pdf",
+    ".html": "html",
+    ".htm": "html",
+}
 
 
 def guess_format(path: Any) -> str:
@@ -76,13 +97,16 @@ def guess_format(path: Any) -> str:
     """
     suffix = Path(path).suffix.lower()
     if suffix not in _EXTENSIONS:
-        raise ValueError(f"cannot tell the format of {str(path)!r}: use one of "
-                         f"{', '.join(_EXTENSIONS)} or give the format ({', '.join(FORMATS)})")
+        raise ValueError(
+            f"cannot tell the format of {str(path)!r}: use one of "
+            f"{', '.join(_EXTENSIONS)} or give the format ({', '.join(FORMATS)})"
+        )
     return _EXTENSIONS[suffix]
 
 
-def export(construction: Construction, path: Any, format: str | None = None,
-           title: str | None = None) -> Path:
+def export(
+    construction: Construction, path: Any, format: str | None = None, title: str | None = None
+) -> Path:
     """Write ``construction`` to ``path`` as ``format`` (default: from the extension).
 
     Parameters

@@ -125,12 +125,14 @@ def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definitio
         if with_grasp and role == "cone_side" and n in _SIDE:  # the cone sides, by role
             return Definition("line", "Line", (ins[0], f"{ins[0]} + {_SIDE[n]}"))
         return Definition("line", "Line", (ins[0], f"{ins[0]} + {_pair(*step.params)}"))
-    simple = {"line_through": ("line", "Line", ins), "meet": ("point", "Intersect", ins),
-              "foot": ("point", "ClosestPoint", (ins[1], ins[0]) if len(ins) == 2 else ins),
-              "perpendicular": ("line", "OrthogonalLine", ins[::-1]),
-              "midpoint": ("point", "Midpoint", ins),
-              "circle_on_diameter": ("conic", "Circle", (f"Midpoint[{', '.join(ins)}]",
-                                                          ins[0]))}
+    simple = {
+        "line_through": ("line", "Line", ins),
+        "meet": ("point", "Intersect", ins),
+        "foot": ("point", "ClosestPoint", (ins[1], ins[0]) if len(ins) == 2 else ins),
+        "perpendicular": ("line", "OrthogonalLine", ins[::-1]),
+        "midpoint": ("point", "Midpoint", ins),
+        "circle_on_diameter": ("conic", "Circle", (f"Midpoint[{', '.join(ins)}]", ins[0])),
+    }
     if op in simple:
         kind, cmd, args = simple[op]
         return Definition(kind, cmd, tuple(args))
@@ -151,8 +153,12 @@ def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definitio
         return Definition("point", "Rotate", (ins[0], "-90°", ins[1]))
     if op == "envelope":
         k = _envelope()
-        return Definition("curvecartesian", "CurveCartesian",
-                          (f"({k}) sin(t)", f"-({k}) cos(t)", "t", "0", "2 pi"), var="t")
+        return Definition(
+            "curvecartesian",
+            "CurveCartesian",
+            (f"({k}) sin(t)", f"-({k}) cos(t)", "t", "0", "2 pi"),
+            var="t",
+        )
     made = _class_definition(step, steps, ins)
     if made is not None:
         return made
@@ -161,7 +167,7 @@ def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definitio
 
 def _left_of(a: str, b: str, p: str) -> str:
     """GeoGebra text: the point p lies left of the directed line from a to b."""
-    return (f"(x({b}) - x({a})) (y({p}) - y({a})) - (y({b}) - y({a})) (x({p}) - x({a})) > 0")
+    return f"(x({b}) - x({a})) (y({p}) - y({a})) - (y({b}) - y({a})) (x({p}) - x({a})) > 0"
 
 
 def _branch(first: str, second: str, test: str) -> Definition:
@@ -170,8 +176,7 @@ def _branch(first: str, second: str, test: str) -> Definition:
     return Definition("point", "If", (test.replace("_P_", first), first, second))
 
 
-def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]
-                      ) -> Definition | None:
+def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]) -> Definition | None:
     """The operations of a geometry class (issue 24) and the intersections, branch by
     branch as the kernel takes them (``If`` between GeoGebra's two intersection points)."""
     op = step.op
@@ -181,11 +186,17 @@ def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]
         "reflect": ("point", "Mirror", ins),
         "circle_through": ("conic", "Circle", ins),
         "circumcircle": ("conic", "Circle", ins),
-        "circle_compass": ("conic", "Circle", (ins[0], f"Segment[{ins[1]}, {ins[2]}]")
-                           if len(ins) == 3 else ins),
+        "circle_compass": (
+            "conic",
+            "Circle",
+            (ins[0], f"Segment[{ins[1]}, {ins[2]}]") if len(ins) == 3 else ins,
+        ),
         "bisector": ("line", "AngularBisector", ins),
-        "tangent_at": ("line", "OrthogonalLine", (ins[1], f"Line[Center[{ins[0]}], {ins[1]}]")
-                       if len(ins) == 2 else ins),
+        "tangent_at": (
+            "line",
+            "OrthogonalLine",
+            (ins[1], f"Line[Center[{ins[0]}], {ins[1]}]") if len(ins) == 2 else ins,
+        ),
         "point_reflect": ("point", "Mirror", ins),
         "point_on_line": ("point", "Point", ins[:1]),
         "point_on_circle": ("point", "Point", ins[:1]),
@@ -201,9 +212,13 @@ def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]
         return Definition("point", "Dilate", (ins[0], ggb_number(params[0]), ins[1]))
     if op == "radical_axis":  # (C1 − C2)·X = −(power difference)/2: the kernel's scale,
         c1, c2 = (f"Center[{c}]" for c in ins)  # so a point on it keeps its parameter
-        return Definition("line", exp=(
-            f"(x({c1}) - x({c2})) x + (y({c1}) - y({c2})) y = -(Radius[{ins[0]}]^2 - "
-            f"Radius[{ins[1]}]^2 + x({c2})^2 + y({c2})^2 - x({c1})^2 - y({c1})^2) / 2"))
+        return Definition(
+            "line",
+            exp=(
+                f"(x({c1}) - x({c2})) x + (y({c1}) - y({c2})) y = -(Radius[{ins[0]}]^2 - "
+                f"Radius[{ins[1]}]^2 + x({c2})^2 + y({c2})^2 - x({c1})^2 - y({c1})^2) / 2"
+            ),
+        )
     k = int(params[0]) if params else 0
     if op == "intersect_circles":
         one, two = (f"Intersect[{ins[0]}, {ins[1]}, {i}]" for i in (1, 2))
@@ -218,8 +233,7 @@ def _class_definition(step: Step, steps: dict[str, Any], ins: tuple[str, ...]
     if op == "intersect_line_circle":
         # branch 0 lies further along the line's direction (the kernel's, at export)
         line = steps[step.inputs[0]].obj
-        dx, dy = (ggb_number(sp.sympify(v).evalf(17)) for v in (line.direction.x,
-                                                               line.direction.y))
+        dx, dy = (ggb_number(sp.sympify(v).evalf(17)) for v in (line.direction.x, line.direction.y))
         one, two = (f"Intersect[{ins[0]}, {ins[1]}, {i}]" for i in (1, 2))
         sign = ">" if k == 0 else "<"
         test = f"(x({one}) - x({two})) ({dx}) + (y({one}) - y({two})) ({dy}) {sign} 0"

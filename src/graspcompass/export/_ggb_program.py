@@ -48,16 +48,23 @@ def sliders(program: Program, values: Mapping[str, Any]) -> list[str]:
     for i, p in enumerate(program.params):
         v = float(sp.sympify(values[p.name]))
         top = float(max(4.0, math.ceil(2 * abs(v))))
-        lo, hi = {"angle": (0.01, round(math.pi, 6)), "half_angle": (0.01, 1.5707),
-                  "real": (-top, top), "nonnegative": (0.0, top)}.get(p.domain, (0.01, top))
-        out += [f"<element {_a(type='numeric', label=param_label(p.name))}>",
-                f"\t<caption {_a(val=f'{p.name} ({p.domain})')}/>",
-                f"\t<value {_a(val=repr(v))}/>",
-                f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
-                f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
-                f"{_a(absoluteScreenLocation='true')}/>",
-                f"\t<show {_a(object='true', label='true')}/>",
-                f"\t<labelMode {_a(val=1)}/>", "</element>"]
+        lo, hi = {
+            "angle": (0.01, round(math.pi, 6)),
+            "half_angle": (0.01, 1.5707),
+            "real": (-top, top),
+            "nonnegative": (0.0, top),
+        }.get(p.domain, (0.01, top))
+        out += [
+            f"<element {_a(type='numeric', label=param_label(p.name))}>",
+            f"\t<caption {_a(val=f'{p.name} ({p.domain})')}/>",
+            f"\t<value {_a(val=repr(v))}/>",
+            f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
+            f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
+            f"{_a(absoluteScreenLocation='true')}/>",
+            f"\t<show {_a(object='true', label='true')}/>",
+            f"\t<labelMode {_a(val=1)}/>",
+            "</element>",
+        ]
     return out
 
 
@@ -117,11 +124,18 @@ def claim_statements(program: Program) -> list[str]:
         stmt = _claim(c)
         if stmt is None:
             continue
-        for cmd, label, kind in (("Prove", f"claim{i}", "boolean"),
-                                 ("ProveDetails", f"claim{i}details", "list")):
-            out += [f"<command {_a(name=cmd)}>", f"\t<input {_a(a0=stmt)}/>",
-                    f"\t<output {_a(a0=label)}/>", "</command>",
-                    f"<element {_a(type=kind, label=label)}>",
-                    f"\t<caption {_a(val=f'claim (line {c.line}): {cmd}')}/>",
-                    f"\t<show {_a(object='false', label='true')}/>", "</element>"]
+        for cmd, label, kind in (
+            ("Prove", f"claim{i}", "boolean"),
+            ("ProveDetails", f"claim{i}details", "list"),
+        ):
+            out += [
+                f"<command {_a(name=cmd)}>",
+                f"\t<input {_a(a0=stmt)}/>",
+                f"\t<output {_a(a0=label)}/>",
+                "</command>",
+                f"<element {_a(type=kind, label=label)}>",
+                f"\t<caption {_a(val=f'claim (line {c.line}): {cmd}')}/>",
+                f"\t<show {_a(object='false', label='true')}/>",
+                "</element>",
+            ]
     return out

@@ -34,9 +34,22 @@ from ._json_limits import (
 )
 from ._json_schema import _GRASP, _check, _difference, _fail, _show
 
-_SYMBOLS = {str(s): s for s in (symbols.x1, symbols.x2, symbols.y, symbols.phi1, symbols.phi2,
-                                symbols.xi1, symbols.xi2, symbols.mu1, symbols.mu2,
-                                symbols.theta, symbols.F_e)}
+_SYMBOLS = {
+    str(s): s
+    for s in (
+        symbols.x1,
+        symbols.x2,
+        symbols.y,
+        symbols.phi1,
+        symbols.phi2,
+        symbols.xi1,
+        symbols.xi2,
+        symbols.mu1,
+        symbols.mu2,
+        symbols.theta,
+        symbols.F_e,
+    )
+}
 
 
 _PARAMS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
@@ -60,16 +73,24 @@ def _read_float(v: dict[str, Any], where: str) -> sp.Float:
     num, den = int(p), int(q or 1)
     bits = v["bits"]
     if den == 0 or den & (den - 1):
-        raise _fail(f"{where}.float", "expected the exact binary value of a float "
-                    "(a denominator that is a power of 2)", v["float"])
+        raise _fail(
+            f"{where}.float",
+            "expected the exact binary value of a float (a denominator that is a power of 2)",
+            v["float"],
+        )
     odd = abs(num) >> ((abs(num) & -abs(num)).bit_length() - 1) if num else 0
     if odd.bit_length() > bits:
-        raise _fail(f"{where}.float", f"this value needs {odd.bit_length()} bits, not {bits}",
-                    v["float"])
+        raise _fail(
+            f"{where}.float", f"this value needs {odd.bit_length()} bits, not {bits}", v["float"]
+        )
     value = sp.Rational(num, den)
     if value != 0 and abs(value) > MAX_MAGNITUDE:
-        raise _fail(f"{where}.float", f"expected a number at most {MAX_MAGNITUDE:g}",
-                    v["float"], JSONTooLargeError)
+        raise _fail(
+            f"{where}.float",
+            f"expected a number at most {MAX_MAGNITUDE:g}",
+            v["float"],
+            JSONTooLargeError,
+        )
     return sp.Float(value, precision=bits)
 
 
@@ -114,35 +135,65 @@ def _grasp(rec: dict[str, Any]) -> Grasp:
     floats = [k for k, v in vals.items() if v.atoms(sp.Float)]
     syms = [k for k, v in vals.items() if v.free_symbols]
     if floats and syms:
-        raise JSONDocumentError(f"grasp: floats ({', '.join(floats)}) and symbols "
-                                f"({', '.join(syms)}) cannot be mixed in one grasp")
+        raise JSONDocumentError(
+            f"grasp: floats ({', '.join(floats)}) and symbols "
+            f"({', '.join(syms)}) cannot be mixed in one grasp"
+        )
     _check_magnitudes(vals, rec)
     fr = rec["friction"]
     kw = {f"{fr[str(i)]}{i}": vals[f"{fr[str(i)]}{i}"] for i in (1, 2)}
     shape = tuple(rec["shape"]) if rec["shape"] else None
     try:
-        g = Grasp(vals["x1"], vals["x2"], vals["y"], vals["phi1"], vals["phi2"], **kw,
-                  shape=shape, title=rec["title"])
+        g = Grasp(
+            vals["x1"],
+            vals["x2"],
+            vals["y"],
+            vals["phi1"],
+            vals["phi2"],
+            **kw,
+            shape=shape,
+            title=rec["title"],
+        )
     except GraspCompassError as exc:
         raise JSONDocumentError(f"grasp: {exc}") from None
-    except (ArithmeticError, TypeError, ValueError, NotImplementedError, RecursionError,
-            BasePolynomialError) as exc:
-        raise JSONDocumentError(f"grasp: the exact kernel cannot use these values "
-                                f"({type(exc).__name__}: {str(exc)[:80]})") from None
+    except (
+        ArithmeticError,
+        TypeError,
+        ValueError,
+        NotImplementedError,
+        RecursionError,
+        BasePolynomialError,
+    ) as exc:
+        raise JSONDocumentError(
+            f"grasp: the exact kernel cannot use these values "
+            f"({type(exc).__name__}: {str(exc)[:80]})"
+        ) from None
     _check_generators(g)
     again = _grasp_record(g)
     for k in _PARAMS:
         if _difference(rec[k], again[k], k) is None:
             continue
         if _read(rec[k], f"grasp.{k}") == g.params[k]:  # the same value, written otherwise
-            raise _fail(f"grasp.{k}", f"expected {_show(again[k])}, the way dumps writes this "
-                        "value", rec[k], InconsistentDocumentError)
+            raise _fail(
+                f"grasp.{k}",
+                f"expected {_show(again[k])}, the way dumps writes this value",
+                rec[k],
+                InconsistentDocumentError,
+            )
         src = f"{fr[k[-1]]}{k[-1]}"
-        raise _fail(f"grasp.{k}", f"the grasp gives {_show(again[k])} from {src} = "
-                    f"{_show(again[src])}", rec[k], InconsistentDocumentError)
+        raise _fail(
+            f"grasp.{k}",
+            f"the grasp gives {_show(again[k])} from {src} = {_show(again[src])}",
+            rec[k],
+            InconsistentDocumentError,
+        )
     if again["friction"] != fr:
-        raise _fail("grasp.friction", f"the grasp is written {again['friction']}", fr,
-                    InconsistentDocumentError)
+        raise _fail(
+            "grasp.friction",
+            f"the grasp is written {again['friction']}",
+            fr,
+            InconsistentDocumentError,
+        )
     return g
 
 
@@ -151,17 +202,29 @@ def _check_magnitudes(vals: dict[str, sp.Expr], rec: dict[str, Any]) -> None:
     for k, v in vals.items():
         size = sp.N(abs(v), 15) if not v.free_symbols else sp.S.Zero
         if not (size.is_Number and size <= MAX_MAGNITUDE):
-            raise _fail(f"grasp.{k}", f"expected a number at most {MAX_MAGNITUDE:g}", rec[k],
-                        JSONTooLargeError)
+            raise _fail(
+                f"grasp.{k}",
+                f"expected a number at most {MAX_MAGNITUDE:g}",
+                rec[k],
+                JSONTooLargeError,
+            )
 
 
 def _check_generators(g: Grasp) -> None:
     """Bound the number of irrationals and symbols the exact construction works with."""
     numbers: set[sp.Expr] = set()
     symbolic: set[sp.Expr] = set()
-    for name, v in (("x1", g.x1), ("x2", g.x2), ("y", g.y), ("mu1", g.mu1), ("mu2", g.mu2),
-                    ("sin(phi1)", g.s1), ("cos(phi1)", g.c1), ("sin(phi2)", g.s2),
-                    ("cos(phi2)", g.c2)):
+    for name, v in (
+        ("x1", g.x1),
+        ("x2", g.x2),
+        ("y", g.y),
+        ("mu1", g.mu1),
+        ("mu2", g.mu2),
+        ("sin(phi1)", g.s1),
+        ("cos(phi1)", g.c1),
+        ("sin(phi2)", g.s2),
+        ("cos(phi2)", g.c2),
+    ):
         if v.atoms(sp.Float):
             continue  # the numeric path: evaluated to floats at once
         walk = sp.preorder_traversal(v)
@@ -178,7 +241,8 @@ def _check_generators(g: Grasp) -> None:
                     raise JSONDocumentError(
                         f"grasp: {name} = {_show(str(v))} uses {str(atom)[:_MAX_SHOWN]}: lengths "
                         "and friction coefficients of exact grasps are rational numbers or square "
-                        "roots of them (give floats for the numeric path)")
+                        "roots of them (give floats for the numeric path)"
+                    )
             elif isinstance(atom, sp.Pow) and not atom.exp.is_Integer:
                 walk.skip()
                 if atom.free_symbols:
@@ -188,11 +252,13 @@ def _check_generators(g: Grasp) -> None:
                 if atom.exp not in (sp.S.Half, -sp.S.Half) or not base.is_Rational:
                     raise JSONDocumentError(
                         f"grasp: {name} = {_show(str(v))} uses {atom}: only square roots of "
-                        "rational numbers are supported in exact grasps")
+                        "rational numbers are supported in exact grasps"
+                    )
                 if max(abs(base.p).bit_length(), base.q.bit_length()) > MAX_RADICAND_BITS:
                     raise JSONTooLargeError(
                         f"grasp: {name} uses {_show(str(atom))}, a square root of a number of "
-                        f"more than {MAX_RADICAND_BITS} bits")
+                        f"more than {MAX_RADICAND_BITS} bits"
+                    )
                 numbers.add(sp.sqrt(base))
     trig = {n for n in numbers if isinstance(n, (sp.sin, sp.cos))}
     roots = numbers - trig
@@ -201,19 +267,24 @@ def _check_generators(g: Grasp) -> None:
     if len(roots) > limit:  # each square root doubles the degree of the number field
         raise JSONTooLargeError(
             f"grasp: its values use {len(roots)} distinct irrational numbers ({shown}); at "
-            f"most {limit} are allowed" + (" next to symbols" if symbolic else ""))
+            f"most {limit} are allowed" + (" next to symbols" if symbolic else "")
+        )
     if len(trig) > MAX_ANGLE_GENERATORS:
         raise JSONTooLargeError(
             f"grasp: its values use {len(trig)} sines and cosines of angles that are no "
             f"multiples of pi/12 ({_show(', '.join(sorted(map(str, trig))))}); at most "
-            f"{MAX_ANGLE_GENERATORS} are allowed (four angles)")
+            f"{MAX_ANGLE_GENERATORS} are allowed (four angles)"
+        )
     if trig and symbolic:
         shown = _show(", ".join(sorted(str(n) for n in numbers)))
         raise JSONTooLargeError(
             f"grasp: its values use sin/cos of an angle that is no multiple of pi/12 next to "
-            f"symbols ({shown}); this is not allowed (it could take minutes to construct)")
+            f"symbols ({shown}); this is not allowed (it could take minutes to construct)"
+        )
     if len(numbers) + len(symbolic) > MAX_GENERATORS:
         shown = ", ".join(sorted(str(n) for n in numbers | symbolic))
-        raise JSONTooLargeError(f"grasp: its values use {len(numbers) + len(symbolic)} "
-                                f"generators ({_show(shown)}); at most {MAX_GENERATORS} "
-                                "are allowed")
+        raise JSONTooLargeError(
+            f"grasp: its values use {len(numbers) + len(symbolic)} "
+            f"generators ({_show(shown)}); at most {MAX_GENERATORS} "
+            "are allowed"
+        )

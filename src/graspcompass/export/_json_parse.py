@@ -42,6 +42,5 @@ def _float(text: str) -> float:
 
 def _int(text: str) -> int:
     if len(text.lstrip("-")) > MAX_INT_DIGITS:
-        raise JSONTooLargeError(f"the integer {_show(text)} has more than {MAX_INT_DIGITS} "
-                                "digits")
+        raise JSONTooLargeError(f"the integer {_show(text)} has more than {MAX_INT_DIGITS} digits")
     return int(text)

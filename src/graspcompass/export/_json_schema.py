@@ -31,8 +31,13 @@ from ._json_limits import (
 
 
 def _obj(props: dict[str, Any], description: str, optional: tuple[str, ...] = ()) -> dict:
-    return {"type": "object", "properties": props, "additionalProperties": False,
-            "required": [k for k in props if k not in optional], "description": description}
+    return {
+        "type": "object",
+        "properties": props,
+        "additionalProperties": False,
+        "required": [k for k in props if k not in optional],
+        "description": description,
+    }
 
 
 def _text(max_length: int = MAX_TEXT, **extra: Any) -> dict[str, Any]:
@@ -41,76 +46,148 @@ def _text(max_length: int = MAX_TEXT, **extra: Any) -> dict[str, Any]:
 
 _NAME = _text(32, pattern=r"[A-Za-z0-9_-]+", description="a step name (letters, digits, _ -)")
 _FLOAT_READOUT = {"type": ["number", "null"], "description": "a JSON number or null"}
-_POINT = _obj({"x": _text(), "y": _text(),
-               "float": {"type": "array", "prefixItems": [_FLOAT_READOUT, _FLOAT_READOUT],
-                         "minItems": 2, "maxItems": 2, "description": "a pair [x, y]"}},
-              "a point record {x, y, float}")
+_POINT = _obj(
+    {
+        "x": _text(),
+        "y": _text(),
+        "float": {
+            "type": "array",
+            "prefixItems": [_FLOAT_READOUT, _FLOAT_READOUT],
+            "minItems": 2,
+            "maxItems": 2,
+            "description": "a pair [x, y]",
+        },
+    },
+    "a point record {x, y, float}",
+)
 VALUE_SCHEMAS: dict[str, dict[str, Any]] = {
     "point": _POINT,
     "line": _obj({"point": _POINT, "direction": _POINT}, "a line record {point, direction}"),
-    "circle": _obj({"center": _POINT, "radius2": _text(), "radius": _FLOAT_READOUT},
-                   "a circle record {center, radius2, radius}"),
+    "circle": _obj(
+        {"center": _POINT, "radius2": _text(), "radius": _FLOAT_READOUT},
+        "a circle record {center, radius2, radius}",
+    ),
     "length": _obj({"exact": _text(), "float": _FLOAT_READOUT}, "a length record {exact, float}"),
-    "envelope": _obj({"arcs": {"type": "array", "maxItems": 16, "description": "a list of arcs",
-                               "items": _obj({
-                                   "circle": {"type": "integer", "minimum": 0, "maximum": 4},
-                                   "theta_start": _text(), "theta_end": _text(),
-                                   "theta_start_deg": _FLOAT_READOUT,
-                                   "theta_end_deg": _FLOAT_READOUT,
-                                   "start": _POINT, "end": _POINT}, "an arc record")}},
-                     "an envelope record {arcs}"),
+    "envelope": _obj(
+        {
+            "arcs": {
+                "type": "array",
+                "maxItems": 16,
+                "description": "a list of arcs",
+                "items": _obj(
+                    {
+                        "circle": {"type": "integer", "minimum": 0, "maximum": 4},
+                        "theta_start": _text(),
+                        "theta_end": _text(),
+                        "theta_start_deg": _FLOAT_READOUT,
+                        "theta_end_deg": _FLOAT_READOUT,
+                        "start": _POINT,
+                        "end": _POINT,
+                    },
+                    "an arc record",
+                ),
+            }
+        },
+        "an envelope record {arcs}",
+    ),
 }
 _FINITE = {"type": "number", "minimum": -MAX_MAGNITUDE, "maximum": MAX_MAGNITUDE}
-_NUMBER = {"anyOf": [
-    _text(1000),
-    _FINITE,
-    _obj({"float": _text(1000, pattern=r"-?[0-9]+(/[0-9]+)?", description="a fraction 'p/q'"),
-          "bits": {"type": "integer", "minimum": 1, "maximum": MAX_FLOAT_BITS}},
-         'a float record {"float": "p/q", "bits": n}'),
-], "description": 'a number (exact text, a JSON number or {"float": "p/q", "bits": n})'}
-_SIZE = {"type": "number", "exclusiveMinimum": 0, "maximum": MAX_MAGNITUDE,
-         "description": "a positive JSON number"}
-_GRASP = _obj({
-    **{k: _NUMBER for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")},
-    "friction": _obj({i: {"enum": ["mu", "xi"]} for i in ("1", "2")},
-                     'the friction record {"1": "mu" or "xi", "2": ...}'),
-    "title": {"anyOf": [_text(MAX_TITLE), {"type": "null"}], "description": "a text or null"},
-    "shape": {"anyOf": [
-        {"type": "null"},
-        {"type": "array", "prefixItems": [{"const": "circle"}, _SIZE], "minItems": 2,
-         "maxItems": 2},
-        {"type": "array", "prefixItems": [{"const": "rectangle"}, _SIZE, _SIZE], "minItems": 3,
-         "maxItems": 3},
-    ], "description": 'null, ["circle", r] or ["rectangle", w, h]'},
-}, "the grasp record (an object)")
-_STEP = _obj({
-    "index": {"type": "integer", "minimum": 0, "maximum": MAX_STEPS},
-    "name": _NAME,
-    "kind": {"enum": list(VALUE_SCHEMAS)},
-    "op": {"enum": [*OPS, "envelope"], "description": "a known operation",
-           "x-error": "unknown operation"},
-    "instrument": {"enum": list(INSTRUMENTS)},
-    "inputs": {"type": "array", "items": _NAME, "maxItems": 16},
-    "params": {"type": "array", "items": _NUMBER, "maxItems": 8},
-    "key": {"type": "boolean"},
-    "caption": _text(500),
-    "ref": _text(200),
-    "conditions": {"type": "array", "items": _text(), "maxItems": 64},
-    "value": {"type": "object", "description": "a value record (an object)"},
-}, "a step record (an object)")
-DOCUMENT_SCHEMA: dict[str, Any] = _obj({
-    "schema": {"const": SCHEMA},
-    "generator": _text(200),
-    "grasp": {"anyOf": [_GRASP, {"type": "null"}],
-              "description": "the grasp record (an object) or null"},
-    "skipped": {"type": "array", "maxItems": 6, "items": {
-        "type": "array", "prefixItems": [_NAME, _text(1000)], "minItems": 2, "maxItems": 2,
-        "description": "a pair [name, reason]"}},
-    "steps": {"type": "array", "items": _STEP, "maxItems": MAX_STEPS},
-}, "a JSON object", optional=("generator",))
+_NUMBER = {
+    "anyOf": [
+        _text(1000),
+        _FINITE,
+        _obj(
+            {
+                "float": _text(1000, pattern=r"-?[0-9]+(/[0-9]+)?", description="a fraction 'p/q'"),
+                "bits": {"type": "integer", "minimum": 1, "maximum": MAX_FLOAT_BITS},
+            },
+            'a float record {"float": "p/q", "bits": n}',
+        ),
+    ],
+    "description": 'a number (exact text, a JSON number or {"float": "p/q", "bits": n})',
+}
+_SIZE = {
+    "type": "number",
+    "exclusiveMinimum": 0,
+    "maximum": MAX_MAGNITUDE,
+    "description": "a positive JSON number",
+}
+_GRASP = _obj(
+    {
+        **{k: _NUMBER for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")},
+        "friction": _obj(
+            {i: {"enum": ["mu", "xi"]} for i in ("1", "2")},
+            'the friction record {"1": "mu" or "xi", "2": ...}',
+        ),
+        "title": {"anyOf": [_text(MAX_TITLE), {"type": "null"}], "description": "a text or null"},
+        "shape": {
+            "anyOf": [
+                {"type": "null"},
+                {
+                    "type": "array",
+                    "prefixItems": [{"const": "circle"}, _SIZE],
+                    "minItems": 2,
+                    "maxItems": 2,
+                },
+                {
+                    "type": "array",
+                    "prefixItems": [{"const": "rectangle"}, _SIZE, _SIZE],
+                    "minItems": 3,
+                    "maxItems": 3,
+                },
+            ],
+            "description": 'null, ["circle", r] or ["rectangle", w, h]',
+        },
+    },
+    "the grasp record (an object)",
+)
+_STEP = _obj(
+    {
+        "index": {"type": "integer", "minimum": 0, "maximum": MAX_STEPS},
+        "name": _NAME,
+        "kind": {"enum": list(VALUE_SCHEMAS)},
+        "op": {
+            "enum": [*OPS, "envelope"],
+            "description": "a known operation",
+            "x-error": "unknown operation",
+        },
+        "instrument": {"enum": list(INSTRUMENTS)},
+        "inputs": {"type": "array", "items": _NAME, "maxItems": 16},
+        "params": {"type": "array", "items": _NUMBER, "maxItems": 8},
+        "key": {"type": "boolean"},
+        "caption": _text(500),
+        "ref": _text(200),
+        "conditions": {"type": "array", "items": _text(), "maxItems": 64},
+        "value": {"type": "object", "description": "a value record (an object)"},
+    },
+    "a step record (an object)",
+)
+DOCUMENT_SCHEMA: dict[str, Any] = _obj(
+    {
+        "schema": {"const": SCHEMA},
+        "generator": _text(200),
+        "grasp": {
+            "anyOf": [_GRASP, {"type": "null"}],
+            "description": "the grasp record (an object) or null",
+        },
+        "skipped": {
+            "type": "array",
+            "maxItems": 6,
+            "items": {
+                "type": "array",
+                "prefixItems": [_NAME, _text(1000)],
+                "minItems": 2,
+                "maxItems": 2,
+                "description": "a pair [name, reason]",
+            },
+        },
+        "steps": {"type": "array", "items": _STEP, "maxItems": MAX_STEPS},
+    },
+    "a JSON object",
+    optional=("generator",),
+)
 _JUNK = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f\ud800-\udfff\ufffe\uffff]")
-_JSON_TYPES = {"string": str, "array": list, "object": dict, "boolean": bool,
-               "null": type(None)}
+_JSON_TYPES = {"string": str, "array": list, "object": dict, "boolean": bool, "null": type(None)}
 
 
 def _show(v: Any) -> str:
@@ -132,8 +209,9 @@ def _where(path: str) -> str:
     return path or "the document"
 
 
-def _fail(path: str, what: str, v: Any, cls: type[JSONDocumentError] = JSONDocumentError
-          ) -> JSONDocumentError:
+def _fail(
+    path: str, what: str, v: Any, cls: type[JSONDocumentError] = JSONDocumentError
+) -> JSONDocumentError:
     return cls(f"{_where(path)}: {what}, got {_show(v)}")
 
 
@@ -154,9 +232,15 @@ def _expected(schema: dict[str, Any]) -> str:
         return "one of " + ", ".join(map(repr, schema["enum"]))
     types = schema.get("type", "a value")
     types = types if isinstance(types, list) else [types]
-    words = {"string": "a text", "integer": "an integer", "number": "a JSON number",
-             "array": "a list", "object": "an object", "boolean": "true or false",
-             "null": "null"}
+    words = {
+        "string": "a text",
+        "integer": "an integer",
+        "number": "a JSON number",
+        "array": "a list",
+        "object": "an object",
+        "boolean": "true or false",
+        "null": "null",
+    }
     return " or ".join(words[t] if t in words else t for t in types)
 
 
@@ -171,8 +255,14 @@ def _check(v: Any, schema: dict[str, Any], path: str) -> None:
             except JSONDocumentError:
                 pass
         # one alternative of the value's own type: its error is the more precise one
-        same = [o for o in options if "type" in o and any(
-            _is_type(v, t) for t in (o["type"] if isinstance(o["type"], list) else [o["type"]]))]
+        same = [
+            o
+            for o in options
+            if "type" in o
+            and any(
+                _is_type(v, t) for t in (o["type"] if isinstance(o["type"], list) else [o["type"]])
+            )
+        ]
         if len(same) == 1:
             _check(v, same[0], path)
         raise _fail(path, f"expected {_expected(schema)}", v)
@@ -198,8 +288,9 @@ def _check(v: Any, schema: dict[str, Any], path: str) -> None:
 def _check_text(v: str, schema: dict[str, Any], path: str) -> None:
     limit = schema.get("maxLength", MAX_TEXT)
     if len(v) > limit:
-        raise _fail(path, f"a text of {len(v)} characters is longer than {limit}", v,
-                    JSONTooLargeError)
+        raise _fail(
+            path, f"a text of {len(v)} characters is longer than {limit}", v, JSONTooLargeError
+        )
     junk = _JUNK.search(v)
     if junk:
         raise _fail(path, f"control character or lone surrogate {junk.group()!r} in a text", v)
@@ -216,16 +307,21 @@ def _check_number(v: float, schema: dict[str, Any], path: str) -> None:
         span = f"at least {low:g}" if high is None else f"at most {high:g}"
         span = f"from {low:g} to {high:g}" if None not in (low, high) else span
         kind = "an integer" if isinstance(v, int) else "a number"
-        raise _fail(path, f"expected {kind} {span}", v,
-                    JSONTooLargeError if big else JSONDocumentError)
+        raise _fail(
+            path, f"expected {kind} {span}", v, JSONTooLargeError if big else JSONDocumentError
+        )
     if "exclusiveMinimum" in schema and not v > schema["exclusiveMinimum"]:
         raise _fail(path, f"expected a number > {schema['exclusiveMinimum']}", v)
 
 
 def _check_list(v: list, schema: dict[str, Any], path: str) -> None:
     if len(v) > schema.get("maxItems", MAX_STEPS):
-        raise _fail(path, f"a list of {len(v)} items is longer than {schema.get('maxItems')}",
-                    v, JSONTooLargeError)
+        raise _fail(
+            path,
+            f"a list of {len(v)} items is longer than {schema.get('maxItems')}",
+            v,
+            JSONTooLargeError,
+        )
     if len(v) < schema.get("minItems", 0):
         raise _fail(path, f"expected {_expected(schema)}", v)
     prefix = schema.get("prefixItems", [])
@@ -243,12 +339,13 @@ def _check_object(v: dict, schema: dict[str, Any], path: str) -> None:
         if not isinstance(key, str):
             raise _fail(path, "keys must be texts", key)
         if schema.get("additionalProperties", True) is False and key not in props:
-            raise _fail(_join(path, key),
-                        f"unknown key (expected {', '.join(props)})", key)
+            raise _fail(_join(path, key), f"unknown key (expected {', '.join(props)})", key)
     for key in schema.get("required", []):
         if key not in v:
-            raise JSONDocumentError(f"{_where(path)}: the key {key!r} is missing from "
-                                    f"{_expected(schema)} (it has {_show(sorted(v))})")
+            raise JSONDocumentError(
+                f"{_where(path)}: the key {key!r} is missing from "
+                f"{_expected(schema)} (it has {_show(sorted(v))})"
+            )
     for key, sub in props.items():
         if key in v:
             _check(v[key], sub, _join(path, key))

@@ -29,15 +29,28 @@ def _record(step: Step) -> dict[str, Any]:
 
 def _compare(stored: dict[str, Any], step: Step, i: int) -> None:
     given = _record(step)
-    for field in ("name", "kind", "op", "inputs", "params", "instrument", "key", "caption",
-                  "ref", "index", "conditions", "value"):
+    for field in (
+        "name",
+        "kind",
+        "op",
+        "inputs",
+        "params",
+        "instrument",
+        "key",
+        "caption",
+        "ref",
+        "index",
+        "conditions",
+        "value",
+    ):
         found = _difference(stored[field], given[field], field)
         if found:
             where, a, b = found
             how = "does not match its replay" if field == "value" else "disagrees with the grasp"
             raise InconsistentDocumentError(
                 f"steps[{i}] ({stored['name']}) {how}: {where} is {_show(a)} in the file, "
-                f"but the grasp gives {_show(b)}")
+                f"but the grasp gives {_show(b)}"
+            )
 
 
 def _rebuild(doc: dict[str, Any], g: Grasp) -> Construction:
@@ -65,15 +78,22 @@ def _rebuild(doc: dict[str, Any], g: Grasp) -> Construction:
             step = run_step(spec, env, len(steps))
         except GeometryError as exc:
             if spec.op != "second_intersection":
-                raise _fail(f"steps[{len(steps)}]", f"the grasp's construction fails at "
-                            f"{spec.name} ({exc})", spec.name, InconsistentDocumentError) from None
+                raise _fail(
+                    f"steps[{len(steps)}]",
+                    f"the grasp's construction fails at {spec.name} ({exc})",
+                    spec.name,
+                    InconsistentDocumentError,
+                ) from None
             skipped.append((spec.name, str(exc)))
             pending.discard(spec.name)
             continue
         if spec.name in pending:
-            raise _fail(f"skipped[{names.index(spec.name)}]", f"the grasp makes {spec.name} "
-                        "(it is not left out)", listed[names.index(spec.name)],
-                        InconsistentDocumentError)
+            raise _fail(
+                f"skipped[{names.index(spec.name)}]",
+                f"the grasp makes {spec.name} (it is not left out)",
+                listed[names.index(spec.name)],
+                InconsistentDocumentError,
+            )
         if len(steps) < len(records):
             _compare(records[len(steps)], step, len(steps))
         env[spec.name] = step.obj
@@ -81,19 +101,32 @@ def _rebuild(doc: dict[str, Any], g: Grasp) -> Construction:
     if len(steps) < len(records):
         total = len(steps) + (not any(v.free_symbols for v in g.params.values()))
         if len(records) > total:
-            raise _fail(f"steps[{total}]", f"the recipe of this grasp has {total} steps, the "
-                        f"file {len(records)}", records[total]["name"],
-                        InconsistentDocumentError)
+            raise _fail(
+                f"steps[{total}]",
+                f"the recipe of this grasp has {total} steps, the file {len(records)}",
+                records[total]["name"],
+                InconsistentDocumentError,
+            )
         circles = [s.name for s in steps if s.op in ("circle_on_diameter", "second_intersection")]
-        step = Step(len(steps), "envelope", "envelope", "compass", tuple(circles),
-                    outer_envelope(env), (),
-                    "Outer envelope of the four circles: the polar graph of k_grasp(θ)",
-                    "§3.3 outside extraction, eq. (25), Fig. 5", key=True, role="envelope")
+        step = Step(
+            len(steps),
+            "envelope",
+            "envelope",
+            "compass",
+            tuple(circles),
+            outer_envelope(env),
+            (),
+            "Outer envelope of the four circles: the polar graph of k_grasp(θ)",
+            "§3.3 outside extraction, eq. (25), Fig. 5",
+            key=True,
+            role="envelope",
+        )
         _compare(records[len(steps)], step, len(steps))
         steps.append(step)
     if listed != skipped:
         found = _difference([list(x) for x in listed], [list(x) for x in skipped], "skipped")
         where, a, b = found or ("skipped", listed, skipped)
-        raise InconsistentDocumentError(f"{where} is {_show(a)} in the file, but the grasp "
-                                        f"gives {_show(b)}")
+        raise InconsistentDocumentError(
+            f"{where} is {_show(a)} in the file, but the grasp gives {_show(b)}"
+        )
     return Construction(tuple(steps), g, tuple(skipped))

@@ -63,8 +63,20 @@ __all__ = ["SLIDERS", "ggb_xml", "read_ggb_xml", "to_ggb", "write_ggb"]
 _W, _H = 960, 720  # graphics view, pixels
 _LEFT = 0  # the sliders are in the Algebra view, not over the drawing (issue 23)
 _POINT_SIZE = 4  # of the labelled points (GeoGebra's pointSize, pixels)
-_RGB = {role: rgb(role) for role in ("axis", "side", "perp", "point", "envelope", "circle1",
-                                     "circle2", "circle3", "circle4")}
+_RGB = {
+    role: rgb(role)
+    for role in (
+        "axis",
+        "side",
+        "perp",
+        "point",
+        "envelope",
+        "circle1",
+        "circle2",
+        "circle3",
+        "circle4",
+    )
+}
 
 
 def _f(v: Any) -> float:
@@ -91,17 +103,19 @@ def _sliders(grasp: Grasp) -> list[str]:
         lo, hi = _slider_range(param, value)
         angle = param.startswith("phi")
         extra = [f"\t<angleStyle {_a(val=3)}/>"] if angle else []  # any angle, no reflex
-        out += [f"<element {_a(type='angle' if angle else 'numeric', label=label)}>",
-                f"\t<caption {_a(val=caption.replace('(rad)', '(°)'))}/>",
-                f"\t<value {_a(val=repr(value))}/>",
-                f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
-                f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
-                f"{_a(absoluteScreenLocation='true')}/>",
-                *extra,
-                f"\t<show {_a(object='false', label='true')}/>",
-                f"\t<labelMode {_a(val=1)}/>",
-                f"\t<animation {_a(step='0.01', speed=1, type=0, playing='false')}/>",
-                "</element>"]
+        out += [
+            f"<element {_a(type='angle' if angle else 'numeric', label=label)}>",
+            f"\t<caption {_a(val=caption.replace('(rad)', '(°)'))}/>",
+            f"\t<value {_a(val=repr(value))}/>",
+            f"\t<slider {_a(min=repr(lo), max=repr(hi), width=180, x=20, y=30 + 36 * i)} "
+            f"{_a(fixed='true', horizontal='true', showAlgebra='true')} "
+            f"{_a(absoluteScreenLocation='true')}/>",
+            *extra,
+            f"\t<show {_a(object='false', label='true')}/>",
+            f"\t<labelMode {_a(val=1)}/>",
+            f"\t<animation {_a(step='0.01', speed=1, type=0, playing='false')}/>",
+            "</element>",
+        ]
     return out
 
 
@@ -109,15 +123,27 @@ def _style(step: Step, offset: tuple[int, int] | None = None) -> list[str]:
     kind = step.kind
     small = step.role == "break_point"  # roles as data, never names
     n = step.n[0] if step.n else 1
-    role = ("axis" if step.role == "axis" else "perp" if step.op == "perpendicular"
-            else "side" if kind == "line" else f"circle{n}" if kind == "circle" else
-            "envelope" if kind == "envelope" else "point")
+    role = (
+        "axis"
+        if step.role == "axis"
+        else "perp"
+        if step.op == "perpendicular"
+        else "side"
+        if kind == "line"
+        else f"circle{n}"
+        if kind == "circle"
+        else "envelope"
+        if kind == "envelope"
+        else "point"
+    )
     r, g, b = _RGB.get(role, (17, 17, 17))
     shown = kind != "length"
     label = kind == "point" and not small
-    out = [f"<show {_a(object=str(shown).lower(), label=str(label).lower())}/>",
-           f"<objColor {_a(r=r, g=g, b=b, alpha=0.12 if kind == 'envelope' else 0)}/>",
-           f"<labelMode {_a(val=0)}/>"]
+    out = [
+        f"<show {_a(object=str(shown).lower(), label=str(label).lower())}/>",
+        f"<objColor {_a(r=r, g=g, b=b, alpha=0.12 if kind == 'envelope' else 0)}/>",
+        f"<labelMode {_a(val=0)}/>",
+    ]
     if kind in ("line", "circle", "envelope"):
         thick = {"perp": 2, "axis": 3, "envelope": 7}.get(role, 4)
         dashed = role == "perp" or kind == "circle"
@@ -180,27 +206,35 @@ def _label_offsets(scene: Scene, frame: tuple[float, float, float]) -> dict[str,
 def _view(construction: Construction, scene: Scene) -> list[str]:
     # the one view box of every picture (layout.view_box, objects chosen by role)
     x0, y0, scale = _frame(scene.box)
-    return ["<gui>", f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
-            f"\t<font {_a(size=_font_px(scene.box, scale))}/>",
-            # the construction protocol, with its navigation bar (play, and the protocol
-            # button) under the drawing; the key steps are its breakpoints
-            f"\t<consProtColumns {_a(col0='true', col1='true', col2='false', col3='true')} "
-            f"{_a(col4='true', col5='true', col6='true')}/>",
-            f"\t<consProtocol {_a(useColors='true', addIcons='false')} "
-            f"{_a(showOnlyBreakpoints='false')}/>",
-            f"\t<consProtNavigationBar {_a(id=1, playButton='true', playDelay='2.0')} "
-            f"{_a(protButton='true', consStep='-1')}/>",
-            "</gui>",
-            "<euclidianView>", f"\t<size {_a(width=_W, height=_H)}/>",
-            f"\t<coordSystem {_a(xZero=repr(x0), yZero=repr(y0))}"
-            f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
-            f"\t<evSettings {_a(axes='false', grid='false', gridIsBold='false')} "
-            f"{_a(pointCapturing=3, rightAngleStyle=1, checkboxSize=13, gridType=0)}/>",
-            "</euclidianView>"]
+    return [
+        "<gui>",
+        f"\t<window {_a(width=_W + 300, height=_H + 160)}/>",
+        f"\t<font {_a(size=_font_px(scene.box, scale))}/>",
+        # the construction protocol, with its navigation bar (play, and the protocol
+        # button) under the drawing; the key steps are its breakpoints
+        f"\t<consProtColumns {_a(col0='true', col1='true', col2='false', col3='true')} "
+        f"{_a(col4='true', col5='true', col6='true')}/>",
+        f"\t<consProtocol {_a(useColors='true', addIcons='false')} "
+        f"{_a(showOnlyBreakpoints='false')}/>",
+        f"\t<consProtNavigationBar {_a(id=1, playButton='true', playDelay='2.0')} "
+        f"{_a(protButton='true', consStep='-1')}/>",
+        "</gui>",
+        "<euclidianView>",
+        f"\t<size {_a(width=_W, height=_H)}/>",
+        f"\t<coordSystem {_a(xZero=repr(x0), yZero=repr(y0))}"
+        f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
+        f"\t<evSettings {_a(axes='false', grid='false', gridIsBold='false')} "
+        f"{_a(pointCapturing=3, rightAngleStyle=1, checkboxSize=13, gridType=0)}/>",
+        "</euclidianView>",
+    ]
 
 
-def ggb_xml(construction: Construction, title: str | None = None, program: Program | None = None,
-            values: Any = None) -> str:
+def ggb_xml(
+    construction: Construction,
+    title: str | None = None,
+    program: Program | None = None,
+    values: Any = None,
+) -> str:
     """The ``geogebra.xml`` text of ``construction`` (numeric parameters).
 
     With the construction file's ``program`` and its parameters' ``values`` (the
@@ -215,19 +249,27 @@ def ggb_xml(construction: Construction, title: str | None = None, program: Progr
     grasp = construction.grasp
     steps = {s.name: s for s in construction.steps}
     if grasp is not None and any(_has_symbols(v) for v in grasp.params.values()):
-        raise ValueError("cannot write a symbolic construction to GeoGebra: its sliders need "
-                         "numbers; substitute values first (Grasp.subs)")
+        raise ValueError(
+            "cannot write a symbolic construction to GeoGebra: its sliders need "
+            "numbers; substitute values first (Grasp.subs)"
+        )
     text = title if title is not None else (getattr(grasp, "title", None) or "")
     scene = build_scene(construction)
     offsets = _label_offsets(scene, _frame(scene.box))
-    out = ['<?xml version="1.0" encoding="utf-8"?>',
-           f'<geogebra {_a(format="5.0", version="5.0.0.0", app="classic", platform="d")} '
-           'xsi:noNamespaceSchemaLocation="http://www.geogebra.org/apps/xsd/ggb.xsd" '
-           'xmlns="" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
-           *_view(construction, scene),
-           "<kernel>", f"\t<continuous {_a(val='false')}/>", f"\t<decimals {_a(val=4)}/>",
-           f"\t<angleUnit {_a(val='degree')}/>", f"\t<coordStyle {_a(val=0)}/>", "</kernel>",
-           f"<construction {_a(title=text, author='graspcompass', date='')}>"]
+    out = [
+        '<?xml version="1.0" encoding="utf-8"?>',
+        f"<geogebra {_a(format='5.0', version='5.0.0.0', app='classic', platform='d')} "
+        'xsi:noNamespaceSchemaLocation="http://www.geogebra.org/apps/xsd/ggb.xsd" '
+        'xmlns="" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance">',
+        *_view(construction, scene),
+        "<kernel>",
+        f"\t<continuous {_a(val='false')}/>",
+        f"\t<decimals {_a(val=4)}/>",
+        f"\t<angleUnit {_a(val='degree')}/>",
+        f"\t<coordStyle {_a(val=0)}/>",
+        "</kernel>",
+        f"<construction {_a(title=text, author='graspcompass', date='')}>",
+    ]
     if grasp is not None:
         out += _sliders(grasp)
     live = {}
@@ -245,13 +287,20 @@ def ggb_xml(construction: Construction, title: str | None = None, program: Progr
             out += transfer
             d = type(d)("point", "Intersect")
         elif d.command is None:
-            out.append(f"<expression {_a(label=label, exp=d.exp)}"
-                       + (f" {_a(type='point')}" if d.element == "point" else "") + "/>")
+            out.append(
+                f"<expression {_a(label=label, exp=d.exp)}"
+                + (f" {_a(type='point')}" if d.element == "point" else "")
+                + "/>"
+            )
         else:
             args = _a(**{f"a{i}": v for i, v in enumerate(d.inputs)})
             var = f" {_a(var=d.var)}" if d.var else ""
-            out += [f"<command {_a(name=d.command)}{var}>", f"\t<input {args}/>",
-                    f"\t<output {_a(a0=label)}/>", "</command>"]
+            out += [
+                f"<command {_a(name=d.command)}{var}>",
+                f"\t<input {args}/>",
+                f"\t<output {_a(a0=label)}/>",
+                "</command>",
+            ]
         out.append(f"<element {_a(type=d.element, label=label)}>")
         out += ["\t" + line for line in _style(s, offsets.get(s.name))]
         out.append(f"\t<caption {_a(val=s.caption)}/>")
@@ -261,8 +310,9 @@ def ggb_xml(construction: Construction, title: str | None = None, program: Progr
         if grasp is not None and s.role == "cone_side" and s.n and s.n[0] in _SIDE:
             i = 1 if s.n[0] in (1, 3) else 2
             sides_done[i] += 1
-            contacts = {t.n[0]: ggb_label(t.name) for t in construction.steps
-                        if t.role == "contact" and t.n}
+            contacts = {
+                t.n[0]: ggb_label(t.name) for t in construction.steps if t.role == "contact" and t.n
+            }
             if sides_done[i] == 2 and {1, 2} <= set(contacts):  # once both sides exist
                 out += _cone(i, contacts)
     if program is not None and grasp is None:
@@ -271,18 +321,39 @@ def ggb_xml(construction: Construction, title: str | None = None, program: Progr
     return "\n".join(out) + "\n"
 
 
-def _element(kind: str, label: str, caption: str, style: list[str],
-             command: str | None = None, inputs: tuple[str, ...] = ()) -> list[str]:
+def _element(
+    kind: str,
+    label: str,
+    caption: str,
+    style: list[str],
+    command: str | None = None,
+    inputs: tuple[str, ...] = (),
+) -> list[str]:
     """One GeoGebra object made by ``command`` (or an expression when None)."""
     args = _a(**{f"a{i}": v for i, v in enumerate(inputs)})
-    head = ([f"<command {_a(name=command)}>", f"\t<input {args}/>",
-             f"\t<output {_a(a0=label)}/>", "</command>"] if command else [])
-    return [*head, f"<element {_a(type=kind, label=label)}>",
-            *("\t" + x for x in style), f"\t<caption {_a(val=caption)}/>", "</element>"]
+    head = (
+        [
+            f"<command {_a(name=command)}>",
+            f"\t<input {args}/>",
+            f"\t<output {_a(a0=label)}/>",
+            "</command>",
+        ]
+        if command
+        else []
+    )
+    return [
+        *head,
+        f"<element {_a(type=kind, label=label)}>",
+        *("\t" + x for x in style),
+        f"\t<caption {_a(val=caption)}/>",
+        "</element>",
+    ]
 
 
-_FAINT = [f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>",
-          f"<lineStyle {_a(thickness=1, type=10)}/>"]
+_FAINT = [
+    f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>",
+    f"<lineStyle {_a(thickness=1, type=10)}/>",
+]
 
 
 def _transfer(s: Step, steps: dict[str, Any]) -> list[str] | None:
@@ -293,59 +364,114 @@ def _transfer(s: Step, steps: dict[str, Any]) -> list[str] | None:
     if s.op != "point_from_lengths" or len(s.inputs) != 2:
         return None
     a, b = (steps.get(n) for n in s.inputs)
-    if (a is None or b is None or a.op != "signed_length" or b.op != "signed_length"
-            or tuple(sp.sympify(p) for p in s.params[:2]) != (-1, -1)):
+    if (
+        a is None
+        or b is None
+        or a.op != "signed_length"
+        or b.op != "signed_length"
+        or tuple(sp.sympify(p) for p in s.params[:2]) != (-1, -1)
+    ):
         return None
     ax, ay, o = (steps.get(n) for n in (a.inputs[2], b.inputs[2], b.inputs[0]))
     # the axes and the origin by role and value (roles as data, never names)
-    if (ax is None or ay is None or o is None or ax.role != "axis" or ay.role != "axis"
-            or tuple(map(sp.sympify, ax.params)) != (1, 0)
-            or tuple(map(sp.sympify, ay.params)) != (0, 1)
-            or o.op != "point" or any(sp.sympify(p) != 0 for p in o.params)):
+    if (
+        ax is None
+        or ay is None
+        or o is None
+        or ax.role != "axis"
+        or ay.role != "axis"
+        or tuple(map(sp.sympify, ax.params)) != (1, 0)
+        or tuple(map(sp.sympify, ay.params)) != (0, 1)
+        or o.op != "point"
+        or any(sp.sympify(p) != 0 for p in o.params)
+    ):
         return None
     om, xn, yn = (ggb_label(n) for n in (a.inputs[0], a.inputs[1], b.inputs[1]))
     org, axis_x, axis_y = (ggb_label(n) for n in (b.inputs[0], a.inputs[2], b.inputs[2]))
     v = ggb_label(s.name)
     aux = f"V{s.n[0]}" if s.n else v  # the helpers' labels from the role's n, not the name
-    hidden = [f"<show {_a(object='true', label='false')}/>", f"<pointSize {_a(val=2)}/>",
-              f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>"]
+    hidden = [
+        f"<show {_a(object='true', label='false')}/>",
+        f"<pointSize {_a(val=2)}/>",
+        f"<objColor {_a(r=150, g=150, b=150, alpha=0)}/>",
+    ]
     return [
-        *_element("point", f"{aux}x", f"{a.name} carried to O with the compass and reversed "
-                  f"(mirror in O): the x-coordinate of {s.name}", hidden, "Mirror",
-                  (f"Translate[{xn}, Vector[{om}, {org}]]", org)),
-        *_element("conic", f"arc{aux}x", f"compass circle about O through {aux}x", _FAINT,
-                  "Circle", (org, f"{aux}x")),
-        *_element("point", f"{aux}y", f"{yn} mirrored in O: the y-coordinate of {s.name}",
-                  hidden, "Mirror", (yn, org)),
-        *_element("conic", f"arc{aux}y", f"compass circle about O through {aux}y", _FAINT,
-                  "Circle", (org, f"{aux}y")),
+        *_element(
+            "point",
+            f"{aux}x",
+            f"{a.name} carried to O with the compass and reversed "
+            f"(mirror in O): the x-coordinate of {s.name}",
+            hidden,
+            "Mirror",
+            (f"Translate[{xn}, Vector[{om}, {org}]]", org),
+        ),
+        *_element(
+            "conic",
+            f"arc{aux}x",
+            f"compass circle about O through {aux}x",
+            _FAINT,
+            "Circle",
+            (org, f"{aux}x"),
+        ),
+        *_element(
+            "point",
+            f"{aux}y",
+            f"{yn} mirrored in O: the y-coordinate of {s.name}",
+            hidden,
+            "Mirror",
+            (yn, org),
+        ),
+        *_element(
+            "conic",
+            f"arc{aux}y",
+            f"compass circle about O through {aux}y",
+            _FAINT,
+            "Circle",
+            (org, f"{aux}y"),
+        ),
         f"<command {_a(name='Intersect')}>",
         f"\t<input {_a(a0=f'OrthogonalLine[{aux}x, {axis_x}]')} "
         f"{_a(a1=f'OrthogonalLine[{aux}y, {axis_y}]')}/>",
-        f"\t<output {_a(a0=v)}/>", "</command>"]
+        f"\t<output {_a(a0=v)}/>",
+        "</command>",
+    ]
 
 
 def _cone(i: int, contacts: dict[int, str]) -> list[str]:
     """The friction cone at P_i (Fig. 2) as a filled triangle on its two sides, 0.6 |P1P2|
     long, following the sliders (``contacts``: the labels of P1, P2, found by role)."""
     p, p1, p2 = contacts[i], contacts[1], contacts[2]
-    ends = [f"{p} + 0.6 Distance[{p1}, {p2}] UnitVector[Vector[{_SIDE[n]}]]"
-            for n in ((1, 3) if i == 1 else (2, 4))]
+    ends = [
+        f"{p} + 0.6 Distance[{p1}, {p2}] UnitVector[Vector[{_SIDE[n]}]]"
+        for n in ((1, 3) if i == 1 else (2, 4))
+    ]
     r, g, b = rgb("cone")
-    style = [f"<show {_a(object='true', label='false')}/>",
-             f"<objColor {_a(r=r, g=g, b=b, alpha=0.3)}/>",
-             f"<lineStyle {_a(thickness=0, type=0)}/>"]
-    return _element("polygon", f"cone{i}", f"friction cone at P{i} (given, Fig. 2): sides at "
-                    f"φ{i} ± ξ{i} from −y, {'clockwise' if i == 1 else 'counter-clockwise'}",
-                    style, "Polygon", ("{" + ", ".join([p, *ends]) + "}",))
+    style = [
+        f"<show {_a(object='true', label='false')}/>",
+        f"<objColor {_a(r=r, g=g, b=b, alpha=0.3)}/>",
+        f"<lineStyle {_a(thickness=0, type=0)}/>",
+    ]
+    return _element(
+        "polygon",
+        f"cone{i}",
+        f"friction cone at P{i} (given, Fig. 2): sides at "
+        f"φ{i} ± ξ{i} from −y, {'clockwise' if i == 1 else 'counter-clockwise'}",
+        style,
+        "Polygon",
+        ("{" + ", ".join([p, *ends]) + "}",),
+    )
 
 
 def _has_symbols(v: Any) -> bool:
     return bool(getattr(v, "free_symbols", ()))
 
 
-def to_ggb(construction: Construction, title: str | None = None, program: Program | None = None,
-           values: Any = None) -> bytes:
+def to_ggb(
+    construction: Construction,
+    title: str | None = None,
+    program: Program | None = None,
+    values: Any = None,
+) -> bytes:
     """The ``.ggb`` archive (zip bytes) of ``construction``.
 
     Examples
@@ -358,13 +484,17 @@ def to_ggb(construction: Construction, title: str | None = None, program: Progra
     buf = io.BytesIO()
     with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
         z.writestr("geogebra_javascript.js", "function ggbOnInit() {}\n")
-        z.writestr("geogebra.xml", ggb_xml(construction, title, program, values)
-                   .encode("utf-8"))
+        z.writestr("geogebra.xml", ggb_xml(construction, title, program, values).encode("utf-8"))
     return buf.getvalue()
 
 
-def write_ggb(construction: Construction, path: Any, title: str | None = None,
-              program: Program | None = None, values: Any = None) -> Path:
+def write_ggb(
+    construction: Construction,
+    path: Any,
+    title: str | None = None,
+    program: Program | None = None,
+    values: Any = None,
+) -> Path:
     """Write :func:`to_ggb` to ``path``; returns the path.
 
     Raises

@@ -62,9 +62,17 @@ if TYPE_CHECKING:
 __all__ = ["WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
 
 #: The files of ``graspcompass/export/_web`` that the page is made of (and the licences).
-WEB_FILES = ("jsxgraph.min.js", "jsxgraph.css", "LICENSE.jsxgraph.MIT", "LICENSE.jsxgraph.LGPL",
-             "jsxgraph.min.js.LICENSE.txt", "labelling.js", "explorer.js", "explorer.css",
-             "explorer.html")
+WEB_FILES = (
+    "jsxgraph.min.js",
+    "jsxgraph.css",
+    "LICENSE.jsxgraph.MIT",
+    "LICENSE.jsxgraph.LGPL",
+    "jsxgraph.min.js.LICENSE.txt",
+    "labelling.js",
+    "explorer.js",
+    "explorer.css",
+    "explorer.html",
+)
 
 #: Version of the vendored JSXGraph (npm package ``jsxgraph``).
 JSXGRAPH_VERSION = "1.13.3"
@@ -128,18 +136,34 @@ def page_data(construction: Construction, title: str | None = None) -> dict[str,
         raise ValueError("the construction has no grasp to explore")
     params = _params(grasp)
     params["theta"] = 0.0  # e(0) = (0, −1): the external force straight down (26)
-    steps = [dict(index=s.index, name=s.name, caption=s.caption, ref=s.ref,
-                  instrument=s.instrument, key=bool(s.key)) for s in construction.steps]
+    steps = [
+        dict(
+            index=s.index,
+            name=s.name,
+            caption=s.caption,
+            ref=s.ref,
+            instrument=s.instrument,
+            key=bool(s.key),
+        )
+        for s in construction.steps
+    ]
     presets = {}
     for name, spec in PRESETS.items():
         g = Grasp(**spec["params"])
-        presets[name] = dict(title=spec["title"], params=_params(g),
-                             shape=_shape(spec.get("shape")))
+        presets[name] = dict(
+            title=spec["title"], params=_params(g), shape=_shape(spec.get("shape"))
+        )
     return dict(
         title=title or grasp.title or "graspcompass: the internal force diagram",
-        version=__version__, params=params, steps=steps, initial_step=len(steps) - 1,
-        shape=_shape(grasp.shape), colors=dict(PALETTE), presets=presets,
-        labelling=labelling.spec(), fit=fitting.spec(),
+        version=__version__,
+        params=params,
+        steps=steps,
+        initial_step=len(steps) - 1,
+        shape=_shape(grasp.shape),
+        colors=dict(PALETTE),
+        presets=presets,
+        labelling=labelling.spec(),
+        fit=fitting.spec(),
         # no title of its own: the page's heading gives the grasp's values instead
         untitled=title is None and not grasp.title,
     )
@@ -151,8 +175,9 @@ def _script_safe(text: str) -> str:
 
 
 def _html_escape(text: str) -> str:
-    return (text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-            .replace('"', "&quot;"))
+    return (
+        text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
+    )
 
 
 def to_html(construction: Construction, title: str | None = None) -> str:

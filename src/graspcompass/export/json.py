@@ -162,12 +162,29 @@ from ._json_schema import (
 )
 from ._json_steps import _compare, _rebuild, _record  # noqa: F401
 
-__all__ = ["DOCUMENT_SCHEMA", "MAX_ANGLE_GENERATORS", "MAX_BYTES", "MAX_FLOAT_BITS",
-           "MAX_GENERATORS", "MAX_INT_DIGITS", "MAX_MAGNITUDE", "MAX_NUMBER_GENERATORS",
-           "MAX_RADICAND_BITS", "MAX_STEPS",
-           "MAX_TEXT", "MAX_TITLE", "SCHEMA", "VALUE_SCHEMAS", "InconsistentDocumentError",
-           "JSONDocumentError", "JSONTooLargeError", "dumps", "from_document", "loads",
-           "to_document"]
+__all__ = [
+    "DOCUMENT_SCHEMA",
+    "MAX_ANGLE_GENERATORS",
+    "MAX_BYTES",
+    "MAX_FLOAT_BITS",
+    "MAX_GENERATORS",
+    "MAX_INT_DIGITS",
+    "MAX_MAGNITUDE",
+    "MAX_NUMBER_GENERATORS",
+    "MAX_RADICAND_BITS",
+    "MAX_STEPS",
+    "MAX_TEXT",
+    "MAX_TITLE",
+    "SCHEMA",
+    "VALUE_SCHEMAS",
+    "InconsistentDocumentError",
+    "JSONDocumentError",
+    "JSONTooLargeError",
+    "dumps",
+    "from_document",
+    "loads",
+    "to_document",
+]
 
 #: The schema identifier written to and required in every document.
 SCHEMA = _limits.SCHEMA
@@ -218,8 +235,13 @@ def to_document(construction: Construction) -> dict[str, Any]:
         grasp = _grasp_record(g)
         _check_grasp_limits(g, grasp)
     steps = [_record(s) for s in construction.steps]
-    doc = {"schema": SCHEMA, "generator": f"graspcompass {__version__}", "grasp": grasp,
-           "skipped": [list(x) for x in construction.skipped], "steps": steps}
+    doc = {
+        "schema": SCHEMA,
+        "generator": f"graspcompass {__version__}",
+        "grasp": grasp,
+        "skipped": [list(x) for x in construction.skipped],
+        "steps": steps,
+    }
     _check(doc, DOCUMENT_SCHEMA, "")
     for i, rec in enumerate(steps):
         _check(rec["value"], VALUE_SCHEMAS[rec["kind"]], f"steps[{i}].value")
@@ -267,7 +289,6 @@ def dumps(construction: Construction, indent: int | None = 1) -> str:
     return text
 
 
-
 def from_document(doc: Any) -> Construction:
     """Rebuild the construction of a document (see "Reading JSON files" above).
 
@@ -296,8 +317,10 @@ def from_document(doc: Any) -> Construction:
     for i, rec in enumerate(doc["steps"]):
         _check(rec["value"], VALUE_SCHEMAS[rec["kind"]], f"steps[{i}].value")
     if doc["grasp"] is None:
-        raise JSONDocumentError("grasp: a document without a grasp cannot be checked against "
-                                "the paper's recipe, so it is not read")
+        raise JSONDocumentError(
+            "grasp: a document without a grasp cannot be checked against "
+            "the paper's recipe, so it is not read"
+        )
     g = _grasp(doc["grasp"])
     try:
         return _rebuild(doc, g)
@@ -305,10 +328,18 @@ def from_document(doc: Any) -> Construction:
         if isinstance(exc, JSONDocumentError):
             raise
         raise JSONDocumentError(f"steps: the grasp's construction fails: {exc}") from None
-    except (ArithmeticError, TypeError, ValueError, NotImplementedError, RecursionError,
-            BasePolynomialError) as exc:
-        raise JSONDocumentError(f"steps: the exact kernel cannot build this grasp's "
-                                f"construction ({type(exc).__name__}: {str(exc)[:80]})") from None
+    except (
+        ArithmeticError,
+        TypeError,
+        ValueError,
+        NotImplementedError,
+        RecursionError,
+        BasePolynomialError,
+    ) as exc:
+        raise JSONDocumentError(
+            f"steps: the exact kernel cannot build this grasp's "
+            f"construction ({type(exc).__name__}: {str(exc)[:80]})"
+        ) from None
 
 
 def loads(text: str | bytes) -> Construction:
@@ -349,11 +380,15 @@ def loads(text: str | bytes) -> Construction:
     if not isinstance(text, str):
         raise JSONDocumentError(f"expected a JSON text (str or bytes), got {type(text).__name__}")
     if len(text) > MAX_BYTES:
-        raise JSONTooLargeError(f"the JSON text has {len(text)} characters, more than "
-                                f"{MAX_BYTES}")
+        raise JSONTooLargeError(f"the JSON text has {len(text)} characters, more than {MAX_BYTES}")
     try:
-        doc = _json.loads(text, object_pairs_hook=_pairs, parse_constant=_constant,
-                          parse_float=_float, parse_int=_int)
+        doc = _json.loads(
+            text,
+            object_pairs_hook=_pairs,
+            parse_constant=_constant,
+            parse_float=_float,
+            parse_int=_int,
+        )
     except _json.JSONDecodeError as exc:
         raise JSONDocumentError(f"not JSON: {exc}") from None
     except RecursionError:

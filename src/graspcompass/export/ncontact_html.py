@@ -61,8 +61,7 @@ _EFFORTS = re.compile(r"paper|sum-normal|max-normal|pair:\d+,\d+")
 
 
 def _own_file(name: str) -> str:
-    return resources.files("graspcompass.export").joinpath("_web").joinpath(name).read_text(
-        "utf-8")
+    return resources.files("graspcompass.export").joinpath("_web").joinpath(name).read_text("utf-8")
 
 
 def _f(v: Any, name: str) -> float:
@@ -74,8 +73,7 @@ def _f(v: Any, name: str) -> float:
     return x
 
 
-def ncontact_page_data(grasp: Any, theta: float = 0.0,
-                       title: str | None = None) -> dict[str, Any]:
+def ncontact_page_data(grasp: Any, theta: float = 0.0, title: str | None = None) -> dict[str, Any]:
     """The JSON data the page starts from.
 
     Parameters
@@ -101,20 +99,24 @@ def ncontact_page_data(grasp: Any, theta: float = 0.0,
     """
     effort = grasp.effort.name
     if not _EFFORTS.fullmatch(effort):
-        raise ValueError(f"the n-contact page redraws the named efforts only (paper, "
-                         f"sum-normal, pair:I,J, max-normal), not {effort!r}")
+        raise ValueError(
+            f"the n-contact page redraws the named efforts only (paper, "
+            f"sum-normal, pair:I,J, max-normal), not {effort!r}"
+        )
     contacts = []
     for i, c in enumerate(grasp.contacts, start=1):
         x, y = (_f(v, f"contact {i} {k}") for v, k in zip(c.p, "xy"))
         nx, ny = (_f(v, f"contact {i} n{k}") for v, k in zip(c.n, "xy"))
-        contacts.append({"x": x, "y": y, "angle": math.atan2(ny, nx),
-                         "mu": _f(c.mu, f"contact {i} mu")})
+        contacts.append(
+            {"x": x, "y": y, "angle": math.atan2(ny, nx), "mu": _f(c.mu, f"contact {i} mu")}
+        )
     com = [_f(v, f"com {k}") for v, k in zip(grasp.com, "xy")]
     spread = max(math.hypot(c["x"] - com[0], c["y"] - com[1]) for c in contacts)
     n = len(contacts)
     return {
         "state": {"contacts": contacts, "com": com, "effort": effort, "theta": float(theta)},
-        "handle": 0.3 * (spread or 1.0), "colors": dict(PALETTE),
+        "handle": 0.3 * (spread or 1.0),
+        "colors": dict(PALETTE),
         "title": title or f"graspcompass: {n} contacts, effort {effort}",
         "version": __version__,
     }
@@ -143,8 +145,9 @@ def to_ncontact_html(grasp: Any, theta: float = 0.0, title: str | None = None) -
     return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], _own_file("ncontact.html"))
 
 
-def write_ncontact_html(grasp: Any, path: Any, theta: float = 0.0,
-                        title: str | None = None) -> Path:
+def write_ncontact_html(
+    grasp: Any, path: Any, theta: float = 0.0, title: str | None = None
+) -> Path:
     """Write the n-contact page of ``grasp`` to ``path`` (its folder must exist).
 
     Returns

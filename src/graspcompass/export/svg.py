@@ -45,17 +45,25 @@ def _label_svg(name: str) -> str:
     :mod:`graspcompass.scene.metrics`, which the placement measured the box with."""
     out = []
     for chars, sub in metrics.runs(label_tex(name)):
-        out.append(f'<tspan baseline-shift="{-metrics.SUB_SHIFT * _FONT:.2f}" '
-                   f'font-size="{metrics.SUB_SCALE * _FONT:.2f}">{escape(chars)}</tspan>'
-                   if sub else escape(chars))
+        out.append(
+            f'<tspan baseline-shift="{-metrics.SUB_SHIFT * _FONT:.2f}" '
+            f'font-size="{metrics.SUB_SCALE * _FONT:.2f}">{escape(chars)}</tspan>'
+            if sub
+            else escape(chars)
+        )
     return "".join(out)
 
 
 class _Map:
     """Frame of the paper -> SVG user units: ``box`` onto a square ``size`` at ``(left, top)``."""
 
-    def __init__(self, box: tuple[float, float, float, float], size: float = _SIZE,
-                 left: float = 0.0, top: float = _MARGIN_TOP) -> None:
+    def __init__(
+        self,
+        box: tuple[float, float, float, float],
+        size: float = _SIZE,
+        left: float = 0.0,
+        top: float = _MARGIN_TOP,
+    ) -> None:
         self.x0, self.x1, self.y0, self.y1 = box
         self.s = size / (self.x1 - self.x0)
         self.left, self.top = left, top
@@ -81,9 +89,11 @@ def _label_text(lab: Label, m: _Map, label: str) -> str:
     curves behind it from running through the glyphs.
     """
     left, top = m.xy((lab.box[0], lab.box[3]))
-    return (f'<text x="{left:.3f}" y="{top + metrics.ASCENT * _FONT:.3f}" '
-            f'font-size="{_FONT:.2f}" font-family="{metrics.FAMILY}" '
-            f'font-style="italic" {_HALO}>{label}</text>')
+    return (
+        f'<text x="{left:.3f}" y="{top + metrics.ASCENT * _FONT:.3f}" '
+        f'font-size="{_FONT:.2f}" font-family="{metrics.FAMILY}" '
+        f'font-style="italic" {_HALO}>{label}</text>'
+    )
 
 
 def _leader(lab: Label, m: _Map) -> str:
@@ -94,8 +104,10 @@ def _leader(lab: Label, m: _Map) -> str:
     px, py = lab.point
     near = (min(max(px, x0), x1), min(max(py, y0), y1))
     a, b = m.xy(lab.point), m.xy(near)
-    return (f'<line class="leader" x1="{a[0]:.3f}" y1="{a[1]:.3f}" x2="{b[0]:.3f}" '
-            f'y2="{b[1]:.3f}" stroke="{COLORS["point"]}" stroke-width="0.6"/>')
+    return (
+        f'<line class="leader" x1="{a[0]:.3f}" y1="{a[1]:.3f}" x2="{b[0]:.3f}" '
+        f'y2="{b[1]:.3f}" stroke="{COLORS["point"]}" stroke-width="0.6"/>'
+    )
 
 
 def _arc_path(scene: Scene, m: _Map) -> str:
@@ -116,8 +128,11 @@ def _arc_path(scene: Scene, m: _Map) -> str:
     return " ".join(parts) + " Z"
 
 
-_INSTRUMENT_DASH = {"bisector": ' stroke-dasharray="1.5,3"',
-                    "coordinate": ' stroke-dasharray="1.5,2"', "drop": ' stroke-dasharray="6,3"'}
+_INSTRUMENT_DASH = {
+    "bisector": ' stroke-dasharray="1.5,3"',
+    "coordinate": ' stroke-dasharray="1.5,2"',
+    "drop": ' stroke-dasharray="6,3"',
+}
 
 
 def _instruments(scene: Scene, m: _Map) -> list[str]:
@@ -125,12 +140,17 @@ def _instruments(scene: Scene, m: _Map) -> list[str]:
     (:mod:`graspcompass.scene.instruments`); ``data-step`` names the step of each."""
     out = []
     for ins in scene.instruments:
-        color = COLORS.get(f"circle{ins.n}", COLORS["perp"]) if ins.role == "coordinate" \
+        color = (
+            COLORS.get(f"circle{ins.n}", COLORS["perp"])
+            if ins.role == "coordinate"
             else COLORS["perp"]
+        )
         pts = " ".join(m(p) for p in ins.points)
-        out.append(f'<polyline class="instrument {ins.role}" data-step={quoteattr(ins.step)} '
-                   f'points="{pts}" fill="none" stroke="{color}" stroke-width="0.7"'
-                   f'{_INSTRUMENT_DASH.get(ins.role, "")}/>')
+        out.append(
+            f'<polyline class="instrument {ins.role}" data-step={quoteattr(ins.step)} '
+            f'points="{pts}" fill="none" stroke="{color}" stroke-width="0.7"'
+            f"{_INSTRUMENT_DASH.get(ins.role, '')}/>"
+        )
     return out
 
 
@@ -142,46 +162,66 @@ def _drawing(scene: Scene, m: _Map, tip: Callable[[str], str], pre: str) -> list
         style = f'fill="{COLORS["objectfill"]}" stroke="{COLORS["object"]}" stroke-width="1.2"'
         if kind == "circle":
             cx, cy = m.xy((0, 0))
-            out.append(f'<circle id="{pre}object" cx="{cx:.3f}" cy="{cy:.3f}" '
-                       f'r="{dims[0] * m.s:.3f}" {style}/>')
+            out.append(
+                f'<circle id="{pre}object" cx="{cx:.3f}" cy="{cy:.3f}" '
+                f'r="{dims[0] * m.s:.3f}" {style}/>'
+            )
         else:
             w, h = dims
             x, y = m.xy((-w / 2, h / 2))
-            out.append(f'<rect id="{pre}object" x="{x:.3f}" y="{y:.3f}" width="{w * m.s:.3f}" '
-                       f'height="{h * m.s:.3f}" {style}/>')
+            out.append(
+                f'<rect id="{pre}object" x="{x:.3f}" y="{y:.3f}" width="{w * m.s:.3f}" '
+                f'height="{h * m.s:.3f}" {style}/>'
+            )
     path = _arc_path(scene, m)
     if path:
-        out.append(f'<g id="{pre}envelope" class="envelope">{tip("envelope")}<path d="{path}" '
-                   f'fill="{COLORS["fill"]}" fill-opacity="0.35" stroke="{COLORS["envelope"]}" '
-                   'stroke-width="3" stroke-linejoin="round"/></g>')
+        out.append(
+            f'<g id="{pre}envelope" class="envelope">{tip("envelope")}<path d="{path}" '
+            f'fill="{COLORS["fill"]}" fill-opacity="0.35" stroke="{COLORS["envelope"]}" '
+            'stroke-width="3" stroke-linejoin="round"/></g>'
+        )
     for i, cone in enumerate(scene.cones, start=1):  # over the envelope's light filling
         pts = " ".join(m(p) for p in cone)
-        out.append(f'<polygon id="{pre}cone{i}" points="{pts}" fill="{COLORS["cone"]}" '
-                   'fill-opacity="0.35" stroke="none"/>')
+        out.append(
+            f'<polygon id="{pre}cone{i}" points="{pts}" fill="{COLORS["cone"]}" '
+            'fill-opacity="0.35" stroke="none"/>'
+        )
     out += _instruments(scene, m)
     for name, role, a, b in scene.lines:
         dash = ' stroke-dasharray="6,3"' if role == "perp" else ""
         width = 1.0 if role == "perp" else 1.4
         (x0, y0), (x1, y1) = m.xy(a), m.xy(b)
-        out.append(f'<g id={quoteattr(pre + name)} class="line {role}">{tip(name)}<line '
-                   f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
-                   f'stroke="{COLORS[role]}" stroke-width="{width}"{dash}/></g>')
+        out.append(
+            f'<g id={quoteattr(pre + name)} class="line {role}">{tip(name)}<line '
+            f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
+            f'stroke="{COLORS[role]}" stroke-width="{width}"{dash}/></g>'
+        )
     for name, a, b in scene.lengths:
         (x0, y0), (x1, y1) = m.xy(a), m.xy(b)
-        out.append(f'<g id={quoteattr(pre + name)} class="length">{tip(name)}<line '
-                   f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
-                   f'stroke="{COLORS["length"]}" stroke-width="0.8" marker-end="url(#head)"/></g>')
+        out.append(
+            f'<g id={quoteattr(pre + name)} class="length">{tip(name)}<line '
+            f'x1="{x0:.3f}" y1="{y0:.3f}" x2="{x1:.3f}" y2="{y1:.3f}" '
+            f'stroke="{COLORS["length"]}" stroke-width="0.8" marker-end="url(#head)"/></g>'
+        )
     for name, n, c, r in scene.circles:
         x, y = m.xy(c)
-        out.append(f'<g id={quoteattr(pre + name)} class="circle">{tip(name)}<circle '
-                   f'cx="{x:.3f}" cy="{y:.3f}" r="{r * m.s:.3f}" fill="none" '
-                   f'stroke="{COLORS.get(f"circle{n}", "black")}" stroke-width="1.4" '
-                   'stroke-dasharray="8,4"/></g>')
+        out.append(
+            f'<g id={quoteattr(pre + name)} class="circle">{tip(name)}<circle '
+            f'cx="{x:.3f}" cy="{y:.3f}" r="{r * m.s:.3f}" fill="none" '
+            f'stroke="{COLORS.get(f"circle{n}", "black")}" stroke-width="1.4" '
+            'stroke-dasharray="8,4"/></g>'
+        )
     return out
 
 
-def _points(scene: Scene, m: _Map, labels: tuple[Label, ...], tip: Callable[[str], str],
-            pre: str, box: tuple[float, float, float, float]) -> list[str]:
+def _points(
+    scene: Scene,
+    m: _Map,
+    labels: tuple[Label, ...],
+    tip: Callable[[str], str],
+    pre: str,
+    box: tuple[float, float, float, float],
+) -> list[str]:
     """The markers of the points in ``box`` and the ``labels``, each with a halo."""
     by_name = {lab.names[0]: lab for lab in labels}
     out = []
@@ -190,20 +230,21 @@ def _points(scene: Scene, m: _Map, labels: tuple[Label, ...], tip: Callable[[str
             continue
         x, y = m.xy(xy)
         small = names[0] in scene.small
-        marker = (f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{_SMALL_R if small else _MARKER_R:.2f}" '
-                  f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>')
+        marker = (
+            f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{_SMALL_R if small else _MARKER_R:.2f}" '
+            f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>'
+        )
         lab = by_name.get(names[0])
         text = ""
         if lab is not None and not small:
-            text = _leader(lab, m) + _label_text(
-                lab, m, lab.join(_label_svg))
-        out.append(f'<g id={quoteattr(pre + names[0])} class="point">{tip(names[0])}{marker}'
-                   f'{text}</g>')
+            text = _leader(lab, m) + _label_text(lab, m, lab.join(_label_svg))
+        out.append(
+            f'<g id={quoteattr(pre + names[0])} class="point">{tip(names[0])}{marker}{text}</g>'
+        )
     return out
 
 
-def to_svg(construction: Construction, title: str | None = None,
-           step: int | None = None) -> str:
+def to_svg(construction: Construction, title: str | None = None, step: int | None = None) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
 
     ``step`` draws the picture after that step of the protocol
@@ -231,45 +272,60 @@ def to_svg(construction: Construction, title: str | None = None,
     inset = scene.inset
     width = _SIZE + (_GAP + _INSET if inset is not None else 0.0)
     height = _SIZE + _MARGIN_TOP
-    out = ['<?xml version="1.0" encoding="UTF-8"?>',
-           f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {width:.0f} '
-           f'{height:.0f}" width="{160 * width / _SIZE:.1f}mm" '
-           f'height="{160 * height / _SIZE:.1f}mm" font-family="DejaVu Serif, Times, serif">',
-           f"<title>{escape(scene.title or 'internal force diagram')}</title>",
-           f'<rect x="0" y="0" width="{width:.0f}" height="{height:.0f}" fill="white"/>',
-           f'<text x="{_SIZE / 2:.0f}" y="26" text-anchor="middle" font-size="17">'
-           f"{escape(scene.title)}</text>",
-           '<g class="panel" id="main">']
+    out = [
+        '<?xml version="1.0" encoding="UTF-8"?>',
+        f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {width:.0f} '
+        f'{height:.0f}" width="{160 * width / _SIZE:.1f}mm" '
+        f'height="{160 * height / _SIZE:.1f}mm" font-family="DejaVu Serif, Times, serif">',
+        f"<title>{escape(scene.title or 'internal force diagram')}</title>",
+        f'<rect x="0" y="0" width="{width:.0f}" height="{height:.0f}" fill="white"/>',
+        f'<text x="{_SIZE / 2:.0f}" y="26" text-anchor="middle" font-size="17">'
+        f"{escape(scene.title)}</text>",
+        '<g class="panel" id="main">',
+    ]
     out += _drawing(scene, m, tip, "")
     if inset is not None:
         (a, b), (c, d) = m.xy((inset.box[0], inset.box[3])), m.xy((inset.box[1], inset.box[2]))
-        out.append(f'<rect class="region" x="{a:.3f}" y="{b:.3f}" width="{c - a:.3f}" '
-                   f'height="{d - b:.3f}" fill="none" stroke="{COLORS["axis"]}" '
-                   'stroke-width="0.8" stroke-dasharray="3,2"/>')
+        out.append(
+            f'<rect class="region" x="{a:.3f}" y="{b:.3f}" width="{c - a:.3f}" '
+            f'height="{d - b:.3f}" fill="none" stroke="{COLORS["axis"]}" '
+            'stroke-width="0.8" stroke-dasharray="3,2"/>'
+        )
     out += _points(scene, m, scene.labels if inset is None else inset.main, tip, "", scene.box)
     out.append("</g>")
     if inset is not None:
         left = _SIZE + _GAP
         z = _Map(inset.box, _INSET, left, _MARGIN_TOP)
-        out.append(f'<clipPath id="inset-clip"><rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" '
-                   f'width="{_INSET:.3f}" height="{_INSET:.3f}"/></clipPath>')
-        out.append('<g class="panel" id="inset">'
-                   '<g id="inset-drawing" class="drawing" clip-path="url(#inset-clip)">'
-                   f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
-                   f'height="{_INSET:.3f}" fill="white"/>')
+        out.append(
+            f'<clipPath id="inset-clip"><rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" '
+            f'width="{_INSET:.3f}" height="{_INSET:.3f}"/></clipPath>'
+        )
+        out.append(
+            '<g class="panel" id="inset">'
+            '<g id="inset-drawing" class="drawing" clip-path="url(#inset-clip)">'
+            f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+            f'height="{_INSET:.3f}" fill="white"/>'
+        )
         out += _drawing(scene, z, tip, "inset-")
         out.append("</g>")
         out += _points(scene, z, inset.labels, tip, "inset-", inset.box)
-        out.append(f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
-                   f'height="{_INSET:.3f}" fill="none" stroke="{COLORS["axis"]}" '
-                   'stroke-width="0.8"/>')
-        out.append(f'<text x="{left + _INSET / 2:.1f}" y="{_MARGIN_TOP + _INSET + 22:.1f}" '
-                   f'text-anchor="middle" font-size="14">the dashed square, '
-                   f'{z.s / m.s:.1f}'
-                   '× larger</text></g>')
-    out.insert(2, '<defs><marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
-               'markerWidth="6" markerHeight="6" orient="auto-start-reverse">'
-               f'<path d="M0,0 L10,5 L0,10 z" fill="{COLORS["length"]}"/></marker></defs>')
+        out.append(
+            f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+            f'height="{_INSET:.3f}" fill="none" stroke="{COLORS["axis"]}" '
+            'stroke-width="0.8"/>'
+        )
+        out.append(
+            f'<text x="{left + _INSET / 2:.1f}" y="{_MARGIN_TOP + _INSET + 22:.1f}" '
+            f'text-anchor="middle" font-size="14">the dashed square, '
+            f"{z.s / m.s:.1f}"
+            "× larger</text></g>"
+        )
+    out.insert(
+        2,
+        '<defs><marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
+        'markerWidth="6" markerHeight="6" orient="auto-start-reverse">'
+        f'<path d="M0,0 L10,5 L0,10 z" fill="{COLORS["length"]}"/></marker></defs>',
+    )
     out.append("</svg>")
     return "\n".join(out) + "\n"
 

@@ -30,9 +30,17 @@ __all__ = ["tex_text", "to_tikz", "write_tikz"]
 
 _WIDTH_CM = 11.0
 #: TikZ anchor of a label on the side ``(dx, dy)`` of its point (:attr:`Scene.labels`).
-ANCHORS = {(1, 1): "south west", (-1, 1): "south east", (1, -1): "north west",
-           (-1, -1): "north east", (0, 1): "south", (0, -1): "north", (1, 0): "west",
-           (-1, 0): "east", (0, 0): "center"}
+ANCHORS = {
+    (1, 1): "south west",
+    (-1, 1): "south east",
+    (1, -1): "north west",
+    (-1, -1): "north east",
+    (0, 1): "south",
+    (0, -1): "north",
+    (1, 0): "west",
+    (-1, 0): "east",
+    (0, 0): "center",
+}
 
 
 def _num(v: float) -> str:
@@ -56,12 +64,37 @@ def _comment(text: str) -> str:
 
 
 #: TeX of the non-ASCII characters of the grasps' titles; any other one prints as "?".
-_TEX_CHARS = {"φ": r"$\varphi$", "ϕ": r"$\varphi$", "ξ": r"$\xi$", "μ": r"$\mu$",
-              "π": r"$\pi$", "θ": r"$\theta$", "≈": r"$\approx$", "≤": r"$\le$",
-              "≥": r"$\ge$", "−": "-", "–": "--", "—": "---", "×": r"$\times$",
-              "°": r"$^\circ$", "·": r"$\cdot$", "₁": r"$_1$", "₂": r"$_2$"}
-_TEX_SPECIAL = {"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&",
-                "#": r"\#", "^": r"\^{}", "_": r"\_{}", "%": r"\%", "~": r"\~{}"}
+_TEX_CHARS = {
+    "φ": r"$\varphi$",
+    "ϕ": r"$\varphi$",
+    "ξ": r"$\xi$",
+    "μ": r"$\mu$",
+    "π": r"$\pi$",
+    "θ": r"$\theta$",
+    "≈": r"$\approx$",
+    "≤": r"$\le$",
+    "≥": r"$\ge$",
+    "−": "-",
+    "–": "--",
+    "—": "---",
+    "×": r"$\times$",
+    "°": r"$^\circ$",
+    "·": r"$\cdot$",
+    "₁": r"$_1$",
+    "₂": r"$_2$",
+}
+_TEX_SPECIAL = {
+    "\\": r"\textbackslash{}",
+    "{": r"\{",
+    "}": r"\}",
+    "$": r"\$",
+    "&": r"\&",
+    "#": r"\#",
+    "^": r"\^{}",
+    "_": r"\_{}",
+    "%": r"\%",
+    "~": r"\~{}",
+}
 
 
 def tex_text(text: str) -> str:
@@ -81,7 +114,7 @@ def tex_text(text: str) -> str:
             j = i + 1
             while j < len(text) and (text[j].isascii() and text[j].isalnum()):
                 j += 1
-            out.append(f"$\\sqrt{{{text[i + 1:j]}}}$" if j > i + 1 else r"$\surd$")
+            out.append(f"$\\sqrt{{{text[i + 1 : j]}}}$" if j > i + 1 else r"$\surd$")
             i = j
             continue
         if ch in _TEX_SPECIAL:
@@ -102,12 +135,16 @@ _LEGEND = (
     (r"\fill[cone] (0,-0.1) rectangle (0.6,0.1);", "friction cone"),
     (r"\draw[perp] (0,0) -- (0.6,0);", "perpendicular to a side"),
     (r"\draw[length] (0,0) -- (0.6,0);", r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$"),
-    (r"\draw[thales, draw=gccircle1] (0,0) -- (0.6,0);",
-     r"circle on $OV_n$: $k_n(\theta)$, eq. (31)"),
+    (
+        r"\draw[thales, draw=gccircle1] (0,0) -- (0.6,0);",
+        r"circle on $OV_n$: $k_n(\theta)$, eq. (31)",
+    ),
     (r"\draw[envelope, fill=none] (0,0) -- (0.6,0);", r"envelope $k_{grasp}(\theta)$, eq. (25)"),
     (r"\node[dot] at (0.3,0) {};", "point of the construction"),
-    (r"\node[dot, fill=white, draw=gcpoint, minimum size=2.5pt] at (0.3,0) {};",
-     r"break point $B_{nm}$"),
+    (
+        r"\node[dot, fill=white, draw=gcpoint, minimum size=2.5pt] at (0.3,0) {};",
+        r"break point $B_{nm}$",
+    ),
 )
 
 
@@ -118,20 +155,26 @@ def _title(scene: Scene, construction: Construction) -> str:
     grasp = construction.grasp
     if grasp is None:
         return "The internal force diagram"
-    vals = ", ".join(f"{k} = " + str(v).replace("sqrt", "√").replace("pi", "π").replace("*", "")
-                     for k, v in grasp.params.items() if not k.startswith("mu"))
+    vals = ", ".join(
+        f"{k} = " + str(v).replace("sqrt", "√").replace("pi", "π").replace("*", "")
+        for k, v in grasp.params.items()
+        if not k.startswith("mu")
+    )
     return "A two-point grasp: " + vals.replace("phi", "φ").replace("xi", "ξ")
 
 
 def _legend() -> str:
-    items = [f"\\mbox{{\\tikz[baseline=-0.6ex, x=1cm, y=1cm]{{{code}}}~{text}}}"
-             for code, text in _LEGEND]
+    items = [
+        f"\\mbox{{\\tikz[baseline=-0.6ex, x=1cm, y=1cm]{{{code}}}~{text}}}"
+        for code, text in _LEGEND
+    ]
     return "{\\small " + "\\hskip 1em plus 0.5em\n".join(items) + "\\par}"
 
 
 def _styles(scene: Scene) -> list[str]:
-    colors = [f"\\definecolor{{gc{k}}}{{HTML}}{{{v.lstrip('#').upper()}}}"
-              for k, v in COLORS.items()]
+    colors = [
+        f"\\definecolor{{gc{k}}}{{HTML}}{{{v.lstrip('#').upper()}}}" for k, v in COLORS.items()
+    ]
     unit = _WIDTH_CM / (scene.box[1] - scene.box[0])
     return [
         *colors,
@@ -156,11 +199,14 @@ def _styles(scene: Scene) -> list[str]:
 def _style_defs(scene: Scene) -> list[str]:
     """The styles as one global ``\\tikzset`` (standalone: the legend's samples use them)."""
     lines = _styles(scene)
-    opts = lines[len(COLORS):]
+    opts = lines[len(COLORS) :]
     body = "\n".join(opts).split("line cap=round,", 1)[1].rstrip("]")
     head = opts[0].split("[", 1)[1].split("line cap=round", 1)[0]
-    return [*lines[:len(COLORS)], "\\tikzset{" + body.strip() + "}",
-            f"\\begin{{tikzpicture}}[{head}line cap=round]"]
+    return [
+        *lines[: len(COLORS)],
+        "\\tikzset{" + body.strip() + "}",
+        f"\\begin{{tikzpicture}}[{head}line cap=round]",
+    ]
 
 
 def _envelope_path(scene: Scene) -> str:
@@ -169,13 +215,16 @@ def _envelope_path(scene: Scene) -> str:
         if a.n == 0:
             parts.append(f"-- {_xy(a.end)}")
         else:
-            parts.append(f"arc[start angle={_num(a.start_angle)}, delta angle={_num(a.delta)}, "
-                         f"radius={_num(a.radius)}]")
+            parts.append(
+                f"arc[start angle={_num(a.start_angle)}, delta angle={_num(a.delta)}, "
+                f"radius={_num(a.radius)}]"
+            )
     return "\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"
 
 
-def _body(scene: Scene, construction: Construction, box: tuple[float, ...],
-          pad: float) -> list[str]:
+def _body(
+    scene: Scene, construction: Construction, box: tuple[float, ...], pad: float
+) -> list[str]:
     """The drawing of every object, clipped to ``box`` (the diagram or the inset)."""
     out: list[str] = []
     corners = f"{_xy((box[0], box[2]))} rectangle {_xy((box[1], box[3]))}"
@@ -183,9 +232,12 @@ def _body(scene: Scene, construction: Construction, box: tuple[float, ...],
     if scene.outline is not None:
         kind, dims = scene.outline
         out.append(_comment("the grasped object (given)"))
-        out.append(f"\\filldraw[object] (0, 0) circle[radius={_num(dims[0])}];" if kind == "circle"
-                   else f"\\filldraw[object] {_xy((-dims[0] / 2, -dims[1] / 2))} rectangle "
-                   f"{_xy((dims[0] / 2, dims[1] / 2))};")
+        out.append(
+            f"\\filldraw[object] (0, 0) circle[radius={_num(dims[0])}];"
+            if kind == "circle"
+            else f"\\filldraw[object] {_xy((-dims[0] / 2, -dims[1] / 2))} rectangle "
+            f"{_xy((dims[0] / 2, dims[1] / 2))};"
+        )
     for i, cone in enumerate(scene.cones, start=1):
         out.append(_comment(f"friction cone at P{i} (given, Fig. 2)"))
         out.append("\\fill[cone] " + " -- ".join(_xy(p) for p in cone) + " -- cycle;")
@@ -196,11 +248,16 @@ def _body(scene: Scene, construction: Construction, box: tuple[float, ...],
     points = {n: xy for names, xy in scene.points for n in names}
     tools: dict[str, list[str]] = {}  # the compass arcs, right angles, guides of each step
     for ins in scene.instruments:
-        dash = {"bisector": ", dotted", "coordinate": f", dotted, draw=gccircle{ins.n}",
-                "drop": ", dashed"}.get(ins.role, "")
+        dash = {
+            "bisector": ", dotted",
+            "coordinate": f", dotted, draw=gccircle{ins.n}",
+            "drop": ", dashed",
+        }.get(ins.role, "")
         tools.setdefault(ins.step, []).append(
-            f"\\draw[instrument{dash}] " + " -- ".join(_xy(p) for p in ins.points)
-            + f"; % {ins.role}")
+            f"\\draw[instrument{dash}] "
+            + " -- ".join(_xy(p) for p in ins.points)
+            + f"; % {ins.role}"
+        )
     for s in construction.steps:
         out.append(_comment(f"[{s.index}] {s.name} ({s.op}, {s.instrument}; {s.ref}): {s.caption}"))
         if s.kind != "envelope":
@@ -217,8 +274,12 @@ def _body(scene: Scene, construction: Construction, box: tuple[float, ...],
         elif s.name in points:
             out.append(f"\\coordinate ({_cname(s.name)}) at {_xy(points[s.name])};")
         elif s.kind == "point":
-            out.append(_comment(f"outside the picture (view box {box[0] - pad:.3g} .. "
-                                f"{box[1] + pad:.3g}): not drawn"))
+            out.append(
+                _comment(
+                    f"outside the picture (view box {box[0] - pad:.3g} .. "
+                    f"{box[1] + pad:.3g}): not drawn"
+                )
+            )
         elif s.kind == "envelope" and scene.envelope:
             out.append(_comment("exact arcs: " + exact_text(s.obj)))
             out.append(_envelope_path(scene))
@@ -238,8 +299,10 @@ def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> 
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         lab = by_name.get(names[0])
         if not small and lab is not None:
-            out.append(f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
-                       f"{{${lab.tex()}$}};")
+            out.append(
+                f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
+                f"{{${lab.tex()}$}};"
+            )
     return out
 
 
@@ -266,9 +329,13 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     scene = scene_of(construction, title)
     box = scene.box
     pad = 0.1 * (box[1] - box[0])
-    out = [_comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
-           _comment("Ito, Tanaka, Sasaki, Robotica 30(5) 2012: internal force diagram, "
-                    "ruler-and-compass construction (sec. 3.3)")]
+    out = [
+        _comment(f"graspcompass: {scene.title or 'internal force diagram'}"),
+        _comment(
+            "Ito, Tanaka, Sasaki, Robotica 30(5) 2012: internal force diagram, "
+            "ruler-and-compass construction (sec. 3.3)"
+        ),
+    ]
     grasp = construction.grasp
     if grasp is not None:
         out.append(_comment("grasp: " + ", ".join(f"{k} = {v}" for k, v in grasp.params.items())))
@@ -276,19 +343,27 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     if scene.inset is not None:  # the inset beside the diagram
         width += 0.5 + _WIDTH_CM * INSET_PT / FRAME_PT
     if standalone:
-        out += ["\\documentclass{article}", "\\usepackage{tikz}",
-                _comment("a standalone page: title, picture and legend in one box, shipped out "
-                         "on a page of its size with a 4 pt border (as the standalone class)"),
-                "\\newsavebox{\\gcpage}", "\\begin{document}"]
+        out += [
+            "\\documentclass{article}",
+            "\\usepackage{tikz}",
+            _comment(
+                "a standalone page: title, picture and legend in one box, shipped out "
+                "on a page of its size with a 4 pt border (as the standalone class)"
+            ),
+            "\\newsavebox{\\gcpage}",
+            "\\begin{document}",
+        ]
         styles = _style_defs(scene)
         out += styles[:-1]  # the colours and styles before the box: the legend uses them
-        out += [f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
-                "\\parskip=0pt \\raggedright",
-                f"{{\\large\\bfseries {tex_text(_title(scene, construction))}"
-                "\\par}",
-                "\\smallskip{\\small Internal force diagram (Ito, Tanaka, Sasaki, Robotica 30(5), "
-                "2012), ruler-and-compass construction of Sec.~3.3\\par}\\medskip",
-                "\\hbox to \\hsize{\\hss", styles[-1]]
+        out += [
+            f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
+            "\\parskip=0pt \\raggedright",
+            f"{{\\large\\bfseries {tex_text(_title(scene, construction))}\\par}}",
+            "\\smallskip{\\small Internal force diagram (Ito, Tanaka, Sasaki, Robotica 30(5), "
+            "2012), ruler-and-compass construction of Sec.~3.3\\par}\\medskip",
+            "\\hbox to \\hsize{\\hss",
+            styles[-1],
+        ]
     else:
         out += _styles(scene)
     out += _body(scene, construction, box, pad)
@@ -296,40 +371,59 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     out += _points(scene, scene.labels if inset is None else inset.main, box)
     if inset is not None:
         z = inset.box
-        out.append(f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
-                   f"{_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};")
+        out.append(
+            f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
+            f"{_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
+        )
         out.append("\\end{tikzpicture}\\hskip 0.5cm")
         # the zoomed inset of the crowded region (Scene.inset): its labels were placed in
         # a frame INSET_PT / FRAME_PT times the diagram's width, at the same font size
         unit = _WIDTH_CM * INSET_PT / FRAME_PT / (z[1] - z[0])
-        out.append(_comment(f"zoomed inset of the crowded region, "
-                            f"{unit / (_WIDTH_CM / (box[1] - box[0])):.1f} times larger"))
+        out.append(
+            _comment(
+                f"zoomed inset of the crowded region, "
+                f"{unit / (_WIDTH_CM / (box[1] - box[0])):.1f} times larger"
+            )
+        )
         main_unit = _WIDTH_CM / (box[1] - box[0])
         if standalone:  # the styles are global (\tikzset)
-            out.append(f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, "
-                       "line cap=round]")
+            out.append(
+                f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, line cap=round]"
+            )
         else:  # the styles of the diagram's picture, in the inset's unit
-            out += "\n".join(_styles(scene)[len(COLORS):]).replace(
-                f"x={_num(main_unit)}cm, y={_num(main_unit)}cm",
-                f"x={_num(unit)}cm, y={_num(unit)}cm", 1).split("\n")
+            out += (
+                "\n".join(_styles(scene)[len(COLORS) :])
+                .replace(
+                    f"x={_num(main_unit)}cm, y={_num(main_unit)}cm",
+                    f"x={_num(unit)}cm, y={_num(unit)}cm",
+                    1,
+                )
+                .split("\n")
+            )
         out += _body(scene, construction, z, pad)
         out += _points(scene, inset.labels, z)
-        out.append(f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle "
-                   f"{_xy((z[1], z[3]))};")
+        out.append(
+            f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
+        )
     out.append("\\end{tikzpicture}")
     if standalone:
-        out += ["\\hss}\\medskip", _legend(), "}}",
-                "\\pdfpagewidth=\\wd\\gcpage \\advance\\pdfpagewidth by 8pt",
-                "\\pdfpageheight=\\ht\\gcpage \\advance\\pdfpageheight by \\dp\\gcpage",
-                "\\advance\\pdfpageheight by 8pt",
-                "\\hoffset=-1in \\voffset=-1in",
-                "\\shipout\\vbox{\\vskip 4pt\\moveright 4pt\\box\\gcpage\\vskip 4pt}",
-                "\\end{document}"]
+        out += [
+            "\\hss}\\medskip",
+            _legend(),
+            "}}",
+            "\\pdfpagewidth=\\wd\\gcpage \\advance\\pdfpagewidth by 8pt",
+            "\\pdfpageheight=\\ht\\gcpage \\advance\\pdfpageheight by \\dp\\gcpage",
+            "\\advance\\pdfpageheight by 8pt",
+            "\\hoffset=-1in \\voffset=-1in",
+            "\\shipout\\vbox{\\vskip 4pt\\moveright 4pt\\box\\gcpage\\vskip 4pt}",
+            "\\end{document}",
+        ]
     return "\n".join(out) + "\n"
 
 
-def write_tikz(construction: Construction, path: Any, standalone: bool = True,
-               title: str | None = None) -> Path:
+def write_tikz(
+    construction: Construction, path: Any, standalone: bool = True, title: str | None = None
+) -> Path:
     """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path.
 
     Raises

@@ -35,7 +35,7 @@ def _small_primes() -> tuple[int, ...]:
     sieve[:2] = b"\x00\x00"
     for i in range(2, math.isqrt(_TRIAL - 1) + 1):
         if sieve[i]:
-            sieve[i * i::i] = bytes(len(range(i * i, _TRIAL, i)))
+            sieve[i * i :: i] = bytes(len(range(i * i, _TRIAL, i)))
     return tuple(itertools.compress(range(_TRIAL), sieve))
 
 
@@ -52,8 +52,11 @@ def _square_free(r: sp.Rational) -> tuple[sp.Rational, tuple[int, ...]]:
     k, factors = 1, []
     # a small radicand by 2 and the odd numbers (a composite divides no more: its primes
     # are divided out first), without the table of primes
-    candidates = (_small_primes() if n >= _ODD_TRIAL
-                  else itertools.chain((2,), range(3, math.isqrt(n) + 1, 2)))
+    candidates = (
+        _small_primes()
+        if n >= _ODD_TRIAL
+        else itertools.chain((2,), range(3, math.isqrt(n) + 1, 2))
+    )
     for p in candidates:
         if p * p > n:
             break

@@ -61,7 +61,7 @@ def _nonzero_by_terms(R: Ring, n: flint.fmpq_mpoly) -> bool:
     total, strict_any = 0, False
     for m, c in n.to_dict().items():
         s, strict = (1 if c > 0 else -1), True
-        for i, e in enumerate(m[:R.ngens]):
+        for i, e in enumerate(m[: R.ngens]):
             if not e:
                 continue
             g = signs[i]

@@ -105,8 +105,13 @@ class Frac:
             return R, self.n, self.d, _ground(R, other.n), R.one
         gens = set(self.R.symbols) | set(other.R.symbols)
         R = _ring(tuple(sorted(gens, key=_gen_key)))
-        return (R, _lift(self.n, self.R, R), _lift(self.d, self.R, R),
-                _lift(other.n, other.R, R), _lift(other.d, other.R, R))
+        return (
+            R,
+            _lift(self.n, self.R, R),
+            _lift(self.d, self.R, R),
+            _lift(other.n, other.R, R),
+            _lift(other.d, other.R, R),
+        )
 
     def __add__(self, other: Frac) -> Frac:
         if self.R is None and other.R is None:

@@ -57,8 +57,21 @@ class Ring:
     True
     """
 
-    __slots__ = ("__weakref__", "ctx", "free", "gens", "index", "ngens", "one", "opaque",
-                 "quad", "root_primes", "roots", "symbols", "zero")
+    __slots__ = (
+        "__weakref__",
+        "ctx",
+        "free",
+        "gens",
+        "index",
+        "ngens",
+        "one",
+        "opaque",
+        "quad",
+        "root_primes",
+        "roots",
+        "symbols",
+        "zero",
+    )
 
     def __init__(self, symbols: tuple[sp.Expr, ...]) -> None:
         self.symbols = symbols
@@ -71,11 +84,13 @@ class Ring:
         self.index = {g: i for i, g in enumerate(symbols)}
         self.quad, self.roots = _quadratic(self)
         #: the numeric generators that are no prime square roots (sin, cos, other atoms)
-        self.opaque = tuple(i for i, g in enumerate(symbols)
-                            if g.is_number and _gen_key(g)[0] != 0)
+        self.opaque = tuple(i for i, g in enumerate(symbols) if g.is_number and _gen_key(g)[0] != 0)
         self.free = any(g.free_symbols for g in symbols)  # symbols: not a number
-        self.root_primes = (tuple(int(g.base) for g in symbols)
-                            if all(_gen_key(g)[0] == 0 for g in symbols) else None)
+        self.root_primes = (
+            tuple(int(g.base) for g in symbols)
+            if all(_gen_key(g)[0] == 0 for g in symbols)
+            else None
+        )
 
     def __call__(self, value: int | sp.Expr) -> flint.fmpq_mpoly:
         """The constant ``value`` (an int or a sympy Rational), or a generator, of this ring."""

@@ -59,8 +59,13 @@ def _size(*vectors: Point) -> float:
     return out
 
 
-def _nonzero(value: sp.Expr, error: type[GeometryError], message: Callable[[], str],
-             *objs: object, scale: float = 0.0) -> frozenset:
+def _nonzero(
+    value: sp.Expr,
+    error: type[GeometryError],
+    message: Callable[[], str],
+    *objs: object,
+    scale: float = 0.0,
+) -> frozenset:
     """Raise ``error`` if ``value`` is zero; return ``{value}`` if undecidable.
 
     ``message`` makes the text only when it is raised (printing exact objects is slow).
@@ -71,8 +76,9 @@ def _nonzero(value: sp.Expr, error: type[GeometryError], message: Callable[[], s
     return frozenset({canon(value)}) if z is None else frozenset()
 
 
-def _nonzero_frac(value: Frac, error: type[GeometryError], message: Callable[[], str],
-                  *objs: object) -> frozenset:
+def _nonzero_frac(
+    value: Frac, error: type[GeometryError], message: Callable[[], str], *objs: object
+) -> frozenset:
     """:func:`_nonzero` for an exact fraction, deciding without a sympy expression."""
     z = value.is_zero()
     if z:
@@ -146,7 +152,8 @@ def meet(a: Line, b: Line) -> Point:
     """
     try:  # fast path: fractions of polynomials, no sympy expression trees
         (ax, ay), (adx, ady), (bx, by), (bdx, bdy) = _fracs(
-            a.point, a.direction, b.point, b.direction)
+            a.point, a.direction, b.point, b.direction
+        )
         den_f = adx * bdy - ady * bdx
     except NotAFraction:
         den_f = None
@@ -159,8 +166,7 @@ def meet(a: Line, b: Line) -> Point:
         t = ((bx - ax) * bdy - (by - ay) * bdx) / den_f
         return Point((ax + t * adx).expr(), (ay + t * ady).expr(), _merge(a, b) | conds)
     den = a.direction.cross(b.direction)
-    conds = _nonzero(den, ParallelLinesError, parallel, a, b,
-                     scale=_size(a.direction, b.direction))
+    conds = _nonzero(den, ParallelLinesError, parallel, a, b, scale=_size(a.direction, b.direction))
     t = (b.point - a.point).cross(b.direction) / den
     p = a.point
     d = a.direction
@@ -219,9 +225,11 @@ def circle_on_diameter(a: Point, b: Point) -> Circle:
     >>> circle_on_diameter(Point(0, 0), Point(2, 0))
     Circle(Point(1, 0), radius2=1)
     """
+
     def same() -> DegenerateCircleError:
         return DegenerateCircleError(
-            f"a circle on a diameter needs two distinct end points, got {a} twice", a, b)
+            f"a circle on a diameter needs two distinct end points, got {a} twice", a, b
+        )
 
     try:
         (ax, ay), (bx, by) = _fracs(a, b)
@@ -314,9 +322,11 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     >>> second_intersection(Circle(Point(1, 0), 1), Circle(Point(0, 1), 1), Point(0, 0))
     Point(1, 1)
     """
+
     def concentric() -> DegenerateCircleError:
         return DegenerateCircleError(
-            f"concentric circles through one point coincide: {c1} and {c2}", c1, c2)
+            f"concentric circles through one point coincide: {c1} and {c2}", c1, c2
+        )
 
     def tangent() -> str:
         return f"circles {c1} and {c2} are tangent at {known}: there is no second common point"
@@ -337,9 +347,13 @@ def second_intersection(c1: Circle, c2: Circle, known: Point) -> Point:
     return Point((kx0 + tf * wy).expr(), (ky0 - tf * wx).expr(), _merge(c1, c2, known) | conds)
 
 
-def _second_intersection_sympy(c1: Circle, c2: Circle, known: Point,
-                               concentric: Callable[[], GeometryError],
-                               tangent: Callable[[], str]) -> Point:
+def _second_intersection_sympy(
+    c1: Circle,
+    c2: Circle,
+    known: Point,
+    concentric: Callable[[], GeometryError],
+    tangent: Callable[[], str],
+) -> Point:
     """:func:`second_intersection` with sympy arithmetic (floats)."""
     c, w = c1.center, c2.center - c1.center
     if decide_zero(w.x) and decide_zero(w.y):

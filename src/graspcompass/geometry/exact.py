@@ -76,8 +76,19 @@ from ._exact_ring import (
     reduce_poly,  # noqa: F401
 )
 
-__all__ = ["Expr", "approx", "canon", "clear_caches", "decide_sign", "decide_zero",
-           "fold_fractions", "free", "has_float", "sym", "text"]
+__all__ = [
+    "Expr",
+    "approx",
+    "canon",
+    "clear_caches",
+    "decide_sign",
+    "decide_zero",
+    "fold_fractions",
+    "free",
+    "has_float",
+    "sym",
+    "text",
+]
 
 Expr = sp.Expr
 
@@ -97,4 +108,3 @@ def clear_caches() -> None:
     _SQRT.clear()
     trig.sincos.cache_clear()
     trig._reference.cache_clear()
-

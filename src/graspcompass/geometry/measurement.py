@@ -64,8 +64,15 @@ def _atan_values() -> dict[sp.Expr, sp.Expr]:
 def _atan_multiples() -> dict[sp.Expr, sp.Rational]:
     """:func:`_atan_values` divided by π (the multiples of π are made only when met)."""
     r2, r3, q = sp.sqrt(2), sp.sqrt(3), sp.Rational
-    return {sp.Integer(1): q(1, 4), r3 / 3: q(1, 6), r3: q(1, 3), r2 - 1: q(1, 8),
-            r2 + 1: q(3, 8), 2 - r3: q(1, 12), r3 + 2: q(5, 12)}
+    return {
+        sp.Integer(1): q(1, 4),
+        r3 / 3: q(1, 6),
+        r3: q(1, 3),
+        r2 - 1: q(1, 8),
+        r2 + 1: q(3, 8),
+        2 - r3: q(1, 12),
+        r3 + 2: q(5, 12),
+    }
 
 
 def _atan_positive(ratio: sp.Expr) -> sp.Expr:

@@ -73,8 +73,9 @@ def _f(expr: sp.Expr, subs: Mapping | None) -> float:
         free = ", ".join(sorted(map(str, e.free_symbols)))
         raise InputError(f"cannot evaluate {expr} numerically: free symbols {free}") from exc
     if not math.isfinite(out):
-        raise NonFiniteValueError(f"cannot evaluate {expr} numerically: it is beyond double "
-                                  "precision (about 1.8e308)")
+        raise NonFiniteValueError(
+            f"cannot evaluate {expr} numerically: it is beyond double precision (about 1.8e308)"
+        )
     return out
 
 

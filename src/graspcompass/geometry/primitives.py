@@ -34,8 +34,12 @@ def _outside(value: object, name: str) -> object:
     pass as they are: the kernel makes millions of points.
     """
     if isinstance(value, sp.Basic):
-        if value.is_Atom and not value.is_Symbol and not value.is_Rational and (
-                value.is_extended_real is not True or value.is_finite is not True):
+        if (
+            value.is_Atom
+            and not value.is_Symbol
+            and not value.is_Rational
+            and (value.is_extended_real is not True or value.is_finite is not True)
+        ):
             return real_value(value, name)
         return value
     return real_value(value, name)
@@ -210,7 +214,9 @@ class Circle:
         if decide_sign(self.radius2) in (-1, 0):
             raise DegenerateCircleError(
                 f"a circle needs a positive squared radius, got {self.radius2} "
-                f"at centre {self.center}", self.center)
+                f"at centre {self.center}",
+                self.center,
+            )
         object.__setattr__(self, "conditions", _merge(self.center) | self.conditions)
 
     def __repr__(self) -> str:

@@ -65,8 +65,11 @@ def _gram_psd(f: sp.Expr) -> bool:
     size = n + 1
     if size > 9:
         return False
-    return all(m.extract(list(s), list(s)).det() >= 0
-               for k in range(1, size + 1) for s in combinations(range(size), k))
+    return all(
+        m.extract(list(s), list(s)).det() >= 0
+        for k in range(1, size + 1)
+        for s in combinations(range(size), k)
+    )
 
 
 def nonnegative(f: sp.Expr) -> bool:
@@ -84,8 +87,7 @@ def _quadratic_in_one(f: sp.Expr, depth: int) -> bool:
     4AC − B² ≥ 0, each shown by :func:`nonnegative` (to ``depth`` levels).  Then f ≥ 0
     for every v: f = A(v + B/2A)² + (4AC − B²)/4A where A > 0, and B = 0, f = C where
     A = 0."""
-    if depth <= 0 or not f.is_Add or len(f.args) > 40 or not all(
-            s.is_real for s in f.free_symbols):
+    if depth <= 0 or not f.is_Add or len(f.args) > 40 or not all(s.is_real for s in f.free_symbols):
         return False
     for v in sorted(f.free_symbols, key=str):
         if not v.is_real:
@@ -97,7 +99,7 @@ def _quadratic_in_one(f: sp.Expr, depth: int) -> bool:
         if p.degree() != 2 or any(c.has(v) for c in p.all_coeffs()):
             continue
         a, b, c = (sp.expand(x) for x in p.all_coeffs())
-        d = sp.expand(4 * a * c - b ** 2)
+        d = sp.expand(4 * a * c - b**2)
         if all(_nonneg_at(x, depth - 1) for x in (a, c, d)):
             return True
     return False
@@ -132,7 +134,7 @@ def _square_over_root(g: sp.Expr) -> sp.Expr | None:
     g0, g1 = sp.expand(c[0] + c[2] * r), sp.expand(c[1])
     if g1 == 0:
         return None
-    w = _poly_sqrt(sp.expand(g0 ** 2 - g1 ** 2 * r))
+    w = _poly_sqrt(sp.expand(g0**2 - g1**2 * r))
     if w is None:
         return None
     for a2 in ((g0 + w) / 2, (g0 - w) / 2):
@@ -142,8 +144,10 @@ def _square_over_root(g: sp.Expr) -> sp.Expr | None:
         for alpha in (root, -root):
             beta = sp.cancel(g1 / (2 * alpha))
             h = alpha + beta * s
-            if sp.expand(h ** 2 - g).xreplace({s: t}).subs(t ** 2, r) == 0 or sp.expand(
-                    (sp.expand(h ** 2) - g).subs(s ** 2, r)) == 0:
+            if (
+                sp.expand(h**2 - g).xreplace({s: t}).subs(t**2, r) == 0
+                or sp.expand((sp.expand(h**2) - g).subs(s**2, r)) == 0
+            ):
                 if nonnegative(h):
                     return h
                 if nonnegative(-h):
@@ -179,7 +183,7 @@ def _split(d: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
     for f, m in factors:
         half = m // 2
         if half and nonnegative(f):
-            out *= f ** half
+            out *= f**half
         elif half and nonnegative(-f):
             out *= (-f) ** half
         else:
@@ -201,9 +205,16 @@ def constructed_sqrt(d: sp.Expr) -> sp.Expr:
         return sp.sqrt(d)
     if d.is_Add and len(d.args) > MAX_TERMS:
         return sp.sqrt(d)
-    n, den = sp.fraction(sp.together(d)) if not d.is_Add or any(
-        (a.is_Pow and a.exp.is_negative) or (a.is_Mul and any(
-            x.is_Pow and x.exp.is_negative for x in a.args)) for a in d.args) else (d, 1)
+    n, den = (
+        sp.fraction(sp.together(d))
+        if not d.is_Add
+        or any(
+            (a.is_Pow and a.exp.is_negative)
+            or (a.is_Mul and any(x.is_Pow and x.exp.is_negative for x in a.args))
+            for a in d.args
+        )
+        else (d, 1)
+    )
     top = _split(n) if n.free_symbols else None
     bottom = _split(den) if sp.sympify(den).free_symbols else None
     if top is None and bottom is None:

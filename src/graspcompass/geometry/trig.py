@@ -155,9 +155,11 @@ def sincos(angle: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     except sp.SympifyError:
         from ..boundary.errors import WrongTypeError
 
-        raise WrongTypeError(f"an angle must be a number or a sympy expression, got "
-                             f"{type(angle).__name__} {str(angle)[:60]!r} (read text with "
-                             "graspcompass.expr.parse_exact)") from None
+        raise WrongTypeError(
+            f"an angle must be a number or a sympy expression, got "
+            f"{type(angle).__name__} {str(angle)[:60]!r} (read text with "
+            "graspcompass.expr.parse_exact)"
+        ) from None
     if angle.free_symbols or not angle.is_number:
         return sp.sin(angle), sp.cos(angle)
     q = _pi_multiple(angle)

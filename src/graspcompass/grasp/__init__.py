@@ -68,9 +68,16 @@ if TYPE_CHECKING:
 else:
     from ..boundary._numpy import np
 
-__all__ = ["PRESETS", "ComplexParameterError", "FrozenGraspError", "Grasp",
-           "InvalidGraspError", "NonFiniteParameterError", "ParameterTypeError",
-           "UnsupportedParameterError"]
+__all__ = [
+    "PRESETS",
+    "ComplexParameterError",
+    "FrozenGraspError",
+    "Grasp",
+    "InvalidGraspError",
+    "NonFiniteParameterError",
+    "ParameterTypeError",
+    "UnsupportedParameterError",
+]
 
 
 class Grasp:
@@ -191,7 +198,8 @@ class Grasp:
     def __setattr__(self, name: str, value: Any) -> None:
         raise FrozenGraspError(
             f"cannot assign to field {name!r}: a Grasp is an immutable value (its derived "
-            f"values are computed once); use g.replace({name}=...) for a modified grasp")
+            f"values are computed once); use g.replace({name}=...) for a modified grasp"
+        )
 
     def __delattr__(self, name: str) -> None:
         raise FrozenGraspError(f"cannot delete field {name!r}: a Grasp is an immutable value")
@@ -213,10 +221,19 @@ class Grasp:
         """
         unknown = set(changes) - set(_REPLACEABLE)
         if unknown:
-            raise TypeError(f"Grasp.replace() got unexpected field(s) {sorted(unknown)}; "
-                            f"the fields are {', '.join(_REPLACEABLE)}")
-        kw: dict[str, Any] = dict(x1=self.x1, x2=self.x2, y=self.y, phi1=self.phi1,
-                                  phi2=self.phi2, shape=self.shape, title=self.title)
+            raise TypeError(
+                f"Grasp.replace() got unexpected field(s) {sorted(unknown)}; "
+                f"the fields are {', '.join(_REPLACEABLE)}"
+            )
+        kw: dict[str, Any] = dict(
+            x1=self.x1,
+            x2=self.x2,
+            y=self.y,
+            phi1=self.phi1,
+            phi2=self.phi2,
+            shape=self.shape,
+            title=self.title,
+        )
         for i in (1, 2):
             mu, xi = f"mu{i}", f"xi{i}"
             if mu in changes or xi in changes:
@@ -256,8 +273,17 @@ class Grasp:
     @property
     def params(self) -> dict[str, sp.Expr]:
         """The seven parameters ``x1, x2, y, phi1, phi2, mu1, mu2`` (plus ``xi1, xi2``)."""
-        return dict(x1=self.x1, x2=self.x2, y=self.y, phi1=self.phi1, phi2=self.phi2,
-                    mu1=self.mu1, mu2=self.mu2, xi1=self.xi1, xi2=self.xi2)
+        return dict(
+            x1=self.x1,
+            x2=self.x2,
+            y=self.y,
+            phi1=self.phi1,
+            phi2=self.phi2,
+            mu1=self.mu1,
+            mu2=self.mu2,
+            xi1=self.xi1,
+            xi2=self.xi2,
+        )
 
     def _key(self) -> tuple:
         return tuple(self.params.values())
@@ -270,8 +296,11 @@ class Grasp:
 
     def __repr__(self) -> str:
         p = self.params
-        return ("Grasp(" + ", ".join(f"{k}={p[k]}" for k in
-                ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")) + ")")
+        return (
+            "Grasp("
+            + ", ".join(f"{k}={p[k]}" for k in ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2"))
+            + ")"
+        )
 
     @property
     def P1(self) -> Point:
@@ -296,7 +325,8 @@ class Grasp:
             if not all(math.isfinite(v) for v in sides):
                 raise NonFiniteValueError(
                     f"the friction cone side {n} is beyond double precision (tan(φ ± ξ) "
-                    "overflows); give the parameters exactly (text such as 'pi/3')")
+                    "overflows); give the parameters exactly (text such as 'pi/3')"
+                )
             return tuple(sp.Float(v) for v in sides)  # type: ignore
         s, c, mu = (self.s1, self.c1, self.mu1) if n in (1, 3) else (self.s2, self.c2, self.mu2)
         sg = 1 if n in (1, 2) else -1
@@ -326,7 +356,8 @@ class Grasp:
         """``(S1, S2, S3, S4)``, eqs. (28), (34), (36), (38)."""
         h = self.D / 2
         return tuple(
-            canon(-h + self.y * self.tan_side(n)) if n in (1, 3)
+            canon(-h + self.y * self.tan_side(n))
+            if n in (1, 3)
             else canon(h - self.y * self.tan_side(n))
             for n in (1, 2, 3, 4)
         )
@@ -387,8 +418,9 @@ class Grasp:
     @overload
     def k_grasp(self, theta: float) -> float: ...
     @overload
-    def k_grasp(self, theta: np.ndarray | list[float] | tuple[float, ...]
-                ) -> np.ndarray | float: ...
+    def k_grasp(
+        self, theta: np.ndarray | list[float] | tuple[float, ...]
+    ) -> np.ndarray | float: ...
     @overload
     def k_grasp(self, theta: sp.Expr) -> sp.Expr: ...
     def k_grasp(self, theta: Any) -> Any:
@@ -418,8 +450,9 @@ class Grasp:
     @overload
     def internal_force(self, theta: float, external_force: Any = 1) -> float: ...
     @overload
-    def internal_force(self, theta: np.ndarray | list[float] | tuple[float, ...],
-                       external_force: Any = 1) -> np.ndarray | float: ...
+    def internal_force(
+        self, theta: np.ndarray | list[float] | tuple[float, ...], external_force: Any = 1
+    ) -> np.ndarray | float: ...
     @overload
     def internal_force(self, theta: sp.Expr, external_force: Any = 1) -> sp.Expr: ...
     def internal_force(self, theta: Any, external_force: Any = 1) -> Any:
@@ -434,11 +467,13 @@ class Grasp:
     def grasp_matrix(self) -> sp.Matrix:
         """The grasp matrix L of eq. (5) (3 × 4)."""
         s1, c1, s2, c2, x1, x2, y = self.s1, self.c1, self.s2, self.c2, self.x1, self.x2, self.y
-        return sp.Matrix([
-            [-s1, -c1, s2, c2],
-            [-c1, s1, -c2, s2],
-            [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
-        ])
+        return sp.Matrix(
+            [
+                [-s1, -c1, s2, c2],
+                [-c1, s1, -c2, s2],
+                [-c1 * x1 + s1 * y, s1 * x1 + c1 * y, c2 * x2 - s2 * y, -s2 * x2 - c2 * y],
+            ]
+        )
 
     def external_wrench(self, theta: Any, external_force: Any = 1) -> sp.Matrix:
         """``M = [-F_e sin θ, F_e cos θ, 0]^T`` of eq. (4), for one angle."""
@@ -497,10 +532,10 @@ class Grasp:
         given = substitutions(values, free, "values")
         p = {k: v.xreplace(given) for k, v in self.params.items()}
         fr = dict(mu1=p["mu1"], mu2=p["mu2"])
-        return Grasp(p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], **fr,
-                     shape=self.shape, title=self.title)
+        return Grasp(
+            p["x1"], p["x2"], p["y"], p["phi1"], p["phi2"], **fr, shape=self.shape, title=self.title
+        )
 
 
 #: The fields :meth:`Grasp.replace` takes (the constructor's arguments).
 _REPLACEABLE = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2", "shape", "title")
-

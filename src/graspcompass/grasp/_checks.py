@@ -36,9 +36,9 @@ if TYPE_CHECKING:
 def _degrees_hint(angle: Any, most: int) -> str:
     """The hint for an angle typed in degrees without its unit (``90`` for ``90deg``)."""
     if angle.is_Rational and 3 < angle <= most:
-        return (f"; a number without a unit is in radians: for {angle} degrees write "
-                f"{angle}deg")
+        return f"; a number without a unit is in radians: for {angle} degrees write {angle}deg"
     return ""
+
 
 def _length_checks(g: Grasp) -> list[tuple[Any, ...]]:
     """The domain of x1, x2: ``x1 + x2 > 0`` for a grasp of numbers (issue 13 §1).
@@ -49,18 +49,32 @@ def _length_checks(g: Grasp) -> list[tuple[Any, ...]]:
     symbolic verdicts state those domains as hypotheses.
     """
     if any(v.free_symbols for v in g.params.values()):
-        beyond = (" for a grasp with symbols (the symbolic proofs assume the paper's domain "
-                  "x1, x2 > 0 of §2.2.1; give every parameter a value to place the centre "
-                  "of mass beyond a contact)")
+        beyond = (
+            " for a grasp with symbols (the symbolic proofs assume the paper's domain "
+            "x1, x2 > 0 of §2.2.1; give every parameter a value to place the centre "
+            "of mass beyond a contact)"
+        )
         return [
-            (g.x1, True, "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis"
-             + beyond),
-            (g.x2, True, "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis"
-             + beyond),
+            (
+                g.x1,
+                True,
+                "x1 = {v} must be positive: P1 = (x1, y) lies right of the y-axis" + beyond,
+            ),
+            (
+                g.x2,
+                True,
+                "x2 = {v} must be positive: P2 = (-x2, y) lies left of the y-axis" + beyond,
+            ),
         ]
-    return [(g.x1 + g.x2, True, "x1 + x2 = {v} must be positive: P1 = (x1, y) lies right of "
-             "P2 = (-x2, y) (x1 <= 0 or x2 <= 0 alone is allowed: the centre of mass then "
-             "projects onto the line through the contacts beyond a contact)")]
+    return [
+        (
+            g.x1 + g.x2,
+            True,
+            "x1 + x2 = {v} must be positive: P1 = (x1, y) lies right of "
+            "P2 = (-x2, y) (x1 <= 0 or x2 <= 0 alone is allowed: the centre of mass then "
+            "projects onto the line through the contacts beyond a contact)",
+        )
+    ]
 
 
 def _friction(i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
@@ -78,8 +92,11 @@ def _friction(i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
         return m, sp.atan(m)
     x = _value(xi, f"xi{i}")
     q = _pi_multiple(x)
-    bounds = () if q is not None and 0 < q < sp.Rational(1, 2) else (
-        (x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2"))
+    bounds = (
+        ()
+        if q is not None and 0 < q < sp.Rational(1, 2)
+        else ((x, (-1, 0), "positive"), (sp.pi / 2 - x, (-1, 0), "< π/2"))
+    )
     for bound, sign, words in bounds:
         if decide_sign(bound) in sign:
             raise InvalidGraspError(
@@ -96,8 +113,7 @@ def _friction(i: int, mu: Any, xi: Any) -> tuple[sp.Expr, sp.Expr]:
 def _validate(g: Grasp) -> None:
     pi = sp.pi
     checks: list[tuple[Any, ...]] = _length_checks(g)
-    checks.append(
-        (g.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"))
+    checks.append((g.y, False, "y = {v} must be non-negative (the frame of §2.2.1 puts y >= 0)"))
     for i, phi in ((1, g.phi1), (2, g.phi2)):
         q = _pi_multiple(phi)
         if q is not None and 0 < q <= 1:
@@ -105,8 +121,12 @@ def _validate(g: Grasp) -> None:
         hint = _degrees_hint(phi, 180)
         checks += [
             (phi, True, f"contact {i}: φ{i} = {{a}} must be positive (0 < φ ≤ π){hint}"),
-            (pi - phi, False, f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π){hint}",
-             phi),
+            (
+                pi - phi,
+                False,
+                f"contact {i}: φ{i} = {{a}} must not exceed π (0 < φ ≤ π){hint}",
+                phi,
+            ),
         ]
     assumed: list[sp.Basic] = []
     for expr, strict, msg, *shown in checks:
@@ -121,14 +141,30 @@ def _validate(g: Grasp) -> None:
         who = f"the friction cone at P{i}"
         other = f"P{3 - i}"
         cond = [
-            (lo + pi / 2, f"φ{i} − ξ{i} = {{a}} must exceed −π/2 — {who} turns past the "
-             "contact's tangent line (condition (1))", lo),
-            (pi / 2 - lo, f"φ{i} − ξ{i} = {{a}} must be below π/2 — {who} does not "
-             f"contain {other} (its lower side passes above {other}; condition (1))", lo),
-            (up - pi / 2, f"φ{i} + ξ{i} = {{a}} must exceed π/2 — {who} does not contain "
-             f"{other} (its upper side passes below {other}; condition (1))", up),
-            (3 * pi / 2 - up, f"φ{i} + ξ{i} = {{a}} must be below 3π/2 — {who} turns past "
-             "the contact's tangent line (condition (1))", up),
+            (
+                lo + pi / 2,
+                f"φ{i} − ξ{i} = {{a}} must exceed −π/2 — {who} turns past the "
+                "contact's tangent line (condition (1))",
+                lo,
+            ),
+            (
+                pi / 2 - lo,
+                f"φ{i} − ξ{i} = {{a}} must be below π/2 — {who} does not "
+                f"contain {other} (its lower side passes above {other}; condition (1))",
+                lo,
+            ),
+            (
+                up - pi / 2,
+                f"φ{i} + ξ{i} = {{a}} must exceed π/2 — {who} does not contain "
+                f"{other} (its upper side passes below {other}; condition (1))",
+                up,
+            ),
+            (
+                3 * pi / 2 - up,
+                f"φ{i} + ξ{i} = {{a}} must be below 3π/2 — {who} turns past "
+                "the contact's tangent line (condition (1))",
+                up,
+            ),
         ]
         for expr, msg, shown in cond:
             _check(expr, True, f"contact {i}: " + msg, assumed, shown)
@@ -154,7 +190,8 @@ def _check_doubles(g: Grasp) -> None:
         if v.free_symbols:
             raise InvalidGraspError(
                 f"{name} = {v} is symbolic but other parameters are floats: give every "
-                "parameter as a number, or all exactly (text such as 'pi/3')")
+                "parameter as a number, or all exactly (text such as 'pi/3')"
+            )
         try:
             finite = math.isfinite(float(v))
         except OverflowError:
@@ -163,7 +200,8 @@ def _check_doubles(g: Grasp) -> None:
             raise NonFiniteParameterError(
                 f"{name} = {_fmt(v)} is beyond double precision (about 1.8e308) and other "
                 "parameters are floats, so the grasp computes in doubles: give every "
-                "parameter exactly (text such as '1e309') instead")
+                "parameter exactly (text such as '1e309') instead"
+            )
 
 
 def _check_float_margins(g: Grasp) -> None:
@@ -179,7 +217,7 @@ def _check_float_margins(g: Grasp) -> None:
     for m in condition_1_margins(g.params):
         if abs(m.relative) >= FLOAT_MARGIN:  # clearly inside, or clearly outside
             continue
-        where = ("within" if m.margin > 0 else "on the wrong side of, and within")
+        where = "within" if m.margin > 0 else "on the wrong side of, and within"
         raise InvalidGraspError(
             f"contact {m.contact}: {m.text} of condition (1) is within rounding of its "
             f"bound: φ{m.contact} {m.text[3]} ξ{m.contact} = {m.value!r} rad is {where} "

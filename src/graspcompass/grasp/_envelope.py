@@ -70,8 +70,12 @@ _H_LO = (_H - _H_HI) + _TWO_PI_LO / M
 _INV_H = M / _TWO_PI_HI
 
 
-def direct_k_grasp(S: np.ndarray, C: np.ndarray, t: np.ndarray, out: np.ndarray | None = None,
-                   ) -> np.ndarray:
+def direct_k_grasp(
+    S: np.ndarray,
+    C: np.ndarray,
+    t: np.ndarray,
+    out: np.ndarray | None = None,
+) -> np.ndarray:
     """``max(0, max_n(S_n sin θ − C_n cos θ))`` by the formula (eqs. (25), (27))."""
     s, c = np.sin(t), np.cos(t)
     if out is None:
@@ -239,8 +243,14 @@ class EnvelopeTable:
 
     def _loop(self, flat: np.ndarray, out: np.ndarray, size: int) -> None:
         """The blocks of :meth:`__call__`: 14 passes each, in buffers that stay in the cache."""
-        AB, minimum, add, sub, mul, take = (self.AB, np.minimum.reduce, np.add, np.subtract,
-                                            np.multiply, np.take)
+        AB, minimum, add, sub, mul, take = (
+            self.AB,
+            np.minimum.reduce,
+            np.add,
+            np.subtract,
+            np.multiply,
+            np.take,
+        )
         bias, c2, c3 = _ROUND_P_BITS + J_LO, -0.5, -1.0 / 6.0
         rbuf, wbuf, abbuf = np.empty(size), np.empty(size), np.empty((size, 2))
         views, bad = None, []
@@ -250,7 +260,7 @@ class EnvelopeTable:
                 r, w, ab = rbuf[:m], wbuf[:m], abbuf[:m]
                 views = r, w, w.view(np.int64), ab, r.view(np.int64), ab[:, 0], ab[:, 1]
             r, w, i, ab, r_bits, a, b = views
-            th, o = flat[lo:lo + m], out[lo:lo + m]
+            th, o = flat[lo : lo + m], out[lo : lo + m]
             add(th, _ROUND_P, out=r)  # j h + 1.5·2^(52−P): j in the low bits
             sub(r_bits, bias, out=i)  # the index (in w's memory: w is free until the take)
             take(AB, i, axis=0, out=ab, mode="clip")  # out of the table: a sentinel (nan)

@@ -159,8 +159,9 @@ class MarginReport:
         ``margin / |bound|``.
     """
 
-    def __init__(self, contact: int, text: str, value: float, bound: str, margin: float,
-                 relative: float) -> None:
+    def __init__(
+        self, contact: int, text: str, value: float, bound: str, margin: float, relative: float
+    ) -> None:
         self.contact, self.text, self.value = contact, text, value
         self.bound, self.margin, self.relative = bound, margin, relative
 
@@ -177,11 +178,20 @@ def condition_1_margins(p: dict[str, Any]) -> list[MarginReport]:
             phi, xi = mpf(p[f"phi{i}"]), mpmath.atan(mpf(p[f"mu{i}"]))
             lo, up = phi - xi, phi + xi
             for value, sign, bound, b, rel in (
-                (lo, "−", -pi / 2, "−π/2", ">"), (lo, "−", pi / 2, "π/2", "<"),
-                (up, "+", pi / 2, "π/2", ">"), (up, "+", 3 * pi / 2, "3π/2", "<"),
+                (lo, "−", -pi / 2, "−π/2", ">"),
+                (lo, "−", pi / 2, "π/2", "<"),
+                (up, "+", pi / 2, "π/2", ">"),
+                (up, "+", 3 * pi / 2, "3π/2", "<"),
             ):
                 margin = value - bound if rel == ">" else bound - value
-                out.append(MarginReport(
-                    i, f"φ{i} {sign} ξ{i} {rel} {b}", float(value), b, float(margin),
-                    float(margin / abs(bound))))
+                out.append(
+                    MarginReport(
+                        i,
+                        f"φ{i} {sign} ξ{i} {rel} {b}",
+                        float(value),
+                        b,
+                        float(margin),
+                        float(margin / abs(bound)),
+                    )
+                )
     return out

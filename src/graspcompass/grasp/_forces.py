@@ -40,14 +40,16 @@ def _closed_form_doubles(g: Grasp) -> tuple[np.ndarray, np.ndarray]:
         except TypeError as exc:
             raise SymbolicValueError(
                 "a symbolic grasp cannot be evaluated on numeric θ; substitute values "
-                "first (Grasp.subs) or give θ exactly") from exc
+                "first (Grasp.subs) or give θ exactly"
+            ) from exc
         except OverflowError:
             S, C = [math.inf], [math.inf]
         if not all(abs(v) <= _HALF_MAX for v in (*S, *C)):  # also catches nan
             raise NonFiniteValueError(
                 "the grasp's S_n, C_n (eqs. (28)-(39)) are beyond double precision "
                 f"(|S_n|, |C_n| must stay below {_HALF_MAX:.2g}); the numeric path "
-                "cannot use this grasp: give θ exactly (text such as 'pi/3')")
+                "cannot use this grasp: give θ exactly (text such as 'pi/3')"
+            )
         object.__setattr__(g, "_SC", (np.array(S), np.array(C)))
     return g._SC
 
@@ -99,18 +101,31 @@ def _F_T(g: Grasp, theta: Any, external_force: Any) -> Any:
     numeric = _is_numeric(t)
     if numeric:
         s, c, fe = np.sin(t), np.cos(t), _double(fe, "external_force")
-        D, x1, x2, y, s1, c1, s2, c2 = (_double(v, name) for v, name in (
-            (g.D, "x1 + x2"), (g.x1, "x1"), (g.x2, "x2"), (g.y, "y"),
-            (g.s1, "sin φ1"), (g.c1, "cos φ1"), (g.s2, "sin φ2"),
-            (g.c2, "cos φ2")))
+        D, x1, x2, y, s1, c1, s2, c2 = (
+            _double(v, name)
+            for v, name in (
+                (g.D, "x1 + x2"),
+                (g.x1, "x1"),
+                (g.x2, "x2"),
+                (g.y, "y"),
+                (g.s1, "sin φ1"),
+                (g.c1, "cos φ1"),
+                (g.s2, "sin φ2"),
+                (g.c2, "cos φ2"),
+            )
+        )
     else:
         fe = _sympy(fe)
         s, c = sp.sin(t), sp.cos(t)
         D, x1, x2, y = g.D, g.x1, g.x2, g.y
         s1, c1, s2, c2 = g.s1, g.c1, g.s2, g.c2
     a, b = y * s - x2 * c, y * s + x1 * c
-    v = [D * s1 * s + 2 * a * c1, D * c1 * s - 2 * a * s1,
-         -D * s2 * s - 2 * b * c2, -D * c2 * s + 2 * b * s2]
+    v = [
+        D * s1 * s + 2 * a * c1,
+        D * c1 * s - 2 * a * s1,
+        -D * s2 * s - 2 * b * c2,
+        -D * c2 * s + 2 * b * s2,
+    ]
     if numeric:
         with np.errstate(over="ignore", invalid="ignore"):
             out = fe / (2 * D) * np.array(v)
@@ -123,9 +138,21 @@ def _F_N(g: Grasp, external_force: Any) -> Any:
     fe = force_value(external_force)
     if isinstance(fe, float):
         with np.errstate(over="ignore", invalid="ignore"):
-            out = fe / _double(g.D, "x1 + x2") * np.array([
-                _double(v, name) for v, name in ((g.s1, "sin φ1"), (g.c1, "cos φ1"),
-                                                 (g.s2, "sin φ2"), (g.c2, "cos φ2"))])
+            out = (
+                fe
+                / _double(g.D, "x1 + x2")
+                * np.array(
+                    [
+                        _double(v, name)
+                        for v, name in (
+                            (g.s1, "sin φ1"),
+                            (g.c1, "cos φ1"),
+                            (g.s2, "sin φ2"),
+                            (g.c2, "cos φ2"),
+                        )
+                    ]
+                )
+            )
         return _finite(out, "F_N")
     return sp.Matrix([fe / g.D * e for e in (g.s1, g.c1, g.s2, g.c2)])
 
@@ -145,8 +172,9 @@ def _contact_forces(g: Grasp, theta: Any, k: Any, external_force: Any) -> Any:
         except ValueError:
             ok = False
         if not ok:
-            raise InputError(f"k: an array of shape {kk.shape} does not broadcast with "
-                             f"theta's shape {shape}")
+            raise InputError(
+                f"k: an array of shape {kk.shape} does not broadcast with theta's shape {shape}"
+            )
         fe = _double(fe, "external_force")
         fn = g.F_N(fe)
         ft = g.F_T(t, fe)

@@ -114,12 +114,17 @@ def _exact_kind(v: sp.Expr, name: str) -> sp.Expr:
     if has_float(v):
         return v
     for a in sp.preorder_traversal(v):
-        if a.is_Pow and not a.exp.is_Integer and not a.free_symbols and not (
-                a.exp in (sp.S.Half, -sp.S.Half) and a.base.is_Rational):
+        if (
+            a.is_Pow
+            and not a.exp.is_Integer
+            and not a.free_symbols
+            and not (a.exp in (sp.S.Half, -sp.S.Half) and a.base.is_Rational)
+        ):
             raise UnsupportedParameterError(
                 f"{name} = {_fmt(v)} uses {a}: exact lengths and friction coefficients may "
                 "hold square roots of rational numbers, not other roots; give the value as "
-                "a decimal (read exactly) or a float")
+                "a decimal (read exactly) or a float"
+            )
     return v
 
 
@@ -130,13 +135,15 @@ def _double(v: sp.Expr, what: str) -> float:
     except OverflowError:
         out = math.inf
     except TypeError:
-        raise SymbolicValueError(f"{what} = {v} is not a number: the numeric path (a float θ) "
-                                 "needs numbers; give θ exactly or substitute values first"
-                                 ) from None
+        raise SymbolicValueError(
+            f"{what} = {v} is not a number: the numeric path (a float θ) "
+            "needs numbers; give θ exactly or substitute values first"
+        ) from None
     if not math.isfinite(out):
         raise NonFiniteValueError(
             f"{what} = {_fmt(v)} is beyond double precision (about 1.8e308): the numeric "
-            "path cannot use it; give θ exactly (text such as 'pi/3') for exact values")
+            "path cannot use it; give θ exactly (text such as 'pi/3') for exact values"
+        )
     return out
 
 
@@ -145,7 +152,8 @@ def _finite(out: Any, what: str) -> Any:
     if not np.isfinite(out).all():
         raise NonFiniteValueError(
             f"{what} overflows double precision (|x| > 1.8e308) for these values; give θ "
-            "and the force exactly (text such as 'pi/3') for exact values")
+            "and the force exactly (text such as 'pi/3') for exact values"
+        )
     return out
 
 
@@ -187,7 +195,13 @@ def _one_angle(theta: Any) -> sp.Expr:
 
 
 # documented, pickled and shown in tracebacks as graspcompass.grasp.*, where they belong
-for _error in (FrozenGraspError, InvalidGraspError, ParameterTypeError, ComplexParameterError,
-               NonFiniteParameterError, UnsupportedParameterError):
+for _error in (
+    FrozenGraspError,
+    InvalidGraspError,
+    ParameterTypeError,
+    ComplexParameterError,
+    NonFiniteParameterError,
+    UnsupportedParameterError,
+):
     _error.__module__ = "graspcompass.grasp"
 del _error

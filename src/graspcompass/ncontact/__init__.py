@@ -27,7 +27,20 @@ from .errors import (
 from .model import MAX_CONTACTS, NContactGrasp
 from .polygon import Candidate, InternalForcePolygon
 
-__all__ = ["EFFORTS", "MAX_CONTACTS", "Candidate", "Contact", "DegenerateGraspError", "Effort",
-           "EffortError", "InternalForcePolygon", "InvalidContactError", "NContactError",
-           "NContactGrasp", "UnboundedEffortError", "UndecidedSignError", "read_contact",
-           "read_effort"]
+__all__ = [
+    "EFFORTS",
+    "MAX_CONTACTS",
+    "Candidate",
+    "Contact",
+    "DegenerateGraspError",
+    "Effort",
+    "EffortError",
+    "InternalForcePolygon",
+    "InvalidContactError",
+    "NContactError",
+    "NContactGrasp",
+    "UnboundedEffortError",
+    "UndecidedSignError",
+    "read_contact",
+    "read_effort",
+]

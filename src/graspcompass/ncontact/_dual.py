@@ -30,8 +30,16 @@ from ..geometry.exact import approx, canon
 from ._signs import det, exact_sgn, sign
 from .errors import DegenerateGraspError
 
-__all__ = ["Dets", "DualVertex", "exact_rays", "exact_vertices", "float_rays", "float_vertices",
-           "screened_vertices", "verify_basis"]
+__all__ = [
+    "Dets",
+    "DualVertex",
+    "exact_rays",
+    "exact_vertices",
+    "float_rays",
+    "float_vertices",
+    "screened_vertices",
+    "verify_basis",
+]
 
 #: Relative tolerance of the float path (feasibility, rank, duplicates).
 TOL = 1e-9
@@ -95,7 +103,7 @@ class Dets:
             total = sp.Integer(0)
             for t, r in enumerate(s):
                 if self.rhs[r] != 0:
-                    total += (-1) ** (t + d) * self.rhs[r] * self.D(s[:t] + s[t + 1:])
+                    total += (-1) ** (t + d) * self.rhs[r] * self.D(s[:t] + s[t + 1 :])
             v = self._sE[s] = sign(canon(total), f"a slack of constraints {s}")
         return v
 
@@ -109,7 +117,7 @@ class Dets:
         rows = [list(self.rows[i]) for i in basis]
         out = []
         for t in range(coords):
-            m = [[*r[:t], self.rhs[i], *r[t + 1:]] for r, i in zip(rows, basis)]
+            m = [[*r[:t], self.rhs[i], *r[t + 1 :]] for r, i in zip(rows, basis)]
             out.append(canon(det(m)))
         return tuple(out)
 
@@ -153,13 +161,17 @@ def _float_solutions(A: np.ndarray, b: np.ndarray):
     if ok.any():
         U[ok] = np.linalg.solve(M[ok], b[combos[ok]][..., None])[..., 0]
     slack = b[None, :] - U @ A.T
-    tol = TOL * (np.linalg.norm(A, axis=1)[None, :] * np.linalg.norm(U, axis=1)[:, None]
-                 + np.abs(b)[None, :] + 1e-300)
+    tol = TOL * (
+        np.linalg.norm(A, axis=1)[None, :] * np.linalg.norm(U, axis=1)[:, None]
+        + np.abs(b)[None, :]
+        + 1e-300
+    )
     return combos, ok, U, slack, tol
 
 
-def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr],
-                   dets: Dets | None = None) -> list[DualVertex]:
+def exact_vertices(
+    rows: list[list[sp.Expr]], rhs: list[sp.Expr], dets: Dets | None = None
+) -> list[DualVertex]:
     """Every dual-feasible basis of ``{u : rows·u <= rhs}``, exactly, with its primal cone.
 
     Raises
@@ -187,6 +199,7 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr],
             def key(k: int, ci: int = ci, basis: tuple = basis) -> tuple:
                 known = tuple(sorted((*basis, k))) in dets._sE
                 return (not (known and slack[ci, k] < -1e-6 * tol_scale[ci]), slack[ci, k])
+
             others.sort(key=key)
         tight = set(basis)
         for k in others:
@@ -198,12 +211,21 @@ def exact_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr],
         else:
             s0 = dets.sD(basis)  # W = |D| > 0: homogeneous coordinates with a positive weight
             nums = tuple(canon(s0 * v) for v in dets.numerators(basis))
-            out.append(DualVertex(nums, basis, canon(s0 * dets.D(basis)), frozenset(tight),
-                                  dets.primal_cone(basis)))
+            out.append(
+                DualVertex(
+                    nums,
+                    basis,
+                    canon(s0 * dets.D(basis)),
+                    frozenset(tight),
+                    dets.primal_cone(basis),
+                )
+            )
     if not rank_full:
-        raise DegenerateGraspError("the edge wrenches do not span the three dimensions of "
-                                   "planar wrenches (all lines of action concurrent or "
-                                   "parallel): the grasp cannot resist some loads at all")
+        raise DegenerateGraspError(
+            "the edge wrenches do not span the three dimensions of "
+            "planar wrenches (all lines of action concurrent or "
+            "parallel): the grasp cannot resist some loads at all"
+        )
     return out
 
 
@@ -221,8 +243,9 @@ def _float_cone_has_interior(A: np.ndarray, basis: tuple) -> bool:
     return bool(np.any(np.all(m @ e < -1e-12, axis=0)))
 
 
-def screened_vertices(rows: list[list[sp.Expr]], rhs: list[sp.Expr], dets: Dets
-                      ) -> tuple[list[DualVertex], list[tuple]]:
+def screened_vertices(
+    rows: list[list[sp.Expr]], rhs: list[sp.Expr], dets: Dets
+) -> tuple[list[DualVertex], list[tuple]]:
     """The bases that float arithmetic finds dual feasible and optimal on an open cone.
 
     Returns ``(active, passive)``: the active ones verified exactly (dual
@@ -264,8 +287,9 @@ def verify_basis(dets: Dets, basis: tuple) -> DualVertex | None:
             tight.add(k)
     s0 = dets.sD(basis)
     nums = tuple(canon(s0 * v) for v in dets.numerators(basis))
-    return DualVertex(nums, basis, canon(s0 * dets.D(basis)), frozenset(tight),
-                      dets.primal_cone(basis))
+    return DualVertex(
+        nums, basis, canon(s0 * dets.D(basis)), frozenset(tight), dets.primal_cone(basis)
+    )
 
 
 def exact_rays(rows: list[list[sp.Expr]], dets: Dets | None = None) -> list[tuple]:
@@ -281,7 +305,7 @@ def exact_rays(rows: list[list[sp.Expr]], dets: Dets | None = None) -> list[tupl
     for S in itertools.combinations(range(R), d - 1):
         r = []
         for t in range(d):
-            m = [list(rows[i][:t]) + list(rows[i][t + 1:]) for i in S]
+            m = [list(rows[i][:t]) + list(rows[i][t + 1 :]) for i in S]
             r.append(canon((-1) ** t * det(m)))
         if all(sign(v, "a recession direction") == 0 for v in r):
             continue
@@ -304,11 +328,13 @@ def float_vertices(A: np.ndarray, b: np.ndarray) -> list[DualVertex]:
     """The float path of :func:`exact_vertices` (relative tolerance :data:`TOL`)."""
     combos, ok, U, slack, tol = _float_solutions(A, b)
     if not ok.any():
-        raise DegenerateGraspError("the edge wrenches do not span the three dimensions of "
-                                   "planar wrenches (rank < 3)")
+        raise DegenerateGraspError(
+            "the edge wrenches do not span the three dimensions of planar wrenches (rank < 3)"
+        )
     feas = ok & np.all(slack >= -tol, axis=1)
-    return [DualVertex(tuple(U[i].tolist()), tuple(combos[i].tolist()))
-            for i in np.flatnonzero(feas)]
+    return [
+        DualVertex(tuple(U[i].tolist()), tuple(combos[i].tolist())) for i in np.flatnonzero(feas)
+    ]
 
 
 def float_rays(A: np.ndarray) -> list[tuple]:
@@ -317,16 +343,17 @@ def float_rays(A: np.ndarray) -> list[tuple]:
     combos = np.array(list(itertools.combinations(range(R), d - 1)), dtype=int)
     if combos.size == 0:
         return []
-    sub = A[combos]                                   # (C, d-1, d)
+    sub = A[combos]  # (C, d-1, d)
     if d == 2:
         r = np.stack([sub[:, 0, 1], -sub[:, 0, 0]], axis=1)
     else:
-        r = np.stack([(-1) ** t * np.linalg.det(np.delete(sub, t, axis=2)) for t in range(d)],
-                     axis=1)
+        r = np.stack(
+            [(-1) ** t * np.linalg.det(np.delete(sub, t, axis=2)) for t in range(d)], axis=1
+        )
     nr = np.linalg.norm(r, axis=1)
     keep = nr > 1e-12 * np.prod(np.linalg.norm(sub, axis=2), axis=1)
     r = r[keep] / nr[keep, None]
-    dots = r @ A.T                                    # (C', R)
+    dots = r @ A.T  # (C', R)
     tol = TOL * np.linalg.norm(A, axis=1)
     found = []
     for k in range(len(r)):

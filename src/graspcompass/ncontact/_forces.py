@@ -36,7 +36,7 @@ def _solve_exact(cols: list[list[sp.Expr]], b: list[sp.Expr]) -> list[sp.Expr] |
         return None
     out = []
     for t in range(d):
-        m = [[*row[:t], b[r], *row[t + 1:]] for r, row in enumerate(M)]
+        m = [[*row[:t], b[r], *row[t + 1 :]] for r, row in enumerate(M)]
         out.append(canon(det(m) / D))
     return out
 
@@ -71,8 +71,9 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
         from ._forces_max import optimal_max_normal
 
         rhs = [-fe * e[0], -fe * e[1], zero]
-        return optimal_max_normal(g, Q, ks, rhs if numeric else [canon(v) for v in rhs],
-                                  val, numeric)
+        return optimal_max_normal(
+            g, Q, ks, rhs if numeric else [canon(v) for v in rhs], val, numeric
+        )
     rows, _ = g.dual_system()
     labels = g.constraint_labels()
     n_edges = 2 * g.n
@@ -81,8 +82,9 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
     b = [-fe * e[0], -fe * e[1]] + [zero] * (d - 2)
     if not numeric:
         b = [canon(v) for v in b]
-    for basis, cand in ((b, c) for c in (Q.candidates[Q.vertex_index[k]] for k in ks)
-                        for b in c.bases):
+    for basis, cand in (
+        (b, c) for c in (Q.candidates[Q.vertex_index[k]] for k in ks) for b in c.bases
+    ):
         cols = [list(rows[r]) for r in basis]
         x: list[Any] | None
         if numeric:
@@ -107,7 +109,14 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
                     fx = fx + weights[labels[j]] * dj[0]
                     fy = fy + weights[labels[j]] * dj[1]
             forces.append((fx, fy) if numeric else (canon(fx), canon(fy)))
-        return {"effort": val, "vertex": cand.q, "basis": [labels[r] for r in basis],
-                "weights": weights, "forces": forces}
-    raise NContactError("no basis of the optimal vertex gives nonnegative edge weights "
-                        "(a degenerate case): please report the grasp")
+        return {
+            "effort": val,
+            "vertex": cand.q,
+            "basis": [labels[r] for r in basis],
+            "weights": weights,
+            "forces": forces,
+        }
+    raise NContactError(
+        "no basis of the optimal vertex gives nonnegative edge weights "
+        "(a degenerate case): please report the grasp"
+    )

@@ -50,11 +50,13 @@ def _direction(G: list[tuple], cand: Any, numeric: bool) -> list[tuple]:
             d = tuple(s * v for v in c)
             if numeric:
                 d = tuple(float(v) for v in d)
-                f = sum(max(0.0, _dot(G[2 * i], d), _dot(G[2 * i + 1], d))
-                        for i in range(len(G) // 2))
+                f = sum(
+                    max(0.0, _dot(G[2 * i], d), _dot(G[2 * i + 1], d)) for i in range(len(G) // 2)
+                )
                 qx, qy = cand.floats()
                 if f > 0 and abs(-d[0] / f - qx) + abs(-d[1] / f - qy) <= 1e-7 * (
-                        1 + abs(qx) + abs(qy)):
+                    1 + abs(qx) + abs(qy)
+                ):
                     out.append(d)
             else:
                 d = tuple(canon(v) for v in d)
@@ -65,9 +67,11 @@ def _direction(G: list[tuple], cand: Any, numeric: bool) -> list[tuple]:
                     if exact_sgn(m, "a normal force's sign") > 0:
                         f = f + m
                 # q = (X, Y) / W, W > 0, must be -d_f / f(d) with f(d) > 0
-                if (exact_sgn(canon(f), "the effort of a direction") > 0
-                        and exact_sgn(canon(-d[0] * cand.W - cand.X * f), "q_x") == 0
-                        and exact_sgn(canon(-d[1] * cand.W - cand.Y * f), "q_y") == 0):
+                if (
+                    exact_sgn(canon(f), "the effort of a direction") > 0
+                    and exact_sgn(canon(-d[0] * cand.W - cand.X * f), "q_x") == 0
+                    and exact_sgn(canon(-d[1] * cand.W - cand.Y * f), "q_y") == 0
+                ):
                     out.append(d)
     return out
 
@@ -84,26 +88,36 @@ def _solve(M: list[list[Any]], b: list[Any], numeric: bool) -> list[Any] | None:
                 continue
             x = np.linalg.solve(A, np.array([b[r] for r in rows], dtype=float)).tolist()
             res = np.array(M, dtype=float) @ np.array(x) - np.array(b, dtype=float)
-            tol = 1e-9 * (1 + float(np.abs(np.array(b, dtype=float)).max())) * (
-                1 + float(np.abs(x).max()))
+            tol = (
+                1e-9
+                * (1 + float(np.abs(np.array(b, dtype=float)).max()))
+                * (1 + float(np.abs(x).max()))
+            )
             return x if np.all(np.abs(res) <= tol) else None
         D = canon(det(sub))
         if exact_sgn(D, "a determinant of tight edges") == 0:
             continue
         x = []
         for t in range(k):
-            mt = [[*row[:t], b[r], *row[t + 1:]] for row, r in zip(sub, rows)]
+            mt = [[*row[:t], b[r], *row[t + 1 :]] for row, r in zip(sub, rows)]
             x.append(canon(det(mt) / D))
         for r in range(m):
-            if r not in rows and exact_sgn(sum(M[r][t] * x[t] for t in range(k)) - b[r],
-                                           "a residual of the optimality system") != 0:
+            if (
+                r not in rows
+                and exact_sgn(
+                    sum(M[r][t] * x[t] for t in range(k)) - b[r],
+                    "a residual of the optimality system",
+                )
+                != 0
+            ):
                 return None
         return x
     return None
 
 
-def max_normal_forces(g: NContactGrasp, d: tuple, rhs: list[Any], value: Any,
-                      numeric: bool) -> dict[str, Any] | None:
+def max_normal_forces(
+    g: NContactGrasp, d: tuple, rhs: list[Any], value: Any, numeric: bool
+) -> dict[str, Any] | None:
     """The optimal forces for the dual direction d (None if no tight set is feasible)."""
     G = [tuple(w) for w in g.wrenches()]
     n = g.n
@@ -152,12 +166,12 @@ def max_normal_forces(g: NContactGrasp, d: tuple, rhs: list[Any], value: Any,
     return None
 
 
-def optimal_max_normal(g: NContactGrasp, Q: Any, ks: list[int], rhs: list[Any], val: Any,
-                       numeric: bool) -> dict[str, Any]:
+def optimal_max_normal(
+    g: NContactGrasp, Q: Any, ks: list[int], rhs: list[Any], val: Any, numeric: bool
+) -> dict[str, Any]:
     """The result dict of ``forces()`` for ``max-normal`` (see NContactGrasp.forces)."""
     labels = [f"P{i + 1}{'+' if s > 0 else '-'}" for i, s, _ in g.edges()]
-    edges = [(ci, s, tuple(float(v) for v in dj) if numeric else dj)
-             for ci, s, dj in g.edges()]
+    edges = [(ci, s, tuple(float(v) for v in dj) if numeric else dj) for ci, s, dj in g.edges()]
     G = [tuple(w) for w in g.wrenches()]
     zero = 0.0 if numeric else sp.Integer(0)
     for k in ks:
@@ -166,8 +180,10 @@ def optimal_max_normal(g: NContactGrasp, Q: Any, ks: list[int], rhs: list[Any], 
             r = max_normal_forces(g, d, rhs, val, numeric)
             if r is None:
                 continue
-            weights = {labels[j]: (max(float(v), 0.0) if numeric else v)
-                       for j, v in sorted(r["weights"].items())}
+            weights = {
+                labels[j]: (max(float(v), 0.0) if numeric else v)
+                for j, v in sorted(r["weights"].items())
+            }
             forces = []
             for i in range(g.n):
                 fx = fy = zero
@@ -176,9 +192,16 @@ def optimal_max_normal(g: NContactGrasp, Q: Any, ks: list[int], rhs: list[Any], 
                         fx = fx + weights[labels[j]] * dj[0]
                         fy = fy + weights[labels[j]] * dj[1]
                 forces.append((fx, fy) if numeric else (canon(fx), canon(fy)))
-            return {"effort": val, "vertex": cand.q, "basis": list(weights),
-                    "weights": weights, "forces": forces,
-                    "tight": [labels[j] for j in r["tight"]],
-                    "largest": [i + 1 for i in r["largest"]]}
-    raise NContactError("no set of tight edges of the optimal vertex gives nonnegative "
-                        "weights (a degenerate case): please report the grasp")
+            return {
+                "effort": val,
+                "vertex": cand.q,
+                "basis": list(weights),
+                "weights": weights,
+                "forces": forces,
+                "tight": [labels[j] for j in r["tight"]],
+                "largest": [i + 1 for i in r["largest"]],
+            }
+    raise NContactError(
+        "no set of tight edges of the optimal vertex gives nonnegative "
+        "weights (a degenerate case): please report the grasp"
+    )

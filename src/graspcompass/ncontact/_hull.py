@@ -19,8 +19,11 @@ Sgn = Callable[[Any, str], int]
 
 def _cross(o: Sequence, a: Sequence, b: Sequence) -> Any:
     """det [o; a; b] of homogeneous points (X, Y, W): the orientation when all W > 0."""
-    return (o[0] * (a[1] * b[2] - a[2] * b[1]) - o[1] * (a[0] * b[2] - a[2] * b[0])
-            + o[2] * (a[0] * b[1] - a[1] * b[0]))
+    return (
+        o[0] * (a[1] * b[2] - a[2] * b[1])
+        - o[1] * (a[0] * b[2] - a[2] * b[0])
+        + o[2] * (a[0] * b[1] - a[1] * b[0])
+    )
 
 
 def hull(points: Sequence[Sequence], sgn: Sgn) -> list[int]:
@@ -30,6 +33,7 @@ def hull(points: Sequence[Sequence], sgn: Sgn) -> list[int]:
     Andrew's monotone chain; equal points count once (the first index), points on
     an edge are not vertices.  One point gives ``[i]``, a segment its two ends.
     """
+
     def cmp(i: int, j: int) -> int:
         a, b = points[i], points[j]
         s = sgn(a[0] * b[2] - b[0] * a[2], "a difference of x coordinates")
@@ -48,8 +52,14 @@ def hull(points: Sequence[Sequence], sgn: Sgn) -> list[int]:
     def chain(seq: list[int]) -> list[int]:
         out: list[int] = []
         for i in seq:
-            while len(out) >= 2 and sgn(_cross(points[out[-2]], points[out[-1]], points[i]),
-                                        "an orientation determinant") <= 0:
+            while (
+                len(out) >= 2
+                and sgn(
+                    _cross(points[out[-2]], points[out[-1]], points[i]),
+                    "an orientation determinant",
+                )
+                <= 0
+            ):
                 out.pop()
             out.append(i)
         return out
@@ -61,8 +71,9 @@ def hull(points: Sequence[Sequence], sgn: Sgn) -> list[int]:
 
 def inside_cone(x: Sequence, rays: Sequence[Sequence], sgn: Sgn) -> bool:
     """True when ``x·r < 0`` for every ray r: x points into the open feasible cone."""
-    return all(sgn(x[0] * r[0] + x[1] * r[1], "a dot product with a recession direction") < 0
-               for r in rays)
+    return all(
+        sgn(x[0] * r[0] + x[1] * r[1], "a dot product with a recession direction") < 0 for r in rays
+    )
 
 
 def feasible_cone(rays: Sequence[Sequence], sgn: Sgn) -> tuple | None:
@@ -108,7 +119,7 @@ def feasible_cone(rays: Sequence[Sequence], sgn: Sgn) -> tuple | None:
                 return i
         return None
 
-    ia = first(True)   # every ray is counter-clockwise of ra (within π)
+    ia = first(True)  # every ray is counter-clockwise of ra (within π)
     ib = first(False)  # every ray is clockwise of rb
     if ia is None or ib is None:
         return None
@@ -134,8 +145,10 @@ def _in_open(x: Sequence, cone: tuple, sgn: Sgn) -> bool:
 
 
 def _same(a: Sequence, b: Sequence, sgn: Sgn) -> bool:
-    return (sgn(a[0] * b[1] - a[1] * b[0], "an orientation") == 0
-            and sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0)
+    return (
+        sgn(a[0] * b[1] - a[1] * b[0], "an orientation") == 0
+        and sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0
+    )
 
 
 def open_cones_meet(c1: tuple, c2: tuple, sgn: Sgn) -> bool:
@@ -146,5 +159,4 @@ def open_cones_meet(c1: tuple, c2: tuple, sgn: Sgn) -> bool:
     """
     if c1 == () or c2 == ():
         return True
-    return (_in_open(c2[0], c1, sgn) or _in_open(c1[0], c2, sgn)
-            or _same(c1[0], c2[0], sgn))
+    return _in_open(c2[0], c1, sgn) or _in_open(c1[0], c2, sgn) or _same(c1[0], c2[0], sgn)

@@ -22,8 +22,10 @@ def sign(expr: sp.Expr, what: str) -> int:
     """
     s = decide_sign(expr)
     if s is None:
-        raise UndecidedSignError(f"cannot decide the sign of {what} (value {sp.N(expr, 6)}): "
-                                 "give the grasp exactly in simpler numbers")
+        raise UndecidedSignError(
+            f"cannot decide the sign of {what} (value {sp.N(expr, 6)}): "
+            "give the grasp exactly in simpler numbers"
+        )
     return s
 
 
@@ -38,7 +40,7 @@ def det(rows: list[list[sp.Expr]]) -> sp.Expr:
     for j in range(n):
         if rows[0][j] == 0:
             continue
-        minor = [r[:j] + r[j + 1:] for r in rows[1:]]
+        minor = [r[:j] + r[j + 1 :] for r in rows[1:]]
         total += (-1) ** j * rows[0][j] * det(minor)
     return total
 

@@ -25,8 +25,7 @@ from .errors import InvalidContactError
 __all__ = ["Contact", "read_contact", "read_number"]
 
 
-def read_number(value: Any, name: str,
-                error: type[InputError] = InvalidContactError) -> sp.Expr:
+def read_number(value: Any, name: str, error: type[InputError] = InvalidContactError) -> sp.Expr:
     """``value`` through the input boundary (:func:`graspcompass.inputs.real_value`), a
     number without symbols; anything refused is raised again as ``error`` (the contacts'
     and the efforts' named errors)."""
@@ -37,7 +36,6 @@ def read_number(value: Any, name: str,
     if v.free_symbols:
         raise error(f"{name}: symbols are not supported by the n-contact model, got {v}")
     return v
-
 
 
 @dataclass(frozen=True)
@@ -69,8 +67,10 @@ class Contact:
         if self.numeric:
             m = float(self.mu)
             return ((nx + m * jx, ny + m * jy), (nx - m * jx, ny - m * jy))
-        return ((canon(nx + self.mu * jx), canon(ny + self.mu * jy)),
-                (canon(nx - self.mu * jx), canon(ny - self.mu * jy)))
+        return (
+            (canon(nx + self.mu * jx), canon(ny + self.mu * jy)),
+            (canon(nx - self.mu * jx), canon(ny - self.mu * jy)),
+        )
 
 
 def _unit(nx: sp.Expr, ny: sp.Expr, where: str, numeric: bool) -> tuple:
@@ -78,10 +78,11 @@ def _unit(nx: sp.Expr, ny: sp.Expr, where: str, numeric: bool) -> tuple:
         fx, fy = float(nx), float(ny)
         r = math.hypot(fx, fy)
         if not r > 0 or not math.isfinite(r):
-            raise InvalidContactError(f"{where}: the normal ({fx}, {fy}) must be a nonzero "
-                                      "finite vector")
+            raise InvalidContactError(
+                f"{where}: the normal ({fx}, {fy}) must be a nonzero finite vector"
+            )
         return (fx / r, fy / r)
-    r2 = canon(nx ** 2 + ny ** 2)
+    r2 = canon(nx**2 + ny**2)
     if sign(r2, f"{where}: the squared length of the normal") == 0:
         raise InvalidContactError(f"{where}: the normal ({nx}, {ny}) is the zero vector")
     if decide_zero(r2 - 1):
@@ -89,7 +90,8 @@ def _unit(nx: sp.Expr, ny: sp.Expr, where: str, numeric: bool) -> tuple:
     if not r2.is_Rational:
         raise InvalidContactError(
             f"{where}: give the normal as a unit vector, as a vector whose squared length is "
-            f"rational, or as an angle (its squared length is {r2})")
+            f"rational, or as an angle (its squared length is {r2})"
+        )
     r = sp.sqrt(r2)
     return (canon(nx / r), canon(ny / r))
 
@@ -122,17 +124,19 @@ def read_contact(spec: Any, index: int) -> Contact:
         elif len(spec) == 4:
             d = dict(zip(("x", "y", "angle", "mu"), spec))
         else:
-            raise InvalidContactError(f"{where}: expected (x, y, nx, ny, mu) or (x, y, angle, "
-                                      f"mu), got {len(spec)} values")
+            raise InvalidContactError(
+                f"{where}: expected (x, y, nx, ny, mu) or (x, y, angle, mu), got {len(spec)} values"
+            )
     else:
-        raise InvalidContactError(f"{where}: expected a tuple or a dict, got "
-                                  f"{type(spec).__name__}")
+        raise InvalidContactError(f"{where}: expected a tuple or a dict, got {type(spec).__name__}")
     unknown = set(d) - {"x", "y", "nx", "ny", "angle", "mu", "xi"}
     if unknown:
         raise InvalidContactError(f"{where}: unknown key(s) {sorted(unknown)}")
     if ("angle" in d) == ("nx" in d or "ny" in d) or ("mu" in d) == ("xi" in d):
-        raise InvalidContactError(f"{where}: give the normal as nx, ny or as angle, and the "
-                                  "friction as mu or as xi (exactly one of each)")
+        raise InvalidContactError(
+            f"{where}: give the normal as nx, ny or as angle, and the "
+            "friction as mu or as xi (exactly one of each)"
+        )
     if "x" not in d or "y" not in d:
         raise InvalidContactError(f"{where}: the point needs x and y")
     vals = {k: read_number(v, f"{where}: {k}") for k, v in d.items()}

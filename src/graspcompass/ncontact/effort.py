@@ -83,8 +83,9 @@ def read_effort(spec: Any, contacts: tuple) -> Effort:
             return Effort(s, None)
         if s == "paper":
             if n != 2:
-                raise EffortError(f"effort 'paper' (the paper's k) needs exactly 2 contacts, "
-                                  f"got {n}")
+                raise EffortError(
+                    f"effort 'paper' (the paper's k) needs exactly 2 contacts, got {n}"
+                )
             p1, p2 = contacts[0].p, contacts[1].p
             w1 = tuple(conv((b - a) / 2) for a, b in zip(p1, p2))
             w2 = tuple(conv((a - b) / 2) for a, b in zip(p1, p2))
@@ -93,18 +94,24 @@ def read_effort(spec: Any, contacts: tuple) -> Effort:
         if m:
             i, j = int(m.group(1)), int(m.group(2))
             if not (1 <= i <= n and 1 <= j <= n) or i == j:
-                raise EffortError(f"effort {s!r}: I and J must be two different contacts "
-                                  f"among 1..{n}")
+                raise EffortError(
+                    f"effort {s!r}: I and J must be two different contacts among 1..{n}"
+                )
             zero = (0.0, 0.0) if numeric else (sp.Integer(0), sp.Integer(0))
-            return Effort(f"pair:{i},{j}", tuple(c.n if k + 1 in (i, j) else zero
-                                                  for k, c in enumerate(contacts)))
-        raise EffortError(f"unknown effort {spec[:40]!r}; choose one of {', '.join(EFFORTS)} "
-                          "or give custom weights")
+            return Effort(
+                f"pair:{i},{j}",
+                tuple(c.n if k + 1 in (i, j) else zero for k, c in enumerate(contacts)),
+            )
+        raise EffortError(
+            f"unknown effort {spec[:40]!r}; choose one of {', '.join(EFFORTS)} "
+            "or give custom weights"
+        )
     if isinstance(spec, Effort):
         return spec
     if not isinstance(spec, (list, tuple)) or len(spec) != n:
-        raise EffortError(f"custom effort: expected {n} weights (one per contact), got "
-                          f"{type(spec).__name__}")
+        raise EffortError(
+            f"custom effort: expected {n} weights (one per contact), got {type(spec).__name__}"
+        )
     ws = []
     for k, (w, c) in enumerate(zip(spec, contacts)):
         if isinstance(w, (list, tuple)):

@@ -33,8 +33,8 @@ def _ties(G: list[tuple]) -> list[tuple[int, str, tuple, tuple]]:
     zero = tuple(0 * v for v in G[0])
     for i in range(len(G) // 2):
         gp, gm = G[2 * i], G[2 * i + 1]
-        out.append((i, "+0", gp, gm))           # g+·y = 0 >= g-·y
-        out.append((i, "-0", gm, gp))           # g-·y = 0 >= g+·y
+        out.append((i, "+0", gp, gm))  # g+·y = 0 >= g-·y
+        out.append((i, "-0", gm, gp))  # g-·y = 0 >= g+·y
         out.append((i, "+-", tuple(a - b for a, b in zip(gp, gm)), zero))  # g+ = g- >= 0
     return out
 
@@ -94,7 +94,7 @@ def _float(G: list[tuple], ties: list) -> tuple[list[tuple], list[tuple]]:
     for a, b in itertools.combinations(range(len(ties)), 2):
         d0 = np.cross(np.array(ties[a][2], float), np.array(ties[b][2], float))
         nd = np.linalg.norm(d0)
-        if nd <= 1e-12 * scale ** 2:
+        if nd <= 1e-12 * scale**2:
             continue
         d0 = d0 / nd
         for sg in (1.0, -1.0):

@@ -74,13 +74,20 @@ class NContactGrasp:
     1
     """
 
-    def __init__(self, contacts: Sequence[Any], com: Any = (0, 0),
-                 effort: Any = "sum-normal", *, exhaustive: bool = False) -> None:
+    def __init__(
+        self,
+        contacts: Sequence[Any],
+        com: Any = (0, 0),
+        effort: Any = "sum-normal",
+        *,
+        exhaustive: bool = False,
+    ) -> None:
         if isinstance(contacts, (str, bytes)) or not isinstance(contacts, Sequence):
             raise InvalidContactError("contacts: expected a sequence of contacts")
         if not 2 <= len(contacts) <= MAX_CONTACTS:
-            raise InvalidContactError(f"contacts: expected 2 to {MAX_CONTACTS} contacts, got "
-                                      f"{len(contacts)}")
+            raise InvalidContactError(
+                f"contacts: expected 2 to {MAX_CONTACTS} contacts, got {len(contacts)}"
+            )
         cs = [read_contact(c, i + 1) for i, c in enumerate(contacts)]
         try:
             ox, oy = (real_value(v, f"com {k}") for v, k in zip(com, "xy"))
@@ -92,8 +99,15 @@ class NContactGrasp:
             raise InvalidContactError("com: expected a pair of numbers (x, y)")
         self.numeric = any(c.numeric for c in cs) or ox.is_Float or oy.is_Float
         if self.numeric:
-            cs = [Contact(tuple(float(v) for v in c.p), tuple(float(v) for v in c.n),
-                          sp.Float(float(c.mu)), True) for c in cs]
+            cs = [
+                Contact(
+                    tuple(float(v) for v in c.p),
+                    tuple(float(v) for v in c.n),
+                    sp.Float(float(c.mu)),
+                    True,
+                )
+                for c in cs
+            ]
             self.com = (float(ox), float(oy))
         else:
             self.com = (canon(ox), canon(oy))
@@ -223,8 +237,10 @@ class NContactGrasp:
 
     @staticmethod
     def _unbounded() -> UnboundedEffortError:
-        return UnboundedEffortError("the effort can be made arbitrarily negative (its dual "
-                                    "is empty): no least effort exists")
+        return UnboundedEffortError(
+            "the effort can be made arbitrarily negative (its dual "
+            "is empty): no least effort exists"
+        )
 
     def _q_rays(self, rows: list, dets: Any = None) -> list[tuple]:
         """Recession directions of Q: minus the force part of the dual's extreme rays."""
@@ -243,8 +259,12 @@ class NContactGrasp:
         Decided exactly: by Farkas' lemma, iff ``{r : G^T r <= 0} = {0}``.
         """
         if self._closure is None:
-            shared = (self.effort.linear and not self.effort.nonnegative and not self.numeric
-                      and self._polygon is not None)
+            shared = (
+                self.effort.linear
+                and not self.effort.nonnegative
+                and not self.numeric
+                and self._polygon is not None
+            )
             self._q_rays([list(g) for g in self.wrenches()], self._dets if shared else None)
         assert self._closure is not None  # set by _q_rays on the three-row wrenches
         return self._closure
@@ -287,8 +307,13 @@ class NContactGrasp:
                     best, arg = r2, c
             else:
                 r2 = (c.X * c.X + c.Y * c.Y, c.W * c.W)  # |q|² = num / den
-                if best is None or exact_sgn(r2[0] * best[1] - best[0] * r2[1],
-                                             "a difference of squared lengths") > 0:
+                if (
+                    best is None
+                    or exact_sgn(
+                        r2[0] * best[1] - best[0] * r2[1], "a difference of squared lengths"
+                    )
+                    > 0
+                ):
                     best, arg = r2, c
         assert arg is not None  # a bounded Q has vertices
         qx, qy = arg.floats()

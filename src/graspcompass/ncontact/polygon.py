@@ -79,6 +79,7 @@ def float_sgn(scale: float):
     def sgn(v: Any, what: str) -> int:
         v = float(v)
         return 0 if abs(v) <= tol else (1 if v > 0 else -1)
+
     return sgn
 
 
@@ -114,8 +115,13 @@ class InternalForcePolygon:
 
     # -- construction -------------------------------------------------------------
     @classmethod
-    def build(cls, points: list[tuple[Any, Any, Any]], bases: list[tuple], rays: list[tuple],
-              numeric: bool) -> InternalForcePolygon:
+    def build(
+        cls,
+        points: list[tuple[Any, Any, Any]],
+        bases: list[tuple],
+        rays: list[tuple],
+        numeric: bool,
+    ) -> InternalForcePolygon:
         """Q as the hull of homogeneous points ``(X, Y, W)``, W > 0 (float path, max-normal)."""
         if numeric:
             return cls._build_float(points, bases, rays)
@@ -134,13 +140,17 @@ class InternalForcePolygon:
         h = _hull.hull([(c.X, c.Y, c.W) for c in cands], sgn) if cands else []
         if rays:
             hp = [(cands[j].X, cands[j].Y, cands[j].W) for j in h]
-            h = [i for k, i in enumerate(h) if cone is not None and
-                 _hull.open_cones_meet(_normal_cone(hp, k), cone, sgn)]
+            h = [
+                i
+                for k, i in enumerate(h)
+                if cone is not None and _hull.open_cones_meet(_normal_cone(hp, k), cone, sgn)
+            ]
         return cls(cands, h, rays, cone, numeric)
 
     @classmethod
-    def _build_float(cls, points: list[tuple], bases: list[tuple],
-                     rays: list[tuple]) -> InternalForcePolygon:
+    def _build_float(
+        cls, points: list[tuple], bases: list[tuple], rays: list[tuple]
+    ) -> InternalForcePolygon:
         """The float path: relative tolerances per predicate, never a global one.
 
         Near-collinear points are dropped only when within 1e-12 of the relative
@@ -148,8 +158,9 @@ class InternalForcePolygon:
         feasible arc is the max over every hull point (the vertices reported are
         those whose normal cone meets the open feasible cone).
         """
-        P = np.array([(float(p[0]) / float(p[2]), float(p[1]) / float(p[2])) for p in points],
-                     dtype=float).reshape(-1, 2)
+        P = np.array(
+            [(float(p[0]) / float(p[2]), float(p[1]) / float(p[2])) for p in points], dtype=float
+        ).reshape(-1, 2)
         scale = max(1.0, float(np.abs(P).max()) if P.size else 1.0)
         groups: list[list[int]] = []
         for i in range(len(P)):
@@ -159,8 +170,10 @@ class InternalForcePolygon:
                     break
             else:
                 groups.append([i])
-        cands = [Candidate(float(P[g[0], 0]), float(P[g[0], 1]), 1.0,
-                           tuple(bases[i] for i in g)) for g in groups]
+        cands = [
+            Candidate(float(P[g[0], 0]), float(P[g[0], 1]), 1.0, tuple(bases[i] for i in g))
+            for g in groups
+        ]
         h = _float_hull(np.array([(c.X, c.Y) for c in cands]).reshape(-1, 2))
         unit = []
         for r in rays:
@@ -184,8 +197,9 @@ class InternalForcePolygon:
         return out
 
     @classmethod
-    def from_cones(cls, verts: list, rays: list[tuple],
-                   pending: tuple | None = None) -> InternalForcePolygon:
+    def from_cones(
+        cls, verts: list, rays: list[tuple], pending: tuple | None = None
+    ) -> InternalForcePolygon:
         """Q from exact dual vertices with their primal cones (no hull, no quotient).
 
         A dual vertex projects to a vertex of Q iff one of its bases is optimal on
@@ -206,6 +220,7 @@ class InternalForcePolygon:
         for g in groups:
             cones = [m.cone for m in g["members"] if m.cone is not None]
             (active if cones else passive).append((g, cones[0] if cones else None))
+
         def by_cone(a: tuple[dict, tuple], b: tuple[dict, tuple]) -> int:
             return _direction_cmp(a[1][0], b[1][0], sgn)
 
@@ -290,8 +305,9 @@ class InternalForcePolygon:
     def float_vertices(self) -> np.ndarray:
         """The vertices as an array of shape (m, 2) of doubles (correctly rounded)."""
         if self._floats is None:
-            self._floats = np.array([self.candidates[i].floats() for i in self.vertex_index],
-                                    dtype=float).reshape(-1, 2)
+            self._floats = np.array(
+                [self.candidates[i].floats() for i in self.vertex_index], dtype=float
+            ).reshape(-1, 2)
         return self._floats
 
     def _normal_angles(self) -> tuple[np.ndarray, np.ndarray]:
@@ -305,8 +321,10 @@ class InternalForcePolygon:
         return self._alpha, self._order
 
     def _float_rays(self) -> np.ndarray:
-        return np.array([[float(v) if self.numeric else float(approx(v, 20)) for v in r]
-                         for r in self.rays], dtype=float).reshape(-1, 2)
+        return np.array(
+            [[float(v) if self.numeric else float(approx(v, 20)) for v in r] for r in self.rays],
+            dtype=float,
+        ).reshape(-1, 2)
 
     # -- the support function ---------------------------------------------------------
     def support(self, theta: Any, external_force: Any = 1) -> Any:
@@ -324,8 +342,9 @@ class InternalForcePolygon:
     def _support_float(self, t: np.ndarray, fe: float) -> Any:
         V, R = self.float_vertices(), self._float_rays()
         if R.size and self._support_index is not None:  # every hull point, not only vertices
-            V = np.array([self.candidates[i].floats() for i in self._support_index],
-                         dtype=float).reshape(-1, 2)
+            V = np.array(
+                [self.candidates[i].floats() for i in self._support_index], dtype=float
+            ).reshape(-1, 2)
         flat = t.reshape(-1)
         E = np.empty((flat.size, 2))
         np.sin(flat, out=E[:, 0])
@@ -362,8 +381,10 @@ class InternalForcePolygon:
         for k, i in enumerate(self.vertex_index):
             c = self.candidates[i]
             num = canon(c.X * e[0] + c.Y * e[1])  # q·e = num / W, W > 0
-            if best is None or exact_sgn(num * best[1] - best[0] * c.W,
-                                         "a difference of k values") > 0:
+            if (
+                best is None
+                or exact_sgn(num * best[1] - best[0] * c.W, "a difference of k values") > 0
+            ):
                 best, arg = (num, c.W), k
         if best is None:
             return sp.oo, None
@@ -391,8 +412,10 @@ class InternalForcePolygon:
 
 def _equal(a: tuple, b: tuple, sgn: Any) -> bool:
     """Homogeneous points ``(X, Y, W)`` equal (W > 0)."""
-    return (sgn(a[0] * b[2] - b[0] * a[2], "a difference") == 0
-            and sgn(a[1] * b[2] - b[1] * a[2], "a difference") == 0)
+    return (
+        sgn(a[0] * b[2] - b[0] * a[2], "a difference") == 0
+        and sgn(a[1] * b[2] - b[1] * a[2], "a difference") == 0
+    )
 
 
 def _equal_h(a: Candidate, b: Candidate, sgn: Any) -> bool:
@@ -429,6 +452,7 @@ def _normal_cone(poly: list[tuple], k: int) -> tuple:
 
     def edge(a: tuple, b: tuple) -> tuple:  # direction of b - a, scaled by W_a W_b > 0
         return (b[0] * a[2] - a[0] * b[2], b[1] * a[2] - a[1] * b[2])
+
     if m == 2:
         u = edge(poly[k], poly[1 - k])
         return ((-u[1], u[0]), (u[1], -u[0]))
@@ -438,8 +462,10 @@ def _normal_cone(poly: list[tuple], k: int) -> tuple:
 
 
 def _same_direction(a: tuple, b: tuple) -> bool:
-    return (exact_sgn(a[0] * b[1] - a[1] * b[0], "an orientation") == 0
-            and exact_sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0)
+    return (
+        exact_sgn(a[0] * b[1] - a[1] * b[0], "an orientation") == 0
+        and exact_sgn(a[0] * b[0] + a[1] * b[1], "a dot product") > 0
+    )
 
 
 def covers(cones: list[tuple], feasible: tuple | None) -> bool:

@@ -93,8 +93,9 @@ def _unit_length(unit: str | None, default: float) -> float:
     return value
 
 
-def _polygon(rings: list[tuple[str, list[tuple[float, float]]]], where: str,
-             element: str | None) -> Any:
+def _polygon(
+    rings: list[tuple[str, list[tuple[float, float]]]], where: str, element: str | None
+) -> Any:
     from shapely.geometry import Polygon
     from shapely.geometry.polygon import orient
 
@@ -103,48 +104,60 @@ def _polygon(rings: list[tuple[str, list[tuple[float, float]]]], where: str,
         if not rings:
             raise OutlineError(f"{where}: no closed shape with the id or handle {element!r}")
     if not rings:
-        raise OutlineError(f"{where}: no closed shape (an outline must be a closed path, "
-                           "polygon, rectangle, circle or closed polyline)")
+        raise OutlineError(
+            f"{where}: no closed shape (an outline must be a closed path, "
+            "polygon, rectangle, circle or closed polyline)"
+        )
     polys = []
     for name, pts in rings:
         if len(pts) > MAX_VERTICES:
-            raise InputTooLargeError(f"{where}: the outline {name!r} has {len(pts)} vertices "
-                                     f"after flattening; at most {MAX_VERTICES}")
+            raise InputTooLargeError(
+                f"{where}: the outline {name!r} has {len(pts)} vertices "
+                f"after flattening; at most {MAX_VERTICES}"
+            )
         poly = Polygon(pts)
         polys.append((poly.area if poly.is_valid else -1.0, name, poly))
     area, name, poly = max(polys, key=lambda t: t[0])
     if area <= 0 or not poly.is_valid:
-        raise OutlineError(f"{where}: the outline {name!r} is not a simple closed shape with "
-                           "area (it crosses itself or is degenerate)")
+        raise OutlineError(
+            f"{where}: the outline {name!r} is not a simple closed shape with "
+            "area (it crosses itself or is degenerate)"
+        )
     return orient(poly, 1.0)
 
 
 # -- SVG ------------------------------------------------------------------------------------
-def _svg_rings(data: bytes, tolerance: float, where: str
-               ) -> list[tuple[str, list[tuple[float, float]]]]:
+def _svg_rings(
+    data: bytes, tolerance: float, where: str
+) -> list[tuple[str, list[tuple[float, float]]]]:
     try:
         from svgelements import SVG, Close, Line, Move, Path, Shape
     except ImportError:
-        raise MissingExtraError("reading SVG needs the optional extra graspcompass[outlines] "
-                                "(pip install 'graspcompass[outlines]')") from None
+        raise MissingExtraError(
+            "reading SVG needs the optional extra graspcompass[outlines] "
+            "(pip install 'graspcompass[outlines]')"
+        ) from None
     check_use_expansion(data, where)  # data: svg_utf8's, without a DTD
     try:
         svg = SVG.parse(io.BytesIO(data))
         shapes = [e for e in svg.elements() if isinstance(e, Shape)]
     except Exception as exc:  # a malformed file: svgelements raises many kinds
-        raise InputError(f"not a readable SVG file: {type(exc).__name__}: "
-                         f"{str(exc)[:120]}") from None
+        raise InputError(
+            f"not a readable SVG file: {type(exc).__name__}: {str(exc)[:120]}"
+        ) from None
     try:
         return _svg_shape_rings(shapes, tolerance, where, Close, Line, Move, Path)
     except (GraspCompassError, MemoryError):
         raise
     except Exception as exc:  # svgelements on degenerate shapes (a zero scale, ...)
-        raise InputError(f"{where}: cannot read the SVG's shapes: {type(exc).__name__}: "
-                         f"{str(exc)[:120]}") from None
+        raise InputError(
+            f"{where}: cannot read the SVG's shapes: {type(exc).__name__}: {str(exc)[:120]}"
+        ) from None
 
 
-def _svg_shape_rings(shapes: list, tolerance: float, where: str, Close: Any, Line: Any,
-                     Move: Any, Path: Any) -> list[tuple[str, list[tuple[float, float]]]]:
+def _svg_shape_rings(
+    shapes: list, tolerance: float, where: str, Close: Any, Line: Any, Move: Any, Path: Any
+) -> list[tuple[str, list[tuple[float, float]]]]:
     boxes = [Path(s).bbox() for s in shapes]
     boxes = [b for b in boxes if b is not None]
     check_coordinates([v for b in boxes for v in b], where)
@@ -173,8 +186,9 @@ def _svg_shape_rings(shapes: list, tolerance: float, where: str, Close: Any, Lin
                 pts.append((float(seg.end.x), float(seg.end.y)))
             else:
                 n = _chords(seg, step)
-                pts += [(float(p.x), float(p.y)) for p in
-                        (seg.point(i / n) for i in range(1, n + 1))]
+                pts += [
+                    (float(p.x), float(p.y)) for p in (seg.point(i / n) for i in range(1, n + 1))
+                ]
     return rings
 
 
@@ -186,8 +200,7 @@ def _chords(seg: Any, step: float) -> int:
     return max(2, min(10_000, math.ceil(length / chord) + 1))
 
 
-_WIDTH = re.compile(rb"<svg\b[^>]*?\bwidth\s*=\s*[\"']\s*[0-9.eE+-]+\s*(mm|cm|m)?\s*[\"']",
-                    re.S)
+_WIDTH = re.compile(rb"<svg\b[^>]*?\bwidth\s*=\s*[\"']\s*[0-9.eE+-]+\s*(mm|cm|m)?\s*[\"']", re.S)
 
 
 def _svg_px(data: bytes) -> float:
@@ -203,15 +216,18 @@ def _svg_px(data: bytes) -> float:
 
 
 # -- DXF ------------------------------------------------------------------------------------
-def _dxf_rings(data: bytes, tolerance: float, where: str
-               ) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
+def _dxf_rings(
+    data: bytes, tolerance: float, where: str
+) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
     try:
         import ezdxf
         from ezdxf import path as dxfpath
         from ezdxf import recover
     except ImportError:
-        raise MissingExtraError("reading DXF needs the optional extra graspcompass[outlines] "
-                                "(pip install 'graspcompass[outlines]')") from None
+        raise MissingExtraError(
+            "reading DXF needs the optional extra graspcompass[outlines] "
+            "(pip install 'graspcompass[outlines]')"
+        ) from None
     import logging
     import warnings
 
@@ -226,31 +242,37 @@ def _dxf_rings(data: bytes, tolerance: float, where: str
     except (GraspCompassError, MemoryError):
         raise
     except Exception as exc:  # ezdxf on degenerate entities
-        raise InputError(f"{where}: cannot read the DXF's entities: {type(exc).__name__}: "
-                         f"{str(exc)[:120]}") from None
+        raise InputError(
+            f"{where}: cannot read the DXF's entities: {type(exc).__name__}: {str(exc)[:120]}"
+        ) from None
     finally:
         log.setLevel(level)
         log.propagate = log_propagates
 
 
-def _dxf_read(data: bytes, tolerance: float, where: str, ezdxf: Any, dxfpath: Any,
-              recover: Any) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
+def _dxf_read(
+    data: bytes, tolerance: float, where: str, ezdxf: Any, dxfpath: Any, recover: Any
+) -> tuple[list[tuple[str, list[tuple[float, float]]]], int]:
     try:
         doc, _ = recover.read(io.BytesIO(data))
     except Exception as exc:  # ezdxf raises DXFStructureError and others
-        raise InputError(f"not a readable DXF file: {type(exc).__name__}: "
-                         f"{str(exc)[:120]}") from None
+        raise InputError(
+            f"not a readable DXF file: {type(exc).__name__}: {str(exc)[:120]}"
+        ) from None
     try:
         insunits = int(doc.header.get("$INSUNITS", 0) or 0)
     except (TypeError, ValueError):
-        raise InputError(f"{where}: $INSUNITS {doc.header.get('$INSUNITS')!r} is not a unit "
-                         "code") from None
+        raise InputError(
+            f"{where}: $INSUNITS {doc.header.get('$INSUNITS')!r} is not a unit code"
+        ) from None
     entities = []
     for e in doc.modelspace():
         kind = e.dxftype()
-        closed = (kind in ("CIRCLE", "ELLIPSE") or
-                  (kind in ("LWPOLYLINE", "POLYLINE") and e.is_closed) or
-                  (kind == "SPLINE" and e.closed))
+        closed = (
+            kind in ("CIRCLE", "ELLIPSE")
+            or (kind in ("LWPOLYLINE", "POLYLINE") and e.is_closed)
+            or (kind == "SPLINE" and e.closed)
+        )
         if closed:
             entities.append(e)
     paths = []
@@ -280,8 +302,13 @@ def _dxf_read(data: bytes, tolerance: float, where: str, ezdxf: Any, dxfpath: An
     return rings, insunits
 
 
-def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
-                 tolerance: float = DEFAULT_TOLERANCE, element: str | None = None) -> Any:
+def read_outline(
+    path: str | os.PathLike[str],
+    *,
+    unit: str | None = None,
+    tolerance: float = DEFAULT_TOLERANCE,
+    element: str | None = None,
+) -> Any:
     """The closed outline of a part in an SVG or DXF file, in metres, y up.
 
     Parameters
@@ -314,10 +341,12 @@ def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
         beyond the limits.
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise WrongTypeError(f"path: expected a file name (str or pathlib.Path), got "
-                             f"{type(path).__name__}")
-    if isinstance(tolerance, bool) or not (isinstance(tolerance, (int, float))
-                                           and 1e-9 <= tolerance <= 0.1):
+        raise WrongTypeError(
+            f"path: expected a file name (str or pathlib.Path), got {type(path).__name__}"
+        )
+    if isinstance(tolerance, bool) or not (
+        isinstance(tolerance, (int, float)) and 1e-9 <= tolerance <= 0.1
+    ):
         raise InputError(f"tolerance {tolerance!r} must be a number from 1e-9 to 0.1")
     suffix = Path(path).suffix.lower()
     if suffix not in (".svg", ".dxf"):
@@ -348,11 +377,16 @@ def read_outline(path: str | os.PathLike[str], *, unit: str | None = None,
 def _dxf_scale(insunits: int, where: str, dxfunits: Any) -> float:
     """Metres per unit of the DXF's ``$INSUNITS`` code (1 to 24), or InputError."""
     try:
-        scale = float(dxfunits.conversion_factor(insunits, dxfunits.M)) if 0 < insunits <= 24 \
+        scale = (
+            float(dxfunits.conversion_factor(insunits, dxfunits.M))
+            if 0 < insunits <= 24
             else math.nan
+        )
     except (TypeError, ValueError, IndexError, KeyError):
         scale = math.nan
     if not (math.isfinite(scale) and scale > 0):
-        raise InputError(f"{where}: $INSUNITS {insunits} is not a length unit this reader "
-                         "knows (1 to 24, see the DXF reference): give unit=, --shape-unit")
+        raise InputError(
+            f"{where}: $INSUNITS {insunits} is not a length unit this reader "
+            "knows (1 to 24, see the DXF reference): give unit=, --shape-unit"
+        )
     return scale

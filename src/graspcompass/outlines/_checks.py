@@ -35,9 +35,17 @@ from typing import Any
 
 from ..boundary.errors import InputError, InputTooLargeError
 
-__all__ = ["EXTENT_METRES", "MAX_COORDINATE", "MAX_SVG_ELEMENTS", "MAX_VERTICES",
-           "check_coordinates", "check_extent", "check_use_expansion", "chord_budget",
-           "svg_utf8"]
+__all__ = [
+    "EXTENT_METRES",
+    "MAX_COORDINATE",
+    "MAX_SVG_ELEMENTS",
+    "MAX_VERTICES",
+    "check_coordinates",
+    "check_extent",
+    "check_use_expansion",
+    "chord_budget",
+    "svg_utf8",
+]
 
 #: Most elements of an SVG with every ``<use>`` expanded.
 MAX_SVG_ELEMENTS = 100_000
@@ -48,9 +56,13 @@ MAX_VERTICES = 200_000
 #: Smallest and largest size (the larger side of the bounding box) of a part, in metres.
 EXTENT_METRES = (1e-9, 1e6)
 
-_BOMS = ((codecs.BOM_UTF32_LE, "utf-32-le"), (codecs.BOM_UTF32_BE, "utf-32-be"),
-         (codecs.BOM_UTF8, "utf-8"), (codecs.BOM_UTF16_LE, "utf-16-le"),
-         (codecs.BOM_UTF16_BE, "utf-16-be"))
+_BOMS = (
+    (codecs.BOM_UTF32_LE, "utf-32-le"),
+    (codecs.BOM_UTF32_BE, "utf-32-be"),
+    (codecs.BOM_UTF8, "utf-8"),
+    (codecs.BOM_UTF16_LE, "utf-16-le"),
+    (codecs.BOM_UTF16_BE, "utf-16-be"),
+)
 _DECL = re.compile(r"""^\s*<\?xml[^>]*?\bencoding\s*=\s*["']([A-Za-z0-9._-]+)["'][^>]*\?>""")
 _XML_DECL = re.compile(r"^\s*<\?xml[^>]*\?>")
 
@@ -87,10 +99,11 @@ def svg_utf8(data: bytes) -> bytes:
         raise InputError(f"the SVG is not readable {name} text (byte {exc.start})") from None
     low = text.lower()
     doctype = low.find("<!doctype")
-    subset = doctype >= 0 and "[" in low[doctype:low.find(">", doctype) + 1 or None]
+    subset = doctype >= 0 and "[" in low[doctype : low.find(">", doctype) + 1 or None]
     if subset or any(word in low for word in ("<!entity", "<!element", "<!attlist")):
-        raise InputError("the SVG declares entities (a DOCTYPE with an internal subset, "
-                         "<!ENTITY ...>): refused")
+        raise InputError(
+            "the SVG declares entities (a DOCTYPE with an internal subset, <!ENTITY ...>): refused"
+        )
     return _XML_DECL.sub("", text, count=1).encode("utf-8")
 
 
@@ -138,8 +151,10 @@ def check_use_expansion(text: bytes, where: str) -> None:
     finally:
         sys.setrecursionlimit(depth)
     if n > MAX_SVG_ELEMENTS:
-        raise InputTooLargeError(f"{where}: the SVG has more than {MAX_SVG_ELEMENTS} elements "
-                                 "once its <use> elements are expanded")
+        raise InputTooLargeError(
+            f"{where}: the SVG has more than {MAX_SVG_ELEMENTS} elements "
+            "once its <use> elements are expanded"
+        )
 
 
 def check_coordinates(values: Any, where: str) -> None:
@@ -147,8 +162,10 @@ def check_coordinates(values: Any, where: str) -> None:
     for v in values:
         v = float(v)
         if not (math.isfinite(v) and abs(v) <= MAX_COORDINATE):
-            raise InputError(f"{where}: a coordinate {v:g} is beyond {MAX_COORDINATE:g} drawing "
-                             "units (or not finite): give the drawing in other units")
+            raise InputError(
+                f"{where}: a coordinate {v:g} is beyond {MAX_COORDINATE:g} drawing "
+                "units (or not finite): give the drawing in other units"
+            )
 
 
 class chord_budget:
@@ -162,12 +179,15 @@ class chord_budget:
         if self.used > MAX_VERTICES:
             raise InputTooLargeError(
                 f"{self.where}: flattening the drawing's curves needs more than {MAX_VERTICES} "
-                "vertices (a larger tolerance, or fewer curves)")
+                "vertices (a larger tolerance, or fewer curves)"
+            )
 
 
 def check_extent(size_m: float, where: str) -> None:
     """Refuse a part whose size in metres is outside :data:`EXTENT_METRES`."""
     lo, hi = EXTENT_METRES
     if not (math.isfinite(size_m) and lo <= size_m <= hi):
-        raise InputError(f"{where}: the part would be {size_m:g} m across, outside {lo:g} m to "
-                         f"{hi:g} m: check the drawing's unit (unit=, --shape-unit)")
+        raise InputError(
+            f"{where}: the part would be {size_m:g} m across, outside {lo:g} m to "
+            f"{hi:g} m: check the drawing's unit (unit=, --shape-unit)"
+        )

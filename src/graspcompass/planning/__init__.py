@@ -101,8 +101,9 @@ def _ring(outline: Any) -> tuple[np.ndarray, tuple[float, float]]:
         from shapely.geometry import Polygon
         from shapely.geometry.polygon import orient
     except ImportError:  # pragma: no cover - shapely comes with the outlines extra
-        raise InputError("planning on an outline needs shapely: pip install "
-                         "'graspcompass[outlines]'") from None
+        raise InputError(
+            "planning on an outline needs shapely: pip install 'graspcompass[outlines]'"
+        ) from None
     if hasattr(outline, "geom_type"):
         if outline.geom_type != "Polygon":
             raise OutlineError(f"expected a polygon outline, got a {outline.geom_type}")
@@ -111,8 +112,7 @@ def _ring(outline: Any) -> tuple[np.ndarray, tuple[float, float]]:
         try:
             pts = [(float(x), float(y)) for x, y in outline]
         except (TypeError, ValueError) as exc:
-            raise OutlineError(f"outline: expected a sequence of (x, y) vertices ({exc})"
-                               ) from None
+            raise OutlineError(f"outline: expected a sequence of (x, y) vertices ({exc})") from None
         if len(pts) < 3:
             raise OutlineError(f"outline: expected at least 3 vertices, got {len(pts)}")
         poly = Polygon(pts)
@@ -120,15 +120,17 @@ def _ring(outline: Any) -> tuple[np.ndarray, tuple[float, float]]:
     if not np.isfinite(coords).all():
         raise OutlineError("outline: the vertices must be finite numbers")
     if poly.is_empty or not poly.is_valid or not poly.area > 0:
-        raise OutlineError("outline: not a simple closed polygon with an area (it crosses "
-                           "itself, or has no area)")
+        raise OutlineError(
+            "outline: not a simple closed polygon with an area (it crosses itself, or has no area)"
+        )
     poly = orient(poly, 1.0)
     c = poly.centroid
     return np.asarray(poly.exterior.coords, float), (float(c.x), float(c.y))
 
 
-def sample_contacts(outline: Any, samples: int = DEFAULT_SAMPLES
-                    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def sample_contacts(
+    outline: Any, samples: int = DEFAULT_SAMPLES
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Contact points spread evenly along an outline, with their edges' inward normals.
 
     The perimeter is divided into ``samples`` equal lengths; edge ``e`` gets
@@ -218,8 +220,16 @@ def pair_frames(pa: Any, na: Any, pb: Any, nb: Any, com: Any) -> dict[str, np.nd
     x1, x2, y = dot(p1 - c, ex), dot(c - p2, ex), np.abs(dot(p1 - c, ey))
     phi1 = np.arctan2(-dot(n1, ex), -dot(n1, ey))
     phi2 = np.arctan2(dot(n2, ex), -dot(n2, ey))
-    return {"x1": x1, "x2": x2, "y": y, "phi1": phi1, "phi2": phi2, "swapped": swapped,
-            "ex_x": ex[..., 0], "ex_y": ex[..., 1]}
+    return {
+        "x1": x1,
+        "x2": x2,
+        "y": y,
+        "phi1": phi1,
+        "phi2": phi2,
+        "swapped": swapped,
+        "ex_x": ex[..., 0],
+        "ex_y": ex[..., 1],
+    }
 
 
 def _positive(v: Any, what: str, strict: bool = True) -> float:
@@ -232,10 +242,22 @@ def _positive(v: Any, what: str, strict: bool = True) -> float:
     return x
 
 
-def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = DEFAULT_SAMPLES,
-                  com: Sequence[float] | None = None, g: float = 9.80665, accel: float = 0.0,
-                  safety: float = 1.0, per: str = "jaw", gravity: Sequence[float] | None = None,
-                  tilt: Any = None, exact: int = 3, tol: float = DEFAULT_TOL) -> PlanResult:
+def plan_contacts(
+    outline: Any,
+    *,
+    mu: float,
+    mass: float = 1.0,
+    samples: int = DEFAULT_SAMPLES,
+    com: Sequence[float] | None = None,
+    g: float = 9.80665,
+    accel: float = 0.0,
+    safety: float = 1.0,
+    per: str = "jaw",
+    gravity: Sequence[float] | None = None,
+    tilt: Any = None,
+    exact: int = 3,
+    tol: float = DEFAULT_TOL,
+) -> PlanResult:
     """Rank the contact pairs of an outline by the squeeze that holds it in any orientation.
 
     For every pair of :func:`sample_contacts` points, the squeeze
@@ -295,8 +317,9 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     pairs = samples * (samples - 1) // 2
     if pairs > MAX_PAIRS:
         most = int((1 + math.isqrt(1 + 8 * MAX_PAIRS)) // 2)
-        raise InputTooLargeError(f"samples {samples} give {pairs} pairs; at most {MAX_PAIRS} "
-                                 f"(samples <= {most})")
+        raise InputTooLargeError(
+            f"samples {samples} give {pairs} pairs; at most {MAX_PAIRS} (samples <= {most})"
+        )
     if per not in _PER:
         raise InputError(f"per: expected 'jaw' or 'total', got {per!r}")
     mu_, mass_ = _positive(mu, "mu"), _positive(mass, "mass")
@@ -324,20 +347,33 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
     fr = pair_frames(points[i], normals[i], points[j], normals[j], c)
     from .. import batch
 
-    squeeze = batch.worst_squeeze(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
-                                  mass_, g=g_, accel=a_, safety=sf, per=per, on_invalid="nan")
+    squeeze = batch.worst_squeeze(
+        fr["x1"],
+        fr["x2"],
+        fr["y"],
+        fr["phi1"],
+        fr["phi2"],
+        mu_,
+        mu_,
+        mass_,
+        g=g_,
+        accel=a_,
+        safety=sf,
+        per=per,
+        on_invalid="nan",
+    )
     factor = sf * mass_ * (1.0 if per == "jaw" else 2.0)
     if not load.any_orientation:
         squeeze = _tilted(fr, mu_, load) * factor
     # condition (1) with the float path's margin (a cone side within 1e-12 rad of the other
     # contact is not force-closure: its squeeze would be ~1e16 N, rounding noise)
-    valid = batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_,
-                        margin=1e-12)
+    valid = batch.valid(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu_, mu_, margin=1e-12)
     overflow = valid & np.isinf(squeeze)
     if overflow.any():  # force-closure pairs whose squeeze is beyond a double: say so
         raise NonFiniteValueError(
             f"the squeeze of {int(overflow.sum())} force-closure pairs is beyond double "
-            "precision (1.8e308 N): give the mass, g or the acceleration in other units")
+            "precision (1.8e308 N): give the mass, g or the acceleration in other units"
+        )
     fc = np.isfinite(squeeze) & valid
     squeeze = np.where(fc, squeeze, np.nan)
     if not fc.any():
@@ -345,23 +381,38 @@ def plan_contacts(outline: Any, *, mu: float, mass: float = 1.0, samples: int = 
         raise NotForceClosureError(
             f"none of the {len(i)} pairs of the {len(points)} contacts sampled is force-closure "
             f"with μ = {mu_:g} (condition (1): each friction cone must contain the other "
-            f"contact){need}")
+            f"contact){need}"
+        )
     ok = np.flatnonzero(fc)
     order = ok[np.argsort(squeeze[ok], kind="stable")]
     frames = {k: _readonly(v, bool if k == "swapped" else float) for k, v in fr.items()}
-    plan = PlanResult(_readonly(ring), (float(c[0]), float(c[1])), mu_, mass_, g_, per,
-                      _readonly(points), _readonly(normals), _readonly(edges, np.int64),
-                      _readonly(i, np.int64), _readonly(j, np.int64), _readonly(squeeze),
-                      _readonly(fc, bool), _readonly(order, np.int64), frames,
-                      gravity=load.gravity, tilt=None if load.gravity is None else load.tau)
+    plan = PlanResult(
+        _readonly(ring),
+        (float(c[0]), float(c[1])),
+        mu_,
+        mass_,
+        g_,
+        per,
+        _readonly(points),
+        _readonly(normals),
+        _readonly(edges, np.int64),
+        _readonly(i, np.int64),
+        _readonly(j, np.int64),
+        _readonly(squeeze),
+        _readonly(fc, bool),
+        _readonly(order, np.int64),
+        frames,
+        gravity=load.gravity,
+        tilt=None if load.gravity is None else load.tau,
+    )
     if exact:
-        plan = dataclasses.replace(plan, exact=refine_plan(plan, int(exact), load, factor, tol_,
-                                                           plan.orientations()))
+        plan = dataclasses.replace(
+            plan, exact=refine_plan(plan, int(exact), load, factor, tol_, plan.orientations())
+        )
     return plan
 
 
-def _load(g: float, a: float, gravity: Any, tilt: Any, mass: float, sf: float, per: str
-          ) -> Load:
+def _load(g: float, a: float, gravity: Any, tilt: Any, mass: float, sf: float, per: str) -> Load:
     """The orientations asked, read as :func:`graspcompass.size_gripper` reads them."""
     if gravity is None and tilt is None:
         return Load(g, a)
@@ -379,8 +430,9 @@ def _tilted(fr: dict[str, np.ndarray], mu: float, load: Load) -> np.ndarray:
     from .. import batch
     from ..sizing._arc import arc_max_many
 
-    S, C = batch.closed_form(fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu, mu,
-                             on_invalid="nan")
+    S, C = batch.closed_form(
+        fr["x1"], fr["x2"], fr["y"], fr["phi1"], fr["phi2"], mu, mu, on_invalid="nan"
+    )
     ex, ey = fr["ex_x"][..., None], fr["ex_y"][..., None]
     vx, vy = S * ex - C * ey, S * ey + C * ex  # V_n = S_n e_x + C_n e_y, e_y = J e_x
     w = (load.g * load.gravity[0], load.g * load.gravity[1])  # type: ignore[index]

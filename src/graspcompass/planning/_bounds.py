@@ -49,23 +49,29 @@ class _Bounds:
     """
 
     def __init__(self, pair: EdgePair, load: Load) -> None:
-        a0, ea, b0, eb, o = (tuple(_pt(v) for v in p) for p in (pair.a0, pair.ea, pair.b0,
-                                                                  pair.eb, pair.com))
+        a0, ea, b0, eb, o = (
+            tuple(_pt(v) for v in p) for p in (pair.a0, pair.ea, pair.b0, pair.eb, pair.com)
+        )
         if pair.a1 is not None and pair.b1 is not None:  # the exact differences, enclosed
             ea = tuple(_sub(_pt(pair.a1[k]), a0[k]) for k in (0, 1))
             eb = tuple(_sub(_pt(pair.b1[k]), b0[k]) for k in (0, 1))
         zero = (_pt(0.0), _pt(0.0))
         d = _vec((_sub(a0[0], b0[0]), _sub(a0[1], b0[1])), ea, (_neg(eb[0]), _neg(eb[1])))
-        r = (_vec((_sub(a0[0], o[0]), _sub(a0[1], o[1])), ea, zero),
-             _vec((_sub(b0[0], o[0]), _sub(b0[1], o[1])), zero, eb))
+        r = (
+            _vec((_sub(a0[0], o[0]), _sub(a0[1], o[1])), ea, zero),
+            _vec((_sub(b0[0], o[0]), _sub(b0[1], o[1])), zero, eb),
+        )
         mu = _pt(pair.mu)
         nums, dens, rjs = [], [], []
         for (i, sgn), sig in zip(_SIDES, _SIGN):
             e = ea if i == 0 else eb
             n = (_neg(e[1]), e[0])
             me = (_mul(mu, e[0]), _mul(mu, e[1]))
-            c = (_add(n[0], me[0]), _add(n[1], me[1])) if sgn > 0 else (
-                _sub(n[0], me[0]), _sub(n[1], me[1]))
+            c = (
+                (_add(n[0], me[0]), _add(n[1], me[1]))
+                if sgn > 0
+                else (_sub(n[0], me[0]), _sub(n[1], me[1]))
+            )
             num, den = _lin(d, c, "dot"), _lin(d, c, "cross")
             if sig < 0:
                 num, den = num.neg(), den.neg()
@@ -98,12 +104,15 @@ class _Bounds:
             den2 = (_sq_lo(dd), _sq_hi(dd))
             for k in ("fs", "ft"):
                 # κ' = (num' den − num den') / den²;  V' = h d'/2 − κ' J r − κ J r'
-                kp = _div_pos(_sub(_mul(getattr(self.num, k), dd),
-                                   _mul(nn, getattr(self.den, k))), den2)
+                kp = _div_pos(
+                    _sub(_mul(getattr(self.num, k), dd), _mul(nn, getattr(self.den, k))), den2
+                )
                 dk = (getattr(self.d[0], k), getattr(self.d[1], k))
                 jrk = _J((getattr(self.rj[0], k), getattr(self.rj[1], k)))
-                out[k] = _vadd(_vadd((_half(dk[0], self.h), _half(dk[1], self.h)),
-                                     _vscale(_neg(kp), jr)), _vscale(_neg(kappa), jrk))
+                out[k] = _vadd(
+                    _vadd((_half(dk[0], self.h), _half(dk[1], self.h)), _vscale(_neg(kp), jr)),
+                    _vscale(_neg(kappa), jrk),
+                )
             out["strict"] = dd[0] > 0
         return d, _norm(d), out
 
@@ -120,8 +129,9 @@ class _Bounds:
         # |V| >= |κ||r_j| − |d|/2: bounded away from 0 where two edges meet at a vertex
         # |κ| from its interval (unbounded near the boundary of (1)), at least cot 2ξ
         kap = f["kappa"]
-        kmag = np.maximum(np.where(kap[0] > 0, kap[0], np.where(kap[1] < 0, -kap[1], 0.0)),
-                          self.kmin)
+        kmag = np.maximum(
+            np.where(kap[0] > 0, kap[0], np.where(kap[1] < 0, -kap[1], 0.0)), self.kmin
+        )
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             norm_lo = np.maximum(norm_lo, _dn(_dn(kmag * f["rnorm"][0]) - _up(l4[1] * 0.5)))
             natural = _over_length(self._top(v, norm_lo), l4)
@@ -131,8 +141,7 @@ class _Bounds:
                 joint = _dn(_dn(k / l4[1][0]) - 0.5) * _dn(np.float64(ld.g) + np.float64(ld.accel))
                 natural = np.maximum(natural, np.where(np.isnan(joint), -np.inf, joint)[None])
             if not ld.any_orientation:
-                natural = np.maximum(natural, _over_length(
-                    self._blow(d, f, norm_lo, l4, s, t), l4))
+                natural = np.maximum(natural, _over_length(self._blow(d, f, norm_lo, l4, s, t), l4))
             # the mean-value form of φ = V·U/|d| around the centre
             vc = fc["v"]
             cx, cy = (vc[0][0] + vc[0][1]) / 2, (vc[1][0] + vc[1][1]) / 2
@@ -153,14 +162,15 @@ class _Bounds:
             l2 = (_sq_lo(l4), _sq_hi(l4))
             vu = _dot(v, Ui)
             steps, grads = [], []
-            for key, step in (("fs", (_dn(s[0] - sc), _up(s[1] - sc))),
-                              ("ft", (_dn(t[0] - tc), _up(t[1] - tc)))):
+            for key, step in (
+                ("fs", (_dn(s[0] - sc), _up(s[1] - sc))),
+                ("ft", (_dn(t[0] - tc), _up(t[1] - tc))),
+            ):
                 # φ' = V'·U/|d| − (V·U) |d|'/|d|²,  |d|' = d·d'/|d|
                 dk = (getattr(self.d[0], key), getattr(self.d[1], key))
                 lk = _div_pos(_dot(d, dk), length)
                 lk = (lk[0][None], lk[1][None])
-                grads.append(_sub(_div_pos(_dot(f[key], Ui), l4),
-                                  _div_pos(_mul(vu, lk), l2)))
+                grads.append(_sub(_div_pos(_dot(f[key], Ui), l4), _div_pos(_mul(vu, lk), l2)))
                 steps.append((step[0][None], step[1][None]))
             ok = f["strict"] & (l4[0] > 0) & (nc > 0) & np.isfinite(phic[0])
             for g_ in grads:
@@ -175,16 +185,24 @@ class _Bounds:
                 ps = np.concatenate([p_[0] for p_ in pts])  # corner j of box i at j·n + i
                 pt = np.concatenate([p_[1] for p_ in pts])
                 kk = np.tile(k, len(pts))
-                st_ = [((_dn(p_ - c_[kk])[None], _up(p_ - c_[kk])[None]))
-                       for p_, c_ in ((ps, sc), (pt, tc))]
-                val = _forms((phic[0][:, kk], phic[1][:, kk]),
-                             [((g[0][:, kk], g[1][:, kk])) for g in grads], st_, ok[:, kk])
+                st_ = [
+                    ((_dn(p_ - c_[kk])[None], _up(p_ - c_[kk])[None]))
+                    for p_, c_ in ((ps, sc), (pt, tc))
+                ]
+                val = _forms(
+                    (phic[0][:, kk], phic[1][:, kk]),
+                    [((g[0][:, kk], g[1][:, kk])) for g in grads],
+                    st_,
+                    ok[:, kk],
+                )
                 val = np.where(np.isnan(ps), np.inf, val).reshape(10, len(pts), k.size)
                 least = val.min(axis=1)
-                forms[:, k] = np.maximum(forms[:, k], np.where(np.isfinite(least), least,
-                                                               forms[:, k]))
-            best = np.maximum(np.where(np.isnan(natural), -np.inf, natural).max(axis=0),
-                              forms.max(axis=0))
+                forms[:, k] = np.maximum(
+                    forms[:, k], np.where(np.isfinite(least), least, forms[:, k])
+                )
+            best = np.maximum(
+                np.where(np.isnan(natural), -np.inf, natural).max(axis=0), forms.max(axis=0)
+            )
         if not ld.any_orientation:
             best = np.maximum(best, 0.0)
         self.straddle = straddle
@@ -201,8 +219,10 @@ class _Bounds:
         den = self.den
         lines = []
         for n in range(4):
-            a, b, c = ((getattr(den, k)[0][n, 0] + getattr(den, k)[1][n, 0]) / 2
-                       for k in ("f0", "fs", "ft"))
+            a, b, c = (
+                (getattr(den, k)[0][n, 0] + getattr(den, k)[1][n, 0]) / 2
+                for k in ("f0", "fs", "ft")
+            )
             size = abs(a) + abs(b) + abs(c)
             lines.append((a + 1e-12 * size, b, c, size))
         pts = [(s[i], t[j]) for i in (0, 1) for j in (0, 1)]
@@ -226,8 +246,9 @@ class _Bounds:
             out.append((np.where(good, ps, np.nan), np.where(good, pt, np.nan)))
         return out
 
-    def _blow(self, d: tuple, f: dict, norm_lo: np.ndarray, l4: tuple, s: tuple, t: tuple
-              ) -> np.ndarray:
+    def _blow(
+        self, d: tuple, f: dict, norm_lo: np.ndarray, l4: tuple, s: tuple, t: tuple
+    ) -> np.ndarray:
         """A lower bound of ``M_n + A|V_n|`` that sees κ_n grow without bound, per side.
 
         With ``V = h d/2 − κ J r`` and a tilt ρ (``w = R_ρ g ĝ``; ``M >= V·w``):
@@ -249,8 +270,10 @@ class _Bounds:
             jw = _dot(jr, w)
             pos = _sub(base, _mul(kap, jw))
             best = np.maximum(best, _dn(pos[0] + _dn(A * norm_lo)))
-            for sel, x in ((kap[0] >= 0, _sub((arl, arh), jw)),
-                           (kap[1] <= 0, _sub(_neg(jw), (arl, arh)))):
+            for sel, x in (
+                (kap[0] >= 0, _sub((arl, arh), jw)),
+                (kap[1] <= 0, _sub(_neg(jw), (arl, arh))),
+            ):
                 b = _sub(_add(base, _mul(kap, x)), (dl, dl))[0]
                 best = np.where(sel, np.maximum(best, b), best)
         return best
@@ -338,8 +361,9 @@ class _Vertex:
         def form(f: Any) -> tuple:
             fs = (f.fs[0] * sa, f.fs[1] * sa) if sa > 0 else (-f.fs[1], -f.fs[0])
             ft = (f.ft[0] * sb, f.ft[1] * sb) if sb > 0 else (-f.ft[1], -f.ft[0])
-            return _add(_mul((one[0][None], one[1][None]), fs),
-                        _mul((lam[0][None], lam[1][None]), ft))
+            return _add(
+                _mul((one[0][None], one[1][None]), fs), _mul((lam[0][None], lam[1][None]), ft)
+            )
 
         with np.errstate(all="ignore"):
             kap = _div_pos(form(num), form(den))
@@ -376,8 +400,9 @@ def _over_length(x: np.ndarray, l4: tuple) -> np.ndarray:
 def _forms(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:
     """The mean-value forms' lower ends, per side (4 rows) and per pair of sides (6 rows)."""
     mv = _add(_add(phic, _mul(steps[0], grads[0])), _mul(steps[1], grads[1]))[0]
-    return np.concatenate([np.where(ok & ~np.isnan(mv), mv, -np.inf),
-                           _pairs(phic, grads, steps, ok)])
+    return np.concatenate(
+        [np.where(ok & ~np.isnan(mv), mv, -np.inf), _pairs(phic, grads, steps, ok)]
+    )
 
 
 def _pairs(phic: tuple, grads: list, steps: list, ok: np.ndarray) -> np.ndarray:

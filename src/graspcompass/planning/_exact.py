@@ -81,8 +81,7 @@ import numpy as np
 from ..sizing._arc import arc_max_many
 from ._bounds import _SIDES, _SIGN, _Bounds
 
-__all__ = ["EdgeOptimum", "EdgePair", "Load", "cone_margin", "edge_pair_values",
-           "refine_edge_pair"]
+__all__ = ["EdgeOptimum", "EdgePair", "Load", "cone_margin", "edge_pair_values", "refine_edge_pair"]
 
 #: Default relative tolerance of the proof: value − lower <= tol · value.
 DEFAULT_TOL = 1e-6
@@ -138,14 +137,23 @@ class EdgePair:
     def of(cls, a0: Any, a1: Any, b0: Any, b1: Any, com: Any, mu: float) -> EdgePair:
         """The edges ``a0 → a1`` and ``b0 → b1`` (counter-clockwise: material on the left)."""
         f = [(float(p[0]), float(p[1])) for p in (a0, a1, b0, b1, com)]
-        return cls(f[0], (f[1][0] - f[0][0], f[1][1] - f[0][1]), f[2],
-                   (f[3][0] - f[2][0], f[3][1] - f[2][1]), f[4], float(mu), f[1], f[3])
+        return cls(
+            f[0],
+            (f[1][0] - f[0][0], f[1][1] - f[0][1]),
+            f[2],
+            (f[3][0] - f[2][0], f[3][1] - f[2][1]),
+            f[4],
+            float(mu),
+            f[1],
+            f[3],
+        )
 
     def points(self, s: Any, t: Any) -> tuple[np.ndarray, np.ndarray]:
         """The contacts a(s), b(t), shape (..., 2)."""
         s, t = np.asarray(s, float)[..., None], np.asarray(t, float)[..., None]
         return np.asarray(self.a0) + s * np.asarray(self.ea), np.asarray(self.b0) + t * np.asarray(
-            self.eb)
+            self.eb
+        )
 
     def normals(self) -> tuple[tuple[float, float], tuple[float, float]]:
         """The inward unit normals of the two edges."""
@@ -192,8 +200,9 @@ def edge_pair_values(pair: EdgePair, load: Load, s: Any, t: Any) -> np.ndarray:
             kappa = num / den
         r = (b if i == 0 else a) - o
         half = 0.5 if i == 0 else -0.5
-        vs.append((-(half * d[..., 0] - kappa * r[..., 1]),
-                   -(half * d[..., 1] + kappa * r[..., 0])))
+        vs.append(
+            (-(half * d[..., 0] - kappa * r[..., 1]), -(half * d[..., 1] + kappa * r[..., 0]))
+        )
     q = _combine(vs, load, length)
     return np.where(ok, q, np.nan)
 
@@ -220,11 +229,15 @@ def _combine(vs: list, load: Load, length: np.ndarray) -> np.ndarray:
             top = np.max([np.hypot(vx, vy) for vx, vy in vs], axis=0) * (load.g + load.accel)
         else:
             w = (load.g * load.gravity[0], load.g * load.gravity[1])  # type: ignore[index]
-            top = np.max([arc_max_many(vx, vy, w, load.tau) + load.accel * np.hypot(vx, vy)
-                          for vx, vy in vs], axis=0)
+            top = np.max(
+                [
+                    arc_max_many(vx, vy, w, load.tau) + load.accel * np.hypot(vx, vy)
+                    for vx, vy in vs
+                ],
+                axis=0,
+            )
             top = np.maximum(top, 0.0)
         return top / length
-
 
 
 def _closure_polygon(bounds: _Bounds) -> np.ndarray | None:
@@ -234,8 +247,14 @@ def _closure_polygon(bounds: _Bounds) -> np.ndarray | None:
     square clipped by four half-planes (Sutherland–Hodgman), None when empty.
     """
     den = bounds.den
-    coef = [((den.f0[0][n, 0] + den.f0[1][n, 0]) / 2, (den.fs[0][n, 0] + den.fs[1][n, 0]) / 2,
-             (den.ft[0][n, 0] + den.ft[1][n, 0]) / 2) for n in range(4)]
+    coef = [
+        (
+            (den.f0[0][n, 0] + den.f0[1][n, 0]) / 2,
+            (den.fs[0][n, 0] + den.fs[1][n, 0]) / 2,
+            (den.ft[0][n, 0] + den.ft[1][n, 0]) / 2,
+        )
+        for n in range(4)
+    ]
     poly = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
     for c0, cs, ct in coef:
         out = []
@@ -253,8 +272,9 @@ def _closure_polygon(bounds: _Bounds) -> np.ndarray | None:
     return np.array(poly)
 
 
-def _inside(poly: np.ndarray, s: np.ndarray, t: np.ndarray, eps: float
-            ) -> tuple[np.ndarray, np.ndarray]:
+def _inside(
+    poly: np.ndarray, s: np.ndarray, t: np.ndarray, eps: float
+) -> tuple[np.ndarray, np.ndarray]:
     """The nearest points of the polygon's boundary to (s, t), moved ``eps`` to its centroid."""
     s, t = np.atleast_1d(s), np.atleast_1d(t)
     if not s.size:
@@ -271,13 +291,18 @@ def _inside(poly: np.ndarray, s: np.ndarray, t: np.ndarray, eps: float
     return np.clip(p[:, 0], 0.0, 1.0), np.clip(p[:, 1], 0.0, 1.0)
 
 
-def _halve(lo: np.ndarray, hi: np.ndarray, olo: np.ndarray, ohi: np.ndarray, which: np.ndarray
-           ) -> tuple[np.ndarray, ...]:
+def _halve(
+    lo: np.ndarray, hi: np.ndarray, olo: np.ndarray, ohi: np.ndarray, which: np.ndarray
+) -> tuple[np.ndarray, ...]:
     """Split the boxes marked ``which`` in two along (lo, hi); the others stay whole."""
     mid = (lo + hi) / 2
     w = which
-    return (np.concatenate([lo, mid[w]]), np.concatenate([np.where(w, mid, hi), hi[w]]),
-            np.concatenate([olo, olo[w]]), np.concatenate([ohi, ohi[w]]))
+    return (
+        np.concatenate([lo, mid[w]]),
+        np.concatenate([np.where(w, mid, hi), hi[w]]),
+        np.concatenate([olo, olo[w]]),
+        np.concatenate([ohi, ohi[w]]),
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -318,8 +343,14 @@ class EdgeOptimum:
     on_boundary: bool = False
 
 
-def refine_edge_pair(pair: EdgePair, load: Load, *, tol: float = DEFAULT_TOL,
-                     start: Any = (), max_boxes: int = MAX_BOXES) -> EdgeOptimum | None:
+def refine_edge_pair(
+    pair: EdgePair,
+    load: Load,
+    *,
+    tol: float = DEFAULT_TOL,
+    start: Any = (),
+    max_boxes: int = MAX_BOXES,
+) -> EdgeOptimum | None:
     """The least ``q(s, t)`` over the force-closure pairs of two edges, proved within ``tol``.
 
     Parameters
@@ -344,8 +375,9 @@ def refine_edge_pair(pair: EdgePair, load: Load, *, tol: float = DEFAULT_TOL,
         return _search(pair, load, float(tol), start, int(max_boxes))
 
 
-def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
-            ) -> EdgeOptimum | None:
+def _search(
+    pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
+) -> EdgeOptimum | None:
     bounds = _Bounds(pair, load)
     best_v, best_st = np.inf, (math.nan, math.nan)
 
@@ -378,13 +410,16 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
     count = 0
     certified = True
     while s_lo.size:
-        consider(np.concatenate([(s_lo + s_hi) / 2, s_lo, s_lo, s_hi, s_hi]),
-                 np.concatenate([(t_lo + t_hi) / 2, t_lo, t_hi, t_lo, t_hi]))
+        consider(
+            np.concatenate([(s_lo + s_hi) / 2, s_lo, s_lo, s_hi, s_hi]),
+            np.concatenate([(t_lo + t_hi) / 2, t_lo, t_hi, t_lo, t_hi]),
+        )
         lower, feas = bounds.lower((s_lo, s_hi), (t_lo, t_hi))
         if poly is not None and not load.any_orientation:
             near = feas & bounds.straddle & (lower < best_v * (1 - tol))
-            consider(*_inside(poly, (s_lo[near] + s_hi[near]) / 2,
-                              (t_lo[near] + t_hi[near]) / 2, nudge))
+            consider(
+                *_inside(poly, (s_lo[near] + s_hi[near]) / 2, (t_lo[near] + t_hi[near]) / 2, nudge)
+            )
         count += s_lo.size
         keep = feas & (lower < best_v * (1 - tol))
         drop = feas & ~keep
@@ -399,8 +434,9 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
         ws, wt = (s_hi - s_lo) * la, (t_hi - t_lo) * lb
         cut_s, cut_t = 2 * ws >= wt, 2 * wt >= ws
         s_lo, s_hi, t_lo, t_hi = _halve(s_lo, s_hi, t_lo, t_hi, cut_s)
-        t_lo, t_hi, s_lo, s_hi = _halve(t_lo, t_hi, s_lo, s_hi,
-                                        np.concatenate([cut_t, cut_t[cut_s]]))
+        t_lo, t_hi, s_lo, s_hi = _halve(
+            t_lo, t_hi, s_lo, s_hi, np.concatenate([cut_t, cut_t[cut_s]])
+        )
     if not np.isfinite(best_v):
         return None  # no force-closure pair (or none at a box's centre or corner)
     if poly is not None and not load.any_orientation:
@@ -408,6 +444,14 @@ def _search(pair: EdgePair, load: Load, tol: float, start: Any, max_boxes: int
         consider(*_inside(poly, np.array([best_st[0]]), np.array([best_st[1]]), nudge))
     least = max(0.0, min(pruned, best_v))  # q >= 0
     margin = float(cone_margin(pair, *best_st))
-    return EdgeOptimum(best_st[0], best_st[1], best_v, least, float(tol),
-                       certified and best_v - least <= tol * best_v, count, margin,
-                       margin <= BOUNDARY)
+    return EdgeOptimum(
+        best_st[0],
+        best_st[1],
+        best_v,
+        least,
+        float(tol),
+        certified and best_v - least <= tol * best_v,
+        count,
+        margin,
+        margin <= BOUNDARY,
+    )

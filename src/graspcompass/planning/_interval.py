@@ -110,11 +110,16 @@ def _norm(v: tuple) -> tuple:
     return lo, _up(np.sqrt(_up(_sq_hi(v[0]) + _sq_hi(v[1]))))
 
 
-
 def _stack(forms: list) -> _Affine:
-    return _Affine(*((np.array([[f_.__dict__[k][0]] for f_ in forms]).reshape(4, 1),
-                      np.array([[f_.__dict__[k][1]] for f_ in forms]).reshape(4, 1))
-                     for k in ("f0", "fs", "ft")))
+    return _Affine(
+        *(
+            (
+                np.array([[f_.__dict__[k][0]] for f_ in forms]).reshape(4, 1),
+                np.array([[f_.__dict__[k][1]] for f_ in forms]).reshape(4, 1),
+            )
+            for k in ("f0", "fs", "ft")
+        )
+    )
 
 
 def _div_pos(n: tuple, d: tuple) -> tuple:

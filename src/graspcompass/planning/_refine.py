@@ -25,8 +25,10 @@ from ._exact import DEFAULT_TOL, EdgePair, Load, refine_edge_pair
 __all__ = ["METHOD", "ExactPair", "refine_plan"]
 
 #: How the exact optimum is backed (printed with every result).
-METHOD = ("branch and bound over the two edge parameters (s, t) with interval lower bounds "
-          "(outward rounded) of the closed form; proved within the relative tolerance")
+METHOD = (
+    "branch and bound over the two edge parameters (s, t) with interval lower bounds "
+    "(outward rounded) of the closed form; proved within the relative tolerance"
+)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -90,17 +92,23 @@ class ExactPair:
     def claim(self) -> str:
         """What is proved, with its hypotheses, in one sentence."""
         i, j = self.edges
-        out = (f"every pair of points of edges {i} and {j} meeting condition (1) (force closure) "
-               f"needs at least {self.lower_bound:.9g} N to hold the part in {self.orientations}"
-               f" (outward-rounded interval bounds on the float data)")
+        out = (
+            f"every pair of points of edges {i} and {j} meeting condition (1) (force closure) "
+            f"needs at least {self.lower_bound:.9g} N to hold the part in {self.orientations}"
+            f" (outward-rounded interval bounds on the float data)"
+        )
         if not self.certified:
             return out + f"; not closed: the search stopped with the gap above tol = {self.tol:g}"
-        out += (f"; the pair reported needs {self.squeeze:.9g} N, within tol = {self.tol:g} of "
-                f"the least")
+        out += (
+            f"; the pair reported needs {self.squeeze:.9g} N, within tol = {self.tol:g} of "
+            f"the least"
+        )
         if self.on_boundary:
-            out += (" (the least is approached on the boundary of condition (1), where a "
-                    "contact is at the edge of a friction cone, and attained by no "
-                    "force-closure pair)")
+            out += (
+                " (the least is approached on the boundary of condition (1), where a "
+                "contact is at the edge of a friction cone, and attained by no "
+                "force-closure pair)"
+            )
         return out
 
     @property
@@ -111,14 +119,23 @@ class ExactPair:
     def to_dict(self) -> dict[str, Any]:
         """A JSON-ready dictionary."""
         imp = self.improvement
-        return {"rank": self.rank, "edges": list(self.edges), "params": list(self.params),
-                "contacts_m": [list(p) for p in self.contacts],
-                "normals": [list(n) for n in self.normals], "squeeze_N": self.squeeze,
-                "lower_bound_N": self.lower_bound, "tolerance": self.tol,
-                "certified": self.certified, "sampled_squeeze_N": _num(self.sampled_squeeze),
-                "improvement": _num(imp), "boxes": self.boxes,
-                "cone_margin_rad": _num(self.cone_margin), "on_boundary": self.on_boundary,
-                "proves": self.claim()}
+        return {
+            "rank": self.rank,
+            "edges": list(self.edges),
+            "params": list(self.params),
+            "contacts_m": [list(p) for p in self.contacts],
+            "normals": [list(n) for n in self.normals],
+            "squeeze_N": self.squeeze,
+            "lower_bound_N": self.lower_bound,
+            "tolerance": self.tol,
+            "certified": self.certified,
+            "sampled_squeeze_N": _num(self.sampled_squeeze),
+            "improvement": _num(imp),
+            "boxes": self.boxes,
+            "cone_margin_rad": _num(self.cone_margin),
+            "on_boundary": self.on_boundary,
+            "proves": self.claim(),
+        }
 
 
 def _num(v: float) -> float | None:
@@ -129,8 +146,14 @@ def _param(p: np.ndarray, a: np.ndarray, e: np.ndarray) -> np.ndarray:
     return ((p - a) @ e) / float(e @ e)
 
 
-def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DEFAULT_TOL,
-                orientations: str = "every orientation") -> tuple[ExactPair, ...]:
+def refine_plan(
+    plan: Any,
+    count: int,
+    load: Load,
+    scale: float,
+    tol: float = DEFAULT_TOL,
+    orientations: str = "every orientation",
+) -> tuple[ExactPair, ...]:
     """Refine the ``count`` best distinct edge pairs of ``plan`` (best sampled pairs first).
 
     Parameters
@@ -177,10 +200,23 @@ def refine_plan(plan: Any, count: int, load: Load, scale: float, tol: float = DE
         if opt is None:
             continue
         pts = ep.points(opt.s, opt.t)
-        out.append(ExactPair(0, (int(ea), int(eb)), (opt.s, opt.t),
-                             (tuple(map(float, pts[0])), tuple(map(float, pts[1]))),  # type: ignore[arg-type]
-                             ep.normals(), opt.value * scale, opt.lower * scale, opt.tol,
-                             opt.certified, best_sampled, opt.boxes, opt.margin,
-                             opt.on_boundary, orientations))
+        out.append(
+            ExactPair(
+                0,
+                (int(ea), int(eb)),
+                (opt.s, opt.t),
+                (tuple(map(float, pts[0])), tuple(map(float, pts[1]))),  # type: ignore[arg-type]
+                ep.normals(),
+                opt.value * scale,
+                opt.lower * scale,
+                opt.tol,
+                opt.certified,
+                best_sampled,
+                opt.boxes,
+                opt.margin,
+                opt.on_boundary,
+                orientations,
+            )
+        )
     out.sort(key=lambda p: p.squeeze)
     return tuple(dataclasses.replace(p, rank=r + 1) for r, p in enumerate(out))

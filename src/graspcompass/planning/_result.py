@@ -52,10 +52,16 @@ class PlannedPair:
 
     def to_dict(self) -> dict[str, Any]:
         """A JSON-ready dictionary."""
-        return {"rank": self.rank, "pair": self.index, "samples": list(self.samples),
-                "contacts_m": [list(p) for p in self.contacts],
-                "normals": [list(n) for n in self.normals], "squeeze_N": self.squeeze,
-                "squeeze_N_per_kg": self.squeeze_per_kg, "paper_frame": dict(self.paper)}
+        return {
+            "rank": self.rank,
+            "pair": self.index,
+            "samples": list(self.samples),
+            "contacts_m": [list(p) for p in self.contacts],
+            "normals": [list(n) for n in self.normals],
+            "squeeze_N": self.squeeze,
+            "squeeze_N_per_kg": self.squeeze_per_kg,
+            "paper_frame": dict(self.paper),
+        }
 
 
 @dataclasses.dataclass(frozen=True)
@@ -121,13 +127,20 @@ class PlanResult:
         pts = tuple((float(self.points[k, 0]), float(self.points[k, 1])) for k in (a, b))
         nrm = tuple((float(self.normals[k, 0]), float(self.normals[k, 1])) for k in (a, b))
         f = float(self.squeeze[index])
-        return PlannedPair(rank, int(index), (a, b), pts, nrm, f, f / self.mass,  # type: ignore[arg-type]
-                           {k: float(self.frames[k][index])
-                            for k in ("x1", "x2", "y", "phi1", "phi2")})
+        return PlannedPair(
+            rank,
+            int(index),
+            (a, b),
+            pts,
+            nrm,
+            f,
+            f / self.mass,  # type: ignore[arg-type]
+            {k: float(self.frames[k][index]) for k in ("x1", "x2", "y", "phi1", "phi2")},
+        )
 
     def top(self, k: int = 5) -> tuple[PlannedPair, ...]:
         """The ``k`` best force-closure pairs (fewer if there are fewer)."""
-        return tuple(self.pair(int(p), r + 1) for r, p in enumerate(self.order[:max(0, k)]))
+        return tuple(self.pair(int(p), r + 1) for r, p in enumerate(self.order[: max(0, k)]))
 
     def matrix(self) -> np.ndarray:
         """The squeeze as a symmetric N × N matrix over the contacts (``nan`` off force closure)."""
@@ -139,15 +152,22 @@ class PlanResult:
 
     def to_dict(self, k: int = 5) -> dict[str, Any]:
         """A JSON-ready summary with the ``k`` best pairs."""
-        return {"samples": len(self.points), "pairs": len(self.i),
-                "force_closure_pairs": int(self.force_closure.sum()), "mu": self.mu,
-                "mass_kg": self.mass, "g_m_s2": self.g, "per": self.per,
-                "com_m": list(self.com), "orientations": self.orientations(),
-                "gravity": None if self.gravity is None else list(self.gravity),
-                "tilt_deg": None if self.tilt is None else math.degrees(self.tilt),
-                "top": [p.to_dict() for p in self.top(k)],
-                "exact": [p.to_dict() for p in self.exact],
-                "exact_method": METHOD if self.exact else None}
+        return {
+            "samples": len(self.points),
+            "pairs": len(self.i),
+            "force_closure_pairs": int(self.force_closure.sum()),
+            "mu": self.mu,
+            "mass_kg": self.mass,
+            "g_m_s2": self.g,
+            "per": self.per,
+            "com_m": list(self.com),
+            "orientations": self.orientations(),
+            "gravity": None if self.gravity is None else list(self.gravity),
+            "tilt_deg": None if self.tilt is None else math.degrees(self.tilt),
+            "top": [p.to_dict() for p in self.top(k)],
+            "exact": [p.to_dict() for p in self.exact],
+            "exact_method": METHOD if self.exact else None,
+        }
 
     def orientations(self) -> str:
         """Which orientations the squeezes hold the part in, in words."""

@@ -20,8 +20,9 @@ __all__ = ["MAX_SETS", "plan_jaws"]
 MAX_SETS = 20_000
 
 
-def plan_jaws(outline: Any, jaws: int, *, mu: float, load: float, samples: int,
-              com: Any = None, top: int = 5) -> dict[str, Any]:
+def plan_jaws(
+    outline: Any, jaws: int, *, mu: float, load: float, samples: int, com: Any = None, top: int = 5
+) -> dict[str, Any]:
     """The ``top`` best sets of ``jaws`` contacts by the worst total squeeze, in newtons.
 
     Parameters
@@ -65,9 +66,21 @@ def plan_jaws(outline: Any, jaws: int, *, mu: float, load: float, samples: int,
     order = np.argsort(worst, kind="stable")
     fin = np.isfinite(worst)
     best = [int(i) for i in order[:top] if fin[i]]
-    return {"jaws": jaws, "samples": len(pts), "sets": len(idx),
-            "force_closure_sets": int(fin.sum()), "com_m": list(c), "mu": float(mu),
-            "load_N": float(load),
-            "top": [{"rank": r + 1, "contacts_m": pts[idx[i]].tolist(),
-                     "normals": nrm[idx[i]].tolist(), "squeeze_N": float(worst[i])}
-                    for r, i in enumerate(best)]}
+    return {
+        "jaws": jaws,
+        "samples": len(pts),
+        "sets": len(idx),
+        "force_closure_sets": int(fin.sum()),
+        "com_m": list(c),
+        "mu": float(mu),
+        "load_N": float(load),
+        "top": [
+            {
+                "rank": r + 1,
+                "contacts_m": pts[idx[i]].tolist(),
+                "normals": nrm[idx[i]].tolist(),
+                "squeeze_N": float(worst[i]),
+            }
+            for r, i in enumerate(best)
+        ],
+    }

@@ -19,12 +19,24 @@ from .recheck import RecheckError, recheck
 _HOMES = {
     **dict.fromkeys(("CLAIMS", "Claim", "check", "claim"), "catalogue"),
     **dict.fromkeys(("sample", "violations"), "model"),
-    **dict.fromkeys(("CONDITION_1", "ProofResult", "Status", "find_counterexample",
-                     "prove_identity", "prove_sign"), "prove"),
-    **dict.fromkeys(("DegenerateClaimError", "is_identically_zero", "reduce_expr",
-                     "trig_to_poly"), "reduce"),
-    **dict.fromkeys(("ClaimReport", "exit_status", "run_catalogue", "to_json", "to_markdown",
-                     "to_table"), "report"),
+    **dict.fromkeys(
+        (
+            "CONDITION_1",
+            "ProofResult",
+            "Status",
+            "find_counterexample",
+            "prove_identity",
+            "prove_sign",
+        ),
+        "prove",
+    ),
+    **dict.fromkeys(
+        ("DegenerateClaimError", "is_identically_zero", "reduce_expr", "trig_to_poly"), "reduce"
+    ),
+    **dict.fromkeys(
+        ("ClaimReport", "exit_status", "run_catalogue", "to_json", "to_markdown", "to_table"),
+        "report",
+    ),
 }
 __getattr__, __dir__ = attach(__name__, _HOMES)
 

@@ -38,27 +38,37 @@ def factor_list(p: Any) -> tuple[Any, list[tuple[Any, int]]]:
     R = p.ring
     dom = R.domain
     q = _ctx(R.ngens).from_dict(
-        {m if R.ngens else (0,): flint.fmpq(int(c.numerator), int(c.denominator))
-         for m, c in p.terms()})
+        {
+            m if R.ngens else (0,): flint.fmpq(int(c.numerator), int(c.denominator))
+            for m, c in p.terms()
+        }
+    )
     c, fs = q.factor()
     out = []
     for f, k in fs:
-        terms = {tuple(int(e) for e in m[:R.ngens]): dom(int(v.p), int(v.q))
-                 for m, v in f.to_dict().items()}
+        terms = {
+            tuple(int(e) for e in m[: R.ngens]): dom(int(v.p), int(v.q))
+            for m, v in f.to_dict().items()
+        }
         out.append((R.from_dict(terms), int(k)))
     return dom(int(c.p), int(c.q)), out
 
 
 def _to_flint(p: Any, ctx: Any) -> Any:
     n = p.ring.ngens
-    return ctx.from_dict({m if n else (0,): flint.fmpq(int(c.numerator), int(c.denominator))
-                          for m, c in p.terms()})
+    return ctx.from_dict(
+        {m if n else (0,): flint.fmpq(int(c.numerator), int(c.denominator)) for m, c in p.terms()}
+    )
 
 
 def _from_flint(q: Any, R: Any) -> Any:
     dom = R.domain
-    return R.from_dict({tuple(int(e) for e in m[:R.ngens]): dom(int(v.p), int(v.q))
-                        for m, v in q.to_dict().items()})
+    return R.from_dict(
+        {
+            tuple(int(e) for e in m[: R.ngens]): dom(int(v.p), int(v.q))
+            for m, v in q.to_dict().items()
+        }
+    )
 
 
 def divide(p: Any, divisors: list[Any]) -> tuple[list[Any], Any]:

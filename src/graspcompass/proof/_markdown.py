@@ -32,8 +32,15 @@ __all__ = ["md_counterexample", "md_items", "md_math", "md_text"]
 
 _SPECIAL = set("\\`*_[]<>|$~^")
 _FUNCTIONS = {"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "pi", "deg"}
-_RELATIONS = (("!=", r"\ne"), ("<=", r"\le"), (">=", r"\ge"), ("==", "="), ("<", "<"),
-              (">", ">"), ("=", "="))
+_RELATIONS = (
+    ("!=", r"\ne"),
+    ("<=", r"\le"),
+    (">=", r"\ge"),
+    ("==", "="),
+    ("<", "<"),
+    (">", ">"),
+    ("=", "="),
+)
 #: Formulas longer than this (characters of source) are not typeset (a plain code span).
 MAX_FORMULA = 2000
 #: A sum whose LaTeX is longer than this is cut into one piece of math per term.
@@ -66,8 +73,8 @@ def _terms(text: str) -> list[str]:
     out, depth, start = [], 0, 0
     for i, ch in enumerate(text):
         depth += (ch == "(") - (ch == ")")
-        if depth == 0 and i > start and text[i - 1:i + 2] in (" + ", " - "):
-            out.append(text[start:i - 1])
+        if depth == 0 and i > start and text[i - 1 : i + 2] in (" + ", " - "):
+            out.append(text[start : i - 1])
             start = i
     out.append(text[start:])
     return [t.strip() for t in out if t.strip()]

@@ -72,33 +72,62 @@ def _text(claim: Claim) -> str:
     return Program(claims=(claim,)).to_text().strip().removeprefix("claim ")
 
 
-def _vacuous(name: str, kind: str, line: int, t0: float, hyps: tuple[str, ...],
-             why: str) -> CheckRow:
+def _vacuous(
+    name: str, kind: str, line: int, t0: float, hyps: tuple[str, ...], why: str
+) -> CheckRow:
     """REFUTED without a counterexample: what it is about exists at no point of the model."""
-    return CheckRow(name, kind, line, ProofResult(
-        Status.REFUTED, "vacuous: a condition it needs is false at every point of the model "
-        "(no counterexample: nothing exists there to contradict)", time.perf_counter() - t0,
-        detail=why, hypotheses=hyps))
+    return CheckRow(
+        name,
+        kind,
+        line,
+        ProofResult(
+            Status.REFUTED,
+            "vacuous: a condition it needs is false at every point of the model "
+            "(no counterexample: nothing exists there to contradict)",
+            time.perf_counter() - t0,
+            detail=why,
+            hypotheses=hyps,
+        ),
+    )
 
 
 def _uses_cond1(implied: Iterable[str]) -> bool:
     return any("(1)" in t for t in implied)
 
 
-_CRASHES = (ArithmeticError, ValueError, TypeError, AttributeError, KeyError, IndexError,
-            NotImplementedError, RecursionError, sp.PolynomialError)
+_CRASHES = (
+    ArithmeticError,
+    ValueError,
+    TypeError,
+    AttributeError,
+    KeyError,
+    IndexError,
+    NotImplementedError,
+    RecursionError,
+    sp.PolynomialError,
+)
 
 
-def _guarded(name: str, kind: str, line: int, hyps: tuple[str, ...],
-             run: Callable[[], CheckRow]) -> CheckRow:
+def _guarded(
+    name: str, kind: str, line: int, hyps: tuple[str, ...], run: Callable[[], CheckRow]
+) -> CheckRow:
     """A row whatever happens inside: a failure of the algebra is UNDECIDED, named."""
     t0 = time.perf_counter()
     try:
         return run()
     except _CRASHES as exc:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.UNDECIDED, "the checker could not decide it", time.perf_counter() - t0,
-            detail=f"{type(exc).__name__}: {exc}"[:300], hypotheses=hyps))
+        return CheckRow(
+            name,
+            kind,
+            line,
+            ProofResult(
+                Status.UNDECIDED,
+                "the checker could not decide it",
+                time.perf_counter() - t0,
+                detail=f"{type(exc).__name__}: {exc}"[:300],
+                hypotheses=hyps,
+            ),
+        )
 
 
 class _Later(dict):  # type: ignore[type-arg]
@@ -117,19 +146,31 @@ class _Later(dict):  # type: ignore[type-arg]
         return super().get(name, default)
 
 
-def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
-                 step_conds: Mapping[str, tuple[list[str], list[str]]],
-                 vacuous: Mapping[str, str] | None = None) -> CheckRow:
+def _check_claim(
+    program: Program,
+    claim: Claim,
+    env: dict[str, Any],
+    step_conds: Mapping[str, tuple[list[str], list[str]]],
+    vacuous: Mapping[str, str] | None = None,
+) -> CheckRow:
     t0 = time.perf_counter()
     cond1 = _COND1 in claim.under
     hyps = _hypotheses(program, cond1)
     tie = tie_mu(p.name for p in program.params)
     missing = [t.name for t in claim.terms if isinstance(t, Ref) and t.name not in env]
     if missing:  # an optional step left out, or the envelope (numbers only)
-        return CheckRow(_text(claim), "claim", claim.line, ProofResult(
-            Status.UNDECIDED, "not made for general parameters", time.perf_counter() - t0,
-            detail=f"{', '.join(missing)} is not made when the parameters are symbols",
-            hypotheses=hyps))
+        return CheckRow(
+            _text(claim),
+            "claim",
+            claim.line,
+            ProofResult(
+                Status.UNDECIDED,
+                "not made for general parameters",
+                time.perf_counter() - t0,
+                detail=f"{', '.join(missing)} is not made when the parameters are symbols",
+                hypotheses=hyps,
+            ),
+        )
     implied: list[str] = []
     extra: list[str] = []
     ancestors = _ancestors(program, _refs(claim))
@@ -137,8 +178,14 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
     lengths = {sp.Symbol(k, real=True): v for k, v in env.items() if isinstance(v, sp.Expr)}
     own = decide([(r, e.xreplace(lengths)) for r, e in claim.conditions], cond1, tie)
     if gone or own.false:
-        return _vacuous(_text(claim), "claim", claim.line, t0, hyps,
-                        "; ".join([*gone, *(f"{t} is false everywhere" for t in own.false)]))
+        return _vacuous(
+            _text(claim),
+            "claim",
+            claim.line,
+            t0,
+            hyps,
+            "; ".join([*gone, *(f"{t} is false everywhere" for t in own.false)]),
+        )
     for n in ancestors:
         imp, ext = step_conds.get(n, ([], []))
         implied += imp
@@ -149,8 +196,9 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
         hyps = _hypotheses(program, True)
     if claim.kind == "sign":
         e = branch_roots(sign_expr(claim, env), program.inequalities)
-        ok, r = prove_sign_claim(e.xreplace(tie) if tie else e, claim.relation, cond1,
-                                 program.inequalities)
+        ok, r = prove_sign_claim(
+            e.xreplace(tie) if tie else e, claim.relation, cond1, program.inequalities
+        )
         if ok and r is not None:
             implied += list(r.implied)
             extra += list(r.conditions)
@@ -178,36 +226,95 @@ def _check_claim(program: Program, claim: Claim, env: dict[str, Any],
         extra += ext + [f"{sp.factor(n)} ≠ 0" for n in nonzeros]
         fails = zeros_fail(claim)
     # a counterexample is a point of the model: condition (1) holds there too (docs)
-    search_kw = {"claim": claim, "cond1": True, "score": score,
-                 "names": ancestors}
-    return _row(program, _text(claim), "claim", claim.line, ok, fails, t0, hyps,
-                implied, extra, method if ok else "", search_kw)
+    search_kw = {"claim": claim, "cond1": True, "score": score, "names": ancestors}
+    return _row(
+        program,
+        _text(claim),
+        "claim",
+        claim.line,
+        ok,
+        fails,
+        t0,
+        hyps,
+        implied,
+        extra,
+        method if ok else "",
+        search_kw,
+    )
 
 
-def _row(program: Program, name: str, kind: str, line: int, ok: bool | None,
-         fails: Callable[[dict[str, Any], Any], bool], t0: float, hyps: tuple[str, ...],
-         implied: list[str], extra: list[str], method: str,
-         search_kw: Mapping[str, Any] | None = None) -> CheckRow:
+def _row(
+    program: Program,
+    name: str,
+    kind: str,
+    line: int,
+    ok: bool | None,
+    fails: Callable[[dict[str, Any], Any], bool],
+    t0: float,
+    hyps: tuple[str, ...],
+    implied: list[str],
+    extra: list[str],
+    method: str,
+    search_kw: Mapping[str, Any] | None = None,
+) -> CheckRow:
     implied, extra = list(dict.fromkeys(implied)), list(dict.fromkeys(extra))
     if ok and program.inequalities and witness_point(program) is None:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.UNDECIDED, "a proof under the file's hypotheses, but no point found where "
-            "they all hold (they may contradict each other)", time.perf_counter() - t0,
-            hypotheses=hyps, conditions=tuple(extra), implied=tuple(implied)))
+        return CheckRow(
+            name,
+            kind,
+            line,
+            ProofResult(
+                Status.UNDECIDED,
+                "a proof under the file's hypotheses, but no point found where "
+                "they all hold (they may contradict each other)",
+                time.perf_counter() - t0,
+                hypotheses=hyps,
+                conditions=tuple(extra),
+                implied=tuple(implied),
+            ),
+        )
     if ok:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.PROVED, method, time.perf_counter() - t0, hypotheses=hyps,
-            conditions=tuple(extra), implied=tuple(implied)))
+        return CheckRow(
+            name,
+            kind,
+            line,
+            ProofResult(
+                Status.PROVED,
+                method,
+                time.perf_counter() - t0,
+                hypotheses=hyps,
+                conditions=tuple(extra),
+                implied=tuple(implied),
+            ),
+        )
     cx = find(program, fails, **(search_kw or {}))
     if cx is not None:
-        return CheckRow(name, kind, line, ProofResult(
-            Status.REFUTED, "counterexample: a point of the model (domains, condition (1), "
-            "μ = tan ξ checked exactly) at which the file, replayed exactly, contradicts it",
-            time.perf_counter() - t0, counterexample=cx, hypotheses=hyps))
-    return CheckRow(name, kind, line, ProofResult(
-        Status.UNDECIDED, "not proved, and no counterexample found by exact replay at "
-        "points of the model", time.perf_counter() - t0, hypotheses=hyps,
-        conditions=tuple(extra), implied=tuple(implied)))
+        return CheckRow(
+            name,
+            kind,
+            line,
+            ProofResult(
+                Status.REFUTED,
+                "counterexample: a point of the model (domains, condition (1), "
+                "μ = tan ξ checked exactly) at which the file, replayed exactly, contradicts it",
+                time.perf_counter() - t0,
+                counterexample=cx,
+                hypotheses=hyps,
+            ),
+        )
+    return CheckRow(
+        name,
+        kind,
+        line,
+        ProofResult(
+            Status.UNDECIDED,
+            "not proved, and no counterexample found by exact replay at points of the model",
+            time.perf_counter() - t0,
+            hypotheses=hyps,
+            conditions=tuple(extra),
+            implied=tuple(implied),
+        ),
+    )
 
 
 def _line(program: Program, name: str) -> int:

@@ -108,8 +108,9 @@ def _distinct_in_ring(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool | 
         den = 1
         for _, c in terms:
             den = den * int(c.denominator) // math.gcd(den, int(c.denominator))
-        return ctx.from_dict({(t, *m): int(c.numerator) * (den // int(c.denominator))
-                              for m, c in terms})
+        return ctx.from_dict(
+            {(t, *m): int(c.numerator) * (den // int(c.denominator)) for m, c in terms}
+        )
 
     polys = [z(p) for p in nums if p]
     for i in range(4):  # sin² + cos² − 1 for each angle in use
@@ -123,7 +124,8 @@ def _distinct_in_ring(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool | 
     polys.append(ctx.from_dict({(0,) * (n + 1): den}) - kz)
     # python-flint's stub says a vec; with ``limits`` it returns (vec, finished)
     done: tuple[flint.fmpz_mpoly_vec, bool] = flint.fmpz_mpoly_vec(  # type: ignore[assignment]
-        polys, ctx).buchberger_naive(limits=(400, 4000, 4096))
+        polys, ctx
+    ).buchberger_naive(limits=(400, 4000, 4096))
     basis, ok = done
     return bool(ok) and any(g.is_constant() and g != 0 for g in basis)
 
@@ -167,7 +169,8 @@ def _unit_ideal(polys: tuple[sp.Expr, ...], gens: tuple[sp.Symbol, ...]) -> bool
         return False
     # python-flint's stub says a vec; with ``limits`` it returns (vec, finished)
     done: tuple[flint.fmpz_mpoly_vec, bool] = flint.fmpz_mpoly_vec(  # type: ignore[assignment]
-        zs, ctx).buchberger_naive(limits=(400, 4000, 4096))
+        zs, ctx
+    ).buchberger_naive(limits=(400, 4000, 4096))
     basis, ok = done
     return bool(ok) and any(g.is_constant() and g != 0 for g in basis)
 

@@ -62,19 +62,35 @@ class CheckRow:
         one is UNDECIDED (an internal guard; every REFUTED row above states one)."""
         r = self.result
         if r.status is Status.REFUTED and r.counterexample is None and not r.detail:
-            object.__setattr__(self, "result", ProofResult(
-                Status.UNDECIDED, "refuted without a counterexample or a stated reason: "
-                "not reported as refuted", r.seconds, hypotheses=r.hypotheses,
-                conditions=r.conditions, implied=r.implied))
+            object.__setattr__(
+                self,
+                "result",
+                ProofResult(
+                    Status.UNDECIDED,
+                    "refuted without a counterexample or a stated reason: not reported as refuted",
+                    r.seconds,
+                    hypotheses=r.hypotheses,
+                    conditions=r.conditions,
+                    implied=r.implied,
+                ),
+            )
 
     def record(self) -> dict[str, Any]:
         """JSON-ready: name, status, hypotheses, conditions, counterexample, seconds, ..."""
         r = self.result
-        return {"name": self.name, "status": r.status.value, "line": self.line,
-                "hypotheses": list(r.hypotheses), "conditions": list(r.conditions),
-                "implied": list(r.implied), "counterexample": r.counterexample,
-                "seconds": round(r.seconds, 4), "method": r.method, "detail": r.detail,
-                "reason": self.reason}
+        return {
+            "name": self.name,
+            "status": r.status.value,
+            "line": self.line,
+            "hypotheses": list(r.hypotheses),
+            "conditions": list(r.conditions),
+            "implied": list(r.implied),
+            "counterexample": r.counterexample,
+            "seconds": round(r.seconds, 4),
+            "method": r.method,
+            "detail": r.detail,
+            "reason": self.reason,
+        }
 
 
 @dataclass(frozen=True)

@@ -48,8 +48,7 @@ def _factor(e: sp.Expr) -> sp.Expr:
     roots = [a for a in num.atoms(sp.Pow) | den.atoms(sp.Pow) if not a.exp.is_Integer]
     if roots or num.atoms(sp.Float) | den.atoms(sp.Float):
         return sp.factor(e)
-    atoms = sorted(num.atoms(sp.sin, sp.cos) | den.atoms(sp.sin, sp.cos),
-                   key=sp.default_sort_key)
+    atoms = sorted(num.atoms(sp.sin, sp.cos) | den.atoms(sp.sin, sp.cos), key=sp.default_sort_key)
     dummies = [sp.Dummy(f"g{i}") for i in range(len(atoms))]
     sub = dict(zip(atoms, dummies))
     num, den = num.xreplace(sub), den.xreplace(sub)
@@ -65,8 +64,12 @@ def _factor(e: sp.Expr) -> sp.Expr:
         c, factors = q.factor()
         out = sp.Rational(int(c.p), int(c.q))
         for f, k in factors:
-            term = sp.Add(*(sp.Rational(int(v.p), int(v.q)) * sp.Mul(*(g**i for g, i in
-                          zip(gens, m))) for m, v in f.to_dict().items()))
+            term = sp.Add(
+                *(
+                    sp.Rational(int(v.p), int(v.q)) * sp.Mul(*(g**i for g, i in zip(gens, m)))
+                    for m, v in f.to_dict().items()
+                )
+            )
             out *= term.xreplace(back) ** int(k)
         return out
 
@@ -91,13 +94,15 @@ def _factor_in_ring(e: sp.Expr) -> sp.Expr | None:
     def factored(p: Any) -> sp.Expr:
         if not p:
             return sp.Integer(0)
-        q = ctx.from_dict({m: flint.fmpq(int(c.numerator), int(c.denominator))
-                           for m, c in p.terms()})
+        q = ctx.from_dict(
+            {m: flint.fmpq(int(c.numerator), int(c.denominator)) for m, c in p.terms()}
+        )
         c, factors = q.factor()
         out = sp.Rational(int(c.p), int(c.q))
         for f, k in factors:
-            back = R.R.from_dict({m: R.R.domain(int(v.p), int(v.q))
-                                  for m, v in f.to_dict().items()})
+            back = R.R.from_dict(
+                {m: R.R.domain(int(v.p), int(v.q)) for m, v in f.to_dict().items()}
+            )
             out *= R.expr(back) ** int(k)
         return out
 
@@ -113,8 +118,14 @@ def _sign(e: sp.Expr, intervals: Mapping) -> tuple[int, int] | None:
         got = sign_of(e, intervals)
         if got is None and sp.count_ops(e) <= _MAX_FACTOR_NODES:
             got = sign_of(_factor(e), intervals)
-    except (ValueError, TypeError, ArithmeticError, NotImplementedError, RecursionError,
-            sp.PolynomialError):
+    except (
+        ValueError,
+        TypeError,
+        ArithmeticError,
+        NotImplementedError,
+        RecursionError,
+        sp.PolynomialError,
+    ):
         return None
     return got
 
@@ -123,15 +134,19 @@ def _even_power(t: sp.Expr) -> bool:
     """``t`` is a product of even powers of real expressions (so ``t ≥ 0``)."""
     factors = sp.Mul.make_args(t)
     return bool(factors) and all(
-        isinstance(f, sp.Pow) and f.exp.is_Integer and f.exp % 2 == 0
-        and f.base.is_real is True for f in factors)
+        isinstance(f, sp.Pow) and f.exp.is_Integer and f.exp % 2 == 0 and f.base.is_real is True
+        for f in factors
+    )
 
 
 def _bounded_trig(t: sp.Expr) -> bool:
     """``t`` is a product of powers of sines and cosines (so ``|t| ≤ 1``)."""
-    return all(isinstance(f.base if isinstance(f, sp.Pow) else f, (sp.sin, sp.cos))
-               and (not isinstance(f, sp.Pow) or (f.exp.is_Integer and f.exp > 0))
-               and f.free_symbols for f in sp.Mul.make_args(t))
+    return all(
+        isinstance(f.base if isinstance(f, sp.Pow) else f, (sp.sin, sp.cos))
+        and (not isinstance(f, sp.Pow) or (f.exp.is_Integer and f.exp > 0))
+        and f.free_symbols
+        for f in sp.Mul.make_args(t)
+    )
 
 
 def _positive_sum(f: sp.Expr, intervals: Mapping) -> bool:

@@ -44,9 +44,11 @@ def _paper_model(program: Program) -> PaperModel:
         if f"mu{d}" not in names and f"xi{d}" not in names:
             missing.append(f"mu{d} (or xi{d})")
     if missing:
-        raise CheckError(f"{program.file}: grading against the paper needs the parameters "
-                         f"x1, x2, y, phi1, phi2 and mu1/xi1, mu2/xi2; missing: "
-                         f"{', '.join(missing)}")
+        raise CheckError(
+            f"{program.file}: grading against the paper needs the parameters "
+            f"x1, x2, y, phi1, phi2 and mu1/xi1, mu2/xi2; missing: "
+            f"{', '.join(missing)}"
+        )
     values: dict[sp.Symbol, sp.Expr] = {getattr(S, n): getattr(S, n) for n in _PAPER_PARAMS}
     mu_form = []
     for i in (1, 2):
@@ -83,15 +85,19 @@ def _model_point(pt: Mapping[str, Any]) -> dict[sp.Symbol, sp.Expr]:
     return out
 
 
-def _check_target(program: Program, name: str, env: dict[str, Any], model: PaperModel,
-                  step_conds: Mapping[str, tuple[list[str], list[str]]],
-                  vacuous: Mapping[str, str] | None = None) -> CheckRow:
+def _check_target(
+    program: Program,
+    name: str,
+    env: dict[str, Any],
+    model: PaperModel,
+    step_conds: Mapping[str, tuple[list[str], list[str]]],
+    vacuous: Mapping[str, str] | None = None,
+) -> CheckRow:
     t0 = time.perf_counter()
     obj = env[name]
     want = _paper_object(model, name)
     hyps = _hypotheses(program, True)
-    gone = [f"{n}: {vacuous[n]}" for n in _ancestors(program, [name])
-            if vacuous and n in vacuous]
+    gone = [f"{n}: {vacuous[n]}" for n in _ancestors(program, [name]) if vacuous and n in vacuous]
     if gone:
         return _vacuous(name, "target", _line(program, name), t0, hyps, "; ".join(gone))
     try:
@@ -100,13 +106,22 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
         have = ()
     if len(have) != len(want):
         what = {2: "a point", 3: "a circle", 1: "a number"}[len(want)]
-        return CheckRow(name, "target", _line(program, name), ProofResult(
-            Status.REFUTED, f"the file's {name} is a {type(obj).__name__}; the paper's is "
-            f"{PAPER_TARGETS[name]}", time.perf_counter() - t0, hypotheses=hyps,
-            detail=f"no counterexample needed: the file's {name} is a {type(obj).__name__} "
-            f"for every value of the parameters (the kind of an object does not depend on "
-            f"them) and the paper's {name} is {what}, so they differ at every point of the "
-            f"model"))
+        return CheckRow(
+            name,
+            "target",
+            _line(program, name),
+            ProofResult(
+                Status.REFUTED,
+                f"the file's {name} is a {type(obj).__name__}; the paper's is "
+                f"{PAPER_TARGETS[name]}",
+                time.perf_counter() - t0,
+                hypotheses=hyps,
+                detail=f"no counterexample needed: the file's {name} is a {type(obj).__name__} "
+                f"for every value of the parameters (the kind of an object does not depend on "
+                f"them) and the paper's {name} is {what}, so they differ at every point of the "
+                f"model",
+            ),
+        )
     implied: list[str] = []
     extra: list[str] = []
     for n in _ancestors(program, [name]):
@@ -117,9 +132,19 @@ def _check_target(program: Program, name: str, env: dict[str, Any], model: Paper
 
     def fails(env_at: dict[str, Any], pt: Any) -> bool:
         at = model_at(model, _model_point(pt))
-        return any(nonzero(h - w) for h, w in
-                   zip(coords(env_at[name]), _paper_object(at, name)))
+        return any(nonzero(h - w) for h, w in zip(coords(env_at[name]), _paper_object(at, name)))
 
-    return _row(program, name, "target", _line(program, name), ok, fails, t0, hyps,
-                implied + imp, extra + ext, method,
-                {"cond1": True, "names": _ancestors(program, [name])})
+    return _row(
+        program,
+        name,
+        "target",
+        _line(program, name),
+        ok,
+        fails,
+        t0,
+        hyps,
+        implied + imp,
+        extra + ext,
+        method,
+        {"cond1": True, "names": _ancestors(program, [name])},
+    )

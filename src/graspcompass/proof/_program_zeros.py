@@ -50,15 +50,18 @@ def _term(t: Any, env: Mapping[str, Any], lengths: Mapping[sp.Symbol, Any]) -> A
 def _lengths(env: Mapping[str, Any]) -> dict[sp.Basic, Any]:
     """The claim's symbols -> values: lengths of the construction, and (at a sample point,
     under the key ``"$params"``) the parameters' exact values."""
-    out: dict[sp.Basic, Any] = {sp.Symbol(k, real=True): v for k, v in env.items()
-                                if isinstance(v, sp.Expr)}
+    out: dict[sp.Basic, Any] = {
+        sp.Symbol(k, real=True): v for k, v in env.items() if isinstance(v, sp.Expr)
+    }
     out.update(env.get("$params", {}))
     return out
 
 
 def _line_zero(a: Line, b: Line) -> list[sp.Expr]:
-    return [a.direction.cross(b.direction),
-            Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction)]
+    return [
+        a.direction.cross(b.direction),
+        Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction),
+    ]
 
 
 def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], list[sp.Expr]]:
@@ -76,8 +79,10 @@ def claim_zeros(claim: Claim, env: Mapping[str, Any]) -> tuple[list[sp.Expr], li
         return [Point(p.x - c.point.x, p.y - c.point.y).cross(c.direction)], []
     if claim.kind == "collinear":  # rank of the differences <= 1: every pair, any repetition
         a = objs[0]
-        return [Point(b.x - a.x, b.y - a.y).cross(Point(c.x - a.x, c.y - a.y))
-                for b, c in itertools.combinations(objs[1:], 2)], []
+        return [
+            Point(b.x - a.x, b.y - a.y).cross(Point(c.x - a.x, c.y - a.y))
+            for b, c in itertools.combinations(objs[1:], 2)
+        ], []
     if claim.kind == "concyclic":
         return concyclic_zeros(objs), []
     if claim.kind == "parallel":
@@ -95,7 +100,7 @@ def _vec(a: Point, b: Point) -> Point:
 
 def _d2(a: Point, b: Point) -> sp.Expr:
     v = _vec(a, b)
-    return v.x ** 2 + v.y ** 2
+    return v.x**2 + v.y**2
 
 
 def _angle(a: Point, b: Point, c: Point) -> tuple[sp.Expr, sp.Expr]:
@@ -122,14 +127,18 @@ def class_zeros(kind: str, objs: list[Any]) -> tuple[list[sp.Expr], list[sp.Expr
         return [_d2(a, b) - _d2(c, d)], []
     if kind == "equal_angles":
         (x1, y1), (x2, y2) = _angle(*objs[:3]), _angle(*objs[3:])
-        return [y1 * x2 - x1 * y2], [_d2(objs[0], objs[1]), _d2(objs[1], objs[2]),
-                                     _d2(objs[3], objs[4]), _d2(objs[4], objs[5])]
+        return [y1 * x2 - x1 * y2], [
+            _d2(objs[0], objs[1]),
+            _d2(objs[1], objs[2]),
+            _d2(objs[3], objs[4]),
+            _d2(objs[4], objs[5]),
+        ]
     if kind == "angles":
         *pts, value = objs
         re_, im_ = sp.Integer(1), sp.Integer(0)
         nonzeros = []
         for i in range(0, len(pts), 3):
-            x, y = _angle(*pts[i:i + 3])
+            x, y = _angle(*pts[i : i + 3])
             re_, im_ = re_ * x - im_ * y, re_ * y + im_ * x
             nonzeros += [_d2(pts[i], pts[i + 1]), _d2(pts[i + 1], pts[i + 2])]
         s, c = sincos(sp.sympify(value))
@@ -145,7 +154,7 @@ def class_zeros(kind: str, objs: list[Any]) -> tuple[list[sp.Expr], list[sp.Expr
         return [dd.dot(w) ** 2 - dd.dot(dd) * (w.dot(w) - circle.radius2)], []
     if kind == "ratio":
         a, b, c, d, k = objs
-        return [_d2(a, b) - k ** 2 * _d2(c, d)], [_d2(c, d)]
+        return [_d2(a, b) - k**2 * _d2(c, d)], [_d2(c, d)]
     raise CheckError(f"unknown claim kind {kind!r}")  # pragma: no cover - parser checks
 
 
@@ -158,8 +167,10 @@ def concyclic_zeros(points: list[Point]) -> list[sp.Expr]:
     some such curve always exists (a line through two, the circle or line through three).
     """
     rows = [[p.x**2 + p.y**2, p.x, p.y, 1] for p in points]
-    return [sp.Matrix([rows[i] for i in quad]).det(method="berkowitz")
-            for quad in itertools.combinations(range(len(rows)), 4)]
+    return [
+        sp.Matrix([rows[i] for i in quad]).det(method="berkowitz")
+        for quad in itertools.combinations(range(len(rows)), 4)
+    ]
 
 
 def _concurrent_zeros(lines: list[Line]) -> tuple[list[sp.Expr], list[sp.Expr]]:
@@ -171,12 +182,16 @@ def _concurrent_zeros(lines: list[Line]) -> tuple[list[sp.Expr], list[sp.Expr]]:
         if decide_zero(sp.sympify(cross)) is True:
             continue
         rows = [sp.Matrix([list(ln.coefficients())]) for ln in lines]
-        zeros = [sp.Matrix.vstack(rows[i], rows[j], rows[r]).det()
-                 for r in range(len(lines)) if r not in (i, j)]
+        zeros = [
+            sp.Matrix.vstack(rows[i], rows[j], rows[r]).det()
+            for r in range(len(lines))
+            if r not in (i, j)
+        ]
         return zeros, [cross]
     a = lines[0]
-    return [Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction)
-            for b in lines[1:]], []
+    return [
+        Point(b.point.x - a.point.x, b.point.y - a.point.y).cross(a.direction) for b in lines[1:]
+    ], []
 
 
 def sign_expr(claim: Claim, env: Mapping[str, Any]) -> sp.Expr:

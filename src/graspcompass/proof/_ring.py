@@ -29,8 +29,10 @@ class DegenerateClaimError(GraspCompassError):
 
 def poly_json(p: Any) -> list[list[Any]]:
     """A sparse polynomial as JSON: ``[["p/q", [exponents...]], ...]`` (sorted)."""
-    return sorted(([f"{int(c.numerator)}/{int(c.denominator)}", list(m)] for m, c in p.terms()),
-                  key=lambda t: t[1])
+    return sorted(
+        ([f"{int(c.numerator)}/{int(c.denominator)}", list(m)] for m, c in p.terms()),
+        key=lambda t: t[1],
+    )
 
 
 # documented and pickled with the reductions that raise it (no import cycle: issue 21)
@@ -53,9 +55,11 @@ def _linear(arg: sp.Expr) -> tuple[sp.Expr, dict[sp.Symbol, int]]:
         elif term.is_Rational and term == 0:
             continue
         else:
-            raise ValueError(f"cannot reduce a sine or cosine of {arg}: its argument is not "
-                             "an integer combination of angle symbols plus a rational "
-                             "multiple of pi")
+            raise ValueError(
+                f"cannot reduce a sine or cosine of {arg}: its argument is not "
+                "an integer combination of angle symbols plus a rational "
+                "multiple of pi"
+            )
     return k, {a: n for a, n in coeffs.items() if n}
 
 
@@ -66,8 +70,11 @@ def _const_sc(k: sp.Expr) -> tuple[sp.Expr, sp.Expr] | None:
         if not sp.fraction(sp.together(v))[1].is_Rational:
             return None
         for a in sp.preorder_traversal(v):
-            if a.is_Pow and not a.exp.is_Integer and not (a.exp == sp.S.Half
-                                                          and a.base.is_Rational):
+            if (
+                a.is_Pow
+                and not a.exp.is_Integer
+                and not (a.exp == sp.S.Half and a.base.is_Rational)
+            ):
                 return None
             if a.is_Function:
                 return None
@@ -116,8 +123,12 @@ class RingForm:
         rels += [{"kind": "root", "var": i, "radicand": poly_json(p)} for i, p, _ in self.roots]
         for r, p in zip(rels, self.relations):
             r["poly"] = poly_json(p)
-        return {"vars": list(self.names), "relations": rels, "numerator": poly_json(num),
-                "cofactors": [poly_json(q) for q in quotients]}
+        return {
+            "vars": list(self.names),
+            "relations": rels,
+            "numerator": poly_json(num),
+            "cofactors": [poly_json(q) for q in quotients],
+        }
 
 
 class _Scan:
@@ -173,13 +184,17 @@ def to_ring(exprs: list[sp.Expr]) -> RingForm:
     mus = {mu: xi for mu, xi in _MU.items() if mu in atoms and (xi in sc.angles or xi in atoms)}
     angles = set(sc.angles) | set(mus.values())
     atoms -= set(mus)
-    depth = {r: sum(1 for a in sp.preorder_traversal(b) if a in sc.roots) for r, b in
-             sc.roots.items()}
+    depth = {
+        r: sum(1 for a in sp.preorder_traversal(b) if a in sc.roots) for r, b in sc.roots.items()
+    }
     roots = sorted(sc.roots, key=lambda r: (-depth[r], sp.default_sort_key(r)))
     pair_keys: list[tuple[str, sp.Expr, sp.Expr]] = [
-        (str(a), sp.sin(a), sp.cos(a)) for a in sorted(angles, key=sp.default_sort_key)]
-    pair_keys += [(f"{k}*pi", sp.Symbol(f"sin({k}*pi)"), sp.Symbol(f"cos({k}*pi)"))
-                  for k in sorted(sc.const_pairs, key=sp.default_sort_key)]
+        (str(a), sp.sin(a), sp.cos(a)) for a in sorted(angles, key=sp.default_sort_key)
+    ]
+    pair_keys += [
+        (f"{k}*pi", sp.Symbol(f"sin({k}*pi)"), sp.Symbol(f"cos({k}*pi)"))
+        for k in sorted(sc.const_pairs, key=sp.default_sort_key)
+    ]
     others = sorted(atoms, key=sp.default_sort_key)
     taken = {str(a) for a in others} | {str(p[1]) for p in pair_keys}
     wnames = []
@@ -188,17 +203,26 @@ def to_ring(exprs: list[sp.Expr]) -> RingForm:
         while n in taken:
             n = "_" + n
         wnames.append(n)
-    gens: list[sp.Expr] = [*roots, *(p[1] for p in pair_keys), *others,
-                           *(p[2] for p in pair_keys)]
-    names = [*wnames, *(str(g) for g in gens[len(roots):])]
-    R = sp.ring([sp.Dummy(n) for n in wnames] + gens[len(roots):], sp.QQ, sp.lex)[0] \
-        if gens else sp.ring([sp.Dummy("one")], sp.QQ, sp.lex)[0]
+    gens: list[sp.Expr] = [*roots, *(p[1] for p in pair_keys), *others, *(p[2] for p in pair_keys)]
+    names = [*wnames, *(str(g) for g in gens[len(roots) :])]
+    R = (
+        sp.ring([sp.Dummy(n) for n in wnames] + gens[len(roots) :], sp.QQ, sp.lex)[0]
+        if gens
+        else sp.ring([sp.Dummy("one")], sp.QQ, sp.lex)[0]
+    )
     index = {g: i for i, g in enumerate(gens) if i >= len(roots)}
     pairs = [(a, index[s], index[c]) for a, s, c in pair_keys]
-    conv = _Converter(R, index, mus, {k: (R.gens[index[s]], R.gens[index[c]])
-                                      for (_, s, c), k in zip(pair_keys[len(angles):],
-                                                              sorted(sc.const_pairs,
-                                                                     key=sp.default_sort_key))})
+    conv = _Converter(
+        R,
+        index,
+        mus,
+        {
+            k: (R.gens[index[s]], R.gens[index[c]])
+            for (_, s, c), k in zip(
+                pair_keys[len(angles) :], sorted(sc.const_pairs, key=sp.default_sort_key)
+            )
+        },
+    )
     conv.angle_sc = {a: (R.gens[index[sp.sin(a)]], R.gens[index[sp.cos(a)]]) for a in angles}
     root_rels: list[Any] = []
     for i in reversed(range(len(roots))):  # inner roots first: outer radicands use them
@@ -209,7 +233,7 @@ def to_ring(exprs: list[sp.Expr]) -> RingForm:
     relations = [R.gens[i] ** 2 - p for i, p, _ in root_rels] + relations
     form = RingForm(R, gens, names, pairs, root_rels, relations)
     # the order of the relations in the certificate: pairs first, then roots
-    form.relations = relations[len(root_rels):] + relations[:len(root_rels)]
+    form.relations = relations[len(root_rels) :] + relations[: len(root_rels)]
     for e in exprs:
         conv.dens = []
         form.values.append(conv.nd(e))
@@ -254,8 +278,14 @@ class _Converter:
             return R.gens[self.index[e]], R.one
         if isinstance(e, _TRIG):
             s, c = self._sin_cos(e.args[0])
-            n, d = {sp.sin: (s, R.one), sp.cos: (c, R.one), sp.tan: (s, c), sp.cot: (c, s),
-                    sp.sec: (R.one, c), sp.csc: (R.one, s)}[type(e)]
+            n, d = {
+                sp.sin: (s, R.one),
+                sp.cos: (c, R.one),
+                sp.tan: (s, c),
+                sp.cot: (c, s),
+                sp.sec: (R.one, c),
+                sp.csc: (R.one, s),
+            }[type(e)]
             self._den(d, e)
             return n, d
         if e.is_Add or e.is_Mul:

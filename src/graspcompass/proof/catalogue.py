@@ -24,8 +24,17 @@ from .catalogue_section5 import section5_claims
 #: The n-contact claims in the default catalogue (instant); ``verify --ncontact`` adds the rest.
 DEFAULT_NCONTACT = ("table1c-V4-redundant",)
 
-__all__ = ["CLAIMS", "DEFAULT_NCONTACT", "Claim", "build_claims", "check", "claim",
-           "ncontact_extra", "session", "symbolic_construction"]
+__all__ = [
+    "CLAIMS",
+    "DEFAULT_NCONTACT",
+    "Claim",
+    "build_claims",
+    "check",
+    "claim",
+    "ncontact_extra",
+    "session",
+    "symbolic_construction",
+]
 
 
 def build_claims() -> tuple[Claim, ...]:

@@ -77,7 +77,8 @@ class Claim:
 
 
 _SESSION: ContextVar[dict[int, tuple[Claim, ProofResult]] | None] = ContextVar(
-    "graspcompass_catalogue_session", default=None)
+    "graspcompass_catalogue_session", default=None
+)
 
 #: Errors of a claim's own run that make it UNDECIDED (e.g. a 0/0 statement).
 CLAIM_ERRORS: tuple[type[BaseException], ...] = (ValueError, ZeroDivisionError, TypeError)
@@ -111,8 +112,12 @@ def check(c: Claim) -> ProofResult:
     try:
         r = c.run()
     except CLAIM_ERRORS as exc:
-        r = ProofResult(Status.UNDECIDED, f"error: {type(exc).__name__}",
-                        time.perf_counter() - t0, detail=str(exc)[:300])
+        r = ProofResult(
+            Status.UNDECIDED,
+            f"error: {type(exc).__name__}",
+            time.perf_counter() - t0,
+            detail=str(exc)[:300],
+        )
     r = dataclasses.replace(r, hypotheses=_merge(c.hypotheses, r.hypotheses))
     if memo is not None:
         memo[id(c)] = (c, r)
@@ -126,8 +131,9 @@ def with_xi(expr: Any) -> Any:
     return sp.sympify(expr).xreplace({mu1: sp.tan(xi1), mu2: sp.tan(xi2)})
 
 
-def conjunction(parts: Sequence[ProofResult | Claim], method: str, t0: float,
-                own: Sequence[ProofResult] = ()) -> ProofResult:
+def conjunction(
+    parts: Sequence[ProofResult | Claim], method: str, t0: float, own: Sequence[ProofResult] = ()
+) -> ProofResult:
     """The result of a statement that is the conjunction of ``parts`` and ``own`` checks.
 
     PROVED when every part is; REFUTED (with that counterexample) when a part
@@ -144,26 +150,43 @@ def conjunction(parts: Sequence[ProofResult | Claim], method: str, t0: float,
     dt = time.perf_counter() - t0
     bad = next((r for r in rs if r.status is Status.REFUTED), None)
     if bad is not None:
-        return ProofResult(Status.REFUTED, method, dt, bad.counterexample, bad.detail,
-                           bad.values, **kw)
+        return ProofResult(
+            Status.REFUTED, method, dt, bad.counterexample, bad.detail, bad.values, **kw
+        )
     if all(r.proved for r in rs):
         return ProofResult(Status.PROVED, method, dt, **kw)
     worst = next(r for r in rs if not r.proved)
-    return ProofResult(Status.UNDECIDED, method, dt, detail=f"a part is {worst.status.value}: "
-                       f"{worst.method} {worst.detail}".strip(), **kw)
+    return ProofResult(
+        Status.UNDECIDED,
+        method,
+        dt,
+        detail=f"a part is {worst.status.value}: {worst.method} {worst.detail}".strip(),
+        **kw,
+    )
 
 
-def identity(lhs: Callable[..., Any], rhs: Callable[..., Any] | int = 0,
-             assumptions: Callable[..., Sequence[Any]] | None = None) -> Callable[[], ProofResult]:
+def identity(
+    lhs: Callable[..., Any],
+    rhs: Callable[..., Any] | int = 0,
+    assumptions: Callable[..., Sequence[Any]] | None = None,
+) -> Callable[[], ProofResult]:
     """A claim runner for ``lhs == rhs`` (both built lazily)."""
+
     def run() -> ProofResult:
         a = list(assumptions()) if assumptions else ()
         return prove_identity(lhs(), rhs() if callable(rhs) else rhs, *([a] if a else []))
+
     return run
 
 
-def sign(expr: Any, s: int, witness: Sequence[Any], intervals: dict | None = None,
-         assumptions: Sequence[Any] = (), hypothesis: str = "") -> ProofResult:
+def sign(
+    expr: Any,
+    s: int,
+    witness: Sequence[Any],
+    intervals: dict | None = None,
+    assumptions: Sequence[Any] = (),
+    hypothesis: str = "",
+) -> ProofResult:
     """``sign(expr) == s`` by :func:`prove_sign` with a witness; extra interval hypotheses
     (``intervals`` beyond condition (1)) must come with the matching ``assumptions`` so that
     counterexamples respect them, and are named in the result."""
@@ -183,12 +206,20 @@ def sign_lemma(expr: Any, expected: tuple[int, int], what: str) -> ProofResult:
     t0 = time.perf_counter()
     got = sign_of(sp.sympify(expr), {})  # internal: a catalogue expression
     ok = got == expected
-    return ProofResult(Status.PROVED if ok else Status.UNDECIDED, f"sign rules: {what}",
-                       time.perf_counter() - t0, detail="" if ok else f"sign {got}")
+    return ProofResult(
+        Status.PROVED if ok else Status.UNDECIDED,
+        f"sign rules: {what}",
+        time.perf_counter() - t0,
+        detail="" if ok else f"sign {got}",
+    )
 
 
-def propositional(atoms: Sequence[str], facts: Callable[[dict[str, bool]], bool],
-                  goal: Callable[[dict[str, bool]], bool], what: str) -> ProofResult:
+def propositional(
+    atoms: Sequence[str],
+    facts: Callable[[dict[str, bool]], bool],
+    goal: Callable[[dict[str, bool]], bool],
+    what: str,
+) -> ProofResult:
     """``facts ⇒ goal`` for every truth assignment of ``atoms`` (a complete check)."""
     t0 = time.perf_counter()
     bad = None
@@ -199,10 +230,17 @@ def propositional(atoms: Sequence[str], facts: Callable[[dict[str, bool]], bool]
             break
     dt = time.perf_counter() - t0
     if bad is None:
-        return ProofResult(Status.PROVED, f"propositional check over all {2 ** len(atoms)} "
-                           f"truth assignments: {what}", dt)
-    return ProofResult(Status.UNDECIDED, f"propositional check: {what}", dt,
-                       detail="fails at " + ", ".join(f"{k}={int(b)}" for k, b in bad.items()))
+        return ProofResult(
+            Status.PROVED,
+            f"propositional check over all {2 ** len(atoms)} truth assignments: {what}",
+            dt,
+        )
+    return ProofResult(
+        Status.UNDECIDED,
+        f"propositional check: {what}",
+        dt,
+        detail="fails at " + ", ".join(f"{k}={int(b)}" for k, b in bad.items()),
+    )
 
 
 # -- the construction -------------------------------------------------------------

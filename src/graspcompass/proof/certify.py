@@ -58,8 +58,9 @@ class StepCertificate:
     result: ProofResult
 
 
-def step_facts(step: Step, env: dict[str, Any], model: PaperModel | None = None,
-               grasp: Grasp | None = None) -> list[tuple[str, Any]]:
+def step_facts(
+    step: Step, env: dict[str, Any], model: PaperModel | None = None, grasp: Grasp | None = None
+) -> list[tuple[str, Any]]:
     """``(text, expression that must vanish)`` for the facts of ``step``.
 
     ``model`` defaults to the paper's objects for ``grasp``; non-equality facts
@@ -117,8 +118,11 @@ def _decide_symbolic(f: Fact) -> _Sym:
         if f.kind != "eq":
             return _Sym(None, [])
         r = prove_identity(f.lhs, f.rhs)
-        return _Sym(True if r.proved else (False if r.status is Status.REFUTED else None),
-                    [], "prove_identity")
+        return _Sym(
+            True if r.proved else (False if r.status is Status.REFUTED else None),
+            [],
+            "prove_identity",
+        )
     if f.kind == "nonzero":  # an assumption: listed, unless identically false
         return _Sym(bool(R.reduce(n)), [n, *den_powers])
     return _Sym(None, [])
@@ -130,8 +134,11 @@ def _sample_point(rng: random.Random) -> dict[sp.Symbol, sp.Expr]:
 
     lengths = [sp.Rational(n, d) for n, d in ((1, 2), (1, 1), (3, 2), (2, 1), (3, 1), (7, 5))]
     mus = [sp.Rational(n, d) for n, d in ((1, 3), (1, 2), (1, 1), (6, 5), (2, 1), (3, 1))]
-    pt: dict[sp.Symbol, sp.Expr] = {S.x1: rng.choice(lengths), S.x2: rng.choice(lengths),
-                                    S.y: rng.choice([sp.Integer(0), *lengths])}
+    pt: dict[sp.Symbol, sp.Expr] = {
+        S.x1: rng.choice(lengths),
+        S.x2: rng.choice(lengths),
+        S.y: rng.choice([sp.Integer(0), *lengths]),
+    }
     for phi, xi, mu in ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2)):
         m = rng.choice(mus)
         pt[mu], pt[xi], pt[phi] = m, sp.atan(m), sp.pi * sp.Rational(rng.randint(1, 12), 12)
@@ -148,17 +155,22 @@ def _violations(pt: dict[sp.Symbol, sp.Expr]) -> list[str]:
     import math
 
     from .. import symbols as S
+
     bad = []
     for phi, mu in ((S.phi1, S.mu1), (S.phi2, S.mu2)):
         p, x = float(pt[phi]), math.atan(float(pt[mu]))
-        if not (0 < p <= math.pi and math.pi / 2 < p + x < 1.5 * math.pi
-                and -math.pi / 2 < p - x < math.pi / 2):
+        if not (
+            0 < p <= math.pi
+            and math.pi / 2 < p + x < 1.5 * math.pi
+            and -math.pi / 2 < p - x < math.pi / 2
+        ):
             bad.append(f"condition (1) fails at {phi}")
     return bad
 
 
-def _counterexample(c: Construction, index: int, text: str, model: PaperModel,
-                    tries: int = 40, seed: int = 2012) -> dict[str, str] | None:
+def _counterexample(
+    c: Construction, index: int, text: str, model: PaperModel, tries: int = 40, seed: int = 2012
+) -> dict[str, str] | None:
     """A re-checked point of the model where the replayed step ``index`` breaks ``text``."""
     rng = random.Random(seed)
     specs = [s.spec for s in c.steps[: index + 1]]
@@ -186,8 +198,9 @@ def _result(status: Status, method: str, t0: float, bad: list[str], **kw: Any) -
     return ProofResult(status, method, time.perf_counter() - t0, detail="; ".join(bad), **kw)
 
 
-def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: PaperModel,
-                  symbolic: bool) -> tuple[list[Fact], ProofResult]:
+def _certify_step(
+    c: Construction, step: Step, env: dict[str, Any], model: PaperModel, symbolic: bool
+) -> tuple[list[Fact], ProofResult]:
     t0 = time.perf_counter()
     facts = facts_for(step, env, model)
     given = _given(step)
@@ -196,14 +209,24 @@ def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: Paper
         verdicts = [decide(f) for f in facts]
         bad = [f.text for f, v in zip(facts, verdicts) if v is not True]
         if any(v is False for v in verdicts):
-            return facts, _result(Status.REFUTED, "exact decision" if not model.numeric else
-                                  f"float, tolerance {RTOL:g} × magnitudes", t0,
-                                  [f.text for f, v in zip(facts, verdicts) if v is False])
+            return facts, _result(
+                Status.REFUTED,
+                "exact decision"
+                if not model.numeric
+                else f"float, tolerance {RTOL:g} × magnitudes",
+                t0,
+                [f.text for f, v in zip(facts, verdicts) if v is False],
+            )
         if bad:
             return facts, _result(Status.UNDECIDED, "undecided facts", t0, bad)
         status = Status.GIVEN if given else Status.NUMERIC if model.numeric else Status.PROVED
-        method = ("matches the grasp" if given else f"float, tolerance {RTOL:g} × magnitudes"
-                  if model.numeric else "exact decision of each fact")
+        method = (
+            "matches the grasp"
+            if given
+            else f"float, tolerance {RTOL:g} × magnitudes"
+            if model.numeric
+            else "exact decision of each fact"
+        )
         return facts, _result(status, method, t0, [])
     conds: list[Any] = []
     for f in facts:
@@ -213,11 +236,20 @@ def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: Paper
                 return facts, _result(Status.UNDECIDED, r.method, t0, [f.text])
             cx = _counterexample(c, step.index, f.text, model)
             if cx is None:
-                return facts, _result(Status.UNDECIDED, r.method + " (non-zero normal form, "
-                                      "no re-checked counterexample)", t0, [f.text])
-            return facts, _result(Status.REFUTED, r.method + "; counterexample replayed "
-                                  "exactly", t0, [f.text], counterexample=cx,
-                                  hypotheses=_HYP)
+                return facts, _result(
+                    Status.UNDECIDED,
+                    r.method + " (non-zero normal form, no re-checked counterexample)",
+                    t0,
+                    [f.text],
+                )
+            return facts, _result(
+                Status.REFUTED,
+                r.method + "; counterexample replayed exactly",
+                t0,
+                [f.text],
+                counterexample=cx,
+                hypotheses=_HYP,
+            )
         conds += r.conditions
     R = ring()
     for e in step.conditions:
@@ -234,20 +266,33 @@ def _certify_step(c: Construction, step: Step, env: dict[str, Any], model: Paper
         try:
             imp, ext = classify(p)
         except ValueError as exc:
-            return facts, _result(Status.REFUTED, "degenerate: a divisor vanishes for every "
-                                  "parameter", t0, [str(exc)], hypotheses=_HYP)
+            return facts, _result(
+                Status.REFUTED,
+                "degenerate: a divisor vanishes for every parameter",
+                t0,
+                [str(exc)],
+                hypotheses=_HYP,
+            )
         implied.update(imp)
         extra.update(dict.fromkeys(ext))
     status = Status.GIVEN if given else Status.PROVED
-    return facts, _result(status, "polynomial reduction modulo sin² + cos² − 1, cleared "
-                          "denominators", t0, [], hypotheses=_HYP, conditions=tuple(extra),
-                          implied=tuple(f"{k} ({v})" for k, v in implied.items()))
+    return facts, _result(
+        status,
+        "polynomial reduction modulo sin² + cos² − 1, cleared denominators",
+        t0,
+        [],
+        hypotheses=_HYP,
+        conditions=tuple(extra),
+        implied=tuple(f"{k} ({v})" for k, v in implied.items()),
+    )
 
 
-def certify(construction: Construction,
-            progress: Callable[[int, int], None] | None = None,
-            timeout: float | None = None, budget: Budget | None = None
-            ) -> list[StepCertificate]:
+def certify(
+    construction: Construction,
+    progress: Callable[[int, int], None] | None = None,
+    timeout: float | None = None,
+    budget: Budget | None = None,
+) -> list[StepCertificate]:
     """Prove that every step of ``construction`` is the paper's (§3.3, (28)-(39), (A4)-(A8)).
 
     ``timeout`` bounds the whole run (seconds, ``None``: no limit): the
@@ -271,8 +316,17 @@ def certify(construction: Construction,
     for i, step in enumerate(construction.steps):
         facts, result = budget.run(
             lambda step=step: _certify_step(construction, step, env, model, symbolic),
-            lambda: ([], ProofResult(Status.UNDECIDED, TIMED_OUT, 0.0, hypotheses=_HYP,
-                                     detail=f"--timeout {budget.seconds:g} s")))
+            lambda: (
+                [],
+                ProofResult(
+                    Status.UNDECIDED,
+                    TIMED_OUT,
+                    0.0,
+                    hypotheses=_HYP,
+                    detail=f"--timeout {budget.seconds:g} s",
+                ),
+            ),
+        )
         out.append(StepCertificate(step.name, tuple(f.text for f in facts), result))
         env[step.name] = step.obj
         if progress:
@@ -282,8 +336,18 @@ def certify(construction: Construction,
 
 def certify_records(certs: list[StepCertificate]) -> list[dict[str, Any]]:
     """JSON-ready rows: step, status, facts, conditions, implied, counterexample, seconds."""
-    return [dict(step=c.step, status=c.result.status.value, method=c.result.method,
-                 facts=list(c.facts), detail=c.result.detail,
-                 conditions=list(c.result.conditions), implied=list(c.result.implied),
-                 hypotheses=list(c.result.hypotheses), counterexample=c.result.counterexample,
-                 seconds=round(c.result.seconds, 4)) for c in certs]
+    return [
+        dict(
+            step=c.step,
+            status=c.result.status.value,
+            method=c.result.method,
+            facts=list(c.facts),
+            detail=c.result.detail,
+            conditions=list(c.result.conditions),
+            implied=list(c.result.implied),
+            hypotheses=list(c.result.hypotheses),
+            counterexample=c.result.counterexample,
+            seconds=round(c.result.seconds, 4),
+        )
+        for c in certs
+    ]

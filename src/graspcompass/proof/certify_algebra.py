@@ -233,7 +233,9 @@ def _sign_table() -> tuple[tuple[Any, str], ...]:
             (c + s * mu, sp.cos(phi - xi) / cx, f"c{i} + s{i}μ{i} = cos(φ{i}−ξ{i})/cos ξ{i}"),
             (c * cx - s * sx, sp.cos(phi + xi), f"cos(φ{i}+ξ{i})"),
             (c * cx + s * sx, sp.cos(phi - xi), f"cos(φ{i}−ξ{i})"),
-            (cx, cx, f"cos ξ{i}"), (sx, sx, f"sin ξ{i}"), (s, s, f"sin φ{i}"),
+            (cx, cx, f"cos ξ{i}"),
+            (sx, sx, f"sin ξ{i}"),
+            (s, s, f"sin φ{i}"),
         ]
         for poly, witness, text in entries:
             if not reduce_expr(poly.subs(mu, sp.tan(xi)) - witness).is_zero:

@@ -44,29 +44,51 @@ def envelope_facts(env: Any, m: PaperModel) -> list[Fact]:
     if not arcs:
         return [Fact("the envelope has at least one arc", 1, 0)]
     total = sum((a.theta_end - a.theta_start for a in arcs), sp.Integer(0))
-    facts.append(Fact("the arcs cover one full turn", total, 2 * sp.pi,
-                      scale=lambda: 2 * math.pi))
+    facts.append(Fact("the arcs cover one full turn", total, 2 * sp.pi, scale=lambda: 2 * math.pi))
     for j, a in enumerate(arcs):
         nxt = arcs[(j + 1) % len(arcs)]
         lab = f"arc {j + 1} ({'O' if a.n == 0 else f'circle{a.n}'})"
         gap = a.theta_end - nxt.theta_start
         turns = round(float(gap) / (2 * float(sp.pi))) if j == len(arcs) - 1 else 0
-        facts.append(Fact(f"{lab} ends at the angle where arc {(j + 1) % len(arcs) + 1} "
-                          "starts", gap, 2 * sp.pi * turns, scale=lambda: 2 * math.pi))
+        facts.append(
+            Fact(
+                f"{lab} ends at the angle where arc {(j + 1) % len(arcs) + 1} starts",
+                gap,
+                2 * sp.pi * turns,
+                scale=lambda: 2 * math.pi,
+            )
+        )
         for c in "xy":
             pa, pb = getattr(a.end, c), getattr(nxt.start, c)
-            facts.append(Fact(f"{lab} ends where the next arc starts ({c})", pa, pb,
-                              scale=lambda pa=pa, pb=pb: _f(pa, pb, L)))
+            facts.append(
+                Fact(
+                    f"{lab} ends where the next arc starts ({c})",
+                    pa,
+                    pb,
+                    scale=lambda pa=pa, pb=pb: _f(pa, pb, L),
+                )
+            )
         for where, p in (("starts", a.start), ("ends", a.end)):
             if a.n == 0:
-                facts += [Fact(f"{lab} {where} at O ({c})", getattr(p, c), 0,
-                               scale=lambda p=p: _f(p.x, p.y, L)) for c in "xy"]
+                facts += [
+                    Fact(
+                        f"{lab} {where} at O ({c})",
+                        getattr(p, c),
+                        0,
+                        scale=lambda p=p: _f(p.x, p.y, L),
+                    )
+                    for c in "xy"
+                ]
             elif not _is_origin(p):
                 s, cc = m.V(a.n)
-                facts.append(Fact(f"{lab} {where} on the circle on O V{a.n}",
-                                  p.x**2 + p.y**2, s * p.x + cc * p.y,
-                                  scale=lambda p=p, s=s, cc=cc: _f(p.x, p.y, L)
-                                  * _f(p.x, p.y, s, cc, L)))
+                facts.append(
+                    Fact(
+                        f"{lab} {where} on the circle on O V{a.n}",
+                        p.x**2 + p.y**2,
+                        s * p.x + cc * p.y,
+                        scale=lambda p=p, s=s, cc=cc: _f(p.x, p.y, L) * _f(p.x, p.y, s, cc, L),
+                    )
+                )
         facts += _winner_facts(a, lab, m)
     return facts
 
@@ -79,8 +101,9 @@ def _winner_facts(a: Any, lab: str, m: PaperModel) -> list[Fact]:
     for j in range(pieces + 1):
         end = a.start if j == 0 else a.end if j == pieces else None
         t = t0 + (t1 - t0) * sp.Rational(j, pieces)
-        cuts.append((f"θ = {float(t):.6g}", end if end is not None and not _is_origin(end)
-                     else None, t))
+        cuts.append(
+            (f"θ = {float(t):.6g}", end if end is not None and not _is_origin(end) else None, t)
+        )
     out = []
     for where, p, t in cuts:
         for k in range(5):
@@ -92,7 +115,13 @@ def _winner_facts(a: Any, lab: str, m: PaperModel) -> list[Fact]:
                 lhs = m.k(a.n, t) if a.n else sp.Integer(0)
                 rhs = m.k(k, t) if k else sp.Integer(0)
             who = f"k{a.n}" if a.n else "0"
-            out.append(Fact(f"{lab}: {who} ≥ {f'k{k}' if k else '0'} at {where} (eq. (27))",
-                            lhs - rhs, 0, kind="nonneg",
-                            scale=lambda lhs=lhs, rhs=rhs: _f(lhs, rhs, m.length)))
+            out.append(
+                Fact(
+                    f"{lab}: {who} ≥ {f'k{k}' if k else '0'} at {where} (eq. (27))",
+                    lhs - rhs,
+                    0,
+                    kind="nonneg",
+                    scale=lambda lhs=lhs, rhs=rhs: _f(lhs, rhs, m.length),
+                )
+            )
     return out

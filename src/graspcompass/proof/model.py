@@ -33,17 +33,28 @@ from ..boundary.errors import WrongTypeError
 from ..boundary.expr import ExpressionError, parse_exact
 from ..boundary.inputs import real_value
 
-__all__ = ["CONTACTS", "find_counterexample", "nonzero_at", "outside_expr", "sample",
-           "violations", "wrong_sign"]
+__all__ = [
+    "CONTACTS",
+    "find_counterexample",
+    "nonzero_at",
+    "outside_expr",
+    "sample",
+    "violations",
+    "wrong_sign",
+]
 
 #: (phi_i, xi_i, mu_i) of the two contacts.
 CONTACTS = ((S.phi1, S.xi1, S.mu1), (S.phi2, S.xi2, S.mu2))
 _BY_NAME = {str(s): s for s in S.DOMAINS}
 _MARGIN = sp.Float(10) ** -40
-_LENGTHS = [sp.Rational(n, d) for n, d in ((1, 3), (1, 2), (2, 3), (1, 1), (3, 2), (2, 1),
-                                           (5, 2), (3, 1), (7, 5), (4, 5))]
-_MUS = [sp.Rational(n, d) for n, d in ((1, 5), (1, 3), (1, 2), (3, 4), (1, 1), (6, 5), (7, 5),
-                                       (2, 1), (3, 1), (5, 1))]
+_LENGTHS = [
+    sp.Rational(n, d)
+    for n, d in ((1, 3), (1, 2), (2, 3), (1, 1), (3, 2), (2, 1), (5, 2), (3, 1), (7, 5), (4, 5))
+]
+_MUS = [
+    sp.Rational(n, d)
+    for n, d in ((1, 5), (1, 3), (1, 2), (3, 4), (1, 1), (6, 5), (7, 5), (2, 1), (3, 1), (5, 1))
+]
 
 
 def outside_expr(value: Any, name: str, known: Iterable[sp.Symbol] = ()) -> Any:
@@ -101,12 +112,15 @@ def outside_expr(value: Any, name: str, known: Iterable[sp.Symbol] = ()) -> Any:
     except Exception:  # a hostile __repr__ must not hide the real error
         shown = "..."
     shown = shown if len(shown) <= 60 else shown[:57] + "..."
-    raise WrongTypeError(f"{name}: expected a sympy expression, text or a number, got "
-                         f"{shown} (type {type(value).__name__})")
+    raise WrongTypeError(
+        f"{name}: expected a sympy expression, text or a number, got "
+        f"{shown} (type {type(value).__name__})"
+    )
 
 
-def _normalise(values: Mapping[Any, Any], known: Iterable[sp.Symbol] = ()
-               ) -> dict[sp.Symbol, sp.Expr]:
+def _normalise(
+    values: Mapping[Any, Any], known: Iterable[sp.Symbol] = ()
+) -> dict[sp.Symbol, sp.Expr]:
     """Symbols for names (those of the model, else of ``known``), exact values for text.
 
     Values from the caller pass :func:`graspcompass.inputs.real_value` (text by the
@@ -123,11 +137,17 @@ def _normalise(values: Mapping[Any, Any], known: Iterable[sp.Symbol] = ()
 
 #: (lower bound, open?, upper bound, open?) of each symbol of the model (§2.2).
 _DOMAIN: dict[sp.Symbol, tuple[Any, bool, Any, bool]] = {
-    S.x1: (0, True, None, False), S.x2: (0, True, None, False), S.y: (0, False, None, False),
-    S.phi1: (0, True, sp.pi, False), S.phi2: (0, True, sp.pi, False),
-    S.xi1: (0, True, sp.pi / 2, True), S.xi2: (0, True, sp.pi / 2, True),
-    S.mu1: (0, True, None, False), S.mu2: (0, True, None, False),
-    S.F_e: (0, True, None, False), S.theta: (None, False, None, False),
+    S.x1: (0, True, None, False),
+    S.x2: (0, True, None, False),
+    S.y: (0, False, None, False),
+    S.phi1: (0, True, sp.pi, False),
+    S.phi2: (0, True, sp.pi, False),
+    S.xi1: (0, True, sp.pi / 2, True),
+    S.xi2: (0, True, sp.pi / 2, True),
+    S.mu1: (0, True, None, False),
+    S.mu2: (0, True, None, False),
+    S.F_e: (0, True, None, False),
+    S.theta: (None, False, None, False),
 }
 
 
@@ -154,9 +174,14 @@ def _sign(d: sp.Expr) -> int | None:
     return None
 
 
-_OPS = {sp.StrictGreaterThan: lambda s: s > 0, sp.GreaterThan: lambda s: s >= 0,
-        sp.StrictLessThan: lambda s: s < 0, sp.LessThan: lambda s: s <= 0,
-        sp.Equality: lambda s: s == 0, sp.Unequality: lambda s: s != 0}
+_OPS = {
+    sp.StrictGreaterThan: lambda s: s > 0,
+    sp.GreaterThan: lambda s: s >= 0,
+    sp.StrictLessThan: lambda s: s < 0,
+    sp.LessThan: lambda s: s <= 0,
+    sp.Equality: lambda s: s == 0,
+    sp.Unequality: lambda s: s != 0,
+}
 
 
 def _check(rel: Any, values: Mapping[sp.Symbol, sp.Expr]) -> str | None:
@@ -182,10 +207,12 @@ def _check(rel: Any, values: Mapping[sp.Symbol, sp.Expr]) -> str | None:
 
 
 def _condition_1(phi: sp.Expr, fric: sp.Expr) -> list[Any]:
-    return [sp.StrictGreaterThan(phi + fric, sp.pi / 2, evaluate=False),
-            sp.StrictLessThan(phi + fric, 3 * sp.pi / 2, evaluate=False),
-            sp.StrictLessThan(phi - fric, sp.pi / 2, evaluate=False),
-            sp.StrictGreaterThan(phi - fric, -sp.pi / 2, evaluate=False)]
+    return [
+        sp.StrictGreaterThan(phi + fric, sp.pi / 2, evaluate=False),
+        sp.StrictLessThan(phi + fric, 3 * sp.pi / 2, evaluate=False),
+        sp.StrictLessThan(phi - fric, sp.pi / 2, evaluate=False),
+        sp.StrictGreaterThan(phi - fric, -sp.pi / 2, evaluate=False),
+    ]
 
 
 def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str]:
@@ -214,8 +241,12 @@ def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str
             out.append(f"{sym} = {val} is not real")
             continue
         lo, lo_open, hi, hi_open = _DOMAIN.get(sym) or (
-            (0, True, None, False) if sym.is_positive else
-            (0, False, None, False) if sym.is_nonnegative else (None, False, None, False))
+            (0, True, None, False)
+            if sym.is_positive
+            else (0, False, None, False)
+            if sym.is_nonnegative
+            else (None, False, None, False)
+        )
         for bound, is_open, side in ((lo, lo_open, 1), (hi, hi_open, -1)):
             if bound is None:
                 continue
@@ -226,23 +257,32 @@ def violations(values: Mapping[Any, Any], extra: Iterable[Any] = ()) -> list[str
     for i, (phi, xi, mu) in enumerate(CONTACTS, 1):
         if xi in v and mu in v and _equal_tan(v[mu], v[xi]) is not True:
             out.append(f"{mu} = tan({xi}) (eq. (22)) fails")
-        fric, name = (xi, str(xi)) if xi in v else (sp.atan(mu), f"atan({mu})") if mu in v \
-            else (None, "")
+        fric, name = (
+            (xi, str(xi)) if xi in v else (sp.atan(mu), f"atan({mu})") if mu in v else (None, "")
+        )
         qp, qf = _pi_q(v.get(phi)), _fric_q(v, xi, mu)
         if qp is not None and qf is not None:  # rational multiples of pi: exact at once
             if not (abs(qp + qf - 1) < sp.Rational(1, 2) and abs(qp - qf) < sp.Rational(1, 2)):
-                out.append(f"condition (1) at contact {i}: {phi} = {v[phi]}, {name} = "
-                           f"{qf * sp.pi} break pi/2 < phi + xi < 3pi/2, |phi - xi| < pi/2")
+                out.append(
+                    f"condition (1) at contact {i}: {phi} = {v[phi]}, {name} = "
+                    f"{qf * sp.pi} break pi/2 < phi + xi < 3pi/2, |phi - xi| < pi/2"
+                )
         elif phi in v and fric is not None:
             fv = fric.xreplace(v)
             for n, rel in enumerate(_condition_1(v[phi], fv)):
                 if _check(rel, v):
-                    text = (f"{phi} + {name} > pi/2", f"{phi} + {name} < 3*pi/2",
-                            f"{phi} - {name} < pi/2", f"{phi} - {name} > -pi/2")[n]
+                    text = (
+                        f"{phi} + {name} > pi/2",
+                        f"{phi} + {name} < 3*pi/2",
+                        f"{phi} - {name} < pi/2",
+                        f"{phi} - {name} > -pi/2",
+                    )[n]
                     out.append(f"condition (1) at contact {i}: {text} fails")
         elif phi in v and _check(sp.StrictLessThan(v[phi], sp.pi, evaluate=False), v):
-            out.append(f"condition (1) at contact {i}: {phi} < pi fails (no friction "
-                       "value admits this angle)")
+            out.append(
+                f"condition (1) at contact {i}: {phi} < pi fails (no friction "
+                "value admits this angle)"
+            )
     for rel in extra:
         bad = _check(rel, v)
         if bad:
@@ -282,8 +322,11 @@ def _angle(rng: random.Random, lo: int, hi: int) -> sp.Expr:
     return sp.pi * sp.Rational(rng.randint(lo, hi), 24)
 
 
-def sample(symbols: Sequence[sp.Symbol], rng: random.Random,
-           domains: Mapping[sp.Symbol, tuple[Any, Any]] | None = None) -> dict[sp.Symbol, sp.Expr]:
+def sample(
+    symbols: Sequence[sp.Symbol],
+    rng: random.Random,
+    domains: Mapping[sp.Symbol, tuple[Any, Any]] | None = None,
+) -> dict[sp.Symbol, sp.Expr]:
     """An exact admissible point for ``symbols`` (condition (1), (22), the domains).
 
     ``xi_i`` is drawn first and ``mu_i = tan(xi_i)`` exactly when both occur; ``phi_i``
@@ -332,8 +375,7 @@ def _phis_for(mu: sp.Expr) -> tuple[int, ...]:
 
 def _value(sym: sp.Symbol, rng: random.Random, dom: tuple[Any, Any] | None) -> sp.Expr:
     if dom is not None:
-        lo, hi = (outside_expr(d, f"domain of {sym}") if d is not None else None
-                  for d in dom)
+        lo, hi = (outside_expr(d, f"domain of {sym}") if d is not None else None for d in dom)
         if hi is None:
             return lo + rng.choice(_LENGTHS)
         return lo + (hi - lo) * sp.Rational(rng.randint(1, 23), 24)

@@ -42,28 +42,40 @@ k_symbol = sp.Symbol("k", real=True)
 #: eq. (5): L31, L32, L33, L34 as printed below the matrix
 L3_printed = (-c1 * x1 + s1 * y, +s1 * x1 + c1 * y, +c2 * x2 - s2 * y, -s2 * x2 - c2 * y)
 #: eq. (5)
-L_printed = sp.Matrix([
-    [-s1, -c1, s2, c2],
-    [-c1, s1, -c2, s2],
-    list(L3_printed),
-])
+L_printed = sp.Matrix(
+    [
+        [-s1, -c1, s2, c2],
+        [-c1, s1, -c2, s2],
+        list(L3_printed),
+    ]
+)
 #: eq. (26)
 e_printed = sp.Matrix([s, -c])
 #: eq. (4)
 M_printed = sp.Matrix([-F_e * s, F_e * c, 0])
 #: eq. (13)
-F_T_printed = F_e / (2 * D) * sp.Matrix([
-    D * s1 * s + 2 * (y * s - x2 * c) * c1,
-    D * c1 * s - 2 * (y * s - x2 * c) * s1,
-    -D * s2 * s - 2 * (y * s + x1 * c) * c2,
-    -D * c2 * s + 2 * (y * s + x1 * c) * s2,
-])
+F_T_printed = (
+    F_e
+    / (2 * D)
+    * sp.Matrix(
+        [
+            D * s1 * s + 2 * (y * s - x2 * c) * c1,
+            D * c1 * s - 2 * (y * s - x2 * c) * s1,
+            -D * s2 * s - 2 * (y * s + x1 * c) * c2,
+            -D * c2 * s + 2 * (y * s + x1 * c) * s2,
+        ]
+    )
+)
 #: eq. (15)
 F_N_printed = F_e / (2 * D) * sp.Matrix([2 * s1, 2 * c1, 2 * s2, 2 * c2])
 
 #: f_N1 ... f_N4 of (A1)-(A3): the entries of (15) as printed, one by one
-f_N_printed = (F_e / (2 * D) * 2 * s1, F_e / (2 * D) * 2 * c1, F_e / (2 * D) * 2 * s2,
-               F_e / (2 * D) * 2 * c2)
+f_N_printed = (
+    F_e / (2 * D) * 2 * s1,
+    F_e / (2 * D) * 2 * c1,
+    F_e / (2 * D) * 2 * s2,
+    F_e / (2 * D) * 2 * c2,
+)
 
 #: Table I (§4.2): P1, φ1, μ1, P2, φ2, μ2 for cases (a), (b), (c), as printed
 TABLE_I = {

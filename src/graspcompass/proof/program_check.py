@@ -94,8 +94,10 @@ def _check_model_params(program: Program) -> None:
     for p in program.params:
         want = DOMAIN_WORDS.get(p.name)
         if want is not None and p.domain != want:
-            raise CheckError(f"{program.file}:{p.line}:1: {p.name} is the model's parameter "
-                             f"and has the domain {want}; declare it so (got {p.domain})")
+            raise CheckError(
+                f"{program.file}:{p.line}:1: {p.name} is the model's parameter "
+                f"and has the domain {want}; declare it so (got {p.domain})"
+            )
 
 
 def _worded(out: Any, ops: list, words: list[str], cond1: bool, tie: Any) -> Any:
@@ -110,12 +112,16 @@ def _worded(out: Any, ops: list, words: list[str], cond1: bool, tie: Any) -> Any
     return out
 
 
-_TWO_POINTS = ("line_through", "circle_through", "circle_on_diameter", "intersect_circles",
-               "second_intersection")
+_TWO_POINTS = (
+    "line_through",
+    "circle_through",
+    "circle_on_diameter",
+    "intersect_circles",
+    "second_intersection",
+)
 
 
-def _distinct_ends(program: Program, c: Construction, s: Any, own: Any,
-                   texts: list[str]) -> None:
+def _distinct_ends(program: Program, c: Construction, s: Any, own: Any, texts: list[str]) -> None:
     """Two points shown distinct under the kernel conditions of the steps before (which
     every result using the step assumes): a line's direction, a circle's radius, the
     line of two centres; the condition (``texts``) is then implied."""
@@ -124,18 +130,25 @@ def _distinct_ends(program: Program, c: Construction, s: Any, own: Any,
     by = {st.name: st for st in c.steps}
     ins = [by[n].obj for n in s.inputs]
     assumed = [e for n in _ancestors(program, [s.name]) if n in by for e in by[n].conditions]
-    a, b = (ins[0], ins[1]) if s.op in ("line_through", "circle_through",
-                                        "circle_on_diameter") else (ins[0].center, ins[1].center)
+    a, b = (
+        (ins[0], ins[1])
+        if s.op in ("line_through", "circle_through", "circle_on_diameter")
+        else (ins[0].center, ins[1].center)
+    )
     if distinct(a, b, assumed):
         own.extra = [t for t in own.extra if t not in texts]
-        own.implied += [t + " (the two points differ wherever the steps before are defined)"
-                        for t in texts]
+        own.implied += [
+            t + " (the two points differ wherever the steps before are defined)" for t in texts
+        ]
 
 
 # -- the whole file -----------------------------------------------------------------------
-def check_program(program: Program, against: str | None = None,
-                  progress: Callable[[int, int, str], None] | None = None,
-                  timeout: float | None = None) -> ProgramReport:
+def check_program(
+    program: Program,
+    against: str | None = None,
+    progress: Callable[[int, int, str], None] | None = None,
+    timeout: float | None = None,
+) -> ProgramReport:
     """Certify the steps, prove the claims and (``against="paper"``) grade the objects.
 
     Parameters
@@ -177,22 +190,40 @@ def check_program(program: Program, against: str | None = None,
     model = _paper_model(program) if against == "paper" else None
     targets = [s.name for s in program.steps if s.name in PAPER_TARGETS]
     if against == "paper" and not targets:
-        raise CheckError(f"{program.file}: no object is named like a point of the paper "
-                         f"({', '.join(PAPER_TARGETS)}): nothing to grade")
+        raise CheckError(
+            f"{program.file}: no object is named like a point of the paper "
+            f"({', '.join(PAPER_TARGETS)}): nothing to grade"
+        )
     budget = Budget(timeout)
 
     def late(name: str, kind: str, line: int) -> Callable[[], CheckRow]:
-        return lambda: CheckRow(name, kind, line, ProofResult(
-            Status.UNDECIDED, TIMED_OUT, 0.0, detail=f"--timeout {timeout:g} s",
-            hypotheses=_hypotheses(program, _COND1 in program.hypotheses)))
+        return lambda: CheckRow(
+            name,
+            kind,
+            line,
+            ProofResult(
+                Status.UNDECIDED,
+                TIMED_OUT,
+                0.0,
+                detail=f"--timeout {timeout:g} s",
+                hypotheses=_hypotheses(program, _COND1 in program.hypotheses),
+            ),
+        )
 
     c = budget.run(lambda: replay(program), lambda: None)
     if c is None:  # the replay itself ran out of time: every row is timed out
         rows = [late(st.name, "step", st.line)() for st in program.steps]
         claims = [late(_text(cl), "claim", cl.line)() for cl in program.claims]
         tg = [late(t, "target", _line(program, t))() for t in targets]
-        return ProgramReport(program.file, tuple(rows), tuple(claims), tuple(tg), against,
-                             time.perf_counter() - t0, None)
+        return ProgramReport(
+            program.file,
+            tuple(rows),
+            tuple(claims),
+            tuple(tg),
+            against,
+            time.perf_counter() - t0,
+            None,
+        )
     env = {s.name: s.obj for s in c.steps}
     made = set(env)
     targets = [t for t in targets if t in made]  # an optional step may be left out
@@ -214,53 +245,103 @@ def check_program(program: Program, against: str | None = None,
         stmt = statements[s.name]
         gone = [n for n in s.inputs if n in vacuous]
         if gone:  # built on a step that exists nowhere: it exists nowhere either
-            why = "; ".join(dict.fromkeys(  # the first step that exists nowhere, once
-                vacuous[n] if vacuous[n].startswith("built on ") else
-                f"built on {n}, which exists at no point of the model ({vacuous[n]})"
-                for n in gone))
+            why = "; ".join(
+                dict.fromkeys(  # the first step that exists nowhere, once
+                    vacuous[n]
+                    if vacuous[n].startswith("built on ")
+                    else f"built on {n}, which exists at no point of the model ({vacuous[n]})"
+                    for n in gone
+                )
+            )
             vacuous[s.name] = why
-            return CheckRow(s.name, "step", line, ProofResult(
-                Status.REFUTED, "degenerate for every parameter: it exists at no point of "
-                "the model", time.perf_counter() - t1, detail=why, hypotheses=hyps))
+            return CheckRow(
+                s.name,
+                "step",
+                line,
+                ProofResult(
+                    Status.REFUTED,
+                    "degenerate for every parameter: it exists at no point of the model",
+                    time.perf_counter() - t1,
+                    detail=why,
+                    hypotheses=hyps,
+                ),
+            )
         ops, replaced = operation_conditions(s.op, [env[n] for n in s.inputs], s.obj)
-        own = _worded(decide(stmt.conditions, cond1_file, tie), ops,
-                      condition_words(s.op, s.inputs), cond1_file, tie)
+        own = _worded(
+            decide(stmt.conditions, cond1_file, tie),
+            ops,
+            condition_words(s.op, s.inputs),
+            cond1_file,
+            tie,
+        )
         if s.op in _TWO_POINTS and own.extra:
-            _distinct_ends(program, c, s, own, _worded(
-                decide((), cond1_file, tie), ops[:1], condition_words(s.op, s.inputs),
-                cond1_file, tie).extra)
+            _distinct_ends(
+                program,
+                c,
+                s,
+                own,
+                _worded(
+                    decide((), cond1_file, tie),
+                    ops[:1],
+                    condition_words(s.op, s.inputs),
+                    cond1_file,
+                    tie,
+                ).extra,
+            )
         try:
             implied, extra = step_conditions(s, cond1_file, replaced, tie)
             extra = kernel_worded(extra, s.op, s.inputs, statements)
             if own.false:
-                raise ValueError("; ".join(f"{t} is false for every parameter"
-                                           for t in own.false))
+                raise ValueError("; ".join(f"{t} is false for every parameter" for t in own.false))
             implied, extra = implied + own.implied, extra + own.extra
         except ValueError as exc:
             vacuous[s.name] = str(exc)
-            return CheckRow(s.name, "step", line, ProofResult(
-                Status.REFUTED, "degenerate for every parameter: it exists at no point of "
-                "the model", time.perf_counter() - t1, detail=str(exc), hypotheses=hyps))
+            return CheckRow(
+                s.name,
+                "step",
+                line,
+                ProofResult(
+                    Status.REFUTED,
+                    "degenerate for every parameter: it exists at no point of the model",
+                    time.perf_counter() - t1,
+                    detail=str(exc),
+                    hypotheses=hyps,
+                ),
+            )
         step_conds[s.name] = (implied, extra)
         if cond1_file:  # for claims not under condition1: the same, without (1), decided
-            def plain(s: Any = s, stmt: Any = stmt, ops: Any = ops, replaced: Any = replaced,
-                      mine: tuple[list[str], list[str]] = (implied, extra)
-                      ) -> tuple[list[str], list[str]]:
+
+            def plain(
+                s: Any = s,
+                stmt: Any = stmt,
+                ops: Any = ops,
+                replaced: Any = replaced,
+                mine: tuple[list[str], list[str]] = (implied, extra),
+            ) -> tuple[list[str], list[str]]:
                 try:  # only when such a claim is built on the step
                     imp0, ext0 = step_conditions(s, False, replaced, tie)
                     own0 = decide([*stmt.conditions, *ops], False, tie)
                     return imp0 + own0.implied, ext0 + own0.extra
                 except ValueError:
                     return mine
+
             plain_conds.later(s.name, plain)
         else:
             plain_conds[s.name] = (implied, extra)
         given = s.op == "point" or (s.op == "line_with_direction" and not s.inputs[1:])
-        return CheckRow(s.name, "step", line, ProofResult(
-            Status.GIVEN if given and not s.inputs else Status.PROVED,
-            "defined where its conditions hold (the kernel's non-degeneracy conditions)",
-            time.perf_counter() - t1, hypotheses=hyps, conditions=tuple(extra),
-            implied=tuple(implied)))
+        return CheckRow(
+            s.name,
+            "step",
+            line,
+            ProofResult(
+                Status.GIVEN if given and not s.inputs else Status.PROVED,
+                "defined where its conditions hold (the kernel's non-degeneracy conditions)",
+                time.perf_counter() - t1,
+                hypotheses=hyps,
+                conditions=tuple(extra),
+                implied=tuple(implied),
+            ),
+        )
 
     for s in c.steps:
         line = _line(program, s.name)
@@ -271,10 +352,18 @@ def check_program(program: Program, against: str | None = None,
     claim_rows = []
     for cl in program.claims:
         use = step_conds if _COND1 in cl.under or not cond1_file else plain_conds
-        claim_rows.append(budget.run(
-            lambda cl=cl, use=use: _guarded(_text(cl), "claim", cl.line, hyps, lambda: (
-                _check_claim(program, cl, env, use, vacuous))),
-            late(_text(cl), "claim", cl.line)))
+        claim_rows.append(
+            budget.run(
+                lambda cl=cl, use=use: _guarded(
+                    _text(cl),
+                    "claim",
+                    cl.line,
+                    hyps,
+                    lambda: _check_claim(program, cl, env, use, vacuous),
+                ),
+                late(_text(cl), "claim", cl.line),
+            )
+        )
         done += 1
         if progress:
             progress(done, total, claim_rows[-1].name)
@@ -282,18 +371,34 @@ def check_program(program: Program, against: str | None = None,
     if model is not None:
         for name in targets:
             line = _line(program, name)
-            target_rows.append(budget.run(
-                lambda name=name, line=line: _guarded(name, "target", line, hyps, lambda: (
-                    _check_target(program, name, env, model, step_conds, vacuous))),
-                late(name, "target", line)))
+            target_rows.append(
+                budget.run(
+                    lambda name=name, line=line: _guarded(
+                        name,
+                        "target",
+                        line,
+                        hyps,
+                        lambda: _check_target(program, name, env, model, step_conds, vacuous),
+                    ),
+                    late(name, "target", line),
+                )
+            )
             done += 1
             if progress:
                 progress(done, total, name)
     symbols = {p.name: p.symbol for p in program.params}
-    step_rows, claim_rows, target_rows = ([_tidy(r, symbols, program) for r in rows] for rows in (
-        step_rows, claim_rows, target_rows))
-    return ProgramReport(program.file, tuple(step_rows), tuple(claim_rows), tuple(target_rows),
-                         against, time.perf_counter() - t0, c)
+    step_rows, claim_rows, target_rows = (
+        [_tidy(r, symbols, program) for r in rows] for rows in (step_rows, claim_rows, target_rows)
+    )
+    return ProgramReport(
+        program.file,
+        tuple(step_rows),
+        tuple(claim_rows),
+        tuple(target_rows),
+        against,
+        time.perf_counter() - t0,
+        c,
+    )
 
 
 def _tidy(row: CheckRow, symbols: Mapping[str, sp.Symbol], program: Program) -> CheckRow:

@@ -61,17 +61,22 @@ class Decided:
 
     def add(self, other: Decided) -> None:
         """Merge ``other`` into this one (order kept, no repeats)."""
-        for mine, theirs in ((self.implied, other.implied), (self.false, other.false),
-                             (self.extra, other.extra)):
+        for mine, theirs in (
+            (self.implied, other.implied),
+            (self.false, other.false),
+            (self.extra, other.extra),
+        ):
             mine += [t for t in theirs if t not in mine]
 
 
 def tie_mu(names: Iterable[str]) -> dict[sp.Symbol, sp.Expr]:
     """μi -> sin ξi / cos ξi for each contact whose μ and ξ are both declared (eq. (22))."""
     names = set(names)
-    return {getattr(S, f"mu{i}"): sp.sin(getattr(S, f"xi{i}")) / sp.cos(getattr(S, f"xi{i}"))
-            for i in (1, 2)
-            if f"mu{i}" in names and f"xi{i}" in names}
+    return {
+        getattr(S, f"mu{i}"): sp.sin(getattr(S, f"xi{i}")) / sp.cos(getattr(S, f"xi{i}"))
+        for i in (1, 2)
+        if f"mu{i}" in names and f"xi{i}" in names
+    }
 
 
 def _classified(e: sp.Expr, cond1: bool) -> tuple[list[str], list[str]] | Literal[False] | None:
@@ -93,8 +98,9 @@ def _classified(e: sp.Expr, cond1: bool) -> tuple[list[str], list[str]] | Litera
         return False
 
 
-def decide(conditions: Iterable[Condition], cond1: bool,
-           tie: Mapping[sp.Symbol, sp.Expr] | None = None) -> Decided:
+def decide(
+    conditions: Iterable[Condition], cond1: bool, tie: Mapping[sp.Symbol, sp.Expr] | None = None
+) -> Decided:
     """Split ``(relation, expr)`` conditions into implied, false everywhere and extra.
 
     Parameters
@@ -124,8 +130,7 @@ def decide(conditions: Iterable[Condition], cond1: bool,
 
 
 @lru_cache(maxsize=4096)
-def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple
-                ) -> tuple[tuple[str, str], ...]:
+def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple) -> tuple[tuple[str, str], ...]:
     """One condition of :func:`decide`: ``((bucket, text), ...)`` with bucket one of
     implied, false, extra.  Remembered by content: the conditions of a step recur in
     every step and claim built on it."""
@@ -139,8 +144,9 @@ def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple
         return f"{e} {_WORD[rel]}"
 
     if z:
-        return ((("implied", text() + " (identically zero)") if rel == ">=" else
-                 ("false", text())),)
+        return (
+            (("implied", text() + " (identically zero)") if rel == ">=" else ("false", text())),
+        )
     s = _sign(e, intervals)
     if s is not None:
         lo, hi = s
@@ -155,8 +161,9 @@ def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple
     if rel in (">=", ">") and _positive_sum(e, intervals):
         return (("implied", f"{text()} (a positive sum of squares and signs from {why})"),)
     if rel == "!=" and _ring_nonzero(e):
-        return (("implied", f"{text()} (a positive polynomial of x1, x2, μ modulo "
-                            "sin² + cos² = 1)"),)
+        return (
+            ("implied", f"{text()} (a positive polynomial of x1, x2, μ modulo sin² + cos² = 1)"),
+        )
     if rel == "!=":
         split = _classified(e, cond1)
         if split is False:
@@ -169,7 +176,7 @@ def _decide_one(rel: str, e: sp.Expr, cond1: bool, ties: tuple
 
 
 def _norm2(p: Point) -> sp.Expr:
-    return p.x ** 2 + p.y ** 2
+    return p.x**2 + p.y**2
 
 
 def _disc(line: Line, circle: Circle) -> sp.Expr:
@@ -177,7 +184,7 @@ def _disc(line: Line, circle: Circle) -> sp.Expr:
     d = line.direction
     w = Point(line.point.x - circle.center.x, line.point.y - circle.center.y)
     a, b = d.dot(d), d.dot(w)
-    return b ** 2 - a * (w.dot(w) - circle.radius2)
+    return b**2 - a * (w.dot(w) - circle.radius2)
 
 
 def _radical_axis(c1: Circle, c2: Circle) -> Line:
@@ -187,8 +194,9 @@ def _radical_axis(c1: Circle, c2: Circle) -> Line:
     return Line(Point(n.x * k, n.y * k), Point(-n.y, n.x))
 
 
-def operation_conditions(op: str, inputs: list[Any], obj: Any
-                         ) -> tuple[list[Condition], list[sp.Expr]]:
+def operation_conditions(
+    op: str, inputs: list[Any], obj: Any
+) -> tuple[list[Condition], list[sp.Expr]]:
     """``(conditions the operation needs, kernel conditions they replace)``.
 
     The kernel records what it must divide by as ``≠ 0``; an intersection with a
@@ -241,8 +249,10 @@ def condition_words(op: str, names: tuple[str, ...]) -> list[str]:
         "circle_through": [f"{b} is not the centre {a}"],
         "circle_on_diameter": [f"{a} and {b} are distinct"],
         "intersect_line_circle": [f"the line {a} meets the circle {b}"],
-        "intersect_circles": [f"the centres of {a} and {b} differ",
-                              f"the circles {a} and {b} meet"],
+        "intersect_circles": [
+            f"the centres of {a} and {b} differ",
+            f"the circles {a} and {b} meet",
+        ],
         "second_intersection": [f"the centres of {a} and {b} differ"],
         "circle_radius": ["the radius is not 0"],
         "circle_compass": [f"{b} and {names[2] if len(names) > 2 else '?'} are distinct"],
@@ -259,5 +269,3 @@ def distinct(a: Point, b: Point, assumed: Iterable[sp.Expr]) -> bool:
     assumed = list(assumed)
     fast = _distinct_in_ring(a, b, assumed)
     return _distinct_general(a, b, assumed) if fast is None else fast
-
-

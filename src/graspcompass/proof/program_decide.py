@@ -74,15 +74,26 @@ __all__ = [
 ]
 
 #: The model's parameters and their domains (a file must declare them so).
-DOMAIN_WORDS = {"x1": "positive", "x2": "positive", "y": "nonnegative", "phi1": "angle",
-                "phi2": "angle", "mu1": "friction", "mu2": "friction", "xi1": "half_angle",
-                "xi2": "half_angle"}
+DOMAIN_WORDS = {
+    "x1": "positive",
+    "x2": "positive",
+    "y": "nonnegative",
+    "phi1": "angle",
+    "phi2": "angle",
+    "mu1": "friction",
+    "mu2": "friction",
+    "xi1": "half_angle",
+    "xi2": "half_angle",
+}
 #: Exact sample values: lengths, friction coefficients whose 1 + μ² is a square (so that
 #: sin and cos of ξ = atan μ are rational) and φ in steps of π/12.
-_LENGTHS = tuple(sp.Rational(n, d) for n, d in ((1, 2), (1, 1), (3, 2), (2, 1), (3, 1), (7, 5),
-                                                  (5, 3), (1, 3)))
-_MUS = tuple(sp.Rational(n, d) for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15), (1, 1),
-                                             (7, 24), (15, 8)))
+_LENGTHS = tuple(
+    sp.Rational(n, d) for n, d in ((1, 2), (1, 1), (3, 2), (2, 1), (3, 1), (7, 5), (5, 3), (1, 3))
+)
+_MUS = tuple(
+    sp.Rational(n, d)
+    for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15), (1, 1), (7, 24), (15, 8))
+)
 
 
 # -- deciding -----------------------------------------------------------------------------
@@ -111,9 +122,12 @@ def _classified(dens: Iterable[Any], cond1: bool) -> tuple[list[str], list[str]]
     return list(implied), list(extra)
 
 
-def step_conditions(step: Step, cond1: bool, exclude: Iterable[sp.Expr] = (),
-                    tie: Mapping[sp.Symbol, sp.Expr] | None = None
-                    ) -> tuple[list[str], list[str]]:
+def step_conditions(
+    step: Step,
+    cond1: bool,
+    exclude: Iterable[sp.Expr] = (),
+    tie: Mapping[sp.Symbol, sp.Expr] | None = None,
+) -> tuple[list[str], list[str]]:
     """The kernel's ``≠ 0`` conditions of a step: (implied with reasons, extra).
 
     ``exclude``: conditions the checker states otherwise (a discriminant is ≥ 0, not
@@ -135,8 +149,7 @@ def step_conditions(step: Step, cond1: bool, exclude: Iterable[sp.Expr] = (),
     return implied, extra + outside
 
 
-def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str], list[str],
-                                                           str]:
+def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str], list[str], str]:
     """(all vanish?, implied, extra conditions, method) by reduction in the model's ring."""
     R = ring()
     try:
@@ -149,15 +162,26 @@ def prove_zero(zeros: list[sp.Expr], cond1: bool) -> tuple[bool | None, list[str
         if not ok:
             return False, [], [], "polynomial reduction in the model's ring"
         implied, extra = _classified(dens, cond1)
-        return True, implied, extra, ("polynomial reduction modulo sin² + cos² − 1, cleared "
-                                      "denominators")
+        return (
+            True,
+            implied,
+            extra,
+            ("polynomial reduction modulo sin² + cos² − 1, cleared denominators"),
+        )
     except ValueError:  # not a rational function of the model's generators
         pass
     fast = _fraction_zero(zeros)
     if fast:
-        return True, [], [], ("exact fractions of polynomials (the kernel's arithmetic): "
-                              "every numerator reduces to 0 modulo the relations of its "
-                              "roots and sin² + cos² = 1, wherever the steps are defined")
+        return (
+            True,
+            [],
+            [],
+            (
+                "exact fractions of polynomials (the kernel's arithmetic): "
+                "every numerator reduces to 0 modulo the relations of its "
+                "roots and sin² + cos² = 1, wherever the steps are defined"
+            ),
+        )
     r = prove_identity(sp.Matrix(zeros), 0, intervals=CONDITION_1 if cond1 else {})
     verdict = True if r.proved else False if r.status is Status.REFUTED else None
     return verdict, list(r.implied), list(r.conditions), "prove_identity"
@@ -182,32 +206,39 @@ def _witness(e: sp.Expr) -> list[sp.Expr]:
     out: list[sp.Expr] = []
     for part, k in ((num, 1), (den, -1)):
         c, fs = sp.factor_list(part)
-        out.append(sp.Integer(c) ** k if c.is_Integer else c ** k)
+        out.append(sp.Integer(c) ** k if c.is_Integer else c**k)
         out += [f ** (m * k) for f, m in fs]
     return out
 
 
-def prove_sign_claim(e: sp.Expr, relation: str, cond1: bool, hyps: Sequence[Any] = ()
-                     ) -> tuple[bool | None, ProofResult | None]:
+def prove_sign_claim(
+    e: sp.Expr, relation: str, cond1: bool, hyps: Sequence[Any] = ()
+) -> tuple[bool | None, ProofResult | None]:
     intervals = CONDITION_1 if cond1 else {}
     if relation == "==":  # an identity: reduced to zero, or refuted by the search
         ok, implied, extra, method = prove_zero([e], cond1)
         if ok:
-            return True, ProofResult(Status.PROVED, method, 0.0, conditions=tuple(extra),
-                                     implied=tuple(implied))
+            return True, ProofResult(
+                Status.PROVED, method, 0.0, conditions=tuple(extra), implied=tuple(implied)
+            )
         if algebraic_zero(e):
-            return True, ProofResult(Status.PROVED, "exactly 0: its minimal polynomial over "
-                                     "ℚ is x (a constant algebraic number)", 0.0)
+            return True, ProofResult(
+                Status.PROVED,
+                "exactly 0: its minimal polynomial over ℚ is x (a constant algebraic number)",
+                0.0,
+            )
         return None, None
     r = _prove_sign_core(e, relation, cond1, intervals)
     if r[0] or relation not in (">", ">=", "<", "<=", "!="):
         return r
-    return by_roots_or_hypotheses(e, relation, lambda x: prove_sign_claim(x, ">", cond1, hyps),
-                                  hyps)
+    return by_roots_or_hypotheses(
+        e, relation, lambda x: prove_sign_claim(x, ">", cond1, hyps), hyps
+    )
 
 
-def _prove_sign_core(e: sp.Expr, relation: str, cond1: bool, intervals: Any
-                     ) -> tuple[bool | None, ProofResult | None]:
+def _prove_sign_core(
+    e: sp.Expr, relation: str, cond1: bool, intervals: Any
+) -> tuple[bool | None, ProofResult | None]:
     signs = {">": [1], "<": [-1], ">=": [1], "<=": [-1], "!=": [1, -1]}[relation]
     try:
         witness = _witness(e)
@@ -224,15 +255,23 @@ def _prove_sign_core(e: sp.Expr, relation: str, cond1: bool, intervals: Any
         conds = _positive_factors(e if relation[0] == ">" else -e)
         if conds is not None:
             return True, ProofResult(
-                Status.PROVED, "a product of positive factors: positive parameters, "
+                Status.PROVED,
+                "a product of positive factors: positive parameters, "
                 "square roots of non-zero radicands, squared lengths (positive "
-                "semi-definite quadratics) that do not vanish", 0.0,
-                conditions=tuple(f"{c} ≠ 0" for c in conds))
+                "semi-definite quadratics) that do not vanish",
+                0.0,
+                conditions=tuple(f"{c} ≠ 0" for c in conds),
+            )
     if relation in (">=", "<="):
         ok, implied, extra, _ = prove_zero([e], cond1)
         if ok:
-            return True, ProofResult(Status.PROVED, "identically zero", 0.0,
-                                     conditions=tuple(extra), implied=tuple(implied))
+            return True, ProofResult(
+                Status.PROVED,
+                "identically zero",
+                0.0,
+                conditions=tuple(extra),
+                implied=tuple(implied),
+            )
     return None, None
 
 
@@ -269,9 +308,11 @@ def _positive_factors(e: sp.Expr) -> list[sp.Expr] | None:
                 if not f.base.is_positive:
                     conds.append(f.base)
                 continue
-            if f.free_symbols and not f.atoms(sp.Pow) - {a for a in f.atoms(sp.Pow)
-                                                         if a.exp.is_Integer} \
-                    and nonnegative(f):
+            if (
+                f.free_symbols
+                and not f.atoms(sp.Pow) - {a for a in f.atoms(sp.Pow) if a.exp.is_Integer}
+                and nonnegative(f)
+            ):
                 conds.append(f)
                 continue
             return False
@@ -324,9 +365,12 @@ def replay_at(program: Program, point: Mapping[str, Any]) -> Construction:
     return replay(program, dict(point))
 
 
-def search(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr]],
-                                              bool | None],
-            tries: int = 40, seed: int = 2012) -> dict[str, str] | None:
+def search(
+    program: Program,
+    fails: Callable[[dict[str, Any], Mapping[str, sp.Expr]], bool | None],
+    tries: int = 40,
+    seed: int = 2012,
+) -> dict[str, str] | None:
     """A point of the model where the file, replayed exactly, makes ``fails`` True."""
     rng = random.Random(seed)
     for _ in range(tries * 3):
@@ -357,8 +401,7 @@ def nonzero(v: sp.Expr) -> bool:
 
 
 def _on(p: Point, line: Line) -> bool:
-    return decide_zero(Point(p.x - line.point.x, p.y - line.point.y).cross(line.direction)) \
-        is True
+    return decide_zero(Point(p.x - line.point.x, p.y - line.point.y).cross(line.direction)) is True
 
 
 def not_concurrent_at(lines: list[Line]) -> bool:
@@ -375,25 +418,32 @@ def not_concurrent_at(lines: list[Line]) -> bool:
 
 def zeros_fail(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
     """``fails(env, point)``: the claim is false in the exact replay ``env``."""
+
     def fails(env: dict[str, Any], pt: Any) -> bool:
         if claim.kind == "concurrent":  # decided as it is stated: a common point
             return not_concurrent_at([_term(t, env, {}) for t in claim.terms])  # all Refs
         zeros, nonzeros = claim_zeros(claim, env)
         if any(decide_zero(sp.sympify(n)) is not False for n in nonzeros):
             return False  # outside the claim's non-degeneracy conditions
-        if claim.kind == "ratio" and decide_sign(sp.sympify(_term(
-                claim.terms[-1], env, _lengths(env)))) == -1:
+        if (
+            claim.kind == "ratio"
+            and decide_sign(sp.sympify(_term(claim.terms[-1], env, _lengths(env)))) == -1
+        ):
             return True  # a negative ratio of lengths
         return any(nonzero(z) for z in zeros)
+
     return fails
 
 
 def sign_fails(claim: Claim) -> Callable[[dict[str, Any], Any], bool]:
     """``fails(env, point)``: the sign claim is false in the exact replay ``env``."""
+
     def fails(env: dict[str, Any], pt: Any) -> bool:
         s = decide_sign(sign_expr(claim, env))
         if s is None:
             return False
-        return {">": s <= 0, "<": s >= 0, ">=": s < 0, "<=": s > 0, "!=": s == 0,
-                "==": s != 0}[claim.relation]
+        return {">": s <= 0, "<": s >= 0, ">=": s < 0, "<=": s > 0, "!=": s == 0, "==": s != 0}[
+            claim.relation
+        ]
+
     return fails

@@ -80,8 +80,9 @@ def _relation(name: str, hyps: Sequence[Any]) -> str:
     return next(h.relation0 for h in hyps if h.name == name)
 
 
-def sign_from(e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
-              ) -> tuple[int, tuple[str, ...]] | None:
+def sign_from(
+    e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
+) -> tuple[int, tuple[str, ...]] | None:
     """``(sign of e, hypotheses used)`` shown from its factors (see the module), or None.
     With ``nonzero_only`` a factor ``H`` of a hypothesis ``H ≠ 0`` counts as non-zero
     (the sign returned is then only ``e ≠ 0``: 0 is returned for it)."""
@@ -128,12 +129,13 @@ def sign_from(e: sp.Expr, hyps: Sequence[Any], nonzero_only: bool = False
                 if not nonzero_only or _relation(name, hyps) != "!=":
                     return None
                 only_nonzero = True
-            sign *= s ** m
+            sign *= s**m
     return (0 if only_nonzero else sign), tuple(dict.fromkeys(used))
 
 
-def discharge(conditions: Iterable[str], hyps: Sequence[Any],
-              symbols: Mapping[str, sp.Symbol]) -> tuple[list[str], list[str]]:
+def discharge(
+    conditions: Iterable[str], hyps: Sequence[Any], symbols: Mapping[str, sp.Symbol]
+) -> tuple[list[str], list[str]]:
     """``(conditions kept, conditions implied by the hypotheses, with their names)`` of
     texts ``EXPR ≠ 0``, ``EXPR ≥ 0`` or ``EXPR > 0`` (with words in parentheses)."""
     from .program_words import parse_condition

@@ -78,14 +78,15 @@ def positive_by_squaring(e: sp.Expr, positive: Callable[[sp.Expr], bool]) -> boo
     if positive(p) and (q.is_nonnegative or positive(q)):
         return True
     if positive(p) and positive(-q):
-        return positive(sp.expand(p ** 2 - q ** 2 * rad))
+        return positive(sp.expand(p**2 - q**2 * rad))
     if positive(-p) and positive(q):
-        return positive(sp.expand(q ** 2 * rad - p ** 2))
+        return positive(sp.expand(q**2 * rad - p**2))
     return False
 
 
-def by_roots_or_hypotheses(e: sp.Expr, relation: str, prover: Callable[[sp.Expr], Any],
-                           hyps: Sequence[Any] = ()) -> tuple[bool | None, Any]:
+def by_roots_or_hypotheses(
+    e: sp.Expr, relation: str, prover: Callable[[sp.Expr], Any], hyps: Sequence[Any] = ()
+) -> tuple[bool | None, Any]:
     """``(True, ProofResult)`` for ``e relation 0`` (``> >= < <= !=``) shown by squaring
     its constructed root (:func:`positive_by_squaring`, the signs of the parts from
     ``prover(x) -> (ok, ProofResult)``, whose conditions the result keeps) or from the
@@ -105,11 +106,18 @@ def by_roots_or_hypotheses(e: sp.Expr, relation: str, prover: Callable[[sp.Expr]
 
         if positive_by_squaring(t, pos):
             return True, ProofResult(
-                Status.PROVED, "p + q√R compared by squaring: the signs of p, q and of "
-                "p² − q²R (√R ≥ 0, the constructed branch)", 0.0, conditions=tuple(conds))
+                Status.PROVED,
+                "p + q√R compared by squaring: the signs of p, q and of "
+                "p² − q²R (√R ≥ 0, the constructed branch)",
+                0.0,
+                conditions=tuple(conds),
+            )
         got = sign_from(t, hyps)
         if got is not None and got[0] == 1:
             return True, ProofResult(
-                Status.PROVED, "from the file's hypotheses (the signs of its factors)", 0.0,
-                hypotheses=tuple(f"hypothesis {n}" for n in got[1]))
+                Status.PROVED,
+                "from the file's hypotheses (the signs of its factors)",
+                0.0,
+                hypotheses=tuple(f"hypothesis {n}" for n in got[1]),
+            )
     return None, None

@@ -53,10 +53,21 @@ from .program_hypotheses import holds
 __all__ = ["conditions_hold", "find", "sign_score", "value_at", "witness_point"]
 
 _MODEL = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2", "xi1", "xi2")
-_GRID_MUS = tuple(sp.Rational(n, d) for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15),
-                                                  (1, 1), (7, 24), (15, 8)))
-_FAILURES = (GeometryError, InputError, ArithmeticError, ValueError, TypeError, KeyError,
-             AttributeError, NotImplementedError, RecursionError)
+_GRID_MUS = tuple(
+    sp.Rational(n, d)
+    for n, d in ((3, 4), (4, 3), (5, 12), (12, 5), (8, 15), (1, 1), (7, 24), (15, 8))
+)
+_FAILURES = (
+    GeometryError,
+    InputError,
+    ArithmeticError,
+    ValueError,
+    TypeError,
+    KeyError,
+    AttributeError,
+    NotImplementedError,
+    RecursionError,
+)
 
 
 # -- exact values at a point -----------------------------------------------------------------
@@ -96,8 +107,10 @@ def _rational_angle(theta: float, den: int = 40) -> sp.Expr:
     t = Fraction(float(mpmath.tan(theta / 2))).limit_denominator(den)
     if t <= 0:
         t = Fraction(1, den)
-    s, c = sp.Rational(2 * t.numerator * t.denominator, t.numerator**2 + t.denominator**2), \
-        sp.Rational(t.denominator**2 - t.numerator**2, t.numerator**2 + t.denominator**2)
+    s, c = (
+        sp.Rational(2 * t.numerator * t.denominator, t.numerator**2 + t.denominator**2),
+        sp.Rational(t.denominator**2 - t.numerator**2, t.numerator**2 + t.denominator**2),
+    )
     if c == 0:
         return sp.pi / 2
     return sp.atan(s / c) if c > 0 else sp.pi - sp.atan(s / -c)
@@ -193,9 +206,14 @@ def _exact_near(program: Program, fl: Mapping[str, float]) -> dict[str, sp.Expr]
     return pt
 
 
-def _adversarial(program: Program, score: Callable[[dict[str, float]], float],
-                 rng: random.Random, n: int = 300, keep: int = 10,
-                 cond1: bool = False) -> list[dict[str, sp.Expr]]:
+def _adversarial(
+    program: Program,
+    score: Callable[[dict[str, float]], float],
+    rng: random.Random,
+    n: int = 300,
+    keep: int = 10,
+    cond1: bool = False,
+) -> list[dict[str, sp.Expr]]:
     scored = []
     for _ in range(n):
         fl = _float_point(program, rng)
@@ -222,8 +240,9 @@ def _cond1_float(fl: Mapping[str, float]) -> bool:
     return True
 
 
-def sign_score(expr: sp.Expr, relation: str, program: Program
-               ) -> Callable[[dict[str, float]], float]:
+def sign_score(
+    expr: sp.Expr, relation: str, program: Program
+) -> Callable[[dict[str, float]], float]:
     """How far ``expr relation 0`` is from failing at a float point (large: fails)."""
     syms = {p.name: p.symbol for p in program.params}
     f = sp.lambdify(list(syms.values()), expr, "mpmath")
@@ -234,8 +253,14 @@ def sign_score(expr: sp.Expr, relation: str, program: Program
             v = f(*(fl[n] for n in syms))
         if isinstance(v, mpmath.mpc):
             return float("-inf")
-        return float(direction * v) if direction else -abs(float(v)) \
-            if relation == "!=" else abs(float(v))
+        return (
+            float(direction * v)
+            if direction
+            else -abs(float(v))
+            if relation == "!="
+            else abs(float(v))
+        )
+
     return score
 
 
@@ -245,10 +270,17 @@ def _admissible(pt: Mapping[str, sp.Expr], cond1: bool) -> bool:
     return not [b for b in bad if cond1 or not b.startswith("condition (1)")]
 
 
-def find(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr]], Any],
-         claim: Claim | None = None, *, cond1: bool = True, names: Iterable[str] | None = None,
-         score: Callable[[dict[str, float]], float] | None = None, tries: int = 60,
-         seed: int = 2012) -> dict[str, str] | None:
+def find(
+    program: Program,
+    fails: Callable[[dict[str, Any], Mapping[str, sp.Expr]], Any],
+    claim: Claim | None = None,
+    *,
+    cond1: bool = True,
+    names: Iterable[str] | None = None,
+    score: Callable[[dict[str, float]], float] | None = None,
+    tries: int = 60,
+    seed: int = 2012,
+) -> dict[str, str] | None:
     """A point where the objects ``names`` (and their inputs) exist and ``fails`` is True.
 
     Parameters
@@ -266,10 +298,14 @@ def find(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr
     score : callable, optional
         A float score of a float point (larger: closer to failing), for adversarial points.
     """
-    keep = set(program.steps[i].name for i in range(len(program.steps))) if names is None \
+    keep = (
+        set(program.steps[i].name for i in range(len(program.steps)))
+        if names is None
         else set(names)
-    sub = dataclasses.replace(program, steps=tuple(s for s in program.steps if s.name in keep),
-                              claims=())
+    )
+    sub = dataclasses.replace(
+        program, steps=tuple(s for s in program.steps if s.name in keep), claims=()
+    )
     rng = random.Random(seed)
     candidates: list[dict[str, sp.Expr]] = []
     if score is not None:
@@ -289,8 +325,9 @@ def find(program: Program, fails: Callable[[dict[str, Any], Mapping[str, sp.Expr
     return None
 
 
-def _try(sub: Program, pt: Mapping[str, sp.Expr], fails: Callable[..., Any],
-         claim: Claim | None) -> bool:
+def _try(
+    sub: Program, pt: Mapping[str, sp.Expr], fails: Callable[..., Any], claim: Claim | None
+) -> bool:
     from ..construction.language import replay
 
     try:

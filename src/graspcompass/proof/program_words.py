@@ -69,7 +69,7 @@ def _factored(e: sp.Expr, rel: str) -> tuple[sp.Expr | None, bool]:
             dropped = dropped or m != 1
             kept.append(f)
             continue
-        kept.append(f ** m)
+        kept.append(f**m)
     if not kept:
         return (None, True) if (rel == "≠" and c != 0) or c > 0 else (e, False)
     if rel != "≠" and c < 0:
@@ -129,8 +129,9 @@ def _canonical(text: str, rel: str, symbols: tuple) -> str:
     return sp.srepr(e)
 
 
-def tidy(extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.Symbol]
-         ) -> tuple[list[str], list[str]]:
+def tidy(
+    extra: Iterable[str], implied: Iterable[str], symbols: Mapping[str, sp.Symbol]
+) -> tuple[list[str], list[str]]:
     """``(extra, implied)`` tidied (see the module); texts that are not ``EXPR ≠ 0``,
     ``≥ 0`` or ``> 0`` are kept as they are."""
     implied = list(dict.fromkeys(t.replace(" != 0", " ≠ 0") for t in implied))
@@ -180,8 +181,9 @@ def _line_words(name: str, statements: Mapping[str, object]) -> str:
     return name
 
 
-def kernel_worded(texts: Iterable[str], op: str, inputs: tuple[str, ...],
-                  statements: Mapping[str, object]) -> list[str]:
+def kernel_worded(
+    texts: Iterable[str], op: str, inputs: tuple[str, ...], statements: Mapping[str, object]
+) -> list[str]:
     """The kernel's conditions ``EXPR ≠ 0`` of one step with what they say: each new
     denominator of ``meet`` is the cross product of the two directions, of ``foot``,
     ``reflect``, ``signed_length`` and a line's intersection with a circle the squared

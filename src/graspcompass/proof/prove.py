@@ -144,17 +144,21 @@ def _interval_hypotheses_of(items: tuple) -> tuple[tuple[str, ...], tuple[Any, .
     for k, v in intervals.items():
         lo, hi = (sp.sympify(b) for b in v)  # internal: the caller's bounds, numbers
         if (lo - hi).is_number and not (lo - hi).free_symbols and bool(lo >= hi):
-            raise DegenerateClaimError(f"the interval hypothesis {k} in ({lo}, {hi}) is "
-                                       "empty: nothing would be proved")
+            raise DegenerateClaimError(
+                f"the interval hypothesis {k} in ({lo}, {hi}) is empty: nothing would be proved"
+            )
         if CONDITION_1.get(k) != tuple(v):
             names.append(_iv_text(k, v))
-            rels += [sp.StrictGreaterThan(k, v[0], evaluate=False),
-                     sp.StrictLessThan(k, v[1], evaluate=False)]
+            rels += [
+                sp.StrictGreaterThan(k, v[0], evaluate=False),
+                sp.StrictLessThan(k, v[1], evaluate=False),
+            ]
     return tuple(names), tuple(rels)
 
 
-def _context(assumptions: Sequence[Any], domains: Mapping | None,
-             subs: Mapping | None) -> tuple[list[str], list[Any]]:
+def _context(
+    assumptions: Sequence[Any], domains: Mapping | None, subs: Mapping | None
+) -> tuple[list[str], list[Any]]:
     names = [f"{a}" for a in assumptions]
     rels = list(assumptions)
     for s, (lo, hi) in (domains or {}).items():
@@ -177,8 +181,13 @@ def _intervals_json(intervals: Intervals) -> list[dict[str, Any]]:
         lo, hi = outside_expr(lo, f"interval of {k}"), outside_expr(hi, f"interval of {k}")
         f, a, b = form_json(k), sp.expand(lo / sp.pi), sp.expand(hi / sp.pi)
         if f is not None and a.is_Rational and b.is_Rational:
-            out.append({"form": f, "interval": [f"{a.p}/{a.q}", f"{b.p}/{b.q}"],
-                        "source": "(1)" if CONDITION_1.get(k) == (lo, hi) else "hypothesis"})
+            out.append(
+                {
+                    "form": f,
+                    "interval": [f"{a.p}/{a.q}", f"{b.p}/{b.q}"],
+                    "source": "(1)" if CONDITION_1.get(k) == (lo, hi) else "hypothesis",
+                }
+            )
     return out
 
 
@@ -186,8 +195,15 @@ def _intervals_json(intervals: Intervals) -> list[dict[str, Any]]:
 _text = functools.lru_cache(maxsize=4096)(str)
 
 
-def _denominators(factors: Sequence[sp.Expr], intervals: Intervals, iv_names: list[str],
-                  syms: set, extra: list[Any], domains: Mapping | None, subs: Mapping | None):
+def _denominators(
+    factors: Sequence[sp.Expr],
+    intervals: Intervals,
+    iv_names: list[str],
+    syms: set,
+    extra: list[Any],
+    domains: Mapping | None,
+    subs: Mapping | None,
+):
     """Split denominator factors into implied (shown non-zero) and conditions."""
     implied, conditions, rows = [], [], []
     src = ", ".join(n for n in iv_names if n == CONDITION_1_NAME) or "the hypotheses"
@@ -205,25 +221,41 @@ def _denominators(factors: Sequence[sp.Expr], intervals: Intervals, iv_names: li
     return implied, conditions, rows
 
 
-def _not_always_zero(f: sp.Expr, syms: set, extra: list[Any], domains: Mapping | None,
-                     subs: Mapping | None) -> None:
+def _not_always_zero(
+    f: sp.Expr, syms: set, extra: list[Any], domains: Mapping | None, subs: Mapping | None
+) -> None:
     """Guard against a condition that fails at every point of the model (vacuous result)."""
     syms = {s for s in syms if s.is_Symbol}
-    zero = find_counterexample(lambda v: not nonzero_at(f, v, screen=True), syms, extra,
-                               tries=3, seed=7,
-                               domains=domains, derived=subs)
+    zero = find_counterexample(
+        lambda v: not nonzero_at(f, v, screen=True),
+        syms,
+        extra,
+        tries=3,
+        seed=7,
+        domains=domains,
+        derived=subs,
+    )
     if zero is None:
         return
-    nonzero = find_counterexample(lambda v: nonzero_at(f, v), syms, extra, tries=8, seed=11,
-                                  domains=domains, derived=subs)
+    nonzero = find_counterexample(
+        lambda v: nonzero_at(f, v), syms, extra, tries=8, seed=11, domains=domains, derived=subs
+    )
     if nonzero is None:
-        raise DegenerateClaimError(f"the non-degeneracy condition {f} != 0 fails at every "
-                                   "point of the model tried: the claim is undefined there")
+        raise DegenerateClaimError(
+            f"the non-degeneracy condition {f} != 0 fails at every "
+            "point of the model tried: the claim is undefined there"
+        )
 
 
-def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
-                   intervals: Intervals = CONDITION_1, domains: Mapping | None = None,
-                   subs: Mapping | None = None) -> ProofResult:
+def prove_identity(
+    lhs: Any,
+    rhs: Any = 0,
+    assumptions: Sequence[Any] = (),
+    *,
+    intervals: Intervals = CONDITION_1,
+    domains: Mapping | None = None,
+    subs: Mapping | None = None,
+) -> ProofResult:
     """Check ``lhs == rhs`` at every point of the model where both sides are defined.
 
     The denominators met are shown non-zero from ``intervals`` (condition (1) by
@@ -254,15 +286,20 @@ def prove_identity(lhs: Any, rhs: Any = 0, assumptions: Sequence[Any] = (), *,
     if isinstance(lhs, sp.MatrixBase) and not isinstance(rhs, sp.MatrixBase) and rhs == 0:
         rhs = sp.zeros(*lhs.shape)
     try:
-        key = (_frozen(lhs), _frozen(rhs), tuple(assumptions), _content(intervals),
-               _content(domains), _content(subs))
+        key = (
+            _frozen(lhs),
+            _frozen(rhs),
+            tuple(assumptions),
+            _content(intervals),
+            _content(domains),
+            _content(subs),
+        )
         hash(key)
     except TypeError:  # something unhashable: no reuse
         return _prove_identity(lhs, rhs, assumptions, intervals, domains, subs, t0)
     r = _IDENTITIES.get(key)
     if r is None:
-        r = _IDENTITIES[key] = _prove_identity(lhs, rhs, assumptions, intervals, domains,
-                                                subs, t0)
+        r = _IDENTITIES[key] = _prove_identity(lhs, rhs, assumptions, intervals, domains, subs, t0)
     return dataclasses.replace(r, seconds=time.perf_counter() - t0)
 
 
@@ -276,12 +313,22 @@ def _frozen(x: Any) -> Any:
 
 
 def _content(m: Mapping | None) -> frozenset | None:
-    return None if m is None else frozenset((k, tuple(v) if isinstance(v, list) else v)
-                                            for k, v in m.items())
+    return (
+        None
+        if m is None
+        else frozenset((k, tuple(v) if isinstance(v, list) else v) for k, v in m.items())
+    )
 
 
-def _prove_identity(lhs: Any, rhs: Any, assumptions: Sequence[Any], intervals: Intervals,
-                    domains: Mapping | None, subs: Mapping | None, t0: float) -> ProofResult:
+def _prove_identity(
+    lhs: Any,
+    rhs: Any,
+    assumptions: Sequence[Any],
+    intervals: Intervals,
+    domains: Mapping | None,
+    subs: Mapping | None,
+    t0: float,
+) -> ProofResult:
     diff = lhs - rhs
     entries = list(diff) if isinstance(diff, sp.MatrixBase) else [diff]
     if subs:
@@ -292,28 +339,51 @@ def _prove_identity(lhs: Any, rhs: Any, assumptions: Sequence[Any], intervals: I
     ctx_names, extra = _context(assumptions, domains, subs)
     extra += iv_rels
     syms = set().union(*(e.free_symbols for e in entries))
-    implied, conditions, rows = _denominators(factors, intervals, iv_names, syms, extra,
-                                              domains, subs)
+    implied, conditions, rows = _denominators(
+        factors, intervals, iv_names, syms, extra, domains, subs
+    )
     hyps = tuple((iv_names if implied else []) + ctx_names)
     bad = [e for e, r in zip(entries, reds) if not r.is_zero]
-    common: dict[str, Any] = dict(hypotheses=hyps, conditions=tuple(conditions),
-                                  implied=tuple(implied))
+    common: dict[str, Any] = dict(
+        hypotheses=hyps, conditions=tuple(conditions), implied=tuple(implied)
+    )
     if not bad:
-        cert = {"kind": "identity", "entries": [r.certificate for r in reds],
-                "denominators": rows}
-        return ProofResult(Status.PROVED, "polynomial reduction", time.perf_counter() - t0,
-                           certificate=cert, **common)
-    found = find_counterexample(lambda v: any(nonzero_at(e, v) for e in bad),
-                                list(set().union(*(e.free_symbols for e in bad))), extra,
-                                domains=domains, derived=subs)
+        cert = {"kind": "identity", "entries": [r.certificate for r in reds], "denominators": rows}
+        return ProofResult(
+            Status.PROVED,
+            "polynomial reduction",
+            time.perf_counter() - t0,
+            certificate=cert,
+            **common,
+        )
+    found = find_counterexample(
+        lambda v: any(nonzero_at(e, v) for e in bad),
+        list(set().union(*(e.free_symbols for e in bad))),
+        extra,
+        domains=domains,
+        derived=subs,
+    )
     if found is not None:
-        vals = {"lhs - rhs": float(sp.N(bad[0].xreplace(found), 17))} if not isinstance(
-            diff, sp.MatrixBase) else {}
-        return ProofResult(Status.REFUTED, "polynomial reduction + exact substitution",
-                           time.perf_counter() - t0, _cx(found), values=vals, **common)
-    return ProofResult(Status.UNDECIDED, "polynomial reduction (non-zero normal form, "
-                       "no counterexample found among points of the model)",
-                       time.perf_counter() - t0, **common)
+        vals = (
+            {"lhs - rhs": float(sp.N(bad[0].xreplace(found), 17))}
+            if not isinstance(diff, sp.MatrixBase)
+            else {}
+        )
+        return ProofResult(
+            Status.REFUTED,
+            "polynomial reduction + exact substitution",
+            time.perf_counter() - t0,
+            _cx(found),
+            values=vals,
+            **common,
+        )
+    return ProofResult(
+        Status.UNDECIDED,
+        "polynomial reduction (non-zero normal form, "
+        "no counterexample found among points of the model)",
+        time.perf_counter() - t0,
+        **common,
+    )
 
 
 # -- signs ---------------------------------------------------------------------
@@ -371,15 +441,29 @@ def prove_sign(
     if subs:
         sample_syms -= set(subs)
     where = tree_conditions(e)  # a counterexample is a point where e is defined (no 0/0)
-    found = find_counterexample(lambda v: _defined_at(where, v) and wrong_sign(e, sign, v),
-                                list(sample_syms), extra, domains=domains, derived=subs)
+    found = find_counterexample(
+        lambda v: _defined_at(where, v) and wrong_sign(e, sign, v),
+        list(sample_syms),
+        extra,
+        domains=domains,
+        derived=subs,
+    )
     if found is not None:
-        return ProofResult(Status.REFUTED, "exact substitution", time.perf_counter() - t0,
-                           _cx(found), values={"expr": float(sp.N(e.xreplace(found), 17))},
-                           hypotheses=hyps)
+        return ProofResult(
+            Status.REFUTED,
+            "exact substitution",
+            time.perf_counter() - t0,
+            _cx(found),
+            values={"expr": float(sp.N(e.xreplace(found), 17))},
+            hypotheses=hyps,
+        )
     if proof is None:
-        return ProofResult(Status.UNDECIDED, "no witness; no counterexample found",
-                           time.perf_counter() - t0, hypotheses=hyps)
+        return ProofResult(
+            Status.UNDECIDED,
+            "no witness; no counterexample found",
+            time.perf_counter() - t0,
+            hypotheses=hyps,
+        )
     if isinstance(proof, Exception):
         raise proof
     return ProofResult(proof[0], proof[1], time.perf_counter() - t0, **proof[2])
@@ -395,22 +479,35 @@ def _defined_at(conditions: Sequence[tuple[str, sp.Expr]], values: Mapping) -> b
             s = decide_sign(c.xreplace(values))
         except (ValueError, TypeError, ArithmeticError):
             return False
-        if s is None or (rel == "!=" and s == 0) or (rel == ">=" and s < 0) or \
-                (rel == ">" and s <= 0):
+        if (
+            s is None
+            or (rel == "!=" and s == 0)
+            or (rel == ">=" and s < 0)
+            or (rel == ">" and s <= 0)
+        ):
             return False
     return True
 
 
-def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals: Intervals,
-                   domains: Mapping | None, hyps: tuple[str, ...]
-                   ) -> tuple[Status, str, dict[str, Any]]:
+def _witness_proof(
+    target: sp.Expr,
+    sign: int,
+    witness: Sequence[Any],
+    intervals: Intervals,
+    domains: Mapping | None,
+    hyps: tuple[str, ...],
+) -> tuple[Status, str, dict[str, Any]]:
     """The verdict of the witness alone: PROVED (with its certificate) or UNDECIDED."""
     ident = prove_identity(target, sp.Mul(*witness), intervals=intervals, domains=domains)
-    common: dict[str, Any] = dict(hypotheses=hyps, conditions=ident.conditions,
-                                  implied=ident.implied)
+    common: dict[str, Any] = dict(
+        hypotheses=hyps, conditions=ident.conditions, implied=ident.implied
+    )
     if not ident.proved:
-        return (Status.UNDECIDED, "the witness factorisation did not check",
-                {**common, "detail": ident.status.value})
+        return (
+            Status.UNDECIDED,
+            "the witness factorisation did not check",
+            {**common, "detail": ident.status.value},
+        )
     found = [sign_reason(w, intervals) for w in witness]
     reasons = [r for r in found if r is not None]
     if len(reasons) < len(found) or any(r[0][0] != r[0][1] or r[0][0] == 0 for r in reasons):
@@ -419,15 +516,26 @@ def _witness_proof(target: sp.Expr, sign: int, witness: Sequence[Any], intervals
     for r in reasons:
         total *= r[0][0]
     if total != sign:
-        return (Status.UNDECIDED, "the witness proves the opposite sign, but no point of the "
-                "model was found to show it", common)
-    declared = {s.name: [1, 1] if s.is_positive else [0, 1] for s in
-                set().union(*(outside_expr(w, "witness").free_symbols for w in witness))
-                if s.is_positive or s.is_nonnegative}
-    cert = {"kind": "sign", "sign": sign, "identity": ident.certificate,
-            "factors": [{"factor": _text(outside_expr(w, "witness")), "reason": r[1]}
-                        for w, r in zip(witness, reasons)],
-            "intervals": _intervals_json(intervals), "symbols": declared,
-            "hypotheses": list(hyps)}
-    return Status.PROVED, "witness factorisation + interval signs", {**common,
-                                                                      "certificate": cert}
+        return (
+            Status.UNDECIDED,
+            "the witness proves the opposite sign, but no point of the model was found to show it",
+            common,
+        )
+    declared = {
+        s.name: [1, 1] if s.is_positive else [0, 1]
+        for s in set().union(*(outside_expr(w, "witness").free_symbols for w in witness))
+        if s.is_positive or s.is_nonnegative
+    }
+    cert = {
+        "kind": "sign",
+        "sign": sign,
+        "identity": ident.certificate,
+        "factors": [
+            {"factor": _text(outside_expr(w, "witness")), "reason": r[1]}
+            for w, r in zip(witness, reasons)
+        ],
+        "intervals": _intervals_json(intervals),
+        "symbols": declared,
+        "hypotheses": list(hyps),
+    }
+    return Status.PROVED, "witness factorisation + interval signs", {**common, "certificate": cert}

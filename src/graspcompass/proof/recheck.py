@@ -51,8 +51,11 @@ class RecheckError(GraspCompassError):
 def _poly(terms: Any, n: int) -> Poly:
     out: Poly = {}
     for coeff, exps in terms:
-        if not isinstance(coeff, str) or len(exps) != n or any(
-                not isinstance(e, int) or e < 0 for e in exps):
+        if (
+            not isinstance(coeff, str)
+            or len(exps) != n
+            or any(not isinstance(e, int) or e < 0 for e in exps)
+        ):
             raise RecheckError(f"malformed term {coeff!r} {exps!r} (expected {n} exponents)")
         m = tuple(exps)
         out[m] = out.get(m, Fraction(0)) + Fraction(coeff)
@@ -96,17 +99,22 @@ def _entry(entry: dict[str, Any]) -> list[str]:
                 out.append(f"relation {pos}: bad or reused variables {i}, {j}")
             elif (names[i], names[j]) != (f"sin({a})", f"cos({a})"):
                 out.append(f"relation {pos}: {names[i]}, {names[j]} are not sin, cos of {a}")
-            want = {_mono(n, i, 2): Fraction(1), _mono(n, j, 2): Fraction(1),
-                    (0,) * n: Fraction(-1)}
+            want = {
+                _mono(n, i, 2): Fraction(1),
+                _mono(n, j, 2): Fraction(1),
+                (0,) * n: Fraction(-1),
+            }
             used |= {i, j}
         elif r.get("kind") == "root":
             w = r["var"]
             rad = _poly(r["radicand"], n)
-            later = set(roots[roots.index(w) + 1:])
+            later = set(roots[roots.index(w) + 1 :])
             bad = {k for m in rad for k, e in enumerate(m) if e and k in roots and k not in later}
             if w in used or not 0 <= w < n or bad:
-                out.append(f"relation {pos}: root {w} reused, out of range, or its radicand "
-                           f"uses {sorted(bad)}")
+                out.append(
+                    f"relation {pos}: root {w} reused, out of range, or its radicand "
+                    f"uses {sorted(bad)}"
+                )
             used.add(w)
             want = _add({_mono(n, w, 2): Fraction(1)}, rad, Fraction(-1))
         else:
@@ -172,8 +180,9 @@ def _trig(node: dict, ivs: dict, out: list[str]) -> tuple[int, int] | None:
     if [lo, hi] != [Fraction(x) for x in node["interval"]] or not lo < hi:
         out.append(f"interval of {node['form']} is ({lo}, {hi}), not {node['interval']}")
         return None
-    shift = Fraction(1, 2) if node["func"] == "cos" else Fraction(0) if node["func"] == "sin" \
-        else None
+    shift = (
+        Fraction(1, 2) if node["func"] == "cos" else Fraction(0) if node["func"] == "sin" else None
+    )
     if shift is None:
         out.append(f"unknown function {node['func']}")
         return None
@@ -195,8 +204,13 @@ def _sign(node: dict, cert: dict, ivs: dict, out: list[str]) -> tuple[int, int] 
         got = (1, 1) if lo > 0 and lo <= hi else (-1, -1) if hi < 0 and lo <= hi else None
     elif t == "symbol":
         name = node["name"]
-        got = (1, 1) if name in _POSITIVE else (0, 1) if name in _NONNEG else \
-            tuple(cert.get("symbols", {}).get(name, ())) or None  # type: ignore[assignment]
+        got = (
+            (1, 1)
+            if name in _POSITIVE
+            else (0, 1)
+            if name in _NONNEG
+            else tuple(cert.get("symbols", {}).get(name, ())) or None
+        )  # type: ignore[assignment]
     elif t == "trig":
         got = _trig(node, ivs, out)
     elif t == "sqrt":

@@ -38,8 +38,14 @@ from ._flint import divide, factor_list
 from ._ring import DegenerateClaimError, RingForm, to_ring
 from .model import outside_expr
 
-__all__ = ["ANGLES", "DegenerateClaimError", "Reduction", "is_identically_zero", "reduce_expr",
-           "trig_to_poly"]
+__all__ = [
+    "ANGLES",
+    "DegenerateClaimError",
+    "Reduction",
+    "is_identically_zero",
+    "reduce_expr",
+    "trig_to_poly",
+]
 
 #: Angle symbols of the model; any other symbol inside sin/cos/tan is added on the fly.
 ANGLES: tuple[sp.Symbol, ...] = (S.phi1, S.phi2, S.xi1, S.xi2, S.theta)
@@ -135,7 +141,7 @@ def _irreducible(p: Any) -> list[Any]:
         return []
     for i in range(p.ring.ngens):
         if p.degree(i) == 1:
-            a = p.ring({(*m[:i], 0, *m[i + 1:]): c for m, c in p.terms() if m[i] == 1})
+            a = p.ring({(*m[:i], 0, *m[i + 1 :]): c for m, c in p.terms() if m[i] == 1})
             h = a.gcd(p - a * p.ring.gens[i])
             if h.is_ground:
                 return [p]
@@ -152,15 +158,22 @@ def _factors(form: RingForm, dens: list, expr: sp.Expr) -> tuple[sp.Expr, ...]:
         if not rem:
             raise DegenerateClaimError(
                 f"{expr} is undefined for every value of its symbols: its denominator "
-                f"{form.as_expr(d)} is 0 modulo {form.describe_relations()} (0/0)")
+                f"{form.as_expr(d)} is 0 modulo {form.describe_relations()} (0/0)"
+            )
         if rem.is_ground:  # a non-zero constant on the variety: no condition
             continue
         key = (tuple(form.gens), frozenset(rem.terms()))  # = d wherever the relations hold
         if key not in _FACTORS:
-            parts = [rem] if len(rem) > 80 else [f for f, _ in rem.sqf_list()[1]] \
-                if len(rem) > 30 else _irreducible(rem)
-            _FACTORS[key] = tuple(form.as_expr(f.quo_ground(f.LC)) for f in parts
-                                  if not f.is_ground)
+            parts = (
+                [rem]
+                if len(rem) > 80
+                else [f for f, _ in rem.sqf_list()[1]]
+                if len(rem) > 30
+                else _irreducible(rem)
+            )
+            _FACTORS[key] = tuple(
+                form.as_expr(f.quo_ground(f.LC)) for f in parts if not f.is_ground
+            )
         out.update(dict.fromkeys(_FACTORS[key]))
     return tuple(sorted(out, key=sp.default_sort_key))
 
@@ -199,8 +212,9 @@ def _reduce(expr: sp.Expr) -> Reduction:
     (num, den), dens = form.values[0], form.denominators[0]
     factors = _factors(form, dens, expr)
     if not num:
-        return Reduction(0, den, factors,
-                         form.certificate(num, [R0 * 0 for R0 in form.relations]), form)
+        return Reduction(
+            0, den, factors, form.certificate(num, [R0 * 0 for R0 in form.relations]), form
+        )
     if not form.relations:
         return Reduction(num, den, factors, None, form)
     # roots (outer, then inner) before sin² + cos² − 1: see _flint.divide

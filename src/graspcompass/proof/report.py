@@ -26,10 +26,16 @@ class ClaimReport:
         """JSON-ready dict: id, ref, status, seconds, statement, method, ..."""
         c, r = self.claim, self.result
         rec: dict[str, Any] = {
-            "id": c.id, "ref": c.ref, "status": r.status.value,
-            "seconds": round(r.seconds, 4), "statement": c.statement, "method": r.method,
-            "printed": c.printed, "hypotheses": list(r.hypotheses),
-            "conditions": list(r.conditions), "implied": list(r.implied),
+            "id": c.id,
+            "ref": c.ref,
+            "status": r.status.value,
+            "seconds": round(r.seconds, 4),
+            "statement": c.statement,
+            "method": r.method,
+            "printed": c.printed,
+            "hypotheses": list(r.hypotheses),
+            "conditions": list(r.conditions),
+            "implied": list(r.implied),
             "depends": [d.id for d in c.depends],
         }
         if r.certificate is not None:
@@ -45,9 +51,12 @@ class ClaimReport:
         return rec
 
 
-def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False,
-                  timeout: float | None = None, budget: Budget | None = None
-                  ) -> list[ClaimReport]:
+def run_catalogue(
+    claims: Sequence[Claim] = CLAIMS,
+    quiet: bool = False,
+    timeout: float | None = None,
+    budget: Budget | None = None,
+) -> list[ClaimReport]:
     """Check every claim, with a progress bar on a terminal unless ``quiet``.
 
     ``timeout`` (seconds, ``None``: no limit) bounds the whole run, or ``budget``
@@ -59,8 +68,20 @@ def run_catalogue(claims: Sequence[Claim] = CLAIMS, quiet: bool = False,
     budget = budget if budget is not None else Budget(timeout)
     with session(), Progress(len(claims), "verify", quiet=quiet) as bar:
         for c in claims:
-            out.append(ClaimReport(c, budget.run(lambda c=c: check(c), lambda: ProofResult(
-                Status.UNDECIDED, TIMED_OUT, 0.0, detail=f"--timeout {budget.seconds:g} s"))))
+            out.append(
+                ClaimReport(
+                    c,
+                    budget.run(
+                        lambda c=c: check(c),
+                        lambda: ProofResult(
+                            Status.UNDECIDED,
+                            TIMED_OUT,
+                            0.0,
+                            detail=f"--timeout {budget.seconds:g} s",
+                        ),
+                    ),
+                )
+            )
             bar.update(note=c.id)
     return out
 
@@ -93,17 +114,21 @@ def _assumes(r: ClaimReport) -> str:
 
 def to_table(reports: Sequence[ClaimReport]) -> str:
     """A text table: id, reference, status, method, seconds."""
-    rows = [(r.claim.id, r.claim.ref, r.result.status.value, r.result.method,
-             f"{r.result.seconds:.2f}") for r in reports]
+    rows = [
+        (r.claim.id, r.claim.ref, r.result.status.value, r.result.method, f"{r.result.seconds:.2f}")
+        for r in reports
+    ]
     head = ("id", "paper", "status", "method", "s")
     w = [max(len(str(x[i])) for x in [head, *rows]) for i in range(4)]
     lines = ["  ".join(h.ljust(w[i]) if i < 4 else h for i, h in enumerate(head))]
     for row in rows:
         lines.append("  ".join(x.ljust(w[i]) if i < 4 else x for i, x in enumerate(row)))
     n = {s: sum(r.result.status is s for r in reports) for s in Status}
-    lines.append(f"\n{n[Status.PROVED]} proved, {n[Status.REFUTED]} refuted, "
-                 f"{n[Status.UNDECIDED]} undecided; "
-                 f"{sum(r.result.seconds for r in reports):.1f} s in the checker")
+    lines.append(
+        f"\n{n[Status.PROVED]} proved, {n[Status.REFUTED]} refuted, "
+        f"{n[Status.UNDECIDED]} undecided; "
+        f"{sum(r.result.seconds for r in reports):.1f} s in the checker"
+    )
     for r in reports:
         if r.result.status is Status.REFUTED:
             cx = ", ".join(f"{k} = {v}" for k, v in (r.result.counterexample or {}).items())
@@ -121,39 +146,60 @@ def to_markdown(reports: Sequence[ClaimReport]) -> str:
     MathJax math (:mod:`graspcompass.proof._markdown`)."""
     from ._markdown import md_counterexample, md_items, md_text
 
-    out = ["# Proof report", "",
-           "Every claim of Ito, Tanaka and Sasaki (Robotica 30(5), 2012) checked by "
-           "`graspcompass verify` for general symbolic parameters under the contact point "
-           "conditions (1). PROVED means a symbolic proof (polynomial reduction modulo "
-           "$\\sin^2 + \\cos^2 = 1$, or a sign witness); REFUTED comes with exact parameter "
-           "values where the printed statement fails.", "",
-           "## Errata: where the paper as printed is wrong", ""]
+    out = [
+        "# Proof report",
+        "",
+        "Every claim of Ito, Tanaka and Sasaki (Robotica 30(5), 2012) checked by "
+        "`graspcompass verify` for general symbolic parameters under the contact point "
+        "conditions (1). PROVED means a symbolic proof (polynomial reduction modulo "
+        "$\\sin^2 + \\cos^2 = 1$, or a sign witness); REFUTED comes with exact parameter "
+        "values where the printed statement fails.",
+        "",
+        "## Errata: where the paper as printed is wrong",
+        "",
+    ]
     by_id = {r.claim.id: r for r in reports}
     for r in reports:
         if r.result.status is Status.REFUTED:
             fix = by_id.get(r.claim.corrected_by or "")
-            out.append(f"- {md_text(r.claim.ref)}: {md_text(r.claim.statement)}. REFUTED, "
-                       f"counterexample {md_counterexample(r.result.counterexample)}. "
-                       f"{md_text(r.claim.note)}")
+            out.append(
+                f"- {md_text(r.claim.ref)}: {md_text(r.claim.statement)}. REFUTED, "
+                f"counterexample {md_counterexample(r.result.counterexample)}. "
+                f"{md_text(r.claim.note)}"
+            )
             if fix is not None:
-                out += ["", f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
-                        f"{md_text(fix.claim.statement)}", ""]
-    out += ["", "## All claims", "",
-            "| id | paper | status | method | s |", "| --- | --- | --- | --- | ---: |"]
+                out += [
+                    "",
+                    f"  Corrected (`{fix.claim.id}`, {fix.result.status.value}): "
+                    f"{md_text(fix.claim.statement)}",
+                    "",
+                ]
+    out += [
+        "",
+        "## All claims",
+        "",
+        "| id | paper | status | method | s |",
+        "| --- | --- | --- | --- | ---: |",
+    ]
     for r in reports:
         method = r.result.method if len(r.result.method) <= 40 else "see below"
-        out.append(f"| `{r.claim.id}` | {md_text(r.claim.ref)} | "
-                   f"{r.result.status.value} | {md_text(method)} | "
-                   f"{r.result.seconds:.2f} |")
+        out.append(
+            f"| `{r.claim.id}` | {md_text(r.claim.ref)} | "
+            f"{r.result.status.value} | {md_text(method)} | "
+            f"{r.result.seconds:.2f} |"
+        )
     out += ["", "### Statements, hypotheses and conditions", ""]
     for r in reports:
-        conds = [*md_items(r.result.conditions, "extra: "),
-                 *md_items(r.result.implied, "implied: ")]
-        out += [f"`{r.claim.id}` ({md_text(r.claim.ref)}), "
-                f"{r.result.status.value}",
-                f": {md_text(r.claim.statement)}",
-                ": hypotheses: " + ("; ".join(md_items(r.result.hypotheses)) or "none"),
-                ": conditions: " + ("; ".join(conds) or "none"),
-                *([": method: " + md_text(r.result.method)] if len(r.result.method) > 40
-                  else []), ""]
+        conds = [
+            *md_items(r.result.conditions, "extra: "),
+            *md_items(r.result.implied, "implied: "),
+        ]
+        out += [
+            f"`{r.claim.id}` ({md_text(r.claim.ref)}), {r.result.status.value}",
+            f": {md_text(r.claim.statement)}",
+            ": hypotheses: " + ("; ".join(md_items(r.result.hypotheses)) or "none"),
+            ": conditions: " + ("; ".join(conds) or "none"),
+            *([": method: " + md_text(r.result.method)] if len(r.result.method) > 40 else []),
+            "",
+        ]
     return "\n".join(out) + "\n"

@@ -24,10 +24,14 @@ Intervals = Mapping[sp.Expr, tuple[sp.Expr, sp.Expr]]
 
 #: Open intervals of the angle forms under the domains and condition (1).
 CONDITION_1: dict[sp.Expr, tuple[sp.Expr, sp.Expr]] = {
-    S.xi1: (0, sp.pi / 2), S.xi2: (0, sp.pi / 2),
-    S.phi1: (0, sp.pi), S.phi2: (0, sp.pi),  # φ ≤ π, and φ = π is excluded by (1)
-    S.phi1 + S.xi1: (sp.pi / 2, 3 * sp.pi / 2), S.phi2 + S.xi2: (sp.pi / 2, 3 * sp.pi / 2),
-    S.phi1 - S.xi1: (-sp.pi / 2, sp.pi / 2), S.phi2 - S.xi2: (-sp.pi / 2, sp.pi / 2),
+    S.xi1: (0, sp.pi / 2),
+    S.xi2: (0, sp.pi / 2),
+    S.phi1: (0, sp.pi),
+    S.phi2: (0, sp.pi),  # φ ≤ π, and φ = π is excluded by (1)
+    S.phi1 + S.xi1: (sp.pi / 2, 3 * sp.pi / 2),
+    S.phi2 + S.xi2: (sp.pi / 2, 3 * sp.pi / 2),
+    S.phi1 - S.xi1: (-sp.pi / 2, sp.pi / 2),
+    S.phi2 - S.xi2: (-sp.pi / 2, sp.pi / 2),
 }
 
 Sign = tuple[int, int]  # the range [lo, hi] of the sign, within {-1, 0, 1}
@@ -75,12 +79,16 @@ def _interval_pieces(form: sp.Expr, intervals: Intervals):
     rest = form.as_coefficients_dict()
     rest = {t: v for t, v in rest.items()}
     pieces = []
-    for key, (a, b) in sorted(intervals.items(), key=lambda kv: (
-            -len(sp.Add.make_args(kv[0])), sp.default_sort_key(kv[0]))):
+    for key, (a, b) in sorted(
+        intervals.items(),
+        key=lambda kv: (-len(sp.Add.make_args(kv[0])), sp.default_sort_key(kv[0])),
+    ):
         kc = sp.expand(key).as_coefficients_dict()
         for sign in (1, -1):
-            if all(t in rest and rest[t] * sign * v > 0 and abs(rest[t]) >= abs(v)
-                   for t, v in kc.items()):
+            if all(
+                t in rest and rest[t] * sign * v > 0 and abs(rest[t]) >= abs(v)
+                for t, v in kc.items()
+            ):
                 for t, v in kc.items():
                     rest[t] -= sign * v
                 lo, hi = (lo + a, hi + b) if sign == 1 else (lo - b, hi - a)
@@ -122,11 +130,18 @@ def _trig_sign(f: sp.Expr, intervals: Intervals) -> tuple[Sign, dict] | None:
     pj = [form_json(p) for p, *_ in pieces]
     if fj is None or any(p is None for p in pj):
         return None
-    return sign, {"type": "trig", "func": type(f).__name__, "form": fj, "const": _frac(qc),
-                  "pieces": [{"form": p, "coeff": s, "interval": [_frac(_pi_multiple(a)),
-                                                                 _frac(_pi_multiple(b))]}
-                             for p, (_, s, a, b) in zip(pj, pieces)],
-                  "interval": [_frac(qlo), _frac(qhi)], "sign": list(sign)}
+    return sign, {
+        "type": "trig",
+        "func": type(f).__name__,
+        "form": fj,
+        "const": _frac(qc),
+        "pieces": [
+            {"form": p, "coeff": s, "interval": [_frac(_pi_multiple(a)), _frac(_pi_multiple(b))]}
+            for p, (_, s, a, b) in zip(pj, pieces)
+        ],
+        "interval": [_frac(qlo), _frac(qhi)],
+        "sign": list(sign),
+    }
 
 
 def _mul(a: Sign, b: Sign) -> Sign:
@@ -167,15 +182,32 @@ def sign_reason(f: Any, intervals: Intervals = CONDITION_1) -> tuple[Sign, dict]
         r = sp.Rational(v)
         eps = sp.Rational(1, 10**40)
         s = _POS if v > 0 else _NEG
-        return s, {"type": "enclosure", "expr": str(f), "lo": _frac(r - eps),
-                   "hi": _frac(r + eps), "sign": list(s)}
+        return s, {
+            "type": "enclosure",
+            "expr": str(f),
+            "lo": _frac(r - eps),
+            "hi": _frac(r + eps),
+            "sign": list(s),
+        }
     if isinstance(f, (sp.sin, sp.cos)):
         return _trig(f, intervals)
     if f.is_Symbol:
-        known: Sign | None = _POS if f.is_positive else _NEG if f.is_negative else \
-            _NONNEG if f.is_nonnegative else _NONPOS if f.is_nonpositive else None
-        return None if known is None else (known, {"type": "symbol", "name": str(f),
-                                                   "sign": list(known)})
+        known: Sign | None = (
+            _POS
+            if f.is_positive
+            else _NEG
+            if f.is_negative
+            else _NONNEG
+            if f.is_nonnegative
+            else _NONPOS
+            if f.is_nonpositive
+            else None
+        )
+        return (
+            None
+            if known is None
+            else (known, {"type": "symbol", "name": str(f), "sign": list(known)})
+        )
     if f.is_Pow and f.exp == sp.S.Half:
         b = sign_reason(f.base, intervals)
         if b is None or b[0][0] < 0:
@@ -283,4 +315,3 @@ def _discharge(factor: sp.Expr, ikey: frozenset) -> str | None:
                 ratio = sp.Rational(int(lam.numerator), int(lam.denominator))
                 return f"sign of {ratio * cand / mult}"
     return None
-

@@ -27,7 +27,7 @@ PAD = 0.35
 
 
 def _is_xy(v: Any) -> bool:
-    return (isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, float) for c in v))
+    return isinstance(v, tuple) and len(v) == 2 and all(isinstance(c, float) for c in v)
 
 
 def _points_of(step: Any, num: dict[str, Any], steps: dict[str, Any]) -> list[Any] | None:
@@ -71,8 +71,9 @@ def _fit(pts: list[Any] | None, whole: Box) -> Box:
     return cx - h, cx + h, cy - h, cy + h
 
 
-def step_boxes(construction: Any, num: dict[str, Any], whole: Box,
-               instruments: Any = ()) -> list[Box]:
+def step_boxes(
+    construction: Any, num: dict[str, Any], whole: Box, instruments: Any = ()
+) -> list[Box]:
     """The camera's target box of every step of ``construction`` (whole view ``whole``);
     a step's ``instruments`` (the scene's compass arcs of a bisection) are in its box."""
     steps = {s.name: s for s in construction.steps}
@@ -94,8 +95,7 @@ def _holds(box: Box, pts: list[Any] | None, span: float) -> bool:
     if pts is None:
         return False
     m = 0.05 * (box[1] - box[0])
-    inside = all(box[0] + m <= p[0] <= box[1] - m and box[2] + m <= p[1] <= box[3] - m
-                 for p in pts)
+    inside = all(box[0] + m <= p[0] <= box[1] - m and box[2] + m <= p[1] <= box[3] - m for p in pts)
     xs, ys = [p[0] for p in pts], [p[1] for p in pts]
     need = max(max(xs) - min(xs), max(ys) - min(ys), LEAST * span / (1 + 2 * PAD))
     return inside and (box[1] - box[0]) <= 1.6 * need * (1 + 2 * PAD)

@@ -21,9 +21,22 @@ import numpy as np
 from ..boundary._output import check_folder, check_target, writing
 from ..boundary.errors import GraspCompassError
 
-__all__ = ["OUTPUT_FORMATS", "AnimationError", "FFmpegNotFoundError", "UnsupportedFormatError",
-           "blend", "check_fps", "check_output", "find_ffmpeg", "jshtml", "palette_sample",
-           "save_frames", "write_gif", "write_mp4", "write_png"]
+__all__ = [
+    "OUTPUT_FORMATS",
+    "AnimationError",
+    "FFmpegNotFoundError",
+    "UnsupportedFormatError",
+    "blend",
+    "check_fps",
+    "check_output",
+    "find_ffmpeg",
+    "jshtml",
+    "palette_sample",
+    "save_frames",
+    "write_gif",
+    "write_mp4",
+    "write_png",
+]
 
 #: File extensions an animation is written to.
 OUTPUT_FORMATS = (".gif", ".mp4", ".html")
@@ -75,9 +88,11 @@ def find_ffmpeg() -> str:
                 pass
     exe = shutil.which(chosen)
     if exe is None:
-        raise FFmpegNotFoundError("cannot write MP4: no ffmpeg (pip install "
-                                  "'graspcompass[mp4]', or a system ffmpeg; or write .gif or "
-                                  ".html)")
+        raise FFmpegNotFoundError(
+            "cannot write MP4: no ffmpeg (pip install "
+            "'graspcompass[mp4]', or a system ffmpeg; or write .gif or "
+            ".html)"
+        )
     return exe
 
 
@@ -97,7 +112,8 @@ def check_output(path: str | os.PathLike[str]) -> str:
         what = f"extension {p.suffix!r}" if p.suffix else "a path without extension"
         raise UnsupportedFormatError(
             f"cannot write an animation to {str(p)!r}: {what} is not supported; use "
-            f"{', '.join(OUTPUT_FORMATS)} (save_frames() writes PNG frames)")
+            f"{', '.join(OUTPUT_FORMATS)} (save_frames() writes PNG frames)"
+        )
     if ext == ".mp4":
         find_ffmpeg()
     return ext
@@ -113,8 +129,12 @@ def blend(a: np.ndarray, b: np.ndarray, w: float, rows: slice = slice(None)) -> 
     return out
 
 
-def write_gif(frames: Iterable[np.ndarray], path: str | os.PathLike[str], fps: float,
-              palette_sample: np.ndarray | None = None) -> int:
+def write_gif(
+    frames: Iterable[np.ndarray],
+    path: str | os.PathLike[str],
+    fps: float,
+    palette_sample: np.ndarray | None = None,
+) -> int:
     """Write RGB frames as a looping GIF with Pillow; returns the number of GIF frames.
 
     One 256-colour palette, from ``palette_sample`` (default: the first frame),
@@ -139,21 +159,54 @@ def write_gif(frames: Iterable[np.ndarray], path: str | os.PathLike[str], fps: f
         distinct += data != previous
         previous = data
         images.append(im)
-    images[0].save(path, save_all=True, append_images=images[1:], loop=0, optimize=False,
-                   duration=1000.0 / check_fps(fps), disposal=1)
+    images[0].save(
+        path,
+        save_all=True,
+        append_images=images[1:],
+        loop=0,
+        optimize=False,
+        duration=1000.0 / check_fps(fps),
+        disposal=1,
+    )
     return distinct
 
 
-def write_mp4(frames: Iterator[np.ndarray], path: str | os.PathLike[str], fps: float,
-              ffmpeg: str | None = None) -> int:
+def write_mp4(
+    frames: Iterator[np.ndarray],
+    path: str | os.PathLike[str],
+    fps: float,
+    ffmpeg: str | None = None,
+) -> int:
     """Pipe RGB frames to ``ffmpeg`` (H.264, yuv420p); returns the number of frames."""
     exe = ffmpeg or find_ffmpeg()
     first = next(frames)
     h, w = first.shape[:2]
-    cmd = [exe, "-y", "-loglevel", "error", "-f", "rawvideo", "-vcodec", "rawvideo",
-           "-s", f"{w}x{h}", "-pix_fmt", "rgb24", "-r", f"{check_fps(fps):g}", "-i", "-",
-           "-an", "-vcodec", "libx264", "-pix_fmt", "yuv420p",
-           "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", str(path)]
+    cmd = [
+        exe,
+        "-y",
+        "-loglevel",
+        "error",
+        "-f",
+        "rawvideo",
+        "-vcodec",
+        "rawvideo",
+        "-s",
+        f"{w}x{h}",
+        "-pix_fmt",
+        "rgb24",
+        "-r",
+        f"{check_fps(fps):g}",
+        "-i",
+        "-",
+        "-an",
+        "-vcodec",
+        "libx264",
+        "-pix_fmt",
+        "yuv420p",
+        "-vf",
+        "pad=ceil(iw/2)*2:ceil(ih/2)*2",
+        str(path),
+    ]
     proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
     assert proc.stdin is not None
     count = 0
@@ -166,8 +219,10 @@ def write_mp4(frames: Iterator[np.ndarray], path: str | os.PathLike[str], fps: f
     _, err = proc.communicate()
     if proc.returncode:
         lines = (err or b"").decode(errors="replace").strip().splitlines()
-        raise AnimationError(f"ffmpeg failed writing {str(path)!r}: "
-                             f"{lines[-1] if lines else f'exit status {proc.returncode}'}")
+        raise AnimationError(
+            f"ffmpeg failed writing {str(path)!r}: "
+            f"{lines[-1] if lines else f'exit status {proc.returncode}'}"
+        )
     return count
 
 
@@ -205,8 +260,13 @@ class _Frames:
         im.save(fname, format=format.upper())
 
 
-def jshtml(frames: Iterable[np.ndarray], size: Any, dpi: float, fps: float,
-           palette_sample: np.ndarray | None = None) -> str:
+def jshtml(
+    frames: Iterable[np.ndarray],
+    size: Any,
+    dpi: float,
+    fps: float,
+    palette_sample: np.ndarray | None = None,
+) -> str:
     """Self-contained interactive HTML of RGB frames, as ``to_jshtml`` makes it.
 
     matplotlib's :class:`~matplotlib.animation.HTMLWriter` embeds the frames
@@ -221,8 +281,11 @@ def jshtml(frames: Iterable[np.ndarray], size: Any, dpi: float, fps: float,
     source = _Frames(size, dpi, None if palette_sample is None else _palette(palette_sample))
     # the stubs ask an int fps and a Figure: the writer takes any rate, and of the figure
     # only what _Frames has (its size, dpi and savefig)
-    writer = HTMLWriter(fps=check_fps(fps), embed_frames=True,  # type: ignore[arg-type]
-                        default_mode="loop")
+    writer = HTMLWriter(
+        fps=check_fps(fps),
+        embed_frames=True,  # type: ignore[arg-type]
+        default_mode="loop",
+    )
     with TemporaryDirectory() as tmp:
         out = Path(tmp, "animation.html")
         with writer.saving(source, out, dpi):  # type: ignore[arg-type]
@@ -240,8 +303,9 @@ def write_png(rgb: np.ndarray, path: str | os.PathLike[str]) -> Path:
     return Path(path)
 
 
-def save_frames(anim: Any, folder: str | os.PathLike[str], frames: Iterable[int] | None = None,
-                prefix: str = "") -> list[Path]:
+def save_frames(
+    anim: Any, folder: str | os.PathLike[str], frames: Iterable[int] | None = None, prefix: str = ""
+) -> list[Path]:
     """Write PNG frames of ``anim`` into ``folder``; by default ``anim.key_frames()``.
 
     For the construction: one PNG per protocol step, the frame at the end of
@@ -265,7 +329,19 @@ def save_frames(anim: Any, folder: str | os.PathLike[str], frames: Iterable[int]
 
 
 # documented and pickled as graspcompass.render.timeline's (which re-exports them)
-for _public in (AnimationError, UnsupportedFormatError, FFmpegNotFoundError, check_fps,
-                find_ffmpeg, check_output, blend, write_gif, write_mp4, palette_sample, jshtml,
-                write_png, save_frames):
+for _public in (
+    AnimationError,
+    UnsupportedFormatError,
+    FFmpegNotFoundError,
+    check_fps,
+    find_ffmpeg,
+    check_output,
+    blend,
+    write_gif,
+    write_mp4,
+    palette_sample,
+    jshtml,
+    write_png,
+    save_frames,
+):
     _public.__module__ = "graspcompass.render.timeline"

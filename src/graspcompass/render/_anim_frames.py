@@ -74,17 +74,18 @@ class _CameraFrames:
                 rows = self._crossfade(i)
                 if rows is not None and last is not None:
                     end = full(frames[-1])
-                    yield from (blend(last, end, tl.at(f).progress, rows)
-                                for f in frames[:-1])
+                    yield from (blend(last, end, tl.at(f).progress, rows) for f in frames[:-1])
                     yield end
                     last, view = end, None
                     continue
                 before = self._boxes[seg.step - 1] if seg.step > 0 else self._whole
-                if seg.kind == "title" or (seg.kind == "draw"
-                                           and before != self._boxes[seg.step]):
+                if seg.kind == "title" or (seg.kind == "draw" and before != self._boxes[seg.step]):
                     for f in frames:
-                        if last is not None and self._still(f) and (
-                            f > frames.start or seg.kind == "rest"):
+                        if (
+                            last is not None
+                            and self._still(f)
+                            and (f > frames.start or seg.kind == "rest")
+                        ):
                             yield last
                             continue
                         last = full(f)
@@ -101,8 +102,11 @@ class _CameraFrames:
                 movers = [a for a in dynamic if id(a) in moving]
                 background = self._background(i, frames, resting, base)
                 for f in frames:
-                    if last is not None and self._still(f) and (
-                            f > frames.start or seg.kind == "rest"):
+                    if (
+                        last is not None
+                        and self._still(f)
+                        and (f > frames.start or seg.kind == "rest")
+                    ):
                         yield last
                         continue
                     self._apply(f)
@@ -140,7 +144,14 @@ class _CameraFrames:
         canvas.restore_region(layer)
         inputs = set(self.construction.steps[step].inputs)
         moving = {id(a) for a in self._movers(segment)}
-        self._draw([a for s in self.construction.steps[:step] if s.name in inputs
-                    for a, _, _ in self._items[s.index]]
-                   + [a for a, _, _ in self._shared if id(a) not in moving] + [self._caption])
+        self._draw(
+            [
+                a
+                for s in self.construction.steps[:step]
+                if s.name in inputs
+                for a, _, _ in self._items[s.index]
+            ]
+            + [a for a, _, _ in self._shared if id(a) not in moving]
+            + [self._caption]
+        )
         return canvas.copy_from_bbox(bbox)

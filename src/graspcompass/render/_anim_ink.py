@@ -28,12 +28,20 @@ def _snap(a: Artist) -> dict[str, Any]:
     """What :func:`_restore` needs to put ``a`` back as :func:`draw_construction` drew it."""
     s: dict[str, Any] = {"visible": a.get_visible(), "alpha": a.get_alpha()}
     if isinstance(a, Line2D):
-        s.update(color=a.get_color(), lw=a.get_linewidth(), ms=a.get_markersize(),
-                 mfc=a.get_markerfacecolor(), mec=a.get_markeredgecolor(),
-                 data=(np.array(a.get_xdata(), float), np.array(a.get_ydata(), float)))
+        s.update(
+            color=a.get_color(),
+            lw=a.get_linewidth(),
+            ms=a.get_markersize(),
+            mfc=a.get_markerfacecolor(),
+            mec=a.get_markeredgecolor(),
+            data=(np.array(a.get_xdata(), float), np.array(a.get_ydata(), float)),
+        )
     elif isinstance(a, Patch):  # colours as given: "none" stays invisible under any alpha
-        s.update(lw=a.get_linewidth(), ec=getattr(a, "_original_edgecolor", a.get_edgecolor()),
-                 fc=getattr(a, "_original_facecolor", a.get_facecolor()))
+        s.update(
+            lw=a.get_linewidth(),
+            ec=getattr(a, "_original_edgecolor", a.get_edgecolor()),
+            fc=getattr(a, "_original_facecolor", a.get_facecolor()),
+        )
     if isinstance(a, Text):
         s["color"] = a.get_color()
     if isinstance(a, Annotation):
@@ -85,8 +93,11 @@ def _inks(a: Any, s: dict[str, Any]) -> list[Any]:
         if a.get_linestyle() not in ("None", "none", "", " "):
             out.append(s["color"])
         if a.get_marker() not in (None, "None", "none", "", " "):
-            out += [s["mec"]] + ([s["mfc"]] if to_rgba(s["mfc"])[3] > 0 and
-                                 to_rgb(s["mfc"]) != (1.0, 1.0, 1.0) else [])
+            out += [s["mec"]] + (
+                [s["mfc"]]
+                if to_rgba(s["mfc"])[3] > 0 and to_rgb(s["mfc"]) != (1.0, 1.0, 1.0)
+                else []
+            )
     elif isinstance(a, Patch):
         if s["lw"] > 0 and to_rgba(s["ec"])[3] > 0:
             out.append(s["ec"])

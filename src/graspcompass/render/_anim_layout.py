@@ -46,8 +46,10 @@ def _text_width(renderer: Any, prop: Any) -> Any:
         total = 0.0
         for ch in s:
             if ch not in cache:
-                cache[ch] = renderer.get_text_width_height_descent(f"|{ch}|", prop, False)[0] \
+                cache[ch] = (
+                    renderer.get_text_width_height_descent(f"|{ch}|", prop, False)[0]
                     - renderer.get_text_width_height_descent("||", prop, False)[0]
+                )
             total += cache[ch]
         return 1.03 * total
 
@@ -64,13 +66,21 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     W, H = fig.get_size_inches() * fig.dpi
     renderer = anim._canvas.get_renderer()
     px = fig.dpi / 72.0
-    title_pt = max(th.font_size * 0.8 * (1.3 if layout == "side" else 1.0),
-                   getattr(anim, "_least_pt", 0.0))
-    title = fig.text(0.5, 1 - 0.012 * W / H, getattr(anim.construction.grasp, "title", None)
-                     or "", ha="center", va="top", fontsize=title_pt)
+    title_pt = max(
+        th.font_size * 0.8 * (1.3 if layout == "side" else 1.0), getattr(anim, "_least_pt", 0.0)
+    )
+    title = fig.text(
+        0.5,
+        1 - 0.012 * W / H,
+        getattr(anim.construction.grasp, "title", None) or "",
+        ha="center",
+        va="top",
+        fontsize=title_pt,
+    )
     bar_h = max(0.012, 4.0 / H) if layout == "side" else 0.012
-    anim._bar = Rectangle((0, 0), 0, bar_h, transform=fig.transFigure,
-                          color=th.highlight_color, zorder=10)
+    anim._bar = Rectangle(
+        (0, 0), 0, bar_h, transform=fig.transFigure, color=th.highlight_color, zorder=10
+    )
     fig.add_artist(anim._bar)
     margin = max(0.03 * W, 4.0)
     tick = th.font_size * 0.7 * px * 1.6  # the tick labels' room
@@ -80,12 +90,14 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         x_cap = margin
     else:
         side = H - title_h - bar_h * H - tick - 2 * margin  # a square diagram on the left
-        ax.set_position((margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H,
-                         side / W, side / H))
+        ax.set_position(
+            (margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H, side / W, side / H)
+        )
         x_cap = margin * 1.6 + tick + side + 2.5 * margin
         width = W - x_cap - margin
-    anim._caption = fig.text(x_cap / W, 0.5, "", va="top", linespacing=1.4,
-                             fontsize=caption_pt, fontweight="normal")
+    anim._caption = fig.text(
+        x_cap / W, 0.5, "", va="top", linespacing=1.4, fontsize=caption_pt, fontweight="normal"
+    )
     measure = _text_width(renderer, anim._caption.get_fontproperties())
     anim._wrapped = [_wrap(t, width, measure) for t in anim._texts]
     anim._hold_wrapped = _wrap(anim._hold_text, width, measure)
@@ -99,8 +111,8 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         anim._caption.set_y(top / H)
         bottom = top + 0.4 * margin + tick
         ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
-        anim._fade_region = np.s_[:int(H - top - 2)]
+        anim._fade_region = np.s_[: int(H - top - 2)]
     else:
         anim._caption.set_y(1 - title_h / H - margin / H)
-        anim._fade_region = np.s_[:, :int(x_cap - margin)]
+        anim._fade_region = np.s_[:, : int(x_cap - margin)]
     anim._title = title

@@ -74,8 +74,12 @@ class FrameAnimation:
     def drawn_frames(self) -> int:
         """Frames that are drawn: all but the stills, which repeat the frame before."""
         tl = self.timeline
-        return sum(1 for i, seg in enumerate(tl.segments) for f in tl.segment_range(i)
-                   if f == tl.starts[i] or not self._still(f))
+        return sum(
+            1
+            for i, seg in enumerate(tl.segments)
+            for f in tl.segment_range(i)
+            if f == tl.starts[i] or not self._still(f)
+        )
 
     def update(self, frame: int) -> list[Artist]:
         """Set the artists for ``frame``; the function of :attr:`animation`."""
@@ -89,8 +93,9 @@ class FrameAnimation:
         rng = tl.segment_range(tl.segment_of(f))
         rows = self._crossfade(tl.segment_of(f))
         if rows is not None and rng.start > 0 and f != rng.stop - 1:
-            return blend(self.render(rng.start - 1), self.render(rng.stop - 1),
-                         tl.at(f).progress, rows)
+            return blend(
+                self.render(rng.start - 1), self.render(rng.stop - 1), tl.at(f).progress, rows
+            )
         for a in self._dynamic:  # a live blitting FuncAnimation may have left them animated
             a.set_animated(False)
         self._apply(f)
@@ -160,14 +165,16 @@ class FrameAnimation:
 
     def _draw(self, artists: list[Artist]) -> None:
         """Draw ``artists`` in the order the figure draws them (z-order, then as added)."""
-        place = {id(a): k for k, a in enumerate(
-            c for ax in self.figure.axes for c in ax.get_children())}
+        place = {
+            id(a): k for k, a in enumerate(c for ax in self.figure.axes for c in ax.get_children())
+        }
         for a in sorted(artists, key=lambda a: (a.get_zorder(), place.get(id(a), -1))):
             if a.get_visible():
                 self.figure.draw_artist(a)
 
-    def save(self, path: str | os.PathLike[str], fps: float | None = None,
-             quiet: bool = False) -> Path:
+    def save(
+        self, path: str | os.PathLike[str], fps: float | None = None, quiet: bool = False
+    ) -> Path:
         """Write ``.gif``, ``.mp4`` or ``.html``; see :func:`~.timeline.write_animation`."""
         return write_animation(self, path, fps, quiet)
 
@@ -176,17 +183,28 @@ class FrameAnimation:
         """A :class:`~matplotlib.animation.FuncAnimation` of the frames, for live display
         (blitting in the sweep and orientation animations)."""
         if self._anim is None:
-            self._anim = FuncAnimation(self.figure, self.update, frames=self.frame_count,
-                                       init_func=lambda: self.update(0), repeat=True,
-                                       interval=1000.0 / self.fps, blit=self._blit_live,
-                                       cache_frame_data=False)
+            self._anim = FuncAnimation(
+                self.figure,
+                self.update,
+                frames=self.frame_count,
+                init_func=lambda: self.update(0),
+                repeat=True,
+                interval=1000.0 / self.fps,
+                blit=self._blit_live,
+                cache_frame_data=False,
+            )
         return self._anim
 
     def to_html(self, fps: float | None = None) -> str:
         """Self-contained interactive HTML of every frame, the player of ``to_jshtml``."""
         rate = self.fps if fps is None else check_fps(fps)
-        return jshtml(self.iter_frames(), self.figure.get_size_inches(), self.figure.dpi, rate,
-                      palette_sample(self))
+        return jshtml(
+            self.iter_frames(),
+            self.figure.get_size_inches(),
+            self.figure.dpi,
+            rate,
+            palette_sample(self),
+        )
 
     def _repr_html_(self) -> str:
         return self.to_html()

@@ -28,8 +28,23 @@ if TYPE_CHECKING:
 
 __all__ = ["binding", "theta_of_orientation"]
 
-_KEEP = ("object", "cone1", "cone2", "O", "P1", "P2", "V1", "V2", "V3", "V4", "circle1",
-         "circle2", "circle3", "circle4", "envelope")
+_KEEP = (
+    "object",
+    "cone1",
+    "cone2",
+    "O",
+    "P1",
+    "P2",
+    "V1",
+    "V2",
+    "V3",
+    "V4",
+    "circle1",
+    "circle2",
+    "circle3",
+    "circle4",
+    "envelope",
+)
 
 
 def theta_of_orientation(alpha: Any) -> Any:
@@ -58,8 +73,15 @@ class _Turning(FrameAnimation):
 
     _blit_live = True
 
-    def __init__(self, construction: Grasp | Construction, frames: int, fps: float, theme: Theme,
-                 figsize: tuple[float, float], dpi: float) -> None:
+    def __init__(
+        self,
+        construction: Grasp | Construction,
+        frames: int,
+        fps: float,
+        theme: Theme,
+        figsize: tuple[float, float],
+        dpi: float,
+    ) -> None:
         from ..construction.protocol import Construction
 
         if not isinstance(construction, Construction):
@@ -67,14 +89,22 @@ class _Turning(FrameAnimation):
 
             construction = internal_force_diagram(construction)
         if construction.grasp is None:
-            raise AnimationError("this animation needs the construction of a grasp (its "
-                                 "k_grasp(θ)); a file replayed without one has none")
+            raise AnimationError(
+                "this animation needs the construction of a grasp (its "
+                "k_grasp(θ)); a file replayed without one has none"
+            )
         self.construction, self.grasp, self.theme = construction, construction.grasp, theme
         n = Timeline.uniform(frames).frame_count
         self.angle = 2 * np.pi * np.arange(n) / n
         super().__init__(Figure(figsize=figsize, dpi=dpi), self._timeline(), fps)
-        self.figure.text(0.5, 0.985, getattr(self.grasp, "title", None) or "", ha="center",
-                         va="top", fontsize=theme.font_size * 0.85)
+        self.figure.text(
+            0.5,
+            0.985,
+            getattr(self.grasp, "title", None) or "",
+            ha="center",
+            va="top",
+            fontsize=theme.font_size * 0.85,
+        )
         self.axes = self.figure.add_axes((0.04, 0.07, 0.44, 0.84))
         self.num = numeric_objects(construction)
         self.V = [self.num[f"V{i}"] for i in (1, 2, 3, 4)]
@@ -101,9 +131,16 @@ class _Turning(FrameAnimation):
         if getattr(self, "text_axes", None) is None:
             self.text_axes = self.figure.add_axes((0.56, 0.0, 0.44, 0.3))
             self.text_axes.set_axis_off()
-        return self.text_axes.text(0.58, y, "", fontsize=self.theme.font_size * 0.85,
-                                   va="top", linespacing=1.45,
-                                   transform=self.figure.transFigure, **kw)
+        return self.text_axes.text(
+            0.58,
+            y,
+            "",
+            fontsize=self.theme.font_size * 0.85,
+            va="top",
+            linespacing=1.45,
+            transform=self.figure.transFigure,
+            **kw,
+        )
 
     def key_frames(self) -> list[tuple[int, str]]:
         """One frame every 30° of the turn."""

@@ -43,68 +43,155 @@ class _Artists:
 
     def _make_artists(self) -> None:
         ax, th = self.ax, DEFAULT_THEME
-        self.axis_lines = [ax.axhline(0, color=th.axis_color, lw=0.8),
-                           ax.axvline(0, color=th.axis_color, lw=0.8)]
-        self.cones = [ax.add_patch(Polygon(np.zeros((3, 2)), facecolor=th.cone_face,
-                                           alpha=th.cone_alpha, edgecolor="none"))
-                      for _ in range(2)]
+        self.axis_lines = [
+            ax.axhline(0, color=th.axis_color, lw=0.8),
+            ax.axvline(0, color=th.axis_color, lw=0.8),
+        ]
+        self.cones = [
+            ax.add_patch(
+                Polygon(
+                    np.zeros((3, 2)), facecolor=th.cone_face, alpha=th.cone_alpha, edgecolor="none"
+                )
+            )
+            for _ in range(2)
+        ]
         self.sides = [ax.plot([], [], color=th.side_color, lw=1.0)[0] for _ in range(4)]
-        self.perps = [ax.plot([], [], color=th.construction_color, lw=0.7, ls="--")[0]
-                      for _ in range(4)]
-        self.circles = [ax.add_patch(CirclePatch((0, 0), 1, fill=False, ls="--", lw=1.2,
-                                                 edgecolor=th.circle_color(n)))
-                        for n in (1, 2, 3, 4)]
+        self.perps = [
+            ax.plot([], [], color=th.construction_color, lw=0.7, ls="--")[0] for _ in range(4)
+        ]
+        self.circles = [
+            ax.add_patch(
+                CirclePatch((0, 0), 1, fill=False, ls="--", lw=1.2, edgecolor=th.circle_color(n))
+            )
+            for n in (1, 2, 3, 4)
+        ]
         # a circle much larger than the view (near a bound of condition (1), |V_n| grows
         # like 1/cos(φ ± ξ)) is drawn as its arc through O instead: Agg dashes a whole
         # path before clipping it, seconds for a radius of 1e5 pixels
-        self.arcs = [ax.plot([], [], ls="--", lw=1.2, color=th.circle_color(n), zorder=1)[0]
-                     for n in (1, 2, 3, 4)]
-        self.fill = ax.add_patch(Polygon(np.zeros((3, 2)), facecolor=th.envelope_fill,
-                                         alpha=0.25, edgecolor="none", zorder=0.5))
-        (self.envelope_line,) = ax.plot([], [], color=th.envelope_color, lw=2.2,
-                                        label=r"envelope $k_{grasp}(\theta)$, eq. (25)")
+        self.arcs = [
+            ax.plot([], [], ls="--", lw=1.2, color=th.circle_color(n), zorder=1)[0]
+            for n in (1, 2, 3, 4)
+        ]
+        self.fill = ax.add_patch(
+            Polygon(
+                np.zeros((3, 2)),
+                facecolor=th.envelope_fill,
+                alpha=0.25,
+                edgecolor="none",
+                zorder=0.5,
+            )
+        )
+        (self.envelope_line,) = ax.plot(
+            [], [], color=th.envelope_color, lw=2.2, label=r"envelope $k_{grasp}(\theta)$, eq. (25)"
+        )
         (self.points,) = ax.plot([], [], "o", ms=3.5, color=th.point_color)
         (self.contacts,) = ax.plot([], [], "o", ms=9, color=th.highlight_color)
-        (self.direction,) = ax.plot([], [], color=PALETTE["force"], lw=1.0, ls=":",
-                                    label=r"direction $e(\theta)$ of $F_e$, eq. (26)")
-        (self.h_mark,) = ax.plot([], [], "o", ms=6, mfc=PALETTE["markerfill"],
-                                 mec=PALETTE["marker"],
-                                 label=r"$H = k_{grasp}(\theta)\,e(\theta)$")
-        (self.worst_mark,) = ax.plot([], [], "*", ms=14, color=PALETTE["worst"],
-                                      label="worst case")
-        (self.best_mark,) = ax.plot([], [], "D", ms=8, color=PALETTE["best"],
-                                     label="best case")
+        (self.direction,) = ax.plot(
+            [],
+            [],
+            color=PALETTE["force"],
+            lw=1.0,
+            ls=":",
+            label=r"direction $e(\theta)$ of $F_e$, eq. (26)",
+        )
+        (self.h_mark,) = ax.plot(
+            [],
+            [],
+            "o",
+            ms=6,
+            mfc=PALETTE["markerfill"],
+            mec=PALETTE["marker"],
+            label=r"$H = k_{grasp}(\theta)\,e(\theta)$",
+        )
+        (self.worst_mark,) = ax.plot([], [], "*", ms=14, color=PALETTE["worst"], label="worst case")
+        (self.best_mark,) = ax.plot([], [], "D", ms=8, color=PALETTE["best"], label="best case")
         prop = FontProperties(size=9)
-        self.labels = {n: ax.add_artist(PathText(n, (0, 0), ax.transData,
-                                                 self.fig.dpi_scale_trans, prop=prop,
-                                                 offset=(4, 4), zorder=3))
-                       for n in _LABELS}
-        self.message = ax.text(0.5, 0.5, "", transform=ax.transAxes, ha="center", va="center",
-                               fontsize=10, color=PALETTE["error"], visible=False,
-                               zorder=10, bbox=dict(boxstyle="round", fc=PALETTE["errorfill"],
-                                                    ec=PALETTE["error"]))
-        self._alphas = {a: a.get_alpha() for a in (
-            *self.sides, *self.perps, *self.circles, *self.arcs, *self.cones, self.fill,
-            self.envelope_line,
-            self.points, self.worst_mark, self.best_mark, self.direction, self.h_mark)}
+        self.labels = {
+            n: ax.add_artist(
+                PathText(
+                    n,
+                    (0, 0),
+                    ax.transData,
+                    self.fig.dpi_scale_trans,
+                    prop=prop,
+                    offset=(4, 4),
+                    zorder=3,
+                )
+            )
+            for n in _LABELS
+        }
+        self.message = ax.text(
+            0.5,
+            0.5,
+            "",
+            transform=ax.transAxes,
+            ha="center",
+            va="center",
+            fontsize=10,
+            color=PALETTE["error"],
+            visible=False,
+            zorder=10,
+            bbox=dict(boxstyle="round", fc=PALETTE["errorfill"], ec=PALETTE["error"]),
+        )
+        self._alphas = {
+            a: a.get_alpha()
+            for a in (
+                *self.sides,
+                *self.perps,
+                *self.circles,
+                *self.arcs,
+                *self.cones,
+                self.fill,
+                self.envelope_line,
+                self.points,
+                self.worst_mark,
+                self.best_mark,
+                self.direction,
+                self.h_mark,
+            )
+        }
 
     def _draw_order(self) -> dict[str, list[Any]]:
         """The moving artists by region (``main``, ``slider:NAME``, ``info``), each
         list in the order a full draw paints them: by zorder, ties in the axes'
         child order, as :meth:`matplotlib.axes.Axes.draw` does."""
-        groups = {"main": {*self.axis_lines, *self.cones, *self.sides, *self.perps,
-                           *self.circles, *self.arcs, self.fill, self.envelope_line, self.points,
-                           self.contacts, self.direction, self.h_mark, self.worst_mark,
-                           self.best_mark, *self.labels.values(), self.message,
-                           *self.ax.spines.values()}}
+        groups = {
+            "main": {
+                *self.axis_lines,
+                *self.cones,
+                *self.sides,
+                *self.perps,
+                *self.circles,
+                *self.arcs,
+                self.fill,
+                self.envelope_line,
+                self.points,
+                self.contacts,
+                self.direction,
+                self.h_mark,
+                self.worst_mark,
+                self.best_mark,
+                *self.labels.values(),
+                self.message,
+                *self.ax.spines.values(),
+            }
+        }
         axes = {"main": self.ax}
         for name, s in self.sliders.items():
             # ``_handle``: the knob, private (not in the stubs) but the slider's own artist
-            groups[f"slider:{name}"] = {s.poly, s.vline, s._handle,  # type: ignore[attr-defined]
-                                        s.valtext}
+            groups[f"slider:{name}"] = {
+                s.poly,
+                s.vline,
+                s._handle,  # type: ignore[attr-defined]
+                s.valtext,
+            }
             axes[f"slider:{name}"] = s.ax
-        out = {g: sorted((a for a in axes[g].get_children() if a in arts),
-                         key=lambda a: a.get_zorder()) for g, arts in groups.items()}
+        out = {
+            g: sorted(
+                (a for a in axes[g].get_children() if a in arts), key=lambda a: a.get_zorder()
+            )
+            for g, arts in groups.items()
+        }
         out["info"] = [self.info]
         return out
 
@@ -124,8 +211,9 @@ class _Artists:
         span = 100.0 * (1.0 + max(abs(p[k]) for k in GRASP_KEYS))
         for i in range(4):
             for line, (pt, d) in ((self.sides[i], sc.sides[i]), (self.perps[i], sc.perps[i])):
-                line.set_data(pt[0] + span * np.array([-d[0], d[0]]),
-                              pt[1] + span * np.array([-d[1], d[1]]))
+                line.set_data(
+                    pt[0] + span * np.array([-d[0], d[0]]), pt[1] + span * np.array([-d[1], d[1]])
+                )
             self.circles[i].set_center((float(sc.S[i]) / 2, float(sc.C[i]) / 2))
             self.circles[i].set_radius(float(math.hypot(sc.S[i], sc.C[i])) / 2)
             self._arc(i, float(sc.S[i]), float(sc.C[i]))
@@ -178,7 +266,8 @@ class _Artists:
             f"worst case: θ = {math.degrees(self.worst[0]):.1f}°\n"
             f"  k = {self.worst[1]:.4g}, F_int/F_e = {self.worst[1] / d:.4g}\n"
             f"best case:  θ = {math.degrees(self.best[0]):.1f}°\n"
-            f"  k = {self.best[1]:.4g}, F_int/F_e = {self.best[1] / d:.4g}")
+            f"  k = {self.best[1]:.4g}, F_int/F_e = {self.best[1] / d:.4g}"
+        )
 
     def _show_error(self, text: str) -> None:
         self.error = text

@@ -17,10 +17,16 @@ from matplotlib.widgets import Slider
 __all__ = ["PARAMS", "notebook_box"]
 
 #: Slider name, label, unit factor to the model (degrees for φ and θ).
-PARAMS = (("x1", "$x_1$", 1.0), ("x2", "$x_2$", 1.0), ("y", "$y$", 1.0),
-          ("phi1", r"$\varphi_1$ (°)", math.pi / 180), ("phi2", r"$\varphi_2$ (°)", math.pi / 180),
-          ("mu1", r"$\mu_1$", 1.0), ("mu2", r"$\mu_2$", 1.0),
-          ("theta", r"$\theta$ (°)", math.pi / 180))
+PARAMS = (
+    ("x1", "$x_1$", 1.0),
+    ("x2", "$x_2$", 1.0),
+    ("y", "$y$", 1.0),
+    ("phi1", r"$\varphi_1$ (°)", math.pi / 180),
+    ("phi2", r"$\varphi_2$ (°)", math.pi / 180),
+    ("mu1", r"$\mu_1$", 1.0),
+    ("mu2", r"$\mu_2$", 1.0),
+    ("theta", r"$\theta$ (°)", math.pi / 180),
+)
 _UNIT = {p[0]: p[2] for p in PARAMS}
 _PICK_PX = 12.0
 
@@ -36,7 +42,8 @@ class _Slider(Slider):
 
     def ignore(self, event: Any) -> bool:
         return super().ignore(event) or (
-            not self.drag_active and getattr(event, "inaxes", self.ax) is not self.ax)
+            not self.drag_active and getattr(event, "inaxes", self.ax) is not self.ax
+        )
 
 
 class _Events:
@@ -50,6 +57,7 @@ class _Events:
     _dragging: str | None
 
     if TYPE_CHECKING:  # the Explorer's own methods
+
         def update(self, changed: Iterable[str] | None = None) -> None: ...
         def drag(self, point: str, x: float, y: float) -> None: ...
         def fit(self) -> None: ...
@@ -76,8 +84,10 @@ class _Events:
             return
         for name in ("P1", "P2"):
             px, py = self.ax.transData.transform(
-                (self.params["x1"], self.params["y"]) if name == "P1"
-                else (-self.params["x2"], self.params["y"]))
+                (self.params["x1"], self.params["y"])
+                if name == "P1"
+                else (-self.params["x2"], self.params["y"])
+            )
             if math.hypot(event.x - px, event.y - py) <= _PICK_PX:
                 self._dragging = name
                 return
@@ -119,8 +129,14 @@ def notebook_box(ex: Any, w: Any) -> Any:
     controls = []
     for name, label, unit in PARAMS:
         s = ex.sliders[name]
-        c = w.FloatSlider(value=s.val, min=s.valmin, max=s.valmax, step=(s.valmax - s.valmin) / 400,
-                          description=label.replace("$", "").replace("\\", ""))
+        c = w.FloatSlider(
+            value=s.val,
+            min=s.valmin,
+            max=s.valmax,
+            step=(s.valmax - s.valmin) / 400,
+            description=label.replace("$", "").replace("\\", ""),
+        )
+
         def moved(ch: Any, n: str = name, u: Any = unit) -> None:
             ex.set_params(**{n: ch["new"] * u})
             render()

@@ -38,8 +38,15 @@ import numpy as np
 if TYPE_CHECKING:
     from ..grasp import Grasp
 
-__all__ = ["GRASP_KEYS", "POINT_NAMES", "Scene", "ThetaGrid", "construction_scene",
-           "float_scene", "grasp_scene"]
+__all__ = [
+    "GRASP_KEYS",
+    "POINT_NAMES",
+    "Scene",
+    "ThetaGrid",
+    "construction_scene",
+    "float_scene",
+    "grasp_scene",
+]
 
 #: The grasp's parameters among the explorer's (θ is the explorer's own).
 GRASP_KEYS = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")
@@ -108,8 +115,9 @@ class ThetaGrid:
         self.sin, self.cos = np.sin(self.theta), np.cos(self.theta)
 
 
-def _assemble(p: dict[str, float], S: np.ndarray, C: np.ndarray, sc: np.ndarray,
-              grid: ThetaGrid) -> Scene:
+def _assemble(
+    p: dict[str, float], S: np.ndarray, C: np.ndarray, sc: np.ndarray, grid: ThetaGrid
+) -> Scene:
     """The scene from S_n, C_n and the sides' ``(sin(φ ± ξ), cos(φ ± ξ)) / cos ξ``."""
     x1, x2, y = p["x1"], p["x2"], p["y"]
     sign = np.array([-1.0, 1.0, -1.0, 1.0])  # −sx at P1 (n = 1, 3), +sx at P2 (n = 2, 4)
@@ -121,10 +129,14 @@ def _assemble(p: dict[str, float], S: np.ndarray, C: np.ndarray, sc: np.ndarray,
     perps = np.stack([foot, np.column_stack([-d[:, 1], d[:, 0]])], axis=1)
     om = (x1 - x2) / 2
     zeros = np.zeros(4)
-    points = np.vstack([[(x1, 0.0), (-x2, 0.0), (om, 0.0)],
-                        np.column_stack([om - S, zeros]),   # X_n
-                        np.column_stack([zeros, -C]),       # Y_n
-                        np.column_stack([S, C])])           # V_n
+    points = np.vstack(
+        [
+            [(x1, 0.0), (-x2, 0.0), (om, 0.0)],
+            np.column_stack([om - S, zeros]),  # X_n
+            np.column_stack([zeros, -C]),  # Y_n
+            np.column_stack([S, C]),
+        ]
+    )  # V_n
     kn = np.multiply.outer(S, grid.sin) - np.multiply.outer(C, grid.cos)
     k = np.maximum(kn.max(axis=0), 0.0)
     envelope = np.column_stack([k * grid.sin, -k * grid.cos])
@@ -139,8 +151,14 @@ def float_scene(p: dict[str, float], grid: ThetaGrid) -> Scene | None:
         return None
     if not all(math.isfinite(v) and abs(v) < 1e150 for v in (x1, x2, y, phi1, phi2, mu1, mu2)):
         return None
-    if not (x1 + x2 > 0 and y >= 0 and 0 < phi1 <= math.pi and 0 < phi2 <= math.pi
-            and mu1 > 0 and mu2 > 0):
+    if not (
+        x1 + x2 > 0
+        and y >= 0
+        and 0 < phi1 <= math.pi
+        and 0 < phi2 <= math.pi
+        and mu1 > 0
+        and mu2 > 0
+    ):
         return None
     half = math.pi / 2
     sc = np.empty((4, 2))
@@ -198,5 +216,15 @@ def construction_scene(p: dict[str, float], grid: ThetaGrid) -> Scene:
     V = points[-4:]
     env = c["envelope"]
     k = env.k(grid.theta)
-    return Scene(tuple(num["P1"]), tuple(num["P2"]), V[:, 0].copy(), V[:, 1].copy(), sides,
-                 perps, points, grid.theta, k, env.polyline(len(grid.theta)))
+    return Scene(
+        tuple(num["P1"]),
+        tuple(num["P2"]),
+        V[:, 0].copy(),
+        V[:, 1].copy(),
+        sides,
+        perps,
+        points,
+        grid.theta,
+        k,
+        env.polyline(len(grid.theta)),
+    )

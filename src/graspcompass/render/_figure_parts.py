@@ -34,8 +34,9 @@ def _by_role(construction: Construction, role: str) -> dict[int, str]:
     return {_n(s): s.name for s in construction.steps if getattr(s, "role", "") == role}
 
 
-def _draw_givens(ax: Axes, construction: Construction, scene: Scene, theme: Theme,
-                 out: dict[str, list[Artist]]) -> None:
+def _draw_givens(
+    ax: Axes, construction: Construction, scene: Scene, theme: Theme, out: dict[str, list[Artist]]
+) -> None:
     """The object outline and the friction cones, shaded towards the object (Fig. 2).
 
     The cones are the scene's (:attr:`Scene.cones`, between the cone sides i and
@@ -44,26 +45,37 @@ def _draw_givens(ax: Axes, construction: Construction, scene: Scene, theme: Them
     grasp = construction.grasp
     shape = getattr(grasp, "shape", None)
     ext = shape_extent(shape)
-    style: dict[str, Any] = dict(facecolor=theme.object_face, edgecolor=theme.object_edge,
-                                 lw=theme.line_width, zorder=0.5)
+    style: dict[str, Any] = dict(
+        facecolor=theme.object_face, edgecolor=theme.object_edge, lw=theme.line_width, zorder=0.5
+    )
     if ext is not None and shape:  # (ext is not None only for a shape)
         kind = shape[0]
-        patch = (CirclePatch((0.0, 0.0), ext[1], **style) if kind == "circle" else
-                 Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style))
+        patch = (
+            CirclePatch((0.0, 0.0), ext[1], **style)
+            if kind == "circle"
+            else Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style)
+        )
         out["object"] = [ax.add_patch(patch)]
     for i, cone in enumerate(scene.cones, start=1):
         if not scene.visible(f"cone{i}"):
             continue
-        poly = Polygon(np.asarray(cone), closed=True, facecolor=theme.cone_face,
-                       alpha=theme.cone_alpha, edgecolor="none", zorder=1,
-                       label="friction cones" if i == 1 else "_nolegend_")
+        poly = Polygon(
+            np.asarray(cone),
+            closed=True,
+            facecolor=theme.cone_face,
+            alpha=theme.cone_alpha,
+            edgecolor="none",
+            zorder=1,
+            label="friction cones" if i == 1 else "_nolegend_",
+        )
         out[f"cone{i}"] = [ax.add_patch(poly)]
 
 
 #: The instruments' looks (:mod:`graspcompass.scene.instruments`): thin, under the points, in
 #: colours of at least 3 : 1 against white (a dimmed copy keeps it: render/_anim_ink.py).
 _INSTRUMENT_STYLE: dict[str, dict[str, Any]] = {
-    "bisector": dict(ls=(0, (1, 2))), "coordinate": dict(ls=(0, (1, 1.5))),
+    "bisector": dict(ls=(0, (1, 2))),
+    "coordinate": dict(ls=(0, (1, 1.5))),
     "drop": dict(ls=(0, (4, 2))),
 }
 
@@ -77,8 +89,9 @@ def _corner() -> Any:
 _CORNER = _corner()
 
 
-def _draw_instruments(ax: Axes, scene: Scene, theme: Theme,
-                      out: dict[str, list[Artist]], shrink: float = 1.0) -> None:
+def _draw_instruments(
+    ax: Axes, scene: Scene, theme: Theme, out: dict[str, list[Artist]], shrink: float = 1.0
+) -> None:
     """The scene's compass arcs, right-angle marks and the guides of V_n, thin and faint.
 
     Each artist goes with the step it belongs to (its gid ``instrument:ROLE``), so
@@ -90,18 +103,19 @@ def _draw_instruments(ax: Axes, scene: Scene, theme: Theme,
         if ins.role == "right_angle" and shrink != 1.0:
             corner = xy[0] + xy[2] - xy[1]
             xy = corner + shrink * (xy - corner)
-        color = (theme.circle_color(ins.n) if ins.role == "coordinate" else
-                 theme.construction_color)
-        kw: dict[str, Any] = dict(color=color, lw=theme.thin_width, zorder=2.3,
-                                  solid_capstyle="butt")
+        color = theme.circle_color(ins.n) if ins.role == "coordinate" else theme.construction_color
+        kw: dict[str, Any] = dict(
+            color=color, lw=theme.thin_width, zorder=2.3, solid_capstyle="butt"
+        )
         kw.update(_INSTRUMENT_STYLE.get(ins.role, {}))
         (art,) = ax.plot(xy[:, 0], xy[:, 1], **kw)
         art.set_gid(f"instrument:{ins.role}")
         out.setdefault(ins.step, []).append(art)
 
 
-def _draw_line(ax: Axes, name: str, step: Step, line: Any, box: Any, theme: Theme,
-               hl: dict[str, Any]) -> list[Artist]:
+def _draw_line(
+    ax: Axes, name: str, step: Step, line: Any, box: Any, theme: Theme, hl: dict[str, Any]
+) -> list[Artist]:
     seg = clip_line(line[0], line[1], box)
     if seg is None:
         return [ax.plot([], [])[0]]
@@ -112,21 +126,42 @@ def _draw_line(ax: Axes, name: str, step: Step, line: Any, box: Any, theme: Them
     elif step.op == "perpendicular" or role in ("transfer", "cost_line"):
         kw = dict(color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2)), zorder=2.5)
     else:
-        kw = dict(color=theme.side_color, lw=theme.line_width, zorder=2.6,
-                  label="cone sides, extended (§3.3)" if role == "cone_side" and _n(step) == 1
-                  else "_nolegend_")
+        kw = dict(
+            color=theme.side_color,
+            lw=theme.line_width,
+            zorder=2.6,
+            label="cone sides, extended (§3.3)"
+            if role == "cone_side" and _n(step) == 1
+            else "_nolegend_",
+        )
     arts: list[Artist] = list(ax.plot([x0, x1], [y0, y1], **{**kw, **hl}))
     if role == "axis":
         end = (x1, y1) if (x1 - x0) + (y1 - y0) > 0 else (x0, y0)
-        arts.append(ax.annotate({1: "x", 2: "y"}.get(_n(step), name), end, xytext=(-4, -4),
-                                textcoords="offset points",
-                                color=theme.axis_color, fontsize=theme.font_size,
-                                style="italic", ha="right", va="top"))
+        arts.append(
+            ax.annotate(
+                {1: "x", 2: "y"}.get(_n(step), name),
+                end,
+                xytext=(-4, -4),
+                textcoords="offset points",
+                color=theme.axis_color,
+                fontsize=theme.font_size,
+                style="italic",
+                ha="right",
+                va="top",
+            )
+        )
     return arts
 
 
-def _draw_length(ax: Axes, step: Step, num: dict[str, Any], box: Any, span: float,
-                 theme: Theme, hl: dict[str, Any]) -> list[Artist]:
+def _draw_length(
+    ax: Axes,
+    step: Step,
+    num: dict[str, Any],
+    box: Any,
+    span: float,
+    theme: Theme,
+    hl: dict[str, Any],
+) -> list[Artist]:
     """A signed length as a thin double arrow along its axis, offset per n (§3.3)."""
     a, b, axis = (num[k] for k in step.inputs[:3])
     d = np.asarray(axis[1], dtype=float)
@@ -140,10 +175,22 @@ def _draw_length(ax: Axes, step: Step, num: dict[str, Any], box: Any, span: floa
         return list(ax.plot([a[0]], [a[1]], marker="|", color=color, ms=4, lw=0))
     tail = math.dist(seg[0], a) < 1e-12 * span  # an arrow head only where the length ends
     head = math.dist(seg[1], b) < 1e-12 * span  # inside the view ("<--" is no style)
-    style = {(True, True): "<->", (True, False): "<-", (False, True): "->",
-             (False, False): "-"}[tail, head]
-    arrow = ax.annotate("", seg[1], xytext=seg[0], annotation_clip=False, zorder=2.4,
-                        arrowprops=dict(arrowstyle=style, color=color,
-                                        lw=hl.get("lw", theme.thin_width), shrinkA=0,
-                                        shrinkB=0, mutation_scale=7))
+    style = {(True, True): "<->", (True, False): "<-", (False, True): "->", (False, False): "-"}[
+        tail, head
+    ]
+    arrow = ax.annotate(
+        "",
+        seg[1],
+        xytext=seg[0],
+        annotation_clip=False,
+        zorder=2.4,
+        arrowprops=dict(
+            arrowstyle=style,
+            color=color,
+            lw=hl.get("lw", theme.thin_width),
+            shrinkA=0,
+            shrinkB=0,
+            mutation_scale=7,
+        ),
+    )
     return [arrow]

@@ -60,8 +60,14 @@ def cone_angles(ax: Axes, grasp: Grasp, length: float, font: float = 7.0) -> lis
     for i, sides in ((1, (1, 3)), (2, (2, 4))):
         P = grasp.P1 if i == 1 else grasp.P2
         px, py = float(P.x), float(P.y)
-        arts += ax.plot([px, px], [py, py - 0.55 * length], color="#555555", lw=0.6,
-                        ls=(0, (1, 1.5)), zorder=2.6)
+        arts += ax.plot(
+            [px, px],
+            [py, py - 0.55 * length],
+            color="#555555",
+            lw=0.6,
+            ls=(0, (1, 1.5)),
+            zorder=2.6,
+        )
         phi, xi = float(grasp.params[f"phi{i}"]), float(grasp.params[f"xi{i}"])
         for n, sign in zip(sides, (1, -1)):
             d = grasp.side_direction(n)
@@ -72,20 +78,25 @@ def cone_angles(ax: Axes, grasp: Grasp, length: float, font: float = 7.0) -> lis
             label = f"$\\varphi_{i} {sym} \\xi_{i}$ = {_deg(math.degrees(phi + sign * xi))}"
             ux, uy = dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)
             note = ax.annotate(
-                label, end, xytext=(4 * ux, 4 * uy), textcoords="offset points",
+                label,
+                end,
+                xytext=(4 * ux, 4 * uy),
+                textcoords="offset points",
                 gid=f"side{n}",
                 ha="left" if ux > 0.3 else "right" if ux < -0.3 else "center",
                 va="bottom" if uy > 0.3 else "top" if uy < -0.3 else "center",
-                fontsize=font, zorder=6, annotation_clip=False,
-                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
+                fontsize=font,
+                zorder=6,
+                annotation_clip=False,
+                bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8),
+            )
             arts.append(note)
             spread.append((note, (px, py, k * dx, k * dy)))
     _spread(ax, spread)
     return arts
 
 
-def _spread(ax: Axes, labels: list[tuple[Annotation, tuple[float, float, float, float]]]
-            ) -> None:
+def _spread(ax: Axes, labels: list[tuple[Annotation, tuple[float, float, float, float]]]) -> None:
     """Angle labels that overlap one placed before move inwards along their side (to 3/4,
     then 1/2 of its length); each label comes with its side (px, py, dx, dy)."""
     renderer = _renderer(ax)
@@ -100,8 +111,11 @@ def _spread(ax: Axes, labels: list[tuple[Annotation, tuple[float, float, float, 
 
 
 def _hits(bb: Any, pts: np.ndarray) -> bool:
-    return bool(np.any((pts[:, 0] > bb.x0) & (pts[:, 0] < bb.x1)
-                       & (pts[:, 1] > bb.y0) & (pts[:, 1] < bb.y1)))
+    return bool(
+        np.any(
+            (pts[:, 0] > bb.x0) & (pts[:, 0] < bb.x1) & (pts[:, 1] > bb.y0) & (pts[:, 1] < bb.y1)
+        )
+    )
 
 
 def _renderer(ax: Axes) -> Any:
@@ -109,29 +123,42 @@ def _renderer(ax: Axes) -> Any:
     return ax.figure.canvas.get_renderer()  # type: ignore[attr-defined]
 
 
-def clear_labels(ax: Axes, labels: list[Annotation], lines: list[Line2D],
-                 others: list[Artist]) -> None:
+def clear_labels(
+    ax: Axes, labels: list[Annotation], lines: list[Line2D], others: list[Artist]
+) -> None:
     """Move each label (an annotation in offset points) off ``lines`` (the cone sides)
     and ``others``: the first of eight places round its point that is clear, else it stays."""
     renderer = _renderer(ax)
 
     def dense(ln: Line2D) -> np.ndarray:  # 60 points along the line's first segment
-        (x0, x1), (y0, y1) = (np.asarray(v, dtype=float)[:2]
-                              for v in (ln.get_xdata(), ln.get_ydata()))
+        (x0, x1), (y0, y1) = (
+            np.asarray(v, dtype=float)[:2] for v in (ln.get_xdata(), ln.get_ydata())
+        )
         return np.column_stack([np.linspace(x0, x1, 60), np.linspace(y0, y1, 60)])
 
     pts = [ax.transData.transform(dense(ln)) for ln in lines]
     cloud = np.vstack(pts) if pts else np.zeros((0, 2))
     boxes = [a.get_window_extent(renderer) for a in others]
-    places: list[tuple[tuple[int, int], Literal["left", "center", "right"],
-                       Literal["bottom", "center", "top"]]] = [
-        ((5, 4), "left", "bottom"), ((-5, 4), "right", "bottom"), ((0, 6), "center", "bottom"),
-        ((5, -4), "left", "top"), ((-5, -4), "right", "top"), ((0, -6), "center", "top"),
-        ((7, 0), "left", "center"), ((-7, 0), "right", "center")]
+    places: list[
+        tuple[
+            tuple[int, int], Literal["left", "center", "right"], Literal["bottom", "center", "top"]
+        ]
+    ] = [
+        ((5, 4), "left", "bottom"),
+        ((-5, 4), "right", "bottom"),
+        ((0, 6), "center", "bottom"),
+        ((5, -4), "left", "top"),
+        ((-5, -4), "right", "top"),
+        ((0, -6), "center", "top"),
+        ((7, 0), "left", "center"),
+        ((-7, 0), "right", "center"),
+    ]
     for t in labels:
+
         def clear(t: Annotation = t) -> bool:
             bb = t.get_window_extent(renderer).expanded(1.05, 1.1)
             return not _hits(bb, cloud) and not any(bb.overlaps(o) for o in boxes)
+
         if clear():
             continue
         start = (t.xyann, t.get_horizontalalignment(), t.get_verticalalignment())
@@ -184,56 +211,93 @@ def exercise_text(ex: dict[str, Any]) -> str:
     else:
         curve, sym = f"the circle on $OV_{ex['n']}$", f"$k_{ex['n']}$"
         ref = "eq. (32)"
-    return (f"Read off: draw the ray from $O$ at $\\theta$ = {th}° (from the negative y-axis, "
-            f"counter-clockwise: the direction $e(\\theta)$ of $F_e$, eq. (26)) to {curve}; "
-            f"its length is {sym}({th}°) [{ref}].  Compute "
-            f"$F_{{int}} = k\\,/\\,(x_1 + x_2) \\cdot F_e$ [eq. (17)].")
+    return (
+        f"Read off: draw the ray from $O$ at $\\theta$ = {th}° (from the negative y-axis, "
+        f"counter-clockwise: the direction $e(\\theta)$ of $F_e$, eq. (26)) to {curve}; "
+        f"its length is {sym}({th}°) [{ref}].  Compute "
+        f"$F_{{int}} = k\\,/\\,(x_1 + x_2) \\cdot F_e$ [eq. (17)]."
+    )
 
 
 def exercise_answer(ex: dict[str, Any], scale: float) -> str:
     sym = "k_{grasp}" if ex["n"] is None else f"k_{ex['n']}"
-    return (f"Read off at $\\theta$ = {ex['theta']}°: ${sym}$ = {ex['k']:.3f} "
-            f"({ex['k'] * scale:.1f} mm on the page), so $F_{{int}}$ = {ex['k']:.3f} / "
-            f"{ex['D']:.3f} $\\cdot F_e$ = {ex['F']:.3f} $F_e$ (eqs. (25)/(32), (17)).")
+    return (
+        f"Read off at $\\theta$ = {ex['theta']}°: ${sym}$ = {ex['k']:.3f} "
+        f"({ex['k'] * scale:.1f} mm on the page), so $F_{{int}}$ = {ex['k']:.3f} / "
+        f"{ex['D']:.3f} $\\cdot F_e$ = {ex['F']:.3f} $F_e$ (eqs. (25)/(32), (17))."
+    )
 
 
 def draw_ray(ax: Axes, ex: dict[str, Any], theme: Theme, reach: float) -> list[Artist]:
     """The ray e(θ) from O and the point read off at distance k (page 2)."""
     t = math.radians(ex["theta"])
     e = (math.sin(t), -math.cos(t))
-    arts: list[Artist] = list(ax.plot([0, reach * e[0]], [0, reach * e[1]], color="black",
-                                      lw=0.8, ls="--", zorder=4.5))
-    arts += ax.plot([ex["k"] * e[0]], [ex["k"] * e[1]], "s", ms=4, mfc="white",
-                    mec="black", mew=0.9, zorder=6)
+    arts: list[Artist] = list(
+        ax.plot([0, reach * e[0]], [0, reach * e[1]], color="black", lw=0.8, ls="--", zorder=4.5)
+    )
+    arts += ax.plot(
+        [ex["k"] * e[0]], [ex["k"] * e[1]], "s", ms=4, mfc="white", mec="black", mew=0.9, zorder=6
+    )
     return arts
 
 
-def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme,
-           font: float) -> Any:
+def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme, font: float) -> Any:
     """A legend of what page 2 draws, in ``where`` (x0, y0, w, h as figure fractions)."""
     c = [theme.circle_color(n) for n in (1, 2, 3, 4)]
     handles = [
         Line2D([], [], color="black", lw=1.0, label="cone side (given), extended"),
         Line2D([], [], color="#888888", lw=0.8, ls="--", label="perpendicular to a side"),
-        Line2D([], [], color=c[0], lw=0.8, marker=">", ms=4,
-               label=r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$"),
+        Line2D(
+            [],
+            [],
+            color=c[0],
+            lw=0.8,
+            marker=">",
+            ms=4,
+            label=r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$",
+        ),
         Line2D([], [], color=c[0], lw=0.6, ls=":", label=r"transfer to $O$: $V_n$"),
         Line2D([], [], color=c[0], lw=1.0, ls="--", label=r"circle on $OV_n$: $k_n(\theta)$"),
-        Line2D([], [], color=theme.envelope_color, lw=2.0,
-               label=r"envelope $k_{grasp}(\theta)$"),
-        Line2D([], [], ls="none", marker="o", ms=3, mfc="white", mec="black",
-               label=r"break point $B_{nm}$"),
-        Line2D([], [], color="black", lw=0.8, ls="--", marker="s", ms=4, mfc="white",
-               label=r"ray $e(\theta)$, the value read off"),
+        Line2D([], [], color=theme.envelope_color, lw=2.0, label=r"envelope $k_{grasp}(\theta)$"),
+        Line2D(
+            [],
+            [],
+            ls="none",
+            marker="o",
+            ms=3,
+            mfc="white",
+            mec="black",
+            label=r"break point $B_{nm}$",
+        ),
+        Line2D(
+            [],
+            [],
+            color="black",
+            lw=0.8,
+            ls="--",
+            marker="s",
+            ms=4,
+            mfc="white",
+            label=r"ray $e(\theta)$, the value read off",
+        ),
         Patch(facecolor=theme.cone_face, alpha=theme.cone_alpha, label="friction cone"),
     ]
-    return fig.legend(handles=handles, loc="upper left", bbox_to_anchor=where, frameon=False,
-                      fontsize=font, title="Legend", title_fontsize=font + 0.5,
-                      handlelength=2.4, borderaxespad=0)
+    return fig.legend(
+        handles=handles,
+        loc="upper left",
+        bbox_to_anchor=where,
+        frameon=False,
+        fontsize=font,
+        title="Legend",
+        title_fontsize=font + 0.5,
+        handlelength=2.4,
+        borderaxespad=0,
+    )
 
 
-def crowded_box(num: dict[str, Any], names: list[str],
-                box: tuple[float, float, float, float]) -> tuple[float, float, float, float] | None:
+def crowded_box(
+    num: dict[str, Any], names: list[str], box: tuple[float, float, float, float]
+) -> tuple[float, float, float, float] | None:
     """The square around the points that lie within :data:`CROWD` of the view's width of
     another (not coinciding) point, padded, or None when nothing crowds."""
     span = box[1] - box[0]
@@ -261,9 +325,16 @@ def crowded_box(num: dict[str, Any], names: list[str],
     return (cx - half, cx + half, cy - half, cy + half)
 
 
-def page2_extras(fig: Figure, ax: Axes, sub: Any, num: dict[str, Any],
-                  box: tuple[float, float, float, float], theme: Any, font: float,
-                  room: tuple[float, float, float]) -> list[Any]:
+def page2_extras(
+    fig: Figure,
+    ax: Axes,
+    sub: Any,
+    num: dict[str, Any],
+    box: tuple[float, float, float, float],
+    theme: Any,
+    font: float,
+    room: tuple[float, float, float],
+) -> list[Any]:
     """Below the solution rows (``room``: x0, top, width in mm): the crowded centre at a
     larger scale (marked on the drawing by a thin frame) and the legend."""
     W, H = A4_MM
@@ -278,8 +349,9 @@ def page2_extras(fig: Figure, ax: Axes, sub: Any, num: dict[str, Any],
     if zoom is not None and width - legend_w >= 50:
         side = min(height - 5, width - legend_w - 6, 80.0)
         inset = fig.add_axes((x0 / W, (top - 5 - side) / H, side / W, side / H))
-        drawn = draw_construction(sub, ax=inset, num=num, box=zoom,
-                                  theme=theme.with_(font_size=theme.font_size * 0.85))
+        drawn = draw_construction(
+            sub, ax=inset, num=num, box=zoom, theme=theme.with_(font_size=theme.font_size * 0.85)
+        )
         for key in ("cone1", "cone2"):  # the centre, not the given cones
             for a in drawn.pop(key, []):
                 a.remove()
@@ -291,12 +363,21 @@ def page2_extras(fig: Figure, ax: Axes, sub: Any, num: dict[str, Any],
             if isinstance(a, Annotation):  # a Text with an ``xy``: an annotation
                 a.set_annotation_clip(True)
         k = (box[1] - box[0]) / (zoom[1] - zoom[0])
-        inset.set_title(f"The framed centre, enlarged {k:.1f}×", fontsize=font, loc="left",
-                        pad=3)
-        arts += [inset, ax.add_patch(Rectangle((zoom[0], zoom[2]), zoom[1] - zoom[0],
-                                               zoom[3] - zoom[2], fill=False, lw=0.6,
-                                               ec="#555555", zorder=7))]
+        inset.set_title(f"The framed centre, enlarged {k:.1f}×", fontsize=font, loc="left", pad=3)
+        arts += [
+            inset,
+            ax.add_patch(
+                Rectangle(
+                    (zoom[0], zoom[2]),
+                    zoom[1] - zoom[0],
+                    zoom[3] - zoom[2],
+                    fill=False,
+                    lw=0.6,
+                    ec="#555555",
+                    zorder=7,
+                )
+            ),
+        ]
         x0 += side + 6
-    arts.append(legend(fig, (x0 / W, (top - height) / H, legend_w / W, height / H), theme,
-                             font))
+    arts.append(legend(fig, (x0 / W, (top - height) / H, legend_w / W, height / H), theme, font))
     return arts

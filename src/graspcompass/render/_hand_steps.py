@@ -122,13 +122,16 @@ def given_names(selected: Sequence[str], given: str | Iterable[str] = "grasp") -
         items = given.split(",") if isinstance(given, str) else list(given)
         names = [str(x).strip() for x in items if str(x).strip()]
         if not names:
-            raise ValueError(f"given: expected one of {', '.join(GIVEN_LEVELS)} or names of "
-                             "steps separated by commas")
+            raise ValueError(
+                f"given: expected one of {', '.join(GIVEN_LEVELS)} or names of "
+                "steps separated by commas"
+            )
         bad = [x for x in names if x not in selected]
         if bad:
             raise ValueError(
                 f"given: {bad[0]!r} is not a step of this worksheet; use one of "
-                f"{', '.join(GIVEN_LEVELS)} or names among {', '.join(selected[5:])}")
+                f"{', '.join(GIVEN_LEVELS)} or names among {', '.join(selected[5:])}"
+            )
         want = base | set(names)
     return tuple(s for s in selected if s in want)
 
@@ -153,17 +156,26 @@ def _text(step: Step, num: dict[str, Any]) -> str:
     name, n = step.name, _n_of(step.name)
     if name in ("P1x", "P2x"):
         p = _m(name[:2])
-        return (f"Drop the perpendicular from {p} to the x-axis (set square, or an arc about "
-                f"{p} cutting the x-axis twice, then bisect): its foot is {_m(name)}.")
+        return (
+            f"Drop the perpendicular from {p} to the x-axis (set square, or an arc about "
+            f"{p} cutting the x-axis twice, then bisect): its foot is {_m(name)}."
+        )
     if name == "O_M":
-        same = ("  Here $x_1 = x_2$, so $O_M$ is $O$."
-                if abs(num["O_M"][0]) <= 1e-12 * max(1.0, abs(num["P1"][0])) else "")
-        return ("Bisect $P_{1x}P_{2x}$ with the compass (equal arcs about both ends, join "
-                "their two crossings): the midpoint is $O_M$." + same)
+        same = (
+            "  Here $x_1 = x_2$, so $O_M$ is $O$."
+            if abs(num["O_M"][0]) <= 1e-12 * max(1.0, abs(num["P1"][0]))
+            else ""
+        )
+        return (
+            "Bisect $P_{1x}P_{2x}$ with the compass (equal arcs about both ends, join "
+            "their two crossings): the midpoint is $O_M$." + same
+        )
     if name == "envelope":
-        return ("Outside extraction: in every direction from $O$ trace the outermost arc of the "
-                "circles (where every circle lies behind $O$, the outline passes through $O$): "
-                "$k_{grasp}(\\theta)$, eq. (25), Fig. 5.")
+        return (
+            "Outside extraction: in every direction from $O$ trace the outermost arc of the "
+            "circles (where every circle lies behind $O$, the outline passes through $O$): "
+            "$k_{grasp}(\\theta)$, eq. (25), Fig. 5."
+        )
     if n is None:
         return step.caption + "."
     i, foot, word = _side_parts(n)
@@ -171,22 +183,34 @@ def _text(step: Step, num: dict[str, Any]) -> str:
     omx, oy = f"$\\overline{{O_MX_{n}}}$", f"$\\overline{{OY_{n}}}$"
     kind = re.sub(r"[1-4]$", "", name)
     return {
-        "side": (f"Lay the ruler along the {word} side of the friction cone at {P} and extend "
-                 "it across the sheet, well past the x-axis."),
+        "side": (
+            f"Lay the ruler along the {word} side of the friction cone at {P} and extend "
+            "it across the sheet, well past the x-axis."
+        ),
         "X": f"Mark where the extended {word} side of the cone at {P} meets the x-axis: {X}.",
-        "perp": (f"Draw the perpendicular from {F} to the line {P}{X} (the {word} side at {P}), "
-                 "long enough to cross the y-axis."),
+        "perp": (
+            f"Draw the perpendicular from {F} to the line {P}{X} (the {word} side at {P}), "
+            "long enough to cross the y-axis."
+        ),
         "Y": f"Mark where this perpendicular meets the y-axis: {Y}.",
-        "OMX": (f"Open the compass from $O_M$ to {X}: the signed length {omx}, + if {X} lies "
-                f"right of $O_M$, − if left (it is $-S_{n}$)."),
-        "OY": (f"Open the compass from $O$ to {Y}: the signed length {oy}, + if {Y} lies above "
-               f"$O$, − if below (it is $-C_{n}$)."),
-        "V": (f"Transfer to $O$ (not $O_M$): mark the x-axis at the distance $O_MX_{n}$ from $O$ "
-              f"on the side opposite to the direction $O_M \\to X_{n}$, and mark {Y} mirrored "
-              f"through $O$ on the y-axis; the perpendiculars to the axes there meet at "
-              f"{V} = $(-\\overline{{O_MX_{n}}}, -\\overline{{OY_{n}}})$."),
-        "circle": (f"Bisect $OV_{n}$ for the centre and draw the circle through $O$ and {V}: "
-                   f"the polar graph of $k_{n}(\\theta)$ (Thales, Fig. 3)."),
+        "OMX": (
+            f"Open the compass from $O_M$ to {X}: the signed length {omx}, + if {X} lies "
+            f"right of $O_M$, − if left (it is $-S_{n}$)."
+        ),
+        "OY": (
+            f"Open the compass from $O$ to {Y}: the signed length {oy}, + if {Y} lies above "
+            f"$O$, − if below (it is $-C_{n}$)."
+        ),
+        "V": (
+            f"Transfer to $O$ (not $O_M$): mark the x-axis at the distance $O_MX_{n}$ from $O$ "
+            f"on the side opposite to the direction $O_M \\to X_{n}$, and mark {Y} mirrored "
+            f"through $O$ on the y-axis; the perpendiculars to the axes there meet at "
+            f"{V} = $(-\\overline{{O_MX_{n}}}, -\\overline{{OY_{n}}})$."
+        ),
+        "circle": (
+            f"Bisect $OV_{n}$ for the centre and draw the circle through $O$ and {V}: "
+            f"the polar graph of $k_{n}(\\theta)$ (Thales, Fig. 3)."
+        ),
     }.get(kind, step.caption + ".")
 
 
@@ -214,9 +238,12 @@ def _brief_block(c: Construction, n: int, todo: list[Any], first: int) -> Instru
     return Instruction(tuple(s.index for s in todo), tuple(s.name for s in todo), text)
 
 
-def instructions_for(construction: Construction, names: Sequence[str],
-                     given: Sequence[str] = (),
-                     num: dict[str, Any] | None = None) -> list[Instruction]:
+def instructions_for(
+    construction: Construction,
+    names: Sequence[str],
+    given: Sequence[str] = (),
+    num: dict[str, Any] | None = None,
+) -> list[Instruction]:
     """The numbered instructions for the steps ``names`` not in ``given``, in protocol order.
 
     Each carries the protocol indices of its steps (as ``graspcompass steps``
@@ -245,10 +272,10 @@ def instructions_for(construction: Construction, names: Sequence[str],
     if num is None:  # the caller's, when it has them (computed once per worksheet)
         num = numeric_objects(construction)
     skip = set(given)
-    todo = sorted((construction.step(n) for n in names if n not in skip),
-                  key=lambda s: s.index)
-    ns = sorted({n for s in todo if (n := _n_of(s.name)) and not s.name.startswith(
-        ("side", "circle"))})
+    todo = sorted((construction.step(n) for n in names if n not in skip), key=lambda s: s.index)
+    ns = sorted(
+        {n for s in todo if (n := _n_of(s.name)) and not s.name.startswith(("side", "circle"))}
+    )
     compact = len({_n_of(n) for n in names if _n_of(n)}) > 1
     first = ns[0] if ns else None
     out: list[Instruction] = []
@@ -264,20 +291,27 @@ def instructions_for(construction: Construction, names: Sequence[str],
         members: list[Any] = []
         if compact and s.name.startswith("side"):
             members = group(r"side[1-4]")
-            listed = "; ".join(f"#{m.index} the {_WORD[_n_of(m.name) or 1]} side at "
-                               f"{_m('P' + str(_side_parts(_n_of(m.name) or 1)[0]))}"
-                               for m in members)
-            text = (f"Extend the sides of the friction cones across the sheet with the ruler: "
-                    f"{listed}. [{s.ref}]")
+            listed = "; ".join(
+                f"#{m.index} the {_WORD[_n_of(m.name) or 1]} side at "
+                f"{_m('P' + str(_side_parts(_n_of(m.name) or 1)[0]))}"
+                for m in members
+            )
+            text = (
+                f"Extend the sides of the friction cones across the sheet with the ruler: "
+                f"{listed}. [{s.ref}]"
+            )
         elif compact and s.name in ("P1x", "P2x"):
             members = group(r"P[12]x")
-            text = ("Drop the perpendiculars from " + " and ".join(
-                f"#{m.index} {_m(m.name[:2])}" for m in members) + " to the x-axis: their "
-                "feet are $P_{1x}$, $P_{2x}$. [§3.3]")
-        elif compact and n is not None and n != first and not s.name.startswith(
-                ("side", "circle")):
-            members = [m for m in todo if _n_of(m.name) == n
-                       and not m.name.startswith(("side", "circle"))]
+            text = (
+                "Drop the perpendiculars from "
+                + " and ".join(f"#{m.index} {_m(m.name[:2])}" for m in members)
+                + " to the x-axis: their "
+                "feet are $P_{1x}$, $P_{2x}$. [§3.3]"
+            )
+        elif compact and n is not None and n != first and not s.name.startswith(("side", "circle")):
+            members = [
+                m for m in todo if _n_of(m.name) == n and not m.name.startswith(("side", "circle"))
+            ]
             ins = _brief_block(construction, n, members, first or 1)
             out.append(ins)
             done.update(ins.names)
@@ -286,21 +320,22 @@ def instructions_for(construction: Construction, names: Sequence[str],
             members = group(r"circle[1-4]")
             m0 = _n_of(members[0].name)
             more = ", ".join(f"#{m.index} $OV_{_n_of(m.name)}$" for m in members[1:])
-            text = (f"#{members[0].index} Bisect $OV_{m0}$ for the centre and draw the circle "
-                    f"through $O$ and $V_{m0}$: the polar graph of $k_{m0}(\\theta)$ (Thales, "
-                    f"Fig. 3)" + (f"; likewise the circles on {more}." if more else ".")
-                    + f" [{s.ref}]")
+            text = (
+                f"#{members[0].index} Bisect $OV_{m0}$ for the centre and draw the circle "
+                f"through $O$ and $V_{m0}$: the polar graph of $k_{m0}(\\theta)$ (Thales, "
+                f"Fig. 3)" + (f"; likewise the circles on {more}." if more else ".") + f" [{s.ref}]"
+            )
         elif s.op == "second_intersection":
             members = group(r"B\d\d")
             listed = ", ".join(f"#{b.index} $B_{{{b.name[1:]}}}$" for b in members)
             text = f"Mark where two circles cross besides $O$: {listed}. [{s.ref}]"
         if members:
-            out.append(Instruction(tuple(m.index for m in members),
-                                   tuple(m.name for m in members), text))
+            out.append(
+                Instruction(tuple(m.index for m in members), tuple(m.name for m in members), text)
+            )
             done.update(m.name for m in members)
             continue
-        out.append(Instruction((s.index,), (s.name,),
-                               f"{_text(s, num)} [{s.ref}]"))
+        out.append(Instruction((s.index,), (s.name,), f"{_text(s, num)} [{s.ref}]"))
     return out
 
 

@@ -110,12 +110,14 @@ def _line_text(line: list[_Word]) -> str:
 
 
 def _rules() -> str:
-    return ("Signs: $\\overline{O_MX_n} = x(X_n) - x(O_M)$ is positive when $X_n$ lies to "
-            "the right of $O_M$, negative to the left; $\\overline{OY_n} = y(Y_n)$ is positive "
-            "when $Y_n$ lies above $O$.  Transfer: $V_n = (-\\overline{O_MX_n}, "
-            "-\\overline{OY_n})$ is laid off from $O$, not from $O_M$: its x-coordinate has "
-            "the length $O_MX_n$ and points the other way; its y-coordinate is $Y_n$ mirrored "
-            "through $O$ (eqs. (28)-(30), (33)-(39); Appendix (A7)-(A8)).")
+    return (
+        "Signs: $\\overline{O_MX_n} = x(X_n) - x(O_M)$ is positive when $X_n$ lies to "
+        "the right of $O_M$, negative to the left; $\\overline{OY_n} = y(Y_n)$ is positive "
+        "when $Y_n$ lies above $O$.  Transfer: $V_n = (-\\overline{O_MX_n}, "
+        "-\\overline{OY_n})$ is laid off from $O$, not from $O_M$: its x-coordinate has "
+        "the length $O_MX_n$ and points the other way; its y-coordinate is $Y_n$ mirrored "
+        "through $O$ (eqs. (28)-(30), (33)-(39); Appendix (A7)-(A8))."
+    )
 
 
 @dataclass
@@ -125,8 +127,9 @@ class _Block:
 
 
 def _layout_blocks(items: list[tuple[str, str]], width: float, size: float) -> list[_Block]:
-    return [_Block(num, _wrap(text, width - (_NUMBER_W if num else 0), size))
-            for num, text in items]
+    return [
+        _Block(num, _wrap(text, width - (_NUMBER_W if num else 0), size)) for num, text in items
+    ]
 
 
 def _columns(blocks: list[_Block], ncols: int) -> list[list[_Block]]:
@@ -135,8 +138,11 @@ def _columns(blocks: list[_Block], ncols: int) -> list[list[_Block]]:
     cols: list[list[_Block]] = [[]]
     used = 0.0
     for b in blocks:
-        if (len(cols) < ncols and cols[-1]
-                and used + (len(b.lines) + 0.6) / 2 > total * len(cols) / ncols):
+        if (
+            len(cols) < ncols
+            and cols[-1]
+            and used + (len(b.lines) + 0.6) / 2 > total * len(cols) / ncols
+        ):
             cols.append([])
         cols[-1].append(b)
         used += len(b.lines) + 0.6
@@ -158,8 +164,9 @@ def _height(col: list[_Block], size: float) -> float:
     return sum(_block_lines(b) for b in col) * size / 72 / _MM
 
 
-def _draw_blocks(fig: Figure, col: list[_Block], x0: float, top_mm: float,
-                 size: float) -> list[str]:
+def _draw_blocks(
+    fig: Figure, col: list[_Block], x0: float, top_mm: float, size: float
+) -> list[str]:
     """Set one column of blocks from ``(x0, top_mm)`` down; return its lines as text."""
     W, H = A4_MM
     em = size / 72 / _MM  # one font size, mm
@@ -172,11 +179,16 @@ def _draw_blocks(fig: Figure, col: list[_Block], x0: float, top_mm: float,
             # the first line moves down by its extra lead, each further one by its lead
             yl -= (_lead(ln) - (_LINE if j == 0 else 0.0)) * em
             if j == 0 and b.number:
-                fig.text(x0 / W, yl / H, b.number, fontsize=size, weight="bold",
-                         va="baseline")
+                fig.text(x0 / W, yl / H, b.number, fontsize=size, weight="bold", va="baseline")
             for dx, w, bold in _runs(ln, size):
-                fig.text((xt + dx) / W, yl / H, w, fontsize=size,
-                         weight="bold" if bold else "normal", va="baseline")
+                fig.text(
+                    (xt + dx) / W,
+                    yl / H,
+                    w,
+                    fontsize=size,
+                    weight="bold" if bold else "normal",
+                    va="baseline",
+                )
             shown.append((b.number + " " if j == 0 and b.number else "") + _line_text(ln))
         y -= _block_lines(b) * em
     return shown
@@ -196,9 +208,12 @@ class _Plan:
     font: float  # size of the instructions, pt
 
 
-def _plans(box: tuple[float, float, float, float], intro: list[str],
-           items: list[tuple[str, str]], size: float
-           ) -> list[tuple[_Plan, list[list[_Block]]]]:
+def _plans(
+    box: tuple[float, float, float, float],
+    intro: list[str],
+    items: list[tuple[str, str]],
+    size: float,
+) -> list[tuple[_Plan, list[list[_Block]]]]:
     """The ways to lay out page 1 that fit: the text below the drawing in one or two
     to three columns, or in a column to the right of it."""
     W, H = A4_MM
@@ -216,7 +231,8 @@ def _plans(box: tuple[float, float, float, float], intro: list[str],
         area = (_MARGIN, top - area_h, width, area_h)
         below = area[1] - _GAP - _height(head, size)
         columns = [(_MARGIN, area[1] - _GAP, width)] + [
-            (_MARGIN + k * (colw + _COL_GAP), below, colw) for k in range(ncols)]
+            (_MARGIN + k * (colw + _COL_GAP), below, colw) for k in range(ncols)
+        ]
         out.append((_Plan(area, columns, _fits(box, area[2], area[3]), size), [head, *cols]))
     for colw in (62.0, 78.0):
         blocks = _layout_blocks([("", t) for t in intro] + items, colw, size)

@@ -44,8 +44,11 @@ class GlyphCache:
     def _glyph(self, ch: str) -> tuple[np.ndarray, np.ndarray] | None:
         if ch not in self._paths:
             p = TextPath((0, 0), ch, prop=self.prop) if not ch.isspace() else None
-            self._paths[ch] = (None if p is None or len(p.vertices) == 0
-                               else (np.asarray(p.vertices, float), np.asarray(p.codes)))
+            self._paths[ch] = (
+                None
+                if p is None or len(p.vertices) == 0
+                else (np.asarray(p.vertices, float), np.asarray(p.codes))
+            )
         return self._paths[ch]
 
     def path(self, text: str) -> Path:
@@ -86,10 +89,17 @@ class PathText(PathPatch):
         Passed to :class:`~matplotlib.patches.PathPatch` (``facecolor``, ``zorder``…).
     """
 
-    def __init__(self, text: str, xy: tuple[float, float], coords: Transform,
-                 dpi_trans: Transform, glyphs: GlyphCache | None = None,
-                 prop: FontProperties | None = None, offset: tuple[float, float] = (0, 0),
-                 **kwargs: Any) -> None:
+    def __init__(
+        self,
+        text: str,
+        xy: tuple[float, float],
+        coords: Transform,
+        dpi_trans: Transform,
+        glyphs: GlyphCache | None = None,
+        prop: FontProperties | None = None,
+        offset: tuple[float, float] = (0, 0),
+        **kwargs: Any,
+    ) -> None:
         self._glyphs, self._coords, self._text = glyphs, coords, text
         self._points = Affine2D().translate(*offset).scale(1 / 72) + dpi_trans
         path = glyphs.path(text) if glyphs is not None else TextPath((0, 0), text, prop=prop)
@@ -102,8 +112,7 @@ class PathText(PathPatch):
         """Move the anchor to ``xy`` (in ``coords``)."""
         self._xy = (float(xy[0]), float(xy[1]))
         # the stub asks an Affine2DBase; any transform of points (transData) works there
-        self.set_transform(self._points + ScaledTranslation(
-            *self._xy, self._coords))  # type: ignore[arg-type]
+        self.set_transform(self._points + ScaledTranslation(*self._xy, self._coords))  # type: ignore[arg-type]
 
     def get_position(self) -> tuple[float, float]:
         """The anchor."""

@@ -37,25 +37,47 @@ if TYPE_CHECKING:
     from ..construction.protocol import Construction
     from ..grasp import Grasp
 
-__all__ = ["SLIP", "OrientationAnimation", "SweepAnimation", "animate_orientation",
-           "animate_sweep", "binding", "theta_of_orientation"]
+__all__ = [
+    "SLIP",
+    "OrientationAnimation",
+    "SweepAnimation",
+    "animate_orientation",
+    "animate_sweep",
+    "binding",
+    "theta_of_orientation",
+]
 
 #: What the largest k_n means (§2.2.4): which friction inequality (8)-(11) becomes an
 #: equality, i.e. which contact's force reaches which side of its friction cone.
 SLIP = {
     0: "k_grasp = 0: no internal force is needed,\nevery k_n(θ) ≤ 0 (25)",
-    **{n: f"k_{n} binds: contact {i} is about to slip, its force on\nthe {side} side of its "
-          f"friction cone: μ{i}N{i} {sign} F{i} = 0 ({eq})"
-       for n, i, side, sign, eq in ((1, 1, "upper", "−", 8), (2, 2, "upper", "−", 9),
-                                    (3, 1, "lower", "+", 10), (4, 2, "lower", "+", 11))},
+    **{
+        n: f"k_{n} binds: contact {i} is about to slip, its force on\nthe {side} side of its "
+        f"friction cone: μ{i}N{i} {sign} F{i} = 0 ({eq})"
+        for n, i, side, sign, eq in (
+            (1, 1, "upper", "−", 8),
+            (2, 2, "upper", "−", 9),
+            (3, 1, "lower", "+", 10),
+            (4, 2, "lower", "+", 11),
+        )
+    },
 }
+
 
 class SweepAnimation(_Turning):
     """The external force sweeping round (Fig. 3); see :func:`animate_sweep`."""
 
-    def __init__(self, construction: Grasp | Construction, frames: int = 120, fps: float = 20,
-                 theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
-                 dpi: float = 80, samples: int = 720, circle: int | None = None) -> None:
+    def __init__(
+        self,
+        construction: Grasp | Construction,
+        frames: int = 120,
+        fps: float = 20,
+        theme: Theme = DEFAULT_THEME,
+        figsize: tuple[float, float] = (9.6, 5.0),
+        dpi: float = 80,
+        samples: int = 720,
+        circle: int | None = None,
+    ) -> None:
         if circle is not None and circle not in (1, 2, 3, 4):
             raise AnimationError(f"circle must be 1, 2, 3 or 4 (or None), got {circle!r}")
         self.circle = circle
@@ -77,54 +99,104 @@ class SweepAnimation(_Turning):
         circles = []
         for v in self.V:  # the circle on O V_n, to keep the labels off it
             t = np.linspace(0, 2 * np.pi, 90)
-            circles.append(np.column_stack([v[0] / 2 + math.hypot(*v) / 2 * np.cos(t),
-                                            v[1] / 2 + math.hypot(*v) / 2 * np.sin(t)]))
+            circles.append(
+                np.column_stack(
+                    [
+                        v[0] / 2 + math.hypot(*v) / 2 * np.cos(t),
+                        v[1] / 2 + math.hypot(*v) / 2 * np.sin(t),
+                    ]
+                )
+            )
         pts = [(v, f"$V_{i}$") for i, v in enumerate(self.V, 1) if i in shown]
-        place_labels(ax, [*pts, (self.num["P1"], "$P_1$"), (self.num["P2"], "$P_2$"),
-                          ((0.0, 0.0), "$O$")], circles, font_size=th.font_size * 0.9,
-                     marker_size=th.point_size, color=th.label_color, zorder=6,
-                     bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65))
+        place_labels(
+            ax,
+            [*pts, (self.num["P1"], "$P_1$"), (self.num["P2"], "$P_2$"), ((0.0, 0.0), "$O$")],
+            circles,
+            font_size=th.font_size * 0.9,
+            marker_size=th.point_size,
+            color=th.label_color,
+            zorder=6,
+            bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65),
+        )
         a["ray"] = ax.plot([], [], color=th.axis_color, lw=th.thin_width, ls=":", zorder=4.6)[0]
         a["trace"] = ax.plot([], [], color=hl, lw=th.envelope_width * 0.8, zorder=4.7)[0]
         for i in (1, 2, 3, 4):
             col = th.circle_color(i)
-            a[f"VH{i}"] = ax.plot([], [], color=col, lw=th.thin_width, ls="--", zorder=4.8,
-                                  visible=i in shown)[0]
-            a[f"H{i}"] = ax.plot([], [], "o", color=col, ms=th.point_size * 1.2, zorder=5.5,
-                                 visible=i in shown)[0]
+            a[f"VH{i}"] = ax.plot(
+                [], [], color=col, lw=th.thin_width, ls="--", zorder=4.8, visible=i in shown
+            )[0]
+            a[f"H{i}"] = ax.plot(
+                [], [], "o", color=col, ms=th.point_size * 1.2, zorder=5.5, visible=i in shown
+            )[0]
         if circle is not None:  # Fig. 3: the right angle at H_n (Thales), H_n named
             a["right"] = ax.plot([], [], color=hl, lw=th.line_width * 1.2, zorder=5.4)[0]
-            a["H_label"] = ax.text(0, 0, f"$H_{circle}$", fontsize=th.font_size, zorder=6,
-                                   color=th.label_color, ha="center", va="center")
+            a["H_label"] = ax.text(
+                0,
+                0,
+                f"$H_{circle}$",
+                fontsize=th.font_size,
+                zorder=6,
+                color=th.label_color,
+                ha="center",
+                va="center",
+            )
         a["radius"] = ax.plot([], [], color=hl, lw=2.2, zorder=4.9)[0]
-        a["point"] = ax.plot([], [], "o", color=hl, mec="white", ms=2 * th.point_size,
-                             zorder=6.5)[0]
-        a["force"] = ax.add_patch(FancyArrowPatch((0, 0), (0, -1), arrowstyle="-|>", lw=1.8,
-                                                  mutation_scale=14, color="black", zorder=7))
-        a["force_label"] = ax.text(0, 0, "$F_e$", fontsize=th.font_size, zorder=7,
-                                   ha="center", va="center")
-        kax = self.k_axes = self.figure.add_axes((0.58, 0.4, 0.39, 0.48) if circle is None
-                                                 else (0.58, 0.56, 0.39, 0.32))
+        a["point"] = ax.plot([], [], "o", color=hl, mec="white", ms=2 * th.point_size, zorder=6.5)[
+            0
+        ]
+        a["force"] = ax.add_patch(
+            FancyArrowPatch(
+                (0, 0),
+                (0, -1),
+                arrowstyle="-|>",
+                lw=1.8,
+                mutation_scale=14,
+                color="black",
+                zorder=7,
+            )
+        )
+        a["force_label"] = ax.text(
+            0, 0, "$F_e$", fontsize=th.font_size, zorder=7, ha="center", va="center"
+        )
+        kax = self.k_axes = self.figure.add_axes(
+            (0.58, 0.4, 0.39, 0.48) if circle is None else (0.58, 0.56, 0.39, 0.32)
+        )
         deg = np.degrees(self._tt)
         for i, k in enumerate(g.k(self._tt), 1):
             one = circle is None or i == circle
-            kax.plot(deg, k, color=th.circle_color(i), ls=th.circle_style(i), label=f"$k_{i}$",
-                     lw=th.line_width * (1 if circle is None else 2.0 if one else 0.6),
-                     alpha=1.0 if one else 0.35)
-            a[f"k{i}"] = kax.plot([], [], "o", color=th.circle_color(i), ms=th.point_size,
-                                  zorder=5, visible=one)[0]
-        kax.plot(deg, g.k_grasp(self._tt), color=th.envelope_color, lw=2.4,
-                 label=r"$k_{grasp}$ (25)")
+            kax.plot(
+                deg,
+                k,
+                color=th.circle_color(i),
+                ls=th.circle_style(i),
+                label=f"$k_{i}$",
+                lw=th.line_width * (1 if circle is None else 2.0 if one else 0.6),
+                alpha=1.0 if one else 0.35,
+            )
+            a[f"k{i}"] = kax.plot(
+                [], [], "o", color=th.circle_color(i), ms=th.point_size, zorder=5, visible=one
+            )[0]
+        kax.plot(
+            deg, g.k_grasp(self._tt), color=th.envelope_color, lw=2.4, label=r"$k_{grasp}$ (25)"
+        )
         kax.axhline(0.0, color=th.axis_color, lw=th.thin_width)
         kax.set(xlim=(0, 360), xticks=np.arange(0, 361, 90))
         kax.tick_params(labelsize=th.font_size * 0.75)
-        kax.set_xlabel(r"direction of the external force $\theta$ [deg]",
-                       fontsize=th.font_size * 0.8)
-        kax.legend(fontsize=th.font_size * 0.85, ncol=5, loc="lower center",
-                   bbox_to_anchor=(0.5, 1.0), frameon=False, handlelength=1.5)
+        kax.set_xlabel(
+            r"direction of the external force $\theta$ [deg]", fontsize=th.font_size * 0.8
+        )
+        kax.legend(
+            fontsize=th.font_size * 0.85,
+            ncol=5,
+            loc="lower center",
+            bbox_to_anchor=(0.5, 1.0),
+            frameon=False,
+            handlelength=1.5,
+        )
         a["cursor"] = kax.axvline(0.0, color=hl, lw=1.2, zorder=4)
-        a["kpoint"] = kax.plot([], [], "o", color=hl, mec="white", ms=th.point_size * 1.8,
-                               zorder=6)[0]
+        a["kpoint"] = kax.plot(
+            [], [], "o", color=hl, mec="white", ms=th.point_size * 1.8, zorder=6
+        )[0]
         if circle is not None:
             self.text_axes = self.figure.add_axes((0.56, 0.0, 0.44, 0.46))
             self.text_axes.set_axis_off()
@@ -140,8 +212,9 @@ class SweepAnimation(_Turning):
         self.k_grasp = np.asarray(self.grasp.k_grasp(self.theta), dtype=float)
         self.binding = binding(self.k)
         cuts = [0, *(np.flatnonzero(np.diff(self.binding)) + 1), n]
-        return Timeline(tuple(Segment(int(self.binding[a]), int(b - a))
-                              for a, b in pairwise(cuts)), "linear")
+        return Timeline(
+            tuple(Segment(int(self.binding[a]), int(b - a)) for a, b in pairwise(cuts)), "linear"
+        )
 
     def _movers(self, segment: int) -> list[Artist]:
         return [a for a in self._dynamic if a is not self.artists["slip"]]
@@ -151,13 +224,17 @@ class SweepAnimation(_Turning):
         with one circle n, also k_n(θ) = O H_n and the right angle at H_n (Fig. 3)."""
         f = self.timeline.check(frame)
         d = float(self.grasp.x1 + self.grasp.x2)
-        head = (f"θ = {math.degrees(self.theta[f]):5.1f}°    k_grasp(θ) = {self.k_grasp[f]:.3f}\n"
-                f"F_int = k_grasp/(x1 + x2)·F_e = {self.k_grasp[f] / d:.3f}·F_e (17)\n")
+        head = (
+            f"θ = {math.degrees(self.theta[f]):5.1f}°    k_grasp(θ) = {self.k_grasp[f]:.3f}\n"
+            f"F_int = k_grasp/(x1 + x2)·F_e = {self.k_grasp[f] / d:.3f}·F_e (17)\n"
+        )
         if self.circle is not None:
             n = self.circle
-            head += (f"k_{n}(θ) = O H_{n} = {self.k[n - 1, f]:.3f}: H_{n} is the foot of the\n"
-                     f"perpendicular from V_{n}, ∠O H_{n} V_{n} = 90°, so H_{n} runs on\n"
-                     f"the circle on the diameter O V_{n} (Thales, Fig. 3)\n")
+            head += (
+                f"k_{n}(θ) = O H_{n} = {self.k[n - 1, f]:.3f}: H_{n} is the foot of the\n"
+                f"perpendicular from V_{n}, ∠O H_{n} V_{n} = 90°, so H_{n} runs on\n"
+                f"the circle on the diameter O V_{n} (Thales, Fig. 3)\n"
+            )
         return head + SLIP[int(self.binding[f])]
 
     def right_angle_at(self, frame: int) -> np.ndarray | None:
@@ -180,8 +257,10 @@ class SweepAnimation(_Turning):
         f = self.timeline.check(frame)
         a, t, th = self.artists, float(self.theta[f]), self.theme
         e = np.array([math.sin(t), -math.cos(t)])
-        a["ray"].set_data([-10 * self._len * e[0], 10 * self._len * e[0]],
-                          [-10 * self._len * e[1], 10 * self._len * e[1]])
+        a["ray"].set_data(
+            [-10 * self._len * e[0], 10 * self._len * e[0]],
+            [-10 * self._len * e[1], 10 * self._len * e[1]],
+        )
         a["force"].set_positions((0.0, 0.0), tuple(self._len * e))
         a["force_label"].set_position(tuple(1.3 * self._len * e))
         r = float(self._env_k[f])
@@ -196,8 +275,11 @@ class SweepAnimation(_Turning):
             k = float(self.k[i - 1, f])
             h = k * e  # the foot H_n of the perpendicular from V_n: O H_n = k_n (Fig. 3)
             a[f"H{i}"].set(data=([h[0]], [h[1]]), mfc=th.circle_color(i) if k > 0 else "white")
-            a[f"VH{i}"].set(data=([v[0], h[0]], [v[1], h[1]]), ls="-" if i == win else "--",
-                            lw=1.6 if i == win else th.thin_width)
+            a[f"VH{i}"].set(
+                data=([v[0], h[0]], [v[1], h[1]]),
+                ls="-" if i == win else "--",
+                lw=1.6 if i == win else th.thin_width,
+            )
             a[f"k{i}"].set_data([math.degrees(t)], [k])
         if self.circle is not None:
             h = float(self.k[self.circle - 1, f]) * e
@@ -214,9 +296,15 @@ class SweepAnimation(_Turning):
         a["slip"].set_text("\n".join(lines[-2:]))
 
 
-def animate_sweep(grasp_or_construction: Grasp | Construction, frames: int = 120, fps: float = 20,
-                  theme: Theme = DEFAULT_THEME, figsize: tuple[float, float] = (9.6, 5.0),
-                  dpi: float = 80, circle: int | None = None) -> SweepAnimation:
+def animate_sweep(
+    grasp_or_construction: Grasp | Construction,
+    frames: int = 120,
+    fps: float = 20,
+    theme: Theme = DEFAULT_THEME,
+    figsize: tuple[float, float] = (9.6, 5.0),
+    dpi: float = 80,
+    circle: int | None = None,
+) -> SweepAnimation:
     """Animate the external force direction θ going once round (Fig. 3, eqs. (25)-(32)).
 
     The force arrow at the centre of mass O turns along e(θ) (26); the foot
@@ -240,5 +328,12 @@ def animate_sweep(grasp_or_construction: Grasp | Construction, frames: int = 120
         (``"trace"``: the traced envelope, or H_n's path with one circle;
         ``"status"``, ``"slip"``: the texts of the panel).
     """
-    return SweepAnimation(grasp_or_construction, frames=frames, fps=fps, theme=theme,
-                          figsize=figsize, dpi=dpi, circle=circle)
+    return SweepAnimation(
+        grasp_or_construction,
+        frames=frames,
+        fps=fps,
+        theme=theme,
+        figsize=figsize,
+        dpi=dpi,
+        circle=circle,
+    )

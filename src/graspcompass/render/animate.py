@@ -58,8 +58,14 @@ from .timeline import Timeline, check_fps, reading_frames, save_frames
 if TYPE_CHECKING:
     from ..construction.protocol import Construction, Step
 
-__all__ = ["AX_RECT", "ConstructionAnimation", "FrameAnimation", "animate_construction",
-           "dim_alpha", "save_frames"]
+__all__ = [
+    "AX_RECT",
+    "ConstructionAnimation",
+    "FrameAnimation",
+    "animate_construction",
+    "dim_alpha",
+    "save_frames",
+]
 
 #: Where the diagram axes start (figure fraction); the layout then moves them so that the
 #: longest caption fits below (``standard``) or beside (``lecture``) the diagram.
@@ -78,15 +84,26 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
     _hold_wrapped: str
     _fade_region: Any  # a numpy index of the rows (or columns) that fade
 
-    def __init__(self, construction: Construction, fps: float | None = None,
-                 frames_per_step: int | None = None, pause_frames: int | None = None,
-                 hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
-                 figsize: tuple[float, float] | None = None, dpi: float | None = None,
-                 labels: bool = True, rate: str = "smoothstep", dim: float = 0.3,
-                 quality: str | Quality = "standard", caption_seconds: float | None = None,
-                 reading_rate: float | None = None, camera: bool | None = None,
-                 title_seconds: float | None = None,
-                 min_text_px: float | None = None) -> None:
+    def __init__(
+        self,
+        construction: Construction,
+        fps: float | None = None,
+        frames_per_step: int | None = None,
+        pause_frames: int | None = None,
+        hold_frames: int | None = None,
+        theme: Theme = DEFAULT_THEME,
+        figsize: tuple[float, float] | None = None,
+        dpi: float | None = None,
+        labels: bool = True,
+        rate: str = "smoothstep",
+        dim: float = 0.3,
+        quality: str | Quality = "standard",
+        caption_seconds: float | None = None,
+        reading_rate: float | None = None,
+        camera: bool | None = None,
+        title_seconds: float | None = None,
+        min_text_px: float | None = None,
+    ) -> None:
         q = self.quality = _quality(quality)
         self.camera = q.camera if camera is None else bool(camera)
         fps = check_fps(q.fps if fps is None else fps)
@@ -111,14 +128,26 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         least = None
         if self.caption_seconds > 0 or self.reading_rate > 0:
             # paced by step: a key step rests on its result after its caption is read
-            least = [reading_frames(t, fps, self.caption_seconds, self.reading_rate)
-                     + (pause if s.key else 0) for t, s in zip(self._texts, steps)]
+            least = [
+                reading_frames(t, fps, self.caption_seconds, self.reading_rate)
+                + (pause if s.key else 0)
+                for t, s in zip(self._texts, steps)
+            ]
             if hold:
-                hold = max(hold, reading_frames(self._hold_text, fps, self.caption_seconds,
-                                                self.reading_rate))
+                hold = max(
+                    hold,
+                    reading_frames(self._hold_text, fps, self.caption_seconds, self.reading_rate),
+                )
         title = q.title_seconds if title_seconds is None else float(title_seconds)
-        timeline = Timeline.from_keys([s.key for s in steps], fpstep, pause, hold, rate,
-                                      least_frames=least, title_frames=q.frames(title, fps))
+        timeline = Timeline.from_keys(
+            [s.key for s in steps],
+            fpstep,
+            pause,
+            hold,
+            rate,
+            least_frames=least,
+            title_frames=q.frames(title, fps),
+        )
         super().__init__(Figure(figsize=figsize, dpi=dpi), timeline, fps)
         fig = self.figure
         self.axes = ax = fig.add_axes(AX_RECT)
@@ -128,8 +157,9 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         self._num = numeric_objects(construction)
         box = scene_of(construction).box
         self._whole = (box[0], box[1], box[2], box[3])
-        self._boxes = step_boxes(construction, self._num, self._whole,
-                                 scene_of(construction).instruments)
+        self._boxes = step_boxes(
+            construction, self._num, self._whole, scene_of(construction).instruments
+        )
         if self.camera:  # a zoomed view shows only what is inside it
             for t in ax.texts:
                 if isinstance(t, Annotation):
@@ -138,10 +168,18 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
                     if t.arrow_patch is not None:
                         t.arrow_patch.set_clip_box(ax.bbox)
                         t.arrow_patch.set_clip_on(True)
-        self._card = fig.text(0.5, 0.5, self._card_text(), ha="center", va="center",
-                              fontsize=caption_pt * 1.3, linespacing=1.6, visible=False,
-                              zorder=20, bbox=dict(boxstyle="square,pad=40", fc="white",
-                                                   ec="none"))
+        self._card = fig.text(
+            0.5,
+            0.5,
+            self._card_text(),
+            ha="center",
+            va="center",
+            fontsize=caption_pt * 1.3,
+            linespacing=1.6,
+            visible=False,
+            zorder=20,
+            bbox=dict(boxstyle="square,pad=40", fc="white", ec="none"),
+        )
         # each artist belongs to the first step naming it; a label shared by coincident
         # points ("O = O_M = Y_4") shows only the names made so far
         owners: dict[int, list[str]] = {}
@@ -167,17 +205,31 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
                 else:
                     self._items[s.index].append((a, role, _snap(a)))
         bg = ax.get_facecolor()
-        self._dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text" if r == "label" else
-                                                               "graphics"], self.dim)
-                      if r not in ("fill", "cone") else self.dim
-                      for items in self._items for a, r, sn in items]
-        self._shared_dimf = [dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text"], self.dim)
-                             for a, _, sn in self._shared]
+        self._dimf = [
+            dim_alpha(
+                _inks(a, sn), bg, MIN_CONTRAST["text" if r == "label" else "graphics"], self.dim
+            )
+            if r not in ("fill", "cone")
+            else self.dim
+            for items in self._items
+            for a, r, sn in items
+        ]
+        self._shared_dimf = [
+            dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text"], self.dim) for a, _, sn in self._shared
+        ]
         hl, thin = theme.highlight_color, theme.thin_width
         self._aid = ax.plot([], [], color=hl, lw=thin * 1.5, ls=(0, (3, 2)), zorder=6)[0]
         self._arc = ax.plot([], [], color=hl, zorder=6)[0]
-        self._arm = ax.plot([], [], color=hl, lw=thin * 1.5, marker="o", ms=theme.point_size * 0.75,
-                            markevery=[0], zorder=6.5)[0]
+        self._arm = ax.plot(
+            [],
+            [],
+            color=hl,
+            lw=thin * 1.5,
+            marker="o",
+            ms=theme.point_size * 0.75,
+            markevery=[0],
+            zorder=6.5,
+        )[0]
         self._halo = ax.plot([], [], "o", mfc="none", mec=hl, zorder=7)[0]
         self._aids = (self._aid, self._arc, self._arm, self._halo)
         self._keys: list[Any] = [None] * len(self._dimf)
@@ -189,9 +241,11 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
     def _card_text(self) -> str:
         g = self.construction.grasp
         head = "\n".join(textwrap.wrap(getattr(g, "title", None) or "", 56))
-        return ("The internal force diagram\nby ruler and compass\n\n"
-                + (head + "\n\n" if head else "")
-                + "Ito, Tanaka and Sasaki, Robotica 2012, §3.3")
+        return (
+            "The internal force diagram\nby ruler and compass\n\n"
+            + (head + "\n\n" if head else "")
+            + "Ito, Tanaka and Sasaki, Robotica 2012, §3.3"
+        )
 
     @staticmethod
     def _role(a: Artist, s: Step) -> str:
@@ -219,8 +273,10 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         # the separator before it
         pieces = re.split(r"( = |, )", a.get_text().strip("$"))
         seps, parts = ["", *pieces[1::2]], pieces[0::2]
-        return [(index[by_tex[p]] if p in by_tex else min(index[n] for n in names), sep + p)
-                for sep, p in zip(seps, parts)]
+        return [
+            (index[by_tex[p]] if p in by_tex else min(index[n] for n in names), sep + p)
+            for sep, p in zip(seps, parts)
+        ]
 
     # -- captions -----------------------------------------------------------------------------
     def _caption_text(self, s: Step | None) -> str:
@@ -229,13 +285,16 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         The step numbers are the protocol's (``graspcompass steps``): 0 to len − 1.
         """
         if s is None:
-            return ("The internal force diagram (Fig. 5)\nin the direction e(θ) of the "
-                    "external force, the distance from O to the envelope is k_grasp(θ), "
-                    "eq. (25); F_int = k_grasp/(x1 + x2)·F_e, eq. (17)")
+            return (
+                "The internal force diagram (Fig. 5)\nin the direction e(θ) of the "
+                "external force, the distance from O to the envelope is k_grasp(θ), "
+                "eq. (25); F_int = k_grasp/(x1 + x2)·F_e, eq. (17)"
+            )
         last = len(self.construction.steps) - 1
         text = s.caption[0].lower() + s.caption[1:] if s.caption[1:2].islower() else s.caption
-        return (f"Step {s.index} of 0–{last} · {s.instrument}\n"
-                f"{s.ref.replace(' step ', ' ')}: {text}")
+        return (
+            f"Step {s.index} of 0–{last} · {s.instrument}\n{s.ref.replace(' step ', ' ')}: {text}"
+        )
 
     def caption_at(self, frame: int) -> str:
         """The caption of ``frame`` as shown: the step's number in the protocol (as
@@ -249,15 +308,19 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
 
     def key_frames(self) -> list[tuple[int, str]]:
         """The frame at the end of each protocol step, named ``step-NN-name``."""
-        return [(self.timeline.last_frame_of_step(s.index), f"step-{s.index:02d}-{s.name}")
-                for s in self.construction.steps]
+        return [
+            (self.timeline.last_frame_of_step(s.index), f"step-{s.index:02d}-{s.name}")
+            for s in self.construction.steps
+        ]
 
     # -- frames -------------------------------------------------------------------------------
     def _movers(self, segment: int) -> list[Artist]:
         step = self.timeline.segments[segment].step
-        return [a for a, _, _ in self._items[step]] + \
-            [a for a, parts, _ in self._shared if any(i == step for i, _ in parts)] + \
-            [*self._aids, self._bar]
+        return (
+            [a for a, _, _ in self._items[step]]
+            + [a for a, parts, _ in self._shared if any(i == step for i, _ in parts)]
+            + [*self._aids, self._bar]
+        )
 
     def _group_key(self, segment: int) -> Any:
         seg = self.timeline.segments[segment]
@@ -298,8 +361,9 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
                     self._keys[k] = key
                     _restore(a, snap)
                     if key is None:
-                        self._set_current(a, role, snap, steps[st.step], st.kind, st.progress,
-                                          st.raw)
+                        self._set_current(
+                            a, role, snap, steps[st.step], st.kind, st.progress, st.raw
+                        )
                     elif key == "hidden":
                         a.set_visible(False)
                     elif key == "dim":
@@ -309,8 +373,11 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
             _restore(a, snap)
             # a name is shown once its point is marked (the stroke of its step is done)
             done = st.kind != "draw" or st.progress >= 1.0
-            shown = [p for i, p in parts if not title and (
-                i < st.step or hold or (i == st.step and done))]
+            shown = [
+                p
+                for i, p in parts
+                if not title and (i < st.step or hold or (i == st.step and done))
+            ]
             if not shown:
                 a.set_visible(False)
                 continue
@@ -326,12 +393,14 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
                     if isinstance(a, Line2D):
                         a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
         self._caption.set_text("" if title else self.caption_at(frame))
-        made = (1.0 if hold else 0.0 if title else
-                st.step + (st.progress if st.kind == "draw" else 1.0))
+        made = (
+            1.0 if hold else 0.0 if title else st.step + (st.progress if st.kind == "draw" else 1.0)
+        )
         self._bar.set_width(made if hold else made / len(steps))
 
-    def _set_current(self, a: Any, role: str, snap: dict[str, Any], step: Step, kind: str,
-                     p: float, raw: float) -> None:
+    def _set_current(
+        self, a: Any, role: str, snap: dict[str, Any], step: Step, kind: str, p: float, raw: float
+    ) -> None:
         if role == "instrument":  # the compass or the square drawn along its stroke
             x, y = snap["data"]
             m = max(1, math.ceil(min(p, 1.0) * len(x))) if kind == "draw" else len(x)
@@ -349,8 +418,12 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         if kind == "pause":
             if role == "marker" and step.kind == "point":  # a ripple round the key point
                 ripple = (2 * raw) % 1.0
-                self._halo.set(data=snap["data"], ms=snap["ms"] * (1.5 + 3.5 * ripple),
-                               alpha=1.0 - ripple, visible=True)
+                self._halo.set(
+                    data=snap["data"],
+                    ms=snap["ms"] * (1.5 + 3.5 * ripple),
+                    alpha=1.0 - ripple,
+                    visible=True,
+                )
         elif role == "marker":  # marked: the marker pops up
             a.set_markersize(snap["ms"] * p * (1.0 + 0.8 * math.sin(math.pi * p)))
             self._draw_aid(step, p)
@@ -358,10 +431,18 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
             a.set_visible(snap["visible"] and p >= 1.0)  # after its object's stroke
         elif role == "line" and len(snap["data"][0]) == 2:  # the ruler, from its anchor
             (x0, x1), (y0, y1) = snap["data"]
-            ax_, ay_ = next((v for v in (self._num[n] for n in step.inputs)
-                             if isinstance(v, tuple) and isinstance(v[0], float)), (0.0, 0.0))
-            a.set_data([ax_ + p * (x0 - ax_), ax_ + p * (x1 - ax_)],
-                       [ay_ + p * (y0 - ay_), ay_ + p * (y1 - ay_)])
+            ax_, ay_ = next(
+                (
+                    v
+                    for v in (self._num[n] for n in step.inputs)
+                    if isinstance(v, tuple) and isinstance(v[0], float)
+                ),
+                (0.0, 0.0),
+            )
+            a.set_data(
+                [ax_ + p * (x0 - ax_), ax_ + p * (x1 - ax_)],
+                [ay_ + p * (y0 - ay_), ay_ + p * (y1 - ay_)],
+            )
         elif role == "arrow":  # a signed length laid off with the compass
             (x0, y0), (x1, y1) = a.xyann, snap["xy"]
             a.xy = (x0 + p * (x1 - x0), y0 + p * (y1 - y0))
@@ -402,16 +483,24 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         self._aid.set(data=(xs, ys), visible=True)
 
 
-def animate_construction(construction: Construction, fps: float | None = None,
-                         frames_per_step: int | None = None, pause_frames: int | None = None,
-                         hold_frames: int | None = None, theme: Theme = DEFAULT_THEME,
-                         figsize: tuple[float, float] | None = None, dpi: float | None = None,
-                         labels: bool = True, rate: str = "smoothstep",
-                         quality: str | Quality = "standard",
-                         caption_seconds: float | None = None,
-                         reading_rate: float | None = None, camera: bool | None = None,
-                         title_seconds: float | None = None,
-                         min_text_px: float | None = None) -> ConstructionAnimation:
+def animate_construction(
+    construction: Construction,
+    fps: float | None = None,
+    frames_per_step: int | None = None,
+    pause_frames: int | None = None,
+    hold_frames: int | None = None,
+    theme: Theme = DEFAULT_THEME,
+    figsize: tuple[float, float] | None = None,
+    dpi: float | None = None,
+    labels: bool = True,
+    rate: str = "smoothstep",
+    quality: str | Quality = "standard",
+    caption_seconds: float | None = None,
+    reading_rate: float | None = None,
+    camera: bool | None = None,
+    title_seconds: float | None = None,
+    min_text_px: float | None = None,
+) -> ConstructionAnimation:
     """Animate the ruler-and-compass drawing of the internal force diagram (§3.3).
 
     Every value left out (None) comes from ``quality`` (:data:`~.theme.QUALITIES`):
@@ -468,9 +557,21 @@ def animate_construction(construction: Construction, fps: float | None = None,
     dimmed to at most ``dim`` opacity, but each keeps a contrast of 3 : 1 (lines,
     markers) or 4.5 : 1 (labels) against the background (:data:`~.theme.MIN_CONTRAST`).
     """
-    return ConstructionAnimation(construction, fps=fps, frames_per_step=frames_per_step,
-                                 pause_frames=pause_frames, hold_frames=hold_frames,
-                                 theme=theme, figsize=figsize, dpi=dpi, labels=labels, rate=rate,
-                                 quality=quality, caption_seconds=caption_seconds,
-                                 reading_rate=reading_rate, camera=camera,
-                                 title_seconds=title_seconds, min_text_px=min_text_px)
+    return ConstructionAnimation(
+        construction,
+        fps=fps,
+        frames_per_step=frames_per_step,
+        pause_frames=pause_frames,
+        hold_frames=hold_frames,
+        theme=theme,
+        figsize=figsize,
+        dpi=dpi,
+        labels=labels,
+        rate=rate,
+        quality=quality,
+        caption_seconds=caption_seconds,
+        reading_rate=reading_rate,
+        camera=camera,
+        title_seconds=title_seconds,
+        min_text_px=min_text_px,
+    )

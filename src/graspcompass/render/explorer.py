@@ -60,6 +60,7 @@ if TYPE_CHECKING:
 
 __all__ = ["PARAMS", "Explorer", "explore", "explore_notebook"]
 
+
 class Explorer(_Events, _Artists):
     """The live diagram of a grasp, usable headless (``set_params``, ``drag``).
 
@@ -100,8 +101,14 @@ class Explorer(_Events, _Artists):
         The eight sliders, keyed like :attr:`params` (φ and θ in degrees).
     """
 
-    def __init__(self, grasp: Grasp | None = None, fig: Figure | None = None,
-                 samples: int = 720, theta: float = 0.0, blit: bool = True) -> None:
+    def __init__(
+        self,
+        grasp: Grasp | None = None,
+        fig: Figure | None = None,
+        samples: int = 720,
+        theta: float = 0.0,
+        blit: bool = True,
+    ) -> None:
         g = grasp if grasp is not None else Grasp.preset("fig6")
         self.params = {k: float(evaluate(g.params[k])) for k in GRASP_KEYS}
         self.params["theta"] = float(theta)
@@ -128,30 +135,61 @@ class Explorer(_Events, _Artists):
         for i, (name, label, unit) in enumerate(PARAMS):
             sax = self.fig.add_axes((0.72, 0.88 - 0.055 * i, 0.22, 0.03))
             v = self.params[name] / unit
-            lo, hi = ((0.0, 360.0) if name == "theta" else (1.0, 180.0) if name.startswith("phi")
-                      else (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v))))
+            lo, hi = (
+                (0.0, 360.0)
+                if name == "theta"
+                else (1.0, 180.0)
+                if name.startswith("phi")
+                else (0.0 if name == "y" else 0.02, max(4.0, math.ceil(2 * v)))
+            )
             s = _Slider(sax, label, lo, hi, valinit=min(max(v, lo), hi), valfmt="%.3g")
             s.drawon = False  # the explorer redraws (blits) after its own update
             s.on_changed(functools.partial(self._on_slider, name))
             self.sliders[name] = s
         mono = FontProperties(family="monospace", size=9)
-        self.fig.text(0.67, 0.42, "k_grasp(θ), eq. (25)\nF_int = k / (x1 + x2) · F_e, eq. (17)\n"
-                      "drag P1, P2; press f to fit the view", va="top", fontproperties=mono)
+        self.fig.text(
+            0.67,
+            0.42,
+            "k_grasp(θ), eq. (25)\nF_int = k / (x1 + x2) · F_e, eq. (17)\n"
+            "drag P1, P2; press f to fit the view",
+            va="top",
+            fontproperties=mono,
+        )
         # outside the diagram: nothing moving is drawn over it (it stays in the background)
-        self.fig.legend(handles=[self.envelope_line, self.direction, self.h_mark,
-                                 self.worst_mark, self.best_mark],
-                        loc="lower left", bbox_to_anchor=(0.665, 0.01), fontsize=8)
+        self.fig.legend(
+            handles=[
+                self.envelope_line,
+                self.direction,
+                self.h_mark,
+                self.worst_mark,
+                self.best_mark,
+            ],
+            loc="lower left",
+            bbox_to_anchor=(0.665, 0.01),
+            fontsize=8,
+        )
         self._info_box = Bbox([[0.665, 0.17], [1.0, 0.34]])  # figure coordinates
-        self.info = self.fig.add_artist(PathText(
-            "", (0.67, 0.315), self.fig.transFigure, self.fig.dpi_scale_trans,
-            glyphs=GlyphCache(mono), zorder=3,
-            clip_box=TransformedBbox(self._info_box, self.fig.transFigure)))
+        self.info = self.fig.add_artist(
+            PathText(
+                "",
+                (0.67, 0.315),
+                self.fig.transFigure,
+                self.fig.dpi_scale_trans,
+                glyphs=GlyphCache(mono),
+                zorder=3,
+                clip_box=TransformedBbox(self._info_box, self.fig.transFigure),
+            )
+        )
         self._groups = self._draw_order()
         self._dynamic = [a for arts in self._groups.values() for a in arts]
         self._regions: dict[str, Any] = {}
-        for ev, fn in (("button_press_event", self._press), ("motion_notify_event", self._move),
-                       ("button_release_event", self._release), ("key_press_event", self._key),
-                       ("draw_event", self._on_draw)):
+        for ev, fn in (
+            ("button_press_event", self._press),
+            ("motion_notify_event", self._move),
+            ("button_release_event", self._release),
+            ("key_press_event", self._key),
+            ("draw_event", self._on_draw),
+        ):
             self.fig.canvas.mpl_connect(ev, fn)
         self._apply()
         self.fit()
@@ -160,8 +198,15 @@ class Explorer(_Events, _Artists):
     def fit(self) -> None:
         """Fit the view to the current diagram (the next change re-renders the background)."""
         pts = [self.envelope_xy] if len(self.envelope_xy) else []
-        pts.append(np.array([[self.params["x1"], self.params["y"]],
-                             [-self.params["x2"], self.params["y"]], [0.0, 0.0]]))
+        pts.append(
+            np.array(
+                [
+                    [self.params["x1"], self.params["y"]],
+                    [-self.params["x2"], self.params["y"]],
+                    [0.0, 0.0],
+                ]
+            )
+        )
         if self.scene is not None:
             c, r = self.scene.centres, self.scene.radii[:, None]
             pts += [c - r, c + r]
@@ -216,8 +261,11 @@ class Explorer(_Events, _Artists):
             return
         if not self._regions:
             self._capture()
-        names = list(self._groups) if groups is None or not self._painted else [
-            g for g in self._groups if g in set(groups)]
+        names = (
+            list(self._groups)
+            if groups is None or not self._painted
+            else [g for g in self._groups if g in set(groups)]
+        )
         for g in names:
             canvas.restore_region(self._regions[g][1])
         for g in names:
@@ -338,8 +386,9 @@ class Explorer(_Events, _Artists):
         """
         unknown = set(values) - set(self.params)
         if unknown:
-            raise ValueError(f"unknown parameter(s) {', '.join(sorted(unknown))}; "
-                             f"use {', '.join(self.params)}")
+            raise ValueError(
+                f"unknown parameter(s) {', '.join(sorted(unknown))}; use {', '.join(self.params)}"
+            )
         self.params.update({k: float(v) for k, v in values.items()})
         self._sync_sliders(values)
         self.update(values)
@@ -352,7 +401,6 @@ class Explorer(_Events, _Artists):
             self.set_params(x2=-x, y=y)
         else:
             raise ValueError(f"only P1 and P2 can be dragged, not {point!r}")
-
 
 
 def explore(grasp: Grasp | None = None, *, timeout: float | None = None) -> Explorer:
@@ -378,10 +426,12 @@ def explore(grasp: Grasp | None = None, *, timeout: float | None = None) -> Expl
 
     backend = matplotlib.get_backend()
     if not _interactive(backend):
-        raise ValueError(f"cannot open the explorer window: matplotlib's backend {backend!r} "
-                         "cannot show windows (no display?): graspcompass export --format html -o "
-                         "explorer.html writes the same explorer as one offline web page; in "
-                         "Jupyter use explore_notebook()")
+        raise ValueError(
+            f"cannot open the explorer window: matplotlib's backend {backend!r} "
+            "cannot show windows (no display?): graspcompass export --format html -o "
+            "explorer.html writes the same explorer as one offline web page; in "
+            "Jupyter use explore_notebook()"
+        )
     with command_deadline(timeout):
         fig = plt.figure(figsize=(11, 7.5))
         ex = Explorer(grasp, fig=fig)

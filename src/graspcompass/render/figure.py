@@ -55,14 +55,18 @@ EXTRA_KEYS = ("object", "cone1", "cone2", "computer plot")
 _LABEL_ORDER = "VPOXY"
 
 
-def draw_construction(construction: Construction, step: int | None = None, ax: Axes | None = None,
-                      theme: Theme = DEFAULT_THEME, labels: bool = True,
-                      show_computer_plot: bool = False,
-                      highlight_last: bool = False,
-                      num: dict[str, Any] | None = None,
-                      box: tuple[float, float, float, float] | None = None,
-                      view: str = "whole"
-                      ) -> dict[str, list[Artist]]:
+def draw_construction(
+    construction: Construction,
+    step: int | None = None,
+    ax: Axes | None = None,
+    theme: Theme = DEFAULT_THEME,
+    labels: bool = True,
+    show_computer_plot: bool = False,
+    highlight_last: bool = False,
+    num: dict[str, Any] | None = None,
+    box: tuple[float, float, float, float] | None = None,
+    view: str = "whole",
+) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
     Parameters
@@ -120,8 +124,9 @@ def draw_construction(construction: Construction, step: int | None = None, ax: A
     num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
     # an enlargement of a region (box given): its own scene, labelled in it
-    scene = (scene_of(construction) if box is None else
-             build_scene(construction, box=box)).upto(step)
+    scene = (scene_of(construction) if box is None else build_scene(construction, box=box)).upto(
+        step
+    )
     box = scene.box
     span = box[1] - box[0]
     shown = scene.labels
@@ -135,38 +140,64 @@ def draw_construction(construction: Construction, step: int | None = None, ax: A
     out: dict[str, list[Artist]] = {}
     _draw_givens(ax, construction, scene, theme, out)
     instruments: dict[str, list[Artist]] = {}
-    _draw_instruments(ax, scene, theme, instruments,
-                      (lim[1] - lim[0]) / (box[1] - box[0]))
+    _draw_instruments(ax, scene, theme, instruments, (lim[1] - lim[0]) / (box[1] - box[0]))
     last = state.steps[-1].name if highlight_last else None
     for s in state.steps:
         v = num[s.name]
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
         if s.kind == "point":
             small = s.role == "break_point"  # the envelope's break points: small, unlabelled
-            out[s.name] = list(ax.plot(
-                [v[0]], [v[1]], "o", ms=theme.point_size * (0.6 if small else 1.0), zorder=5,
-                mfc="white" if small else hl.get("color", theme.point_color),
-                mec=hl.get("color", theme.point_color), mew=0.8))
+            out[s.name] = list(
+                ax.plot(
+                    [v[0]],
+                    [v[1]],
+                    "o",
+                    ms=theme.point_size * (0.6 if small else 1.0),
+                    zorder=5,
+                    mfc="white" if small else hl.get("color", theme.point_color),
+                    mec=hl.get("color", theme.point_color),
+                    mew=0.8,
+                )
+            )
         elif s.kind == "line":
             out[s.name] = _draw_line(ax, s.name, s, v, box, theme, hl)
         elif s.kind == "circle":
             n = _n(s)
             (cx, cy), r = v
-            patch = CirclePatch((cx, cy), r, fill=False, zorder=3,
-                                edgecolor=hl.get("color", theme.circle_color(n)),
-                                ls=theme.circle_style(n), lw=hl.get("lw", theme.line_width),
-                                label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)"
-                                if s.role == "circle" else "_nolegend_")
+            patch = CirclePatch(
+                (cx, cy),
+                r,
+                fill=False,
+                zorder=3,
+                edgecolor=hl.get("color", theme.circle_color(n)),
+                ls=theme.circle_style(n),
+                lw=hl.get("lw", theme.line_width),
+                label=f"circle on $OV_{n}$: $k_{n}(\\theta)$, eq. (31)"
+                if s.role == "circle"
+                else "_nolegend_",
+            )
             out[s.name] = [ax.add_patch(patch)]
         elif s.kind == "length":
             out[s.name] = _draw_length(ax, s, num, box, span, theme, hl)
         else:  # the envelope, eq. (25)
             xy = v.polyline()
-            fill = Polygon(xy, closed=True, facecolor=theme.envelope_fill, edgecolor="none",
-                           alpha=theme.envelope_alpha, zorder=1.5)
-            line = ax.plot(xy[:, 0], xy[:, 1], color=hl.get("color", theme.envelope_color),
-                           lw=theme.envelope_width, zorder=4, solid_joinstyle="round",
-                           label=r"envelope: $k_{grasp}(\theta)$, eq. (25)")
+            fill = Polygon(
+                xy,
+                closed=True,
+                facecolor=theme.envelope_fill,
+                edgecolor="none",
+                alpha=theme.envelope_alpha,
+                zorder=1.5,
+            )
+            line = ax.plot(
+                xy[:, 0],
+                xy[:, 1],
+                color=hl.get("color", theme.envelope_color),
+                lw=theme.envelope_width,
+                zorder=4,
+                solid_joinstyle="round",
+                label=r"envelope: $k_{grasp}(\theta)$, eq. (25)",
+            )
             out[s.name] = [*line, ax.add_patch(fill)]
     for name, arts in instruments.items():  # after the step's own artists
         out.setdefault(name, []).extend(arts)
@@ -191,24 +222,43 @@ def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artis
         if lab.leader:  # a thin line from the point to its label set far away
             x0, y0, x1, y1 = lab.box
             near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
-            (leader,) = ax.plot([lab.point[0], near[0]], [lab.point[1], near[1]],
-                                color=theme.label_color, lw=0.5, zorder=5.5, gid="leader")
+            (leader,) = ax.plot(
+                [lab.point[0], near[0]],
+                [lab.point[1], near[1]],
+                color=theme.label_color,
+                lw=0.5,
+                zorder=5.5,
+                gid="leader",
+            )
             for n in lab.names:  # made with its label, not before
                 out.setdefault(n, []).append(leader)
-        text = ax.annotate(f"${lab.tex()}$", lab.point, xytext=lab.offset,
-                           textcoords="offset points", ha=_HA[lab.direction[0]],
-                           va=_VA[lab.direction[1]], fontsize=theme.font_size,
-                           annotation_clip=False, color=theme.label_color, zorder=6,
-                           bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none",
-                                     alpha=0.65))
+        text = ax.annotate(
+            f"${lab.tex()}$",
+            lab.point,
+            xytext=lab.offset,
+            textcoords="offset points",
+            ha=_HA[lab.direction[0]],
+            va=_VA[lab.direction[1]],
+            fontsize=theme.font_size,
+            annotation_clip=False,
+            color=theme.label_color,
+            zorder=6,
+            bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65),
+        )
         for n in lab.names:
             out.setdefault(n, []).append(text)
 
 
-def figure_diagram(construction: Construction, step: int | None = None, overlay: bool = True,
-                   title: str | None = None, figsize: tuple[float, float] = (7.0, 7.0),
-                   theme: Theme = DEFAULT_THEME, labels: bool = True,
-                   inset: bool = True) -> Figure:
+def figure_diagram(
+    construction: Construction,
+    step: int | None = None,
+    overlay: bool = True,
+    title: str | None = None,
+    figsize: tuple[float, float] = (7.0, 7.0),
+    theme: Theme = DEFAULT_THEME,
+    labels: bool = True,
+    inset: bool = True,
+) -> Figure:
     """A complete figure of the internal force diagram, as in Fig. 6 and Fig. 7.
 
     The construction (:func:`draw_construction`) in an equal-aspect frame
@@ -239,13 +289,18 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
     h += taller
     bottom = 1.4 / h
     fig = Figure(figsize=(w + extra, h))
-    ax = fig.add_axes((0.08 * w / (w + extra), bottom + taller / h, side / (w + extra),
-                       side / h))
+    ax = fig.add_axes((0.08 * w / (w + extra), bottom + taller / h, side / (w + extra), side / h))
     last = len(construction.steps) - 1
     full = step is None or step % len(construction.steps) == last
-    draw_construction(construction, step=step, ax=ax, theme=theme, labels=labels,
-                      show_computer_plot=overlay and full,
-                      view="beside" if zoom is not None else "whole")
+    draw_construction(
+        construction,
+        step=step,
+        ax=ax,
+        theme=theme,
+        labels=labels,
+        show_computer_plot=overlay and full,
+        view="beside" if zoom is not None else "whole",
+    )
     ax.grid(False)
     ax.tick_params(labelsize=theme.font_size * 0.8)
     grasp = construction.grasp
@@ -257,8 +312,9 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
         left = (0.08 * w + side + 0.5) / (w + extra)
         zs = INSET_PT / 72.0
         zax = fig.add_axes((left, bottom + (side + taller - zs) / h, zs / (w + extra), zs / h))
-        drawn = draw_construction(construction, step=step, ax=zax, theme=theme, labels=labels,
-                                  view="inset")
+        drawn = draw_construction(
+            construction, step=step, ax=zax, theme=theme, labels=labels, view="inset"
+        )
         for arts in drawn.values():  # the length arrows too stay inside the inset
             for a in arts:
                 patch = getattr(a, "arrow_patch", None)
@@ -268,18 +324,34 @@ def figure_diagram(construction: Construction, step: int | None = None, overlay:
         zax.set_xticks([])
         zax.set_yticks([])
         times = zoom.zoom * (scene.box[1] - scene.box[0]) / labelling.FRAME_PT
-        zax.set_title(f"the dashed square, {times:.1f}× larger",
-                      fontsize=theme.font_size * 0.9)
+        zax.set_title(f"the dashed square, {times:.1f}× larger", fontsize=theme.font_size * 0.9)
         b = zoom.box
-        ax.add_patch(Rectangle((b[0], b[2]), b[1] - b[0], b[3] - b[2], fill=False, lw=0.8,
-                               ls=(0, (3, 2)), edgecolor=theme.axis_color, zorder=6))
+        ax.add_patch(
+            Rectangle(
+                (b[0], b[2]),
+                b[1] - b[0],
+                b[3] - b[2],
+                fill=False,
+                lw=0.8,
+                ls=(0, (3, 2)),
+                edgecolor=theme.axis_color,
+                zorder=6,
+            )
+        )
     handles, names = ax.get_legend_handles_labels()
-    handles, names = [*handles, *_legend_extra(construction, step, theme)[0]], \
-        [*names, *_legend_extra(construction, step, theme)[1]]
+    handles, names = (
+        [*handles, *_legend_extra(construction, step, theme)[0]],
+        [*names, *_legend_extra(construction, step, theme)[1]],
+    )
     if handles:
-        fig.legend(handles, names, loc="lower center", ncol=3 if len(handles) > 12 else 2,
-                   frameon=False,
-                   fontsize=theme.font_size * 0.85)
+        fig.legend(
+            handles,
+            names,
+            loc="lower center",
+            ncol=3 if len(handles) > 12 else 2,
+            frameon=False,
+            fontsize=theme.font_size * 0.85,
+        )
     return fig
 
 
@@ -290,15 +362,18 @@ def _params(grasp: Grasp | None) -> str:
     try:
         p = grasp.params
         deg = {k: math.degrees(float(p[k])) for k in ("phi1", "phi2", "xi1", "xi2")}
-        return (f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
-                f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
-                f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°")
+        return (
+            f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
+            f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
+            f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°"
+        )
     except (AttributeError, KeyError, TypeError, ValueError):
         return ""
 
 
-def _legend_extra(construction: Construction, step: int | None, theme: Theme
-                  ) -> tuple[list[Artist], list[str]]:
+def _legend_extra(
+    construction: Construction, step: int | None, theme: Theme
+) -> tuple[list[Artist], list[str]]:
     """Legend proxies of what has no labelled artist: the object, the dashed
     perpendiculars, the length arrows and the break points (those drawn by ``step``)."""
     from matplotlib.lines import Line2D
@@ -310,29 +385,75 @@ def _legend_extra(construction: Construction, step: int | None, theme: Theme
     kinds = {s.kind for s in state.steps}
     out: list[tuple[Artist, str]] = []
     if shape_extent(getattr(construction.grasp, "shape", None)) is not None:
-        out.append((PatchProxy(facecolor=theme.object_face, edgecolor=theme.object_edge),
-                    "the object"))
+        out.append(
+            (PatchProxy(facecolor=theme.object_face, edgecolor=theme.object_edge), "the object")
+        )
     if "perpendicular" in roles:
-        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width,
-                           ls=(0, (4, 2))), "perpendiculars to the cone sides"))
-    arcs = [w for r, w in (("bisection_arc", "bisection"), ("measure_arc", "lengths taken"),
-                           ("transfer_arc", "carried from $O$")) if r in drawn]
+        out.append(
+            (
+                Line2D([], [], color=theme.construction_color, lw=theme.thin_width, ls=(0, (4, 2))),
+                "perpendiculars to the cone sides",
+            )
+        )
+    arcs = [
+        w
+        for r, w in (
+            ("bisection_arc", "bisection"),
+            ("measure_arc", "lengths taken"),
+            ("transfer_arc", "carried from $O$"),
+        )
+        if r in drawn
+    ]
     if arcs:
-        out.append((Line2D([], [], color=theme.construction_color, lw=theme.thin_width),
-                    "compass arcs: " + ", ".join(arcs)))
+        out.append(
+            (
+                Line2D([], [], color=theme.construction_color, lw=theme.thin_width),
+                "compass arcs: " + ", ".join(arcs),
+            )
+        )
     if "coordinate" in drawn:
-        out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
-                           ls=(0, (1, 1.5))), "$V_n$ from its coordinates $-O_MX_n$, "
-                    "$-OY_n$"))
+        out.append(
+            (
+                Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width, ls=(0, (1, 1.5))),
+                "$V_n$ from its coordinates $-O_MX_n$, $-OY_n$",
+            )
+        )
     if "right_angle" in drawn:
-        out.append((Line2D([], [], ls="none", marker=_CORNER, ms=7, mfc="none",
-                           mew=theme.thin_width * 1.5, color=theme.construction_color),
-                    "right angles"))
+        out.append(
+            (
+                Line2D(
+                    [],
+                    [],
+                    ls="none",
+                    marker=_CORNER,
+                    ms=7,
+                    mfc="none",
+                    mew=theme.thin_width * 1.5,
+                    color=theme.construction_color,
+                ),
+                "right angles",
+            )
+        )
     if "length" in kinds:
-        out.append((Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width,
-                           marker=">", ms=4), "signed lengths $O_MX_n$, $OY_n$"))
+        out.append(
+            (
+                Line2D([], [], color=theme.circle_color(1), lw=theme.thin_width, marker=">", ms=4),
+                "signed lengths $O_MX_n$, $OY_n$",
+            )
+        )
     if "break_point" in roles:
-        out.append((Line2D([], [], ls="none", marker="o", mfc="white",
-                           mec=theme.point_color, ms=theme.point_size * 0.6),
-                    "break points: $k_i = k_j$"))
+        out.append(
+            (
+                Line2D(
+                    [],
+                    [],
+                    ls="none",
+                    marker="o",
+                    mfc="white",
+                    mec=theme.point_color,
+                    ms=theme.point_size * 0.6,
+                ),
+                "break points: $k_i = k_j$",
+            )
+        )
     return [a for a, _ in out], [t for _, t in out]

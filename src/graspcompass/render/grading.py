@@ -34,8 +34,12 @@ __all__ = ["figure_counterexample"]
 
 def _highlight(artists: list[Any], theme: Theme) -> None:
     for a in artists:
-        for setter, value in (("set_color", theme.highlight_color), ("set_linewidth", 2.6),
-                              ("set_markersize", 10), ("set_zorder", 20)):
+        for setter, value in (
+            ("set_color", theme.highlight_color),
+            ("set_linewidth", 2.6),
+            ("set_markersize", 10),
+            ("set_zorder", 20),
+        ):
             if hasattr(a, setter):
                 try:
                     getattr(a, setter)(value)
@@ -66,8 +70,9 @@ def _short(obj: Any) -> str:
         return ""
 
 
-def figure_counterexample(program: Program, name: str, point: Mapping[str, Any],
-                          theme: Theme = DEFAULT_THEME) -> Figure:
+def figure_counterexample(
+    program: Program, name: str, point: Mapping[str, Any], theme: Theme = DEFAULT_THEME
+) -> Figure:
     """The grasp ``point`` drawn by ``program`` (left) and by the paper (right).
 
     Parameters
@@ -107,8 +112,10 @@ def figure_counterexample(program: Program, name: str, point: Mapping[str, Any],
             art.set_clip_on(True)  # labels and arrows of objects outside the view stay out
             if hasattr(art, "set_annotation_clip"):
                 art.set_annotation_clip(True)
-        ax.set_title(f"{who}: {name} {_short(c[name]) if name in c else 'is not made'}",
-                     fontsize=theme.font_size)
+        ax.set_title(
+            f"{who}: {name} {_short(c[name]) if name in c else 'is not made'}",
+            fontsize=theme.font_size,
+        )
     values = ", ".join(f"{k} = {v}" for k, v in point.items())
     fig.suptitle(f"Counterexample for {name}: {values}", fontsize=theme.font_size + 1)
     return fig

@@ -195,8 +195,9 @@ class Worksheet:
         """Write both pages to the PDF file ``path`` (A4 portrait, no resizing); return it."""
         out = Path(path)
         title = getattr(self.construction.grasp, "title", None) or "a two-point grasp"
-        with PdfPages(out, metadata={"Title": f"Worksheet: {title}",
-                                     "Creator": "graspcompass"}) as pdf:
+        with PdfPages(
+            out, metadata={"Title": f"Worksheet: {title}", "Creator": "graspcompass"}
+        ) as pdf:
             for fig in self.figures:
                 pdf.savefig(fig)  # never bbox_inches="tight": the page size is the scale
         return out
@@ -221,13 +222,13 @@ class Worksheet:
         return float(px / fig.dpi / _MM), float(py / fig.dpi / _MM)
 
 
-
-
-
-
-def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
-                    given: str | Iterable[str] = "grasp",
-                    scale: float | None = None) -> Worksheet:
+def worksheet_pages(
+    construction_or_grasp: Any,
+    *,
+    steps: str = "all",
+    given: str | Iterable[str] = "grasp",
+    scale: float | None = None,
+) -> Worksheet:
     """Make the two pages of the worksheet (see :func:`worksheet`) without writing them.
 
     Returns
@@ -244,16 +245,22 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         c = Grasp.preset(c)
     if not isinstance(c, Construction):
         if not isinstance(c, Grasp):
-            raise TypeError(f"expected a Construction, a Grasp or a preset name, got "
-                            f"{type(c).__name__}")
+            raise TypeError(
+                f"expected a Construction, a Grasp or a preset name, got {type(c).__name__}"
+            )
         c = internal_force_diagram(c)
     if c.grasp is None:
         raise ValueError("the construction has no grasp to draw")
-    if scale is not None and (isinstance(scale, bool) or not isinstance(scale, (int, float))
-                              or not math.isfinite(scale)
-                              or not SCALE_RANGE[0] <= scale <= SCALE_RANGE[1]):
-        raise ValueError(f"scale must be a number of mm per unit from {SCALE_RANGE[0]:g} "
-                         f"to {SCALE_RANGE[1]:g}, got {scale!r}")
+    if scale is not None and (
+        isinstance(scale, bool)
+        or not isinstance(scale, (int, float))
+        or not math.isfinite(scale)
+        or not SCALE_RANGE[0] <= scale <= SCALE_RANGE[1]
+    ):
+        raise ValueError(
+            f"scale must be a number of mm per unit from {SCALE_RANGE[0]:g} "
+            f"to {SCALE_RANGE[1]:g}, got {scale!r}"
+        )
     selected = selected_names(c, steps)
     gnames = given_names(selected, given)
     sub = _sub_construction(c, selected, gnames)
@@ -267,8 +274,7 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     if ex is not None:
         items.append(("read", extra.exercise_text(ex)))
 
-    plans = [p for size in _FONTS for p in _plans(box, [_intro(c, gnames), _rules()], items,
-                                                  size)]
+    plans = [p for size in _FONTS for p in _plans(box, [_intro(c, gnames), _rules()], items, size)]
     if not plans:
         raise ValueError("the instructions do not leave room for a drawing on A4")
     # the largest drawing at the stated (rounded) scale, then the larger print
@@ -280,14 +286,18 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         raise ValueError(
             f"at {scale:g} mm per unit the drawing needs {(box[1] - box[0]) * scale:.0f} mm × "
             f"{(box[3] - box[2]) * scale:.0f} mm; at most {round_scale(fit):g} mm per unit "
-            f"fits the {plan.area[2]:.0f} mm × {plan.area[3]:.0f} mm left on the page")
+            f"fits the {plan.area[2]:.0f} mm × {plan.area[3]:.0f} mm left on the page"
+        )
     elif (box[1] - box[0]) * scale < MIN_DRAWING_MM:
-        raise ValueError(f"at {scale:g} mm per unit the drawing is "
-                         f"{(box[1] - box[0]) * scale:.2g} mm wide, too small to draw in; give at "
-                         f"least {MIN_DRAWING_MM / (box[1] - box[0]):.2g} mm per unit")
+        raise ValueError(
+            f"at {scale:g} mm per unit the drawing is "
+            f"{(box[1] - box[0]) * scale:.2g} mm wide, too small to draw in; give at "
+            f"least {MIN_DRAWING_MM / (box[1] - box[0]):.2g} mm per unit"
+        )
     scale = float(scale)
-    which = ("all of §3.3" if steps == "all" else
-             f"{steps} (§3.3, Fig. 4({'abcd'[int(steps[1]) - 1]}))")
+    which = (
+        "all of §3.3" if steps == "all" else f"{steps} (§3.3, Fig. 4({'abcd'[int(steps[1]) - 1]}))"
+    )
     title = getattr(c.grasp, "title", None) or "A two-point grasp"
     cone_len = extra.side_length(c.grasp, box, scale)  # 25-40 mm: a ruler lies along it
     figs, axes, arts = [], [], []
@@ -295,13 +305,17 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
     bars: list[Line2D] = []
     for page in (0, 1):
         fig = _new_page()
-        head = ("Draw the internal force diagram by hand: " if page == 0
-                else "Solution, at the same scale: ") + which
+        head = (
+            "Draw the internal force diagram by hand: "
+            if page == 0
+            else "Solution, at the same scale: "
+        ) + which
         bars.append(_header(fig, head, [title, *_params_lines(c.grasp)], scale))
         ax = _place_axes(fig, box, scale, plan.area)
         theme = PAPER_THEME if page == 0 else DEFAULT_THEME
-        out = draw_construction(sub, step=len(gnames) - 1 if page == 0 else None, ax=ax,
-                                theme=theme, num=num)
+        out = draw_construction(
+            sub, step=len(gnames) - 1 if page == 0 else None, ax=ax, theme=theme, num=num
+        )
         for key in ("cone1", "cone2"):
             for a in out.pop(key, []):
                 a.remove()
@@ -312,10 +326,12 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
         out["cones"] = _cones(ax, c.grasp, theme, cone_len)
         out["cone angles"] = extra.cone_angles(ax, c.grasp, cone_len) if page == 0 else []
         _finish_axes(ax, box)
-        extra.clear_labels(ax, [a for k in ("P1", "P2") for a in out.get(k, [])
-                                if isinstance(a, Annotation)],
-                           [a for a in out["cones"] if isinstance(a, Line2D)],
-                           out["cone angles"])
+        extra.clear_labels(
+            ax,
+            [a for k in ("P1", "P2") for a in out.get(k, []) if isinstance(a, Annotation)],
+            [a for a in out["cones"] if isinstance(a, Line2D)],
+            out["cone angles"],
+        )
         unit_bar = _unit_bar(ax, box, scale)
         if page == 0:
             bars.append(unit_bar)
@@ -326,22 +342,48 @@ def worksheet_pages(construction_or_grasp: Any, *, steps: str = "all",
             x0, top, colw = plan.columns[0]
             rows = _solution_rows(sub, num, scale)
             if ex is not None:
-                out["read off"] = extra.draw_ray(ax, ex, theme, 1.15 * max(ex["k"], 0.2 * (
-                    box[1] - box[0])))
+                out["read off"] = extra.draw_ray(
+                    ax, ex, theme, 1.15 * max(ex["k"], 0.2 * (box[1] - box[0]))
+                )
                 rows.append(("read", extra.exercise_answer(ex, scale)))
             sol = _layout_blocks(rows, colw, plan.font)
             _draw_blocks(fig, sol, x0, top, plan.font)
-            out["inset"] = extra.page2_extras(fig, ax, sub, num, box, theme, plan.font,
-                                         (x0, top - _height(sol, plan.font) - 3, colw))
+            out["inset"] = extra.page2_extras(
+                fig,
+                ax,
+                sub,
+                num,
+                box,
+                theme,
+                plan.font,
+                (x0, top - _height(sol, plan.font) - 3, colw),
+            )
         figs.append(fig)
         axes.append(ax)
         arts.append(out)
-    return Worksheet((figs[0], figs[1]), (axes[0], axes[1]), scale, box, sub, gnames,
-                     instructions, (arts[0], arts[1]), bars[1], bars[0], texts)
+    return Worksheet(
+        (figs[0], figs[1]),
+        (axes[0], axes[1]),
+        scale,
+        box,
+        sub,
+        gnames,
+        instructions,
+        (arts[0], arts[1]),
+        bars[1],
+        bars[0],
+        texts,
+    )
 
 
-def worksheet(construction_or_grasp: Any, path: str | os.PathLike[str], *, steps: str = "all",
-              given: str | Iterable[str] = "grasp", scale: float | None = None) -> Path:
+def worksheet(
+    construction_or_grasp: Any,
+    path: str | os.PathLike[str],
+    *,
+    steps: str = "all",
+    given: str | Iterable[str] = "grasp",
+    scale: float | None = None,
+) -> Path:
     """Write a printable worksheet for drawing the internal force diagram by hand.
 
     Parameters

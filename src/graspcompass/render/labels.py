@@ -23,11 +23,17 @@ _HA = {1: "left", -1: "right", 0: "center"}
 _VA = {1: "bottom", -1: "top", 0: "center"}
 
 
-def place_labels(ax: Axes, items: Sequence[tuple[tuple[float, float], str]],
-                 curves: Sequence[np.ndarray] = (), avoid: Sequence[Text] = (),
-                 obstacles: Sequence[tuple[float, float]] | np.ndarray = (),
-                 font_size: float = 10.0, marker_size: float = 4.0, gap: float = 2.5,
-                 **text_kw: Any) -> list[Text]:
+def place_labels(
+    ax: Axes,
+    items: Sequence[tuple[tuple[float, float], str]],
+    curves: Sequence[np.ndarray] = (),
+    avoid: Sequence[Text] = (),
+    obstacles: Sequence[tuple[float, float]] | np.ndarray = (),
+    font_size: float = 10.0,
+    marker_size: float = 4.0,
+    gap: float = 2.5,
+    **text_kw: Any,
+) -> list[Text]:
     """Add one text per ``(xy, label)`` of ``items`` at a free place around ``xy``.
 
     Parameters
@@ -71,14 +77,28 @@ def place_labels(ax: Axes, items: Sequence[tuple[tuple[float, float], str]],
         return np.asarray(trans.transform(np.asarray(xy, dtype=float))) * to_pt
 
     anchors = disp([xy for xy, _ in items]) if items else np.zeros((0, 2))
-    placed = place(anchors, [label for _, label in items],
-                   curves=[disp(c) for c in curves if len(c)],
-                   frame=tuple(np.asarray(ax.bbox.extents) * to_pt),
-                   avoid=[tuple(np.asarray(t.get_window_extent().extents) * to_pt)
-                          for t in avoid],
-                   font_size=font_size, marker_size=marker_size, gap=gap,
-                   obstacles=disp(list(obstacles)) if len(obstacles) else ())
-    return [ax.annotate(label, xy, xytext=p.offset, textcoords="offset points",
-                        ha=_HA[p.direction[0]], va=_VA[p.direction[1]], fontsize=font_size,
-                        annotation_clip=False, **text_kw)
-            for (xy, label), p in zip(items, placed)]
+    placed = place(
+        anchors,
+        [label for _, label in items],
+        curves=[disp(c) for c in curves if len(c)],
+        frame=tuple(np.asarray(ax.bbox.extents) * to_pt),
+        avoid=[tuple(np.asarray(t.get_window_extent().extents) * to_pt) for t in avoid],
+        font_size=font_size,
+        marker_size=marker_size,
+        gap=gap,
+        obstacles=disp(list(obstacles)) if len(obstacles) else (),
+    )
+    return [
+        ax.annotate(
+            label,
+            xy,
+            xytext=p.offset,
+            textcoords="offset points",
+            ha=_HA[p.direction[0]],
+            va=_VA[p.direction[1]],
+            fontsize=font_size,
+            annotation_clip=False,
+            **text_kw,
+        )
+        for (xy, label), p in zip(items, placed)
+    ]

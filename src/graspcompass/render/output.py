@@ -16,8 +16,9 @@ __all__ = ["FORMATS", "save_figure"]
 FORMATS = ("png", "svg", "pdf")
 
 
-def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = None,
-                dpi: float = 150) -> Path:
+def save_figure(
+    fig: Figure, path: str | os.PathLike[str], format: str | None = None, dpi: float = 150
+) -> Path:
     """Write ``fig`` as PNG, SVG or PDF into an existing folder.
 
     Parameters
@@ -54,10 +55,17 @@ def save_figure(fig: Figure, path: str | os.PathLike[str], format: str | None = 
     p = Path(path)
     fmt = (format or p.suffix.lstrip(".")).lower()
     if fmt not in FORMATS:
-        what = (f"format {format!r}" if format else
-                f"extension {p.suffix!r}" if p.suffix else "a path without extension")
-        raise ValueError(f"cannot save a figure to {str(p)!r}: {what} is not supported; "
-                         f"use one of {', '.join('.' + f for f in FORMATS)}")
+        what = (
+            f"format {format!r}"
+            if format
+            else f"extension {p.suffix!r}"
+            if p.suffix
+            else "a path without extension"
+        )
+        raise ValueError(
+            f"cannot save a figure to {str(p)!r}: {what} is not supported; "
+            f"use one of {', '.join('.' + f for f in FORMATS)}"
+        )
     p = check_target(p)
     buffer = io.BytesIO()
     fig.savefig(buffer, format=fmt, dpi=dpi)

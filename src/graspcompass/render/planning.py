@@ -32,12 +32,23 @@ if TYPE_CHECKING:
 
 __all__ = ["draw_plan_heatmap", "draw_plan_outline", "figure_plan"]
 
-_COLOURS = ("#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2",
-            "#7f7f7f", "#bcbd22", "#17becf")
+_COLOURS = (
+    "#d62728",
+    "#1f77b4",
+    "#2ca02c",
+    "#9467bd",
+    "#ff7f0e",
+    "#8c564b",
+    "#e377c2",
+    "#7f7f7f",
+    "#bcbd22",
+    "#17becf",
+)
 
 
-def draw_plan_outline(ax: Any, plan: PlanResult, top: int = 5, cone_length: float | None = None
-                      ) -> None:
+def draw_plan_outline(
+    ax: Any, plan: PlanResult, top: int = 5, cone_length: float | None = None
+) -> None:
     """Draw the outline, the centre of mass and the ``top`` best pairs with their cones.
 
     Parameters
@@ -52,8 +63,14 @@ def draw_plan_outline(ax: Any, plan: PlanResult, top: int = 5, cone_length: floa
     ring = np.asarray(plan.outline)
     mm = 1e3
     ax.fill(ring[:, 0] * mm, ring[:, 1] * mm, facecolor="#eeeeee", edgecolor="#333333", lw=1.2)
-    ax.plot(plan.points[:, 0] * mm, plan.points[:, 1] * mm, ".", color="#999999", ms=2,
-            label="sampled contacts")
+    ax.plot(
+        plan.points[:, 0] * mm,
+        plan.points[:, 1] * mm,
+        ".",
+        color="#999999",
+        ms=2,
+        label="sampled contacts",
+    )
     ax.plot(plan.com[0] * mm, plan.com[1] * mm, "k+", ms=10, mew=2, label="centre of mass")
     size = float(np.ptp(ring, axis=0).max())
     r = (0.12 * size if cone_length is None else cone_length) * mm
@@ -61,27 +78,51 @@ def draw_plan_outline(ax: Any, plan: PlanResult, top: int = 5, cone_length: floa
     for rank, pair in enumerate(plan.top(top)):
         colour = _COLOURS[rank % len(_COLOURS)]
         (a, b), (na, nb) = np.asarray(pair.contacts) * mm, np.asarray(pair.normals)
-        ax.plot([a[0], b[0]], [a[1], b[1]], "-", color=colour, lw=1.4 if rank else 2.2,
-                label=f"#{pair.rank}: {pair.squeeze:.3g} N")
+        ax.plot(
+            [a[0], b[0]],
+            [a[1], b[1]],
+            "-",
+            color=colour,
+            lw=1.4 if rank else 2.2,
+            label=f"#{pair.rank}: {pair.squeeze:.3g} N",
+        )
         for p, n in ((a, na), (b, nb)):
             base = math.atan2(n[1], n[0])
-            sides = [p + r * np.array([math.cos(base + s * xi), math.sin(base + s * xi)])
-                     for s in (-1, 1)]
-            ax.fill([p[0], sides[0][0], sides[1][0]], [p[1], sides[0][1], sides[1][1]],
-                    color=colour, alpha=0.18, lw=0)
+            sides = [
+                p + r * np.array([math.cos(base + s * xi), math.sin(base + s * xi)])
+                for s in (-1, 1)
+            ]
+            ax.fill(
+                [p[0], sides[0][0], sides[1][0]],
+                [p[1], sides[0][1], sides[1][1]],
+                color=colour,
+                alpha=0.18,
+                lw=0,
+            )
             for q in sides:
                 ax.plot([p[0], q[0]], [p[1], q[1]], color=colour, lw=0.8)
             ax.plot(*p, "o", color=colour, ms=5)
     for pair in getattr(plan, "exact", ()):
         (a, b) = np.asarray(pair.contacts) * mm
-        ax.plot([a[0], b[0]], [a[1], b[1]], "--", color="black", lw=1.0, marker="*", ms=9,
-                mfc="gold", label=f"proved best on edges {pair.edges[0]},{pair.edges[1]}: "
-                                  f"{pair.squeeze:.4g} N")
+        ax.plot(
+            [a[0], b[0]],
+            [a[1], b[1]],
+            "--",
+            color="black",
+            lw=1.0,
+            marker="*",
+            ms=9,
+            mfc="gold",
+            label=f"proved best on edges {pair.edges[0]},{pair.edges[1]}: {pair.squeeze:.4g} N",
+        )
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.set_title(f"Best contact pairs: μ = {plan.mu:.3g}, friction cones (half angle "
-                 f"{math.degrees(xi):.1f}°)", fontsize=9)
+    ax.set_title(
+        f"Best contact pairs: μ = {plan.mu:.3g}, friction cones (half angle "
+        f"{math.degrees(xi):.1f}°)",
+        fontsize=9,
+    )
     ax.legend(fontsize=6, loc="upper left", framealpha=0.8)
 
 
@@ -109,8 +150,10 @@ def draw_plan_heatmap(ax: Any, plan: PlanResult, cmap: str = "viridis") -> Any:
     ax.set_xlabel("contact index along the outline")
     ax.set_ylabel("contact index along the outline")
     unit = "N per jaw" if plan.per == "jaw" else "N, both jaws"
-    ax.set_title(f"Worst-case squeeze of every pair: {unit}\n(log scale; blank: not "
-                 "force-closure)", fontsize=9)
+    ax.set_title(
+        f"Worst-case squeeze of every pair: {unit}\n(log scale; blank: not force-closure)",
+        fontsize=9,
+    )
     return im
 
 

@@ -28,9 +28,14 @@ def polar_points(theta: np.ndarray, k: np.ndarray) -> np.ndarray:
     return np.column_stack([k * np.sin(theta), -k * np.cos(theta)])
 
 
-def draw_k_polar(grasp: Grasp, ax: Axes | None = None, samples: int = 2000,
-                 theme: Theme = DEFAULT_THEME, components: bool = False,
-                 label: str | None = "computer plot, eq. (25)") -> dict[str, list[Artist]]:
+def draw_k_polar(
+    grasp: Grasp,
+    ax: Axes | None = None,
+    samples: int = 2000,
+    theme: Theme = DEFAULT_THEME,
+    components: bool = False,
+    label: str | None = "computer plot, eq. (25)",
+) -> dict[str, list[Artist]]:
     """Draw the computer plot of Fig. 6(b): the polar curve θ ↦ k_grasp(θ)·e(θ).
 
     Parameters
@@ -72,18 +77,38 @@ def draw_k_polar(grasp: Grasp, ax: Axes | None = None, samples: int = 2000,
         for n in (1, 2, 3, 4):
             k = np.where(ks[n - 1] > 0, ks[n - 1], np.nan)
             xy = polar_points(theta, k)
-            out[f"k{n}"] = list(ax.plot(xy[:, 0], xy[:, 1], color=theme.circle_color(n),
-                                        lw=theme.thin_width, zorder=4.4,
-                                        label=f"$k_{n}(\\theta)$"))
+            out[f"k{n}"] = list(
+                ax.plot(
+                    xy[:, 0],
+                    xy[:, 1],
+                    color=theme.circle_color(n),
+                    lw=theme.thin_width,
+                    zorder=4.4,
+                    label=f"$k_{n}(\\theta)$",
+                )
+            )
     xy = polar_points(theta, np.asarray(grasp.k_grasp(theta), dtype=float))
-    out["k_grasp"] = list(ax.plot(xy[:, 0], xy[:, 1], color=theme.computer_color,
-                                  ls=theme.computer_style, lw=theme.computer_width, zorder=4.5,
-                                  label=label if label is not None else "_nolegend_"))
+    out["k_grasp"] = list(
+        ax.plot(
+            xy[:, 0],
+            xy[:, 1],
+            color=theme.computer_color,
+            ls=theme.computer_style,
+            lw=theme.computer_width,
+            zorder=4.5,
+            label=label if label is not None else "_nolegend_",
+        )
+    )
     return out
 
 
-def figure_k_plot(grasp: Grasp, samples: int = 2000, theme: Theme = DEFAULT_THEME,
-                  title: str | None = None, figsize: tuple[float, float] = (8.0, 4.5)) -> Figure:
+def figure_k_plot(
+    grasp: Grasp,
+    samples: int = 2000,
+    theme: Theme = DEFAULT_THEME,
+    title: str | None = None,
+    figsize: tuple[float, float] = (8.0, 4.5),
+) -> Figure:
     """A cartesian plot of k_1..k_4(θ) and k_grasp(θ) for θ in [0, 2π] (degrees).
 
     k_n(θ) = S_n sin θ − C_n cos θ (eqs. (27), (32)) are drawn thin and
@@ -103,10 +128,21 @@ def figure_k_plot(grasp: Grasp, samples: int = 2000, theme: Theme = DEFAULT_THEM
     deg = np.degrees(theta)
     ks = grasp.k(theta)
     for n in (1, 2, 3, 4):
-        ax.plot(deg, ks[n - 1], color=theme.circle_color(n), ls=theme.circle_style(n),
-                lw=theme.line_width, label=f"$k_{n}(\\theta)$")
-    ax.plot(deg, grasp.k_grasp(theta), color=theme.envelope_color, lw=theme.envelope_width * 0.8,
-            label=r"$k_{grasp}(\theta)$, eq. (25)")
+        ax.plot(
+            deg,
+            ks[n - 1],
+            color=theme.circle_color(n),
+            ls=theme.circle_style(n),
+            lw=theme.line_width,
+            label=f"$k_{n}(\\theta)$",
+        )
+    ax.plot(
+        deg,
+        grasp.k_grasp(theta),
+        color=theme.envelope_color,
+        lw=theme.envelope_width * 0.8,
+        label=r"$k_{grasp}(\theta)$, eq. (25)",
+    )
     ax.axhline(0.0, color=theme.axis_color, lw=theme.thin_width)
     ax.set_xlim(0, 360)
     ax.set_xticks(np.arange(0, 361, 45))
@@ -114,6 +150,8 @@ def figure_k_plot(grasp: Grasp, samples: int = 2000, theme: Theme = DEFAULT_THEM
     ax.set_ylabel(r"$k$")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=theme.font_size * 0.85)
-    ax.set_title(title if title is not None else (getattr(grasp, "title", None) or ""),
-                 fontsize=theme.font_size)
+    ax.set_title(
+        title if title is not None else (getattr(grasp, "title", None) or ""),
+        fontsize=theme.font_size,
+    )
     return fig

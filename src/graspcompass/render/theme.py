@@ -27,8 +27,17 @@ from ..scene.palette import PALETTE
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["DEFAULT_THEME", "MIN_CONTRAST", "PAPER_THEME", "QUALITIES", "THEMES", "Quality",
-           "Theme", "contrast_ratio", "relative_luminance"]
+__all__ = [
+    "DEFAULT_THEME",
+    "MIN_CONTRAST",
+    "PAPER_THEME",
+    "QUALITIES",
+    "THEMES",
+    "Quality",
+    "Theme",
+    "contrast_ratio",
+    "relative_luminance",
+]
 
 #: Least contrast ratio against the background of a dimmed element (WCAG 2.1: non-text
 #: contrast 1.4.11, 3 : 1; text contrast 1.4.3, 4.5 : 1).
@@ -99,7 +108,8 @@ class Theme:
     axis_color: str = PALETTE["axis"]
     construction_color: str = PALETTE["perp"]
     circle_colors: tuple[str, str, str, str] = tuple(  # type: ignore[assignment]
-        PALETTE[f"circle{n}"] for n in (1, 2, 3, 4))
+        PALETTE[f"circle{n}"] for n in (1, 2, 3, 4)
+    )
     circle_styles: tuple[Any, ...] = ("--", "--", "--", "--")
     envelope_color: str = PALETTE["envelope"]
     envelope_fill: str = PALETTE["fill"]
@@ -131,10 +141,15 @@ class Theme:
         2.2
         """
         k = float(factor)
-        return replace(self, line_width=self.line_width * k, thin_width=self.thin_width * k,
-                       envelope_width=self.envelope_width * k,
-                       computer_width=self.computer_width * k, point_size=self.point_size * k,
-                       font_size=self.font_size * k)
+        return replace(
+            self,
+            line_width=self.line_width * k,
+            thin_width=self.thin_width * k,
+            envelope_width=self.envelope_width * k,
+            computer_width=self.computer_width * k,
+            point_size=self.point_size * k,
+            font_size=self.font_size * k,
+        )
 
     def with_(self, **changes: Any) -> Theme:
         """A copy with some fields changed.
@@ -239,12 +254,35 @@ class Quality:
 
 #: The animation presets by name (``graspcompass animate --quality``).
 QUALITIES: dict[str, Quality] = {
-    "standard": Quality("standard", figsize=(8.0, 9.0), sweep_figsize=(9.6, 5.0), dpi=80.0,
-                        fps=10.0, frames_per_step=8, pause_seconds=1.0, hold_seconds=3.0,
-                        caption_seconds=2.0, reading_rate=0.0, layout="below",
-                        caption_size=13.0, scale=1.3),
-    "lecture": Quality("lecture", figsize=(12.8, 7.2), sweep_figsize=(12.8, 7.2), dpi=100.0,
-                       fps=15.0, frames_per_step=12, pause_seconds=3.0, hold_seconds=6.0,
-                       caption_seconds=2.5, reading_rate=15.0, layout="side",
-                       caption_size=20.0, scale=1.6, title_seconds=4.0),
+    "standard": Quality(
+        "standard",
+        figsize=(8.0, 9.0),
+        sweep_figsize=(9.6, 5.0),
+        dpi=80.0,
+        fps=10.0,
+        frames_per_step=8,
+        pause_seconds=1.0,
+        hold_seconds=3.0,
+        caption_seconds=2.0,
+        reading_rate=0.0,
+        layout="below",
+        caption_size=13.0,
+        scale=1.3,
+    ),
+    "lecture": Quality(
+        "lecture",
+        figsize=(12.8, 7.2),
+        sweep_figsize=(12.8, 7.2),
+        dpi=100.0,
+        fps=15.0,
+        frames_per_step=12,
+        pause_seconds=3.0,
+        hold_seconds=6.0,
+        caption_seconds=2.5,
+        reading_rate=15.0,
+        layout="side",
+        caption_size=20.0,
+        scale=1.6,
+        title_seconds=4.0,
+    ),
 }

@@ -47,11 +47,30 @@ from ._anim_files import (
     write_png,
 )
 
-__all__ = ["KINDS", "OUTPUT_FORMATS", "RATES", "AnimationError", "FFmpegNotFoundError",
-           "FrameState", "Segment", "Timeline", "UnsupportedFormatError", "blend",
-           "check_fps", "check_output", "find_ffmpeg", "jshtml", "palette_sample",
-           "reading_frames", "save_frames", "smoothstep", "write_animation", "write_gif",
-           "write_mp4", "write_png"]
+__all__ = [
+    "KINDS",
+    "OUTPUT_FORMATS",
+    "RATES",
+    "AnimationError",
+    "FFmpegNotFoundError",
+    "FrameState",
+    "Segment",
+    "Timeline",
+    "UnsupportedFormatError",
+    "blend",
+    "check_fps",
+    "check_output",
+    "find_ffmpeg",
+    "jshtml",
+    "palette_sample",
+    "reading_frames",
+    "save_frames",
+    "smoothstep",
+    "write_animation",
+    "write_gif",
+    "write_mp4",
+    "write_png",
+]
 
 #: Kinds of segment.
 KINDS = ("draw", "pause", "rest", "hold", "title")
@@ -73,12 +92,13 @@ def smoothstep(t: float) -> float:
 RATES: dict[str, Callable[[float], float]] = {
     "linear": lambda t: min(max(t, 0.0), 1.0),
     "smoothstep": smoothstep,
-    "smootherstep": lambda t: (lambda u: u ** 3 * (u * (6 * u - 15) + 10))(min(max(t, 0.0), 1.0)),
+    "smootherstep": lambda t: (lambda u: u**3 * (u * (6 * u - 15) + 10))(min(max(t, 0.0), 1.0)),
 }
 
 
-def reading_frames(text: str, fps: float, least_seconds: float = 0.0,
-                   chars_per_second: float = 0.0) -> int:
+def reading_frames(
+    text: str, fps: float, least_seconds: float = 0.0, chars_per_second: float = 0.0
+) -> int:
     """Frames a caption must stay on screen to be read: ``least_seconds``, or longer by
     its length at ``chars_per_second`` (0: no length rule).
 
@@ -87,8 +107,9 @@ def reading_frames(text: str, fps: float, least_seconds: float = 0.0,
     >>> reading_frames("short", fps=20, least_seconds=2.5, chars_per_second=15)
     50
     """
-    seconds = max(float(least_seconds), len(text) / chars_per_second if chars_per_second > 0
-                  else 0.0)
+    seconds = max(
+        float(least_seconds), len(text) / chars_per_second if chars_per_second > 0 else 0.0
+    )
     return math.ceil(round(seconds * check_fps(fps), 9))
 
 
@@ -151,10 +172,16 @@ class Timeline:
         object.__setattr__(self, "starts", tuple(int(v) for v in np.cumsum([0, *sizes[:-1]])))
 
     @classmethod
-    def from_keys(cls, keys: Sequence[bool], frames_per_step: int = 8, pause_frames: int = 12,
-                  hold_frames: int = 20, rate: str = "smoothstep",
-                  least_frames: Sequence[int] | None = None,
-                  title_frames: int = 0) -> Timeline:
+    def from_keys(
+        cls,
+        keys: Sequence[bool],
+        frames_per_step: int = 8,
+        pause_frames: int = 12,
+        hold_frames: int = 20,
+        rate: str = "smoothstep",
+        least_frames: Sequence[int] | None = None,
+        title_frames: int = 0,
+    ) -> Timeline:
         """A draw segment per step, a pause after each key step, a hold at the end.
 
         ``title_frames`` (optional): a title card of that many frames first (kind
@@ -168,11 +195,11 @@ class Timeline:
         [('draw', 4), ('rest', 6), ('draw', 4), ('pause', 2), ('hold', 3)]
         """
         if frames_per_step < 1 or pause_frames < 0 or hold_frames < 0:
-            raise AnimationError("frames_per_step must be >= 1, pause_frames and hold_frames "
-                                 ">= 0")
+            raise AnimationError("frames_per_step must be >= 1, pause_frames and hold_frames >= 0")
         if least_frames is not None and len(least_frames) != len(keys):
-            raise AnimationError(f"least_frames has {len(least_frames)} entries for "
-                                 f"{len(keys)} steps")
+            raise AnimationError(
+                f"least_frames has {len(least_frames)} entries for {len(keys)} steps"
+            )
         segs = [Segment(0, int(title_frames), "title")] if title_frames > 0 and keys else []
         for i, key in enumerate(keys):
             segs.append(Segment(i, frames_per_step, "draw"))
@@ -219,8 +246,9 @@ class Timeline:
         i = self.segment_of(f)
         seg = self.segments[i]
         raw = (f - self.starts[i] + 1) / seg.frames
-        progress = (RATES[self.rate](raw) if seg.kind == "draw" else
-                    1.0 if seg.kind == "rest" else raw)
+        progress = (
+            RATES[self.rate](raw) if seg.kind == "draw" else 1.0 if seg.kind == "rest" else raw
+        )
         return FrameState(f, i, seg.step, seg.kind, progress, raw)
 
     def frames_of_step(self, step: int) -> range:
@@ -236,13 +264,17 @@ class Timeline:
 
     def last_frame_of_step(self, step: int) -> int:
         """The last frame of the step's draw and pause segments (before a hold)."""
-        idx = [i for i, s in enumerate(self.segments)
-               if s.step == step and s.kind not in ("hold", "title")]
+        idx = [
+            i
+            for i, s in enumerate(self.segments)
+            if s.step == step and s.kind not in ("hold", "title")
+        ]
         return self.segment_range(idx[-1]).stop - 1 if idx else self.frames_of_step(step)[-1]
 
 
-def write_animation(anim: Any, path: str | os.PathLike[str], fps: float | None = None,
-                    quiet: bool = False) -> Path:
+def write_animation(
+    anim: Any, path: str | os.PathLike[str], fps: float | None = None, quiet: bool = False
+) -> Path:
     """Write ``anim`` (a :class:`~graspcompass.render.animate.FrameAnimation`) to ``path``.
 
     ``.gif`` with Pillow, ``.mp4`` with ffmpeg, ``.html`` self-contained

@@ -26,10 +26,31 @@ from __future__ import annotations
 
 from .._lazy import attach
 
-__all__ = ["Instrument", "Label", "Scene", "build_scene", "instruments", "labelling",
-           "layout", "palette", "picture", "scene_of"]
+__all__ = [
+    "Instrument",
+    "Label",
+    "Scene",
+    "build_scene",
+    "instruments",
+    "labelling",
+    "layout",
+    "palette",
+    "picture",
+    "scene_of",
+]
 
-__getattr__, __dir__ = attach(__name__, {
-    "Instrument": "instruments", "instruments": "instruments", "Label": "picture",
-    "Scene": "picture", "build_scene": "picture", "scene_of": "picture",
-    "labelling": "labelling", "layout": "layout", "palette": "palette", "picture": "picture"})
+__getattr__, __dir__ = attach(
+    __name__,
+    {
+        "Instrument": "instruments",
+        "instruments": "instruments",
+        "Label": "picture",
+        "Scene": "picture",
+        "build_scene": "picture",
+        "scene_of": "picture",
+        "labelling": "labelling",
+        "layout": "layout",
+        "palette": "palette",
+        "picture": "picture",
+    },
+)

@@ -29,16 +29,33 @@ import numpy as np
 from . import metrics
 from .labelling import FONT_PT, GAP_PT, MARKER_PT, OFFSETS, RESAMPLE_PT, resample
 
-__all__ = ["CROWD", "DIRECTIONS", "FITS", "LEADER", "MARGIN", "REORDER", "Fit",
-           "crowded_region", "fit", "label_box", "leader", "spec"]
+__all__ = [
+    "CROWD",
+    "DIRECTIONS",
+    "FITS",
+    "LEADER",
+    "MARGIN",
+    "REORDER",
+    "Fit",
+    "crowded_region",
+    "fit",
+    "label_box",
+    "leader",
+    "spec",
+]
 
 #: The directions from the point to the label's box tried, in order of preference: the
 #: eight of :data:`~.labelling.OFFSETS` (NE, NW, SE, SW, N, S, E, W), then every 15°
 #: between them (the steeper ones first).
-DIRECTIONS = tuple((dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)) for dx, dy in OFFSETS) + \
-    tuple((math.cos(math.radians(a)), math.sin(math.radians(a)))
-          for a in sorted(set(range(0, 360, 15)) - set(range(0, 360, 45)),
-                          key=lambda a: (abs(math.sin(math.radians(a))) < 0.5, a)))
+DIRECTIONS = tuple(
+    (dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)) for dx, dy in OFFSETS
+) + tuple(
+    (math.cos(math.radians(a)), math.sin(math.radians(a)))
+    for a in sorted(
+        set(range(0, 360, 15)) - set(range(0, 360, 45)),
+        key=lambda a: (abs(math.sin(math.radians(a))) < 0.5, a),
+    )
+)
 
 #: The distances tried from the point to the label's box, in units of the marker's radius
 #: plus the gap.
@@ -77,17 +94,27 @@ def _dist_to_box(pts: np.ndarray, box: np.ndarray) -> np.ndarray:
 def _hits(box: np.ndarray, boxes: np.ndarray) -> bool:
     if not len(boxes):
         return False
-    return bool(np.any((np.minimum(box[2], boxes[:, 2]) > np.maximum(box[0], boxes[:, 0]))
-                       & (np.minimum(box[3], boxes[:, 3]) > np.maximum(box[1], boxes[:, 1]))))
+    return bool(
+        np.any(
+            (np.minimum(box[2], boxes[:, 2]) > np.maximum(box[0], boxes[:, 0]))
+            & (np.minimum(box[3], boxes[:, 3]) > np.maximum(box[1], boxes[:, 1]))
+        )
+    )
 
 
-def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str],
-        curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
-        obstacles: Sequence[tuple[float, float]] | np.ndarray = (), font_size: float = FONT_PT,
-        marker_size: float = MARKER_PT, gap: float = GAP_PT,
-        optional: Sequence[bool] = (),
-        avoid: Sequence[tuple[float, float, float, float]] = (),
-        marker_sizes: Sequence[float] = ()) -> list[Fit | None]:
+def fit(
+    anchors: Sequence[tuple[float, float]] | np.ndarray,
+    texts: Sequence[str],
+    curves: Sequence[Any] = (),
+    frame: tuple[float, float, float, float] | None = None,
+    obstacles: Sequence[tuple[float, float]] | np.ndarray = (),
+    font_size: float = FONT_PT,
+    marker_size: float = MARKER_PT,
+    gap: float = GAP_PT,
+    optional: Sequence[bool] = (),
+    avoid: Sequence[tuple[float, float, float, float]] = (),
+    marker_sizes: Sequence[float] = (),
+) -> list[Fit | None]:
     """One :class:`Fit` per label ``texts[i]`` of the point ``anchors[i]`` (or None).
 
     Parameters
@@ -112,26 +139,35 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
     msize = np.full(len(every), float(marker_size))
-    msize[:len(marker_sizes)] = np.asarray(marker_sizes, dtype=float)[:len(every)]
+    msize[: len(marker_sizes)] = np.asarray(marker_sizes, dtype=float)[: len(every)]
     r = msize / 2 + MARGIN["marker"]
-    markers = np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r,
-                               every[:, 1] + r]) if len(every) else np.zeros((0, 4))
+    markers = (
+        np.column_stack([every[:, 0] - r, every[:, 1] - r, every[:, 0] + r, every[:, 1] + r])
+        if len(every)
+        else np.zeros((0, 4))
+    )
     sizes = [label_box(t, font_size) for t in texts]
     # only the curves' samples that some box tried can hold (a huge circle near a bound
     # of condition (1) costs what this window holds)
     fin = pts[np.all(np.isfinite(pts), axis=1)]
     reach = max([max(w, h) for w, h in sizes] + [0.0]) + (marker_size / 2 + gap) * max(FITS) + 1.0
-    window = (float(fin[:, 0].min() - reach), float(fin[:, 1].min() - reach),
-              float(fin[:, 0].max() + reach), float(fin[:, 1].max() + reach)) if len(fin) else None
+    window = (
+        (
+            float(fin[:, 0].min() - reach),
+            float(fin[:, 1].min() - reach),
+            float(fin[:, 0].max() + reach),
+            float(fin[:, 1].max() + reach),
+        )
+        if len(fin)
+        else None
+    )
     curves = [c for c in curves if len(c)]
-    curve = resample(curves, RESAMPLE_PT, window=window) if curves and window else \
-        np.zeros((0, 2))
+    curve = resample(curves, RESAMPLE_PT, window=window) if curves and window else np.zeros((0, 2))
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
     best_out: list[Fit | None] | None = None
     for _ in range(REORDER + 1):  # the labels that found no place first, again
-        out = _greedy(order, pts, every, markers, sizes, curve, frame, msize, gap,
-                      optional, avoid)
+        out = _greedy(order, pts, every, markers, sizes, curve, frame, msize, gap, optional, avoid)
         fails = [i for i in order if out[i] is None or not out[i].ok]  # type: ignore[union-attr]
         if best_out is None or len(fails) < sum(f is None or not f.ok for f in best_out):
             best_out = out
@@ -142,11 +178,19 @@ def fit(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str
     return best_out
 
 
-def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.ndarray,
-            sizes: list[tuple[float, float]], curve: np.ndarray,
-            frame: tuple[float, float, float, float] | None, msize: np.ndarray, gap: float,
-            optional: Sequence[bool], avoid: Sequence[tuple[float, float, float, float]]
-            ) -> list[Fit | None]:
+def _greedy(
+    order: list[int],
+    pts: np.ndarray,
+    every: np.ndarray,
+    markers: np.ndarray,
+    sizes: list[tuple[float, float]],
+    curve: np.ndarray,
+    frame: tuple[float, float, float, float] | None,
+    msize: np.ndarray,
+    gap: float,
+    optional: Sequence[bool],
+    avoid: Sequence[tuple[float, float, float, float]],
+) -> list[Fit | None]:
     """The labels placed one by one in ``order``, each where it breaks the fewest rules."""
     placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Fit | None] = [None] * len(sizes)
@@ -172,12 +216,20 @@ def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.nd
                     near = float(_dist_to_box(others, big).min())
                     bad += 100.0 * (near < own + MARGIN["nearer"])
                 if frame is not None:
-                    bad += 100.0 * (box[0] < frame[0] or box[1] < frame[1]
-                                    or box[2] > frame[2] or box[3] > frame[3])
+                    bad += 100.0 * (
+                        box[0] < frame[0]
+                        or box[1] < frame[1]
+                        or box[2] > frame[2]
+                        or box[3] > frame[3]
+                    )
                 soft = 10.0 * k + 0.5 * rank
                 if len(curve):
-                    inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
-                              & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
+                    inside = (
+                        (curve[:, 0] > box[0])
+                        & (curve[:, 0] < box[2])
+                        & (curve[:, 1] > box[1])
+                        & (curve[:, 1] < box[3])
+                    )
                     soft += 1.5 * float(inside.sum())
                 score = bad * 1000.0 + soft
                 if best is None or score < best[0]:
@@ -186,9 +238,13 @@ def _greedy(order: list[int], pts: np.ndarray, every: np.ndarray, markers: np.nd
                     dy = 1 if box[1] >= py else -1 if box[3] <= py else 0
                     ax = box[0] if dx > 0 else box[2] if dx < 0 else cx
                     ay = box[1] if dy > 0 else box[3] if dy < 0 else cy
-                    f = Fit((float(ax - px), float(ay - py)), (dx, dy),
-                            tuple(float(v) for v in box), far >= LEADER,  # type: ignore[arg-type]
-                            bad == 0.0)
+                    f = Fit(
+                        (float(ax - px), float(ay - py)),
+                        (dx, dy),
+                        tuple(float(v) for v in box),
+                        far >= LEADER,  # type: ignore[arg-type]
+                        bad == 0.0,
+                    )
                     best = (score, f)
         assert best is not None
         f = best[1]
@@ -211,9 +267,11 @@ def label_box(text: str, font_size: float) -> tuple[float, float]:
     return w, up + down
 
 
-def crowded_region(anchors: Sequence[tuple[float, float]] | np.ndarray,
-                   markers: Sequence[tuple[float, float]] | np.ndarray,
-                   side: float) -> tuple[float, float, float, float] | None:
+def crowded_region(
+    anchors: Sequence[tuple[float, float]] | np.ndarray,
+    markers: Sequence[tuple[float, float]] | np.ndarray,
+    side: float,
+) -> tuple[float, float, float, float] | None:
     """The square ``(x0, y0, x1, y1)`` of the points that crowd, in the frame's units.
 
     A point is crowded when :data:`CROWD` ``count`` other markers lie within
@@ -245,12 +303,12 @@ def crowded_region(anchors: Sequence[tuple[float, float]] | np.ndarray,
     if size > CROWD["largest"] * side:
         return None
     cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-    return (float(cx - size / 2), float(cy - size / 2), float(cx + size / 2),
-            float(cy + size / 2))
+    return (float(cx - size / 2), float(cy - size / 2), float(cx + size / 2), float(cy + size / 2))
 
 
-def leader(point: tuple[float, float], box: tuple[float, float, float, float]
-           ) -> tuple[tuple[float, float], tuple[float, float]]:
+def leader(
+    point: tuple[float, float], box: tuple[float, float, float, float]
+) -> tuple[tuple[float, float], tuple[float, float]]:
     """The leader line from ``point`` to the nearest point of ``box`` (same units)."""
     x = min(max(point[0], box[0]), box[2])
     y = min(max(point[1], box[1]), box[3])
@@ -267,9 +325,22 @@ def spec() -> dict[str, Any]:
     >>> spec()["fits"][0], spec()["metrics"]["widths"][0]
     (1.0, 651)
     """
-    return {"directions": [list(d) for d in DIRECTIONS], "fits": list(FITS), "leader": LEADER,
-            "reorder": REORDER, "margin": dict(MARGIN), "font": FONT_PT, "marker": MARKER_PT,
-            "gap": GAP_PT, "resample": RESAMPLE_PT,
-            "metrics": {"widths": list(metrics.WIDTHS), "ascent": metrics.ASCENT,
-                        "descent": metrics.DESCENT, "sub_scale": metrics.SUB_SCALE,
-                        "sub_shift": metrics.SUB_SHIFT, "family": metrics.FAMILY}}
+    return {
+        "directions": [list(d) for d in DIRECTIONS],
+        "fits": list(FITS),
+        "leader": LEADER,
+        "reorder": REORDER,
+        "margin": dict(MARGIN),
+        "font": FONT_PT,
+        "marker": MARKER_PT,
+        "gap": GAP_PT,
+        "resample": RESAMPLE_PT,
+        "metrics": {
+            "widths": list(metrics.WIDTHS),
+            "ascent": metrics.ASCENT,
+            "descent": metrics.DESCENT,
+            "sub_scale": metrics.SUB_SCALE,
+            "sub_shift": metrics.SUB_SHIFT,
+            "family": metrics.FAMILY,
+        },
+    }

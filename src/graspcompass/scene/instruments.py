@@ -38,8 +38,15 @@ XY = tuple[float, float]
 Box = tuple[float, float, float, float]
 
 #: The roles of the instruments, in drawing order.
-ROLES = ("bisection_arc", "bisector", "measure_arc", "transfer_arc", "coordinate", "drop",
-         "right_angle")
+ROLES = (
+    "bisection_arc",
+    "bisector",
+    "measure_arc",
+    "transfer_arc",
+    "coordinate",
+    "drop",
+    "right_angle",
+)
 
 
 @dataclass(frozen=True)
@@ -71,9 +78,11 @@ def _arc(c: XY, r: float, through: XY, half: float, samples: int = 13) -> tuple[
 
 def _square(at: XY, u: XY, w: XY, a: float) -> tuple[XY, ...]:
     """The right-angle mark at ``at`` between the unit directions ``u`` and ``w``."""
-    return ((at[0] + a * u[0], at[1] + a * u[1]),
-            (at[0] + a * (u[0] + w[0]), at[1] + a * (u[1] + w[1])),
-            (at[0] + a * w[0], at[1] + a * w[1]))
+    return (
+        (at[0] + a * u[0], at[1] + a * u[1]),
+        (at[0] + a * (u[0] + w[0]), at[1] + a * (u[1] + w[1])),
+        (at[0] + a * w[0], at[1] + a * w[1]),
+    )
 
 
 def _foot(p: XY, line: Any) -> XY:
@@ -87,8 +96,7 @@ def _inside(p: XY, box: Box) -> bool:
     return box[0] <= p[0] <= box[1] and box[2] <= p[1] <= box[3]
 
 
-def instruments_of(construction: Any, num: Mapping[str, Any], box: Box
-                   ) -> tuple[Instrument, ...]:
+def instruments_of(construction: Any, num: Mapping[str, Any], box: Box) -> tuple[Instrument, ...]:
     """The instruments of every step of ``construction`` (numbers ``num``, view ``box``).
 
     Marks are sized by the view: a right-angle square 1.6 % of its width, a short
@@ -164,8 +172,10 @@ def instruments_of(construction: Any, num: Mapping[str, Any], box: Box
                 if math.dist(q, v) > tiny:
                     out.append(Instrument("coordinate", s.name, _n(s), (q, v)))
                     if _unit(axis[1]) is not None and math.dist(q, origin) > tiny:
-                        back = (q[0] + (origin[0] - q[0]) / math.dist(q, origin),
-                                q[1] + (origin[1] - q[1]) / math.dist(q, origin))
+                        back = (
+                            q[0] + (origin[0] - q[0]) / math.dist(q, origin),
+                            q[1] + (origin[1] - q[1]) / math.dist(q, origin),
+                        )
                         square(s, q, v, back)
     return tuple(out)
 

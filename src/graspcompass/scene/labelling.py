@@ -66,16 +66,21 @@ LABEL_ORDER = "VPOXY"
 #: The score of a candidate position: area (pt²) of overlap with the labels placed and
 #: with the markers, number of curve samples inside, number of other points nearer to the
 #: label's centre than its own point, area outside the frame, rank of the position tried.
-WEIGHTS: dict[str, float] = {"label": 20.0, "marker": 60.0, "curve": 3.0, "near": 300.0,
-                             "frame": 50.0, "rank": 2.0}
+WEIGHTS: dict[str, float] = {
+    "label": 20.0,
+    "marker": 60.0,
+    "curve": 3.0,
+    "near": 300.0,
+    "frame": 50.0,
+    "rank": 2.0,
+}
 #: Distance (pt) between the samples of the drawn curves that the labels avoid.
 RESAMPLE_PT = 1.5
 #: The distances tried, in units of the marker's radius plus the gap: close, then far.
 FAR = (1.0, 2.0)
 #: The text size estimate of :func:`text_size`, in units of the font size (and ``pad`` in
 #: points): width per character, per space and per subscript character, height.
-SIZE_RULE: dict[str, float] = {"char": 0.68, "space": 0.3, "sub": 0.5, "pad": 2.0,
-                               "height": 1.35}
+SIZE_RULE: dict[str, float] = {"char": 0.68, "space": 0.3, "sub": 0.5, "pad": 2.0, "height": 1.35}
 
 _SUB = re.compile(r"_\{([^}]*)\}|_(\w)")
 
@@ -97,8 +102,9 @@ def text_size(text: str, font_size: float) -> tuple[float, float]:
     subs = "".join(a or b for a, b in _SUB.findall(body))
     main = _SUB.sub("", body).replace("\\", "")
     r = SIZE_RULE
-    width = (r["char"] * font_size * len(main.replace(" ", ""))
-             + r["space"] * font_size * main.count(" "))
+    width = r["char"] * font_size * len(main.replace(" ", "")) + r[
+        "space"
+    ] * font_size * main.count(" ")
     width += r["sub"] * font_size * len(subs)
     return round(width + r["pad"], 9), round(r["height"] * font_size, 9)
 
@@ -111,8 +117,9 @@ def _overlap(a: np.ndarray, boxes: np.ndarray) -> float:
     return float((w * h).sum())
 
 
-def resample(curves: Sequence[Any], step: float,
-             window: tuple[float, float, float, float] | None = None) -> np.ndarray:
+def resample(
+    curves: Sequence[Any], step: float, window: tuple[float, float, float, float] | None = None
+) -> np.ndarray:
     """Points every ``step`` along each segment of each polyline (an (N, 2) array).
 
     Each segment ``a -> b`` of length ``L`` gives ``a + (i step / L)(b - a)`` for
@@ -140,8 +147,9 @@ def resample(curves: Sequence[Any], step: float,
             d = np.diff(c, axis=0)
             length = np.sqrt(d[:, 0] * d[:, 0] + d[:, 1] * d[:, 1])  # as the page's port
             # a segment too long for floats (an overflowing length) has no samples
-            count = np.where(np.isfinite(length),
-                             np.where(length > 0, np.ceil(length / step), 1.0), 0.0)
+            count = np.where(
+                np.isfinite(length), np.where(length > 0, np.ceil(length / step), 1.0), 0.0
+            )
         lo, hi = np.zeros_like(count), count
         if window is not None:
             lo, hi = _in_window(a, d, length, step, window, count)
@@ -156,16 +164,23 @@ def resample(curves: Sequence[Any], step: float,
     return np.vstack(out)
 
 
-def _in_window(a: np.ndarray, d: np.ndarray, length: np.ndarray, step: float,
-               window: tuple[float, float, float, float], count: np.ndarray
-               ) -> tuple[np.ndarray, np.ndarray]:
+def _in_window(
+    a: np.ndarray,
+    d: np.ndarray,
+    length: np.ndarray,
+    step: float,
+    window: tuple[float, float, float, float],
+    count: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray]:
     """The range ``lo <= i < hi`` of the samples of each segment that may lie in
     ``window`` (Liang-Barsky on ``a + t d``, the window widened by ``step``)."""
     x0, y0, x1, y1 = window
     t0, t1 = np.zeros(len(a)), np.ones(len(a))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        for p, q, lo_, hi_ in ((a[:, 0], d[:, 0], x0 - step, x1 + step),
-                               (a[:, 1], d[:, 1], y0 - step, y1 + step)):
+        for p, q, lo_, hi_ in (
+            (a[:, 0], d[:, 0], x0 - step, x1 + step),
+            (a[:, 1], d[:, 1], y0 - step, y1 + step),
+        ):
             flat = q == 0
             ta, tb = (lo_ - p) / q, (hi_ - p) / q
             ta, tb = np.minimum(ta, tb), np.maximum(ta, tb)
@@ -197,12 +212,17 @@ class Placement:
     box: tuple[float, float, float, float]
 
 
-def place(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[str],
-          curves: Sequence[Any] = (), frame: tuple[float, float, float, float] | None = None,
-          avoid: Sequence[tuple[float, float, float, float]] = (),
-          font_size: float = FONT_PT, marker_size: float = MARKER_PT,
-          gap: float = GAP_PT, obstacles: Sequence[tuple[float, float]] | np.ndarray = ()
-          ) -> list[Placement]:
+def place(
+    anchors: Sequence[tuple[float, float]] | np.ndarray,
+    texts: Sequence[str],
+    curves: Sequence[Any] = (),
+    frame: tuple[float, float, float, float] | None = None,
+    avoid: Sequence[tuple[float, float, float, float]] = (),
+    font_size: float = FONT_PT,
+    marker_size: float = MARKER_PT,
+    gap: float = GAP_PT,
+    obstacles: Sequence[tuple[float, float]] | np.ndarray = (),
+) -> list[Placement]:
     """One :class:`Placement` per label ``texts[i]`` of the point ``anchors[i]``.
 
     Parameters
@@ -229,12 +249,15 @@ def place(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[s
     markers = np.array([[x - r, y - r, x + r, y + r] for x, y in every]).reshape(-1, 4)
     sizes = [text_size(t, font_size) for t in texts]
     window = _reach(pts, sizes, marker_size, gap)
-    curve = (resample([c for c in curves if len(c)], RESAMPLE_PT, window=window)
-             if window is not None else np.zeros((0, 2)))
+    curve = (
+        resample([c for c in curves if len(c)], RESAMPLE_PT, window=window)
+        if window is not None
+        else np.zeros((0, 2))
+    )
     wt = WEIGHTS
     labels: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
     out: list[Placement] = []
-    for i, (px, py) in enumerate(pts[:len(texts)]):
+    for i, (px, py) in enumerate(pts[: len(texts)]):
         w, h = sizes[i]
         others = np.delete(pts, i, axis=0)
         best, best_score, best_box = (0.0, 0.0, 1, 1), np.inf, np.zeros(4)
@@ -248,8 +271,12 @@ def place(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[s
                 score = wt["label"] * _overlap(box, np.array(labels).reshape(-1, 4))
                 score += wt["marker"] * _overlap(box, markers)
                 if len(curve):
-                    inside = ((curve[:, 0] > box[0]) & (curve[:, 0] < box[2])
-                              & (curve[:, 1] > box[1]) & (curve[:, 1] < box[3]))
+                    inside = (
+                        (curve[:, 0] > box[0])
+                        & (curve[:, 0] < box[2])
+                        & (curve[:, 1] > box[1])
+                        & (curve[:, 1] < box[3])
+                    )
                     score += wt["curve"] * float(inside.sum())
                 if len(others):
                     c = np.array([(box[0] + box[2]) / 2, (box[1] + box[3]) / 2])
@@ -268,21 +295,27 @@ def place(anchors: Sequence[tuple[float, float]] | np.ndarray, texts: Sequence[s
                     best, best_score, best_box = (dx * d, dy * d, dx, dy), score, box
         labels.append(best_box)
         ox, oy, dx, dy = best
-        out.append(Placement((float(ox), float(oy)), (int(dx), int(dy)),
-                             tuple(float(v) for v in best_box)))  # type: ignore[arg-type]
+        out.append(
+            Placement((float(ox), float(oy)), (int(dx), int(dy)), tuple(float(v) for v in best_box))
+        )  # type: ignore[arg-type]
     return out
 
 
-def _reach(pts: np.ndarray, sizes: list[tuple[float, float]], marker_size: float,
-           gap: float) -> tuple[float, float, float, float] | None:
+def _reach(
+    pts: np.ndarray, sizes: list[tuple[float, float]], marker_size: float, gap: float
+) -> tuple[float, float, float, float] | None:
     """A window holding every box tried: each point widened by the largest label size
     and the far distance (only curve samples in it can fall in a box)."""
     pts = pts[np.all(np.isfinite(pts), axis=1)]  # a box about a nan point holds nothing
     if not len(pts):
         return None
     r = max([max(w, h) for w, h in sizes] + [0.0]) + (marker_size / 2 + gap) * max(FAR) + 1.0
-    return (float(pts[:, 0].min() - r), float(pts[:, 1].min() - r),
-            float(pts[:, 0].max() + r), float(pts[:, 1].max() + r))
+    return (
+        float(pts[:, 0].min() - r),
+        float(pts[:, 1].min() - r),
+        float(pts[:, 0].max() + r),
+        float(pts[:, 1].max() + r),
+    )
 
 
 def spec() -> dict[str, Any]:
@@ -297,6 +330,15 @@ def spec() -> dict[str, Any]:
     >>> spec()["offsets"][:2], spec()["weights"]["near"]
     ([[1, 1], [-1, 1]], 300.0)
     """
-    return {"offsets": [list(o) for o in OFFSETS], "order": LABEL_ORDER, "frame": FRAME_PT,
-            "font": FONT_PT, "marker": MARKER_PT, "gap": GAP_PT, "resample": RESAMPLE_PT,
-            "far": list(FAR), "weights": dict(WEIGHTS), "size": dict(SIZE_RULE)}
+    return {
+        "offsets": [list(o) for o in OFFSETS],
+        "order": LABEL_ORDER,
+        "frame": FRAME_PT,
+        "font": FONT_PT,
+        "marker": MARKER_PT,
+        "gap": GAP_PT,
+        "resample": RESAMPLE_PT,
+        "far": list(FAR),
+        "weights": dict(WEIGHTS),
+        "size": dict(SIZE_RULE),
+    }

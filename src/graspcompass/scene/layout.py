@@ -120,7 +120,8 @@ def _numeric(construction: Construction) -> dict[str, Any]:
             if not _symbolic(s.obj):
                 raise ValueError(
                     f"cannot draw {s.name!r}: a value of it is beyond double precision "
-                    "(1.8e308): give the construction's values in other units") from None
+                    "(1.8e308): give the construction's values in other units"
+                ) from None
             raise ValueError(
                 f"cannot draw {s.name!r}: the construction is symbolic ({exc}); substitute "
                 "numbers for the symbols first (Grasp.subs)"
@@ -160,9 +161,14 @@ def roles_of(construction: Construction) -> dict[str, str]:
     return {s.name: getattr(s, "role", "") or "" for s in construction.steps}
 
 
-def view_box(grasp: Grasp | None, objects: dict[str, Any], margin: float = 0.08,
-             factor: float = 3.0, square: bool = True,
-             roles: dict[str, str] | None = None) -> Box:
+def view_box(
+    grasp: Grasp | None,
+    objects: dict[str, Any],
+    margin: float = 0.08,
+    factor: float = 3.0,
+    square: bool = True,
+    roles: dict[str, str] | None = None,
+) -> Box:
     """An automatic view box of the diagram, the one rule of every picture.
 
     It holds O, the contacts, P1x, P2x, O_M, every X_n, Y_n, V_n, the circles
@@ -176,20 +182,29 @@ def view_box(grasp: Grasp | None, objects: dict[str, Any], margin: float = 0.08,
     """
     if roles is None:  # the paper's names stand for their roles (V_n, X_n, Y_n, feet, O_M)
         kinds = {"V": "V", "X": "X", "Y": "Y", "P": "foot"}
-        roles = {name: "midpoint" if name == "O_M" else kinds.get(name[:1], "other")
-                 for name in objects}
-        objects = {k: v for k, v in objects.items()
-                   if not (_is_circle(v) and not k.startswith("circle"))}
+        roles = {
+            name: "midpoint" if name == "O_M" else kinds.get(name[:1], "other") for name in objects
+        }
+        objects = {
+            k: v for k, v in objects.items() if not (_is_circle(v) and not k.startswith("circle"))
+        }
     return _view_box_by_roles(grasp, objects, roles, margin, factor, square)
 
 
 def _is_circle(v: Any) -> bool:
-    return (isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], tuple)
-            and isinstance(v[1], float))
+    return (
+        isinstance(v, tuple) and len(v) == 2 and isinstance(v[0], tuple) and isinstance(v[1], float)
+    )
 
 
-def _view_box_by_roles(grasp: Grasp | None, objects: dict[str, Any], roles: dict[str, str],
-                       margin: float, factor: float, square: bool) -> Box:
+def _view_box_by_roles(
+    grasp: Grasp | None,
+    objects: dict[str, Any],
+    roles: dict[str, str],
+    margin: float,
+    factor: float,
+    square: bool,
+) -> Box:
     pts: list[XY] = [(0.0, 0.0)]
     scale = 0.0
     if grasp is not None:
@@ -237,8 +252,9 @@ def clip_segment(a: XY, b: XY, box: Box) -> tuple[XY, XY] | None:
     return clip(a, (b[0] - a[0], b[1] - a[1]), box, 0.0, 1.0)
 
 
-def clip(p: XY, d: XY, box: Box, t0: float = -math.inf,
-         t1: float = math.inf) -> tuple[XY, XY] | None:
+def clip(
+    p: XY, d: XY, box: Box, t0: float = -math.inf, t1: float = math.inf
+) -> tuple[XY, XY] | None:
     """The part of ``p + t·d`` (``t0 <= t <= t1``) inside ``box`` (Liang-Barsky), or None."""
     xmin, xmax, ymin, ymax = box
     for pi, di, lo, hi in ((p[0], d[0], xmin, xmax), (p[1], d[1], ymin, ymax)):
@@ -269,8 +285,7 @@ def wedge(apex: XY, u: XY, v: XY, length: float, samples: int = 24) -> np.ndarra
     return np.vstack([[apex], arc, [apex]])
 
 
-def group_points(items: Sequence[tuple[str, XY]], tol: float
-                 ) -> list[tuple[tuple[str, ...], XY]]:
+def group_points(items: Sequence[tuple[str, XY]], tol: float) -> list[tuple[tuple[str, ...], XY]]:
     """Names of points closer than ``tol`` to each other, with the first one's place.
 
     Examples

@@ -20,19 +20,39 @@ __all__ = ["PALETTE", "rgb"]
 #: Role -> colour (hex).  The circles are matplotlib's first, third, fifth and fourth
 #: default colours; the envelope a dark blue with a light blue filling.
 PALETTE: dict[str, str] = {
-    "axis": "#404040", "side": "#b5651d", "perp": "#6c757d", "length": "#6c757d",
-    "circle1": "#1f77b4", "circle2": "#2ca02c", "circle3": "#9467bd", "circle4": "#d62728",
-    "envelope": "#0b1f4b", "fill": "#9ecae1", "cone": "#f4a261", "object": "#7f7f7f",
-    "objectfill": "#f2f2f2", "point": "#111111", "computer": "#ffd60a",
+    "axis": "#404040",
+    "side": "#b5651d",
+    "perp": "#6c757d",
+    "length": "#6c757d",
+    "circle1": "#1f77b4",
+    "circle2": "#2ca02c",
+    "circle3": "#9467bd",
+    "circle4": "#d62728",
+    "envelope": "#0b1f4b",
+    "fill": "#9ecae1",
+    "cone": "#f4a261",
+    "object": "#7f7f7f",
+    "objectfill": "#f2f2f2",
+    "point": "#111111",
+    "computer": "#ffd60a",
     "highlight": "#e63946",
     # the explorers (the web page and the matplotlib one): break points, the direction of
     # the external force and its point H on the envelope, the worst and best orientation,
     # the draggable contacts, the axes' ticks, the message of an invalid grasp
-    "breakpoint": "#555555", "breakpointfill": "#ffffff", "force": "#333333",
-    "marker": "#111111", "markerfill": "#ffd166",
-    "worst": "#d62728", "best": "#2ca02c", "contact": "#0b1f4b", "contactfill": "#ffb703",
-    "contacthover": "#fb8500", "tick": "#c8c8c8", "ticklabel": "#707070",
-    "error": "#b00020", "errorfill": "#fff3f3",
+    "breakpoint": "#555555",
+    "breakpointfill": "#ffffff",
+    "force": "#333333",
+    "marker": "#111111",
+    "markerfill": "#ffd166",
+    "worst": "#d62728",
+    "best": "#2ca02c",
+    "contact": "#0b1f4b",
+    "contactfill": "#ffb703",
+    "contacthover": "#fb8500",
+    "tick": "#c8c8c8",
+    "ticklabel": "#707070",
+    "error": "#b00020",
+    "errorfill": "#fff3f3",
 }
 
 

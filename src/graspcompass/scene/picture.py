@@ -37,8 +37,21 @@ if TYPE_CHECKING:
     from ..construction.protocol import Construction
     from ..grasp import Grasp
 
-__all__ = ["COLORS", "INSET_PT", "INSET_SHRINK", "Arc", "Inset", "Instrument", "Label", "Scene",
-           "build_scene", "exact_text", "group_points", "label_tex", "scene_of"]
+__all__ = [
+    "COLORS",
+    "INSET_PT",
+    "INSET_SHRINK",
+    "Arc",
+    "Inset",
+    "Instrument",
+    "Label",
+    "Scene",
+    "build_scene",
+    "exact_text",
+    "group_points",
+    "label_tex",
+    "scene_of",
+]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -179,27 +192,42 @@ class Scene:
             kept = tuple(n for n in names if ok(n))
             if kept:
                 pts.append((kept, xy))
+
         def cut_labels(labs: tuple[Label, ...]) -> tuple[Label, ...]:
             out = []
             for lab in labs:
                 keep = [i for i, n in enumerate(lab.names) if ok(n)]
                 if keep:
-                    out.append(replace(lab, names=tuple(lab.names[i] for i in keep),
-                                       groups=tuple(lab.groups[i] for i in keep)
-                                       if lab.groups else ()))
+                    out.append(
+                        replace(
+                            lab,
+                            names=tuple(lab.names[i] for i in keep),
+                            groups=tuple(lab.groups[i] for i in keep) if lab.groups else (),
+                        )
+                    )
             return tuple(out)
 
         labels = cut_labels(self.labels)
-        inset = (None if self.inset is None else
-                 replace(self.inset, labels=cut_labels(self.inset.labels),
-                         main=cut_labels(self.inset.main)))
+        inset = (
+            None
+            if self.inset is None
+            else replace(
+                self.inset, labels=cut_labels(self.inset.labels), main=cut_labels(self.inset.main)
+            )
+        )
         cones = tuple(c for i, c in enumerate(self.cones, start=1) if ok(f"cone{i}"))
-        return replace(cut, lines=tuple(x for x in self.lines if ok(x[0])),
-                       lengths=tuple(x for x in self.lengths if ok(x[0])),
-                       circles=tuple(x for x in self.circles if ok(x[0])),
-                       points=tuple(pts), labels=labels, cones=cones, inset=inset,
-                       instruments=tuple(x for x in self.instruments if ok(x.step)),
-                       envelope=self.envelope if ok("envelope") else ())
+        return replace(
+            cut,
+            lines=tuple(x for x in self.lines if ok(x[0])),
+            lengths=tuple(x for x in self.lengths if ok(x[0])),
+            circles=tuple(x for x in self.circles if ok(x[0])),
+            points=tuple(pts),
+            labels=labels,
+            cones=cones,
+            inset=inset,
+            instruments=tuple(x for x in self.instruments if ok(x.step)),
+            envelope=self.envelope if ok("envelope") else (),
+        )
 
 
 def _f(v: sp.Expr) -> float:
@@ -228,13 +256,23 @@ def _envelope(env: Any) -> tuple[Arc, ...]:
             continue
         vx, vy = V[a.n]
         start = math.degrees(2 * t0 - math.pi - math.atan2(vy, vx))
-        arcs.append(Arc(a.n, s, e, (vx / 2, vy / 2), math.hypot(vx, vy) / 2,
-                        (start + 180.0) % 360.0 - 180.0, math.degrees(2 * (t1 - t0))))
+        arcs.append(
+            Arc(
+                a.n,
+                s,
+                e,
+                (vx / 2, vy / 2),
+                math.hypot(vx, vy) / 2,
+                (start + 180.0) % 360.0 - 180.0,
+                math.degrees(2 * (t1 - t0)),
+            )
+        )
     return tuple(arcs)
 
 
-def build_scene(construction: Construction, title: str | None = None,
-                box: Box | None = None) -> Scene:
+def build_scene(
+    construction: Construction, title: str | None = None, box: Box | None = None
+) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
     ``box`` ``(xmin, xmax, ymin, ymax)`` frames it (default: the one rule
@@ -266,8 +304,7 @@ def build_scene(construction: Construction, title: str | None = None,
         if kind == "point":
             pts.append((s.name, v))
         elif kind == "line":
-            role = ("axis" if s.role == "axis" else
-                    "perp" if s.op == "perpendicular" else "side")
+            role = "axis" if s.role == "axis" else "perp" if s.op == "perpendicular" else "side"
             seg = layout.clip(v[0], v[1], box)
             if seg is not None:
                 lines.append((s.name, role, *seg))
@@ -295,20 +332,38 @@ def build_scene(construction: Construction, title: str | None = None,
                 poly = wedge(num[apex], num[sa][1], num[sb][1], reach, samples=17)
                 cones.append(tuple((float(x), float(y)) for x, y in poly))
                 made[f"cone{len(cones)}"] = max(made[sa], made[sb])
-    inside = [(n, xy) for n, xy in pts
-              if box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]]
+    inside = [(n, xy) for n, xy in pts if box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]]
     small = {n for n, r in roles.items() if r == "break_point"}
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
     grouped += [((n,), xy) for n, xy in inside if n in small]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
     # the break points' markers are avoided, as in the matplotlib drawing (figure.py)
     cusps = [a.start for a in envelope]
-    labels, inset = _labels(box, [g for g in grouped if g[0][0] not in small], lines, lengths,
-                            circles, envelope,
-                            [xy for names, xy in grouped if names[0] in small] + cusps)
-    return Scene(box, tuple(lines), tuple(lengths), tuple(circles), tuple(grouped), envelope,
-                 tuple(cones), outline, text, frozenset(small), labels, made, inset=inset,
-                 instruments=instruments_of(construction, num, box))
+    labels, inset = _labels(
+        box,
+        [g for g in grouped if g[0][0] not in small],
+        lines,
+        lengths,
+        circles,
+        envelope,
+        [xy for names, xy in grouped if names[0] in small] + cusps,
+    )
+    return Scene(
+        box,
+        tuple(lines),
+        tuple(lengths),
+        tuple(circles),
+        tuple(grouped),
+        envelope,
+        tuple(cones),
+        outline,
+        text,
+        frozenset(small),
+        labels,
+        made,
+        inset=inset,
+        instruments=instruments_of(construction, num, box),
+    )
 
 
 _SCENES: dict[int, tuple[Any, Scene]] = {}
@@ -336,13 +391,18 @@ def _arc_points(a: Arc) -> np.ndarray:
     if a.n == 0:
         return np.array([a.start, a.end])
     t = np.radians(a.start_angle + a.delta * np.linspace(0.0, 1.0, max(2, int(abs(a.delta)))))
-    return np.column_stack([a.center[0] + a.radius * np.cos(t),
-                            a.center[1] + a.radius * np.sin(t)])
+    return np.column_stack([a.center[0] + a.radius * np.cos(t), a.center[1] + a.radius * np.sin(t)])
 
 
-def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any],
-            lengths: list[Any], circles: list[Any], envelope: tuple[Arc, ...],
-            obstacles: list[XY]) -> tuple[tuple[Label, ...], Inset | None]:
+def _labels(
+    box: Box,
+    groups: list[tuple[tuple[str, ...], XY]],
+    lines: list[Any],
+    lengths: list[Any],
+    circles: list[Any],
+    envelope: tuple[Arc, ...],
+    obstacles: list[XY],
+) -> tuple[tuple[Label, ...], Inset | None]:
     """The labels of ``groups`` in the main frame and, where points crowd, in an inset.
 
     The main frame's labels name every point (a painter without the inset reads
@@ -356,8 +416,9 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
     s = side / (box[1] - box[0])
     t = np.linspace(0, 2 * np.pi, 100)
     curves = [np.asarray([a, b], dtype=float) for _, _, a, b in lines]
-    curves += [np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)])
-               for _, _, c, r in circles]
+    curves += [
+        np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)]) for _, _, c, r in circles
+    ]
     curves += [np.asarray([a, b], dtype=float) for _, a, b in lengths]
     if envelope:
         curves.append(np.vstack([_arc_points(a) for a in envelope]))
@@ -371,45 +432,77 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
     region = fitting.crowded_region(to_pt(anchors, box, s), to_pt(obstacles, box, s), side)
     within = [False] * len(order)
     if region is not None:
-        within = [region[0] <= x <= region[2] and region[1] <= y <= region[3]
-                  for x, y in to_pt(anchors, box, s)]
+        within = [
+            region[0] <= x <= region[2] and region[1] <= y <= region[3]
+            for x, y in to_pt(anchors, box, s)
+        ]
 
-    def placed(frame: Box, scale: float, keep: list[bool], optional: list[bool],
-               height: float, avoid: tuple[Label, ...] = ()) -> tuple[Label, ...]:
+    def placed(
+        frame: Box,
+        scale: float,
+        keep: list[bool],
+        optional: list[bool],
+        height: float,
+        avoid: tuple[Label, ...] = (),
+    ) -> tuple[Label, ...]:
         idx = [i for i, k in enumerate(keep) if k]
         # groups closer than a marker are one place to the eye: one label names them all
-        near = layout.group_points([(str(i), (anchors[i][0] * scale, anchors[i][1] * scale))
-                                    for i in idx], labelling.MARKER_PT)
+        near = layout.group_points(
+            [(str(i), (anchors[i][0] * scale, anchors[i][1] * scale)) for i in idx],
+            labelling.MARKER_PT,
+        )
         joined = {int(g[0]): [int(j) for j in g] for g, _ in near}
         idx = [i for i in idx if i in joined]
         names_of = {i: tuple(n for j in joined[i] for n in order[j][0]) for i in idx}
-        group_of = {i: tuple(k for k, j in enumerate(joined[i]) for _ in order[j][0])
-                    for i in idx}
-        text_of = {i: "$" + ", ".join(" = ".join(label_tex(n) for n in order[j][0])
-                                      for j in joined[i]) + "$" for i in idx}
+        group_of = {i: tuple(k for k, j in enumerate(joined[i]) for _ in order[j][0]) for i in idx}
+        text_of = {
+            i: "$"
+            + ", ".join(" = ".join(label_tex(n) for n in order[j][0]) for j in joined[i])
+            + "$"
+            for i in idx
+        }
         # the other points of a label's group: markers no label covers
         members = [anchors[j] for i in idx for j in joined[i] if j != i]
-        fits = fitting.fit(to_pt([anchors[i] for i in idx], frame, scale),
-                           [text_of[i] for i in idx],
-                           curves=[to_pt(c, frame, scale) for c in curves],
-                           frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
-                           obstacles=np.vstack([to_pt(obstacles, frame, scale),
-                                                to_pt(members, frame, scale)]),
-                           optional=[optional[i] for i in idx],
-                           avoid=[((b[0] - frame[0]) * scale, (b[1] - frame[2]) * scale,
-                                   (b[2] - frame[0]) * scale, (b[3] - frame[2]) * scale)
-                                  for b in (lab.box for lab in avoid)])
+        fits = fitting.fit(
+            to_pt([anchors[i] for i in idx], frame, scale),
+            [text_of[i] for i in idx],
+            curves=[to_pt(c, frame, scale) for c in curves],
+            frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
+            obstacles=np.vstack([to_pt(obstacles, frame, scale), to_pt(members, frame, scale)]),
+            optional=[optional[i] for i in idx],
+            avoid=[
+                (
+                    (b[0] - frame[0]) * scale,
+                    (b[1] - frame[2]) * scale,
+                    (b[2] - frame[0]) * scale,
+                    (b[3] - frame[2]) * scale,
+                )
+                for b in (lab.box for lab in avoid)
+            ],
+        )
         out = []
         broken.append(sum(p is not None and not p.ok for p in fits))
         for i, p in zip(idx, fits):
             if p is None:
                 continue
             xy, (x0, y0, x1, y1) = order[i][1], p.box
-            out.append(Label(names_of[i],
-                             (xy[0] + p.offset[0] / scale, xy[1] + p.offset[1] / scale),
-                             p.direction, (frame[0] + x0 / scale, frame[2] + y0 / scale,
-                                           frame[0] + x1 / scale, frame[2] + y1 / scale),
-                             p.offset, xy, p.leader, group_of[i]))
+            out.append(
+                Label(
+                    names_of[i],
+                    (xy[0] + p.offset[0] / scale, xy[1] + p.offset[1] / scale),
+                    p.direction,
+                    (
+                        frame[0] + x0 / scale,
+                        frame[2] + y0 / scale,
+                        frame[0] + x1 / scale,
+                        frame[2] + y1 / scale,
+                    ),
+                    p.offset,
+                    xy,
+                    p.leader,
+                    group_of[i],
+                )
+            )
         return tuple(out)
 
     broken: list[int] = []  # per call of placed: how many labels break a rule
@@ -423,8 +516,7 @@ def _labels(box: Box, groups: list[tuple[tuple[str, ...], XY]], lines: list[Any]
     rest = [not (within[i] and order[i][0][0] not in done) for i in range(len(order))]
     rest = [not r for r in rest]
     more = placed(box, s, rest, [False] * len(order), (box[3] - box[2]) * s, avoid=beside)
-    main = tuple(sorted(beside + more,
-                        key=lambda lab: labelling.label_order(lab.names)))
+    main = tuple(sorted(beside + more, key=lambda lab: labelling.label_order(lab.names)))
     # the inset: the region, zoomed further (about the points left to it) while some
     # label breaks a rule there, as long as it holds every point left to it; a point
     # named in the whole view is named in the inset only where a place keeps every rule

@@ -59,6 +59,13 @@ __all__ = [
 ]
 
 _HOMES = {name: "core" for name in __all__}
-_HOMES.update({"MissingUnitError": "units", "UnitError": "units", "UnknownUnitError": "units",
-               "core": "core", "units": "units"})
+_HOMES.update(
+    {
+        "MissingUnitError": "units",
+        "UnitError": "units",
+        "UnknownUnitError": "units",
+        "core": "core",
+        "units": "units",
+    }
+)
 __getattr__, __dir__ = attach(__name__, _HOMES)

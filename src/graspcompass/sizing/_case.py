@@ -129,15 +129,27 @@ def _world(grasp: WorldGrasp | Grasp) -> WorldGrasp:
     if isinstance(grasp, WorldGrasp):
         return grasp
     if not isinstance(grasp, Grasp):
-        raise WrongTypeError("grasp: expected a WorldGrasp (graspcompass.place_grasp) or a "
-                             f"Grasp, got {type(grasp).__name__}")
+        raise WrongTypeError(
+            "grasp: expected a WorldGrasp (graspcompass.place_grasp) or a "
+            f"Grasp, got {type(grasp).__name__}"
+        )
     if any(v.free_symbols for v in grasp.params.values() if isinstance(v, sp.Basic)):
-        raise SizingError("grasp: a symbolic grasp has no size in newtons; substitute values "
-                          "first (Grasp.subs)")
+        raise SizingError(
+            "grasp: a symbolic grasp has no size in newtons; substitute values first (Grasp.subs)"
+        )
     g = grasp
     zero, one = sp.Integer(0), sp.Integer(1)
-    return WorldGrasp(g, (zero, zero), (one, zero), (zero, one), zero, ("P1", "P2"),
-                      ((g.x1, g.y), (-g.x2, g.y)), ((-g.s1, -g.c1), (g.s2, -g.c2)), "P1")
+    return WorldGrasp(
+        g,
+        (zero, zero),
+        (one, zero),
+        (zero, one),
+        zero,
+        ("P1", "P2"),
+        ((g.x1, g.y), (-g.x2, g.y)),
+        ((-g.s1, -g.c1), (g.s2, -g.c2)),
+        "P1",
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -155,8 +167,16 @@ class _Case:
     per: str
 
 
-def _read_case(wg: WorldGrasp | None, mass: Any, g: Any, gravity: Any, tilt: Any, accel: Any,
-               safety: Any, per: str) -> _Case:
+def _read_case(
+    wg: WorldGrasp | None,
+    mass: Any,
+    g: Any,
+    gravity: Any,
+    tilt: Any,
+    accel: Any,
+    safety: Any,
+    per: str,
+) -> _Case:
     """The checked case; ``wg`` None: a load alone, in floats (the planner's)."""
     if per not in PER:
         raise SizingError(f"per: expected 'jaw' or 'total', got {per!r}")
@@ -168,8 +188,11 @@ def _read_case(wg: WorldGrasp | None, mass: Any, g: Any, gravity: Any, tilt: Any
     A: Any = sp.Integer(0)
     avec = None
     if accel is not None:
-        if isinstance(accel, (str, int, float)) or isinstance(accel, sp.Basic) or not hasattr(
-                accel, "__len__"):
+        if (
+            isinstance(accel, (str, int, float))
+            or isinstance(accel, sp.Basic)
+            or not hasattr(accel, "__len__")
+        ):
             A = _positive(acceleration_value(accel, "accel"), "the acceleration bound", False)
         else:
             ax, ay = _pair(accel, "accel")
@@ -179,29 +202,42 @@ def _read_case(wg: WorldGrasp | None, mass: Any, g: Any, gravity: Any, tilt: Any
         gx, gy = _pair(gravity, "gravity")
         gdir = (real_value(gx, "gravity x"), real_value(gy, "gravity y"))
     elif avec is not None:
-        raise SizingError("accel: an acceleration vector needs the gravity direction "
-                          "(gravity=...), in the same frame as the contacts")
+        raise SizingError(
+            "accel: an acceleration vector needs the gravity direction "
+            "(gravity=...), in the same frame as the contacts"
+        )
     t = None
     if tilt is not None:
         if gravity is None:
             raise SizingError("tilt: a range of tilts needs the gravity direction (gravity=...)")
         t = _positive(angle_value(tilt, "tilt"), "the tilt", strict=False)
     raw = [m, gv, sf, A, *(avec or ()), *(gdir or ()), *(() if t is None else (t,))]
-    exact = wg is not None and wg.exact and not any(
-        isinstance(v, float) or has_float(v) for v in raw)
-    if exact and wg is not None and not _within_exact_budget([*raw, *wg.grasp.S,
-                                                              *wg.grasp.C]):
+    exact = (
+        wg is not None and wg.exact and not any(isinstance(v, float) or has_float(v) for v in raw)
+    )
+    if exact and wg is not None and not _within_exact_budget([*raw, *wg.grasp.S, *wg.grasp.C]):
         exact = False  # square roots of such numbers would factor them: the float path
     if gdir is not None:
         n2 = gdir[0] ** 2 + gdir[1] ** 2
         if _cmp(n2, 0, exact) <= 0:
             raise SizingError("gravity: the direction must not be the zero vector")
         n = _sqrt(n2, exact) if exact else math.sqrt(float(n2))
-        gdir = (canon(gdir[0] / n), canon(gdir[1] / n)) if exact else (
-            float(gdir[0]) / n, float(gdir[1]) / n)
+        gdir = (
+            (canon(gdir[0] / n), canon(gdir[1] / n))
+            if exact
+            else (float(gdir[0]) / n, float(gdir[1]) / n)
+        )
     if t is not None and _cmp(t, sp.pi, exact) >= 0:
         t = "any"  # a tilt of ±180° or more reaches every orientation
     conv = (lambda v: v) if exact else float
-    return _Case(exact, conv(m), conv(gv), conv(sf), conv(A),
-                 None if avec is None else (conv(avec[0]), conv(avec[1])), gdir,
-                 t if t in (None, "any") else conv(t), per)
+    return _Case(
+        exact,
+        conv(m),
+        conv(gv),
+        conv(sf),
+        conv(A),
+        None if avec is None else (conv(avec[0]), conv(avec[1])),
+        gdir,
+        t if t in (None, "any") else conv(t),
+        per,
+    )

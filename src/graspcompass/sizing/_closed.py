@@ -35,8 +35,7 @@ from ._case import Vec, _Case, _cmp, _sqrt
 __all__: list[str] = []
 
 
-def _arc_max(S: Any, C: Any, r: Any, w: Vec, wn: Any, tau: Any, exact: bool
-             ) -> tuple[Any, Any]:
+def _arc_max(S: Any, C: Any, r: Any, w: Vec, wn: Any, tau: Any, exact: bool) -> tuple[Any, Any]:
     """``max over ρ in [−τ, τ] of V·R_ρ w`` and the maximising ρ (τ None: any ρ).
 
     R_ρ turns counter-clockwise; ``V·R_ρ w = cos ρ (V·w) + sin ρ (V·Jw)`` with
@@ -69,19 +68,25 @@ def _evaluate(wg: WorldGrasp, case: _Case, any_orientation: bool) -> dict[str, A
         S, C = [float(v) for v in Sf], [float(v) for v in Cf]
     D = gr.D if exact else float(gr.D)
     m, A = case.mass, case.A
-    gdir_world = case.gravity if case.gravity is not None else (
-        (sp.Integer(0), sp.Integer(-1)) if exact else (0.0, -1.0))
+    gdir_world = (
+        case.gravity
+        if case.gravity is not None
+        else ((sp.Integer(0), sp.Integer(-1)) if exact else (0.0, -1.0))
+    )
     w_world = (case.g * gdir_world[0], case.g * gdir_world[1])
     if case.accel is not None:
         w_world = (w_world[0] - case.accel[0], w_world[1] - case.accel[1])
     w = _to_paper(wg, w_world, exact)
     ghat = _to_paper(wg, gdir_world, exact)
     wn = _sqrt(w[0] ** 2 + w[1] ** 2, exact) if exact else math.hypot(*w)
-    tau = None if (any_orientation or case.tilt == "any" or case.gravity is None) else (
-        case.tilt if case.tilt is not None else (sp.Integer(0) if exact else 0.0))
+    tau = (
+        None
+        if (any_orientation or case.tilt == "any" or case.gravity is None)
+        else (case.tilt if case.tilt is not None else (sp.Integer(0) if exact else 0.0))
+    )
     vals, rhos, rs = [], [], []
     for Sn, Cn in zip(S, C):
-        r = _sqrt(Sn ** 2 + Cn ** 2, exact) if exact else math.hypot(Sn, Cn)
+        r = _sqrt(Sn**2 + Cn**2, exact) if exact else math.hypot(Sn, Cn)
         top, rho = _arc_max(Sn, Cn, r, w, wn, tau, exact)
         vals.append(top + A * r)
         rhos.append(rho)
@@ -105,10 +110,21 @@ def _evaluate(wg: WorldGrasp, case: _Case, any_orientation: bool) -> dict[str, A
     load = (rw[0] + float(A) * u[0], rw[1] + float(A) * u[1])
     gh = (float(ghat[0]), float(ghat[1]))
     grav = (cr * gh[0] - sr * gh[1], sr * gh[0] + cr * gh[1])
-    return {"per_jaw": per_jaw, "side": best + 1, "positive": positive,
-            "load": _world_vec(wg, load), "gravity": _world_vec(wg, grav),
-            "accel": _world_vec(wg, (-u[0], -u[1])) if float(A) > 0 and rf > 0 else None,
-            "S": S, "C": C, "D": D, "w": w, "ghat": ghat, "rs": rs, "tau": tau}
+    return {
+        "per_jaw": per_jaw,
+        "side": best + 1,
+        "positive": positive,
+        "load": _world_vec(wg, load),
+        "gravity": _world_vec(wg, grav),
+        "accel": _world_vec(wg, (-u[0], -u[1])) if float(A) > 0 and rf > 0 else None,
+        "S": S,
+        "C": C,
+        "D": D,
+        "w": w,
+        "ghat": ghat,
+        "rs": rs,
+        "tau": tau,
+    }
 
 
 def _to_paper(wg: WorldGrasp, v: Vec, exact: bool) -> Vec:
@@ -116,8 +132,10 @@ def _to_paper(wg: WorldGrasp, v: Vec, exact: bool) -> Vec:
     if exact:
         return (canon(v[0] * ex[0] + v[1] * ex[1]), canon(v[0] * ey[0] + v[1] * ey[1]))
     exf, eyf = (float(ex[0]), float(ex[1])), (float(ey[0]), float(ey[1]))
-    return (float(v[0]) * exf[0] + float(v[1]) * exf[1],
-            float(v[0]) * eyf[0] + float(v[1]) * eyf[1])
+    return (
+        float(v[0]) * exf[0] + float(v[1]) * exf[1],
+        float(v[0]) * eyf[0] + float(v[1]) * eyf[1],
+    )
 
 
 def _world_vec(wg: WorldGrasp, v: tuple[float, float]) -> tuple[float, float]:
@@ -187,8 +205,11 @@ def _need_float(wg: WorldGrasp, case: _Case, S: np.ndarray, C: np.ndarray, D: fl
         w_world = (w_world[0] - case.accel[0], w_world[1] - case.accel[1])
     w = _to_paper(wg, w_world, False)
     wn = math.hypot(*w)
-    tau = None if (case.tilt == "any" or case.gravity is None) else (
-        case.tilt if case.tilt is not None else 0.0)
+    tau = (
+        None
+        if (case.tilt == "any" or case.gravity is None)
+        else (case.tilt if case.tilt is not None else 0.0)
+    )
     top = -math.inf
     for Sn, Cn in zip(S.tolist(), C.tolist()):
         r = math.hypot(Sn, Cn)

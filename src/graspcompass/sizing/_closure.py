@@ -62,8 +62,9 @@ class ForceClosure:
     message: str
 
 
-def force_closure(contacts: Any, normals: Any, mu: Any, *,
-                  names: tuple[str, str] = ("A", "B")) -> ForceClosure:
+def force_closure(
+    contacts: Any, normals: Any, mu: Any, *, names: tuple[str, str] = ("A", "B")
+) -> ForceClosure:
     """The force-closure verdict of two contacts with friction (condition (1), Fig. 2).
 
     Two point contacts with friction can resist every load, given enough
@@ -92,12 +93,18 @@ def force_closure(contacts: Any, normals: Any, mu: Any, *,
     """
     pts = [_pair(p, f"contact {n}") for p, n in zip(_pair(contacts, "contacts"), names)]
     nrm = [_pair(v, f"normal of contact {n}") for v, n in zip(_pair(normals, "normals"), names)]
-    pts = [(real_value(x, f"contact {n} x"), real_value(y, f"contact {n} y"))
-           for (x, y), n in zip(pts, names)]
-    nrm = [(real_value(x, f"normal of contact {n} x"), real_value(y, f"normal of contact {n} y"))
-           for (x, y), n in zip(nrm, names)]
-    mus = [_positive(real_value(v, f"mu of contact {n}"), f"the friction of contact {n}")
-           for v, n in zip(_pair(mu, "mu"), names)]
+    pts = [
+        (real_value(x, f"contact {n} x"), real_value(y, f"contact {n} y"))
+        for (x, y), n in zip(pts, names)
+    ]
+    nrm = [
+        (real_value(x, f"normal of contact {n} x"), real_value(y, f"normal of contact {n} y"))
+        for (x, y), n in zip(nrm, names)
+    ]
+    mus = [
+        _positive(real_value(v, f"mu of contact {n}"), f"the friction of contact {n}")
+        for v, n in zip(_pair(mu, "mu"), names)
+    ]
     exact = not any(isinstance(v, float) for v in [*sum(pts, ()), *sum(nrm, ()), *mus])
     holds, angles, needs, why = True, [], [], ""
     for i in (0, 1):
@@ -105,8 +112,7 @@ def force_closure(contacts: Any, normals: Any, mu: Any, *,
         d = (q[0] - p[0], q[1] - p[1])
         dot = n[0] * d[0] + n[1] * d[1]
         cross = n[0] * d[1] - n[1] * d[0]
-        if _cmp(n[0] ** 2 + n[1] ** 2, 0, exact) <= 0 or _cmp(d[0] ** 2 + d[1] ** 2, 0,
-                                                               exact) <= 0:
+        if _cmp(n[0] ** 2 + n[1] ** 2, 0, exact) <= 0 or _cmp(d[0] ** 2 + d[1] ** 2, 0, exact) <= 0:
             raise SizingError(f"contact {names[i]}: a zero normal or coincident contacts")
         ang = math.degrees(math.atan2(abs(float(cross)), float(dot)))
         angles.append(ang)
@@ -115,16 +121,25 @@ def force_closure(contacts: Any, normals: Any, mu: Any, *,
         if not ok and holds:
             holds = False
             xi = math.degrees(math.atan(float(mus[i])))
-            why = (f"contact {names[i]} at ({_f(p[0])}, {_f(p[1])}): its friction cone "
-                   f"(μ = {_f(mus[i])}, half angle {xi:.4g}°) does not contain contact "
-                   f"{names[1 - i]}, the normal makes {ang:.4g}° with the line to it")
-            why += (f"; force closure needs μ > {needs[-1]:.4g} there" if ang < 90 else
-                    "; no friction suffices (the normal points away from the other contact)")
-    msg = ("force-closure: each friction cone contains the other contact (condition (1)); "
-           "enough squeeze holds the part against any load" if holds else
-           f"not force-closure: squeezing harder cannot hold this part: {why}")
-    return ForceClosure(holds, (angles[0], angles[1]), (needs[0], needs[1]),
-                        (str(names[0]), str(names[1])), msg)
+            why = (
+                f"contact {names[i]} at ({_f(p[0])}, {_f(p[1])}): its friction cone "
+                f"(μ = {_f(mus[i])}, half angle {xi:.4g}°) does not contain contact "
+                f"{names[1 - i]}, the normal makes {ang:.4g}° with the line to it"
+            )
+            why += (
+                f"; force closure needs μ > {needs[-1]:.4g} there"
+                if ang < 90
+                else "; no friction suffices (the normal points away from the other contact)"
+            )
+    msg = (
+        "force-closure: each friction cone contains the other contact (condition (1)); "
+        "enough squeeze holds the part against any load"
+        if holds
+        else f"not force-closure: squeezing harder cannot hold this part: {why}"
+    )
+    return ForceClosure(
+        holds, (angles[0], angles[1]), (needs[0], needs[1]), (str(names[0]), str(names[1])), msg
+    )
 
 
 @dataclasses.dataclass(frozen=True)
@@ -158,9 +173,18 @@ class LeastMu:
     message: str
 
 
-def least_mu(grasp: WorldGrasp | Grasp, force_limit: Any, mass: Any, *, g: Any = None,
-             gravity: Any = None, tilt: Any = None, accel: Any = None, safety: Any = 1,
-             per: str = "jaw") -> LeastMu:
+def least_mu(
+    grasp: WorldGrasp | Grasp,
+    force_limit: Any,
+    mass: Any,
+    *,
+    g: Any = None,
+    gravity: Any = None,
+    tilt: Any = None,
+    accel: Any = None,
+    safety: Any = 1,
+    per: str = "jaw",
+) -> LeastMu:
     """The least friction coefficient, the same at both pads, for which ``force_limit`` suffices.
 
     The squeeze needed (as :func:`size_gripper` computes it for the case) falls
@@ -194,12 +218,16 @@ def least_mu(grasp: WorldGrasp | Grasp, force_limit: Any, mass: Any, *, g: Any =
     x1, x2, y, p1, p2 = (float(v) for v in (gr.x1, gr.x2, gr.y, gr.phi1, gr.phi2))
     xi_fc = max(abs(p1 - math.pi / 2), abs(p2 - math.pi / 2))
     fcase = dataclasses.replace(
-        case, exact=False, mass=float(case.mass), g=float(case.g), safety=float(case.safety),
+        case,
+        exact=False,
+        mass=float(case.mass),
+        g=float(case.g),
+        safety=float(case.safety),
         A=float(case.A),
         accel=None if case.accel is None else (float(case.accel[0]), float(case.accel[1])),
-        gravity=None if case.gravity is None else (float(case.gravity[0]),
-                                                   float(case.gravity[1])),
-        tilt=case.tilt if case.tilt in (None, "any") else float(case.tilt))
+        gravity=None if case.gravity is None else (float(case.gravity[0]), float(case.gravity[1])),
+        tilt=case.tilt if case.tilt in (None, "any") else float(case.tilt),
+    )
 
     def need(mu: float) -> float:
         S, C = _closed_form_many(x1, x2, y, p1, p2, mu, mu)
@@ -210,9 +238,15 @@ def least_mu(grasp: WorldGrasp | Grasp, force_limit: Any, mass: Any, *, g: Any =
     mu_fc = math.tan(xi_fc)
     what = "per jaw" if per == "jaw" else "total"
     if at_inf > lim:
-        return LeastMu(None, mu_fc, at_inf, lim, per,
-                       f"no friction suffices: even with infinite friction the part needs "
-                       f"{at_inf:.4g} N {what}, above the limit {lim:.4g} N")
+        return LeastMu(
+            None,
+            mu_fc,
+            at_inf,
+            lim,
+            per,
+            f"no friction suffices: even with infinite friction the part needs "
+            f"{at_inf:.4g} N {what}, above the limit {lim:.4g} N",
+        )
     lo, hi = xi_fc, math.pi / 2
     for _ in range(200):
         mid = 0.5 * (lo + hi)
@@ -224,13 +258,25 @@ def least_mu(grasp: WorldGrasp | Grasp, force_limit: Any, mass: Any, *, g: Any =
             lo = mid
     mu = math.tan(hi)
     if hi - xi_fc <= 1e-12:  # the squeeze stays below the limit down to force closure
-        return LeastMu(mu_fc, mu_fc, at_inf, lim, per,
-                       f"any μ above the force-closure bound μ > {mu_fc:.6g} (both pads) "
-                       f"makes {lim:.4g} N {what} suffice for this case")
-    return LeastMu(mu, mu_fc, at_inf, lim, per,
-                   f"μ >= {mu:.6g} at both pads makes {lim:.4g} N {what} suffice "
-                   f"(force closure needs μ > {mu_fc:.4g}; with infinite friction "
-                   f"{at_inf:.4g} N {what})")
+        return LeastMu(
+            mu_fc,
+            mu_fc,
+            at_inf,
+            lim,
+            per,
+            f"any μ above the force-closure bound μ > {mu_fc:.6g} (both pads) "
+            f"makes {lim:.4g} N {what} suffice for this case",
+        )
+    return LeastMu(
+        mu,
+        mu_fc,
+        at_inf,
+        lim,
+        per,
+        f"μ >= {mu:.6g} at both pads makes {lim:.4g} N {what} suffice "
+        f"(force closure needs μ > {mu_fc:.4g}; with infinite friction "
+        f"{at_inf:.4g} N {what})",
+    )
 
 
 # public, documented and pickled as graspcompass.sizing.core's (which re-exports them)

@@ -37,20 +37,32 @@ def _tan_sides(s1: Any, c1: Any, s2: Any, c2: Any, mu1: Any, mu2: Any) -> tuple[
     return tuple(out)
 
 
-def _closed_form_many(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any
-                      ) -> tuple[np.ndarray, np.ndarray]:
+def _closed_form_many(
+    x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any
+) -> tuple[np.ndarray, np.ndarray]:
     """S_n, C_n (eqs. (28)-(39)) of many grasps in double precision, shape (..., 4)."""
-    t1, t2, t3, t4 = _tan_sides(np.sin(phi1), np.cos(phi1), np.sin(phi2), np.cos(phi2),
-                                mu1, mu2)
+    t1, t2, t3, t4 = _tan_sides(np.sin(phi1), np.cos(phi1), np.sin(phi2), np.cos(phi2), mu1, mu2)
     h = (x1 + x2) / 2
     S = np.stack([-h + y * t1, h - y * t2, -h + y * t3, h - y * t4], axis=-1)
     C = np.stack([x2 * t1, x1 * t2, x2 * t3, x1 * t4], axis=-1)
     return S, C
 
 
-def worst_squeeze_many(x1: Any, x2: Any, y: Any, phi1: Any, phi2: Any, mu1: Any, mu2: Any,
-                       mass: Any, *, g: float = 9.80665, accel: Any = 0.0, safety: Any = 1.0,
-                       per: str = "jaw") -> np.ndarray:
+def worst_squeeze_many(
+    x1: Any,
+    x2: Any,
+    y: Any,
+    phi1: Any,
+    phi2: Any,
+    mu1: Any,
+    mu2: Any,
+    mass: Any,
+    *,
+    g: float = 9.80665,
+    accel: Any = 0.0,
+    safety: Any = 1.0,
+    per: str = "jaw",
+) -> np.ndarray:
     """The squeeze over all orientations for many grasps at once, float64 (vectorised).
 
     ``S_f m (g + A) max_n |V_n| / (x1 + x2)`` per jaw (twice that with

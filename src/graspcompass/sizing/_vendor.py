@@ -20,8 +20,16 @@ from .units import acceleration_value, mass_value
 __all__ = ["vendor_squeeze"]
 
 
-def vendor_squeeze(mass: Any, mu1: Any, mu2: Any | None = None, *, g: Any = None,
-                   accel: Any = 0, safety: Any = 1, per: str = "jaw") -> Any:
+def vendor_squeeze(
+    mass: Any,
+    mu1: Any,
+    mu2: Any | None = None,
+    *,
+    g: Any = None,
+    accel: Any = 0,
+    safety: Any = 1,
+    per: str = "jaw",
+) -> Any:
     """The vendor formula: ``m(g + a) S / (μ1 + μ2)`` per jaw, ``m(g + a) S · 2/(μ1 + μ2)`` total.
 
     With equal friction these are the catalogue formulas ``m(g + a) S/(2μ)`` per

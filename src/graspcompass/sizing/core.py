@@ -253,11 +253,13 @@ class Sizing:
         k = 1 if self.per == "jaw" else 2
         out: dict[str, Any] = {
             "per": self.per,
-            "per_note": ("per jaw: each jaw's push along the line between the contacts (the "
-                         "paper's F_int, eq. (17)); the total squeeze of both jaws is twice it"
-                         if self.per == "jaw" else
-                         "total: the sum of both jaws' pushes, twice the paper's F_int "
-                         "(eq. (17)) which each jaw applies"),
+            "per_note": (
+                "per jaw: each jaw's push along the line between the contacts (the "
+                "paper's F_int, eq. (17)); the total squeeze of both jaws is twice it"
+                if self.per == "jaw"
+                else "total: the sum of both jaws' pushes, twice the paper's F_int "
+                "(eq. (17)) which each jaw applies"
+            ),
             "case": self.case,
             "worst_squeeze_N": float(self.worst_squeeze),
             "worst_squeeze_per_jaw_N": float(self.worst_squeeze_per_jaw),
@@ -274,22 +276,27 @@ class Sizing:
             "gravity_direction_deg": self.gravity_direction_deg,
             "accel_direction_deg": self.accel_direction_deg,
             "case_slipping_contact": self.slipping_contact,
-            "case_slip_direction": (None if self.slip_direction is None
-                                    else list(self.slip_direction)),
+            "case_slip_direction": (
+                None if self.slip_direction is None else list(self.slip_direction)
+            ),
             "case_side": self.side,
             "best_squeeze_N": self.best_squeeze,
             "best_gravity_direction_deg": self.best_gravity_direction_deg,
             "vendor_squeeze_N": float(self.vendor_squeeze),
             "vendor_squeeze_per_jaw_N": float(self.vendor_squeeze) / k,
-            "vendor_formula": ("m(g + a)·S/(μ1 + μ2) per jaw" if self.per == "jaw"
-                               else "m(g + a)·S·2/(μ1 + μ2) total (= m(g + a)·S/μ)"),
+            "vendor_formula": (
+                "m(g + a)·S/(μ1 + μ2) per jaw"
+                if self.per == "jaw"
+                else "m(g + a)·S·2/(μ1 + μ2) total (= m(g + a)·S/μ)"
+            ),
             "ratio": self.worst_ratio,
             "case_ratio": self.ratio,
             "mass_kg": float(self.mass),
             "g_m_s2": float(self.g),
             "accel_bound_m_s2": float(self.accel_bound),
-            "accel_vector_m_s2": (None if self.accel_vector is None
-                                  else [float(v) for v in self.accel_vector]),
+            "accel_vector_m_s2": (
+                None if self.accel_vector is None else [float(v) for v in self.accel_vector]
+            ),
             "safety": float(self.safety),
             "force_closure": True,
             "contacts": list(self.names),
@@ -302,9 +309,17 @@ class Sizing:
         return out
 
 
-def size_gripper(grasp: WorldGrasp | Grasp, mass: Any, *, g: Any = None, gravity: Any = None,
-                 tilt: Any = None, accel: Any = None, safety: Any = 1,
-                 per: str = "jaw") -> Sizing:
+def size_gripper(
+    grasp: WorldGrasp | Grasp,
+    mass: Any,
+    *,
+    g: Any = None,
+    gravity: Any = None,
+    tilt: Any = None,
+    accel: Any = None,
+    safety: Any = 1,
+    per: str = "jaw",
+) -> Sizing:
     """The squeeze a two-jaw gripper needs to hold a part: worst case, best orientation, vendor.
 
     Parameters
@@ -374,8 +389,11 @@ def size_gripper(grasp: WorldGrasp | Grasp, mass: Any, *, g: Any = None, gravity
         mu1, mu2 = float(mu1), float(mu2)
     amag = case.A
     if case.accel is not None:
-        amag = amag + (_sqrt(case.accel[0] ** 2 + case.accel[1] ** 2, exact) if exact
-                       else math.hypot(*case.accel))
+        amag = amag + (
+            _sqrt(case.accel[0] ** 2 + case.accel[1] ** 2, exact)
+            if exact
+            else math.hypot(*case.accel)
+        )
     vendor = case.mass * (case.g + amag) * case.safety / (mu1 + mu2)
     if exact:
         vendor = canon(vendor)
@@ -386,20 +404,35 @@ def size_gripper(grasp: WorldGrasp | Grasp, mass: Any, *, g: Any = None, gravity
     wname, wslip = _slip(wg, worst["side"])
     sq, wsq = ev["per_jaw"] * k, worst["per_jaw"] * k
     return Sizing(
-        per=per, mass=case.mass, g=case.g, safety=case.safety, accel_bound=case.A,
-        accel_vector=case.accel, gravity=case.gravity,
+        per=per,
+        mass=case.mass,
+        g=case.g,
+        safety=case.safety,
+        accel_bound=case.A,
+        accel_vector=case.accel,
+        gravity=case.gravity,
         tilt=None if case.tilt in (None, "any") else case.tilt,
-        squeeze=sq, squeeze_per_jaw=ev["per_jaw"], worst_squeeze=wsq,
+        squeeze=sq,
+        squeeze_per_jaw=ev["per_jaw"],
+        worst_squeeze=wsq,
         worst_squeeze_per_jaw=worst["per_jaw"],
         load_direction_deg=_deg_of(ev["load"]) if ev["positive"] else None,
         gravity_direction_deg=_deg_of(ev["gravity"]),
         accel_direction_deg=_deg_of(ev["accel"]),
         worst_direction_deg=_deg_of(worst["load"]),  # type: ignore[arg-type]
-        side=side, slipping_contact=slip_name, slip_direction=slip,
-        slip_direction_deg=_deg_of(slip), worst_side=worst["side"],
-        worst_slipping_contact=wname, worst_slip_direction=wslip,
-        best_squeeze=best * k, best_gravity_direction_deg=_deg_of(
-            _world_vec(wg, best_g)),  # type: ignore[arg-type]
-        vendor_squeeze=vendor * k, ratio=float(sq) / float(vendor * k),
-        worst_ratio=float(wsq) / float(vendor * k), exact=exact, names=wg.names,
-        grasp=wg.grasp)
+        side=side,
+        slipping_contact=slip_name,
+        slip_direction=slip,
+        slip_direction_deg=_deg_of(slip),
+        worst_side=worst["side"],
+        worst_slipping_contact=wname,
+        worst_slip_direction=wslip,
+        best_squeeze=best * k,
+        best_gravity_direction_deg=_deg_of(_world_vec(wg, best_g)),  # type: ignore[arg-type]
+        vendor_squeeze=vendor * k,
+        ratio=float(sq) / float(vendor * k),
+        worst_ratio=float(wsq) / float(vendor * k),
+        exact=exact,
+        names=wg.names,
+        grasp=wg.grasp,
+    )

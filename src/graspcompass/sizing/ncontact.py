@@ -21,8 +21,9 @@ if TYPE_CHECKING:
 __all__ = ["size_ncontact"]
 
 
-def size_ncontact(grasp: NContactGrasp, mass: Any, g: Any = "9.80665", accel: Any = None,
-                  safety: Any = "1") -> dict[str, Any]:
+def size_ncontact(
+    grasp: NContactGrasp, mass: Any, g: Any = "9.80665", accel: Any = None, safety: Any = "1"
+) -> dict[str, Any]:
     """The worst squeeze of an n-contact grasp over all orientations, in newtons.
 
     Parameters
@@ -56,13 +57,20 @@ def size_ncontact(grasp: NContactGrasp, mass: Any, g: Any = "9.80665", accel: An
     if not s >= 1:
         raise ValueError(f"--safety must be >= 1, got {safety!r}")
     if not grasp.force_closure:
-        raise UnboundedEffortError("not force-closure: some orientation of the part cannot be "
-                                   "held at any squeeze (the least effort is infinite there)")
+        raise UnboundedEffortError(
+            "not force-closure: some orientation of the part cannot be "
+            "held at any squeeze (the least effort is infinite there)"
+        )
     load = m * (gv + a) * s
     value, theta = grasp.worst(1)
     q = float(value)
-    return {"effort": grasp.effort.name, "contacts": grasp.n, "load_N": load,
-            "max_q": q, "worst_N": load * q,
-            "theta_deg": None if theta is None else math.degrees(float(theta)) % 360,
-            "vertices": [list(v) for v in grasp.polygon().float_vertices().tolist()],
-            "force_closure": True}
+    return {
+        "effort": grasp.effort.name,
+        "contacts": grasp.n,
+        "load_N": load,
+        "max_q": q,
+        "worst_N": load * q,
+        "theta_deg": None if theta is None else math.degrees(float(theta)) % 360,
+        "vertices": [list(v) for v in grasp.polygon().float_vertices().tolist()],
+        "force_closure": True,
+    }

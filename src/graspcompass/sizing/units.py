@@ -58,11 +58,22 @@ __all__ = [
 STANDARD_GRAVITY = (980665, 100000)
 
 #: Each unit's factor to SI as ``(numerator, denominator)`` (exact).
-LENGTH_UNITS = {"m": (1, 1), "cm": (1, 100), "mm": (1, 1000), "um": (1, 10**6),
-                "µm": (1, 10**6), "μm": (1, 10**6)}
+LENGTH_UNITS = {
+    "m": (1, 1),
+    "cm": (1, 100),
+    "mm": (1, 1000),
+    "um": (1, 10**6),
+    "µm": (1, 10**6),
+    "μm": (1, 10**6),
+}
 MASS_UNITS = {"kg": (1, 1), "g": (1, 1000), "mg": (1, 10**6), "t": (1000, 1)}
-ACCELERATION_UNITS = {"m/s^2": (1, 1), "m/s**2": (1, 1), "m/s2": (1, 1), "m/s²": (1, 1),
-                      "g": STANDARD_GRAVITY}
+ACCELERATION_UNITS = {
+    "m/s^2": (1, 1),
+    "m/s**2": (1, 1),
+    "m/s2": (1, 1),
+    "m/s²": (1, 1),
+    "g": STANDARD_GRAVITY,
+}
 FORCE_UNITS = {"N": (1, 1), "kN": (1000, 1), "mN": (1, 1000)}
 #: Angles: ``deg`` and ``°`` are degrees, ``rad`` radians; there is no default.
 ANGLE_UNITS = {"deg": None, "°": None, "rad": (1, 1)}
@@ -71,8 +82,7 @@ ANGLE_UNITS = {"deg": None, "°": None, "rad": (1, 1)}
 _KINDS: dict[str, tuple[Mapping[str, tuple[int, int] | None], str]] = {
     "length": (LENGTH_UNITS, "m, cm, mm or um, or no unit for metres"),
     "mass": (MASS_UNITS, "kg, g, mg or t, or no unit for kg"),
-    "acceleration": (ACCELERATION_UNITS, "m/s^2 or g (standard gravities), or no unit "
-                     "for m/s^2"),
+    "acceleration": (ACCELERATION_UNITS, "m/s^2 or g (standard gravities), or no unit for m/s^2"),
     "force": (FORCE_UNITS, "N, kN or mN, or no unit for newtons"),
     "angle": (ANGLE_UNITS, "deg or rad, which an angle needs"),
 }
@@ -123,21 +133,27 @@ def split_unit(text: str, kind: str, name: str) -> tuple[str, str | None]:
         core = head.rstrip()
         if not core:
             continue
-        if _WORD_START.match(unit[0]) and head == core and (
-                _WORD_START.match(core[-1]) or core[-1] == "_"):
+        if (
+            _WORD_START.match(unit[0])
+            and head == core
+            and (_WORD_START.match(core[-1]) or core[-1] == "_")
+        ):
             continue  # the end of a longer word ("10 kg" is kg, "2mg" is mg, not g)
         return core, unit
     word = _TRAILING_WORD.search(body)
     if word and body[: word.start()].rstrip()[-1:] not in ("", "*", "/", "+", "-", "("):
         unit = word.group()
         if unit not in _NAMES:
-            raise UnknownUnitError(f"{name}: unknown unit {unit!r} in {text!r} (a {kind} "
-                                   f"takes {accepted})")
+            raise UnknownUnitError(
+                f"{name}: unknown unit {unit!r} in {text!r} (a {kind} takes {accepted})"
+            )
     if kind == "angle":
         if "pi" in body:
             return body, "rad"  # pi says radians: "pi/6", "2*pi"
-        raise MissingUnitError(f"{name}: the angle {text!r} needs a unit, deg or rad (a bare "
-                               "number would be read as radians)")
+        raise MissingUnitError(
+            f"{name}: the angle {text!r} needs a unit, deg or rad (a bare "
+            "number would be read as radians)"
+        )
     return body, None
 
 

@@ -78,7 +78,8 @@ def _pair(value: Any, what: str) -> tuple[Any, Any]:
     if hasattr(value, "geom_type") and getattr(value, "geom_type", None) == "Point":
         return (value.x, value.y)  # a shapely Point
     if isinstance(value, (str, bytes, dict)) or (
-            not isinstance(value, Sequence) and not hasattr(value, "__array__")):
+        not isinstance(value, Sequence) and not hasattr(value, "__array__")
+    ):
         raise WrongTypeError(f"{what}: expected a pair (x, y), got {type(value).__name__}")
     items = list(value)
     if len(items) != 2:
@@ -95,7 +96,8 @@ def _no_symbols(values: list[Any]) -> None:
     for v in values:
         if isinstance(v, sp.Basic) and v.free_symbols:
             raise SymbolicValueError(
-                f"world-frame data must be numbers, got {v} (for symbols use Grasp)")
+                f"world-frame data must be numbers, got {v} (for symbols use Grasp)"
+            )
 
 
 def _as_kind(v: Any, exact: bool) -> Any:

@@ -52,9 +52,18 @@ class ContactOffOutlineError(WorldGraspError):
 class VertexContactError(WorldGraspError):
     """A contact at a vertex of the outline, where the normal is undefined."""
 
+
 # public, documented and pickled as graspcompass.world's (which re-exports them)
-for _cls in (WorldGraspError, CoincidentContactsError, NormalNotUnitError, FrictionConeError,
-             NormalOutwardError, CenterOfMassError, OutlineError, ContactOffOutlineError,
-             VertexContactError):
+for _cls in (
+    WorldGraspError,
+    CoincidentContactsError,
+    NormalNotUnitError,
+    FrictionConeError,
+    NormalOutwardError,
+    CenterOfMassError,
+    OutlineError,
+    ContactOffOutlineError,
+    VertexContactError,
+):
     _cls.__module__ = "graspcompass.world"
 del _cls

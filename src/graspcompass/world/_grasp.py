@@ -90,8 +90,7 @@ class WorldGrasp:
         """World coordinates of a paper-frame point."""
         p, num = self._read(point, "point")
         o, ex, ey = self._frame(num)
-        return _c((o[0] + p[0] * ex[0] + p[1] * ey[0], o[1] + p[0] * ex[1] + p[1] * ey[1]),
-                  not num)
+        return _c((o[0] + p[0] * ex[0] + p[1] * ey[0], o[1] + p[0] * ex[1] + p[1] * ey[1]), not num)
 
     def vector_to_paper(self, vector: Any) -> Vec:
         """Paper-frame components of a world vector (a force, a direction)."""
@@ -204,8 +203,12 @@ class WorldGrasp:
         o, ex, ey = ((float(v[0]), float(v[1])) for v in (self.origin, self.ex, self.ey))
         return o, ex, ey
 
+
 # public, documented and pickled as graspcompass.world's (which re-exports them)
 WorldGrasp.__module__ = "graspcompass.world"
 # so its methods' examples run here (doctest skips a class whose __module__ is another's)
-__test__ = {f"WorldGrasp.{k}": v for k, v in vars(WorldGrasp).items()
-            if callable(v) and ">>>" in (v.__doc__ or "")}
+__test__ = {
+    f"WorldGrasp.{k}": v
+    for k, v in vars(WorldGrasp).items()
+    if callable(v) and ">>>" in (v.__doc__ or "")
+}

@@ -114,15 +114,18 @@ def place_grasp(
     if at_vertex not in ("refuse", "bisector"):
         raise InputError(f"at_vertex: expected 'refuse' or 'bisector', got {at_vertex!r}")
     if isinstance(names, (str, bytes)) or not isinstance(names, Sequence) or len(names) != 2:
-        raise InputError(f"names: expected the two contacts' names, a pair such as "
-                         f"('A', 'B'), got {str(names)[:40]!r}")
+        raise InputError(
+            f"names: expected the two contacts' names, a pair such as "
+            f"('A', 'B'), got {str(names)[:40]!r}"
+        )
     na, nb = (str(names[0]), str(names[1]))
     if na == nb:
         raise InputError(f"names: the two contacts need different names, got {na!r} twice")
     pts = [_vec(p, f"contact {n}") for p, n in zip(_pair(contacts, "contacts"), (na, nb))]
     given_n = [None, None] if normals is None else list(_pair(normals, "normals"))
-    nrm = [None if v is None else _vec(v, f"normal of contact {n}")
-           for v, n in zip(given_n, (na, nb))]
+    nrm = [
+        None if v is None else _vec(v, f"normal of contact {n}") for v, n in zip(given_n, (na, nb))
+    ]
     fric = _friction(mu, xi, (na, nb))
     c = None if com is None else _vec(com, "com")
     raw = [v for p in pts for v in p] + [v for n in nrm if n for v in n]
@@ -132,8 +135,7 @@ def place_grasp(
     _no_symbols(raw)
     exact = not any(has_float(v) for v in raw) and not _is_shapely(outline)
     pts = [(_as_kind(x, exact), _as_kind(y, exact)) for x, y in pts]
-    out = None if outline is None else _outline(
-        outline if vertices is None else vertices, exact)
+    out = None if outline is None else _outline(outline if vertices is None else vertices, exact)
     if c is None:
         if out is None:
             raise InputError("com: give the centre of mass, or an outline (its centroid)")
@@ -154,31 +156,46 @@ def _friction(mu: Any, xi: Any, names: tuple[str, str]) -> list[tuple[str, Any]]
     out = []
     for m, x, n in zip(mus, xis, names):
         if (m is None) == (x is None):
-            raise InputError(f"contact {n}: give its friction either as mu (coefficient) or "
-                             "as xi (cone half angle), exactly one of them")
-        out.append(("mu", real_value(m, f"mu of contact {n}")) if m is not None
-                   else ("xi", real_value(x, f"xi of contact {n}")))
+            raise InputError(
+                f"contact {n}: give its friction either as mu (coefficient) or "
+                "as xi (cone half angle), exactly one of them"
+            )
+        out.append(
+            ("mu", real_value(m, f"mu of contact {n}"))
+            if m is not None
+            else ("xi", real_value(x, f"xi of contact {n}"))
+        )
     return out
 
 
-def _normals(pts: list[Vec], nrm: list, out: _Outline | None, at_vertex: str,
-             names: tuple[str, str], exact: bool) -> list[Vec]:
+def _normals(
+    pts: list[Vec],
+    nrm: list,
+    out: _Outline | None,
+    at_vertex: str,
+    names: tuple[str, str],
+    exact: bool,
+) -> list[Vec]:
     result = []
     for p, n, name in zip(pts, nrm, names):
         if out is not None:
-            edge_n, _ = _outline_normal(out, p, name, "bisector" if n is not None else at_vertex,
-                                        exact)
+            edge_n, _ = _outline_normal(
+                out, p, name, "bisector" if n is not None else at_vertex, exact
+            )
         if n is None:
             if out is None:
-                raise InputError(f"normal of contact {name}: give the inward normal, or an "
-                                 "outline the contact lies on")
+                raise InputError(
+                    f"normal of contact {name}: give the inward normal, or an "
+                    "outline the contact lies on"
+                )
             result.append(edge_n)
             continue
         n = _unit(n, p, name, exact)
         if out is not None and _sign(_dot(n, edge_n), exact) != 1:
             raise NormalOutwardError(
                 f"contact {name} at {_pt(p)}: its normal {_pt(n)} points out of the outline "
-                f"(the outline's inward normal there is {_pt(edge_n)})")
+                f"(the outline's inward normal there is {_pt(edge_n)})"
+            )
         result.append(n)
     return result
 
@@ -193,33 +210,45 @@ def _unit(n: Vec, p: Vec, name: str, exact: bool) -> Vec:
     if exact:
         nn = canon(_dot(n, n))
         if _sign(nn, True) != 1:
-            raise NormalNotUnitError(f"contact {name} at {_pt(p)}: its normal {_pt(n)} is the "
-                                     "zero vector, which has no direction")
+            raise NormalNotUnitError(
+                f"contact {name} at {_pt(p)}: its normal {_pt(n)} is the "
+                "zero vector, which has no direction"
+            )
         if _sign(nn - 1, True) == 0:
             return n
         return _scaled(n, 1 / _sqrt(nn, True), True)
     length = math.hypot(n[0], n[1])
     if not math.isfinite(length) or length == 0:
-        raise NormalNotUnitError(f"contact {name} at {_pt(p)}: its normal {_pt(n)} "
-                                 f"{'is the zero vector' if length == 0 else 'is not finite'}"
-                                 ", which has no direction")
+        raise NormalNotUnitError(
+            f"contact {name} at {_pt(p)}: its normal {_pt(n)} "
+            f"{'is the zero vector' if length == 0 else 'is not finite'}"
+            ", which has no direction"
+        )
     return (n[0] / length, n[1] / length)
 
 
-def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
-           names: tuple[str, str], exact: bool) -> WorldGrasp:
+def _place(
+    pts: list[Vec],
+    nrm: list[Vec],
+    fric: list[tuple[str, Any]],
+    c: Vec,
+    names: tuple[str, str],
+    exact: bool,
+) -> WorldGrasp:
     a, b = pts
     d2 = _dot(_sub(a, b), _sub(a, b))
     if _sign(d2, exact) != 1:
-        raise CoincidentContactsError(f"contacts {names[0]} and {names[1]} are the same point "
-                                      f"{_pt(a)}")
+        raise CoincidentContactsError(
+            f"contacts {names[0]} and {names[1]} are the same point {_pt(a)}"
+        )
     d = _sqrt(d2, exact)
     if exact and not _square_roots_only(d):
         raise WorldGraspError(
             f"the distance between contacts {names[0]} and {names[1]} is {d}, not built from "
             "square roots of rational numbers, which the exact paper frame needs (its lengths "
             "are divided by it): give the coordinates as floats, or exactly with a rational "
-            "squared distance")
+            "squared distance"
+        )
     for i in (0, 1):
         _condition_1(pts[i], nrm[i], fric[i], pts[1 - i], names[i], names[1 - i], d, exact)
     order = [0, 1]
@@ -246,20 +275,34 @@ def _place(pts: list[Vec], nrm: list[Vec], fric: list[tuple[str, Any]], c: Vec,
     try:
         g = Grasp(x1, x2, y, phi1, phi2, **kw)
     except InvalidGraspError as exc:  # what the world checks did not catch (float margins)
-        raise WorldGraspError(f"{exc} [contact 1 (P1) is {p_names[0]}, contact 2 (P2) is "
-                              f"{p_names[1]}]") from None
-    return WorldGrasp(g, c, ex, ey, atan2(ex[1], ex[0]), p_names, (p1, p2),
-                      (nrm[order[0]], nrm[order[1]]), names[0])
+        raise WorldGraspError(
+            f"{exc} [contact 1 (P1) is {p_names[0]}, contact 2 (P2) is {p_names[1]}]"
+        ) from None
+    return WorldGrasp(
+        g,
+        c,
+        ex,
+        ey,
+        atan2(ex[1], ex[0]),
+        p_names,
+        (p1, p2),
+        (nrm[order[0]], nrm[order[1]]),
+        names[0],
+    )
 
 
 def _square_roots_only(v: sp.Expr) -> bool:
-    return all(not a.is_Pow or a.exp.is_Integer or (a.exp in (sp.S.Half, -sp.S.Half)
-                                                    and a.base.is_Rational)
-               for a in sp.preorder_traversal(v))
+    return all(
+        not a.is_Pow
+        or a.exp.is_Integer
+        or (a.exp in (sp.S.Half, -sp.S.Half) and a.base.is_Rational)
+        for a in sp.preorder_traversal(v)
+    )
 
 
-def _condition_1(p: Vec, n: Vec, fric: tuple[str, Any], q: Vec, name: str, other: str,
-                 d: Any, exact: bool) -> None:
+def _condition_1(
+    p: Vec, n: Vec, fric: tuple[str, Any], q: Vec, name: str, other: str, d: Any, exact: bool
+) -> None:
     """Condition (1) at contact p: the angle between n and q - p is below ξ."""
     kind, v = fric
     cos_a = _dot(n, _sub(q, p)) / d  # cosine of the angle between n and the line to q
@@ -274,7 +317,8 @@ def _condition_1(p: Vec, n: Vec, fric: tuple[str, Any], q: Vec, name: str, other
             f"contact {name} at {_pt(p)}: its inward normal {_pt(n)} points away from contact "
             f"{other} at {_pt(q)} (at {_deg(math.acos(max(-1, min(1, float(cos_a)))))} from "
             "the direction to it): is it the outward normal? An inward normal points into "
-            "the object (condition (1): the friction cone must contain the other contact)")
+            "the object (condition (1): the friction cone must contain the other contact)"
+        )
     if _sign(cos_a - cos_xi, exact) in (-1, 0):
         shown = f"μ = {_fmt(v)}, " if kind == "mu" else ""
         raise FrictionConeError(
@@ -282,4 +326,5 @@ def _condition_1(p: Vec, n: Vec, fric: tuple[str, Any], q: Vec, name: str, other
             f"does not contain contact {other} at {_pt(q)}: the inward normal {_pt(n)} makes "
             f"{_deg(math.acos(max(-1, min(1, float(cos_a)))))} with the direction to "
             f"contact {other} (condition (1): each friction cone must contain the other "
-            "contact; more friction or a normal closer to the line through the contacts)")
+            "contact; more friction or a normal closer to the line through the contacts)"
+        )
