@@ -22,9 +22,19 @@ Examples
 --------
 >>> from graspcompass import Grasp, internal_force_diagram
 >>> c = internal_force_diagram(Grasp.preset("table1a"))
->>> anim = animate_construction(c, frames_per_step=2, pause_frames=1, hold_frames=1)
+>>> anim = animate_construction(c, frames_per_step=2, pause_frames=1, hold_frames=1,
+...                             caption_seconds=0)
 >>> anim.frame_count == 2 * len(c.steps) + 9 + 1
 True
+
+By default each step's caption stays at least 2 s (the drawing, then a rest):
+
+>>> anim = animate_construction(c, frames_per_step=2, pause_frames=1, hold_frames=1)
+>>> tl = anim.timeline
+>>> min(sum(len(tl.segment_range(i)) for i, s in enumerate(tl.segments)
+...         if s.step == k and s.kind in ("draw", "rest"))
+...     for k in range(len(c.steps))) / anim.fps
+2.0
 >>> print(anim.caption_at(anim.timeline.frames_of_step(13)[0]))
 Step 13 of 0–46 · perpendicular
 §3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1

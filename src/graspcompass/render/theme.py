@@ -246,8 +246,10 @@ class Quality:
     def frames(self, seconds: float, fps: float | None = None) -> int:
         """``seconds`` as a whole number of frames at ``fps`` (default: this quality's).
 
-        >>> QUALITIES["standard"].frames(0.6)
-        12
+        >>> QUALITIES["standard"].fps
+        10.0
+        >>> QUALITIES["standard"].frames(0.6), QUALITIES["standard"].frames(0.6, fps=20)
+        (6, 12)
         """
         return max(0, round(float(seconds) * (self.fps if fps is None else float(fps))))
 
