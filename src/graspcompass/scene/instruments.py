@@ -5,7 +5,7 @@ Part of the one picture model (:mod:`graspcompass.scene`), read by every painter
 steps' operations, never their names:
 
 ``bisection_arc`` and ``bisector``
-    The bisection of a ``midpoint`` step A B: arcs of radius |AB| about A and
+    The bisection of a ``midpoint`` step A B: arcs of radius AB about A and
     about B cross at two points, the line through them meets A B at the midpoint.
 ``measure_arc``
     A ``signed_length`` A B: the compass opened from A to B (a short arc through B).

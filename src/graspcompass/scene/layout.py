@@ -174,7 +174,7 @@ def view_box(
     It holds O, the contacts, P1x, P2x, O_M, every X_n, Y_n, V_n, the circles
     on O V_n and the object outline, plus ``margin`` of the size on each side.
     A point far away (X_n when a cone side is nearly horizontal) is cut off:
-    the box stays within ``factor`` times the largest of |V_n|, the object
+    the box stays within ``factor`` times the largest of :math:`|V_n|`, the object
     size and the contact spread from O.  With ``roles`` (:func:`roles_of`) the
     objects are chosen by their role, not their name: every point whose role
     is in :data:`FRAMING` (a point without a role too) and every circle; the

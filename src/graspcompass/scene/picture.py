@@ -105,8 +105,8 @@ class Label:
     #: a thin line from the point to the label (a label set far from a crowded point)
     leader: bool = False
     #: per name, the group of coinciding points it belongs to: names of one group are
-    #: joined by `` = ``, points apart but closer than a marker (one place to the eye)
-    #: by ``, `` (empty: all coincide)
+    #: joined by an equals sign, points apart but closer than a marker (one place to
+    #: the eye) by a comma (empty: all coincide)
     groups: tuple[int, ...] = ()
 
     def join(self, text: Any = label_tex) -> str:
