@@ -693,3 +693,44 @@ def test_tikz_fig6_has_the_zoomed_inset_and_compiles(fig6, tmp_path):
         pixels = head[3]
         right = [pixels[r * w + c] for r in range(h) for c in range(int(0.6 * w), w)]
         assert sum(p < 128 for p in right) > 0.01 * len(right)
+
+
+def _labelled_points(svg: str) -> set[str]:
+    """The ids of the point groups of an SVG that hold a label (``<text>``)."""
+    root = ET.fromstring(svg.encode("utf-8"))
+    ns = "{http://www.w3.org/2000/svg}"
+    return {
+        g.get("id").removeprefix("inset-")
+        for g in root.iter(f"{ns}g")
+        if g.get("class") == "point" and g.find(f"{ns}text") is not None
+    }
+
+
+def test_svg_labels_the_break_points_on_request(fig6):
+    # Fig. 6's envelope runs on circles 2, 4, 3, 1 in turn: its cusps, where it passes
+    # from circle i to circle j, are B24, B34, B13, B12; B14 and B23 lie off it
+    on = {"B12", "B13", "B24", "B34"}
+    plain = _labelled_points(to_svg(fig6))
+    lit = _labelled_points(to_svg(fig6, break_points=True))
+    assert not any(n.startswith("B") for n in plain)
+    assert {n for n in lit if n.startswith("B")} == on
+    assert lit - on == plain  # the other labels stay
+    tikz = to_tikz(fig6, break_points=True)
+    assert set(re.findall(r"\$(B)_\{(\d\d)\}\$", tikz)) == {("B", n[1:]) for n in on}
+    assert not re.findall(r"\$B_\{\d\d\}\$", to_tikz(fig6))
+
+
+def test_export_cli_break_points(tmp_path, capsys):
+    parser = argparse.ArgumentParser()
+    register(parser.add_subparsers(dest="command"), _add_grasp_options)
+    for flag in ([], ["--break-points"]):
+        out = tmp_path / f"f{len(flag)}.svg"
+        args = parser.parse_args(["export", "--preset", "fig6", "-o", str(out), "-q", *flag])
+        assert run_export(args, Grasp.preset("fig6")) == 0
+        named = {n for n in _labelled_points(out.read_text()) if n.startswith("B")}
+        assert named == ({"B12", "B13", "B24", "B34"} if flag else set())
+    args = parser.parse_args(
+        ["export", "--preset", "fig6", "-o", str(tmp_path / "f.json"), "--break-points"]
+    )
+    with pytest.raises(ValueError, match="--break-points is for"):
+        run_export(args, Grasp.preset("fig6"))

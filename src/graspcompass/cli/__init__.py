@@ -133,6 +133,12 @@ def build_parser() -> argparse.ArgumentParser:
         help="leave out the computer plot of k_grasp (Fig. 6(b); drawn only over "
         "the paper's recipe)",
     )
+    d.add_argument(
+        "--break-points",
+        action="store_true",
+        help="label the break points B12...B34 that lie on the envelope (default: "
+        "small unlabelled markers)",
+    )
     quiet_option(d)
     from ._ncontact import add_options as _add_ncontact_draw
 
@@ -222,10 +228,11 @@ def _draw(
     step: int | None,
     overlay: bool,
     title: str | None = None,
+    break_points: bool = False,
 ) -> Path:
     from ..render import figure_diagram, save_figure
 
-    fig = figure_diagram(c, step=step, overlay=overlay, title=title)
+    fig = figure_diagram(c, step=step, overlay=overlay, title=title, break_points=break_points)
     save_figure(fig, path, format=fmt)
     return path
 
@@ -301,7 +308,8 @@ def _cmd_draw(args: argparse.Namespace) -> int:
         else Path(made.shown).name
         + (f": {c.grasp.title}" if getattr(c.grasp, "title", None) else "")
     )
-    _draw(c, path, fmt, args.step, made.paper and not args.no_overlay, title)
+    bp = getattr(args, "break_points", False)
+    _draw(c, path, fmt, args.step, made.paper and not args.no_overlay, title, bp)
     if not args.quiet:
         print(f"wrote {path}")
     return 0

@@ -104,6 +104,12 @@ def register(subparsers: Any, add_grasp_options: Callable[[argparse.ArgumentPars
         help="TikZ only: write the tikzpicture alone, for \\input in a document",
     )
     e.add_argument(
+        "--break-points",
+        action="store_true",
+        help="label the break points B12...B34 that lie on the envelope (svg, tikz, png, pdf; "
+        "default: small unlabelled markers)",
+    )
+    e.add_argument(
         "-q",
         "--quiet",
         action="store_true",
@@ -151,6 +157,9 @@ def run_export(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> 
     fmt, path = _format_and_path(args)
     if args.fragment and fmt != "tikz":
         raise ValueError(f"--fragment is for TikZ only, not for {fmt}")
+    bp = bool(getattr(args, "break_points", False))
+    if bp and fmt not in ("svg", "tikz", "png", "pdf"):
+        raise ValueError(f"--break-points is for svg, tikz, png and pdf, not for {fmt}")
     path = check_target(path)
     from ..export import export
     from ..export.tikz import write_tikz
@@ -184,7 +193,7 @@ def run_export(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> 
         c = c.upto(args.step)
     with writing(path):
         if fmt == "tikz" and args.fragment:
-            write_tikz(c, path, standalone=False, title=title)
+            write_tikz(c, path, standalone=False, title=title, break_points=bp)
         elif (
             fmt == "ggb"
             and not made.paper
@@ -197,7 +206,7 @@ def run_export(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> 
 
             write_ggb(c, path, title, made.program, made.values)
         else:
-            export(c, path, fmt, title=title)
+            export(c, path, fmt, title=title, break_points=bp)
     if not getattr(args, "quiet", False):
         print(f"wrote {path} ({fmt}, {len(c)} steps)")
     return 0

@@ -105,7 +105,11 @@ def guess_format(path: Any) -> str:
 
 
 def export(
-    construction: Construction, path: Any, format: str | None = None, title: str | None = None
+    construction: Construction,
+    path: Any,
+    format: str | None = None,
+    title: str | None = None,
+    break_points: bool = False,
 ) -> Path:
     """Write ``construction`` to ``path`` as ``format`` (default: from the extension).
 
@@ -118,6 +122,9 @@ def export(
     format : {"ggb", "tikz", "svg", "json", "png", "pdf", "html"}, optional
     title : str, optional
         Title of the picture (default: the grasp's title).
+    break_points : bool
+        Label the break points on the envelope (svg, tikz, png, pdf;
+        :func:`graspcompass.scene.picture.build_scene`).
 
     Returns
     -------
@@ -138,10 +145,12 @@ def export(
         raise ValueError(f"unknown export format {format!r}: choose one of {', '.join(FORMATS)}")
     p = check_target(path)
     with writing(p):
-        return _write(construction, p, fmt, title)
+        return _write(construction, p, fmt, title, break_points)
 
 
-def _write(construction: Construction, p: Path, fmt: str, title: str | None) -> Path:
+def _write(
+    construction: Construction, p: Path, fmt: str, title: str | None, break_points: bool = False
+) -> Path:
     from .geogebra import write_ggb
     from .json import dumps
     from .svg import write_svg
@@ -150,9 +159,9 @@ def _write(construction: Construction, p: Path, fmt: str, title: str | None) -> 
     if fmt == "ggb":
         return write_ggb(construction, p, title)
     if fmt == "tikz":
-        return write_tikz(construction, p, title=title)
+        return write_tikz(construction, p, title=title, break_points=break_points)
     if fmt == "svg":
-        return write_svg(construction, p, title)
+        return write_svg(construction, p, title, break_points)
     if fmt == "json":
         p.write_text(dumps(construction) + "\n", encoding="utf-8")
         return p
@@ -163,5 +172,6 @@ def _write(construction: Construction, p: Path, fmt: str, title: str | None) -> 
     if fmt in ("png", "pdf"):
         from ..render import figure_diagram, save_figure  # matplotlib, only here
 
-        return save_figure(figure_diagram(construction, title=title), p, format=fmt)
+        fig = figure_diagram(construction, title=title, break_points=break_points)
+        return save_figure(fig, p, format=fmt)
     raise AssertionError(fmt)  # pragma: no cover - FORMATS is checked first

@@ -236,7 +236,7 @@ def _points(
         )
         lab = by_name.get(names[0])
         text = ""
-        if lab is not None and not small:
+        if lab is not None:  # a break point too, when labelled on request
             text = _leader(lab, m) + _label_text(lab, m, lab.join(_label_svg))
         out.append(
             f'<g id={quoteattr(pre + names[0])} class="point">{tip(names[0])}{marker}{text}</g>'
@@ -244,14 +244,20 @@ def _points(
     return out
 
 
-def to_svg(construction: Construction, title: str | None = None, step: int | None = None) -> str:
+def to_svg(
+    construction: Construction,
+    title: str | None = None,
+    step: int | None = None,
+    break_points: bool = False,
+) -> str:
     """The SVG document of ``construction`` (numeric parameters) as text.
 
     ``step`` draws the picture after that step of the protocol
     (:meth:`graspcompass.scene.picture.Scene.upto`): in the whole construction's
     frame, nothing made after it drawn or named.  Where points crowd, a zoomed
     inset of their region (:attr:`Scene.inset`) stands right of the diagram, with
-    the labels that have no room in the whole view.
+    the labels that have no room in the whole view.  ``break_points`` labels the
+    break points on the envelope (:func:`graspcompass.scene.picture.build_scene`).
 
     Examples
     --------
@@ -260,7 +266,7 @@ def to_svg(construction: Construction, title: str | None = None, step: int | Non
     >>> text.startswith("<?xml") and 'viewBox="0 0 ' in text and 'id="envelope"' in text
     True
     """
-    scene = scene_of(construction, title).upto(step)
+    scene = scene_of(construction, title, break_points).upto(step)
     m = _Map(scene.box)
     steps = {s.name: s for s in construction.steps}
 
@@ -330,7 +336,9 @@ def to_svg(construction: Construction, title: str | None = None, step: int | Non
     return "\n".join(out) + "\n"
 
 
-def write_svg(construction: Construction, path: Any, title: str | None = None) -> Path:
+def write_svg(
+    construction: Construction, path: Any, title: str | None = None, break_points: bool = False
+) -> Path:
     """Write :func:`to_svg` to ``path`` (UTF-8); returns the path.
 
     Raises
@@ -341,4 +349,4 @@ def write_svg(construction: Construction, path: Any, title: str | None = None) -
     """
     from ..boundary._output import write_output
 
-    return write_output(path, lambda: to_svg(construction, title))
+    return write_output(path, lambda: to_svg(construction, title, break_points=break_points))

@@ -298,7 +298,7 @@ def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> 
         style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         lab = by_name.get(names[0])
-        if not small and lab is not None:
+        if lab is not None:  # a break point too, when labelled on request
             out.append(
                 f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
                 f"{{${lab.tex()}$}};"
@@ -306,7 +306,12 @@ def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> 
     return out
 
 
-def to_tikz(construction: Construction, standalone: bool = True, title: str | None = None) -> str:
+def to_tikz(
+    construction: Construction,
+    standalone: bool = True,
+    title: str | None = None,
+    break_points: bool = False,
+) -> str:
     """TikZ code of ``construction`` (numeric parameters).
 
     Parameters
@@ -318,6 +323,9 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
         ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
     title : str, optional
         Comment line at the top; defaults to the grasp's title.
+    break_points : bool
+        Label the break points on the envelope
+        (:func:`graspcompass.scene.picture.build_scene`).
 
     Examples
     --------
@@ -326,7 +334,7 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
     >>> "\\\\begin{tikzpicture}" in text and "% exact: (sqrt(3), -3/2)" in text
     True
     """
-    scene = scene_of(construction, title)
+    scene = scene_of(construction, title, break_points)
     box = scene.box
     pad = 0.1 * (box[1] - box[0])
     out = [
@@ -422,7 +430,11 @@ def to_tikz(construction: Construction, standalone: bool = True, title: str | No
 
 
 def write_tikz(
-    construction: Construction, path: Any, standalone: bool = True, title: str | None = None
+    construction: Construction,
+    path: Any,
+    standalone: bool = True,
+    title: str | None = None,
+    break_points: bool = False,
 ) -> Path:
     """Write :func:`to_tikz` to ``path`` (UTF-8); returns the path.
 
@@ -434,4 +446,4 @@ def write_tikz(
     """
     from ..boundary._output import write_output
 
-    return write_output(path, lambda: to_tikz(construction, standalone, title))
+    return write_output(path, lambda: to_tikz(construction, standalone, title, break_points))

@@ -66,6 +66,7 @@ def draw_construction(
     num: dict[str, Any] | None = None,
     box: tuple[float, float, float, float] | None = None,
     view: str = "whole",
+    break_points: bool = False,
 ) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
@@ -100,6 +101,9 @@ def draw_construction(
         labels of the crowded points to the zoomed inset drawn beside it
         (:attr:`graspcompass.scene.picture.Scene.inset`); ``"inset"`` draws that
         inset: the crowded region, zoomed, with its labels.
+    break_points : bool
+        Label the break points on the envelope
+        (:func:`graspcompass.scene.picture.build_scene`); the others stay unlabelled.
 
     Returns
     -------
@@ -124,9 +128,11 @@ def draw_construction(
     num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
     # an enlargement of a region (box given): its own scene, labelled in it
-    scene = (scene_of(construction) if box is None else build_scene(construction, box=box)).upto(
-        step
-    )
+    scene = (
+        scene_of(construction, break_points=break_points)
+        if box is None
+        else build_scene(construction, box=box, break_points=break_points)
+    ).upto(step)
     box = scene.box
     span = box[1] - box[0]
     shown = scene.labels
@@ -146,7 +152,7 @@ def draw_construction(
         v = num[s.name]
         hl = dict(color=theme.highlight_color, lw=2.0 * theme.line_width) if s.name == last else {}
         if s.kind == "point":
-            small = s.role == "break_point"  # the envelope's break points: small, unlabelled
+            small = s.role == "break_point"  # break points: small (labelled on request)
             out[s.name] = list(
                 ax.plot(
                     [v[0]],
@@ -258,6 +264,7 @@ def figure_diagram(
     theme: Theme = DEFAULT_THEME,
     labels: bool = True,
     inset: bool = True,
+    break_points: bool = False,
 ) -> Figure:
     """A complete figure of the internal force diagram, as in Fig. 6 and Fig. 7.
 
@@ -269,7 +276,8 @@ def figure_diagram(
     §4.1 reports (not over a ``step`` before the envelope).  Where points crowd
     (:attr:`graspcompass.scene.picture.Scene.inset`) and ``inset`` is true, a
     zoomed view of their region stands right of the diagram (the figure is
-    wider by it) with their labels.
+    wider by it) with their labels.  ``break_points`` labels the break points on
+    the envelope (:func:`draw_construction`).
 
     Examples
     --------
@@ -278,7 +286,7 @@ def figure_diagram(
     >>> fig.axes[0].get_aspect()
     1.0
     """
-    scene = scene_of(construction)
+    scene = scene_of(construction, break_points=break_points)
     zoom = scene.inset if inset else None
     side = labelling.FRAME_PT / 72.0  # the placement's frame: the axes' side in inches
     extra = INSET_PT / 72.0 + 0.9 if zoom is not None else 0.0
@@ -299,6 +307,7 @@ def figure_diagram(
         theme=theme,
         labels=labels,
         show_computer_plot=overlay and full,
+        break_points=break_points,
         view="beside" if zoom is not None else "whole",
     )
     ax.grid(False)
@@ -313,7 +322,13 @@ def figure_diagram(
         zs = INSET_PT / 72.0
         zax = fig.add_axes((left, bottom + (side + taller - zs) / h, zs / (w + extra), zs / h))
         drawn = draw_construction(
-            construction, step=step, ax=zax, theme=theme, labels=labels, view="inset"
+            construction,
+            step=step,
+            ax=zax,
+            theme=theme,
+            labels=labels,
+            view="inset",
+            break_points=break_points,
         )
         for arts in drawn.values():  # the length arrows too stay inside the inset
             for a in arts:

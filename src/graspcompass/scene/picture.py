@@ -155,7 +155,9 @@ class Scene:
     cones: tuple[tuple[XY, ...], ...]
     outline: tuple[str, tuple[float, ...]] | None
     title: str
-    small: frozenset[str] = frozenset()  # points drawn small and unlabelled (break points)
+    #: points drawn small (break points), unlabelled but for those with a label
+    #: (:func:`build_scene` ``break_points``)
+    small: frozenset[str] = frozenset()
     labels: tuple[Label, ...] = ()  # one per labelled group of points, in placement order
     #: name -> index of the step that makes it; ``cone1``/``cone2`` are made with their
     #: second side, ``object`` (the outline, given data) at step 0
@@ -271,14 +273,20 @@ def _envelope(env: Any) -> tuple[Arc, ...]:
 
 
 def build_scene(
-    construction: Construction, title: str | None = None, box: Box | None = None
+    construction: Construction,
+    title: str | None = None,
+    box: Box | None = None,
+    break_points: bool = False,
 ) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
     ``box`` ``(xmin, xmax, ymin, ymax)`` frames it (default: the one rule
     :func:`graspcompass.layout.view_box` on its own objects); a prefix drawn in the
     whole construction's box keeps the frame of the whole, as the web page does when
-    it steps through the protocol.
+    it steps through the protocol.  ``break_points`` labels the break points that lie
+    on the envelope (an end of one of its arcs: where k_grasp passes from one circle
+    to the next), placed by the rules of every label; the other break points, off
+    the envelope, stay small unlabelled markers.
 
     Raises
     ------
@@ -334,19 +342,28 @@ def build_scene(
                 made[f"cone{len(cones)}"] = max(made[sa], made[sb])
     inside = [(n, xy) for n, xy in pts if box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]]
     small = {n for n, r in roles.items() if r == "break_point"}
+    cusps = [a.start for a in envelope] + [a.end for a in envelope]
+    on = {  # the break points labelled on request: those at an end of an envelope arc
+        n
+        for n, xy in inside
+        if break_points and n in small and any(math.dist(xy, c) <= 1e-6 * span for c in cusps)
+    }
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
-    grouped += [((n,), xy) for n, xy in inside if n in small]
+    grouped += group_points([p for p in inside if p[0] in on], 1e-9 * span)
+    grouped += [((n,), xy) for n, xy in inside if n in small - on]
     text = title if title is not None else (getattr(grasp, "title", None) or "")
-    # the break points' markers are avoided, as in the matplotlib drawing (figure.py)
-    cusps = [a.start for a in envelope]
+    # the unlabelled break points' markers and the cusps are avoided, as in figure.py
+    named = [g for g in grouped if g[0][0] not in small or g[0][0] in on]
+    lit = [xy for n, xy in inside if n in on]  # a labelled break point's cusp is its point
+    free = [a.start for a in envelope if all(math.dist(a.start, xy) > 1e-6 * span for xy in lit)]
     labels, inset = _labels(
         box,
-        [g for g in grouped if g[0][0] not in small],
+        named,
         lines,
         lengths,
         circles,
         envelope,
-        [xy for names, xy in grouped if names[0] in small] + cusps,
+        [xy for names, xy in grouped if names[0] in small - on] + free,
     )
     return Scene(
         box,
@@ -366,23 +383,26 @@ def build_scene(
     )
 
 
-_SCENES: dict[int, tuple[Any, Scene]] = {}
+_SCENES: dict[tuple[int, bool], tuple[Any, Scene]] = {}
 
 
-def scene_of(construction: Construction, title: str | None = None) -> Scene:
+def scene_of(
+    construction: Construction, title: str | None = None, break_points: bool = False
+) -> Scene:
     """The :class:`Scene` of ``construction`` in its own view box, built once.
 
     Every painter of one construction reads this one object (the PNG, the SVG,
     the TikZ, the animation frames); it lives as long as the construction.
-    ``title`` replaces the grasp's title.
+    ``title`` replaces the grasp's title; ``break_points`` labels the break points
+    on the envelope (:func:`build_scene`), a scene of its own (cached apart).
     """
     if title is not None:
-        return replace(scene_of(construction), title=title)
-    key = id(construction)
+        return replace(scene_of(construction, break_points=break_points), title=title)
+    key = (id(construction), bool(break_points))
     hit = _SCENES.get(key)
     if hit is not None and hit[0]() is construction:
         return hit[1]
-    scene = build_scene(construction)
+    scene = build_scene(construction, break_points=bool(break_points))
     _SCENES[key] = (weakref.ref(construction, lambda _r: _SCENES.pop(key, None)), scene)
     return scene
 
