@@ -180,3 +180,23 @@ def test_console_script_subprocess_no_traceback(tmp_path):
     assert proc.returncode == 2
     assert proc.stderr.count("\n") == 1 and "Traceback" not in proc.stderr
     assert "cannot read 'a.b'" in proc.stderr
+
+
+def test_draw_break_points_flag(tmp_path, capsys, monkeypatch):
+    import graspcompass.render as render
+
+    seen = []
+    real = render.figure_diagram
+    monkeypatch.setattr(
+        render,
+        "figure_diagram",
+        lambda *a, **k: seen.append(k.get("break_points")) or real(*a, **k),
+    )
+    paths = []
+    for flag in ([], ["--break-points"]):
+        path = tmp_path / f"d{len(flag)}.png"
+        code, _, _ = run(capsys, "draw", "--preset", "fig6", "-o", str(path), "-q", *flag)
+        assert code == 0 and path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        paths.append(path)
+    assert seen == [False, True]
+    assert paths[0].read_bytes() != paths[1].read_bytes()  # the labels are drawn

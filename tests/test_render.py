@@ -338,3 +338,17 @@ def test_render_does_not_import_pyplot():
         "'fig6'))); assert 'matplotlib.pyplot' not in sys.modules"
     )
     subprocess.run([sys.executable, "-c", code], check=True, env=env)
+
+
+def test_figure_labels_the_break_points_on_request(constructions):
+    # Fig. 6's envelope passes from circle 2 to 4, 4 to 3, 3 to 1, 1 to 2: its cusps
+    # are B24, B34, B13, B12 (B14 and B23 lie off it)
+    def break_labels(fig) -> list[str]:
+        return sorted(
+            t.get_text() for ax in fig.axes for t in ax.texts if t.get_text().startswith("$B_")
+        )
+
+    c = constructions["fig6"]
+    assert break_labels(figure_diagram(c)) == []
+    got = break_labels(figure_diagram(c, break_points=True))
+    assert set(got) == {f"$B_{{{n}}}$" for n in ("12", "13", "24", "34")}

@@ -11,6 +11,8 @@ import random
 from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export import to_svg
+from graspcompass.scene.picture import scene_of
+from test_scene import _on_envelope
 
 #: Per panel: each point group's marker box and label box (client pixels).
 MEASURE = """() => {
@@ -105,6 +107,31 @@ def test_svg_labels_name_their_points_in_chromium() -> None:
             c = internal_force_diagram(g)
             panels = measure(page, to_svg(c))
             assert sum(p["t"] is not None for pl in panels for p in pl["pts"]) >= 4
+            found = faults(panels)
+            if found:
+                report[str(g.params if hasattr(g, "params") else g)] = found
+    assert not report, report
+
+
+def test_svg_break_point_labels_name_their_points_in_chromium() -> None:
+    """With ``break_points`` the labels of the break points on the envelope keep the
+    same rules, in the browser's layout; and every such break point is labelled."""
+    grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
+    grasps += random_grasps(20)
+    with chromium("the SVG labels") as browser:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        report = {}
+        for g in grasps:
+            c = internal_force_diagram(g)
+            panels = measure(page, to_svg(c, break_points=True))
+            scene = scene_of(c, break_points=True)  # the painted labels' names: a break
+            # point closer than a marker to another point is named in that one's label
+            views = [scene.labels] if scene.inset is None else [scene.inset.main]
+            views += [scene.inset.labels] if scene.inset is not None else []
+            named = {n for labs in views for lab in labs for n in lab.names if n[0] == "B"}
+            shown = {p["id"].removeprefix("inset-") for pl in panels for p in pl["pts"] if p["t"]}
+            assert {lab.names[0] for labs in views for lab in labs} == shown, g
+            assert named == _on_envelope(c), g  # found from k_n(θ) = V_n · e(θ)
             found = faults(panels)
             if found:
                 report[str(g.params if hasattr(g, "params") else g)] = found
