@@ -403,19 +403,12 @@ def test_optimal_forces_balance_the_load_and_cost_v(raw, theta):
         return  # degenerate draws (rank < 3)
     if not math.isfinite(v):
         return
-    r = g.forces(theta)
-    assert all(w >= -1e-9 for w in r["weights"].values())
-    fx = sum(f[0] for f in r["forces"])
-    fy = sum(f[1] for f in r["forces"])
-    tz = sum(c.p[0] * f[1] - c.p[1] * f[0] for c, f in zip(g.contacts, r["forces"]))
-    scale = 1 + sum(abs(w) for w in r["weights"].values()) * (
-        1 + max(math.hypot(*c.p) for c in g.contacts)
-    )
-    assert abs(fx + math.sin(theta)) <= 1e-8 * scale
-    assert abs(fy - math.cos(theta)) <= 1e-8 * scale
-    assert abs(tz) <= 1e-8 * scale
-    normal = sum(f[0] * c.n[0] + f[1] * c.n[1] for c, f in zip(g.contacts, r["forces"]))
-    assert abs(normal - v) <= 1e-8 * scale
+    try:
+        r = g.forces(theta)
+    except NContactError as err:  # allowed only where double precision cannot resolve
+        assert "not resolved in double precision" in str(err)
+        return
+    _balance(g, theta, v, r)
 
 
 def test_cli_k_with_contacts_exact(capsys):
@@ -445,3 +438,29 @@ def test_cli_k_with_contacts_exact(capsys):
     assert float(sp.sympify(row["k_exact"])) == pytest.approx(want, rel=1e-9)
     assert decide_zero(sp.sympify(row["F_exact"]) - 2 * sp.sympify(row["k_exact"]))
     assert row["F"] == pytest.approx(2 * row["k"])
+
+
+def _balance(g, theta, v, r):
+    """Nonnegative edge weights whose contact forces balance the load F_e e(θ) (force
+    and moment about O) at the effort v(θ) (first principles)."""
+    assert all(w >= -1e-9 for w in r["weights"].values())
+    fx = sum(f[0] for f in r["forces"])
+    fy = sum(f[1] for f in r["forces"])
+    tz = sum(c.p[0] * f[1] - c.p[1] * f[0] for c, f in zip(g.contacts, r["forces"]))
+    scale = 1 + sum(abs(w) for w in r["weights"].values()) * (
+        1 + max(math.hypot(*c.p) for c in g.contacts)
+    )
+    assert abs(fx + math.sin(theta)) <= 1e-8 * scale
+    assert abs(fy - math.cos(theta)) <= 1e-8 * scale
+    assert abs(tz) <= 1e-8 * scale
+    normal = sum(f[0] * c.n[0] + f[1] * c.n[1] for c, f in zip(g.contacts, r["forces"]))
+    assert abs(normal - v) <= 1e-8 * scale
+
+
+def test_optimal_forces_of_a_degenerate_vertex():
+    """Two coincident contacts and a third with a normal 1e-10 off theirs (found by
+    hypothesis in CI): every float basis of the vertex fails; the forces still balance."""
+    g = NContactGrasp([(0.0, 0.0, 0.0, 1.0), (0.0, 0.0, 0.0, 1.0), (0.0, 1.0, 1e-10, 1.0)])
+    v = g.k(4.0)
+    assert v == pytest.approx(-math.sin(4.0))  # contact 1 alone: its normal force
+    _balance(g, 4.0, v, g.forces(4.0))

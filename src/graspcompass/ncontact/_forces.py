@@ -76,7 +76,6 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
         )
     rows, _ = g.dual_system()
     labels = g.constraint_labels()
-    n_edges = 2 * g.n
     edges = g.edges()
     d = len(rows[0])
     b = [-fe * e[0], -fe * e[1]] + [zero] * (d - 2)
@@ -100,23 +99,80 @@ def optimal_forces(g: NContactGrasp, theta: Any, fe: Any) -> dict[str, Any]:
             x = _solve_exact(cols, b)
             if x is None or any(exact_sgn(v, "an edge weight") < 0 for v in x):
                 continue
-        weights = {labels[r]: x[i] for i, r in enumerate(basis) if r < n_edges}
-        forces = []
-        for i in range(g.n):
-            fx = fy = zero
-            for j, (ci, _, dj) in enumerate(edges):
-                if ci == i and labels[j] in weights:
-                    fx = fx + weights[labels[j]] * dj[0]
-                    fy = fy + weights[labels[j]] * dj[1]
-            forces.append((fx, fy) if numeric else (canon(fx), canon(fy)))
-        return {
-            "effort": val,
-            "vertex": cand.q,
-            "basis": [labels[r] for r in basis],
-            "weights": weights,
-            "forces": forces,
-        }
+        return _result(g, basis, x, cand.q, val, labels, edges, zero, numeric)
+    if numeric:  # a degenerate vertex (coincident or parallel edges): any weights w >= 0
+        # that balance the load at the least effort (rows^T w = b, costs . w = v) are optimal
+        costs = g.dual_system()[1]
+        M = np.array([[*r, c] for r, c in zip(rows, costs)], dtype=float).T
+        load = np.array([*b, val], dtype=float)
+        w = _nnls(M, load)
+        if np.abs(M @ w - load).max() <= 1e-9 * (1 + np.abs(M).max() * (1 + w.sum())):
+            used = [r for r in range(len(rows)) if w[r] > 0]
+            x = [float(w[r]) for r in used]
+            cand = Q.candidates[Q.vertex_index[ks[0]]]
+            return _result(g, used, x, cand.q, val, labels, edges, zero, numeric)
+        raise NContactError(
+            f"the optimal contact forces at theta = {tf!r} are not resolved in double "
+            "precision (the tight cone edges are nearly dependent); give the grasp "
+            "exactly (values as text) for its exact forces"
+        )
     raise NContactError(
         "no basis of the optimal vertex gives nonnegative edge weights "
         "(a degenerate case): please report the grasp"
     )
+
+
+def _result(
+    g: NContactGrasp,
+    basis: list[int],
+    x: list[Any],
+    q: Any,
+    val: Any,
+    labels: list[str],
+    edges: list[Any],
+    zero: Any,
+    numeric: bool,
+) -> dict[str, Any]:
+    """The forces of edge weights ``x`` on the constraints ``basis``."""
+    n_edges = 2 * g.n
+    weights = {labels[r]: x[i] for i, r in enumerate(basis) if r < n_edges}
+    forces = []
+    for i in range(g.n):
+        fx = fy = zero
+        for j, (ci, _, dj) in enumerate(edges):
+            if ci == i and labels[j] in weights:
+                fx = fx + weights[labels[j]] * dj[0]
+                fy = fy + weights[labels[j]] * dj[1]
+        forces.append((fx, fy) if numeric else (canon(fx), canon(fy)))
+    return {
+        "effort": val,
+        "vertex": q,
+        "basis": [labels[r] for r in basis],
+        "weights": weights,
+        "forces": forces,
+    }
+
+
+def _nnls(A: np.ndarray, b: np.ndarray, iters: int = 200) -> np.ndarray:
+    """Least squares with x >= 0 (Lawson and Hanson's active-set method)."""
+    n = A.shape[1]
+    x = np.zeros(n)
+    free = np.zeros(n, dtype=bool)
+    tol = 1e-12 * (1 + np.abs(A).max()) * (1 + np.abs(b).max())
+    for _ in range(iters):
+        grad = A.T @ (b - A @ x)
+        if free.all() or grad[~free].max(initial=-np.inf) <= tol:
+            break
+        free[int(np.argmax(np.where(free, -np.inf, grad)))] = True
+        for _ in range(iters):
+            z = np.zeros(n)
+            z[free] = np.linalg.lstsq(A[:, free], b, rcond=None)[0]
+            if (z[free] > 0).all():
+                x = z
+                break
+            neg = free & (z <= 0)
+            alpha = np.min(x[neg] / (x[neg] - z[neg]))
+            x = x + alpha * (z - x)
+            free &= x > tol
+            x[~free] = 0.0
+    return x
