@@ -131,10 +131,10 @@ class PlanResult:
             rank,
             int(index),
             (a, b),
-            pts,
-            nrm,
+            pts,  # type: ignore[arg-type]
+            nrm,  # type: ignore[arg-type]
             f,
-            f / self.mass,  # type: ignore[arg-type]
+            f / self.mass,
             {k: float(self.frames[k][index]) for k in ("x1", "x2", "y", "phi1", "phi2")},
         )
 

@@ -282,8 +282,8 @@ def jshtml(
     # the stubs ask an int fps and a Figure: the writer takes any rate, and of the figure
     # only what _Frames has (its size, dpi and savefig)
     writer = HTMLWriter(
-        fps=check_fps(fps),
-        embed_frames=True,  # type: ignore[arg-type]
+        fps=check_fps(fps),  # type: ignore[arg-type]
+        embed_frames=True,
         default_mode="loop",
     )
     with TemporaryDirectory() as tmp:

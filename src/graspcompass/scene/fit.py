@@ -241,8 +241,8 @@ def _greedy(
                     f = Fit(
                         (float(ax - px), float(ay - py)),
                         (dx, dy),
-                        tuple(float(v) for v in box),
-                        far >= LEADER,  # type: ignore[arg-type]
+                        tuple(float(v) for v in box),  # type: ignore[arg-type]
+                        far >= LEADER,
                         bad == 0.0,
                     )
                     best = (score, f)

@@ -296,8 +296,12 @@ def place(
         labels.append(best_box)
         ox, oy, dx, dy = best
         out.append(
-            Placement((float(ox), float(oy)), (int(dx), int(dy)), tuple(float(v) for v in best_box))
-        )  # type: ignore[arg-type]
+            Placement(
+                (float(ox), float(oy)),
+                (int(dx), int(dy)),
+                tuple(float(v) for v in best_box),  # type: ignore[arg-type]
+            )
+        )
     return out
 
 
