@@ -37,7 +37,7 @@ By default each step's caption stays at least 2 s (the drawing, then a rest):
 2.0
 >>> print(anim.caption_at(anim.timeline.frames_of_step(13)[0]))
 Step 13 of 0–46 · perpendicular
-§3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1
+§3.3 $V_1$ (2): perpendicular from $P_{2x}$ to the upper side of the cone at $P_1$
 """
 
 from __future__ import annotations
