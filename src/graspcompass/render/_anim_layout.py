@@ -1,10 +1,12 @@
 """The layout of a construction animation: title, caption, progress bar and diagram.
 
 The caption goes below the diagram (``standard``) or in a panel beside it
-(``lecture``); every caption is wrapped at spaces to the width it is given, as
-drawn (:func:`_wrap`, :func:`_text_width`), and the diagram is placed so that the
-longest fits whole.  Private to :mod:`graspcompass.render.animate`, which
-re-exports these names.
+(``lecture``).  Its point names and formulas are typeset as mathtext (``$O_M\\ X_1$``,
+``$k_\\mathrm{grasp}(\\theta)$``, ``$F_\\mathrm{int}$``; :func:`_mathtext`), each
+formula whole in one ``$…$``; every caption is wrapped at the spaces outside its
+formulas to the width it is given, measured as drawn (:func:`_wrap`,
+:func:`_text_width`), and the diagram is placed so that the longest fits whole.
+Private to :mod:`graspcompass.render.animate`, which re-exports these names.
 """
 
 from __future__ import annotations
