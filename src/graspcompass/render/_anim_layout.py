@@ -158,6 +158,25 @@ def _mathtext(text: str) -> str:
     return "\n".join(_math_line(_REF.sub("\\1\u00a0", p)) for p in text.split("\n"))
 
 
+def _shown(text: str) -> str:
+    """The characters of a caption as read (its formulas without their markup): the
+    length by which it is paced.
+
+    >>> _shown(r"plot $V_1 = ({-}O_M\\ X_1, {-}O\\ Y_1)$ of $k_\\mathrm{grasp}(\\theta)$")
+    'plot V1 = (-OM X1, -O Y1) of kgrasp(θ)'
+    """
+    out = []
+    for i, part in enumerate(re.split(r"(?<!\\)\$", text)):
+        if i % 2 == 0:
+            out.append(part.replace(r"\$", "$"))
+            continue
+        part = re.sub(r"\\mathrm\{([^}]*)\}", r"\1", part.replace("\\ ", " "))
+        for name, letter in _GREEK.items():
+            part = part.replace(f"\\{letter}", name)
+        out.append(re.sub(r"\\[A-Za-z]+ ?", "·", part).translate({ord(c): None for c in "{}_"}))
+    return "".join(out)
+
+
 #: A word of a caption: up to a space outside a formula ``$…$``.
 _WORD = re.compile(r"(?:\\\$|\$[^$]*\$|[^ $\\]|\\)+")
 
@@ -247,8 +266,8 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         x_cap / W, 0.5, "", va="top", linespacing=1.4, fontsize=caption_pt, fontweight="normal"
     )
     measure = _text_width(renderer, anim._caption.get_fontproperties())
-    anim._wrapped = [_wrap(_mathtext(t), width, measure) for t in anim._texts]
-    anim._hold_wrapped = _wrap(_mathtext(anim._hold_text), width, measure)
+    anim._wrapped = [_wrap(t, width, measure) for t in anim._texts]
+    anim._hold_wrapped = _wrap(anim._hold_text, width, measure)
     tallest = 0.0
     for t in {*anim._wrapped, anim._hold_wrapped}:
         anim._caption.set_text(t)
