@@ -17,6 +17,7 @@ matplotlib.use("Agg")
 import pytest
 from matplotlib.text import Text
 
+from _shown import shown
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.render.animate import animate_construction
 
@@ -104,7 +105,7 @@ def test_lecture_starts_with_a_title_card(fig6):
     # second: issue 12), a key step (V_n, a circle, the envelope) 3 s longer
     for st in fig6.steps:
         text = lec.caption_at(tl.frames_of_step(st.index)[0])
-        read = max(2.5, len(text) / 15.0) + (3.0 if st.key else 0.0)
+        read = max(2.5, len(shown(text)) / 15.0) + (3.0 if st.key else 0.0)
         assert (
             lec.caption_seconds_of_step(st.index) == pytest.approx(read, abs=1.01 / lec.fps)
             or st.index == len(fig6.steps) - 1

@@ -8,6 +8,7 @@ few frames keep the whole file fast.
 from __future__ import annotations
 
 import io
+import re
 import stat
 import sys
 from dataclasses import replace
@@ -124,9 +125,13 @@ def test_every_step_appears_in_order(c1a, anim):
     assert runs == list(range(len(c1a.steps)))
     for s in c1a.steps:  # the caption gives the paper's reference
         text = anim.caption_at(tl.frames_of_step(s.index)[0])
-        assert s.ref.replace(" step ", " ") in text.replace("\n", " ")
+        plain = re.sub(r"[$_{}]", "", text).replace("\n", " ").replace("\u00a0", " ")
+        assert s.ref.replace(" step ", " ") in plain
     perp1 = anim.caption_at(tl.frames_of_step(c1a.step("perp1").index)[0]).replace("\n", " ")
-    assert "§3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1" in perp1
+    assert (
+        "§3.3 $V_1$ (2): perpendicular from $P_{2x}$ to the upper side of the cone at $P_1$"
+        in perp1
+    )
 
 
 def test_timeline_progress_and_rates():

@@ -32,6 +32,7 @@ from matplotlib.patches import Patch
 from matplotlib.text import Annotation, Text
 from PIL import Image
 
+from _shown import shown as read_text
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args, main
 from graspcompass.cli._animate import main_animation, register, run
@@ -229,12 +230,13 @@ def test_lecture_captions_stay_long_enough_to_read(fig6, lecture):
         text = lecture.caption_at(frames[0])
         assert all(lecture.caption_at(f) == text for f in frames)
         seconds = len(frames) / fps
-        unwrapped = len(text)  # line breaks replace spaces: the same length
+        unwrapped = len(read_text(text))  # line breaks replace spaces: the same length
         assert seconds >= LEAST_SECONDS - 1e-9, (s.name, seconds)
         assert seconds >= unwrapped / CHARS_PER_SECOND - 1 / fps, (s.name, seconds)
     hold = [f for f in range(lecture.frame_count) if tl.at(f).kind == "hold"]
     assert (
-        len(hold) / fps >= max(6.0, len(lecture.caption_at(hold[0])) / CHARS_PER_SECOND) - 1 / fps
+        len(hold) / fps
+        >= max(6.0, len(read_text(lecture.caption_at(hold[0]))) / CHARS_PER_SECOND) - 1 / fps
     )
     # the still frames that make up the time are not drawn again
     assert lecture.drawn_frames < lecture.frame_count / 2

@@ -1,32 +1,193 @@
 """The layout of a construction animation: title, caption, progress bar and diagram.
 
 The caption goes below the diagram (``standard``) or in a panel beside it
-(``lecture``); every caption is wrapped at spaces to the width it is given, as
-drawn (:func:`_wrap`, :func:`_text_width`), and the diagram is placed so that the
-longest fits whole.  Private to :mod:`graspcompass.render.animate`, which
-re-exports these names.
+(``lecture``).  Its point names and formulas are typeset as mathtext (``$O_M\\ X_1$``,
+``$k_\\mathrm{grasp}(\\theta)$``, ``$F_\\mathrm{int}$``; :func:`_mathtext`), each
+formula whole in one ``$…$``; every caption is wrapped at the spaces outside its
+formulas to the width it is given, measured as drawn (:func:`_wrap`,
+:func:`_text_width`), and the diagram is placed so that the longest fits whole.
+Private to :mod:`graspcompass.render.animate`, which re-exports these names.
 """
 
 from __future__ import annotations
 
+import re
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.patches import Rectangle
 
+from ..scene.layout import tex
 from .timeline import AnimationError
 
 if TYPE_CHECKING:
     from .animate import ConstructionAnimation
 
 
+#: The parts of a caption's formula: a name (``O_M``, ``P1x``, ``k_grasp``), a Greek
+#: letter, a number, an operator, a bracket or comma.
+_TOKEN = re.compile(
+    r"(?P<name>[A-Za-z]_[A-Za-z]+(?![A-Za-z0-9])|[A-Za-z]\d+x?(?![A-Za-z0-9])"
+    r"|[A-Z](?![A-Za-z0-9_'’])|[xye](?![A-Za-z0-9_'’]))"
+    r"|(?P<greek>[θφξγμαβ]\d*(?![A-Za-z0-9]))"
+    r"|(?P<num>\d+(?:\.\d+)?)"
+    r"|(?P<op>[=+−·/×≤≥<>-])"
+    r"|(?P<punct>[(),])"
+    r"|(?P<space> )"
+)
+_GREEK = {"θ": "theta", "φ": "varphi", "ξ": "xi", "γ": "gamma", "μ": "mu", "α": "alpha"}
+_GREEK["β"] = "beta"
+_AXIS = re.compile(r"[xy]-axis")
+#: a reference and its number are not parted: ``eq. (25)``, ``Fig. 5``
+_REF = re.compile(r"\b(eqs?\.|Figs?\.) (?=[(\d])")
+_OPS = {"−": "-", "·": r"\cdot ", "×": r"\times ", "≤": r"\leq ", "≥": r"\geq "}
+
+
+def _kind(word: str) -> str:
+    """``"math"`` (a formula's word, with a name or Greek letter), ``"op"`` (operators
+    only) or ``"prose"``."""
+    pos, kinds = 0, set()
+    while pos < len(word):
+        m = _TOKEN.match(word, pos)
+        if m is None or m.lastgroup == "space":
+            return "prose"
+        kinds.add(m.lastgroup)
+        pos = m.end()
+    if kinds & {"name", "greek"}:
+        return "math"
+    return "op" if kinds == {"op"} else "prose"
+
+
+def _math_body(formula: str) -> str:
+    """The mathtext of a formula of caption words: ``"O_M X1 = −S1"`` ->
+    ``"O_M\\ X_1 = -S_1"``; a space is kept (``\\ ``) only between two operands."""
+    toks = [(m.lastgroup, m.group()) for m in _TOKEN.finditer(formula)]
+    out: list[str] = []
+    for i, (kind, t) in enumerate(toks):
+        if kind == "space":
+            before, after = toks[i - 1], toks[i + 1] if i + 1 < len(toks) else ("op", "")
+            operand = before[0] != "op" and before[1] not in "(," and after[0] != "op"
+            out.append("\\ " if operand and after[1] not in ",)" else " ")
+        elif kind == "name":
+            head, _, rest = t.partition("_")
+            if len(rest) > 1 and rest.islower():  # a word: upright, as the paper's k_grasp
+                out.append(f"{head}_\\mathrm{{{rest}}}")
+            else:
+                out.append(tex(t, math=False))
+        elif kind == "greek":
+            sub = t[1:]
+            out.append(
+                f"\\{_GREEK[t[0]]}" + (f"_{{{sub}}}" if len(sub) > 1 else f"_{sub}" if sub else "")
+            )
+        elif kind == "op":
+            prev = next((u for k, u in toks[i - 1 :: -1] if k != "space"), "(") if i else "("
+            unary = t in "−-+" and (prev in "(," or _TOKEN.fullmatch(prev).lastgroup == "op")
+            # a sign is not spaced as a binary operator: after a comma neither
+            out.append(f"{{{_OPS.get(t, t)}}}" if unary else _OPS.get(t, t))
+        else:
+            out.append(t)
+    return "".join(out).rstrip()
+
+
+def _math_line(line: str) -> str:
+    """One line of a caption with its formulas typeset (see :func:`_mathtext`)."""
+    words = line.split(" ")
+    pieces: list[tuple[str, bool]] = []  # (text, a formula)
+    i = 0
+    while i < len(words):
+        core = words[i].rstrip(".,:;")
+        if _AXIS.fullmatch(core):  # the x-axis
+            pieces.append((f"${core[0]}${words[i][1:]}", True))
+            i += 1
+            continue
+        if not core or _kind(core) != "math":
+            pieces.append((words[i], False))
+            i += 1
+            continue
+        # a formula: the math and operator words from here, up to a punctuation mark
+        # (a comma inside brackets belongs to it) or a prose word
+        items: list[tuple[str, str]] = []
+        depth = 0
+        while i < len(words):
+            core = words[i].rstrip(".,:;")
+            if not core or _kind(core) == "prose":
+                break
+            trail = words[i][len(core) :]
+            depth += core.count("(") - core.count(")")
+            i += 1
+            if trail == "," and depth > 0:
+                items.append((core + ",", ""))
+                continue
+            items.append((core, trail))
+            if trail:
+                break
+        tail: list[str] = []
+        while items and _kind(items[-1][0]) == "op":  # operators at the end stay prose
+            tail.insert(0, "".join(items.pop()))
+        formula, after = " ".join(c for c, _ in items), items[-1][1]
+        lead = back = ""
+        while formula.startswith("(") and formula.count("(") > formula.count(")"):
+            lead, formula = lead + "(", formula[1:]
+        while formula.endswith(")") and formula.count(")") > formula.count("("):
+            back, formula = ")" + back, formula[:-1]
+        pieces.append((f"{lead}${_math_body(formula)}${back}{after}", True))
+        pieces += [(t, False) for t in tail]
+    if not any(f for _, f in pieces):
+        return line
+    # a dollar of the prose is escaped on a line that has formulas
+    return " ".join(t if f else t.replace("$", r"\$") for t, f in pieces)
+
+
+def _mathtext(text: str) -> str:
+    """``text`` with its point names and formulas typeset as mathtext: each formula whole
+    in one ``$…$`` (so that :func:`_wrap` never breaks it), the prose as it is.
+
+    Examples
+    --------
+    >>> print(_mathtext("Plot V1 = (−O_M X1, −O Y1)"))
+    Plot $V_1 = ({-}O_M\\ X_1, {-}O\\ Y_1)$
+    >>> print(_mathtext("Bisect P1x P2x: its midpoint O_M"))
+    Bisect $P_{1x}\\ P_{2x}$: its midpoint $O_M$
+    >>> print(_mathtext("The upper side (angle φ1 + ξ1) at P2, Fig. 2"))
+    The upper side (angle $\\varphi_1 + \\xi_1$) at $P_2$, Fig.\u00a02
+    >>> print(_mathtext("F_int = k_grasp/(x1 + x2)·F_e on the x-axis"))
+    $F_\\mathrm{int} = k_\\mathrm{grasp}/(x_1 + x_2)\\cdot F_e$ on the $x$-axis
+    >>> print(_mathtext("Step 13 of 0–46 · perpendicular"))
+    Step 13 of 0–46 · perpendicular
+    """
+    return "\n".join(_math_line(_REF.sub("\\1\u00a0", p)) for p in text.split("\n"))
+
+
+def _shown(text: str) -> str:
+    """The characters of a caption as read (its formulas without their markup): the
+    length by which it is paced.
+
+    >>> _shown(r"plot $V_1 = ({-}O_M\\ X_1, {-}O\\ Y_1)$ of $k_\\mathrm{grasp}(\\theta)$")
+    'plot V1 = (-OM X1, -O Y1) of kgrasp(θ)'
+    """
+    out = []
+    for i, part in enumerate(re.split(r"(?<!\\)\$", text)):
+        if i % 2 == 0:
+            out.append(part.replace(r"\$", "$"))
+            continue
+        part = re.sub(r"\\mathrm\{([^}]*)\}", r"\1", part.replace("\\ ", " "))
+        for name, letter in _GREEK.items():
+            part = part.replace(f"\\{letter}", name)
+        out.append(re.sub(r"\\[A-Za-z]+ ?", "·", part).translate({ord(c): None for c in "{}_"}))
+    return "".join(out)
+
+
+#: A word of a caption: up to a space outside a formula ``$…$``.
+_WORD = re.compile(r"(?:\\\$|\$[^$]*\$|[^ $\\]|\\)+")
+
+
 def _wrap(text: str, width: float, measure: Any) -> str:
-    """``text`` broken at spaces into lines no wider than ``width`` pixels; ``measure(s)``
-    is the width of ``s`` as drawn."""
+    """``text`` broken at spaces outside its formulas ``$…$`` into lines no wider than
+    ``width`` pixels; ``measure(s)`` is the width of ``s`` as drawn."""
     lines: list[str] = []
     for para in text.split("\n"):
         line = ""
-        for word in para.split(" "):
+        for word in _WORD.findall(para):
             trial = f"{line} {word}" if line else word
             if line and measure(trial) > width:
                 lines.append(line)
@@ -38,19 +199,25 @@ def _wrap(text: str, width: float, measure: Any) -> str:
 
 
 def _text_width(renderer: Any, prop: Any) -> Any:
-    """A fast measure of text widths in pixels: the sum of the characters' advances
-    (measured once each), 3 % wider for kerning and hinting."""
+    """A fast measure of text widths in pixels, mathtext as rendered: the sum of the
+    words' widths (each measured once, a word with a formula by the mathtext parser)
+    and of the spaces, 3 % wider for kerning and hinting."""
     cache: dict[str, float] = {}
 
+    def width(w: str, math: bool) -> float:
+        return renderer.get_text_width_height_descent(w, prop, math)[0]
+
+    bar = width("||", False)
+    space = width("| |", False) - bar
+
     def measure(s: str) -> float:
-        total = 0.0
-        for ch in s:
-            if ch not in cache:
-                cache[ch] = (
-                    renderer.get_text_width_height_descent(f"|{ch}|", prop, False)[0]
-                    - renderer.get_text_width_height_descent("||", prop, False)[0]
-                )
-            total += cache[ch]
+        words = _WORD.findall(s)
+        total = space * (len(words) - 1)
+        for w in words:
+            if w not in cache:
+                math = w.count("$") - w.count(r"\$") >= 2
+                cache[w] = width(w, True) if math else width(f"|{w}|", False) - bar
+            total += cache[w]
         return 1.03 * total
 
     return measure

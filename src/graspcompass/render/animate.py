@@ -37,7 +37,7 @@ By default each step's caption stays at least 2 s (the drawing, then a rest):
 2.0
 >>> print(anim.caption_at(anim.timeline.frames_of_step(13)[0]))
 Step 13 of 0–46 · perpendicular
-§3.3 V1 (2): perpendicular from P2x to the upper side of the cone at P1
+§3.3 $V_1$ (2): perpendicular from $P_{2x}$ to the upper side of the cone at $P_1$
 """
 
 from __future__ import annotations
@@ -59,7 +59,7 @@ from ..scene.picture import scene_of
 from ._anim_camera import camera_box, step_boxes
 from ._anim_frames import _CameraFrames
 from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
-from ._anim_layout import _layout, _text_width, _wrap  # noqa: F401
+from ._anim_layout import _layout, _mathtext, _shown, _text_width, _wrap  # noqa: F401
 from ._anim_player import FrameAnimation
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
@@ -133,20 +133,22 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         theme = theme.with_(font_size=max(theme.font_size, self._least_pt))
         self.construction, self.theme, self.dim = construction, theme, float(dim)
         steps = construction.steps
-        self._texts = [self._caption_text(s) for s in steps]
-        self._hold_text = self._caption_text(None)
+        self._texts = [_mathtext(self._caption_text(s)) for s in steps]  # typeset
+        self._hold_text = _mathtext(self._caption_text(None))
         least = None
         if self.caption_seconds > 0 or self.reading_rate > 0:
             # paced by step: a key step rests on its result after its caption is read
             least = [
-                reading_frames(t, fps, self.caption_seconds, self.reading_rate)
+                reading_frames(_shown(t), fps, self.caption_seconds, self.reading_rate)
                 + (pause if s.key else 0)
                 for t, s in zip(self._texts, steps)
             ]
             if hold:
                 hold = max(
                     hold,
-                    reading_frames(self._hold_text, fps, self.caption_seconds, self.reading_rate),
+                    reading_frames(
+                        _shown(self._hold_text), fps, self.caption_seconds, self.reading_rate
+                    ),
                 )
         title = q.title_seconds if title_seconds is None else float(title_seconds)
         timeline = Timeline.from_keys(
