@@ -81,7 +81,8 @@ def _math_body(formula: str) -> str:
             )
         elif kind == "op":
             prev = next((u for k, u in toks[i - 1 :: -1] if k != "space"), "(") if i else "("
-            unary = t in "−-+" and (prev in "(," or _TOKEN.fullmatch(prev).lastgroup == "op")
+            m = _TOKEN.fullmatch(prev)
+            unary = t in "−-+" and (prev in "(," or (m is not None and m.lastgroup == "op"))
             # a sign is not spaced as a binary operator: after a comma neither
             out.append(f"{{{_OPS.get(t, t)}}}" if unary else _OPS.get(t, t))
         else:
