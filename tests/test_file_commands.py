@@ -192,7 +192,7 @@ def test_exercise_file_with_the_grasp(capsys, files, tmp_path, monkeypatch):
     monkeypatch.setattr(
         cli,
         "_draw",
-        lambda c, path, fmt, step, overlay, title=None, **_: drawn.append((c, overlay, title)),
+        lambda c, path, fmt, step, overlay, title=None, *_: drawn.append((c, overlay, title)),
     )
     assert (
         run(
