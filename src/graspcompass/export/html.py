@@ -192,6 +192,13 @@ def to_html(construction: Construction, title: str | None = None) -> str:
         For a symbolic construction.
     """
     data = page_data(construction, title)
+    scripts = {"LABELLING_JS": web_file("labelling.js"), "EXPLORER_JS": web_file("explorer.js")}
+    return _fill_page(web_file("explorer.html"), data, scripts)
+
+
+def _fill_page(template: str, data: dict[str, Any], scripts: dict[str, str]) -> str:
+    """``template`` with its ``{{NAME}}`` slots filled: the version, title, styles, the
+    page data as JSON, JSXGraph and ``scripts`` (each made safe inside ``<script>``)."""
     js = re.sub(r"\n//# sourceMappingURL=\S*\s*$", "\n", web_file("jsxgraph.min.js"))
     parts = {
         "VERSION": __version__,
@@ -202,10 +209,9 @@ def to_html(construction: Construction, title: str | None = None) -> str:
         # JSON inside <script>: "<\/" is the same string to JSON.parse
         "DATA": json.dumps(data, ensure_ascii=False).replace("</", "<\\/"),
         "JSXGRAPH_JS": _script_safe(js),
-        "LABELLING_JS": _script_safe(web_file("labelling.js")),
-        "EXPLORER_JS": _script_safe(web_file("explorer.js")),
+        **{name: _script_safe(text) for name, text in scripts.items()},
     }
-    return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], web_file("explorer.html"))
+    return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], template)
 
 
 def write_html(construction: Construction, path: Any, title: str | None = None) -> Path:

@@ -40,7 +40,6 @@ Examples
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from importlib import resources
@@ -50,7 +49,7 @@ from typing import Any
 from .._version import __version__
 from ..geometry.numeric import to_float
 from ..scene.palette import PALETTE
-from .html import JSXGRAPH_VERSION, _html_escape, _script_safe, web_file
+from .html import _fill_page
 
 __all__ = ["NCONTACT_FILES", "ncontact_page_data", "to_ncontact_html", "write_ncontact_html"]
 
@@ -131,18 +130,8 @@ def to_ncontact_html(grasp: Any, theta: float = 0.0, title: str | None = None) -
         For symbolic contacts or a custom effort.
     """
     data = ncontact_page_data(grasp, theta, title)
-    js = re.sub(r"\n//# sourceMappingURL=\S*\s*$", "\n", web_file("jsxgraph.min.js"))
-    parts = {
-        "VERSION": __version__,
-        "JSXGRAPH_VERSION": JSXGRAPH_VERSION,
-        "TITLE": _html_escape(data["title"]),
-        "JSXGRAPH_CSS": web_file("jsxgraph.css").replace("</", "<\\/"),
-        "EXPLORER_CSS": web_file("explorer.css").replace("</", "<\\/"),
-        "DATA": json.dumps(data, ensure_ascii=False).replace("</", "<\\/"),
-        "JSXGRAPH_JS": _script_safe(js),
-        "NCONTACT_JS": _script_safe(_own_file("ncontact.js")),
-    }
-    return re.sub(r"\{\{([A-Z_]+)\}\}", lambda m: parts[m.group(1)], _own_file("ncontact.html"))
+    scripts = {"NCONTACT_JS": _own_file("ncontact.js")}
+    return _fill_page(_own_file("ncontact.html"), data, scripts)
 
 
 def write_ncontact_html(
