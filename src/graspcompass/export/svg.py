@@ -137,9 +137,10 @@ _INSTRUMENT_DASH = {
 
 def _instruments(scene: Scene, m: _Map) -> list[str]:
     """The compass arcs, right-angle marks and V_n's guides of the scene, thin
-    (:mod:`graspcompass.scene.instruments`); ``data-step`` names the step of each."""
+    (:mod:`graspcompass.scene.instruments`), at the zoom of ``m`` (points per unit: the
+    frame is FRAME_PT points for _SIZE user units); ``data-step`` names their step."""
     out = []
-    for ins in scene.instruments:
+    for ins in scene.instruments_at(m.s * FRAME_PT / _SIZE):
         color = (
             COLORS.get(f"circle{ins.n}", COLORS["perp"])
             if ins.role == "coordinate"

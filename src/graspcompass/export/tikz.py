@@ -223,9 +223,14 @@ def _envelope_path(scene: Scene) -> str:
 
 
 def _body(
-    scene: Scene, construction: Construction, box: tuple[float, ...], pad: float
+    scene: Scene,
+    construction: Construction,
+    box: tuple[float, ...],
+    pad: float,
+    zoom: float | None = None,
 ) -> list[str]:
-    """The drawing of every object, clipped to ``box`` (the diagram or the inset)."""
+    """The drawing of every object, clipped to ``box`` (the diagram, or the inset drawn
+    at ``zoom`` points per unit)."""
     out: list[str] = []
     corners = f"{_xy((box[0], box[2]))} rectangle {_xy((box[1], box[3]))}"
     out += [f"\\path[use as bounding box] {corners};", f"\\clip {corners};"]
@@ -247,7 +252,7 @@ def _body(
     circles = {n: (k, c, r) for n, k, c, r in scene.circles}
     points = {n: xy for names, xy in scene.points for n in names}
     tools: dict[str, list[str]] = {}  # the compass arcs, right angles, guides of each step
-    for ins in scene.instruments:
+    for ins in scene.instruments_at(zoom):
         dash = {
             "bisector": ", dotted",
             "coordinate": f", dotted, draw=gccircle{ins.n}",
@@ -408,7 +413,7 @@ def to_tikz(
                 )
                 .split("\n")
             )
-        out += _body(scene, construction, z, pad)
+        out += _body(scene, construction, z, pad, inset.zoom)
         out += _points(scene, inset.labels, z)
         out.append(
             f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"

@@ -90,19 +90,16 @@ _CORNER = _corner()
 
 
 def _draw_instruments(
-    ax: Axes, scene: Scene, theme: Theme, out: dict[str, list[Artist]], shrink: float = 1.0
+    ax: Axes, scene: Scene, theme: Theme, out: dict[str, list[Artist]], zoom: float | None = None
 ) -> None:
     """The scene's compass arcs, right-angle marks and the guides of V_n, thin and faint.
 
     Each artist goes with the step it belongs to (its gid ``instrument:ROLE``), so
     that a picture cut at a step, and the animation, show it with that step.
-    ``shrink`` scales the right-angle marks about their corners (a zoomed view).
+    ``zoom``: the points per unit of a zoomed view (:meth:`Scene.instruments_at`).
     """
-    for ins in scene.instruments:
+    for ins in scene.instruments_at(zoom):
         xy = np.asarray(ins.points, dtype=float)
-        if ins.role == "right_angle" and shrink != 1.0:
-            corner = xy[0] + xy[2] - xy[1]
-            xy = corner + shrink * (xy - corner)
         color = theme.circle_color(ins.n) if ins.role == "coordinate" else theme.construction_color
         kw: dict[str, Any] = dict(
             color=color, lw=theme.thin_width, zorder=2.3, solid_capstyle="butt"

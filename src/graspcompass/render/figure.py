@@ -146,7 +146,8 @@ def draw_construction(
     out: dict[str, list[Artist]] = {}
     _draw_givens(ax, construction, scene, theme, out)
     instruments: dict[str, list[Artist]] = {}
-    _draw_instruments(ax, scene, theme, instruments, (lim[1] - lim[0]) / (box[1] - box[0]))
+    zoom = scene.inset.zoom if view == "inset" and scene.inset is not None else None
+    _draw_instruments(ax, scene, theme, instruments, zoom)
     last = state.steps[-1].name if highlight_last else None
     for s in state.steps:
         v = num[s.name]

@@ -32,7 +32,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["ROLES", "Instrument", "instruments_of"]
+__all__ = ["ROLES", "Instrument", "in_view", "instruments_of"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -83,6 +83,33 @@ def _square(at: XY, u: XY, w: XY, a: float) -> tuple[XY, ...]:
         (at[0] + a * (u[0] + w[0]), at[1] + a * (u[1] + w[1])),
         (at[0] + a * w[0], at[1] + a * w[1]),
     )
+
+
+def in_view(instruments: tuple[Instrument, ...], scale: float) -> tuple[Instrument, ...]:
+    """The instruments as drawn in a view ``scale`` times the diagram's width.
+
+    A zoomed inset has ``scale`` < 1: its right-angle marks are shrunk by ``scale``
+    about their corners, so that they keep the size they have on screen in the diagram
+    (the marks are sized by the diagram's view, :func:`instruments_of`); every other
+    stroke lies on the geometry and is kept.  Every painter draws an inset with it.
+
+    Examples
+    --------
+    >>> mark = Instrument("right_angle", "Y1", 1, ((1.0, 0.0), (1.0, 1.0), (0.0, 1.0)))
+    >>> in_view((mark,), 0.5)[0].points
+    ((0.5, 0.0), (0.5, 0.5), (0.0, 0.5))
+    """
+    if scale == 1.0:
+        return instruments
+    out = []
+    for ins in instruments:
+        if ins.role == "right_angle" and len(ins.points) == 3:
+            (ax, ay), (bx, by), (cx, cy) = ins.points
+            kx, ky = ax + cx - bx, ay + cy - by  # the corner: the foot of the perpendicular
+            pts = tuple((kx + scale * (x - kx), ky + scale * (y - ky)) for x, y in ins.points)
+            ins = Instrument(ins.role, ins.step, ins.n, pts)
+        out.append(ins)
+    return tuple(out)
 
 
 def _foot(p: XY, line: Any) -> XY:

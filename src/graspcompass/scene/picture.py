@@ -29,7 +29,7 @@ from ..construction.describe import describe
 from ..geometry.numeric import to_float
 from . import fit as fitting
 from . import labelling, layout
-from .instruments import Instrument, instruments_of
+from .instruments import Instrument, in_view, instruments_of
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
 
@@ -176,6 +176,14 @@ class Scene:
     def visible(self, name: str) -> bool:
         """Whether the object ``name`` is made at the step shown."""
         return self.step is None or self.made.get(name, math.inf) <= self.step
+
+    def instruments_at(self, zoom: float | None = None) -> tuple[Instrument, ...]:
+        """The instruments as drawn at ``zoom`` points per unit (:attr:`Inset.zoom`; the
+        diagram's :data:`~graspcompass.scene.labelling.FRAME_PT` per box width if None):
+        right-angle marks keep their size on the page in a zoomed view."""
+        if zoom is None:
+            return self.instruments
+        return in_view(self.instruments, labelling.FRAME_PT / (self.box[1] - self.box[0]) / zoom)
 
     def upto(self, step: int | None) -> Scene:
         """The picture after step ``step``: nothing made after it is drawn or named.
