@@ -157,6 +157,13 @@ def test_gallery_has_every_figure() -> None:
         assert (folder / "GALLERY_HEADER.rst").is_file()
 
 
+def test_gallery_numbers_are_unique() -> None:
+    """One number per example across every section (issue 23: two plot_13, two plot_14)."""
+    numbers = [p.name.split("_")[1] for p in GALLERY.rglob("plot_*.py")]
+    assert len(numbers) > 10
+    assert sorted(numbers) == sorted(set(numbers)), sorted(numbers)
+
+
 @pytest.mark.parametrize(
     "script",
     _scripts(GALLERY)
