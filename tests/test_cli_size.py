@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import shlex
 import subprocess
 import sys
 
@@ -187,131 +188,28 @@ def test_bad_values_one_line_exit_2(extra, message, capsys) -> None:
     "argv, message",
     [
         (
-            [
-                "--p1",
-                "0.04,0",
-                "--p2=-0.04,0",
-                "--n1=-0.8,0.6",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-            ],
+            "--p1 0.04,0 --p2=-0.04,0 --n1=-0.8,0.6 --n2 1,0 --com 0,0 --mu 0.5",
             "not force-closure: squeezing harder cannot hold this part: contact jaw1",
         ),
+        ("--p1 0.04,0 --p2=-0.04,0 --n1 1,0 --n2 1,0 --com 0,0 --mu 0.5", "no friction suffices"),
+        ("--p1 0.04,0 --p2=-0.04,0 --n1=0,0 --n2 1,0 --com 0,0 --mu 2", "zero normal"),
         (
-            [
-                "--p1",
-                "0.04,0",
-                "--p2=-0.04,0",
-                "--n1",
-                "1,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-            ],
-            "no friction suffices",
-        ),
-        (
-            [
-                "--p1",
-                "0.04,0",
-                "--p2=-0.04,0",
-                "--n1=0,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "2",
-            ],
-            "zero normal",
-        ),
-        (
-            [
-                "--p1",
-                "0.041,0",
-                "--p2=-0.04,0",
-                "--outline=-0.04,-0.02;0.04,-0.02;0.04,0.02;-0.04,0.02",
-                "--mu",
-                "0.5",
-            ],
+            "--p1 0.041,0 --p2=-0.04,0 --mu 0.5 "
+            "'--outline=-0.04,-0.02;0.04,-0.02;0.04,0.02;-0.04,0.02'",
             "does not lie on the outline",
         ),
         (
-            [
-                "--p1",
-                "0.04,0",
-                "--p2=-0.04,0",
-                "--n1=-1,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-                "--outline",
-                "0,0;1,0",
-            ],
+            "--p1 0.04,0 --p2=-0.04,0 --n1=-1,0 --n2 1,0 --com 0,0 --mu 0.5 --outline '0,0;1,0'",
             "at least 3 vertices",
         ),
-        (
-            [
-                "--p1",
-                "0.04",
-                "--p2=-0.04,0",
-                "--n1=-1,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-            ],
-            "expected X,Y",
-        ),
-        (
-            [
-                "--p1",
-                "4in,0",
-                "--p2=-0.04,0",
-                "--n1=-1,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-            ],
-            "unknown unit 'in'",
-        ),
-        (["--p1", "0.04,0", "--p2=-0.04,0", "--com", "0,0", "--mu", "0.5"], "--n1 and --n2"),
-        (
-            [
-                "--p1",
-                "0.04,0",
-                "--p2=-0.04,0",
-                "--n1=-1,0",
-                "--n2",
-                "1,0",
-                "--com",
-                "0,0",
-                "--mu",
-                "0.5",
-                "--mu1",
-                "1",
-            ],
-            "not both",
-        ),
+        ("--p1 0.04 --p2=-0.04,0 --n1=-1,0 --n2 1,0 --com 0,0 --mu 0.5", "expected X,Y"),
+        ("--p1 4in,0 --p2=-0.04,0 --n1=-1,0 --n2 1,0 --com 0,0 --mu 0.5", "unknown unit 'in'"),
+        ("--p1 0.04,0 --p2=-0.04,0 --com 0,0 --mu 0.5", "--n1 and --n2"),
+        ("--p1 0.04,0 --p2=-0.04,0 --n1=-1,0 --n2 1,0 --com 0,0 --mu 0.5 --mu1 1", "not both"),
     ],
 )
 def test_bad_parts_one_line_exit_2(argv, message, capsys) -> None:
-    assert main(["size", *argv, "--mass", "1"]) == 2
+    assert main(["size", *shlex.split(argv), "--mass", "1"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and message in err, err
 
