@@ -391,12 +391,12 @@
       rays = qRays(rows);
     }
     const closure = qRays(m.G).length === 0;
-    let big = 1;
-    for (const p of pts) big = Math.max(big, Math.abs(p.q[0]), Math.abs(p.q[1]));
+    // one candidate per point: closer than 1e-9 relative to the point (polygon._close), as
+    // the copies of one dual vertex from its several bases are (each rounds on its own way)
     const cands = [];
     for (const p of pts) {
-      const same = cands.find((c) => Math.max(Math.abs(c.q[0] - p.q[0]),
-        Math.abs(c.q[1] - p.q[1])) <= 1e-13 * big);
+      const same = cands.find((c) => Math.abs(c.q[0] - p.q[0]) + Math.abs(c.q[1] - p.q[1]) <=
+        1e-9 * (1 + Math.abs(c.q[0]) + Math.abs(c.q[1])));
       if (same) same.bases.push(p.basis);
       else cands.push({ q: p.q, bases: [p.basis] });
     }
