@@ -107,10 +107,47 @@ def sub(p: Point, q: Point) -> tuple:
     return (p.x - q.x, p.y - q.y)
 
 
+_A, _B, _R = sympy.symbols("a b r")
+
+
 def is_zero(expr: sympy.Expr) -> bool:
-    """Exact zero test by expansion and rationalised denominators (no simplify)."""
+    """Exact zero test, independent of the kernel.
+
+    The numbers of these tests lie in Q(√2, √3, √D), D in Q(√2, √3): √2, √3, √6 become
+    a, b, ab, the nested root r, and the numerator of the expression is reduced modulo
+    the triangular (Gröbner) basis r² − D(a, b), b² − 3, a² − 2.  A zero remainder
+    means zero; a non-zero one means non-zero when the tower has degree 8 (D not a
+    square in Q(√2, √3), where the test would fail, never pass, wrongly).  Other radicals
+    fall back to sympy's radsimp.
+    """
     expr = sympy.expand(sympy.sympify(expr))
-    return expr == 0 or sympy.expand(sympy.radsimp(expr)) == 0
+    if expr == 0:
+        return True
+    roots = {p for p in expr.atoms(sympy.Pow) if p.exp == sympy.S.Half}
+    simple = {sympy.sqrt(2): _A, sympy.sqrt(3): _B, sympy.sqrt(6): _A * _B}
+    nested = [p for p in roots if not p.base.is_Rational]
+    if len(nested) > 1 or any(p.base.is_Rational and p not in simple for p in roots):
+        return sympy.expand(sympy.radsimp(expr)) == 0
+    rep = dict(simple)
+    basis = [_B**2 - 3, _A**2 - 2]
+    if nested:
+        rep = {nested[0]: _R, **simple}
+        basis.insert(0, _R**2 - sympy.expand(nested[0].base.xreplace(simple)))
+    poly = expr.xreplace(rep)
+    if any(not p.exp.is_Integer for p in poly.atoms(sympy.Pow)):
+        return sympy.expand(sympy.radsimp(expr)) == 0
+    num = sympy.together(poly).as_numer_denom()[0]
+    _, rem = sympy.reduced(sympy.expand(num), basis, _R, _B, _A, order="lex")
+    return rem == 0
+
+
+def test_is_zero_tells_zero_from_almost_zero() -> None:
+    d = 5 - sympy.sqrt(2) + 3 * sympy.sqrt(6)
+    r = (1 + sympy.sqrt(3) * sympy.sqrt(d)) / (2 - sympy.sqrt(2))
+    assert is_zero(r * r - sympy.expand(r**2))
+    assert is_zero((r - 1) * (r + 1) - r**2 + 1)
+    assert not is_zero(r * r - sympy.expand(r**2) + sympy.Rational(1, 10**40))
+    assert not is_zero(sympy.sqrt(d) * sympy.sqrt(2) - sympy.sqrt(2 * d) + sympy.sqrt(3) - 1)
 
 
 def on_line(p: Point, line: Line) -> bool:
