@@ -72,6 +72,13 @@ CROWD: dict[str, float] = {"radius": 0.04, "count": 2, "pad": 0.1, "largest": 0.
 REORDER = 1
 MARGIN: dict[str, float] = {"grow": 1.0, "nearer": 1.0, "marker": 0.75}
 
+# the candidates of one label as arrays, (FITS, DIRECTIONS) in the order they are tried
+_UX = np.array([[u for u, _ in DIRECTIONS]])
+_UY = np.array([[v for _, v in DIRECTIONS]])
+_NZX, _NZY = _UX != 0, _UY != 0
+_FARS = np.array(FITS)
+_SOFT = (10.0 * np.arange(len(FITS))[:, None] + 0.5 * np.arange(len(DIRECTIONS))[None, :]).ravel()
+
 
 @dataclass(frozen=True)
 class Fit:
@@ -85,21 +92,29 @@ class Fit:
     ok: bool
 
 
-def _dist_to_box(pts: np.ndarray, box: np.ndarray) -> np.ndarray:
-    dx = np.maximum(np.maximum(box[0] - pts[:, 0], 0.0), pts[:, 0] - box[2])
-    dy = np.maximum(np.maximum(box[1] - pts[:, 1], 0.0), pts[:, 1] - box[3])
-    return np.hypot(dx, dy)
-
-
-def _hits(box: np.ndarray, boxes: np.ndarray) -> bool:
+def _hits_many(box: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """Per row of ``box`` (K, 4): whether it overlaps any of ``boxes`` (M, 4)."""
     if not len(boxes):
-        return False
-    return bool(
-        np.any(
-            (np.minimum(box[2], boxes[:, 2]) > np.maximum(box[0], boxes[:, 0]))
-            & (np.minimum(box[3], boxes[:, 3]) > np.maximum(box[1], boxes[:, 1]))
+        return np.zeros(len(box), dtype=bool)
+    return np.any(
+        (
+            np.minimum(box[:, None, 2], boxes[None, :, 2])
+            > np.maximum(box[:, None, 0], boxes[None, :, 0])
         )
+        & (
+            np.minimum(box[:, None, 3], boxes[None, :, 3])
+            > np.maximum(box[:, None, 1], boxes[None, :, 1])
+        ),
+        axis=1,
     )
+
+
+def _dist_from_boxes(pts: np.ndarray, box: np.ndarray) -> np.ndarray:
+    """Distances (K, N) from the points ``pts`` (N, 2) to each box of ``box`` (K, 4)."""
+    x, y = pts[None, :, 0], pts[None, :, 1]
+    dx = np.maximum(np.maximum(box[:, 0, None] - x, 0.0), x - box[:, 2, None])
+    dy = np.maximum(np.maximum(box[:, 1, None] - y, 0.0), y - box[:, 3, None])
+    return np.hypot(dx, dy)
 
 
 def fit(
@@ -200,54 +215,53 @@ def _greedy(
         w, h = sizes[i]
         # a marker over the point's own marker is its place too (one place to the eye)
         others = every[np.hypot(every[:, 0] - px, every[:, 1] - py) >= (msize + msize[i]) / 2]
-        best: tuple[float, Fit] | None = None
-        for k, far in enumerate(FITS):
-            d = (msize[i] / 2 + gap) * far
-            for rank, (ux, uy) in enumerate(DIRECTIONS):
-                t = min(w / 2 / abs(ux) if ux else math.inf, h / 2 / abs(uy) if uy else math.inf)
-                cx, cy = px + ux * (d + t), py + uy * (d + t)
-                box = np.array([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2])
-                big = box + np.array([-g, -g, g, g])
-                bad = 0.0
-                bad += 100.0 * _hits(big, np.array(placed).reshape(-1, 4))
-                bad += 100.0 * _hits(big, markers)
-                if len(others):
-                    own = float(_dist_to_box(np.array([[px, py]]), big)[0])
-                    near = float(_dist_to_box(others, big).min())
-                    bad += 100.0 * (near < own + MARGIN["nearer"])
-                if frame is not None:
-                    bad += 100.0 * (
-                        box[0] < frame[0]
-                        or box[1] < frame[1]
-                        or box[2] > frame[2]
-                        or box[3] > frame[3]
-                    )
-                soft = 10.0 * k + 0.5 * rank
-                if len(curve):
-                    inside = (
-                        (curve[:, 0] > box[0])
-                        & (curve[:, 0] < box[2])
-                        & (curve[:, 1] > box[1])
-                        & (curve[:, 1] < box[3])
-                    )
-                    soft += 1.5 * float(inside.sum())
-                score = bad * 1000.0 + soft
-                if best is None or score < best[0]:
-                    # the side of the point the whole box is on (0: across it)
-                    dx = 1 if box[0] >= px else -1 if box[2] <= px else 0
-                    dy = 1 if box[1] >= py else -1 if box[3] <= py else 0
-                    ax = box[0] if dx > 0 else box[2] if dx < 0 else cx
-                    ay = box[1] if dy > 0 else box[3] if dy < 0 else cy
-                    f = Fit(
-                        (float(ax - px), float(ay - py)),
-                        (dx, dy),
-                        tuple(float(v) for v in box),  # type: ignore[arg-type]
-                        far >= LEADER,
-                        bad == 0.0,
-                    )
-                    best = (score, f)
-        assert best is not None
-        f = best[1]
+        # every candidate at once, in the order they are tried (FITS, then DIRECTIONS):
+        # the first of the lowest scores wins, as one by one
+        tx, ty = np.full(_UX.shape, math.inf), np.full(_UY.shape, math.inf)
+        tx[_NZX] = w / 2 / np.abs(_UX[_NZX])
+        ty[_NZY] = h / 2 / np.abs(_UY[_NZY])
+        t = np.minimum(tx, ty)
+        d = ((msize[i] / 2 + gap) * _FARS)[:, None]
+        cx, cy = (px + _UX * (d + t)).ravel(), (py + _UY * (d + t)).ravel()
+        box = np.column_stack([cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2])
+        big = box + np.array([-g, -g, g, g])
+        bad = 100.0 * _hits_many(big, np.array(placed).reshape(-1, 4))
+        bad = bad + 100.0 * _hits_many(big, markers)
+        if len(others):
+            own = _dist_from_boxes(np.array([[px, py]]), big)[:, 0]
+            near = _dist_from_boxes(others, big).min(axis=1)
+            bad = bad + 100.0 * (near < own + MARGIN["nearer"])
+        if frame is not None:
+            bad = bad + 100.0 * (
+                (box[:, 0] < frame[0])
+                | (box[:, 1] < frame[1])
+                | (box[:, 2] > frame[2])
+                | (box[:, 3] > frame[3])
+            )
+        soft = _SOFT.copy()
+        if len(curve):
+            inside = (
+                (curve[None, :, 0] > box[:, 0, None])
+                & (curve[None, :, 0] < box[:, 2, None])
+                & (curve[None, :, 1] > box[:, 1, None])
+                & (curve[None, :, 1] < box[:, 3, None])
+            )
+            soft = soft + 1.5 * inside.sum(axis=1)
+        j = int(np.argmin(bad * 1000.0 + soft))
+        b = box[j]
+        # the side of the point the whole box is on (0: across it)
+        dx = 1 if b[0] >= px else -1 if b[2] <= px else 0
+        dy = 1 if b[1] >= py else -1 if b[3] <= py else 0
+        ax = b[0] if dx > 0 else b[2] if dx < 0 else cx[j]
+        ay = b[1] if dy > 0 else b[3] if dy < 0 else cy[j]
+        far = FITS[j // len(DIRECTIONS)]
+        f = Fit(
+            (float(ax - px), float(ay - py)),
+            (dx, dy),
+            tuple(float(v) for v in b),  # type: ignore[arg-type]
+            far >= LEADER,
+            bool(bad[j] == 0.0),
+        )
         if not f.ok and i < len(optional) and optional[i]:
             continue
         placed.append(np.asarray(f.box))
