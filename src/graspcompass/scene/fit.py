@@ -239,12 +239,18 @@ def _greedy(
                 | (box[:, 3] > frame[3])
             )
         soft = _SOFT.copy()
-        if len(curve):
+        held = curve[
+            (curve[:, 0] > box[:, 0].min())
+            & (curve[:, 0] < box[:, 2].max())
+            & (curve[:, 1] > box[:, 1].min())
+            & (curve[:, 1] < box[:, 3].max())
+        ]  # the samples some candidate box can hold
+        if len(held):
             inside = (
-                (curve[None, :, 0] > box[:, 0, None])
-                & (curve[None, :, 0] < box[:, 2, None])
-                & (curve[None, :, 1] > box[:, 1, None])
-                & (curve[None, :, 1] < box[:, 3, None])
+                (held[None, :, 0] > box[:, 0, None])
+                & (held[None, :, 0] < box[:, 2, None])
+                & (held[None, :, 1] > box[:, 1, None])
+                & (held[None, :, 1] < box[:, 3, None])
             )
             soft = soft + 1.5 * inside.sum(axis=1)
         j = int(np.argmin(bad * 1000.0 + soft))
