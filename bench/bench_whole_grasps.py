@@ -229,19 +229,21 @@ def main() -> None:
     )
     if "error" in symbolic:
         print(f"  upper bound Grasp.symbolic('mu'): error {symbolic['error']}")
-        sym = float("inf")
+        sym = sym_cpu = float("inf")
     else:
-        sym = symbolic["wall"]
+        sym, sym_cpu = symbolic["wall"], symbolic["cpu"]
         print(
-            f"  upper bound Grasp.symbolic('mu') (whole diagram): {sym:.2f} s; "
-            f"slowest numeric / symbolic = {walls[-1] / sym:.2f}"
+            f"  upper bound Grasp.symbolic('mu') (whole diagram): {sym:.2f} s wall, "
+            f"{sym_cpu:.3f} s CPU; slowest numeric / symbolic = {walls[-1] / sym:.2f} wall, "
+            f"{cpus[-1] / sym_cpu:.2f} CPU (the bound is judged in CPU time: one symbolic "
+            "run against the slowest of many on a shared machine)"
         )
     met = (
         walls[-1] < TARGET_MAX
         and statistics.median(walls) < TARGET_MEDIAN
         and not errors
         and all(r["exact"] for r in ok)
-        and walls[-1] <= sym
+        and cpus[-1] <= sym_cpu
     )
     print(
         f"target (slowest < {TARGET_MAX} s, median < {TARGET_MEDIAN} s, all exact, "
