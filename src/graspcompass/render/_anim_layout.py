@@ -261,7 +261,7 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         ax.set_position(
             (margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H, side / W, side / H)
         )
-        x_cap = margin * 1.6 + tick + side + 2.5 * margin
+        x_cap = margin * 1.6 + tick + side + 1.5 * margin
         width = W - x_cap - margin
     anim._caption = fig.text(
         x_cap / W, 0.5, "", va="top", linespacing=1.4, fontsize=caption_pt, fontweight="normal"
@@ -286,7 +286,7 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         bottom = top + 0.4 * margin + tick
         ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
         anim._fade_region = np.s_[: int(H - top - 2)]
-        anim._panel_box = anim._plot_top = None
+        anim._panel_box = None
     else:
         cap_top = H - title_h - margin
         anim._caption.set_y(cap_top / H)
@@ -297,6 +297,6 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
             W - margin,
             bar_h * H + tick + margin,
             cap_top - tall_steps - 0.6 * margin,
+            cap_top - tall_end - 0.6 * margin,
         )
-        anim._plot_top = cap_top - tall_end - 0.6 * margin
     anim._title = title

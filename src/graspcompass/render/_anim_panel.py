@@ -35,8 +35,10 @@ LEADING = 1.55
 
 
 def _num(v: float) -> str:
-    """A value to two decimals, without a negative zero."""
-    return f"{0.0 if abs(v) < 5e-3 else v:.2f}"
+    """A value to two decimals in mathtext, without a negative zero; a sign is not spaced
+    as a binary minus."""
+    v = 0.0 if abs(v) < 5e-3 else v
+    return f"{{-}}{-v:.2f}" if v < 0 else f"{v:.2f}"
 
 
 def _xy(v: Any) -> str:
@@ -95,78 +97,66 @@ def _lines(steps: Any, num: dict[str, Any]) -> list[list[tuple[str, int]]]:
 
 class SidePanel:
     """The list of what is made so far and the plot of k_grasp(θ), in the panel's box
-    ``(left, right, bottom, top)`` (pixels from the figure's lower left corner); the
-    plot's top at ``plot_top`` (under the captions of the envelope and the hold)."""
+    ``(left, right, bottom, top, plot_top)`` (pixels from the figure's lower left corner;
+    the plot's top under the captions of the envelope and of the hold).  Its text is at
+    least ``least_pt`` points."""
 
-    def __init__(
-        self,
-        anim: Any,
-        box: tuple[float, float, float, float],
-        least_pt: float,
-        plot_top: float | None = None,
-    ) -> None:
+    def __init__(self, anim: Any, box: tuple[float, ...], least_pt: float) -> None:
         fig, th = anim.figure, anim.theme
         self.figure, self.theme = fig, th
         renderer = anim._canvas.get_renderer()
         W, H = fig.get_size_inches() * fig.dpi
-        left, right, bottom, top = box
+        left, right, bottom, top, plot_top = box
         steps = anim.construction.steps
         env = [s for s in steps if s.kind == "envelope"]
         self.envelope = env[0].index if env else len(steps)
         lines = _lines(steps, anim._num)
-        self.cells: list[tuple[Text, int]] = []
         px = fig.dpi / 72.0
-        size = max(th.font_size, least_pt)
-        # the largest font (down to the least) at which the list fits the panel
+        self.cells: list[tuple[Text, int]] = [
+            (
+                fig.text(0, 0, text, va="top", fontweight="bold" if text == HEADING else "normal"),
+                i,
+            )
+            for cells in lines
+            for text, i in cells
+        ]
+        ends = np.cumsum([len(cells) for cells in lines])  # a line's cells end there
+        height = top - bottom
+        # the largest font, from the caption's down to the least, at which every line of
+        # the list fits the panel's width unbroken and all its lines its height; at the
+        # least a line too long goes on over the next
+        size = max(anim._caption.get_fontsize() * 0.9, least_pt)
         while True:
-            self._clear()
-            y, fits = top, True
-            for cells in lines:
-                x = left
-                for text, i in cells:
-                    head = text == HEADING
-                    t = fig.text(
-                        x / W,
-                        y / H,
-                        text,
-                        va="top",
-                        fontsize=size,
-                        fontweight="bold" if head else "normal",
-                    )
-                    w = t.get_window_extent(renderer).width  # measured while visible
-                    t.set_visible(False)
-                    if x > left and x + w > right:  # on the next line
-                        y -= LEADING * size * px
-                        x = left
-                        t.set_position((x / W, y / H))
-                    fits &= x + w <= right
-                    x += w + GAP * size * px
-                    self.cells.append((t, i))
-                y -= LEADING * size * px
-            fits &= y + (LEADING - 1.2) * size * px >= bottom
-            if fits or size <= least_pt:
+            rows, broken, x = 0, False, left
+            places: list[tuple[float, int]] = []
+            for k, (t, _) in enumerate(self.cells):
+                t.set_fontsize(size)
+                w = t.get_window_extent(renderer).width
+                first = k == 0 or k in ends
+                if first or x + w > right:
+                    broken |= not first
+                    rows += 1
+                    x = left
+                places.append((x, rows))
+                x += w + GAP * size * px
+            if (not broken and rows * LEADING * size * px <= height) or size <= least_pt:
                 break
-            size = max(least_pt, size * 0.92)
+            size = max(least_pt, size * 0.94)
+        # the lines spread over the panel's height, up to twice the font size apart
+        lead = min(2.0, max(LEADING, height / max(1, rows) / (size * px))) * size * px
+        for (t, _), (x, row) in zip(self.cells, places):
+            t.set_position((x / W, (top - (row - 1) * lead) / H))
+            t.set_visible(False)
         self.size = size
-        # the plot of k_grasp(θ), from the envelope's step on, in the same box
+        # the plot of k_grasp(θ), from the envelope's step on, under the last captions
         self.axes: Axes | None = None
         self.trace = self.cursor = None
         room = 5 * size * px  # the least width and height of the plot, with its labels
-        if (
-            env
-            and right - left >= room
-            and (top if plot_top is None else plot_top) - bottom >= room
-        ):
-            top_ = top if plot_top is None else plot_top
-            self._plot(anim, env[0], (left, right, bottom, top_), renderer, size, least_pt)
+        if env and right - left >= room and plot_top - bottom >= room:
+            self._plot(anim, env[0], (left, right, bottom, plot_top), renderer, size, least_pt)
         self.artists: list[Artist] = [t for t, _ in self.cells]
         if self.axes is not None:
             self.artists.append(self.axes)
-
-    def _clear(self) -> None:
-        for t, _ in self.cells:
-            t.remove()
-        self.cells = []
 
     def _plot(
         self, anim: Any, env: Any, box: Any, renderer: Any, size: float, least_pt: float

@@ -94,8 +94,7 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
     _wrapped: list[str]
     _hold_wrapped: str
     _fade_region: Any  # a numpy index of the rows (or columns) that fade
-    _panel_box: tuple[float, float, float, float] | None  # the side panel, in pixels
-    _plot_top: float | None  # the top of the side panel's plot of k_grasp, in pixels
+    _panel_box: tuple[float, ...] | None  # the side panel in pixels (see _anim_panel.py)
 
     def __init__(
         self,
@@ -252,14 +251,9 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         self._dynamic = [a for items in self._items for a, _, _ in items]
         self._dynamic += [a for a, _, _ in self._shared]
         self._dynamic += [*self._aids, self._caption, self._bar, self._card]
-        # the side panel (lecture): what is made so far, then the plot of k_grasp(θ)
-        self._panel = (
-            None
-            if self._panel_box is None
-            else SidePanel(self, self._panel_box, self._least_pt, self._plot_top)
-        )
-        if self._panel is not None:
-            self._dynamic += self._panel.artists
+        side = self._panel_box  # the side panel (lecture): what is made so far, k_grasp(θ)
+        self._panel = None if side is None else SidePanel(self, side, self._least_pt)
+        self._dynamic += [] if self._panel is None else self._panel.artists
 
     def _card_text(self) -> str:
         g = self.construction.grasp
