@@ -88,3 +88,22 @@ def test_the_embedded_frames_are_the_animation_s(example):
     assert min(anim.caption_seconds_of_step(s.index) for s in anim.construction.steps) >= 2.0
     cap = anim._caption.get_fontsize() * anim.figure.dpi / 72
     assert cap >= 14.0
+
+
+def test_the_gallery_thumbnail_gif_is_the_animation_scaled(example, tmp_path):
+    """sphinx-gallery also saves the animation as a GIF at a thumbnail's dpi
+    (``anim.save(path, writer=..., dpi=...)``): the player's own writer, every frame's
+    time in the file, the size that dpi gives."""
+    anim = example["animation"]
+    out = tmp_path / "thumb.gif"
+    anim.animation.save(out, writer="pillow", dpi=31)
+    w, h = anim.figure.get_size_inches() * 31
+    with Image.open(out) as im:
+        assert im.size == (round(w), round(h))
+        durations = []
+        for i in range(im.n_frames):
+            im.seek(i)
+            durations.append(im.info["duration"])
+    # a GIF keeps durations in hundredths of a second: each of its frames within 10 ms
+    total = anim.frame_count * 1000 / anim.fps
+    assert abs(sum(durations) - total) <= 10 * len(durations)

@@ -22,7 +22,15 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image
 
-from .timeline import Timeline, blend, check_fps, jshtml, palette_sample, write_animation
+from .timeline import (
+    Timeline,
+    blend,
+    check_fps,
+    jshtml,
+    palette_sample,
+    write_animation,
+    write_gif,
+)
 
 
 class _Player(FuncAnimation):
@@ -43,6 +51,39 @@ class _Player(FuncAnimation):
         if getattr(event, "renderer", None) is getattr(self._owner._canvas, "renderer", 0):
             return
         super()._start(*args)  # type: ignore[misc]
+
+    def save(  # type: ignore[override]
+        self, filename: Any, writer: Any = None, fps: Any = None, dpi: Any = None, **kwargs: Any
+    ) -> None:
+        """A GIF with the player's own writer (drawn by blitting; sphinx-gallery's
+        thumbnail), its frames scaled by ``dpi`` / the figure's; anything else as
+        :meth:`FuncAnimation.save <matplotlib.animation.Animation.save>` does."""
+        if Path(filename).suffix.lower() != ".gif" or kwargs or not isinstance(writer, str | None):
+            return super().save(filename, writer, fps, dpi, **kwargs)
+        owner = self._owner
+        scale = 1.0 if dpi in (None, "figure") else float(dpi) / owner.figure.dpi
+        w, h = owner._canvas.get_width_height()
+        size = (max(1, round(w * scale)), max(1, round(h * scale)))
+
+        def fit(rgb: np.ndarray) -> np.ndarray:
+            if size == (rgb.shape[1], rgb.shape[0]):
+                return rgb
+            return np.asarray(Image.fromarray(rgb).resize(size, Image.Resampling.LANCZOS))
+
+        def frames() -> Iterator[np.ndarray]:
+            last: Any = None
+            fitted: Any = None
+            for rgb in owner.iter_frames():
+                if rgb is not last:  # a still is the same frame again: resized once
+                    last, fitted = rgb, fit(rgb)
+                yield fitted
+
+        sample = palette_sample(owner)
+        n = sample.shape[0] // h  # the sample's frames, stacked
+        parts = [fit(sample[i * h : (i + 1) * h]) for i in range(n)]
+        write_gif(frames(), filename, owner.fps if fps is None else fps, np.concatenate(parts))
+        self._draw_was_started = True
+        return None
 
     def to_jshtml(
         self, fps: float | None = None, embed_frames: bool = True, default_mode: Any = None
