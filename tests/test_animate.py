@@ -26,7 +26,13 @@ from PIL import Image
 
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args
-from graspcompass.cli._animate import MAIN_ANIMATION, register, run, write_main_animation
+from graspcompass.cli._animate import (
+    MAIN_ANIMATION,
+    main_animation,
+    register,
+    run,
+    write_main_animation,
+)
 from graspcompass.render import draw_construction
 from graspcompass.render.anim_physics import (
     SLIP,
@@ -244,14 +250,24 @@ def test_png_frames_per_step(c1a, anim, tmp_path):
 
 
 def test_html_is_self_contained(tmp_path, c1a):
-    small = animate_construction(
-        c1a, frames_per_step=1, pause_frames=1, hold_frames=1, figsize=(2, 2), dpi=30
+    small = animate_construction(  # each caption 0.3 s: a few stills per step; no zoom
+        c1a,
+        frames_per_step=1,
+        pause_frames=1,
+        hold_frames=1,
+        figsize=(2, 2),
+        dpi=30,
+        caption_seconds=0.3,
+        camera=False,
     )
     html = small._repr_html_()
     assert "<script" in html and "<img" in html
-    assert html.count("data:image/png;base64,") == small.frame_count
+    # every frame is in the player: each distinct picture once, a repeat by reference
+    frames = [f.tobytes() for f in small.iter_frames()]
+    assert html.count("data:image/png;base64,") == len(set(frames)) < small.frame_count
+    assert len(re.findall(r"^\s*frames\[\d+\] = ", html, re.M)) == small.frame_count
     out = small.save(tmp_path / "c.html", quiet=True)
-    assert out.read_text().count("data:image/png;base64,") == small.frame_count
+    assert out.read_text().count("data:image/png;base64,") == len(set(frames))
 
 
 def test_errors_are_one_line_value_errors(anim, tmp_path, monkeypatch):
@@ -455,10 +471,38 @@ def test_cli_animate(tmp_path, capsys):
         assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 
-def test_main_job_animation(tmp_path, c1a):
-    """The main job's GIF: at least 640 pixels wide (issue 12), every frame in the file."""
+def test_main_job_animation(tmp_path, c1a, monkeypatch):
+    """The main job's GIF: at least 640 pixels wide (issue 12), every frame in the file.
+
+    The frames are the main job's first frame, drawn in full at its size, marked in corner
+    pixels by the number of their timeline segment: Pillow merges equal neighbours into
+    one GIF frame and adds their durations, so the file must hold one GIF frame per
+    segment and the duration of every frame.  Drawing all ~1000 frames (15-20 s) is what
+    tests/test_lecture_animation.py and test_gif_opens_with_the_frames check on small
+    animations; here the main job's own size, pace and frame count."""
+    from graspcompass.render.animate import ConstructionAnimation
+
+    def marked(self):
+        first = self.render(0)
+        tl, rgb = self.timeline, None
+        for f in range(self.frame_count):
+            if rgb is None or f in tl.starts:  # segment k in binary, black on white
+                k = tl.segment_of(f)
+                rgb = first.copy()
+                bits = [(k >> b) & 1 for b in range(12)]
+                rgb[0, :12] = np.array([[0, 0, 0] if bit else [255, 255, 255] for bit in bits])
+            yield rgb
+
+    monkeypatch.setattr(ConstructionAnimation, "iter_frames", marked)
     out = write_main_animation(c1a, tmp_path, quiet=True)
     assert out == tmp_path / MAIN_ANIMATION
+    main = main_animation(c1a)
     with Image.open(out) as im:
         assert im.size[0] >= 640
-        assert im.n_frames > 8 * len(c1a.steps)
+        durations = []
+        for i in range(im.n_frames):
+            im.seek(i)
+            durations.append(im.info["duration"])
+    assert len(durations) == len(main.timeline.segments)
+    assert sum(durations) == pytest.approx(main.frame_count * 1000 / main.fps, abs=1)
+    assert main.frame_count > 8 * len(c1a.steps)

@@ -196,3 +196,85 @@ def test_animation_frames_show_nothing_before_it_is_made(grasp) -> None:
                     assert owner in made, (n, f, owner)
                 else:
                     assert index[owner] <= n, (n, f, owner, gid)
+
+
+def _names_in_math(text: str, names: list[str]) -> set[str]:
+    """The points a mathtext names: each ``$…$`` part's capitals with their subscripts
+    (``P_{1x}``, ``O_M``, ``V_3``, ``O``) read as the recipe's names; a capital that is no
+    point's letter (``F_\\mathrm{int}``) is no point."""
+    by_tex = {label_tex(n): n for n in names}
+    letters = {t[0] for t in by_tex}
+    out = set()
+    for part in re.findall(r"(?<!\\)\$(.*?)(?<!\\)\$", text):
+        for tok in re.findall(r"[A-Z](?:_\{[^}]*\}|_[A-Za-z0-9])?", part):
+            if tok[0] in letters:
+                assert tok in by_tex, (text, tok)
+                out.add(by_tex[tok])
+    return out
+
+
+@pytest.mark.parametrize("grasp", [Grasp.preset("fig6"), NEAR], ids=["fig6", "near"])
+def test_the_lecture_side_panel_shows_nothing_before_it_is_made(grasp) -> None:
+    _check_side_panel(internal_force_diagram(grasp))
+
+
+@settings(max_examples=2, deadline=None, suppress_health_check=list(HealthCheck))
+@given(st.data())
+def test_the_lecture_side_panel_of_random_grasps(data) -> None:
+    _check_side_panel(internal_force_diagram(_grasp(data.draw)))
+
+
+def _check_side_panel(c) -> None:
+    """The lecture video's right panel (issue 23): every figure text right of the diagram
+    names only points made by the frame (the caption: made by the end of its step), and
+    the plot of k_grasp(θ) is there only from the envelope's step on, no further traced
+    than the envelope in the diagram."""
+    from graspcompass.render.animate import animate_construction
+
+    names = [s.name for s in c.steps]
+    anim = animate_construction(
+        c,
+        quality="lecture",
+        frames_per_step=3,
+        pause_frames=1,
+        hold_frames=1,
+        caption_seconds=0,
+        reading_rate=0,
+    )
+    right = anim.axes.get_position().x1  # the diagram's right edge, figure fraction
+    env = c.step("envelope").index
+    trace = anim.artists["envelope"][0]
+    listed: set[str] = set()
+    upto = {n: set(names[: n + 1]) for n in range(-1, len(names))}  # the steps 0 to n
+    plotted = False
+    for f in range(anim.frame_count):
+        st_ = anim.timeline.at(f)
+        anim._apply(f)
+        n = st_.step
+        if st_.kind in ("hold", "title"):
+            continue
+        done = st_.kind != "draw" or st_.progress >= 1.0
+        made = upto[n if done else n - 1]
+        for t in anim.figure.texts:
+            if not t.get_visible() or t.get_position()[0] <= right:
+                continue
+            shown = _names_in_math(t.get_text(), names)
+            if t is anim._caption:
+                # the text after the paper's reference ("§3.3 V_1 (1), Fig. 4(a): ...", the
+                # goal the step works towards) names the step's object and its inputs
+                body = t.get_text().split("\n", 1)[1].split(": ", 1)[1]
+                shown = _names_in_math(body, names)
+                assert shown <= upto[n], (n, f, body)
+            else:
+                assert shown <= made, (n, f, t.get_text())
+                listed |= shown
+        plots = [a for a in anim.figure.axes if a is not anim.axes and a.get_visible()]
+        assert not plots or n >= env, (n, f)
+        for a in plots:
+            plotted = True
+            for line in a.lines:
+                if line.get_visible() and len(line.get_xdata()):
+                    # the plot has no more θ than the envelope traced in the diagram
+                    assert len(line.get_xdata()) <= max(1, len(trace.get_xdata())), (n, f)
+    # the panel is in use: it listed the points, and it plotted k_grasp
+    assert {"P1", "P2", "V1", "V4", "B34"} <= listed and plotted

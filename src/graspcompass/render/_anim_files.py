@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import shutil
 import subprocess
 from collections.abc import Iterable, Iterator
@@ -260,6 +261,12 @@ class _Frames:
         im.save(fname, format=format.upper())
 
 
+#: The stand-in data of a frame equal to an earlier one (``_SAME.format(k)``); the
+#: finished page sets ``frames[i] = frames[k]`` instead.
+_SAME = "=same{}="
+_SAME_LINE = re.compile(r'frames\[(\d+)\] = "data:image/\w+;base64,=same(\d+)="')
+
+
 def jshtml(
     frames: Iterable[np.ndarray],
     size: Any,
@@ -267,13 +274,17 @@ def jshtml(
     fps: float,
     palette_sample: np.ndarray | None = None,
 ) -> str:
-    """Self-contained interactive HTML of RGB frames, as ``to_jshtml`` makes it.
+    """Self-contained interactive HTML of RGB frames, the player that ``to_jshtml`` makes.
 
     matplotlib's :class:`~matplotlib.animation.HTMLWriter` embeds the frames
-    (at most ``rcParams["animation.embed_limit"]`` MB); ``size`` and ``dpi``
-    are the figure's.  With ``palette_sample`` the PNG frames have 256
-    colours, like the GIF, and take about a third of the room.
+    (at most ``rcParams["animation.embed_limit"]`` MB, past which it drops
+    them); ``size`` and ``dpi`` are the figure's.  A frame equal to an earlier
+    one (a still: a caption being read, a rest on a key step) is stored once
+    and shown again by reference (``frames[i] = frames[k]``), so only the
+    distinct frames count against the limit.  With ``palette_sample`` the PNG
+    frames have 256 colours, like the GIF, and take about a third of the room.
     """
+    import hashlib
     from tempfile import TemporaryDirectory
 
     from matplotlib.animation import HTMLWriter
@@ -286,13 +297,31 @@ def jshtml(
         embed_frames=True,
         default_mode="loop",
     )
+    seen: dict[bytes, int] = {}  # a frame's digest -> the first frame showing it
+    stored: list[int] = []  # frame i shows the image of frame stored[i]
     with TemporaryDirectory() as tmp:
         out = Path(tmp, "animation.html")
         with writer.saving(source, out, dpi):  # type: ignore[arg-type]
+            last = None
             for rgb in frames:
-                source.rgb = rgb
-                writer.grab_frame()
-        return out.read_text(encoding="utf-8")
+                if rgb is last:  # a still: the frame before again
+                    first: int | None = stored[-1]
+                else:
+                    key = hashlib.blake2b(np.ascontiguousarray(rgb).data, digest_size=16).digest()
+                    first = seen.setdefault(key, len(stored))
+                    first = None if first == len(stored) else first
+                last = rgb
+                if getattr(writer, "_hit_limit", False):  # past the limit it drops every frame
+                    break
+                if first is None:
+                    source.rgb = rgb
+                    writer.grab_frame()
+                    stored.append(len(stored))
+                else:  # into the writer's own list: a reference instead of the image
+                    writer._saved_frames.append(_SAME.format(first))  # type: ignore[attr-defined]
+                    stored.append(first)
+        page = out.read_text(encoding="utf-8")
+    return _SAME_LINE.sub(r"frames[\1] = frames[\2]", page)
 
 
 def write_png(rgb: np.ndarray, path: str | os.PathLike[str]) -> Path:

@@ -43,6 +43,10 @@ class _CameraFrames:
     _draw: Any
     _movers: Any
     _still: Any
+    _panel: Any
+
+    def _panel_artists(self) -> list[Artist]:
+        return [] if self._panel is None else list(self._panel.artists)
 
     def iter_frames(self) -> Any:
         """Every frame in order.  With the camera, a segment whose view is at rest is
@@ -153,5 +157,6 @@ class _CameraFrames:
             ]
             + [a for a, _, _ in self._shared if id(a) not in moving]
             + [self._caption]
+            + [a for a in self._panel_artists() if id(a) not in moving]
         )
         return canvas.copy_from_bbox(bbox)

@@ -261,7 +261,7 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         ax.set_position(
             (margin * 1.6 / W + tick / W, (bar_h * H + tick + margin) / H, side / W, side / H)
         )
-        x_cap = margin * 1.6 + tick + side + 2.5 * margin
+        x_cap = margin * 1.6 + tick + side + 1.5 * margin
         width = W - x_cap - margin
     anim._caption = fig.text(
         x_cap / W, 0.5, "", va="top", linespacing=1.4, fontsize=caption_pt, fontweight="normal"
@@ -269,10 +269,16 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     measure = _text_width(renderer, anim._caption.get_fontproperties())
     anim._wrapped = [_wrap(t, width, measure) for t in anim._texts]
     anim._hold_wrapped = _wrap(anim._hold_text, width, measure)
-    tallest = 0.0
+    heights: dict[str, float] = {}
     for t in {*anim._wrapped, anim._hold_wrapped}:
         anim._caption.set_text(t)
-        tallest = max(tallest, anim._caption.get_window_extent(renderer).height)
+        heights[t] = anim._caption.get_window_extent(renderer).height
+    tallest = max(heights.values())
+    # the side panel's list is under the steps' captions but the last's; the plot of the
+    # last step (the envelope) under its caption and the final hold's
+    end = [anim._hold_wrapped, *anim._wrapped[-1:]]
+    tall_steps = max([heights[t] for t in anim._wrapped[:-1]] or [tallest])
+    tall_end = max(heights[t] for t in end)
     anim._caption.set_text("")
     if layout == "below":
         top = bar_h * H + 0.6 * margin + tallest  # the caption's top, in pixels
@@ -280,7 +286,17 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
         bottom = top + 0.4 * margin + tick
         ax.set_position((0.1, bottom / H, 0.86, max(0.05, 1 - bottom / H - title_h / H)))
         anim._fade_region = np.s_[: int(H - top - 2)]
+        anim._panel_box = None
     else:
-        anim._caption.set_y(1 - title_h / H - margin / H)
+        cap_top = H - title_h - margin
+        anim._caption.set_y(cap_top / H)
         anim._fade_region = np.s_[:, : int(x_cap - margin)]
+        # under the longest caption, down to the diagram's foot: the panel of what is made
+        anim._panel_box = (
+            x_cap,
+            W - margin,
+            bar_h * H + tick + margin,
+            cap_top - tall_steps - 0.6 * margin,
+            cap_top - tall_end - 0.6 * margin,
+        )
     anim._title = title

@@ -22,7 +22,83 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image
 
-from .timeline import Timeline, blend, check_fps, jshtml, palette_sample, write_animation
+from .timeline import (
+    Timeline,
+    blend,
+    check_fps,
+    jshtml,
+    palette_sample,
+    write_animation,
+    write_gif,
+)
+
+
+class _Player(FuncAnimation):
+    """The :class:`~matplotlib.animation.FuncAnimation` of a :class:`FrameAnimation`: shown
+    live as any, but its HTML (``to_jshtml``, which sphinx-gallery and Jupyter embed) is
+    the player's own (:meth:`FrameAnimation.to_html`): drawn by blitting, 256 colours, each
+    still stored once, so the whole animation embeds under ``animation.embed_limit``."""
+
+    def __init__(self, owner: FrameAnimation, *args: Any, **kwargs: Any) -> None:
+        self._owner = owner
+        self._page: str | None = None
+        super().__init__(owner.figure, *args, **kwargs)
+
+    def _start(self, *args: Any) -> None:
+        """Start playing on the first draw of the figure, unless the owner drew it (a frame
+        rendered into a file or a page: the live animation must not set the artists then)."""
+        event = args[0] if args else None
+        if getattr(event, "renderer", None) is getattr(self._owner._canvas, "renderer", 0):
+            return
+        super()._start(*args)  # type: ignore[misc]
+
+    def save(  # type: ignore[override]
+        self, filename: Any, writer: Any = None, fps: Any = None, dpi: Any = None, **kwargs: Any
+    ) -> None:
+        """A GIF with the player's own writer (drawn by blitting; sphinx-gallery's
+        thumbnail), its frames scaled by ``dpi`` / the figure's; anything else as
+        :meth:`FuncAnimation.save <matplotlib.animation.Animation.save>` does."""
+        if Path(filename).suffix.lower() != ".gif" or kwargs or not isinstance(writer, str | None):
+            return super().save(filename, writer, fps, dpi, **kwargs)
+        owner = self._owner
+        scale = 1.0 if dpi in (None, "figure") else float(dpi) / owner.figure.dpi
+        w, h = owner._canvas.get_width_height()
+        size = (max(1, round(w * scale)), max(1, round(h * scale)))
+
+        def fit(rgb: np.ndarray) -> np.ndarray:
+            if size == (rgb.shape[1], rgb.shape[0]):
+                return rgb
+            return np.asarray(Image.fromarray(rgb).resize(size, Image.Resampling.LANCZOS))
+
+        def frames() -> Iterator[np.ndarray]:
+            last: Any = None
+            fitted: Any = None
+            for rgb in owner.iter_frames():
+                if rgb is not last:  # a still is the same frame again: resized once
+                    last, fitted = rgb, fit(rgb)
+                yield fitted
+
+        sample = palette_sample(owner)
+        n = sample.shape[0] // h  # the sample's frames, stacked
+        parts = [fit(sample[i * h : (i + 1) * h]) for i in range(n)]
+        write_gif(frames(), filename, owner.fps if fps is None else fps, np.concatenate(parts))
+        self._draw_was_started = True
+        return None
+
+    def to_jshtml(
+        self, fps: float | None = None, embed_frames: bool = True, default_mode: Any = None
+    ) -> str:
+        """The player's HTML of every frame (``fps``: the owner's by default).
+
+        ``embed_frames`` and ``default_mode`` are those of the owner's player: every frame
+        embedded, looping."""
+        if fps is None and self._page is not None:
+            return self._page
+        html = self._owner.to_html(fps)
+        self._draw_was_started = True  # rendered: no warning when it is deleted
+        if fps is None:
+            self._page = html
+        return html
 
 
 class FrameAnimation:
@@ -168,9 +244,11 @@ class FrameAnimation:
         place = {
             id(a): k for k, a in enumerate(c for ax in self.figure.axes for c in ax.get_children())
         }
+        # on this player's canvas, not the figure's (pyplot may have given it another one)
+        renderer = self._canvas.get_renderer()
         for a in sorted(artists, key=lambda a: (a.get_zorder(), place.get(id(a), -1))):
             if a.get_visible():
-                self.figure.draw_artist(a)
+                a.draw(renderer)
 
     def save(
         self, path: str | os.PathLike[str], fps: float | None = None, quiet: bool = False
@@ -183,8 +261,8 @@ class FrameAnimation:
         """A :class:`~matplotlib.animation.FuncAnimation` of the frames, for live display
         (blitting in the sweep and orientation animations)."""
         if self._anim is None:
-            self._anim = FuncAnimation(
-                self.figure,
+            self._anim = _Player(
+                self,
                 self.update,
                 frames=self.frame_count,
                 init_func=lambda: self.update(0),

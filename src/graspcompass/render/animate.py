@@ -60,6 +60,7 @@ from ._anim_camera import camera_box, step_boxes
 from ._anim_frames import _CameraFrames
 from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
 from ._anim_layout import _layout, _mathtext, _shown, _text_width, _wrap  # noqa: F401
+from ._anim_panel import SidePanel
 from ._anim_player import FrameAnimation
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
@@ -93,6 +94,7 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
     _wrapped: list[str]
     _hold_wrapped: str
     _fade_region: Any  # a numpy index of the rows (or columns) that fade
+    _panel_box: tuple[float, ...] | None  # the side panel in pixels (see _anim_panel.py)
 
     def __init__(
         self,
@@ -249,6 +251,9 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
         self._dynamic = [a for items in self._items for a, _, _ in items]
         self._dynamic += [a for a, _, _ in self._shared]
         self._dynamic += [*self._aids, self._caption, self._bar, self._card]
+        side = self._panel_box  # the side panel (lecture): what is made so far, k_grasp(θ)
+        self._panel = None if side is None else SidePanel(self, side, self._least_pt)
+        self._dynamic += [] if self._panel is None else self._panel.artists
 
     def _card_text(self) -> str:
         g = self.construction.grasp
@@ -332,6 +337,7 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
             [a for a, _, _ in self._items[step]]
             + [a for a, parts, _ in self._shared if any(i == step for i, _ in parts)]
             + [*self._aids, self._bar]
+            + ([] if self._panel is None else self._panel.movers(step))
         )
 
     def _group_key(self, segment: int) -> Any:
@@ -405,6 +411,8 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
                     if isinstance(a, Line2D):
                         a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
         self._caption.set_text("" if title else self.caption_at(frame))
+        if self._panel is not None:
+            self._panel.apply(st.step, st.kind, st.progress, hold, title)
         made = (
             1.0 if hold else 0.0 if title else st.step + (st.progress if st.kind == "draw" else 1.0)
         )
