@@ -1,0 +1,98 @@
+"""Make the screenshots of docs/images again, as a user gets them (issue 23).
+
+Each picture is made by the command or the call a user would run, at the size the user
+gets; the web pages are shot in headless Chromium (Playwright) at 1280x800 and 390x844.
+Look at every one of them before committing.
+
+Run:  python docs/images/make_images.py [NAME ...]     (default: all)
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+OWN = "--x1 1.2 --x2 0.3 --y 0.4 --phi1 61deg --phi2 118deg --xi1 67deg --xi2 49deg".split()
+
+
+def _run(*argv: str, cwd: Path | None = None) -> None:
+    subprocess.run([sys.executable, "-m", "graspcompass", *argv], check=True, cwd=cwd)
+
+
+def fig6_diagram(tmp: Path) -> None:
+    """The main job's picture (README, docs index): ``graspcompass`` in an empty folder."""
+    _run(cwd=tmp)
+    shutil.copy(tmp / "graspcompass-out" / "fig6-diagram.png", HERE / "fig6-diagram.png")
+
+
+def inset_own_grasp(tmp: Path) -> None:
+    """A grasp of one's own with its zoomed inset (README)."""
+    _run("draw", *OWN, "-o", str(HERE / "inset-own-grasp.png"), "-q")
+
+
+def worksheet(tmp: Path) -> None:
+    """The two pages of ``graspcompass worksheet`` (docs/howto/draw-by-hand.md), 70 dpi."""
+    pdf = tmp / "worksheet.pdf"
+    _run("worksheet", "-o", str(pdf), "-q")
+    subprocess.run(["pdftoppm", "-r", "70", "-png", str(pdf), str(tmp / "ws")], check=True)
+    shutil.copy(tmp / "ws-1.png", HERE / "worksheet-fig6.png")
+    shutil.copy(tmp / "ws-2.png", HERE / "worksheet-fig6-solution.png")
+
+
+def lecture_frame(tmp: Path) -> None:
+    """A frame of the lecture video (1280x720) at the end of the circle on O V4, and the last."""
+    import matplotlib.pyplot as plt
+
+    import graspcompass as gc
+    from graspcompass.render import animate_construction
+
+    c = gc.internal_force_diagram(gc.Grasp.preset("fig6"))
+    anim = animate_construction(c, quality="lecture")
+    for step, name in ((c.step("circle4").index, "lecture-frame.png"), (None, "lecture-final.png")):
+        frame = anim.frame_count - 1 if step is None else anim.timeline.last_frame_of_step(step)
+        plt.imsave(HERE / name, anim.render(frame))
+
+
+def web(tmp: Path) -> None:
+    """The web page of Fig. 6 at its last step, at 1280x800 and on a phone (390x844)."""
+    from playwright.sync_api import sync_playwright
+
+    page_path = tmp / "fig6.html"
+    _run("export", "--format", "html", "-o", str(page_path), "-q")
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
+        for (w, h), name in (((1280, 800), "web-explorer.png"), ((390, 844), "web-explorer-phone.png")):
+            page = browser.new_page(viewport={"width": w, "height": h})
+            page.goto(page_path.as_uri())
+            page.wait_for_function("window.graspcompass !== undefined")
+            page.evaluate("graspcompass.step(Infinity)")
+            page.screenshot(path=str(HERE / name))
+            page.close()
+        browser.close()
+
+
+MAKERS: dict[str, Callable[[Path], None]] = {
+    "fig6-diagram": fig6_diagram,
+    "inset-own-grasp": inset_own_grasp,
+    "worksheet": worksheet,
+    "lecture": lecture_frame,
+    "web": web,
+}
+
+
+def main() -> None:
+    names = sys.argv[1:] or list(MAKERS)
+    for name in names:
+        with tempfile.TemporaryDirectory() as tmp:
+            print(f"{name} ...", flush=True)
+            MAKERS[name](Path(tmp))
+
+
+if __name__ == "__main__":
+    main()
