@@ -69,6 +69,7 @@ WEB_FILES = (
     "LICENSE.jsxgraph.LGPL",
     "jsxgraph.min.js.LICENSE.txt",
     "labelling.js",
+    "inset.js",
     "explorer.js",
     "explorer.css",
     "explorer.html",
@@ -192,7 +193,10 @@ def to_html(construction: Construction, title: str | None = None) -> str:
         For a symbolic construction.
     """
     data = page_data(construction, title)
-    scripts = {"LABELLING_JS": web_file("labelling.js"), "EXPLORER_JS": web_file("explorer.js")}
+    scripts = {
+        "LABELLING_JS": web_file("labelling.js") + "\n" + web_file("inset.js"),
+        "EXPLORER_JS": web_file("explorer.js"),
+    }
     return _fill_page(web_file("explorer.html"), data, scripts)
 
 
