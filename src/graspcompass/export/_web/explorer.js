@@ -907,7 +907,8 @@
       lastInputs.opts));
       const every = lastInputs.anchors.concat(lastInputs.opts.obstacles);
       const idx = groups.map((_, i) => i).filter((i) => keep[i]);
-      const bad = idx.filter((i, k) => !fitted[k] ||
+      const spaced = crowdedLabels(fitted.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const bad = idx.filter((i, k) => !fitted[k] || spaced[k] ||
         nearerOther(fitted[k].box, k, every, lastInputs.markerSizes));
       if (!bad.length) break;
       for (const i of bad) keep[i] = false;
@@ -963,6 +964,15 @@
     if (!label) return;
     if (label.visProp.visible !== false) label.setAttribute({ visible: false });
     label.gcOff = true;
+  }
+
+  /** Per box (null: none), whether it comes within ``space`` of an earlier one: two
+   * labels that nearly touch read as one ("X₂P₂ₓ = X₄"); the later is left to the inset. */
+  const LABEL_SPACE = 3; // px
+  function crowdedLabels(boxes, space) {
+    return boxes.map((b, k) => !!b && boxes.slice(0, k).some((o) => o &&
+      Math.min(b[2], o[2]) + space > Math.max(b[0], o[0]) &&
+      Math.min(b[3], o[3]) + space > Math.max(b[1], o[1])));
   }
 
   /** Whether the centre of label k's box (points, y up) is not nearer its own point
@@ -1074,7 +1084,8 @@
           frame: [0, 0, side / pxPerPt, side / pxPerPt], obstacles: obst,
           optional: gs.map(() => true) });
       const every = anchors.concat(obst);
-      const ok = fits.map((f, k) => !!f && !nearerOther(f.box, k, every, sizes));
+      const spaced = crowdedLabels(fits.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const ok = fits.map((f, k) => !!f && !spaced[k] && !nearerOther(f.box, k, every, sizes));
       const named = new Set(gs.filter((g, k) => ok[k] && rest.includes(g)));
       const key = (rest.length - named.size) * 1000 + ok.filter((v) => !v).length;
       if (best === null || key < best.key) {
