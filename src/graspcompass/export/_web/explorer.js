@@ -900,8 +900,8 @@
       lastInputs = { anchors: inFit.map((g) => pt(g.at)), texts, fontSize, opts: { curves,
         frame, obstacles: shownMarkers.map((m) => pt(drawValue(m.name)))
           .concat(out.map((g) => pt(g.at))) } };
-      lastInputs.markerSizes = inFit.map((g) => across(g.e.el))
-        .concat(shownMarkers.map((m) => across(m.el)), out.map((g) => across(g.e.el)));
+      lastInputs.markerSizes = inFit.map(groupSize)
+        .concat(shownMarkers.map((m) => across(m.el)), out.map(groupSize));
       fitted = GL.fit(lastInputs.anchors, texts, Object.assign({ fitSpec: DATA.fit,
         fontSize, markerSizes: lastInputs.markerSizes, optional: texts.map(() => true) },
       lastInputs.opts));
@@ -909,7 +909,8 @@
       const idx = groups.map((_, i) => i).filter((i) => keep[i]);
       const spaced = crowdedLabels(fitted.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
       const bad = idx.filter((i, k) => !fitted[k] || spaced[k] ||
-        nearerOther(fitted[k].box, k, every, lastInputs.markerSizes));
+        nearerOther(fitted[k].box, k, every, lastInputs.markerSizes,
+          across(groups[i].e.el)));
       if (!bad.length) break;
       for (const i of bad) keep[i] = false;
     }
@@ -923,7 +924,7 @@
     const notH = shownMarkers.filter((m) => m.name !== "H");
     const hObst = notH.map((m) => pt(drawValue(m.name))).concat(groups.map((g) => pt(g.at)));
     const hSizes = special.map((g) => across(g.e.el)).concat(notH.map((m) => across(m.el)),
-      groups.map((g) => across(g.e.el)));
+      groups.map(groupSize));
     const more = GL.fit(hAnchors, special.map((g) => `$${g.text}$`), { fitSpec: DATA.fit,
       fontSize, markerSizes: hSizes, curves, frame, obstacles: hObst,
       optional: special.map(() => true), avoid: placed.filter((p) => p.box).map((p) => p.box) })
@@ -960,6 +961,14 @@
     placeInset(leftOut, groups, shownMarkers);
   }
 
+  /** A group of coinciding points' marker size in points: the largest of their markers. */
+  function groupSize(g) {
+    const pxPerPt = board.canvasWidth / LSPEC.frame;
+    const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
+    return Math.max(across(g.e.el), ...labelled.filter((e) => g.names.includes(e.name))
+      .map((e) => across(e.el)));
+  }
+
   function hideLabel(label) {
     if (!label) return;
     if (label.visProp.visible !== false) label.setAttribute({ visible: false });
@@ -975,21 +984,29 @@
       Math.min(b[3], o[3]) + space > Math.max(b[1], o[1])));
   }
 
-  /** Whether the centre of label k's box (points, y up) is not nearer its own point
-   * pts[k] than every other point whose marker does not touch its own (sizes: the
-   * markers' sizes), by NEAR_MARGIN: the rule a reader checks by eye. */
+  /** Whether the centre of label k's box (points, y up), or the box itself, is not nearer
+   * its own point pts[k] than every other point whose marker does not touch its own
+   * (sizes: the markers' sizes; own0: the size of the label's own point's marker, where
+   * it names a group), by NEAR_MARGIN: the rule a reader checks by eye. */
   const NEAR_MARGIN = 1.5;
-  function nearerOther(box, k, pts, sizes) {
+  function nearerOther(box, k, pts, sizes, own0) {
+    const mine = own0 ?? sizes[k]; // the label's own point's marker (not its group's)
     const cx = (box[0] + box[2]) / 2, cy = (box[1] + box[3]) / 2;
     const [px, py] = pts[k];
     const own = Math.hypot(cx - px, cy - py);
+    const ownBox = boxDist(px, py, box);
     for (let j = 0; j < pts.length; j++) {
       if (j === k) continue;
       const [qx, qy] = pts[j];
-      if (Math.hypot(qx - px, qy - py) < (sizes[j] + sizes[k]) / 2) continue;
+      if (Math.hypot(qx - px, qy - py) < (sizes[j] + mine) / 2) continue;
       if (Math.hypot(cx - qx, cy - qy) <= own + NEAR_MARGIN) return true;
+      // and the box itself nearer its own point (the drawn text may be a little larger)
+      if (boxDist(qx, qy, box) <= ownBox + NEAR_MARGIN) return true;
     }
     return false;
+  }
+  function boxDist(x, y, b) {
+    return Math.hypot(Math.max(b[0] - x, 0, x - b[2]), Math.max(b[1] - y, 0, y - b[3]));
   }
 
   /** The insets: the labels left out of the board, with every point near them, in a
@@ -1077,7 +1094,7 @@
       const pt = (p) => [(p[0] - region[0]) * u / pxPerPt, (p[1] - region[2]) * u / pxPerPt];
       const anchors = gs.map((g) => pt(g.at));
       const obst = os.map((o) => pt(o.at));
-      const sizes = gs.map((g) => across(g.e.el)).concat(os.map((o) => across(o.el)));
+      const sizes = gs.map(groupSize).concat(os.map((o) => across(o.el)));
       const curves = drawnCurves(region, bx1 - bx0).map((c) => c.map(pt));
       const fits = GL.fit(anchors, gs.map((g) => "$" + g.names.map(GL.tex).join(" = ") + "$"),
         { fitSpec: DATA.fit, fontSize: LFONT / pxPerPt, markerSizes: sizes, curves,
@@ -1085,7 +1102,8 @@
           optional: gs.map(() => true) });
       const every = anchors.concat(obst);
       const spaced = crowdedLabels(fits.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
-      const ok = fits.map((f, k) => !!f && !spaced[k] && !nearerOther(f.box, k, every, sizes));
+      const ok = fits.map((f, k) => !!f && !spaced[k] &&
+        !nearerOther(f.box, k, every, sizes, across(gs[k].e.el)));
       const named = new Set(gs.filter((g, k) => ok[k] && rest.includes(g)));
       const key = (rest.length - named.size) * 1000 + ok.filter((v) => !v).length;
       if (best === null || key < best.key) {
