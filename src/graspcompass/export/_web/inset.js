@@ -85,9 +85,6 @@
         if (m.tagName.toLowerCase() !== "marker") m.setAttribute("id", "gc-inset-d-" +
           m.getAttribute("id"));
       }
-      const style = document.createElementNS(NS, "style");
-      style.textContent = "*{vector-effect:non-scaling-stroke}";
-      c.insertBefore(style, c.firstChild);
       c.setAttribute("viewBox", `${a[0]} ${a[1]} ${w} ${w}`);
       c.setAttribute("width", side);
       c.setAttribute("height", side);
