@@ -17,8 +17,13 @@ the perpendiculars, Y_n, the signed lengths, V_n, the circles on O V_n (eq.
 (31)), their second intersections B_nm and the outer envelope (Fig. 5), with
 the worst and best orientation of the external force.  Its labels are placed by
 ``labelling.js``, a port of :func:`graspcompass.labelling.place` reading the same
-constants (:func:`graspcompass.labelling.spec`), and its colours are those of
-:data:`graspcompass.palette.PALETTE`: one picture in every format (issue 12 §4).
+constants (:func:`graspcompass.labelling.spec`) and of
+:func:`graspcompass.scene.fit.fit` (:func:`graspcompass.scene.fit.spec`), and its
+colours are those of :data:`graspcompass.palette.PALETTE`: one picture in every
+format (issue 12 §4).  A label with no place that keeps the rules on the board (no
+label over a label or a marker, its centre nearer its own point than any other) goes
+to a zoomed inset beside the board (``inset.js``, issue 23), a magnified copy of the
+board's drawing about the points left out, whose labels are placed again there.
 Parameters that break condition (1) (or any other check of
 :class:`graspcompass.Grasp`) show the failing inequality, worded as the Python
 model words it.
@@ -27,7 +32,8 @@ The page's script exposes ``window.graspcompass``: ``set({x1: …, mu2: …})``
 (angles in radians, friction as μ), ``get(name)``, ``step(i)``,
 ``toScreen(name)`` (viewport pixels of a named point), ``lastUpdateMs`` and
 ``timings()`` (ms per update, measured in the page), ``envelope()``,
-``kGrasp(θ)`` and ``error()``.
+``kGrasp(θ)``, ``error()``, ``labelRects()`` and ``insetRects()`` (the drawn
+rectangles of the board's and the insets' markers and labels).
 
 Run ``python -m graspcompass.export.html FILE`` to write the page of the
 Fig. 6 grasp (the docs' "Explore" page embeds it).
@@ -69,6 +75,7 @@ WEB_FILES = (
     "LICENSE.jsxgraph.LGPL",
     "jsxgraph.min.js.LICENSE.txt",
     "labelling.js",
+    "inset.js",
     "explorer.js",
     "explorer.css",
     "explorer.html",
@@ -192,7 +199,10 @@ def to_html(construction: Construction, title: str | None = None) -> str:
         For a symbolic construction.
     """
     data = page_data(construction, title)
-    scripts = {"LABELLING_JS": web_file("labelling.js"), "EXPLORER_JS": web_file("explorer.js")}
+    scripts = {
+        "LABELLING_JS": web_file("labelling.js") + "\n" + web_file("inset.js"),
+        "EXPLORER_JS": web_file("explorer.js"),
+    }
     return _fill_page(web_file("explorer.html"), data, scripts)
 
 

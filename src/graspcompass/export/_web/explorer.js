@@ -431,6 +431,20 @@
     pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
+  // the zoomed inset of the crowded region, beside the board (inset.js)
+  const insets = Array.from(document.querySelectorAll(".gc-inset"))
+    .map((holder) => window.GCInset.create(board, holder, COL.axis));
+  let insetFrame = null;
+  function redrawInset() {
+    if (insetFrame !== null) cancelAnimationFrame(insetFrame);
+    insetFrame = null;
+    for (const ins of insets) if (ins.shown) ins.redraw();
+  }
+  board.on("update", () => {
+    if (insets.some((i) => i.shown) && insetFrame === null) {
+      insetFrame = requestAnimationFrame(redrawInset);
+    }
+  });
   // O_M's subscript: the renderer writes the label's plain text into one text node; where
   // it holds the marker SUB_M, the <text> gets text nodes and <tspan> subscripts instead
   const SVG_NS = "http://www.w3.org/2000/svg";
@@ -441,39 +455,47 @@
   // baseline ASCENT below the box's top (the label's anchor: left, top)
   const SUBS = "₀₁₂₃₄₅₆₇₈₉ₓ" + "\u2098";
   const PLAIN = "0123456789xM";
+  /** A label's text in the font the placement measured, subscripts as <tspan>s. */
+  function setFitFont(node, f) {
+    node.setAttribute("font-family", DATA.fit.metrics.family);
+    node.setAttribute("font-style", "italic");
+    node.setAttribute("font-size", `${f}px`);
+    node.setAttribute("text-anchor", "start");
+    node.setAttribute("dy", "0");
+  }
+  function setFitText(node, text, f) {
+    const m = DATA.fit.metrics;
+    setFitFont(node, f);
+    while (node.firstChild) node.removeChild(node.firstChild);
+    let run = "", sub = false;
+    const flush = () => {
+      if (!run) return;
+      if (sub) {
+        const ts = document.createElementNS(SVG_NS, "tspan");
+        ts.setAttribute("baseline-shift", `${-m.sub_shift * f}px`);
+        ts.setAttribute("font-size", `${m.sub_scale * f}px`);
+        ts.textContent = run;
+        node.appendChild(ts);
+      } else node.appendChild(document.createTextNode(run));
+      run = "";
+    };
+    for (const c of Array.from(text)) {
+      const k = SUBS.indexOf(c);
+      if ((k >= 0) !== sub) { flush(); sub = k >= 0; }
+      run += k >= 0 ? PLAIN[k] : c;
+    }
+    flush();
+  }
   board.renderer.updateInternalText = function (t) {
     drawSub(t);
     const node = t.rendNode, text = t.plaintext;
     if (!node || typeof text !== "string") return;
     if (t.gcFit) {
-      const m = DATA.fit.metrics, f = t.gcFont;
-      node.setAttribute("font-family", m.family);
-      node.setAttribute("font-style", "italic");
-      node.setAttribute("font-size", `${f}px`);
-      node.setAttribute("text-anchor", "start");
-      node.setAttribute("dy", "0");
-      node.setAttribute("y", `${t.coords.scrCoords[2] + m.ascent * f}px`);
-      if (t.gcSubShown === text + "|fit" + f) return;
-      t.gcSubShown = text + "|fit" + f;
-      while (node.firstChild) node.removeChild(node.firstChild);
-      let run = "", sub = false;
-      const flush = () => {
-        if (!run) return;
-        if (sub) {
-          const ts = document.createElementNS(SVG_NS, "tspan");
-          ts.setAttribute("baseline-shift", `${-m.sub_shift * f}px`);
-          ts.setAttribute("font-size", `${m.sub_scale * f}px`);
-          ts.textContent = run;
-          node.appendChild(ts);
-        } else node.appendChild(document.createTextNode(run));
-        run = "";
-      };
-      for (const c of Array.from(text)) {
-        const k = SUBS.indexOf(c);
-        if ((k >= 0) !== sub) { flush(); sub = k >= 0; }
-        run += k >= 0 ? PLAIN[k] : c;
-      }
-      flush();
+      setFitFont(node, t.gcFont);
+      node.setAttribute("y", `${t.coords.scrCoords[2] + DATA.fit.metrics.ascent * t.gcFont}px`);
+      if (t.gcSubShown === text + "|fit" + t.gcFont) return;
+      t.gcSubShown = text + "|fit" + t.gcFont;
+      setFitText(node, text, t.gcFont);
       return;
     }
     if (t.gcSubShown === text) return;
@@ -776,7 +798,7 @@
 
   /** What the labels avoid, in user units: the drawn lines clipped to the view, the circles
    * (100 points each), the signed lengths and the envelope (export._scene._labels). */
-  function drawnCurves(box) {
+  function drawnCurves(box, viewSpan) {
     const q = state.num;
     const out = [];
     if (!q) return out;
@@ -802,7 +824,7 @@
       }
       out.push(ring);
     }
-    const span = box[1] - box[0];
+    const span = viewSpan || box[1] - box[0];
     for (const n of [1, 2, 3, 4]) {
       const o = 0.012 * span * (n + 0.5);
       for (const [step, a, b] of [["OMX" + n, [q.O_M[0], -o], [q["X" + n][0], -o]],
@@ -840,8 +862,6 @@
     return pts;
   }
 
-  const ANCHOR_X = { "-1": "right", 0: "middle", 1: "left" };
-  const ANCHOR_Y = { "-1": "top", 0: "middle", 1: "bottom" };
   let lastPlacement = [], lastInputs = null;
   /** Place every shown label with the one algorithm (labelling.place): the paper's points in
    * the order of labelling.LABEL_ORDER, then H, worst and best; the break points avoided. */
@@ -858,35 +878,59 @@
     groups.sort((a, b) => GL.labelOrder(a.names, LSPEC) - GL.labelOrder(b.names, LSPEC));
     const special = extras.filter((x) => entryOf.get(x.el).shown && inside([x.el.X(), x.el.Y()]))
       .map((x) => ({ e: x, names: [x.text], at: [x.el.X(), x.el.Y()], text: x.text }));
-    const texts = groups.map((g) => "$" + g.names.map(GL.tex).join(" = ") + "$");
-    const obstacles = markers.filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
-      .map((m) => pt(drawValue(m.name)));
+    const textOf = (g) => "$" + g.names.map(GL.tex).join(" = ") + "$";
+    // the markers no label covers: the break points, worst, best and H
+    const shownMarkers = markers.filter((m) => entryOf.get(m.el).shown &&
+      inside(drawValue(m.name))).concat(unlabelled.filter((m) => entryOf.get(m.el).shown &&
+      inside(drawValue(m.name))), extras.filter((x) => entryOf.get(x.el).shown &&
+      inside([x.el.X(), x.el.Y()])).map((x) => ({ name: "H", el: x.el })));
     const frame = [0, 0, LSPEC.frame, (y1 - y0) * s];
-    lastInputs = { anchors: groups.map((g) => pt(g.at)), texts, opts: {
-      curves: drawnCurves(box).map((c) => c.map(pt)), frame, obstacles } };
-    // the paper's points exactly as the SVG and TikZ place them; then H, worst and best
-    // around them, avoiding their labels and markers
-    // a label no place suits is left out (as in the SVG's diagram beside its inset): zoom
-    // in (shift + wheel) and it finds room
-    lastInputs.fontSize = LFONT / pxPerPt;
+    const fontSize = LFONT / pxPerPt;
     // the markers as drawn (a point of size s: 2 s + 2 px across, its stroke included; a
     // cross 2 s): points whose markers do not touch are two places, each label nearer its own
     const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
-    lastInputs.markerSizes = groups.map((g) => across(g.e.el)).concat(markers
-      .filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
-      .map((m) => across(m.el)));
-    const fitted = GL.fit(lastInputs.anchors, texts, Object.assign({ fitSpec: DATA.fit,
-      fontSize: lastInputs.fontSize, markerSizes: lastInputs.markerSizes,
-      optional: texts.map(() => true) }, lastInputs.opts));
+    const curves = drawnCurves(box).map((c) => c.map(pt));
+    // the paper's points as the SVG and TikZ place them (scene.fit); a label with no place
+    // that keeps the rules, or whose centre is nearer another point than its own, is left
+    // to the zoomed inset (placed again without it, its marker still avoided)
+    let keep = groups.map(() => true), fitted = null, texts = null;
+    for (;;) {
+      const inFit = groups.filter((_, i) => keep[i]), out = groups.filter((_, i) => !keep[i]);
+      texts = inFit.map(textOf);
+      lastInputs = { anchors: inFit.map((g) => pt(g.at)), texts, fontSize, opts: { curves,
+        frame, obstacles: shownMarkers.map((m) => pt(drawValue(m.name)))
+          .concat(out.map((g) => pt(g.at))) } };
+      lastInputs.markerSizes = inFit.map(groupSize)
+        .concat(shownMarkers.map((m) => across(m.el)), out.map(groupSize));
+      fitted = GL.fit(lastInputs.anchors, texts, Object.assign({ fitSpec: DATA.fit,
+        fontSize, markerSizes: lastInputs.markerSizes, optional: texts.map(() => true) },
+      lastInputs.opts));
+      const every = lastInputs.anchors.concat(lastInputs.opts.obstacles);
+      const idx = groups.map((_, i) => i).filter((i) => keep[i]);
+      const spaced = crowdedLabels(fitted.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const bad = idx.filter((i, k) => !fitted[k] || spaced[k] ||
+        nearerOther(fitted[k].box, k, every, lastInputs.markerSizes,
+          across(groups[i].e.el)));
+      if (!bad.length) break;
+      for (const i of bad) keep[i] = false;
+    }
+    const mainGroups = groups.filter((_, i) => keep[i]);
+    const leftOut = groups.filter((_, i) => !keep[i]);
+    for (const g of leftOut) hideLabel(g.e.el.label);
+    const obstacles = shownMarkers.map((m) => pt(drawValue(m.name)));
     const placed = fitted.map((f) => f || { offset: [0, 0], direction: [1, 1], box: null });
-    const more = GL.place(special.map((g) => pt(g.at)), special.map((g) => `$${g.text}$`), {
-      spec: LSPEC, curves: lastInputs.opts.curves, frame,
-      avoid: placed.filter((p) => p.box).map((p) => p.box),
-      obstacles: obstacles.concat(lastInputs.anchors, unlabelled
-        .filter((m) => entryOf.get(m.el).shown && inside(drawValue(m.name)))
-        .map((m) => pt(drawValue(m.name)))),
-    });
-    const all = groups.concat(special);
+    // then H, under the same rules, around the paper's points' labels and markers
+    const hAnchors = special.map((g) => pt(g.at));
+    const notH = shownMarkers.filter((m) => m.name !== "H");
+    const hObst = notH.map((m) => pt(drawValue(m.name))).concat(groups.map((g) => pt(g.at)));
+    const hSizes = special.map((g) => across(g.e.el)).concat(notH.map((m) => across(m.el)),
+      groups.map(groupSize));
+    const more = GL.fit(hAnchors, special.map((g) => `$${g.text}$`), { fitSpec: DATA.fit,
+      fontSize, markerSizes: hSizes, curves, frame, obstacles: hObst,
+      optional: special.map(() => true), avoid: placed.filter((p) => p.box).map((p) => p.box) })
+      .map((f, k) => (f && !nearerOther(f.box, k, hAnchors.concat(hObst), hSizes) ? f
+        : { offset: [0, 0], direction: [1, 1], box: null }));
+    const all = mainGroups.concat(special);
     placed.push(...more);
     lastPlacement = all.map((g, i) => ({ names: g.names.slice(), direction: placed[i].direction,
       offset: placed[i].offset, box: placed[i].box, shown: !!placed[i].box }));
@@ -895,11 +939,10 @@
       if (!label) return;
       const p = placed[i];
       const vp = label.visProp;
-      if (i < groups.length) { // by GCLabelling.fit: the box's top left corner
+      { // by GCLabelling.fit: the box's top left corner
         const at = pt(g.at);
         if (!p.box) {
-          if (label.visProp.visible !== false) label.setAttribute({ visible: false });
-          label.gcOff = true;
+          hideLabel(label);
           return;
         }
         if (label.gcOff) {
@@ -913,13 +956,195 @@
         vp.anchorx = "left";
         vp.anchory = "top";
         label.needsUpdate = true;
+      }
+    });
+    placeInset(leftOut, groups, shownMarkers);
+  }
+
+  /** A group of coinciding points' marker size in points: the largest of their markers. */
+  function groupSize(g) {
+    const pxPerPt = board.canvasWidth / LSPEC.frame;
+    const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
+    return Math.max(across(g.e.el), ...labelled.filter((e) => g.names.includes(e.name))
+      .map((e) => across(e.el)));
+  }
+
+  function hideLabel(label) {
+    if (!label) return;
+    if (label.visProp.visible !== false) label.setAttribute({ visible: false });
+    label.gcOff = true;
+  }
+
+  /** Per box (null: none), whether it comes within ``space`` of an earlier one: two
+   * labels that nearly touch read as one ("X₂P₂ₓ = X₄"); the later is left to the inset. */
+  const LABEL_SPACE = 3; // px
+  function crowdedLabels(boxes, space) {
+    return boxes.map((b, k) => !!b && boxes.slice(0, k).some((o) => o &&
+      Math.min(b[2], o[2]) + space > Math.max(b[0], o[0]) &&
+      Math.min(b[3], o[3]) + space > Math.max(b[1], o[1])));
+  }
+
+  /** Whether the centre of label k's box (points, y up), or the box itself, is not nearer
+   * its own point pts[k] than every other point whose marker does not touch its own
+   * (sizes: the markers' sizes; own0: the size of the label's own point's marker, where
+   * it names a group), by NEAR_MARGIN: the rule a reader checks by eye. */
+  const NEAR_MARGIN = 1.5;
+  function nearerOther(box, k, pts, sizes, own0) {
+    const mine = own0 ?? sizes[k]; // the label's own point's marker (not its group's)
+    const cx = (box[0] + box[2]) / 2, cy = (box[1] + box[3]) / 2;
+    const [px, py] = pts[k];
+    const own = Math.hypot(cx - px, cy - py);
+    const ownBox = boxDist(px, py, box);
+    for (let j = 0; j < pts.length; j++) {
+      if (j === k) continue;
+      const [qx, qy] = pts[j];
+      if (Math.hypot(qx - px, qy - py) < (sizes[j] + mine) / 2) continue;
+      if (Math.hypot(cx - qx, cy - qy) <= own + NEAR_MARGIN) return true;
+      // and the box itself nearer its own point (the drawn text may be a little larger)
+      if (boxDist(qx, qy, box) <= ownBox + NEAR_MARGIN) return true;
+    }
+    return false;
+  }
+  function boxDist(x, y, b) {
+    return Math.hypot(Math.max(b[0] - x, 0, x - b[2]), Math.max(b[1] - y, 0, y - b[3]));
+  }
+
+  /** The insets: the labels left out of the board, with every point near them, in a
+   * square magnified about them, at the smallest zoom at which each finds a place keeping
+   * the rules (scene.picture's inset, in the page); the labels no zoom of the first inset
+   * names (a tighter crowd within the crowd) go to the next, zoomed further. */
+  const INSET_ZOOMS = [1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+  const INSET_ROOM = 30; // px of the inset kept around the points left out, for labels
+  let insetStates = [];
+  function placeInset(leftOut, groups, shownMarkers) {
+    insetStates = [];
+    let rest = leftOut;
+    insets.forEach((ins) => {
+      if (!rest.length) {
+        ins.hide();
         return;
       }
-      // the anchor and side of the SVG and TikZ labels (SVG text-anchor, dominant-baseline)
-      vp.offset = [p.offset[0] * pxPerPt, p.offset[1] * pxPerPt];
-      vp.anchorx = ANCHOR_X[p.direction[0]];
-      vp.anchory = ANCHOR_Y[p.direction[1]];
-      label.needsUpdate = true;
+      ins.holder.hidden = false;
+      const plan = planInset(ins.side(), rest, groups, shownMarkers);
+      if (!plan) {
+        ins.hide();
+        return;
+      }
+      insetStates.push(plan);
+      rest = rest.filter((g) => !plan.named.has(g));
+      showInset(ins, plan);
+    });
+    if (insetFrame === null && insets.some((i) => i.shown)) {
+      insetFrame = requestAnimationFrame(redrawInset);
+    }
+  }
+
+  function planInset(side, rest, groups, shownMarkers) {
+    if (!(side > 0)) return null;
+    const pxPerPt = board.canvasWidth / LSPEC.frame;
+    const xs = rest.map((g) => g.at[0]), ys = rest.map((g) => g.at[1]);
+    const cx = (Math.min(...xs) + Math.max(...xs)) / 2;
+    const cy = (Math.min(...ys) + Math.max(...ys)) / 2;
+    const spread = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+    const zmax = side / (spread * board.unitX + 2 * INSET_ROOM);
+    const zooms = [Math.max(Math.min(zmax, INSET_ZOOMS[0]), 1)]
+      .concat(INSET_ZOOMS.filter((z) => z > zmax), INSET_ZOOMS.filter((z) => z <= zmax))
+      .sort((a, b) => a - b);
+    // the closest pair of points left out, apart on the board (px): a zoom that leaves
+    // them nearer than a label's height cannot name both
+    let closest = Infinity;
+    for (let i = 0; i < rest.length; i++) {
+      for (let j = i + 1; j < rest.length; j++) {
+        const d = Math.hypot(rest[i].at[0] - rest[j].at[0], rest[i].at[1] - rest[j].at[1]);
+        if (d > 0) closest = Math.min(closest, d * board.unitX);
+      }
+    }
+    const others = shownMarkers.map((m) => ({ at: drawValue(m.name), el: m.el }));
+    const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
+    const [bx0, , bx1] = board.getBoundingBox();
+    let best = null;
+    for (const z of zooms) {
+      const u = board.unitX * z; // inset px per user unit
+      const half = side / u / 2;
+      // too wide to hold every point left out: the square about the most of them
+      let [ox, oy] = [cx, cy];
+      if (z > zmax * 1.000001) {
+        const reach = half - INSET_ROOM / u;
+        let most = [];
+        for (const p of rest) {
+          const these = rest.filter((g) => Math.abs(g.at[0] - p.at[0]) <= reach &&
+            Math.abs(g.at[1] - p.at[1]) <= reach);
+          if (these.length > most.length) most = these;
+        }
+        const mx = most.map((g) => g.at[0]), my = most.map((g) => g.at[1]);
+        ox = (Math.min(...mx) + Math.max(...mx)) / 2;
+        oy = (Math.min(...my) + Math.max(...my)) / 2;
+      } else if (closest * z < 0.75 * LFONT && z < zooms[zooms.length - 1]) continue;
+      const region = [ox - half, ox + half, oy - half, oy + half];
+      const within = (p) => p && p[0] >= region[0] && p[0] <= region[1] &&
+        p[1] >= region[2] && p[1] <= region[3];
+      // the points near the edge too: their markers reach into the inset
+      const pad = 12 / u;
+      const near = (p) => p && p[0] >= region[0] - pad && p[0] <= region[1] + pad &&
+        p[1] >= region[2] - pad && p[1] <= region[3] + pad;
+      const gs = groups.filter((g) => within(g.at));
+      const os = others.filter((o) => near(o.at))
+        .concat(groups.filter((g) => !within(g.at) && near(g.at))
+          .map((g) => ({ at: g.at, el: g.e.el })));
+      const pt = (p) => [(p[0] - region[0]) * u / pxPerPt, (p[1] - region[2]) * u / pxPerPt];
+      const anchors = gs.map((g) => pt(g.at));
+      const obst = os.map((o) => pt(o.at));
+      const sizes = gs.map(groupSize).concat(os.map((o) => across(o.el)));
+      const curves = drawnCurves(region, bx1 - bx0).map((c) => c.map(pt));
+      const fits = GL.fit(anchors, gs.map((g) => "$" + g.names.map(GL.tex).join(" = ") + "$"),
+        { fitSpec: DATA.fit, fontSize: LFONT / pxPerPt, markerSizes: sizes, curves,
+          frame: [0, 0, side / pxPerPt, side / pxPerPt], obstacles: obst,
+          optional: gs.map(() => true) });
+      const every = anchors.concat(obst);
+      const spaced = crowdedLabels(fits.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const ok = fits.map((f, k) => !!f && !spaced[k] &&
+        !nearerOther(f.box, k, every, sizes, across(gs[k].e.el)));
+      const named = new Set(gs.filter((g, k) => ok[k] && rest.includes(g)));
+      const key = (rest.length - named.size) * 1000 + ok.filter((v) => !v).length;
+      if (best === null || key < best.key) {
+        best = { key, z, region, gs, os, fits, ok, u, named, side, pxPerPt };
+      }
+      if (key === 0) break;
+    }
+    return best;
+  }
+
+  function showInset(ins, best) {
+    const { side, pxPerPt } = best;
+    const labels = best.gs.map((g, k) => {
+      const f = best.fits[k];
+      if (!best.ok[k]) return { name: g.e.name, box: null };
+      const text = g.e.shownText;
+      const color = (g.e.el.label && g.e.el.label.rendNode &&
+        g.e.el.label.rendNode.getAttribute("fill")) || COL.point;
+      const left = f.box[0] * pxPerPt, top = side - f.box[3] * pxPerPt;
+      let leader = null;
+      if (f.leader) {
+        const ax = (g.at[0] - best.region[0]) * best.u;
+        const ay = side - (g.at[1] - best.region[2]) * best.u;
+        const bx = Math.min(Math.max(ax, left), f.box[2] * pxPerPt);
+        const by = Math.min(Math.max(ay, top), side - f.box[1] * pxPerPt);
+        leader = [[ax, ay], [bx, by]];
+      }
+      return { name: g.e.name, text, color, box: [left, top], leader };
+    });
+    const points = best.gs.map((g) => ({ name: g.e.name, node: g.e.el.rendNode }));
+    for (const g of best.gs) { // the points merged into a group: markers of their own
+      for (const e of labelled) {
+        if (e !== g.e && g.names.includes(e.name) && e.el.rendNode) {
+          points.push({ name: `member:${e.name}`, node: e.el.rendNode });
+        }
+      }
+    }
+    ins.show(best.region, points, labels, (node, text, l, t) => {
+      setFitText(node, text, LFONT);
+      node.setAttribute("x", `${l}px`);
+      node.setAttribute("y", `${t + DATA.fit.metrics.ascent * LFONT}px`);
     });
   }
 
@@ -1465,6 +1690,16 @@
       }
       return out;
     },
+    /** The zoomed insets as drawn (those shown): [{board: its rectangle, pts: per
+     * marker in it and label, as labelRects, zoom: over the board, region}]. */
+    insetRects: () => {
+      redrawInset();
+      return insets.filter((i) => i.shown).map((ins, k) => Object.assign(ins.rects(),
+        { zoom: ins.zoom, region: insetStates[k] && insetStates[k].region }));
+    },
+    /** The board's rectangle (client pixels). */
+    boardRect: () => { const r = board.containerObj.getBoundingClientRect();
+      return [r.left, r.top, r.right, r.bottom]; },
     /** What the last placement was given: {anchors, texts, opts} (points, y up). */
     labelInputs: () => JSON.parse(JSON.stringify(lastInputs)),
     /** The one label placement (labelling.place) on any data, for checks. */

@@ -332,13 +332,26 @@
       Math.min(...fin.map((p) => p[1])) - reach, Math.max(...fin.map((p) => p[0])) + reach,
       Math.max(...fin.map((p) => p[1])) + reach] : null;
     const flat = curves.length && win ? resample(curves, sp.resample, win) : [];
+    // the samples bucketed (every one of them: the window of the grid holds them all), to
+    // count those strictly inside a box as the scan over all of them counts
+    let grid = null;
+    if (flat.length) {
+      const all = [Infinity, Infinity, -Infinity, -Infinity];
+      for (let j = 0; j < flat.length; j += 2) {
+        all[0] = Math.min(all[0], flat[j]);
+        all[1] = Math.min(all[1], flat[j + 1]);
+        all[2] = Math.max(all[2], flat[j]);
+        all[3] = Math.max(all[3], flat[j + 1]);
+      }
+      grid = sampleGrid(flat, all);
+    }
     const crowd = anchors.map(([px, py]) =>
       every.filter(([x, y]) => Math.hypot(x - px, y - py) < 40.0).length);
     let order = anchors.map((_, i) => i).sort((a, b) => crowd[b] - crowd[a]);
     const fails = (out) => out.filter((f) => f === null || !f.ok).length;
     let best = null;
     for (let round = 0; round <= sp.reorder; round++) {
-      const out = greedy(order, anchors, every, markers, sizes, flat, frame, ms, gap,
+      const out = greedy(order, anchors, every, markers, sizes, grid, frame, ms, gap,
         optional, opts.avoid || [], sp);
       const failed = order.filter((i) => out[i] === null || !out[i].ok);
       if (best === null || failed.length < fails(best)) best = out;
@@ -348,7 +361,7 @@
     return best;
   }
 
-  function greedy(order, pts, every, markers, sizes, flat, frame, ms, gap, optional,
+  function greedy(order, pts, every, markers, sizes, grid, frame, ms, gap, optional,
                   avoid, sp) {
     const placed = avoid.map((b) => b.slice());
     const out = pts.map(() => null);
@@ -380,14 +393,7 @@
               box[3] > frame[3]);
           }
           let soft = 10 * k + 0.5 * rank;
-          if (flat.length) {
-            let inside = 0;
-            for (let j = 0; j < flat.length; j += 2) {
-              const x = flat[j], y = flat[j + 1];
-              if (x > box[0] && x < box[2] && y > box[1] && y < box[3]) inside++;
-            }
-            soft += 1.5 * inside;
-          }
+          if (grid) soft += 1.5 * grid.count(box);
           const score = bad * 1000 + soft;
           if (score < bestScore) {
             const dx = box[0] >= px ? 1 : box[2] <= px ? -1 : 0;
