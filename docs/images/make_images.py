@@ -59,19 +59,31 @@ def lecture_frame(tmp: Path) -> None:
 
 
 def web(tmp: Path) -> None:
-    """The web page of Fig. 6 at its last step, at 1280x800 and on a phone (390x844)."""
+    """The web page of Fig. 6 as it opens and at its last step, at 1280x800 and on a phone
+    (390x844; the last step scrolled to the board, its inset below it)."""
     from playwright.sync_api import sync_playwright
 
     page_path = tmp / "fig6.html"
     _run("export", "--format", "html", "-o", str(page_path), "-q")
     exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    shots = (
+        ((1280, 800), False, "web-explorer.png"),
+        ((390, 844), False, "web-explorer-phone.png"),
+        ((1280, 800), True, "web-1280x800.png"),
+        ((390, 844), True, "web-390x844.png"),
+    )
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
-        for (w, h), name in (((1280, 800), "web-explorer.png"), ((390, 844), "web-explorer-phone.png")):
+        for (w, h), last, name in shots:
             page = browser.new_page(viewport={"width": w, "height": h})
             page.goto(page_path.as_uri())
-            page.wait_for_function("window.graspcompass !== undefined")
-            page.evaluate("graspcompass.step(Infinity)")
+            page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+            if last:
+                page.click("#gc-fit")
+                page.evaluate("graspcompass.step(0)")  # the page opens at its last step
+                page.click("#gc-last")
+                if w < 600:
+                    page.evaluate("document.querySelector('.jxgbox').scrollIntoView()")
             page.screenshot(path=str(HERE / name))
             page.close()
         browser.close()
