@@ -118,3 +118,39 @@ def test_the_panel_lists_the_contacts_once_made(lecture):
         x, y = (float(v) for v in getattr(c.grasp, name))
         want = f"{abs(x):.2f}, {y:.2f})"
         assert [t for t in texts if t.startswith(f"${name[0]}_{name[1]}") and want in t], texts
+
+
+def test_diagram_labels_do_not_cover_each_other(lecture):
+    """The point labels of the lecture's diagram, drawn 1.6 times the PNG's size against
+    their axes, are placed at that size: at the last frame two labels' boxes, measured
+    from matplotlib's renderer, overlap only where one of them is a label the scene
+    could place nowhere without breaking a rule (a crowded centre with no inset, shown
+    zoomed by the camera at its step).  On Fig. 6 none overlap (before: X2 over
+    P2x = X4)."""
+    from matplotlib.text import Annotation
+
+    from graspcompass.scene import labelling
+    from graspcompass.scene.picture import scene_of
+
+    c, anim = lecture
+    anim.render(anim.frame_count - 1)
+    r = anim._canvas.get_renderer()
+    boxes = [
+        (t.get_text(), t.get_window_extent(r))
+        for t in anim.axes.texts
+        if isinstance(t, Annotation) and t.get_visible() and t.get_text().startswith("$")
+    ]
+    assert len(boxes) >= 10
+    bad = [
+        (a, b)
+        for i, (a, p) in enumerate(boxes)
+        for b, q in boxes[i + 1 :]
+        if min(p.x1, q.x1) - max(p.x0, q.x0) > 1 and min(p.y1, q.y1) - max(p.y0, q.y0) > 1
+    ]
+    if c.grasp.title and "Fig. 6" in c.grasp.title:
+        assert bad == []
+    frame_pt = anim.axes.bbox.width * 72.0 / anim.figure.dpi
+    scene = scene_of(c, font_pt=anim.theme.font_size * labelling.FRAME_PT / frame_pt)
+    kept = scene.labels if scene.inset is None else scene.inset.main
+    placed = {f"${lab.tex()}$" for lab in kept}
+    assert [(a, b) for a, b in bad if a in placed and b in placed] == []

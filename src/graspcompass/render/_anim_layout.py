@@ -18,6 +18,7 @@ import numpy as np
 from matplotlib.patches import Rectangle
 
 from ..scene.layout import tex
+from .figure import grasp_title
 from .timeline import AnimationError
 
 if TYPE_CHECKING:
@@ -240,7 +241,7 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     title = fig.text(
         0.5,
         1 - 0.012 * W / H,
-        getattr(anim.construction.grasp, "title", None) or "",
+        grasp_title(anim.construction.grasp),
         ha="center",
         va="top",
         fontsize=title_pt,

@@ -46,6 +46,7 @@ __all__ = [
     "draw_k_polar",
     "figure_diagram",
     "figure_k_plot",
+    "grasp_title",
     "save_figure",
 ]
 
@@ -128,6 +129,7 @@ def draw_construction(
     num_all = numeric_objects(construction) if num is None else num
     num = {k: num_all[k] for k in state.names}
     # an enlargement of a region (box given): its own scene, labelled in it
+    given_box = box
     scene = (
         scene_of(construction, break_points=break_points)
         if box is None
@@ -143,6 +145,20 @@ def draw_construction(
     ax.set_ylim(lim[2], lim[3])
     ax.set_aspect("equal", adjustable="box")
     ax.apply_aspect()
+    # labels larger or smaller against these axes than FONT_PT against FRAME_PT (an
+    # animation's theme, axes of the user's own): placed again at the size drawn
+    k = 1.0
+    if view == "whole" and ax.figure is not None:
+        frame_pt = ax.bbox.width * 72.0 / ax.figure.dpi
+        k = frame_pt / labelling.FRAME_PT
+        font_pt = theme.font_size / k
+        if frame_pt > 0 and abs(font_pt - labelling.FONT_PT) > 0.05:
+            again = (
+                scene_of(construction, break_points=break_points, font_pt=font_pt)
+                if given_box is None
+                else build_scene(construction, box=box, break_points=break_points, font_pt=font_pt)
+            )
+            shown = again.upto(step).labels
     out: dict[str, list[Artist]] = {}
     _draw_givens(ax, construction, scene, theme, out)
     instruments: dict[str, list[Artist]] = {}
@@ -211,7 +227,7 @@ def draw_construction(
     if show_computer_plot and construction.grasp is not None:
         out["computer plot"] = draw_k_polar(construction.grasp, ax=ax, theme=theme)["k_grasp"]
     if labels:
-        _label_points(ax, shown, theme, out)
+        _label_points(ax, shown, theme, out, k)
     return out
 
 
@@ -219,11 +235,14 @@ _HA = {1: "left", -1: "right", 0: "center"}
 _VA = {1: "bottom", -1: "top", 0: "center"}
 
 
-def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artist]]) -> None:
+def _label_points(
+    ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artist]], k: float = 1.0
+) -> None:
     """The scene's labels (:attr:`Scene.labels`), one per group ``O = O_M = Y_4`` (§3.3).
 
     Placed once for every painter (:func:`graspcompass.scene.labelling.place`), at
-    their offsets in points from their points; a group shows the names made so far.
+    their offsets in points from their points (``k`` times them: axes ``k`` times the
+    placement's frame); a group shows the names made so far.
     """
     for lab in labels:
         if lab.leader:  # a thin line from the point to its label set far away
@@ -242,7 +261,7 @@ def _label_points(ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artis
         text = ax.annotate(
             f"${lab.tex()}$",
             lab.point,
-            xytext=lab.offset,
+            xytext=(lab.offset[0] * k, lab.offset[1] * k),
             textcoords="offset points",
             ha=_HA[lab.direction[0]],
             va=_VA[lab.direction[1]],
@@ -314,7 +333,7 @@ def figure_diagram(
     ax.grid(False)
     ax.tick_params(labelsize=theme.font_size * 0.8)
     grasp = construction.grasp
-    text = title if title is not None else (getattr(grasp, "title", None) or _params(grasp))
+    text = title if title is not None else grasp_title(grasp)
     if not full and step is not None:
         text += f"\nafter step {step % len(construction.steps)} of 0–{last}"
     ax.set_title(text, fontsize=theme.font_size * 1.05)
@@ -369,6 +388,16 @@ def figure_diagram(
             fontsize=theme.font_size * 0.85,
         )
     return fig
+
+
+def grasp_title(grasp: Grasp | None) -> str:
+    """The grasp's own title, or one from its parameters (a grasp of one's own).
+
+    >>> from graspcompass import Grasp
+    >>> grasp_title(Grasp(1.2, 0.3, 0.4, "61*pi/180", "118*pi/180", xi1="67*pi/180", xi2="pi/4"))
+    'x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, φ2 = 118°, ξ1 = 67°, ξ2 = 45°'
+    """
+    return (getattr(grasp, "title", None) or _params(grasp)) if grasp is not None else ""
 
 
 def _params(grasp: Grasp | None) -> str:

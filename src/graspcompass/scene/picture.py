@@ -22,13 +22,13 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import sympy as sp
 
 from ..construction.describe import describe
 from ..geometry.numeric import to_float
-from . import fit as fitting
 from . import labelling, layout
+from ._labels import labels_of
+from ._values import INSET_PT, INSET_SHRINK, Arc, Inset, Label
 from .instruments import Instrument, in_view, instruments_of
 from .layout import group_points, label_tex, wedge
 from .palette import PALETTE
@@ -58,88 +58,9 @@ Box = tuple[float, float, float, float]
 
 #: Colours of the pictures: the one palette, the PNG's too (:mod:`graspcompass.palette`).
 COLORS = PALETTE
-#: Side in points of the zoomed inset's square frame (the main one is
-#: :data:`graspcompass.scene.labelling.FRAME_PT`), its labels at the same font size.
-INSET_PT = 1.25 * labelling.FRAME_PT
-#: The sides of the inset tried, as fractions of the crowded region's
-#: (:func:`graspcompass.scene.fit.crowded_region`): a smaller one zooms in further where
-#: a label has no place that keeps every rule.
-INSET_SHRINK = (1.0, 0.8, 0.64, 0.5, 0.4)
 
-
-@dataclass(frozen=True)
-class Arc:
-    """One piece of the envelope: from ``start`` about ``center``, radius ``radius``.
-
-    Angles in degrees, counter-clockwise; ``delta == 0`` marks the zero region (O).
-    """
-
-    n: int
-    start: XY
-    end: XY
-    center: XY
-    radius: float
-    start_angle: float
-    delta: float
-
-
-@dataclass(frozen=True)
-class Label:
-    """Where the label of one group of points goes (:func:`graspcompass.labelling.place`).
-
-    ``at`` is the label's anchor in the frame of the paper, ``direction`` its
-    side ``(dx, dy)`` of the point (1, 1: the label's lower left corner at
-    ``at``, above right of the point; 0: centred), ``box`` its estimated extent
-    ``(xmin, ymin, xmax, ymax)``, for text of :data:`graspcompass.labelling.FONT_PT`
-    points in a picture :data:`graspcompass.labelling.FRAME_PT` points wide.
-    """
-
-    names: tuple[str, ...]
-    at: XY
-    direction: tuple[int, int]
-    box: Box
-    #: from the point to the anchor, in points of the placement's frame (the PNG's)
-    offset: XY = (0.0, 0.0)
-    #: the labelled point, in the frame of the paper
-    point: XY = (0.0, 0.0)
-    #: a thin line from the point to the label (a label set far from a crowded point)
-    leader: bool = False
-    #: per name, the group of coinciding points it belongs to: names of one group are
-    #: joined by an equals sign, points apart but closer than a marker (one place to
-    #: the eye) by a comma (empty: all coincide)
-    groups: tuple[int, ...] = ()
-
-    def join(self, text: Any = label_tex) -> str:
-        """The names, each written by ``text``, joined as they coincide."""
-        out = text(self.names[0])
-        for i in range(1, len(self.names)):
-            same = not self.groups or self.groups[i] == self.groups[i - 1]
-            out += (" = " if same else ", ") + text(self.names[i])
-        return out
-
-    def tex(self) -> str:
-        """The label's TeX math body, ``O = O_M = Y_4`` (``P_1, P_{1x}`` when only near)."""
-        return self.join()
-
-
-@dataclass(frozen=True)
-class Inset:
-    """A zoomed view of the crowded region (:func:`graspcompass.scene.fit.crowded_region`).
-
-    ``box`` ``(xmin, xmax, ymin, ymax)`` is the region in the frame of the paper;
-    ``labels`` are placed in a frame of :data:`INSET_PT` points on its side.
-    """
-
-    box: Box
-    labels: tuple[Label, ...]
-    #: the labels of the whole view when the inset is shown beside it: those of the
-    #: crowded points that break a rule there are left to the inset
-    main: tuple[Label, ...] = ()
-
-    @property
-    def zoom(self) -> float:
-        """Points per unit of the inset."""
-        return INSET_PT / (self.box[1] - self.box[0])
+for _cls in (Arc, Inset, Label):  # documented, pickled and shown as this module's
+    _cls.__module__ = __name__
 
 
 @dataclass(frozen=True)
@@ -285,6 +206,7 @@ def build_scene(
     title: str | None = None,
     box: Box | None = None,
     break_points: bool = False,
+    font_pt: float = labelling.FONT_PT,
 ) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
@@ -364,7 +286,7 @@ def build_scene(
     named = [g for g in grouped if g[0][0] not in small or g[0][0] in on]
     lit = [xy for n, xy in inside if n in on]  # a labelled break point's cusp is its point
     free = [a.start for a in envelope if all(math.dist(a.start, xy) > 1e-6 * span for xy in lit)]
-    labels, inset = _labels(
+    labels, inset = labels_of(
         box,
         named,
         lines,
@@ -372,6 +294,7 @@ def build_scene(
         circles,
         envelope,
         [xy for names, xy in grouped if names[0] in small - on] + free,
+        font_pt,
     )
     return Scene(
         box,
@@ -391,11 +314,14 @@ def build_scene(
     )
 
 
-_SCENES: dict[tuple[int, bool], tuple[Any, Scene]] = {}
+_SCENES: dict[tuple[int, bool, float], tuple[Any, Scene]] = {}
 
 
 def scene_of(
-    construction: Construction, title: str | None = None, break_points: bool = False
+    construction: Construction,
+    title: str | None = None,
+    break_points: bool = False,
+    font_pt: float | None = None,
 ) -> Scene:
     """The :class:`Scene` of ``construction`` in its own view box, built once.
 
@@ -403,175 +329,24 @@ def scene_of(
     the TikZ, the animation frames); it lives as long as the construction.
     ``title`` replaces the grasp's title; ``break_points`` labels the break points
     on the envelope (:func:`build_scene`), a scene of its own (cached apart).
+    ``font_pt``: the labels' size in points of the placement's frame
+    (:data:`~graspcompass.scene.labelling.FRAME_PT` wide; default
+    :data:`~graspcompass.scene.labelling.FONT_PT`), for a painter whose labels are
+    larger or smaller than that against its frame (an animation's theme): they are
+    placed at the size they are drawn.
     """
     if title is not None:
-        return replace(scene_of(construction, break_points=break_points), title=title)
-    key = (id(construction), bool(break_points))
+        return replace(
+            scene_of(construction, break_points=break_points, font_pt=font_pt), title=title
+        )
+    font = labelling.FONT_PT if font_pt is None else round(float(font_pt), 2)
+    key = (id(construction), bool(break_points), font)
     hit = _SCENES.get(key)
     if hit is not None and hit[0]() is construction:
         return hit[1]
-    scene = build_scene(construction, break_points=bool(break_points))
+    scene = build_scene(construction, break_points=bool(break_points), font_pt=font)
     _SCENES[key] = (weakref.ref(construction, lambda _r: _SCENES.pop(key, None)), scene)
     return scene
-
-
-def _arc_points(a: Arc) -> np.ndarray:
-    if a.n == 0:
-        return np.array([a.start, a.end])
-    t = np.radians(a.start_angle + a.delta * np.linspace(0.0, 1.0, max(2, int(abs(a.delta)))))
-    return np.column_stack([a.center[0] + a.radius * np.cos(t), a.center[1] + a.radius * np.sin(t)])
-
-
-def _labels(
-    box: Box,
-    groups: list[tuple[tuple[str, ...], XY]],
-    lines: list[Any],
-    lengths: list[Any],
-    circles: list[Any],
-    envelope: tuple[Arc, ...],
-    obstacles: list[XY],
-) -> tuple[tuple[Label, ...], Inset | None]:
-    """The labels of ``groups`` in the main frame and, where points crowd, in an inset.
-
-    The main frame's labels name every point (a painter without the inset reads
-    them); :attr:`Inset.main` are those of the main frame beside the inset.
-
-    Placed by :func:`graspcompass.scene.fit.fit` in points of a frame of
-    :data:`~graspcompass.scene.labelling.FRAME_PT` (the PNG's axes).  A point of the
-    crowded region whose label breaks a rule in the main frame is named in the inset only.
-    """
-    side = labelling.FRAME_PT
-    s = side / (box[1] - box[0])
-    t = np.linspace(0, 2 * np.pi, 100)
-    curves = [np.asarray([a, b], dtype=float) for _, _, a, b in lines]
-    curves += [
-        np.column_stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)]) for _, _, c, r in circles
-    ]
-    curves += [np.asarray([a, b], dtype=float) for _, a, b in lengths]
-    if envelope:
-        curves.append(np.vstack([_arc_points(a) for a in envelope]))
-    order = sorted(groups, key=lambda g: labelling.label_order(g[0]))
-    anchors = [xy for _, xy in order]
-
-    def to_pt(xy: Any, frame: Box, scale: float) -> np.ndarray:
-        a = np.asarray(xy, dtype=float).reshape(-1, 2)
-        return np.column_stack([(a[:, 0] - frame[0]) * scale, (a[:, 1] - frame[2]) * scale])
-
-    region = fitting.crowded_region(to_pt(anchors, box, s), to_pt(obstacles, box, s), side)
-    within = [False] * len(order)
-    if region is not None:
-        within = [
-            region[0] <= x <= region[2] and region[1] <= y <= region[3]
-            for x, y in to_pt(anchors, box, s)
-        ]
-
-    def placed(
-        frame: Box,
-        scale: float,
-        keep: list[bool],
-        optional: list[bool],
-        height: float,
-        avoid: tuple[Label, ...] = (),
-    ) -> tuple[Label, ...]:
-        idx = [i for i, k in enumerate(keep) if k]
-        # groups closer than a marker are one place to the eye: one label names them all
-        near = layout.group_points(
-            [(str(i), (anchors[i][0] * scale, anchors[i][1] * scale)) for i in idx],
-            labelling.MARKER_PT,
-        )
-        joined = {int(g[0]): [int(j) for j in g] for g, _ in near}
-        idx = [i for i in idx if i in joined]
-        names_of = {i: tuple(n for j in joined[i] for n in order[j][0]) for i in idx}
-        group_of = {i: tuple(k for k, j in enumerate(joined[i]) for _ in order[j][0]) for i in idx}
-        text_of = {
-            i: "$"
-            + ", ".join(" = ".join(label_tex(n) for n in order[j][0]) for j in joined[i])
-            + "$"
-            for i in idx
-        }
-        # the other points of a label's group: markers no label covers
-        members = [anchors[j] for i in idx for j in joined[i] if j != i]
-        fits = fitting.fit(
-            to_pt([anchors[i] for i in idx], frame, scale),
-            [text_of[i] for i in idx],
-            curves=[to_pt(c, frame, scale) for c in curves],
-            frame=(0.0, 0.0, (frame[1] - frame[0]) * scale, height),
-            obstacles=np.vstack([to_pt(obstacles, frame, scale), to_pt(members, frame, scale)]),
-            optional=[optional[i] for i in idx],
-            avoid=[
-                (
-                    (b[0] - frame[0]) * scale,
-                    (b[1] - frame[2]) * scale,
-                    (b[2] - frame[0]) * scale,
-                    (b[3] - frame[2]) * scale,
-                )
-                for b in (lab.box for lab in avoid)
-            ],
-        )
-        out = []
-        broken.append(sum(p is not None and not p.ok for p in fits))
-        for i, p in zip(idx, fits):
-            if p is None:
-                continue
-            xy, (x0, y0, x1, y1) = order[i][1], p.box
-            out.append(
-                Label(
-                    names_of[i],
-                    (xy[0] + p.offset[0] / scale, xy[1] + p.offset[1] / scale),
-                    p.direction,
-                    (
-                        frame[0] + x0 / scale,
-                        frame[2] + y0 / scale,
-                        frame[0] + x1 / scale,
-                        frame[2] + y1 / scale,
-                    ),
-                    p.offset,
-                    xy,
-                    p.leader,
-                    group_of[i],
-                )
-            )
-        return tuple(out)
-
-    broken: list[int] = []  # per call of placed: how many labels break a rule
-    every = [True] * len(order)
-    beside = placed(box, s, every, within, (box[3] - box[2]) * s)
-    if region is None:
-        return beside, None
-    # the labels left to the inset, set where they break the fewest rules, for the
-    # painters without the inset
-    done = {n for lab in beside for n in lab.names}
-    rest = [not (within[i] and order[i][0][0] not in done) for i in range(len(order))]
-    rest = [not r for r in rest]
-    more = placed(box, s, rest, [False] * len(order), (box[3] - box[2]) * s, avoid=beside)
-    main = tuple(sorted(beside + more, key=lambda lab: labelling.label_order(lab.names)))
-    # the inset: the region, zoomed further (about the points left to it) while some
-    # label breaks a rule there, as long as it holds every point left to it; a point
-    # named in the whole view is named in the inset only where a place keeps every rule
-    left = [within[i] and order[i][0][0] not in done for i in range(len(order))]
-    mine = np.array([xy for xy, k in zip(anchors, left) if k]).reshape(-1, 2)
-    best: tuple[tuple[int, float], Inset] | None = None
-    for shrink in INSET_SHRINK:
-        half = (region[2] - region[0]) * shrink / 2 / s
-        if len(mine):
-            lo, hi = mine.min(axis=0), mine.max(axis=0)
-            half = max(half, float((hi - lo).max()) / 2 * 1.25)
-            cx, cy = (lo + hi) / 2
-        else:
-            cx = box[0] + (region[0] + region[2]) / 2 / s
-            cy = box[2] + (region[1] + region[3]) / 2 / s
-        sub = (cx - half, cx + half, cy - half, cy + half)
-        inside = [sub[0] <= x <= sub[1] and sub[2] <= y <= sub[3] for x, y in anchors]
-        optional = [a and not b for a, b in zip(inside, left)]
-        z = INSET_PT / (sub[1] - sub[0])
-        labs = placed(sub, z, inside, optional, INSET_PT)
-        key = (broken[-1], shrink and -shrink)
-        if best is None or key < best[0]:
-            best = (key, Inset(sub, labs, beside))
-        if broken[-1] == 0:
-            break
-    assert best is not None
-    return main, best[1]
 
 
 def exact_text(obj: Any) -> str:
