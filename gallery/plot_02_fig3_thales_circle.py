@@ -92,6 +92,11 @@ for d in degrees:
     )
     ax.plot(*np.array([v, h]).T, color=color, lw=0.8, ls="--")
     ax.plot(*h, "o", color=color, ms=5, zorder=5)
+    to_v = v - h
+    if np.linalg.norm(to_v) > 0.3:  # the right angle O H_1 V_1 (Thales), a small square
+        a, b = 0.16 * e_t * np.sign(k or 1.0), 0.16 * to_v / np.linalg.norm(to_v)
+        assert abs(float(np.dot(a, b))) < 1e-9  # H_1 is the foot: e_t is normal to V_1 H_1
+        ax.plot(*np.array([h - a, h - a + b, h + b]).T, color=color, lw=0.8)
     out = (h - centre) / np.linalg.norm(h - centre)  # label outside the circle
     ax.annotate(
         f"$\\theta = {d:.0f}°$\n$k_1 = {k:.2f}$",

@@ -24,10 +24,18 @@ The grasp here is a generic one, with unequal contacts, normals and friction
 :math:`P_1 = (6/5, 3/5)`, :math:`P_2 = (-4/5, 3/5)`, :math:`\\varphi_1 = 75°`,
 :math:`\\varphi_2 = 90°`, :math:`\\mu_1 = 0.6`, :math:`\\mu_2 = 0.4`.  Each panel shows the
 construction of one :math:`V_n` (the other cone sides are faint), with the signed lengths
-as double arrows.
+as double arrows and the right angles at the feet marked.  Panel (a) marks, as the paper
+does with double arcs, the two equal angles :math:`\\gamma = \\pi - (\\varphi_1 + \\xi_1)`
+of the Appendix: at :math:`P_1` between :math:`P_1P_{1x}` and the cone side, and at
+:math:`P_{2x}` between :math:`P_{2x}O` and the perpendicular :math:`P_{2x}Y_1`, so that
+:math:`\\overline{P_{1x}X_1} = \\overline{P_1P_{1x}}\\tan\\gamma` (A4) and
+:math:`\\overline{OY_1} = \\overline{OP_{2x}}\\tan\\gamma` (A5).
 """
 
+import math
+
 import matplotlib.pyplot as plt
+import numpy as np
 
 import graspcompass as gc
 from graspcompass.render import draw_construction
@@ -37,6 +45,32 @@ construction = gc.internal_force_diagram(grasp)
 
 # the objects that belong to the drawing of one V_n (§3.3 steps (1)-(3))
 OWN = ("X{}", "perp{}", "Y{}", "OMX{}", "OY{}", "V{}")
+
+
+def xy(name: str) -> np.ndarray:
+    p = construction[name]
+    return np.array([float(p.x), float(p.y)])
+
+
+def mark_gamma(ax, at: str, a: str, b: str, radius: float) -> float:
+    """Double arcs at ``at`` between the rays to ``a`` and ``b``, labelled γ; the angle."""
+    c = xy(at)
+    ta, tb = (math.atan2(*(xy(q) - c)[::-1]) for q in (a, b))
+    if (tb - ta) % (2 * math.pi) > math.pi:
+        ta, tb = tb, ta
+    t = np.linspace(ta, ta + (tb - ta) % (2 * math.pi), 40)
+    for r in (radius, radius * 1.18):
+        ax.plot(c[0] + r * np.cos(t), c[1] + r * np.sin(t), color="black", lw=0.8, zorder=7)
+    mid = t[len(t) // 2]
+    ax.annotate(
+        r"$\gamma$",
+        (c[0] + 1.75 * radius * math.cos(mid), c[1] + 1.75 * radius * math.sin(mid)),
+        ha="center",
+        va="center",
+        fontsize=11,
+        zorder=7,
+    )
+    return (tb - ta) % (2 * math.pi)
 
 
 def others(n: int) -> set[str]:
@@ -73,6 +107,11 @@ for n, ax, tag in zip((1, 2, 3, 4), axes.flat, "abcd"):
         if m != n:
             for a in artists[f"side{m}"]:
                 a.set_alpha(0.2)
+    if n == 1:  # the Appendix's two equal angles γ (A4), (A5)
+        g1 = mark_gamma(ax, "P1", "P1x", "X1", 0.5)
+        g2 = mark_gamma(ax, "P2x", "O", "Y1", 0.5)
+        gamma = math.pi - float(grasp.phi1 + grasp.xi1)
+        assert abs(g1 - gamma) < 1e-9 and abs(g2 - gamma) < 1e-9, (g1, g2, gamma)
     side = "upper" if n in (1, 2) else "lower"
     ax.set_title(f"({tag}) $V_{n}$: the {side} side of the cone at $P_{2 - n % 2}$", fontsize=11)
 fig.suptitle("Fig. 4: drawing steps of each vector $V_n$ (§3.3)")
