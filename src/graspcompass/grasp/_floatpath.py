@@ -39,7 +39,7 @@ from typing import Any
 import mpmath
 import sympy as sp
 
-from ..geometry.exact import approx
+from ..geometry.exact import approx, free, has_float
 
 __all__ = [
     "FLOAT_MARGIN",
@@ -72,9 +72,10 @@ def mpf(value: sp.Expr, dps: int = _DPS) -> mpmath.mpf:
         return mpmath.mpf(value._mpf_)  # the exact binary value, rounded to the context
     if isinstance(value, sp.Rational):
         return mpmath.mpf(int(value.p)) / int(value.q)
-    if getattr(value, "free_symbols", None):
+    value = value if isinstance(value, sp.Basic) else sp.sympify(value, strict=True)
+    if free(value):  # free, has_float: read off the kernel's memo (no walk of the tree)
         raise TypeError(f"{value} has free symbols and no numeric value")
-    if not value.has(sp.Float):  # exact: interval arithmetic on the canonical form (fast)
+    if not has_float(value):  # exact: interval arithmetic on the canonical form (fast)
         try:
             return mpmath.mpf(approx(value, dps + 10))
         except (TypeError, ValueError):

@@ -42,12 +42,10 @@ Step 13 of 0–46 · perpendicular
 
 from __future__ import annotations
 
-import math
 import re
 import textwrap
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -56,9 +54,10 @@ from matplotlib.text import Annotation, Text
 
 from ..scene.layout import numeric_objects, tex
 from ..scene.picture import scene_of
-from ._anim_camera import camera_box, step_boxes
+from ._anim_apply import _ApplyFrames
+from ._anim_camera import step_boxes
 from ._anim_frames import _CameraFrames
-from ._anim_ink import _fade, _inks, _quality, _restore, _snap, _tint, dim_alpha
+from ._anim_ink import _inks, _quality, _snap, dim_alpha
 from ._anim_layout import _layout, _mathtext, _shown, _text_width, _wrap  # noqa: F401
 from ._anim_panel import SidePanel
 from ._anim_player import FrameAnimation
@@ -83,7 +82,7 @@ __all__ = [
 AX_RECT = (0.1, 0.2, 0.86, 0.72)
 
 
-class ConstructionAnimation(_CameraFrames, FrameAnimation):
+class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
     """The construction of §3.3 replayed step by step; see :func:`animate_construction`."""
 
     # set by ``_layout`` (render/_anim_layout.py)
@@ -353,154 +352,6 @@ class ConstructionAnimation(_CameraFrames, FrameAnimation):
     def _still(self, frame: int) -> bool:
         st = self.timeline.at(frame)
         return st.kind == "rest" or (st.kind == "title" and frame > 0)
-
-    def _apply(self, frame: int) -> None:
-        st = self.timeline.at(frame)
-        steps = self.construction.steps
-        inputs = set(steps[st.step].inputs)
-        hold = st.kind == "hold"
-        title = st.kind == "title"
-        self._card.set_visible(title)
-        if self.camera:
-            b = camera_box(self._boxes, self._whole, st.step, st.kind, st.raw)
-            self.axes.set_xlim(b[0], b[1])
-            self.axes.set_ylim(b[2], b[3])
-        for aid in self._aids:
-            aid.set_visible(False)
-        k = 0
-        for i, items in enumerate(self._items):
-            key: Any = None  # the current step: set at every frame, never cached
-            if i > st.step or title:
-                key = "hidden"
-            elif i < st.step or hold:  # the hold shows the finished figure
-                key = "bright" if steps[i].name in inputs or hold else "dim"
-            for a, role, snap in items:
-                if key is None or self._keys[k] != key:
-                    self._keys[k] = key
-                    _restore(a, snap)
-                    if key is None:
-                        self._set_current(
-                            a, role, snap, steps[st.step], st.kind, st.progress, st.raw
-                        )
-                    elif key == "hidden":
-                        a.set_visible(False)
-                    elif key == "dim":
-                        _fade(a, snap, self._dimf[k])
-                k += 1
-        for (a, parts, snap), f in zip(self._shared, self._shared_dimf):
-            _restore(a, snap)
-            # a name is shown once its point is marked (the stroke of its step is done)
-            done = st.kind != "draw" or st.progress >= 1.0
-            shown = [
-                p
-                for i, p in parts
-                if not title and (i < st.step or hold or (i == st.step and done))
-            ]
-            if not shown:
-                a.set_visible(False)
-                continue
-            a.set_text("$" + re.sub(r"^( = |, )", "", "".join(shown)) + "$")
-            names = {steps[i].name for i, _ in parts}
-            if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
-                _fade(a, snap, f)
-        if self.camera:  # a leader keeps its length in points: shorter in data when zoomed
-            z = (self._whole[1] - self._whole[0]) / (b[1] - b[0])
-            for a, role, snap in (x for items in self._items for x in items):
-                if role == "leader":
-                    (x0, x1), (y0, y1) = snap["data"]
-                    if isinstance(a, Line2D):
-                        a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
-        self._caption.set_text("" if title else self.caption_at(frame))
-        if self._panel is not None:
-            self._panel.apply(st.step, st.kind, st.progress, hold, title)
-        made = (
-            1.0 if hold else 0.0 if title else st.step + (st.progress if st.kind == "draw" else 1.0)
-        )
-        self._bar.set_width(made if hold else made / len(steps))
-
-    def _set_current(
-        self, a: Any, role: str, snap: dict[str, Any], step: Step, kind: str, p: float, raw: float
-    ) -> None:
-        if role == "instrument":  # the compass or the square drawn along its stroke
-            x, y = snap["data"]
-            m = max(1, math.ceil(min(p, 1.0) * len(x))) if kind == "draw" else len(x)
-            a.set_data(x[:m], y[:m])
-            return
-        if role == "leader":  # with its label, after its object's stroke
-            a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
-            return
-        if role == "cone":  # after the stroke of its second side
-            a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
-            return
-        if role not in ("fill", "label"):
-            pulse = 1.0 + 0.5 * math.sin(math.pi * raw) if kind == "pause" else 1.0
-            _tint(a, snap, self.theme.highlight_color, (1.0 if role == "marker" else 1.6) * pulse)
-        if kind == "pause":
-            if role == "marker" and step.kind == "point":  # a ripple round the key point
-                ripple = (2 * raw) % 1.0
-                self._halo.set(
-                    data=snap["data"],
-                    ms=snap["ms"] * (1.5 + 3.5 * ripple),
-                    alpha=1.0 - ripple,
-                    visible=True,
-                )
-        elif role == "marker":  # marked: the marker pops up
-            a.set_markersize(snap["ms"] * p * (1.0 + 0.8 * math.sin(math.pi * p)))
-            self._draw_aid(step, p)
-        elif role == "label":
-            a.set_visible(snap["visible"] and p >= 1.0)  # after its object's stroke
-        elif role == "line" and len(snap["data"][0]) == 2:  # the ruler, from its anchor
-            (x0, x1), (y0, y1) = snap["data"]
-            ax_, ay_ = next(
-                (
-                    v
-                    for v in (self._num[n] for n in step.inputs)
-                    if isinstance(v, tuple) and isinstance(v[0], float)
-                ),
-                (0.0, 0.0),
-            )
-            a.set_data(
-                [ax_ + p * (x0 - ax_), ax_ + p * (x1 - ax_)],
-                [ay_ + p * (y0 - ay_), ay_ + p * (y1 - ay_)],
-            )
-        elif role == "arrow":  # a signed length laid off with the compass
-            (x0, y0), (x1, y1) = a.xyann, snap["xy"]
-            a.xy = (x0 + p * (x1 - x0), y0 + p * (y1 - y0))
-        elif role == "fill":
-            _fade(a, snap, p)
-        elif role == "trace":  # the envelope traced in θ, with its radius k_grasp(θ)
-            x, y = snap["data"]
-            m = max(2, math.ceil(p * len(x)))
-            a.set_data(x[:m], y[:m])
-            self._arm.set(data=([0.0, x[m - 1]], [0.0, y[m - 1]]), visible=p < 1.0)
-        elif role == "circle":
-            self._sweep(a, snap, p)
-
-    def _sweep(self, a: Any, snap: dict[str, Any], p: float) -> None:
-        """The compass arc round the circle on O V_n from O (eq. (31)), with the compass arm."""
-        (cx, cy), r = a.center, a.radius
-        t = math.atan2(-cy, -cx) + 2 * math.pi * p * np.linspace(0.0, 1.0, 181)
-        xs, ys = cx + r * np.cos(t), cy + r * np.sin(t)
-        done = p >= 1.0
-        self._arc.set(data=(xs, ys), ls=a.get_linestyle(), lw=snap["lw"] * 1.6, visible=not done)
-        self._arm.set(data=([cx, xs[-1]], [cy, ys[-1]]), visible=not done)
-        a.set_visible(done)
-
-    def _draw_aid(self, step: Step, p: float) -> None:
-        """Dashed helper lines of a point: the dropped perpendicular, the bisected
-        segment, the two coordinates of V_n (§3.3 step (3))."""
-        v, num = self._num[step.name], self._num
-        if any(i.step == step.name for i in scene_of(self.construction).instruments):
-            return  # its instruments show it (graspcompass.scene.instruments)
-        if step.op in ("foot", "midpoint"):
-            a = num[step.inputs[0]]
-            b = v if step.op == "foot" else num[step.inputs[1]]
-            xs, ys = [a[0], a[0] + p * (b[0] - a[0])], [a[1], a[1] + p * (b[1] - a[1])]
-        elif step.op == "point_from_lengths":
-            xs, ys = [v[0], v[0], np.nan, 0.0, p * v[0]], [0.0, p * v[1], np.nan, v[1], v[1]]
-        else:
-            return
-        self._aid.set(data=(xs, ys), visible=True)
 
 
 def animate_construction(
