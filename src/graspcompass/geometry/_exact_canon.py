@@ -8,6 +8,8 @@ Private to :mod:`graspcompass.geometry.exact`, which re-exports these names.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from ..boundary.expr import parse_exact
@@ -57,6 +59,13 @@ def text(expr: object) -> str:
     """
     if not isinstance(expr, sp.Basic):
         return str(expr)
+    return _text(expr)
+
+
+@lru_cache(maxsize=4096)
+def _text(expr: sp.Basic) -> str:
+    """:func:`text`, once per expression (an envelope's break angle ends one arc and
+    starts the next)."""
     hit = _MEMO.get(expr)
     if hit is not None and len(hit[1]) + len(hit[2]) > _SORTED_TERMS:
         return _poly_text(*hit)  # a long canonical number: printed from its polynomials

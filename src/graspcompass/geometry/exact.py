@@ -97,8 +97,9 @@ def clear_caches() -> None:
     """Forget the generators and memoised canonical forms (for benchmarks and tests)."""
     _GENS.clear()
     _MEMO.clear()
-    from . import trig
+    from . import _exact_canon, trig
 
+    _exact_canon._text.cache_clear()
     _ring.cache_clear()
     _atom_plan.cache_clear()
     _positions.cache_clear()
