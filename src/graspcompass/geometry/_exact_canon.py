@@ -15,6 +15,7 @@ import sympy as sp
 from ..boundary.expr import parse_exact
 from ._exact_convert import _canon_ring
 from ._exact_ring import _MEMO, _SORTED_TERMS
+from ._exact_text import _fast_text
 
 
 def sym(value: object) -> sp.Expr:
@@ -71,7 +72,8 @@ def _text(expr: sp.Basic) -> str:
         return _poly_text(*hit)  # a long canonical number: printed from its polynomials
     if free(expr) or not expr.has(sp.sin, sp.cos, sp.atan):
         return str(expr)  # small radicals and symbols: sympy's usual order
-    return sp.sstr(expr, order="none")
+    fast = _fast_text(expr)
+    return fast if fast is not None else sp.sstr(expr, order="none")
 
 
 def _poly_text(R, n, d) -> str:
