@@ -740,3 +740,13 @@ def test_cli_exact_and_tilt_json(capsys) -> None:
 )
 def test_cli_bad_orientation_one_line_exit_2(extra, text, capsys) -> None:
     _one_line_exit_2(["plan", "--shape", str(BRACKET), "--samples", "12", *extra], capsys, text)
+
+
+def test_arc_max_of_an_arc_past_a_half_turn_is_every_orientation() -> None:
+    """±τ with τ >= π holds every turn: V = (−1, 0) against w = (1, 0) reaches
+    V·R_π w = 1 (found by hypothesis in CI: τ = 3.1875 gave cos τ < −1 + 0.002)."""
+    from graspcompass.sizing.core import _arc_max
+
+    for tau in (math.pi, 3.1875, 4.0):
+        got, rho = _arc_max(-1.0, 0.0, 1.0, (1.0, 0.0), 1.0, tau, False)
+        assert got == pytest.approx(1.0) and abs(abs(rho) - math.pi) < 1e-12

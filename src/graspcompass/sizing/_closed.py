@@ -36,7 +36,7 @@ __all__: list[str] = []
 
 
 def _arc_max(S: Any, C: Any, r: Any, w: Vec, wn: Any, tau: Any, exact: bool) -> tuple[Any, Any]:
-    """``max over ρ in [−τ, τ] of V·R_ρ w`` and the maximising ρ (τ None: any ρ).
+    """``max over ρ in [−τ, τ] of V·R_ρ w`` and the maximising ρ (τ None or τ >= π: any ρ).
 
     R_ρ turns counter-clockwise; ``V·R_ρ w = cos ρ (V·w) + sin ρ (V·Jw)`` with
     ``Jw = (−w_y, w_x)``.
@@ -46,8 +46,8 @@ def _arc_max(S: Any, C: Any, r: Any, w: Vec, wn: Any, tau: Any, exact: bool) -> 
     atan2 = sp.atan2 if exact else math.atan2
     if _cmp(wn, 0, exact) == 0 or _cmp(r, 0, exact) == 0:
         return (sp.Integer(0) if exact else 0.0), (sp.Integer(0) if exact else 0.0)
-    if tau is None or tau == "any":
-        return r * wn, atan2(q, p)
+    if tau is None or tau == "any" or _cmp(tau, sp.pi if exact else math.pi, exact) >= 0:
+        return r * wn, atan2(q, p)  # an arc of ±τ >= ±π: every orientation
     if exact:
         s, c = sincos(tau)
     else:
