@@ -11,6 +11,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
+from _label_rules import overlap
 from graspcompass import Grasp, internal_force_diagram, labelling
 from graspcompass.export import to_svg, to_tikz
 from graspcompass.export._scene import build_scene
@@ -46,12 +47,6 @@ def _svg_labels(text: str) -> tuple[dict[str, tuple[float, ...]], dict[str, tupl
     return boxes, markers
 
 
-def _overlap(a: tuple[float, ...], b: tuple[float, ...]) -> float:
-    w = min(a[2], b[2]) - max(a[0], b[0])
-    h = min(a[3], b[3]) - max(a[1], b[1])
-    return max(w, 0.0) * max(h, 0.0)
-
-
 @pytest.fixture(scope="module", params=PRESETS)
 def construction(request):
     return internal_force_diagram(Grasp.preset(request.param))
@@ -63,10 +58,10 @@ def test_svg_labels_do_not_overlap_each_other_or_markers(construction) -> None:
     names = sorted(boxes)
     for i, a in enumerate(names):
         for b in names[i + 1 :]:
-            assert _overlap(boxes[a], boxes[b]) == 0.0, (a, b)
+            assert overlap(boxes[a], boxes[b]) == 0.0, (a, b)
         for p, (cx, cy, r) in markers.items():
             if p != a:
-                assert _overlap(boxes[a], (cx - r, cy - r, cx + r, cy + r)) == 0.0, (a, p)
+                assert overlap(boxes[a], (cx - r, cy - r, cx + r, cy + r)) == 0.0, (a, p)
 
 
 def test_fig6_labels_around_O_apart() -> None:
@@ -81,7 +76,7 @@ def test_fig6_labels_around_O_apart() -> None:
         if n != o and abs(b[0] - boxes[o][0]) < 120 and abs(b[1] - boxes[o][1]) < 120
     ]
     assert near  # labels crowd around O, and none covers O's
-    assert all(_overlap(boxes[o], boxes[n]) == 0.0 for n in near)
+    assert all(overlap(boxes[o], boxes[n]) == 0.0 for n in near)
 
 
 def test_tikz_labels_have_the_svg_anchors(construction) -> None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import random
 
 from _browser import chromium
+from _label_rules import cover_faults, overlap
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export import to_svg
 from graspcompass.scene.picture import scene_of
@@ -32,12 +33,6 @@ MEASURE = """() => {
 }"""
 
 
-def _overlap(a, b) -> float:
-    w = min(a[2], b[2]) - max(a[0], b[0])
-    h = min(a[3], b[3]) - max(a[1], b[1])
-    return max(w, 0.0) * max(h, 0.0)
-
-
 def _dist(p, box) -> float:
     dx = max(box[0] - p[0], 0.0, p[0] - box[2])
     dy = max(box[1] - p[1], 0.0, p[1] - box[3])
@@ -50,19 +45,13 @@ def faults(panels) -> list[str]:
     for panel in panels:
         pts = panel["pts"]
         centre = {p["id"]: ((p["m"][0] + p["m"][2]) / 2, (p["m"][1] + p["m"][3]) / 2) for p in pts}
-        labelled = [p for p in pts if p["t"] is not None]
-        for i, p in enumerate(labelled):
-            for q in labelled[i + 1 :]:
-                if _overlap(p["t"], q["t"]) > 0.0:
-                    bad.append(f"{panel['panel']}: label {p['id']} over label {q['id']}")
-            for q in pts:
-                if _overlap(p["t"], q["m"]) > 0.0:
-                    bad.append(f"{panel['panel']}: label {p['id']} over marker {q['id']}")
+        bad += cover_faults(pts, panel["panel"], lambda p: p["id"])
+        for p in (p for p in pts if p["t"] is not None):
             own = _dist(centre[p["id"]], p["t"])
             for q in pts:  # a marker over the label's own marker is its place too
                 if (
                     q["id"] != p["id"]
-                    and _overlap(q["m"], p["m"]) == 0.0
+                    and overlap(q["m"], p["m"]) == 0.0
                     and _dist(centre[q["id"]], p["t"]) <= own
                 ):
                     bad.append(f"{panel['panel']}: label {p['id']} nearer {q['id']}")

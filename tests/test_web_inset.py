@@ -29,6 +29,7 @@ from typing import Any
 import pytest
 
 from _browser import chromium
+from _label_rules import cover_faults, overlap
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import to_html
 
@@ -86,35 +87,22 @@ MEASURE_INSET = """() => {
 }"""
 
 
-def _overlap(a: list[float], b: list[float]) -> float:
-    w = min(a[2], b[2]) - max(a[0], b[0])
-    h = min(a[3], b[3]) - max(a[1], b[1])
-    return max(w, 0.0) * max(h, 0.0)
-
-
 def _centre(r: list[float]) -> tuple[float, float]:
     return ((r[0] + r[2]) / 2, (r[1] + r[3]) / 2)
 
 
 def faults(panel: dict[str, Any], where: str) -> list[str]:
     """Every broken rule in one panel, from its measured rectangles."""
-    bad = []
     pts, box = panel["pts"], panel["board"]
-    shown = [p for p in pts if p["t"] is not None]
-    for i, p in enumerate(shown):
-        for q in shown[i + 1 :]:
-            if _overlap(p["t"], q["t"]) > 0.0:
-                bad.append(f"{where}: label {p['text']} over label {q['text']}")
-        for q in pts:
-            if _overlap(p["t"], q["m"]) > 0.0:
-                bad.append(f"{where}: label {p['text']} over the marker of {q['name']}")
+    bad = cover_faults(pts, where, lambda p: p["text"] or p["name"])
+    for p in (p for p in pts if p["t"] is not None):
         t = p["t"]
         if t[0] < box[0] or t[1] < box[1] or t[2] > box[2] or t[3] > box[3]:
             bad.append(f"{where}: label {p['text']} outside its panel {t} {box}")
         c, own = _centre(t), _centre(p["m"])
         d_own = math.dist(c, own)
         for q in pts:  # a marker touching the label's own marker is the same place
-            if q is p or _overlap(q["m"], p["m"]) > 0.0:
+            if q is p or overlap(q["m"], p["m"]) > 0.0:
                 continue
             if math.dist(c, _centre(q["m"])) <= d_own:
                 bad.append(f"{where}: label {p['text']} nearer {q['name']} than its point")
