@@ -238,6 +238,12 @@ def test_lecture_captions_stay_long_enough_to_read(fig6, lecture):
         len(hold) / fps
         >= max(6.0, len(read_text(lecture.caption_at(hold[0]))) / CHARS_PER_SECOND) - 1 / fps
     )
+    # the zoom on the crowded centre of Fig. 6 after the hold, as long as its caption needs
+    zoom = [f for f in range(lecture.frame_count) if tl.at(f).kind == "inset"]
+    assert zoom, "Fig. 6's centre crowds: the lecture zooms on it after the hold"
+    text = lecture.caption_at(zoom[0])
+    assert all(lecture.caption_at(f) == text for f in zoom)
+    assert len(zoom) / fps >= max(LEAST_SECONDS, len(read_text(text)) / CHARS_PER_SECOND)
     # the still frames that make up the time are not drawn again
     assert lecture.drawn_frames < lecture.frame_count / 2
 

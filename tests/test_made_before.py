@@ -251,7 +251,7 @@ def _check_side_panel(c) -> None:
         st_ = anim.timeline.at(f)
         anim._apply(f)
         n = st_.step
-        if st_.kind in ("hold", "title"):
+        if st_.kind in ("hold", "inset", "title"):  # the finished figure, the title card
             continue
         done = st_.kind != "draw" or st_.progress >= 1.0
         made = upto[n if done else n - 1]

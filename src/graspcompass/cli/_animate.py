@@ -2,7 +2,7 @@
 
 ``graspcompass animate [PRESET] [grasp options] --kind construction|sweep|orientation
 -o FILE.gif|.mp4|.html [--quality standard|lecture] [--fps N] [--dpi N] [--pause S]
-[--hold S] [--caption-seconds S] [--circle N]`` writes one of the animations of
+[--hold S] [--zoom S] [--caption-seconds S] [--circle N]`` writes one of the animations of
 :mod:`graspcompass.render.animate`: the ruler-and-compass construction of §3.3
 step by step, the external force sweeping round (Fig. 3), or the object
 turning under gravity (Fig. 1).  matplotlib is imported only when it runs.
@@ -20,7 +20,7 @@ work: ``--fps`` in (0, :data:`MAX_FPS`] (at least :data:`MIN_FPS`, the slowest a
 GIF frame can last), ``--dpi`` in [:data:`MIN_DPI`, :data:`MAX_DPI`] (at least
 :data:`MIN_LECTURE_DPI` with ``--quality lecture``: 1280 pixels wide), ``--frames``
 in [1, :data:`MAX_FRAMES`], ``--frames-per-step`` in [1, :data:`MAX_FRAMES_PER_STEP`],
-``--pause``, ``--hold`` and ``--caption-seconds`` in [0, :data:`MAX_SECONDS`],
+``--pause``, ``--hold``, ``--zoom`` and ``--caption-seconds`` in [0, :data:`MAX_SECONDS`],
 ``--weight`` in [:data:`MIN_WEIGHT`, :data:`MAX_WEIGHT`]; the output path (its
 folder must exist) before the grasp is built; and the size of the whole
 animation (frames drawn × pixels per frame, at most :data:`MAX_PIXELS`; a still frame,
@@ -90,7 +90,7 @@ MAX_ANIMATION_FRAMES = 20_000
 QUALITY_NAMES = ("standard", "lecture")
 #: Least ``--dpi`` with ``--quality lecture``: its 12.8-inch frame is then 1280 pixels wide.
 MIN_LECTURE_DPI = 100.0
-#: Most seconds of ``--pause``, ``--hold`` and ``--caption-seconds``.
+#: Most seconds of ``--pause``, ``--hold``, ``--zoom`` and ``--caption-seconds``.
 MAX_SECONDS = 60.0
 #: Frame of the main job's GIF: 6.4 × 7.2 inches at 100 dpi, 640 × 720 pixels.
 MAIN_FIGSIZE, MAIN_DPI = (6.4, 7.2), 100.0
@@ -311,6 +311,15 @@ def register(
         "long enough to read its caption)",
     )
     p.add_argument(
+        "--zoom",
+        type=seconds,
+        default=None,
+        metavar="S",
+        help="seconds of each zoom after the hold on a crowd of points whose labels have "
+        f"no room in the whole view, for --kind construction, 0 to {MAX_SECONDS:g} "
+        "(default: 5; lecture: 8; 0: no zoom)",
+    )
+    p.add_argument(
         "--caption-seconds",
         type=seconds,
         default=None,
@@ -405,6 +414,7 @@ def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
             pause_frames=None if pause is None else q.frames(pause, fps),
             hold_frames=None if hold is None else q.frames(hold, fps),
             caption_seconds=getattr(args, "caption_seconds", None),
+            inset_seconds=getattr(args, "zoom", None),
         )
     else:
         look = theme.scaled(q.scale) if q.scale != 1 else theme
@@ -439,7 +449,7 @@ def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
     if anim.frame_count > MAX_ANIMATION_FRAMES:
         raise InputTooLargeError(
             f"the animation would have {anim.frame_count} frames; at most "
-            f"{MAX_ANIMATION_FRAMES}: lower --fps, --hold, --pause, --caption-seconds, "
+            f"{MAX_ANIMATION_FRAMES}: lower --fps, --hold, --zoom, --pause, --caption-seconds, "
             "--frames-per-step or --frames"
         )
     with writing(path):
@@ -455,8 +465,9 @@ def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
 def main_animation(construction: Construction) -> ConstructionAnimation:
     """The main job's construction animation of ``construction`` (not yet written).
 
-    8 frames per step at 20 fps, :data:`MAIN_FIGSIZE` inches at :data:`MAIN_DPI` dpi:
-    640 × 720 pixels, the captions laid out whole under the diagram.
+    The standard quality: 8 frames per step at 10 fps, :data:`MAIN_FIGSIZE` inches at
+    :data:`MAIN_DPI` dpi: 640 × 720 pixels, the captions laid out whole under the diagram,
+    the camera following the step and, after the hold, zooming on each crowd of points.
     """
     from ..render.animate import animate_construction
 

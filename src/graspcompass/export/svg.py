@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 from xml.sax.saxutils import escape, quoteattr
 
 from ..scene import metrics
-from ..scene.labelling import FONT_PT, FRAME_PT, MARKER_PT
+from ..scene.labelling import FONT_PT, FRAME_PT, MARKER_PT, SMALL_MARKER
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
 
 if TYPE_CHECKING:
@@ -33,7 +33,7 @@ _MARGIN_TOP = 40.0
 _FONT = FONT_PT * _SIZE / FRAME_PT
 #: Marker radii in user units: the placement's marker (:data:`MARKER_PT`), a break point's.
 _MARKER_R = MARKER_PT / 2 * _SIZE / FRAME_PT
-_SMALL_R = 0.7 * _MARKER_R
+_SMALL_R = SMALL_MARKER * _MARKER_R
 #: The inset's side and its gap to the diagram, in user units: the font keeps its size
 #: (:data:`graspcompass.scene.picture.INSET_PT` points of the placement).
 _INSET = INSET_PT * _SIZE / FRAME_PT

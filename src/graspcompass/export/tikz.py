@@ -20,8 +20,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..scene.labelling import FRAME_PT
+from ..scene.labelling import FRAME_PT, SMALL_MARKER
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, scene_of
+
+#: A point's dot (``dot`` style), and a break point's: the scene's one ratio.
+_DOT_PT = 3.0
+_SMALL_DOT = f"{_DOT_PT * SMALL_MARKER:.2f}pt"
 
 if TYPE_CHECKING:
     from ..construction import Construction
@@ -142,7 +146,7 @@ _LEGEND = (
     (r"\draw[envelope, fill=none] (0,0) -- (0.6,0);", r"envelope $k_{grasp}(\theta)$, eq. (25)"),
     (r"\node[dot] at (0.3,0) {};", "point of the construction"),
     (
-        r"\node[dot, fill=white, draw=gcpoint, minimum size=2.5pt] at (0.3,0) {};",
+        r"\node[dot, fill=white, draw=gcpoint, minimum size=" + _SMALL_DOT + "] at (0.3,0) {};",
         r"break point $B_{nm}$",
     ),
 )
@@ -189,7 +193,7 @@ def _styles(scene: Scene) -> list[str]:
         "    fill=gcfill, fill opacity=0.35, draw opacity=1},",
         "  cone/.style={fill=gccone, fill opacity=0.35},",
         "  object/.style={draw=gcobject, fill=gcobjectfill, line width=0.6pt},",
-        "  dot/.style={circle, fill=gcpoint, inner sep=0pt, minimum size=3pt},",
+        f"  dot/.style={{circle, fill=gcpoint, inner sep=0pt, minimum size={_DOT_PT:g}pt}},",
         # 8 pt in 11 cm: the ratio font / width of the placement (10 pt in 388 pt)
         "  label/.style={inner sep=0pt, font=\\fontsize{8}{9.6}\\selectfont,",
         "    fill=white, fill opacity=0.8, text opacity=1}]",
@@ -300,7 +304,7 @@ def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> 
         if not (box[0] <= xy[0] <= box[1] and box[2] <= xy[1] <= box[3]):
             continue
         small = names[0] in scene.small
-        style = "dot, fill=white, draw=gcpoint, minimum size=2.5pt" if small else "dot"
+        style = f"dot, fill=white, draw=gcpoint, minimum size={_SMALL_DOT}" if small else "dot"
         out.append(f"\\node[{style}] at ({_cname(names[0])}) {{}};")
         lab = by_name.get(names[0])
         if lab is not None:  # a break point too, when labelled on request

@@ -8,14 +8,12 @@ has come, and the instruments' aid while a step is drawn.
 from __future__ import annotations
 
 import math
-import re
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from matplotlib.lines import Line2D
 
 from ..scene.picture import scene_of
-from ._anim_camera import camera_box
+from ._anim_camera import camera_box, zoomed
 from ._anim_ink import _fade, _restore, _tint
 
 if TYPE_CHECKING:
@@ -42,9 +40,11 @@ class _ApplyFrames:
     _keys: Any
     _num: Any
     _panel: Any
-    _shared: Any
-    _shared_dimf: Any
+    _views: Any
     _whole: Any
+    _zoom_frames: Any
+    _zoom_of: Any
+    _zooms: Any
     axes: Any
     camera: Any
     caption_at: Any
@@ -56,16 +56,21 @@ class _ApplyFrames:
         st = self.timeline.at(frame)
         steps = self.construction.steps
         inputs = set(steps[st.step].inputs)
-        hold = st.kind == "hold"
+        hold = st.kind in ("hold", "inset")  # the finished figure (and its zoom)
         title = st.kind == "title"
         self._card.set_visible(title)
+        b = self._whole
+        k = self._zoom_of.get(st.segment)  # the final zoom of an "inset" segment
         if self.camera:
-            b = camera_box(self._boxes, self._whole, st.step, st.kind, st.raw)
+            z = None if k is None else self._zooms[k]
+            b = camera_box(self._boxes, self._whole, st.step, st.kind, st.raw, z)
             self.axes.set_xlim(b[0], b[1])
             self.axes.set_ylim(b[2], b[3])
+        for frame_of_zoom in self._zoom_frames:
+            frame_of_zoom.set_visible(hold)
         for aid in self._aids:
             aid.set_visible(False)
-        k = 0
+        n = 0
         for i, items in enumerate(self._items):
             key: Any = None  # the current step: set at every frame, never cached
             if i > st.step or title:
@@ -73,8 +78,8 @@ class _ApplyFrames:
             elif i < st.step or hold:  # the hold shows the finished figure
                 key = "bright" if steps[i].name in inputs or hold else "dim"
             for a, role, snap in items:
-                if key is None or self._keys[k] != key:
-                    self._keys[k] = key
+                if key is None or self._keys[n] != key:
+                    self._keys[n] = key
                     _restore(a, snap)
                     if key is None:
                         self._set_current(
@@ -83,31 +88,15 @@ class _ApplyFrames:
                     elif key == "hidden":
                         a.set_visible(False)
                     elif key == "dim":
-                        _fade(a, snap, self._dimf[k])
-                k += 1
-        for (a, parts, snap), f in zip(self._shared, self._shared_dimf):
-            _restore(a, snap)
-            # a name is shown once its point is marked (the stroke of its step is done)
-            done = st.kind != "draw" or st.progress >= 1.0
-            shown = [
-                p
-                for i, p in parts
-                if not title and (i < st.step or hold or (i == st.step and done))
-            ]
-            if not shown:
-                a.set_visible(False)
-                continue
-            a.set_text("$" + re.sub(r"^( = |, )", "", "".join(shown)) + "$")
-            names = {steps[i].name for i, _ in parts}
-            if not (hold or names & inputs or any(i == st.step for i, _ in parts)):
-                _fade(a, snap, f)
-        if self.camera:  # a leader keeps its length in points: shorter in data when zoomed
-            z = (self._whole[1] - self._whole[0]) / (b[1] - b[0])
-            for a, role, snap in (x for items in self._items for x in items):
-                if role == "leader":
-                    (x0, x1), (y0, y1) = snap["data"]
-                    if isinstance(a, Line2D):
-                        a.set_data([x0, x0 + (x1 - x0) / z], [y0, y0 + (y1 - y0) / z])
+                        _fade(a, snap, self._dimf[n])
+                n += 1
+        if self._views is not None:
+            i = st.step
+            moving = self.camera and i > 0 and self._boxes[i - 1] != self._boxes[i]
+            view = self._views.view_at(
+                st.step, st.kind, st.raw, moving, k if k is not None and zoomed(st.raw) else None
+            )
+            self._views.apply(view, st.step, st.kind, st.progress, inputs, b[1] - b[0])
         self._caption.set_text("" if title else self.caption_at(frame))
         if self._panel is not None:
             self._panel.apply(st.step, st.kind, st.progress, hold, title)
@@ -123,9 +112,6 @@ class _ApplyFrames:
             x, y = snap["data"]
             m = max(1, math.ceil(min(p, 1.0) * len(x))) if kind == "draw" else len(x)
             a.set_data(x[:m], y[:m])
-            return
-        if role == "leader":  # with its label, after its object's stroke
-            a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))
             return
         if role == "cone":  # after the stroke of its second side
             a.set_visible(snap["visible"] and (kind != "draw" or p >= 1.0))

@@ -6,7 +6,9 @@ inside the whole view); the whole view when the target would be nearly as large.
 During a step's drawing the camera glides from the last target to the new one
 (centre linearly, size geometrically, eased); it rests while the step rests and
 shows the whole diagram in the final hold.  So it zooms in on X3, Y3, V3 of
-Fig. 6, near O, and out for V1.  Private to :mod:`graspcompass.render.animate`.
+Fig. 6, near O, and out for V1.  After the hold it zooms on the crowded region of the
+finished diagram, rests there and comes back (:data:`ZOOM`).  Private to
+:mod:`graspcompass.render.animate`.
 """
 
 from __future__ import annotations
@@ -24,6 +26,9 @@ LEAST = 0.35
 WHOLE = 0.75
 #: Padding round a step's points, as a fraction of their extent (and of LEAST).
 PAD = 0.35
+#: The final zoom on the crowded region (an ``"inset"`` segment): the fractions of its
+#: frames gliding in and gliding back out; the camera rests on the region between.
+ZOOM = {"in": 0.25, "out": 0.15}
 
 
 def _is_xy(v: Any) -> bool:
@@ -101,6 +106,12 @@ def _holds(box: Box, pts: list[Any] | None, span: float) -> bool:
     return inside and (box[1] - box[0]) <= 1.6 * need * (1 + 2 * PAD)
 
 
+def zoomed(raw: float) -> bool:
+    """Whether the final zoom's labels show at linear progress ``raw`` of an ``"inset"``
+    segment: from half way in to half way out."""
+    return ZOOM["in"] / 2 <= raw <= 1.0 - ZOOM["out"] / 2
+
+
 def _between(a: Box, b: Box, t: float) -> Box:
     """Box ``a`` glided to ``b`` by ``t`` in [0, 1]: centre linear, size geometric."""
     if t <= 0.0 or a == b:
@@ -118,10 +129,20 @@ def _between(a: Box, b: Box, t: float) -> Box:
     return cx - w / 2, cx + w / 2, cy - h / 2, cy + h / 2
 
 
-def camera_box(boxes: list[Box], whole: Box, step: int, kind: str, raw: float) -> Box:
+def camera_box(
+    boxes: list[Box], whole: Box, step: int, kind: str, raw: float, zoom: Box | None = None
+) -> Box:
     """Where the camera looks at a frame of ``step`` of ``kind`` at linear progress ``raw``:
-    gliding during the first 60 % of the drawing, resting after; the whole in the hold."""
-    if kind in ("hold", "title"):
+    gliding during the first 60 % of the drawing, resting after; the whole in the hold;
+    in an ``"inset"`` segment from the whole to ``zoom`` and back (:data:`ZOOM`)."""
+    if kind == "inset" and zoom is not None:
+        go, back = ZOOM["in"], ZOOM["out"]
+        if raw < go:
+            return _between(whole, zoom, smoothstep(raw / go))
+        if raw <= 1.0 - back:
+            return zoom
+        return _between(zoom, whole, smoothstep((raw - 1.0 + back) / back))
+    if kind in ("hold", "title", "inset"):
         return whole
     prev = boxes[step - 1] if step > 0 else whole
     if kind != "draw":

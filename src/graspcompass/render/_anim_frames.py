@@ -34,7 +34,7 @@ class _CameraFrames:
     _boxes: Any
     _whole: Any
     _items: Any
-    _shared: Any
+    _views: Any
     _caption: Any
     _dimf: Any
     _apply: Any
@@ -83,7 +83,9 @@ class _CameraFrames:
                     last, view = end, None
                     continue
                 before = self._boxes[seg.step - 1] if seg.step > 0 else self._whole
-                if seg.kind == "title" or (seg.kind == "draw" and before != self._boxes[seg.step]):
+                if seg.kind in ("title", "inset") or (
+                    seg.kind == "draw" and before != self._boxes[seg.step]
+                ):
                     for f in frames:
                         if (
                             last is not None
@@ -155,7 +157,11 @@ class _CameraFrames:
                 if s.name in inputs
                 for a, _, _ in self._items[s.index]
             ]
-            + [a for a, _, _ in self._shared if id(a) not in moving]
+            + [
+                a
+                for a in ([] if self._views is None else self._views.artists)
+                if id(a) not in moving
+            ]
             + [self._caption]
             + [a for a in self._panel_artists() if id(a) not in moving]
         )

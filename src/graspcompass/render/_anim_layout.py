@@ -270,14 +270,15 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     measure = _text_width(renderer, anim._caption.get_fontproperties())
     anim._wrapped = [_wrap(t, width, measure) for t in anim._texts]
     anim._hold_wrapped = _wrap(anim._hold_text, width, measure)
+    anim._inset_wrapped = _wrap(anim._inset_text, width, measure)
     heights: dict[str, float] = {}
-    for t in {*anim._wrapped, anim._hold_wrapped}:
+    for t in {*anim._wrapped, anim._hold_wrapped, anim._inset_wrapped}:
         anim._caption.set_text(t)
         heights[t] = anim._caption.get_window_extent(renderer).height
     tallest = max(heights.values())
     # the side panel's list is under the steps' captions but the last's; the plot of the
     # last step (the envelope) under its caption and the final hold's
-    end = [anim._hold_wrapped, *anim._wrapped[-1:]]
+    end = [anim._hold_wrapped, anim._inset_wrapped, *anim._wrapped[-1:]]
     tall_steps = max([heights[t] for t in anim._wrapped[:-1]] or [tallest])
     tall_end = max(heights[t] for t in end)
     anim._caption.set_text("")

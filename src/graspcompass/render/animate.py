@@ -42,7 +42,6 @@ Step 13 of 0–46 · perpendicular
 
 from __future__ import annotations
 
-import re
 import textwrap
 from typing import TYPE_CHECKING, Any
 
@@ -52,12 +51,14 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 from matplotlib.text import Annotation, Text
 
-from ..scene.layout import numeric_objects, tex
+from ..scene import labelling
+from ..scene.layout import numeric_objects
 from ..scene.picture import scene_of
 from ._anim_apply import _ApplyFrames
-from ._anim_camera import step_boxes
+from ._anim_camera import camera_box, step_boxes, zoomed
 from ._anim_frames import _CameraFrames
 from ._anim_ink import _inks, _quality, _snap, dim_alpha
+from ._anim_labels import ViewLabels
 from ._anim_layout import _layout, _mathtext, _shown, _text_width, _wrap  # noqa: F401
 from ._anim_panel import SidePanel
 from ._anim_player import FrameAnimation
@@ -92,6 +93,7 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
     _title: Text
     _wrapped: list[str]
     _hold_wrapped: str
+    _inset_wrapped: str
     _fade_region: Any  # a numpy index of the rows (or columns) that fade
     _panel_box: tuple[float, ...] | None  # the side panel in pixels (see _anim_panel.py)
 
@@ -114,6 +116,7 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         camera: bool | None = None,
         title_seconds: float | None = None,
         min_text_px: float | None = None,
+        inset_seconds: float | None = None,
     ) -> None:
         q = self.quality = _quality(quality)
         self.camera = q.camera if camera is None else bool(camera)
@@ -136,6 +139,9 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         steps = construction.steps
         self._texts = [_mathtext(self._caption_text(s)) for s in steps]  # typeset
         self._hold_text = _mathtext(self._caption_text(None))
+        self._inset_text = _mathtext(
+            "Zoom on the dashed square: the points that crowd there, each named"
+        )
         least = None
         if self.caption_seconds > 0 or self.reading_rate > 0:
             # paced by step: a key step rests on its result after its caption is read
@@ -165,7 +171,8 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         fig = self.figure
         self.axes = ax = fig.add_axes(AX_RECT)
         _layout(self, q.layout, caption_pt)
-        self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=labels)
+        # the labels are the views' own (render/_anim_labels.py): placed for each view
+        self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=False)
         ax.tick_params(labelsize=max(theme.font_size * 0.7, self._least_pt))
         self._num = numeric_objects(construction)
         box = scene_of(construction).box
@@ -193,30 +200,70 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
             zorder=20,
             bbox=dict(boxstyle="square,pad=40", fc="white", ec="none"),
         )
-        # each artist belongs to the first step naming it; a label shared by coincident
-        # points ("O = O_M = Y_4") shows only the names made so far
-        owners: dict[int, list[str]] = {}
-        for s in steps:
-            for a in arts.get(s.name, []):
-                owners.setdefault(id(a), []).append(s.name)
         self._items: list[list[tuple[Artist, str, dict[str, Any]]]] = [[] for _ in steps]
-        self._shared: list[tuple[Text, list[tuple[int, str]], dict[str, Any]]] = []
         seen: set[int] = set()
         made = scene_of(construction).made
         for cone in ("cone1", "cone2"):  # a friction cone appears once both its sides exist
             if cone in arts and cone in made:
                 seen.update(id(a) for a in arts[cone])
                 self._items[made[cone]] += [(a, "cone", _snap(a)) for a in arts[cone]]
-        for s in steps:
+        for s in steps:  # each artist belongs to the first step naming it
             for a in arts.get(s.name, []):
                 if id(a) in seen:
                     continue
                 seen.add(id(a))
-                role = self._role(a, s)
-                if role == "label" and isinstance(a, Text) and len(owners[id(a)]) > 1:
-                    self._shared.append((a, self._label_parts(a, owners[id(a)]), _snap(a)))
-                else:
-                    self._items[s.index].append((a, role, _snap(a)))
+                self._items[s.index].append((a, self._role(a, s), _snap(a)))
+        frame_pt = ax.bbox.width * 72.0 / fig.dpi
+        self._views: ViewLabels | None = None
+        if labels:
+            n = len(steps)
+            self._views = ViewLabels(
+                construction,
+                ax,
+                theme,
+                self._boxes if self.camera else [self._whole] * n,
+                self._whole,
+                self._num,
+                theme.font_size * labelling.FRAME_PT / frame_pt,
+                frame_pt / labelling.FRAME_PT,
+                zoom=self.camera,
+                dim=self.dim,
+            )
+            self._boxes = self._views.boxes
+            for lab in self._views.labels:  # by name, as draw_construction's labels are
+                for nm in {steps[i].name for i, _ in lab.parts}:
+                    arts.setdefault(nm, []).extend(
+                        a for a in (lab.text, lab.leader) if a is not None
+                    )
+        # after the hold, a zoom on each crowd of points the whole view cannot name, each
+        # marked by a dashed square in the hold
+        self._zooms = [] if self._views is None else self._views.zoom_boxes
+        self._zoom_frames = [
+            ax.add_patch(
+                Rectangle(
+                    (z[0], z[2]),
+                    z[1] - z[0],
+                    z[3] - z[2],
+                    fill=False,
+                    ls=(0, (4, 3)),
+                    lw=0.8,
+                    ec="0.35",
+                    zorder=5.8,
+                    visible=False,
+                )
+            )
+            for z in self._zooms
+        ]
+        each = q.frames(q.inset_seconds if inset_seconds is None else inset_seconds, fps)
+        for _ in self._zooms if each > 0 else ():
+            self.timeline = self.timeline.with_inset(each)
+        #: segment index -> the final zoom it shows
+        self._zoom_of = {
+            i: k
+            for k, i in enumerate(
+                i for i, seg in enumerate(self.timeline.segments) if seg.kind == "inset"
+            )
+        }
         bg = ax.get_facecolor()
         self._dimf = [
             dim_alpha(
@@ -226,9 +273,6 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
             else self.dim
             for items in self._items
             for a, r, sn in items
-        ]
-        self._shared_dimf = [
-            dim_alpha(_inks(a, sn), bg, MIN_CONTRAST["text"], self.dim) for a, _, sn in self._shared
         ]
         hl, thin = theme.highlight_color, theme.thin_width
         self._aid = ax.plot([], [], color=hl, lw=thin * 1.5, ls=(0, (3, 2)), zorder=6)[0]
@@ -248,8 +292,8 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         self._keys: list[Any] = [None] * len(self._dimf)
         self._layer: tuple[Any, int, Any] | None = None
         self._dynamic = [a for items in self._items for a, _, _ in items]
-        self._dynamic += [a for a, _, _ in self._shared]
-        self._dynamic += [*self._aids, self._caption, self._bar, self._card]
+        self._dynamic += [] if self._views is None else self._views.artists
+        self._dynamic += [*self._aids, *self._zoom_frames, self._caption, self._bar, self._card]
         side = self._panel_box  # the side panel (lecture): what is made so far, k_grasp(θ)
         self._panel = None if side is None else SidePanel(self, side, self._least_pt)
         self._dynamic += [] if self._panel is None else self._panel.artists
@@ -267,8 +311,6 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
     def _role(a: Artist, s: Step) -> str:
         if (a.get_gid() or "").startswith("instrument:"):
             return "instrument"
-        if a.get_gid() == "leader":
-            return "leader"
         if isinstance(a, Annotation) and a.arrow_patch is not None:
             return "arrow"
         if isinstance(a, Text):
@@ -279,20 +321,6 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
             return "trace"
         solid = not isinstance(a, Line2D) or a.get_linestyle() != "None"
         return "line" if s.kind == "line" and solid else "marker"
-
-    def _label_parts(self, a: Any, names: list[str]) -> list[tuple[int, str]]:
-        """The parts of a shared label ``$A = B$`` or ``$A, B$``, each with the step making
-        its point."""
-        index = {s.name: s.index for s in self.construction.steps}
-        by_tex = {tex(n, math=False): n for n in names}
-        # ``A = B`` coincide, ``A, B`` are apart but closer than a marker: each part keeps
-        # the separator before it
-        pieces = re.split(r"( = |, )", a.get_text().strip("$"))
-        seps, parts = ["", *pieces[1::2]], pieces[0::2]
-        return [
-            (index[by_tex[p]] if p in by_tex else min(index[n] for n in names), sep + p)
-            for sep, p in zip(seps, parts)
-        ]
 
     # -- captions -----------------------------------------------------------------------------
     def _caption_text(self, s: Step | None) -> str:
@@ -316,6 +344,8 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         """The caption of ``frame`` as shown: the step's number in the protocol (as
         ``graspcompass steps`` prints it), the instrument, the paper's reference, the text."""
         st = self.timeline.at(frame)
+        if st.kind == "inset":
+            return self._inset_wrapped
         return self._hold_wrapped if st.kind == "hold" else self._wrapped[st.step]
 
     def caption_seconds_of_step(self, step: int) -> float:
@@ -334,14 +364,14 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         step = self.timeline.segments[segment].step
         return (
             [a for a, _, _ in self._items[step]]
-            + [a for a, parts, _ in self._shared if any(i == step for i, _ in parts)]
+            + ([] if self._views is None else self._views.movers(step))
             + [*self._aids, self._bar]
             + ([] if self._panel is None else self._panel.movers(step))
         )
 
     def _group_key(self, segment: int) -> Any:
         seg = self.timeline.segments[segment]
-        return (seg.step, seg.kind) if seg.kind == "hold" else seg.step
+        return (seg.step, seg.kind) if seg.kind in ("hold", "inset") else seg.step
 
     def _crossfade(self, segment: int) -> Any:
         """The final hold: the elements fade back to their colours, the caption does not."""
@@ -349,8 +379,16 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
             return None
         return self._fade_region
 
+    def _zoom_state(self, st: Any) -> tuple[Any, bool]:
+        """The camera's box and whether the zoom's labels show, at a frame of a final zoom."""
+        z = self._zooms[self._zoom_of[st.segment]]
+        return camera_box(self._boxes, self._whole, st.step, "inset", st.raw, z), zoomed(st.raw)
+
     def _still(self, frame: int) -> bool:
         st = self.timeline.at(frame)
+        if st.kind == "inset" and frame > 0:  # the camera resting on a crowd
+            before = self.timeline.at(frame - 1)
+            return before.segment == st.segment and self._zoom_state(st) == self._zoom_state(before)
         return st.kind == "rest" or (st.kind == "title" and frame > 0)
 
 
@@ -371,15 +409,19 @@ def animate_construction(
     camera: bool | None = None,
     title_seconds: float | None = None,
     min_text_px: float | None = None,
+    inset_seconds: float | None = None,
 ) -> ConstructionAnimation:
     """Animate the ruler-and-compass drawing of the internal force diagram (§3.3).
 
     Every value left out (None) comes from ``quality`` (:data:`~.theme.QUALITIES`):
-    ``"standard"`` is 400 × 448 pixels, 20 fps, 8 frames per step, the caption
-    below the diagram; ``"lecture"`` is for a projector: 1280 × 720 pixels, the
-    caption at 20 pt in a panel right of the diagram, lines and labels 1.6 ×
-    larger, each step's caption on screen at least 2.5 s and longer by its
-    length (15 characters a second).
+    ``"standard"`` is 640 × 720 pixels, 10 fps, 8 frames per step, the caption
+    below the diagram, every text at least 14 pixels high, each caption on
+    screen at least 2 s, lines and labels 1.3 × larger; ``"lecture"`` is for a
+    projector: 1280 × 720 pixels, 15 fps, a title card, the caption at 20 pt in
+    a panel right of the diagram (with what is made so far and, from the
+    envelope on, the plot of k_grasp(θ)), lines and labels 1.6 × larger, each
+    step's caption on screen at least 2.5 s and longer by its length (15
+    characters a second), a key step 3 s longer.
 
     Parameters
     ----------
@@ -412,6 +454,11 @@ def animate_construction(
     min_text_px : float
         Every text (captions, labels, ticks, title) at least this many pixels high at
         the frame's ``dpi`` (default 14; 0: the theme's sizes as they are).
+    inset_seconds : float
+        With the camera, where points crowd (the static figure's inset,
+        :attr:`graspcompass.scene.picture.Scene.inset`): after the hold the camera zooms
+        on that region, marked by a dashed square, names every point in it and comes
+        back, for this long (standard 5 s, lecture 8 s; 0: no zoom).
 
     Returns
     -------
@@ -424,7 +471,11 @@ def animate_construction(
     -----
     The step numbers of the captions are the protocol's, as ``graspcompass
     steps`` prints them (0 to len − 1).  A label shared by coincident points
-    (``O = O_M = Y_4``) names only the points made so far.  The earlier steps are
+    (``O = O_M = Y_4``) names only the points made so far.  The labels are placed
+    for each view of the camera at the size they are drawn, by the rules of every
+    picture (none over another label or a marker, each nearer its own point than
+    any other: ``render/_anim_labels.py``); one that finds no such place in its view
+    shows only while its point is the new object.  The earlier steps are
     dimmed to at most ``dim`` opacity, but each keeps a contrast of 3 : 1 (lines,
     markers) or 4.5 : 1 (labels) against the background (:data:`~.theme.MIN_CONTRAST`).
     """
@@ -445,4 +496,5 @@ def animate_construction(
         camera=camera,
         title_seconds=title_seconds,
         min_text_px=min_text_px,
+        inset_seconds=inset_seconds,
     )

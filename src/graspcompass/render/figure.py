@@ -175,7 +175,7 @@ def draw_construction(
                     [v[0]],
                     [v[1]],
                     "o",
-                    ms=theme.point_size * (0.6 if small else 1.0),
+                    ms=theme.point_size * (labelling.SMALL_MARKER if small else 1.0),
                     zorder=5,
                     mfc="white" if small else hl.get("color", theme.point_color),
                     mec=hl.get("color", theme.point_color),

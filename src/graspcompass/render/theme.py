@@ -242,6 +242,9 @@ class Quality:
     camera: bool = True
     #: least height in pixels of every text of the frame (captions, labels, ticks)
     min_text_px: float = 14.0
+    #: after the hold, the camera's zoom on the crowded region of the finished diagram,
+    #: where each crowded point is named, and back (0: none; only with the camera)
+    inset_seconds: float = 5.0
 
     def frames(self, seconds: float, fps: float | None = None) -> int:
         """``seconds`` as a whole number of frames at ``fps`` (default: this quality's).
@@ -286,5 +289,6 @@ QUALITIES: dict[str, Quality] = {
         caption_size=20.0,
         scale=1.6,
         title_seconds=4.0,
+        inset_seconds=8.0,
     ),
 }

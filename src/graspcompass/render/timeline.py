@@ -5,7 +5,9 @@ A :class:`Timeline` is plain data: consecutive :class:`Segment` s
 drawn), ``"pause"`` (resting on a key result: V_n, a circle on O V_n of
 eq. (31), the envelope of eq. (25)), ``"rest"`` (the finished step stays on
 screen, unchanged, until its caption has been read: :func:`reading_frames`),
-``"hold"`` (the finished diagram) or ``"title"`` (a title card before the first step).
+``"hold"`` (the finished diagram), ``"inset"`` (after the hold, the camera's zoom on
+the crowded region of the finished diagram and back) or ``"title"`` (a title card
+before the first step).
 :meth:`Timeline.at` maps a frame to a :class:`FrameState` (step, kind,
 progress in [0, 1], eased by a rate function of :data:`RATES` while drawing).
 It knows nothing of matplotlib or of the geometry, so the same timeline gives
@@ -73,7 +75,7 @@ __all__ = [
 ]
 
 #: Kinds of segment.
-KINDS = ("draw", "pause", "rest", "hold", "title")
+KINDS = ("draw", "pause", "rest", "hold", "inset", "title")
 #: File extensions an animation is written to.
 OUTPUT_FORMATS = _anim_files.OUTPUT_FORMATS
 
@@ -251,9 +253,27 @@ class Timeline:
         )
         return FrameState(f, i, seg.step, seg.kind, progress, raw)
 
+    def with_inset(self, frames: int) -> Timeline:
+        """This timeline with an ``"inset"`` segment of ``frames`` frames at the end (after
+        the hold; none if ``frames`` < 1).
+
+        >>> tl = Timeline.from_keys([False], 4, 0, 3).with_inset(5)
+        >>> [(s.kind, s.frames) for s in tl.segments]
+        [('draw', 4), ('hold', 3), ('inset', 5)]
+        """
+        if frames < 1:
+            return self
+        last = self.segments[-1].step
+        return Timeline((*self.segments, Segment(last, int(frames), "inset")), self.rate)
+
     def frames_of_step(self, step: int) -> range:
-        """Every frame of ``step``: its draw, pause and (last step) hold segments."""
-        idx = [i for i, s in enumerate(self.segments) if s.step == step and s.kind != "title"]
+        """Every frame of ``step``: its draw, pause and (last step) hold segments (not the
+        zoom on the crowded region after the hold, an ``"inset"`` segment)."""
+        idx = [
+            i
+            for i, s in enumerate(self.segments)
+            if s.step == step and s.kind not in ("title", "inset")
+        ]
         if not idx:
             raise AnimationError(f"step {step} is not on this timeline")
         return range(self.starts[idx[0]], self.segment_range(idx[-1]).stop)
@@ -267,7 +287,7 @@ class Timeline:
         idx = [
             i
             for i, s in enumerate(self.segments)
-            if s.step == step and s.kind not in ("hold", "title")
+            if s.step == step and s.kind not in ("hold", "inset", "title")
         ]
         return self.segment_range(idx[-1]).stop - 1 if idx else self.frames_of_step(step)[-1]
 

@@ -98,8 +98,14 @@ def labels_of(
             + "$"
             for i in idx
         }
-        # the other points of a label's group: markers no label covers
+        # the other points of a label's group, and the points in the frame left to
+        # another placement: markers no label covers
         members = [anchors[j] for i in idx for j in joined[i] if j != i]
+        members += [
+            xy
+            for j, xy in enumerate(anchors)
+            if not keep[j] and frame[0] <= xy[0] <= frame[1] and frame[2] <= xy[1] <= frame[3]
+        ]
         fits = fitting.fit(
             to_pt([anchors[i] for i in idx], frame, scale),
             [text_of[i] for i in idx],
@@ -108,6 +114,10 @@ def labels_of(
             obstacles=np.vstack([to_pt(obstacles, frame, scale), to_pt(members, frame, scale)]),
             optional=[optional[i] for i in idx],
             font_size=font_pt,
+            # the break points and cusps are drawn small
+            marker_sizes=[labelling.MARKER_PT] * len(idx)
+            + [labelling.MARKER_PT * labelling.SMALL_MARKER] * len(obstacles)
+            + [labelling.MARKER_PT] * len(members),
             avoid=[
                 (
                     (b[0] - frame[0]) * scale,
@@ -139,6 +149,7 @@ def labels_of(
                     xy,
                     p.leader,
                     group_of[i],
+                    p.ok,
                 )
             )
         return tuple(out)

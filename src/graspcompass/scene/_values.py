@@ -67,6 +67,9 @@ class Label:
     #: joined by an equals sign, points apart but closer than a marker (one place to
     #: the eye) by a comma (empty: all coincide)
     groups: tuple[int, ...] = ()
+    #: every rule holds at this place (no label or marker under it, nearer its own point
+    #: than any other); False: set where it breaks the fewest, for want of a better place
+    ok: bool = True
 
     def join(self, text: Any = label_tex) -> str:
         """The names, each written by ``text``, joined as they coincide."""

@@ -39,6 +39,7 @@ __all__ = [
     "OFFSETS",
     "RESAMPLE_PT",
     "SIZE_RULE",
+    "SMALL_MARKER",
     "WEIGHTS",
     "Placement",
     "label_order",
@@ -60,6 +61,9 @@ FRAME_PT = 0.77 * 7.0 * 72.0
 FONT_PT = 10.0
 MARKER_PT = 4.0
 GAP_PT = 2.5
+#: A break point's marker (drawn hollow, unlabelled unless asked), as a fraction of a
+#: point's, in every picture.
+SMALL_MARKER = 0.6
 #: Labels are placed in the order of the first letters of their names (V, P, O, X, Y).
 LABEL_ORDER = "VPOXY"
 

@@ -207,6 +207,7 @@ def build_scene(
     box: Box | None = None,
     break_points: bool = False,
     font_pt: float = labelling.FONT_PT,
+    num: Mapping[str, Any] | None = None,
 ) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
@@ -216,14 +217,19 @@ def build_scene(
     it steps through the protocol.  ``break_points`` labels the break points that lie
     on the envelope (an end of one of its arcs: where k_grasp passes from one circle
     to the next), placed by the rules of every label; the other break points, off
-    the envelope, stay small unlabelled markers.
+    the envelope, stay small unlabelled markers.  ``num``: the numbers of the objects
+    (:func:`graspcompass.scene.layout.numeric_objects` of this construction or of one it
+    is a prefix of), when the caller has them.
 
     Raises
     ------
     ValueError
         For a symbolic construction, which has no picture.
     """
-    num = layout.numeric_objects(construction)
+    if num is None:
+        num = layout.numeric_objects(construction)
+    else:
+        num = {s.name: num[s.name] for s in construction.steps}
     made: dict[str, int] = {s.name: s.index for s in construction.steps}
     made["object"] = 0
     grasp = construction.grasp
