@@ -363,8 +363,11 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
     assert 11.4 / 2.54 * 72 + 9 < h < 792 and (w, h) != (612, 792)
     text = tex.read_text("utf-8")
     head = re.search(r"\{\\large\\bfseries (.*)\\par\}", text).group(1)
-    if title is None:  # a grasp of one's own gets its values as title
-        assert head.startswith("A two-point grasp: x1 = 6/5")
+    if title is None:  # a grasp of one's own gets its values as title, as every picture
+        assert head == (
+            r"x1 = 1.2, x2 = 0.3, y = 0.4, $\varphi$1 = 61$^\circ$, $\varphi$2 = 118$^\circ$, "
+            r"$\xi$1 = 67$^\circ$, $\xi$2 = 49$^\circ$"
+        )
     else:
         assert r"100\% \{x\_{}1\} \& \$\#\~{}\^{}\textbackslash{}" in head
         assert r"$\varphi$ = $\pi$/3, $\sqrt{3}$ $\approx$ 1.7 ?" in head

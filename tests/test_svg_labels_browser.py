@@ -7,6 +7,7 @@ rendered glyphs and markers), not the program's own estimates."""
 from __future__ import annotations
 
 import random
+import re
 
 from _browser import chromium
 from _label_rules import cover_faults, overlap
@@ -102,6 +103,48 @@ def test_svg_labels_name_their_points_in_chromium() -> None:
     assert not report, report
 
 
+def wide_grasps(count: int, seed: int = 2312) -> list[Grasp]:
+    """Random grasps over the whole range the hypothesis tests draw from, every angle typed
+    in degrees: contacts 0.1 to 2 from the y-axis, y up to 1.5, φ from 20° to 160° and ξ
+    up to 85° (condition (1): |φ − 90°| < ξ)."""
+    rnd = random.Random(seed)
+    out = []
+    for _ in range(count):
+        phi1, phi2 = rnd.randint(20, 160), rnd.randint(20, 160)
+        xi1, xi2 = rnd.randint(abs(phi1 - 90) + 2, 85), rnd.randint(abs(phi2 - 90) + 2, 85)
+        out.append(
+            Grasp(
+                str(rnd.randint(10, 200) / 100),
+                str(rnd.randint(10, 200) / 100),
+                str(rnd.randint(0, 150) / 100),
+                f"{phi1}deg",
+                f"{phi2}deg",
+                xi1=f"{xi1}deg",
+                xi2=f"{xi2}deg",
+            )
+        )
+    return out
+
+
+#: a grasp with two crowds far apart (round O and round V1, V2): an inset each
+TWO_CROWDS = Grasp("0.1", "0.1", "0", "20deg", "20deg", xi1="72deg", xi2="72deg")
+
+
+def test_svg_labels_of_wide_random_grasps_in_chromium() -> None:
+    """Grasps over the hypothesis tests' range (tiny contacts, near-flat cones, crowds far
+    apart): the same rules, in each panel, with an inset for each crowd."""
+    grasps = [TWO_CROWDS, *wide_grasps(24)]
+    with chromium("the SVG labels") as browser:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        report = {}
+        for g in grasps:
+            panels = measure(page, to_svg(internal_force_diagram(g)))
+            found = faults(panels)
+            if found:
+                report[str(g.params)] = found
+    assert not report, report
+
+
 def test_svg_break_point_labels_name_their_points_in_chromium() -> None:
     """With ``break_points`` the labels of the break points on the envelope keep the
     same rules, in the browser's layout; and every such break point is labelled."""
@@ -116,9 +159,11 @@ def test_svg_break_point_labels_name_their_points_in_chromium() -> None:
             scene = scene_of(c, break_points=True)  # the painted labels' names: a break
             # point closer than a marker to another point is named in that one's label
             views = [scene.labels] if scene.inset is None else [scene.inset.main]
-            views += [scene.inset.labels] if scene.inset is not None else []
+            views += [ins.labels for ins in scene.insets]
             named = {n for labs in views for lab in labs for n in lab.names if n[0] == "B"}
-            shown = {p["id"].removeprefix("inset-") for pl in panels for p in pl["pts"] if p["t"]}
+            shown = {
+                re.sub(r"^inset\d*-", "", p["id"]) for pl in panels for p in pl["pts"] if p["t"]
+            }
             assert {lab.names[0] for labs in views for lab in labs} == shown, g
             assert named == _on_envelope(c), g  # found from k_n(θ) = V_n · e(θ)
             found = faults(panels)

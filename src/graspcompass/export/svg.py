@@ -38,6 +38,8 @@ _SMALL_R = SMALL_MARKER * _MARKER_R
 #: (:data:`graspcompass.scene.picture.INSET_PT` points of the placement).
 _INSET = INSET_PT * _SIZE / FRAME_PT
 _GAP = 24.0
+#: Room under an inset for its caption.
+_CAPTION = 34.0
 
 
 def _label_svg(name: str) -> str:
@@ -256,8 +258,8 @@ def to_svg(
     ``step`` draws the picture after that step of the protocol
     (:meth:`graspcompass.scene.picture.Scene.upto`): in the whole construction's
     frame, nothing made after it drawn or named.  Where points crowd, a zoomed
-    inset of their region (:attr:`Scene.inset`) stands right of the diagram, with
-    the labels that have no room in the whole view.  ``break_points`` labels the
+    inset of each crowd (:attr:`Scene.insets`) stands right of the diagram, one above
+    the other, with the labels that have no room in the whole view.  ``break_points`` labels the
     break points on the envelope (:func:`graspcompass.scene.picture.build_scene`).
 
     Examples
@@ -276,9 +278,11 @@ def to_svg(
         text = f"{s.index} {name}: {s.caption} [{s.ref}] = {exact_text(s.obj)}"
         return f"<title>{escape(text)}</title>"
 
-    inset = scene.inset
-    width = _SIZE + (_GAP + _INSET if inset is not None else 0.0)
-    height = _SIZE + _MARGIN_TOP
+    insets = scene.insets
+    width = _SIZE + (_GAP + _INSET if insets else 0.0)
+    # the insets one above the other right of the diagram, each with its caption under it
+    step_down = _INSET + _CAPTION
+    height = _MARGIN_TOP + max(_SIZE, len(insets) * step_down)
     out = [
         '<?xml version="1.0" encoding="UTF-8"?>',
         f'<svg xmlns="http://www.w3.org/2000/svg" version="1.1" viewBox="0 0 {width:.0f} '
@@ -291,39 +295,46 @@ def to_svg(
         '<g class="panel" id="main">',
     ]
     out += _drawing(scene, m, tip, "")
-    if inset is not None:
+    for k, inset in enumerate(insets):
         (a, b), (c, d) = m.xy((inset.box[0], inset.box[3])), m.xy((inset.box[1], inset.box[2]))
         out.append(
             f'<rect class="region" x="{a:.3f}" y="{b:.3f}" width="{c - a:.3f}" '
             f'height="{d - b:.3f}" fill="none" stroke="{COLORS["axis"]}" '
             'stroke-width="0.8" stroke-dasharray="3,2"/>'
         )
-    out += _points(scene, m, scene.labels if inset is None else inset.main, tip, "", scene.box)
+        if len(insets) > 1:  # the squares numbered as their insets
+            out.append(
+                f'<text class="region-number" x="{a - 2:.3f}" y="{b - 2:.3f}" '
+                f'text-anchor="end" font-size="13" fill="{COLORS["axis"]}">{k + 1}</text>'
+            )
+    out += _points(scene, m, scene.labels if not insets else insets[0].main, tip, "", scene.box)
     out.append("</g>")
-    if inset is not None:
-        left = _SIZE + _GAP
-        z = _Map(inset.box, _INSET, left, _MARGIN_TOP)
+    for k, inset in enumerate(insets):
+        left, top = _SIZE + _GAP, _MARGIN_TOP + k * step_down
+        z = _Map(inset.box, _INSET, left, top)
+        key = "inset" if k == 0 else f"inset{k + 1}"
         out.append(
-            f'<clipPath id="inset-clip"><rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" '
+            f'<clipPath id="{key}-clip"><rect x="{left:.3f}" y="{top:.3f}" '
             f'width="{_INSET:.3f}" height="{_INSET:.3f}"/></clipPath>'
         )
         out.append(
-            '<g class="panel" id="inset">'
-            '<g id="inset-drawing" class="drawing" clip-path="url(#inset-clip)">'
-            f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+            f'<g class="panel" id="{key}">'
+            f'<g id="{key}-drawing" class="drawing" clip-path="url(#{key}-clip)">'
+            f'<rect x="{left:.3f}" y="{top:.3f}" width="{_INSET:.3f}" '
             f'height="{_INSET:.3f}" fill="white"/>'
         )
-        out += _drawing(scene, z, tip, "inset-")
+        out += _drawing(scene, z, tip, f"{key}-")
         out.append("</g>")
-        out += _points(scene, z, inset.labels, tip, "inset-", inset.box)
+        out += _points(scene, z, inset.labels, tip, f"{key}-", inset.box)
         out.append(
-            f'<rect x="{left:.3f}" y="{_MARGIN_TOP:.3f}" width="{_INSET:.3f}" '
+            f'<rect x="{left:.3f}" y="{top:.3f}" width="{_INSET:.3f}" '
             f'height="{_INSET:.3f}" fill="none" stroke="{COLORS["axis"]}" '
             'stroke-width="0.8"/>'
         )
+        which = "the dashed square" if len(insets) == 1 else f"dashed square {k + 1}"
         out.append(
-            f'<text x="{left + _INSET / 2:.1f}" y="{_MARGIN_TOP + _INSET + 22:.1f}" '
-            f'text-anchor="middle" font-size="14">the dashed square, '
+            f'<text x="{left + _INSET / 2:.1f}" y="{top + _INSET + 22:.1f}" '
+            f'text-anchor="middle" font-size="14">{which}, '
             f"{z.s / m.s:.1f}"
             "× larger</text></g>"
         )

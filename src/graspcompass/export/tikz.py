@@ -153,18 +153,8 @@ _LEGEND = (
 
 
 def _title(scene: Scene, construction: Construction) -> str:
-    """The scene's title, or for a grasp without one its parameters (a grasp of one's own)."""
-    if scene.title:
-        return scene.title
-    grasp = construction.grasp
-    if grasp is None:
-        return "The internal force diagram"
-    vals = ", ".join(
-        f"{k} = " + str(v).replace("sqrt", "√").replace("pi", "π").replace("*", "")
-        for k, v in grasp.params.items()
-        if not k.startswith("mu")
-    )
-    return "A two-point grasp: " + vals.replace("phi", "φ").replace("xi", "ξ")
+    """The scene's title (a grasp of one's own: its parameters, as every picture's)."""
+    return scene.title or "The internal force diagram"
 
 
 def _legend() -> str:
@@ -357,7 +347,7 @@ def to_tikz(
     if grasp is not None:
         out.append(_comment("grasp: " + ", ".join(f"{k} = {v}" for k, v in grasp.params.items())))
     width = _WIDTH_CM + 0.4
-    if scene.inset is not None:  # the inset beside the diagram
+    if scene.insets:  # the insets beside the diagram
         width += 0.5 + _WIDTH_CM * INSET_PT / FRAME_PT
     if standalone:
         out += [
@@ -384,25 +374,32 @@ def to_tikz(
     else:
         out += _styles(scene)
     out += _body(scene, construction, box, pad)
-    inset = scene.inset
-    out += _points(scene, scene.labels if inset is None else inset.main, box)
-    if inset is not None:
+    insets = scene.insets
+    out += _points(scene, scene.labels if not insets else insets[0].main, box)
+    for k, inset in enumerate(insets):  # the regions of the insets, dashed
         z = inset.box
         out.append(
             f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
             f"{_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
         )
-        out.append("\\end{tikzpicture}\\hskip 0.5cm")
-        # the zoomed inset of the crowded region (Scene.inset): its labels were placed in
-        # a frame INSET_PT / FRAME_PT times the diagram's width, at the same font size
+        if len(insets) > 1:  # numbered as their insets
+            corner = _xy((z[0], z[3]))
+            number = f"{{{k + 1}}};"
+            out.append(f"\\node[above left, inner sep=1pt, font=\\scriptsize] at {corner} {number}")
+    out.append("\\end{tikzpicture}")
+    main_unit = _WIDTH_CM / (box[1] - box[0])
+    if insets:  # the zoomed insets, one above the other right of the diagram
+        out.append("\\hskip 0.5cm\\vbox{")
+    for k, inset in enumerate(insets):
+        z = inset.box
+        # its labels were placed in a frame INSET_PT / FRAME_PT times the diagram's
+        # width, at the same font size
         unit = _WIDTH_CM * INSET_PT / FRAME_PT / (z[1] - z[0])
-        out.append(
-            _comment(
-                f"zoomed inset of the crowded region, "
-                f"{unit / (_WIDTH_CM / (box[1] - box[0])):.1f} times larger"
-            )
-        )
-        main_unit = _WIDTH_CM / (box[1] - box[0])
+        times = unit / main_unit
+        out.append(_comment(f"zoomed inset of the crowded region, {times:.1f} times larger"))
+        if k:
+            out.append("\\vskip 0.3cm")
+        out.append("\\hbox{")
         if standalone:  # the styles are global (\tikzset)
             out.append(
                 f"\\begin{{tikzpicture}}[x={_num(unit)}cm, y={_num(unit)}cm, line cap=round]"
@@ -422,7 +419,14 @@ def to_tikz(
         out.append(
             f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
         )
-    out.append("\\end{tikzpicture}")
+        which = "the dashed square" if len(insets) == 1 else f"dashed square {k + 1}"
+        out.append("\\end{tikzpicture}}")  # the caption under it, outside its clip
+        out.append(
+            f"\\hbox to {_num(_WIDTH_CM * INSET_PT / FRAME_PT)}cm{{\\hss\\small "
+            f"{which}, {times:.1f}$\\times$ larger\\hss}}"
+        )
+    if insets:
+        out.append("}")
     if standalone:
         out += [
             "\\hss}\\medskip",

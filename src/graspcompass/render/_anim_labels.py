@@ -164,8 +164,8 @@ class ViewLabels:
         bg = ax.get_facecolor()
         self.labels: list[ViewLabel] = []
         for v, view in enumerate(self.views):
-            for placed in view.labels:
-                self.labels.append(self._draw(v, view, placed, bg))
+            for one in view.labels:
+                self.labels.append(self._draw(v, view, one, bg))
         self.artists: list[Any] = [
             a for x in self.labels for a in (x.text, x.leader) if a is not None
         ]

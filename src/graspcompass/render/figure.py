@@ -11,7 +11,6 @@ Only :class:`matplotlib.figure.Figure` is used, never pyplot.
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING, Any
 
 from matplotlib.artist import Artist
@@ -22,7 +21,7 @@ from matplotlib.patches import Polygon, Rectangle
 
 from ..scene import labelling
 from ..scene.layout import numeric_objects, shape_extent
-from ..scene.picture import INSET_PT, build_scene, scene_of
+from ..scene.picture import INSET_PT, build_scene, grasp_title, scene_of
 from ._figure_parts import (
     _CORNER,
     _draw_givens,
@@ -37,7 +36,6 @@ from .theme import DEFAULT_THEME, Theme
 
 if TYPE_CHECKING:
     from ..construction.protocol import Construction
-    from ..grasp import Grasp
 
 __all__ = [
     "EXTRA_KEYS",
@@ -68,6 +66,7 @@ def draw_construction(
     box: tuple[float, float, float, float] | None = None,
     view: str = "whole",
     break_points: bool = False,
+    inset: int = 0,
 ) -> dict[str, list[Artist]]:
     """Draw the construction of the internal force diagram after step ``step``.
 
@@ -99,12 +98,14 @@ def draw_construction(
         in it.
     view : {"whole", "beside", "inset"}
         ``"whole"`` labels every point in the whole view; ``"beside"`` leaves the
-        labels of the crowded points to the zoomed inset drawn beside it
-        (:attr:`graspcompass.scene.picture.Scene.inset`); ``"inset"`` draws that
-        inset: the crowded region, zoomed, with its labels.
+        labels of the crowded points to the zoomed insets drawn beside it
+        (:attr:`graspcompass.scene.picture.Scene.insets`); ``"inset"`` draws the
+        ``inset``-th of them: a crowd, zoomed, with its labels.
     break_points : bool
         Label the break points on the envelope
         (:func:`graspcompass.scene.picture.build_scene`); the others stay unlabelled.
+    inset : int
+        Which inset ``view="inset"`` draws (0: the first, the crowded region's).
 
     Returns
     -------
@@ -138,9 +139,12 @@ def draw_construction(
     box = scene.box
     span = box[1] - box[0]
     shown = scene.labels
-    if view != "whole" and scene.inset is not None:
-        shown = scene.inset.main if view == "beside" else scene.inset.labels
-    lim = scene.inset.box if view == "inset" and scene.inset is not None else box
+    zoomed = scene.insets[inset] if view == "inset" and inset < len(scene.insets) else None
+    if view == "beside" and scene.insets:
+        shown = scene.insets[0].main
+    elif zoomed is not None:
+        shown = zoomed.labels
+    lim = zoomed.box if zoomed is not None else box
     ax.set_xlim(lim[0], lim[1])
     ax.set_ylim(lim[2], lim[3])
     ax.set_aspect("equal", adjustable="box")
@@ -162,7 +166,7 @@ def draw_construction(
     out: dict[str, list[Artist]] = {}
     _draw_givens(ax, construction, scene, theme, out)
     instruments: dict[str, list[Artist]] = {}
-    zoom = scene.inset.zoom if view == "inset" and scene.inset is not None else None
+    zoom = zoomed.zoom if zoomed is not None else None
     _draw_instruments(ax, scene, theme, instruments, zoom)
     last = state.steps[-1].name if highlight_last else None
     for s in state.steps:
@@ -294,10 +298,11 @@ def figure_diagram(
     plot of Fig. 6(b) (eq. (25), evaluated numerically) is drawn over the
     finished envelope as a thin contrasting curve, so that the two coincide as
     §4.1 reports (not over a ``step`` before the envelope).  Where points crowd
-    (:attr:`graspcompass.scene.picture.Scene.inset`) and ``inset`` is true, a
-    zoomed view of their region stands right of the diagram (the figure is
-    wider by it) with their labels.  ``break_points`` labels the break points on
-    the envelope (:func:`draw_construction`).
+    (:attr:`graspcompass.scene.picture.Scene.insets`) and ``inset`` is true, a
+    zoomed view of each crowd stands right of the diagram, one above the other
+    (the figure is wider by them), with their labels; their regions are dashed
+    squares in the diagram, numbered when there are several.  ``break_points``
+    labels the break points on the envelope (:func:`draw_construction`).
 
     Examples
     --------
@@ -307,13 +312,17 @@ def figure_diagram(
     1.0
     """
     scene = scene_of(construction, break_points=break_points)
-    zoom = scene.inset if inset else None
+    zooms = scene.insets if inset else ()
     side = labelling.FRAME_PT / 72.0  # the placement's frame: the axes' side in inches
-    extra = INSET_PT / 72.0 + 0.9 if zoom is not None else 0.0
+    zs = INSET_PT / 72.0  # an inset's side, its labels placed at this size
+    gap = 0.55  # between two insets of the column: room for the lower one's title
+    extra = zs + 0.9 if zooms else 0.0
     w, h = figsize
     h += 0.4  # room for a title of two lines
-    # an inset taller than the diagram: the figure taller by the difference, the tops level
-    taller = max(0.0, INSET_PT / 72.0 - side) if zoom is not None else 0.0
+    # the insets, one above the other right of the diagram: the figure taller by what
+    # their column exceeds the diagram, the tops level
+    column = len(zooms) * zs + (len(zooms) - 1) * gap if zooms else 0.0
+    taller = max(0.0, column - side)
     h += taller
     bottom = 1.4 / h
     fig = Figure(figsize=(w + extra, h))
@@ -328,7 +337,7 @@ def figure_diagram(
         labels=labels,
         show_computer_plot=overlay and full,
         break_points=break_points,
-        view="beside" if zoom is not None else "whole",
+        view="beside" if zooms else "whole",
     )
     ax.grid(False)
     ax.tick_params(labelsize=theme.font_size * 0.8)
@@ -337,10 +346,10 @@ def figure_diagram(
     if not full and step is not None:
         text += f"\nafter step {step % len(construction.steps)} of 0–{last}"
     ax.set_title(text, fontsize=theme.font_size * 1.05)
-    if zoom is not None:
+    for k, zoom in enumerate(zooms):
         left = (0.08 * w + side + 0.5) / (w + extra)
-        zs = INSET_PT / 72.0
-        zax = fig.add_axes((left, bottom + (side + taller - zs) / h, zs / (w + extra), zs / h))
+        top = bottom + (side + taller) / h - k * (zs + gap) / h
+        zax = fig.add_axes((left, top - zs / h, zs / (w + extra), zs / h))
         drawn = draw_construction(
             construction,
             step=step,
@@ -349,6 +358,7 @@ def figure_diagram(
             labels=labels,
             view="inset",
             break_points=break_points,
+            inset=k,
         )
         for arts in drawn.values():  # the length arrows too stay inside the inset
             for a in arts:
@@ -359,7 +369,8 @@ def figure_diagram(
         zax.set_xticks([])
         zax.set_yticks([])
         times = zoom.zoom * (scene.box[1] - scene.box[0]) / labelling.FRAME_PT
-        zax.set_title(f"the dashed square, {times:.1f}× larger", fontsize=theme.font_size * 0.9)
+        which = "the dashed square" if len(zooms) == 1 else f"dashed square {k + 1}"
+        zax.set_title(f"{which}, {times:.1f}× larger", fontsize=theme.font_size * 0.9)
         b = zoom.box
         ax.add_patch(
             Rectangle(
@@ -373,6 +384,18 @@ def figure_diagram(
                 zorder=6,
             )
         )
+        if len(zooms) > 1:  # the squares numbered as their insets
+            ax.annotate(
+                str(k + 1),
+                (b[0], b[3]),
+                xytext=(-2, 2),
+                textcoords="offset points",
+                ha="right",
+                va="bottom",
+                fontsize=theme.font_size * 0.8,
+                color=theme.axis_color,
+                zorder=6,
+            )
     handles, names = ax.get_legend_handles_labels()
     handles, names = (
         [*handles, *_legend_extra(construction, step, theme)[0]],
@@ -388,32 +411,6 @@ def figure_diagram(
             fontsize=theme.font_size * 0.85,
         )
     return fig
-
-
-def grasp_title(grasp: Grasp | None) -> str:
-    """The grasp's own title, or one from its parameters (a grasp of one's own).
-
-    >>> from graspcompass import Grasp
-    >>> grasp_title(Grasp(1.2, 0.3, 0.4, "61*pi/180", "118*pi/180", xi1="67*pi/180", xi2="pi/4"))
-    'x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, φ2 = 118°, ξ1 = 67°, ξ2 = 45°'
-    """
-    return (getattr(grasp, "title", None) or _params(grasp)) if grasp is not None else ""
-
-
-def _params(grasp: Grasp | None) -> str:
-    """A title from a grasp's parameters: ``x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, ...``."""
-    if grasp is None:
-        return ""
-    try:
-        p = grasp.params
-        deg = {k: math.degrees(float(p[k])) for k in ("phi1", "phi2", "xi1", "xi2")}
-        return (
-            f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
-            f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
-            f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°"
-        )
-    except (AttributeError, KeyError, TypeError, ValueError):
-        return ""
 
 
 def _legend_extra(

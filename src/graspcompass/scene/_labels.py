@@ -8,16 +8,22 @@ again in a zoomed inset.  Nothing here imports matplotlib.
 
 from __future__ import annotations
 
+import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
 
 from . import fit as fitting
 from . import labelling, layout
-from ._values import INSET_PT, INSET_SHRINK, Arc, Inset, Label
+from ._values import INSET_PT, INSET_SHRINK, LEAST_INSET, MAX_INSETS, Arc, Inset, Label
 from .layout import label_tex
 
 __all__ = ["labels_of"]
+
+#: Points whose labels have no place in the whole view, closer than this fraction of
+#: its side, share one inset.
+_LINK = 0.12
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -39,15 +45,18 @@ def labels_of(
     envelope: tuple[Arc, ...],
     obstacles: list[XY],
     font_pt: float = labelling.FONT_PT,
-) -> tuple[tuple[Label, ...], Inset | None]:
-    """The labels of ``groups`` in the main frame and, where points crowd, in an inset.
+) -> tuple[tuple[Label, ...], tuple[Inset, ...]]:
+    """The labels of ``groups`` in the main frame and, where points crowd, in insets.
 
-    The main frame's labels name every point (a painter without the inset reads
-    them); :attr:`Inset.main` are those of the main frame beside the inset.
+    The main frame's labels name every point (a painter without the insets reads
+    them); :attr:`Inset.main` are those of the main frame beside the insets.
 
     Placed by :func:`graspcompass.scene.fit.fit` in points of a frame of
-    :data:`~graspcompass.scene.labelling.FRAME_PT` (the PNG's axes).  A point of the
-    crowded region whose label breaks a rule in the main frame is named in the inset only.
+    :data:`~graspcompass.scene.labelling.FRAME_PT` (the PNG's axes).  The first inset
+    is the crowded region the geometry gives (:func:`graspcompass.scene.fit.crowded_region`),
+    if any; each other crowd of points whose labels have no place keeping every rule
+    in the main frame gets an inset of its own (at most :data:`MAX_INSETS`).  A point
+    whose label breaks a rule in the main frame is named in its inset only.
     """
     side = labelling.FRAME_PT
     s = side / (box[1] - box[0])
@@ -156,31 +165,108 @@ def labels_of(
 
     broken: list[int] = []  # per call of placed: how many labels break a rule
     every = [True] * len(order)
-    beside = placed(box, s, every, within, (box[3] - box[2]) * s)
-    if region is None:
-        return beside, None
-    # the labels left to the inset, set where they break the fewest rules, for the
-    # painters without the inset
-    done = {n for lab in beside for n in lab.names}
-    rest = [not (within[i] and order[i][0][0] not in done) for i in range(len(order))]
-    rest = [not r for r in rest]
-    more = placed(box, s, rest, [False] * len(order), (box[3] - box[2]) * s, avoid=beside)
+    height = (box[3] - box[2]) * s
+    beside = placed(box, s, every, within, height)
+    named = {n for lab in beside if lab.ok for n in lab.names}
+    failing = [order[i][0][0] not in named for i in range(len(order))]
+    if region is None and not any(failing):
+        return beside, ()
+    # the labels left out of the whole view, set where they break the fewest rules, for
+    # the painters without an inset
+    dropped = {n for lab in beside for n in lab.names}
+    rest = [order[i][0][0] not in dropped for i in range(len(order))]
+    more = placed(box, s, rest, [False] * len(order), height, avoid=beside) if any(rest) else ()
     main = tuple(sorted(beside + more, key=lambda lab: labelling.label_order(lab.names)))
-    # the inset: the region, zoomed further (about the points left to it) while some
-    # label breaks a rule there, as long as it holds every point left to it; a point
-    # named in the whole view is named in the inset only where a place keeps every rule
-    left = [within[i] and order[i][0][0] not in done for i in range(len(order))]
+    # the insets: the crowded region (the geometry's), and a square about each crowd of
+    # the other points whose labels have no place keeping the rules in the whole view
+    pts = to_pt(anchors, box, s)
+    Area = tuple[float, float, float, float] | None
+    # (the crowded region or None, the points left to the inset, the side of the view
+    # the crowd is in: the whole view's, or an inset's for a crowd within it)
+    queue: list[tuple[Area, list[bool], float]] = []
+    if region is not None:
+        queue.append((region, [within[i] and failing[i] for i in range(len(order))], side))
+    queue += _crowds([failing[i] and not within[i] for i in range(len(order))], pts, side)
+    insets: list[Inset] = []
+    while queue and len(insets) < MAX_INSETS:
+        area, left, around = queue.pop(0)
+        ins = _inset(area, left, pts, anchors, box, s, around, placed, broken)
+        if around < side and (ins.box[1] - ins.box[0]) * s * 1.5 > around:
+            continue  # no closer than the inset it is in
+        insets.append(ins)
+        # a crowd within it whose labels break a rule there: a closer inset of its own
+        bad = {n for lab in ins.labels if not lab.ok for n in lab.names}
+        inner = [order[i][0][0] in bad for i in range(len(order))]
+        queue += _crowds(inner, pts, (ins.box[1] - ins.box[0]) * s)
+
+    def later(k: int, lab: Label) -> bool:
+        """Whether an inset after the ``k``-th (-1: the whole view) names ``lab``'s points."""
+        names = {n for ins in insets[k + 1 :] for one in ins.labels for n in one.names}
+        return set(lab.names) <= names
+
+    # the whole view beside the insets, and each inset: a label breaking a rule is left
+    # to a later inset that names its points
+    keep = tuple(lab for lab in beside if lab.ok or not later(-1, lab))
+    return main, tuple(
+        replace(ins, main=keep, labels=tuple(x for x in ins.labels if x.ok or not later(k, x)))
+        for k, ins in enumerate(insets)
+    )
+
+
+def _crowds(
+    flags: list[bool], pts: np.ndarray, side: float
+) -> list[tuple[None, list[bool], float]]:
+    """The points ``flags`` picks, in crowds (closer than :data:`_LINK` of ``side``, the
+    side of the view they are in), the most points first: one inset each."""
+    idx = [i for i, f in enumerate(flags) if f]
+    sets = [{idx[j] for j in g} for g in _clusters([tuple(pts[i]) for i in idx], _LINK * side)]
+    return [
+        (None, [i in g for i in range(len(flags))], side)
+        for g in sorted(sets, key=len, reverse=True)
+    ]
+
+
+def _clusters(pts: list[tuple[float, float]], link: float) -> list[list[int]]:
+    """Indices of ``pts`` in groups: two points closer than ``link`` are in one group."""
+    groups: list[list[int]] = []
+    for i, p in enumerate(pts):
+        near = [g for g in groups if any(math.dist(p, pts[j]) <= link for j in g)]
+        groups = [g for g in groups if all(g is not h for h in near)]
+        groups.append([i, *(j for g in near for j in g)])
+    return groups
+
+
+def _inset(
+    area: tuple[float, float, float, float] | None,
+    left: list[bool],
+    pts: np.ndarray,
+    anchors: list[XY],
+    box: Box,
+    s: float,
+    side: float,
+    placed: Any,
+    broken: list[int],
+) -> Inset:
+    """The zoomed inset of a crowd: ``area`` (the crowded region, in points of the
+    frame) or a square about the points ``left`` to it, zoomed further about those
+    points while some label breaks a rule there, as long as it holds them all; a point
+    named in the whole view is named in the inset only where a place keeps every rule."""
     mine = np.array([xy for xy, k in zip(anchors, left) if k]).reshape(-1, 2)
+    if area is None:  # a square about the points left to it, at least LEAST_INSET wide
+        lo, hi = pts[np.array(left)].min(axis=0), pts[np.array(left)].max(axis=0)
+        size = max(float((hi - lo).max()) * (1 + 2 * fitting.CROWD["pad"]), LEAST_INSET * side)
+        c = (lo + hi) / 2
+        area = (c[0] - size / 2, c[1] - size / 2, c[0] + size / 2, c[1] + size / 2)
     best: tuple[tuple[int, float], Inset] | None = None
     for shrink in INSET_SHRINK:
-        half = (region[2] - region[0]) * shrink / 2 / s
+        half = (area[2] - area[0]) * shrink / 2 / s
         if len(mine):
             lo, hi = mine.min(axis=0), mine.max(axis=0)
             half = max(half, float((hi - lo).max()) / 2 * 1.25)
             cx, cy = (lo + hi) / 2
         else:
-            cx = box[0] + (region[0] + region[2]) / 2 / s
-            cy = box[2] + (region[1] + region[3]) / 2 / s
+            cx = box[0] + (area[0] + area[2]) / 2 / s
+            cy = box[2] + (area[1] + area[3]) / 2 / s
         sub = (cx - half, cx + half, cy - half, cy + half)
         inside = [sub[0] <= x <= sub[1] and sub[2] <= y <= sub[3] for x, y in anchors]
         optional = [a and not b for a, b in zip(inside, left)]
@@ -188,8 +274,8 @@ def labels_of(
         labs = placed(sub, z, inside, optional, INSET_PT)
         key = (broken[-1], shrink and -shrink)
         if best is None or key < best[0]:
-            best = (key, Inset(sub, labs, beside))
+            best = (key, Inset(sub, labs))
         if broken[-1] == 0:
             break
     assert best is not None
-    return main, best[1]
+    return best[1]

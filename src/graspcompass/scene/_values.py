@@ -12,7 +12,7 @@ from typing import Any
 from . import labelling
 from .layout import label_tex
 
-__all__ = ["INSET_PT", "INSET_SHRINK", "Arc", "Inset", "Label"]
+__all__ = ["INSET_PT", "INSET_SHRINK", "LEAST_INSET", "MAX_INSETS", "Arc", "Inset", "Label"]
 
 XY = tuple[float, float]
 Box = tuple[float, float, float, float]
@@ -24,6 +24,11 @@ INSET_PT = 1.25 * labelling.FRAME_PT
 #: (:func:`graspcompass.scene.fit.crowded_region`): a smaller one zooms in further where
 #: a label has no place that keeps every rule.
 INSET_SHRINK = (1.0, 0.8, 0.64, 0.5, 0.4)
+#: The least side of an inset about points whose labels have no place in the whole view
+#: (not the crowded region), as a fraction of the whole view's.
+LEAST_INSET = 0.15
+#: At most this many insets (the crowded region, then the other crowds, most points first).
+MAX_INSETS = 4
 
 
 @dataclass(frozen=True)

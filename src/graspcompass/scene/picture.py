@@ -48,6 +48,7 @@ __all__ = [
     "Scene",
     "build_scene",
     "exact_text",
+    "grasp_title",
     "group_points",
     "label_tex",
     "scene_of",
@@ -85,10 +86,16 @@ class Scene:
     made: Mapping[str, int] = field(default_factory=dict)
     #: the last step shown (None: every step)
     step: int | None = None
-    #: the zoomed view of the crowded region, if points crowd
-    inset: Inset | None = None
+    #: the zoomed views of the crowds: the crowded region first, if points crowd, then
+    #: each crowd of points whose labels have no place in the whole view
+    insets: tuple[Inset, ...] = ()
     #: the compass arcs, right-angle marks and guides (:mod:`graspcompass.scene.instruments`)
     instruments: tuple[Instrument, ...] = ()
+
+    @property
+    def inset(self) -> Inset | None:
+        """The first inset (:attr:`insets`), or None."""
+        return self.insets[0] if self.insets else None
 
     def label_of(self, name: str) -> Label | None:
         """The label of the group of points whose first name is ``name``, or None."""
@@ -139,12 +146,9 @@ class Scene:
             return tuple(out)
 
         labels = cut_labels(self.labels)
-        inset = (
-            None
-            if self.inset is None
-            else replace(
-                self.inset, labels=cut_labels(self.inset.labels), main=cut_labels(self.inset.main)
-            )
+        insets = tuple(
+            replace(ins, labels=cut_labels(ins.labels), main=cut_labels(ins.main))
+            for ins in self.insets
         )
         cones = tuple(c for i, c in enumerate(self.cones, start=1) if ok(f"cone{i}"))
         return replace(
@@ -155,10 +159,35 @@ class Scene:
             points=tuple(pts),
             labels=labels,
             cones=cones,
-            inset=inset,
+            insets=insets,
             instruments=tuple(x for x in self.instruments if ok(x.step)),
             envelope=self.envelope if ok("envelope") else (),
         )
+
+
+def grasp_title(grasp: Grasp | None) -> str:
+    """The grasp's own title, or one from its parameters (a grasp of one's own): the
+    title of every picture of its construction.
+
+    >>> from graspcompass import Grasp
+    >>> grasp_title(Grasp(1.2, 0.3, 0.4, "61*pi/180", "118*pi/180", xi1="67*pi/180", xi2="pi/4"))
+    'x1 = 1.2, x2 = 0.3, y = 0.4, φ1 = 61°, φ2 = 118°, ξ1 = 67°, ξ2 = 45°'
+    """
+    if grasp is None:
+        return ""
+    own = getattr(grasp, "title", None)
+    if own:
+        return str(own)
+    try:
+        p = grasp.params
+        deg = {k: math.degrees(float(p[k])) for k in ("phi1", "phi2", "xi1", "xi2")}
+        return (
+            f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
+            f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
+            f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°"
+        )
+    except (AttributeError, KeyError, TypeError, ValueError):
+        return ""
 
 
 def _f(v: sp.Expr) -> float:
@@ -287,12 +316,12 @@ def build_scene(
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
     grouped += group_points([p for p in inside if p[0] in on], 1e-9 * span)
     grouped += [((n,), xy) for n, xy in inside if n in small - on]
-    text = title if title is not None else (getattr(grasp, "title", None) or "")
+    text = title if title is not None else grasp_title(grasp)
     # the unlabelled break points' markers and the cusps are avoided, as in figure.py
     named = [g for g in grouped if g[0][0] not in small or g[0][0] in on]
     lit = [xy for n, xy in inside if n in on]  # a labelled break point's cusp is its point
     free = [a.start for a in envelope if all(math.dist(a.start, xy) > 1e-6 * span for xy in lit)]
-    labels, inset = labels_of(
+    labels, insets = labels_of(
         box,
         named,
         lines,
@@ -315,7 +344,7 @@ def build_scene(
         frozenset(small),
         labels,
         made,
-        inset=inset,
+        insets=insets,
         instruments=instruments_of(construction, num, box),
     )
 
