@@ -703,7 +703,7 @@ def _labelled_points(svg: str) -> set[str]:
     root = ET.fromstring(svg.encode("utf-8"))
     ns = "{http://www.w3.org/2000/svg}"
     return {
-        g.get("id").removeprefix("inset-")
+        re.sub(r"^inset\d*-", "", g.get("id"))
         for g in root.iter(f"{ns}g")
         if g.get("class") == "point" and g.find(f"{ns}text") is not None
     }

@@ -59,7 +59,7 @@ def _check_svg(c, n: int) -> None:
     names = [s.name for s in c.steps]
     root = ET.fromstring(to_svg(c, step=n).encode())
     ids = {
-        g.get("id").removeprefix("inset-")
+        re.sub(r"^inset\d*-", "", g.get("id"))  # the panels' ids: inset-, inset2-, ...
         for g in root.iterfind(".//s:g", NS)
         if g.get("id") and g.get("class") not in ("panel", "drawing")
     }
@@ -77,7 +77,7 @@ def _check_svg(c, n: int) -> None:
     assert used <= made, (n, used - made)
     if n == len(c.steps) - 1:
         assert used, "the compass arcs and right angles of the whole construction"
-    cones = {p.get("id").removeprefix("inset-") for p in root.iterfind(".//s:polygon", NS)}
+    cones = {re.sub(r"^inset\d*-", "", p.get("id")) for p in root.iterfind(".//s:polygon", NS)}
     sides = _sides(c)
     assert cones == {k for k in ("cone1", "cone2") if sides[k] <= made}, n
 

@@ -329,6 +329,12 @@ def register(
         "(default: 2; lecture: 2.5, and 1 s per 15 characters)",
     )
     p.add_argument(
+        "--break-points",
+        action="store_true",
+        help="for --kind construction: the finished diagram names the break points on "
+        "the envelope too (each break point is named at its own step in any case)",
+    )
+    p.add_argument(
         "--circle",
         type=bounded(int, 1, 4),
         default=None,
@@ -415,6 +421,7 @@ def run(args: argparse.Namespace, grasp: Grasp | Callable[[], Grasp]) -> int:
             hold_frames=None if hold is None else q.frames(hold, fps),
             caption_seconds=getattr(args, "caption_seconds", None),
             inset_seconds=getattr(args, "zoom", None),
+            break_points=getattr(args, "break_points", False),
         )
     else:
         look = theme.scaled(q.scale) if q.scale != 1 else theme

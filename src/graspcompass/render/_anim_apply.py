@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..scene.labelling import SMALL_MARKER
 from ..scene.picture import scene_of
 from ._anim_camera import camera_box, zoomed
 from ._anim_ink import _fade, _restore, _tint
@@ -128,8 +129,10 @@ class _ApplyFrames:
                     alpha=1.0 - ripple,
                     visible=True,
                 )
-        elif role == "marker":  # marked: the marker pops up
-            a.set_markersize(snap["ms"] * p * (1.0 + 0.8 * math.sin(math.pi * p)))
+        elif role == "marker":  # marked: the marker pops up (a break point as large as
+            # any point while it is the new one, named beside it)
+            ms = snap["ms"] / SMALL_MARKER if step.role == "break_point" else snap["ms"]
+            a.set_markersize(ms * p * (1.0 + 0.8 * math.sin(math.pi * p)))
             self._draw_aid(step, p)
         elif role == "label":
             a.set_visible(snap["visible"] and p >= 1.0)  # after its object's stroke

@@ -107,6 +107,11 @@ class ViewLabels:
         that frame's.
     zoom : bool
         Whether the final hold zooms on the crowded region (a camera).
+    dim : float
+        The least opacity of an earlier step's label (as the other dimmed elements).
+    break_points : bool
+        Whether the finished figure names the break points on the envelope (each break
+        point is named at its own step in any case).
     """
 
     def __init__(
@@ -121,6 +126,7 @@ class ViewLabels:
         k: float,
         zoom: bool,
         dim: float = 0.3,
+        break_points: bool = False,
     ) -> None:
         self.ax, self.theme, self.k, self.dim = ax, theme, k, dim
         steps = construction.steps
@@ -128,14 +134,16 @@ class ViewLabels:
         self.views: list[View] = []
         self.step_view: list[int] = []
 
-        placed: dict[tuple[int, Box], tuple[Label, ...]] = {}
+        placed: dict[tuple[int, Box, bool | str], tuple[Label, ...]] = {}
 
-        def place(last: int, box: Box) -> tuple[Label, ...]:
-            """The labels of the points made by step ``last`` placed in ``box`` (once)."""
-            if (last, box) not in placed:
+        def place(last: int, box: Box, named: bool | str = "all") -> tuple[Label, ...]:
+            """The labels of the points made by step ``last`` placed in ``box`` (once); the
+            break points named as ``named`` says (``"all"``: each at its step)."""
+            if (last, box, named) not in placed:
                 cut = construction.upto(last)
-                placed[last, box] = build_scene(cut, box=box, font_pt=font_pt, num=num).labels
-            return placed[last, box]
+                scene = build_scene(cut, box=box, font_pt=font_pt, num=num, break_points=named)
+                placed[last, box, named] = scene.labels
+            return placed[last, box, named]
 
         runs = self._runs(boxes, place)
         if zoom:  # the camera closer where a new point's label has no place
@@ -146,7 +154,7 @@ class ViewLabels:
         for first, last, labs in runs:
             self.step_view += [len(self.views)] * (last - first + 1)
             self.views.append(View(boxes[first], labs, "run"))
-        whole_scene = scene_of(construction, font_pt=font_pt)
+        whole_scene = scene_of(construction, break_points=break_points, font_pt=font_pt)
         self.hold = len(self.views)
         self.views.append(View(whole, whole_scene.labels, "hold"))
         #: the views of the final zooms, one per crowd of labels the whole view cannot place
@@ -154,7 +162,7 @@ class ViewLabels:
         pending = [(pts, whole) for pts in _crowds(whole_scene.labels, whole)] if zoom else []
         while pending and len(self.zooms) < _ZOOMS:
             pts, around = pending.pop(0)
-            view = self._zoom_view(construction, pts, around, place, num)
+            view = self._zoom_view(construction, pts, around, place, break_points)
             if around != whole and (view.box[1] - view.box[0]) * 1.5 > around[1] - around[0]:
                 continue  # no closer than the zoom it is in
             self.zooms.append(len(self.views))
@@ -224,11 +232,11 @@ class ViewLabels:
         pts: list[XY],
         around: Box,
         place: Any,
-        num: dict[str, Any],
+        named: bool,
     ) -> View:
         """A final zoom on the points ``pts`` (:func:`_crowds` of the view ``around``): a
         square about them, smaller (:data:`_SHRINK`) while a label in it breaks a rule and
-        it still holds them."""
+        it still holds them; the break points named as in the finished figure (``named``)."""
         xs, ys = [p[0] for p in pts], [p[1] for p in pts]
         cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
         need = max(max(xs) - min(xs), max(ys) - min(ys))
@@ -239,7 +247,7 @@ class ViewLabels:
         for f in _SHRINK:
             h = max(side * f, need * (1 + _PAD)) / 2
             sub = (cx - h, cx + h, cy - h, cy + h)
-            view = View(sub, place(last, sub), "zoom")
+            view = View(sub, place(last, sub, named), "zoom")
             if best is None or sum(not x.ok for x in view.labels) < sum(
                 not x.ok for x in best.labels
             ):

@@ -117,6 +117,7 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         title_seconds: float | None = None,
         min_text_px: float | None = None,
         inset_seconds: float | None = None,
+        break_points: bool = False,
     ) -> None:
         q = self.quality = _quality(quality)
         self.camera = q.camera if camera is None else bool(camera)
@@ -172,7 +173,9 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         self.axes = ax = fig.add_axes(AX_RECT)
         _layout(self, q.layout, caption_pt)
         # the labels are the views' own (render/_anim_labels.py): placed for each view
-        self.artists = arts = draw_construction(construction, ax=ax, theme=theme, labels=False)
+        self.artists = arts = draw_construction(
+            construction, ax=ax, theme=theme, labels=False, break_points=break_points
+        )
         ax.tick_params(labelsize=max(theme.font_size * 0.7, self._least_pt))
         self._num = numeric_objects(construction)
         box = scene_of(construction).box
@@ -228,6 +231,7 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
                 frame_pt / labelling.FRAME_PT,
                 zoom=self.camera,
                 dim=self.dim,
+                break_points=break_points,
             )
             self._boxes = self._views.boxes
             for lab in self._views.labels:  # by name, as draw_construction's labels are
@@ -410,6 +414,7 @@ def animate_construction(
     title_seconds: float | None = None,
     min_text_px: float | None = None,
     inset_seconds: float | None = None,
+    break_points: bool = False,
 ) -> ConstructionAnimation:
     """Animate the ruler-and-compass drawing of the internal force diagram (§3.3).
 
@@ -459,6 +464,10 @@ def animate_construction(
         :attr:`graspcompass.scene.picture.Scene.inset`): after the hold the camera zooms
         on that region, marked by a dashed square, names every point in it and comes
         back, for this long (standard 5 s, lecture 8 s; 0: no zoom).
+    break_points : bool
+        Each break point (steps ``B12`` to ``B34``) is named at its own step; with
+        ``break_points`` the finished diagram names those on the envelope too (where
+        k_grasp passes from one circle to the next), as ``draw --break-points``.
 
     Returns
     -------
@@ -497,4 +506,5 @@ def animate_construction(
         title_seconds=title_seconds,
         min_text_px=min_text_px,
         inset_seconds=inset_seconds,
+        break_points=break_points,
     )

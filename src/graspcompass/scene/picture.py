@@ -234,7 +234,7 @@ def build_scene(
     construction: Construction,
     title: str | None = None,
     box: Box | None = None,
-    break_points: bool = False,
+    break_points: bool | str = False,
     font_pt: float = labelling.FONT_PT,
     num: Mapping[str, Any] | None = None,
 ) -> Scene:
@@ -246,7 +246,8 @@ def build_scene(
     it steps through the protocol.  ``break_points`` labels the break points that lie
     on the envelope (an end of one of its arcs: where k_grasp passes from one circle
     to the next), placed by the rules of every label; the other break points, off
-    the envelope, stay small unlabelled markers.  ``num``: the numbers of the objects
+    the envelope, stay small unlabelled markers; ``"all"`` labels every break point
+    (an animation names each at its step).  ``num``: the numbers of the objects
     (:func:`graspcompass.scene.layout.numeric_objects` of this construction or of one it
     is a prefix of), when the caller has them.
 
@@ -311,7 +312,11 @@ def build_scene(
     on = {  # the break points labelled on request: those at an end of an envelope arc
         n
         for n, xy in inside
-        if break_points and n in small and any(math.dist(xy, c) <= 1e-6 * span for c in cusps)
+        if n in small
+        and (
+            break_points == "all"
+            or (break_points and any(math.dist(xy, c) <= 1e-6 * span for c in cusps))
+        )
     }
     grouped = group_points([p for p in inside if p[0] not in small], 1e-9 * span)
     grouped += group_points([p for p in inside if p[0] in on], 1e-9 * span)
