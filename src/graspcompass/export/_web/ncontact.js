@@ -255,7 +255,10 @@
     const out = [];
     for (let a = 0; a < ties.length; a++) {
       for (let b = a + 1; b < ties.length; b++) {
-        const d0 = cross3(ties[a].h, ties[b].h);
+        // the three tie planes of one contact share one line (through g+ and g-): one cross
+        // product for the three pairs, so they give one point bit for bit (maxnormal._float)
+        const d0 = ties[a].i === ties[b].i ? cross3(G[2 * ties[a].i], G[2 * ties[a].i + 1])
+          : cross3(ties[a].h, ties[b].h);
         const nd = norm(d0);
         if (nd <= 1e-12 * scale * scale) continue;
         for (const sg of [1, -1]) {
@@ -391,8 +394,9 @@
       rays = qRays(rows);
     }
     const closure = qRays(m.G).length === 0;
-    // one candidate per point: closer than 1e-9 relative to the point (polygon._close), as
-    // the copies of one dual vertex from its several bases are (each rounds on its own way)
+    // one candidate per point: closer than 1e-9 relative to the group's first point, in the
+    // order met (polygon._float_close, the rule of Python's float path too), as the copies
+    // of one dual vertex from its several bases are (each rounds on its own way)
     const cands = [];
     for (const p of pts) {
       const same = cands.find((c) => Math.abs(c.q[0] - p.q[0]) + Math.abs(c.q[1] - p.q[1]) <=
