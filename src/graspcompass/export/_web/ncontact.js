@@ -10,7 +10,9 @@
  *   linear effort: the dual {u : rows·u <= rhs}, every d-subset of its rows solved,
  *     kept when feasible (relative tolerance 1e-9): q = -u_f; the paper's k >= 0 adds
  *     the column c_j and the row -z <= 0;
- *   "max-normal": the ties of each contact, q = -d / f(d) for d = ±h_a × h_b;
+ *   "max-normal": the ties of each contact, q = -d / f(d) for d = ±h_a × h_b (g+ × g- for
+ *     two ties of one contact: their three pairs give one point, bit for bit);
+ *   candidates closer than 1e-9 relative to the first met are one (polygon._float_close);
  *   recession directions: the extreme rays of {r : rows·r <= 0}, q-rays -r_f;
  *   Q = the hull of the q (Andrew's chain, relative orientation 1e-12); its vertices are
  *   the hull points whose normal cone meets the open cone of loads that can be held;
