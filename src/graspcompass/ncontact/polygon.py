@@ -153,19 +153,20 @@ class InternalForcePolygon:
     ) -> InternalForcePolygon:
         """The float path: relative tolerances per predicate, never a global one.
 
-        Near-collinear points are dropped only when within 1e-12 of the relative
-        orientation (their support values differ by less than that); v(θ) on the
-        feasible arc is the max over every hull point (the vertices reported are
-        those whose normal cone meets the open feasible cone).
+        Points within 1e-9 of each other relative to the first (:func:`_float_close`, the
+        web page's rule too) are one candidate: copies of one dual vertex from several
+        bases round their own ways.  Near-collinear points are dropped only when within
+        1e-12 of the relative orientation (their support values differ by less than
+        that); v(θ) on the feasible arc is the max over every hull point (the vertices
+        reported are those whose normal cone meets the open feasible cone).
         """
         P = np.array(
             [(float(p[0]) / float(p[2]), float(p[1]) / float(p[2])) for p in points], dtype=float
         ).reshape(-1, 2)
-        scale = max(1.0, float(np.abs(P).max()) if P.size else 1.0)
         groups: list[list[int]] = []
         for i in range(len(P)):
             for g in groups:
-                if np.abs(P[g[0]] - P[i]).max() <= 1e-13 * scale:
+                if _float_close(P[g[0]], P[i]):
                     g.append(i)
                     break
             else:
@@ -422,13 +423,19 @@ def _equal_h(a: Candidate, b: Candidate, sgn: Any) -> bool:
     return _equal((a.X, a.Y, a.W), (b.X, b.Y, b.W), sgn)
 
 
+def _float_close(a: Any, b: Any) -> bool:
+    """``|a - b|_1 <= 1e-9 (1 + |a|_1)`` for float points: one candidate on the float path
+    (and on the web page, ``ncontact.js``: the same rule, in the same order)."""
+    ax, ay, bx, by = float(a[0]), float(a[1]), float(b[0]), float(b[1])
+    return abs(ax - bx) + abs(ay - by) <= 1e-9 * (1 + abs(ax) + abs(ay))
+
+
 def _close(a: Candidate, b: Candidate) -> bool:
     """Within 1e-9 in double precision: only then is the exact (costly) equality tried.
 
     Points further apart are distinct: their 25-digit interval evaluations differ.
     """
-    (ax, ay), (bx, by) = a.floats(), b.floats()
-    return abs(ax - bx) + abs(ay - by) <= 1e-9 * (1 + abs(ax) + abs(ay))
+    return _float_close(a.floats(), b.floats())
 
 
 def _half(v: tuple, sgn: Any) -> int:

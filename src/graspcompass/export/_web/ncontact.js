@@ -10,7 +10,9 @@
  *   linear effort: the dual {u : rows·u <= rhs}, every d-subset of its rows solved,
  *     kept when feasible (relative tolerance 1e-9): q = -u_f; the paper's k >= 0 adds
  *     the column c_j and the row -z <= 0;
- *   "max-normal": the ties of each contact, q = -d / f(d) for d = ±h_a × h_b;
+ *   "max-normal": the ties of each contact, q = -d / f(d) for d = ±h_a × h_b (g+ × g- for
+ *     two ties of one contact: their three pairs give one point, bit for bit);
+ *   candidates closer than 1e-9 relative to the first met are one (polygon._float_close);
  *   recession directions: the extreme rays of {r : rows·r <= 0}, q-rays -r_f;
  *   Q = the hull of the q (Andrew's chain, relative orientation 1e-12); its vertices are
  *   the hull points whose normal cone meets the open cone of loads that can be held;
@@ -255,7 +257,10 @@
     const out = [];
     for (let a = 0; a < ties.length; a++) {
       for (let b = a + 1; b < ties.length; b++) {
-        const d0 = cross3(ties[a].h, ties[b].h);
+        // the three tie planes of one contact share one line (through g+ and g-): one cross
+        // product for the three pairs, so they give one point bit for bit (maxnormal._float)
+        const d0 = ties[a].i === ties[b].i ? cross3(G[2 * ties[a].i], G[2 * ties[a].i + 1])
+          : cross3(ties[a].h, ties[b].h);
         const nd = norm(d0);
         if (nd <= 1e-12 * scale * scale) continue;
         for (const sg of [1, -1]) {
@@ -391,8 +396,9 @@
       rays = qRays(rows);
     }
     const closure = qRays(m.G).length === 0;
-    // one candidate per point: closer than 1e-9 relative to the point (polygon._close), as
-    // the copies of one dual vertex from its several bases are (each rounds on its own way)
+    // one candidate per point: closer than 1e-9 relative to the group's first point, in the
+    // order met (polygon._float_close, the rule of Python's float path too), as the copies
+    // of one dual vertex from its several bases are (each rounds on its own way)
     const cands = [];
     for (const p of pts) {
       const same = cands.find((c) => Math.abs(c.q[0] - p.q[0]) + Math.abs(c.q[1] - p.q[1]) <=
