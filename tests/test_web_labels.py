@@ -32,7 +32,7 @@ from hypothesis import strategies as st
 
 from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram, labelling
-from graspcompass.export.html import page_data, to_html, web_file
+from graspcompass.export.html import EXPLORER_SCRIPTS, page_data, to_html, web_file
 from graspcompass.palette import PALETTE
 from graspcompass.scene.layout import label_tex
 
@@ -41,7 +41,7 @@ PRESETS = ["fig6", "table1a", "table1b", "table1c"]
 
 # -- without a browser --------------------------------------------------------------------------
 def test_page_script_has_no_colour_of_its_own() -> None:
-    js = web_file("explorer.js")
+    js = "\n".join(web_file(name) for name in EXPLORER_SCRIPTS)
     assert not re.findall(r"#[0-9a-fA-F]{3}(?:[0-9a-fA-F]{3})?\b", js)
     used = set(re.findall(r"COL\.(\w+)", js)) | set(re.findall(r'COL\["(\w+)"\]', js))
     used |= {f"circle{n}" for n in range(1, 5)} if 'COL["circle" + n]' in js else set()
