@@ -189,12 +189,12 @@ window.GCBoard = function (ctx) {
     }
   };
 
-  reg(board.create("axis", [[0, 0], [1, 0]], {
+  const xAxis = reg(board.create("axis", [[0, 0], [1, 0]], {
     strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
     ticks: { strokeColor: COL.tick, needsRegularUpdate: false, label: {
       fontSize: 10, strokeColor: COL.ticklabel } },
   }), "x-axis", { always: true });
-  reg(board.create("axis", [[0, 0], [0, 1]], {
+  const yAxis = reg(board.create("axis", [[0, 0], [0, 1]], {
     strokeColor: COL.axis, highlight: false, needsRegularUpdate: false,
     ticks: { strokeColor: COL.tick, needsRegularUpdate: false, label: {
       fontSize: 10, strokeColor: COL.ticklabel } },
@@ -344,5 +344,6 @@ window.GCBoard = function (ctx) {
   Object.assign(ctx, {
     board, COL, LSPEC, GL, LFONT, insets, redrawInset, scheduleInsetRedraw, setFitText,
     setVisualPass, entries, labelled, markers, extras, unlabelled, P1, P2,
+    ticks: [xAxis.defaultTicks, yAxis.defaultTicks],
   });
 };

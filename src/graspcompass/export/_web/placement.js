@@ -9,7 +9,7 @@ window.GCPlacement = function (ctx) {
 
   const { DATA, state, stepIndex, lastStep, drawValue } = ctx;
   const { board, COL, LSPEC, GL, LFONT, insets, scheduleInsetRedraw, setFitText, entries,
-    labelled, markers, extras, unlabelled } = ctx;
+    labelled, markers, extras, unlabelled, ticks } = ctx;
   const { PI } = window.GCModel;
 
   // ------------------------------------------------------------------------------------
@@ -412,6 +412,43 @@ window.GCPlacement = function (ctx) {
       node.setAttribute("y", `${t + DATA.fit.metrics.ascent * LFONT}px`);
     });
   }
+
+  /** The axes' numbers give way to the points: after each redraw of the board, a tick
+   * number that comes within LABEL_SPACE px of a shown point's marker or label (as the
+   * browser lays them out) is hidden, and shown again once it is clear.  The labels are
+   * placed first, by the rules of every picture; the ticks only say where the axes are. */
+  const GIVE_WAY = "data-gc-give-way"; // explorer.css: hidden, its place kept
+  function ticksGiveWay() {
+    const near = [];
+    const add = (node) => {
+      const r = node.getBoundingClientRect();
+      if (r.width > 0 || r.height > 0) near.push(r);
+    };
+    for (const el of board.objectsList) {
+      if (el.elType !== "point" || !el.visPropCalc.visible || !el.rendNode) continue;
+      add(el.rendNode);
+      const l = el.label;
+      if (l && l.visPropCalc.visible && l.rendNode) add(l.rendNode);
+    }
+    const s = LABEL_SPACE;
+    for (const t of ticks) {
+      for (const l of t.labels) {
+        const node = l && l.rendNode;
+        if (!node) continue;
+        let off = false;
+        if (l.visPropCalc.visible) {
+          const r = node.getBoundingClientRect();
+          off = near.some((o) => r.left - s < o.right && o.left < r.right + s &&
+            r.top - s < o.bottom && o.top < r.bottom + s);
+        }
+        if (off !== node.hasAttribute(GIVE_WAY)) {
+          if (off) node.setAttribute(GIVE_WAY, "");
+          else node.removeAttribute(GIVE_WAY);
+        }
+      }
+    }
+  }
+  board.on("update", ticksGiveWay);
 
   function setLabel(e, text) {
     if (text === e.shownText || !e.el.label) return;
