@@ -19,6 +19,10 @@ window.GCBoard = function (ctx) {
   const LSPEC = DATA.labelling;
   const GL = window.GCLabelling;
   JXG.Options.text.display = "internal";
+  // no CSS transitions (JSXGraph animates a marker's size over 100 ms by default): what a
+  // redraw draws is at once the picture that stays, the one the labels were placed for and
+  // the tick numbers give way to
+  JXG.Options.elements.transitionDuration = 0;
   const board = JXG.JSXGraph.initBoard("gc-board", {
     boundingbox: [-4, 4, 4, -4], keepaspectratio: true, axis: false, grid: false,
     showCopyright: false, showNavigation: true, showFullscreen: false, showScreenshot: false,
