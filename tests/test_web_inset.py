@@ -222,3 +222,57 @@ def test_fig6_centre_is_named_at_1280x800_and_on_a_phone(browser: Any, page_path
             assert {"P2x", "X4", "P1x", "V4", "V3", "X3", "Y3"} <= _names(texts), texts
         finally:
             page.close()
+
+
+#: Per inset shown, every drawn element of its copy whose presentation (stroke, fill, their
+#: width and dashes, display) differs from the board's element it copies.
+STALE_COPY = """() => {
+  const bad = [];
+  for (const copy of document.querySelectorAll('figure.gc-inset:not([hidden]) .gc-inset-copy')) {
+    for (const n of copy.querySelectorAll('[id^="gc-inset-gc-board"]')) {
+      const src = document.getElementById(n.id.slice('gc-inset-'.length));
+      if (!src) continue;
+      for (const a of ['stroke', 'fill', 'stroke-width', 'stroke-dasharray', 'display']) {
+        if (src.getAttribute(a) !== n.getAttribute(a)) {
+          bad.push(`${n.id} ${a}: board ${src.getAttribute(a)}, inset ${n.getAttribute(a)}`);
+        }
+      }
+    }
+  }
+  return bad;
+}"""
+
+
+def test_inset_copies_the_board_as_it_stays(browser: Any, page_path: Path) -> None:
+    """Stepping on, the current step's objects are highlighted (red, wider) and the last
+    step's drawn plain again: the inset, a copy of the board, shows the same colours and
+    widths once the page is idle (JSXGraph set colours 1 ms after a redraw, and the inset
+    copied the board in between: it kept the last step's highlight, about every other
+    step)."""
+    page = browser.new_page(viewport={"width": 1280, "height": 800})
+    try:
+        page.goto(page_path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        report = []
+        shown = 0
+        cases: list[tuple[str, dict[str, float] | None]] = [("fig6", None), ("table1c", None)]
+        cases += [(f"random {i}", g) for i, g in enumerate(random_grasps(3, seed=77))]
+        for name, params in cases:
+            if params is None:
+                page.select_option("#gc-preset", name)
+            else:
+                assert page.evaluate("p => graspcompass.set(p)", params) is None
+            page.click("#gc-fit")
+            for s in range(12, 47, 3):
+                page.evaluate("s => graspcompass.step(s)", s)
+                # idle: the frames that redraw the inset, and any timer of the board's
+                page.evaluate(
+                    "() => new Promise(r => requestAnimationFrame(() => "
+                    "requestAnimationFrame(() => setTimeout(r, 10))))"
+                )
+                shown += page.evaluate("document.querySelectorAll('.gc-inset-copy').length")
+                report += [f"{name}@{s}: {d}" for d in page.evaluate(STALE_COPY)]
+        assert shown >= 20, shown  # the insets were there to compare
+        assert not report, f"{len(report)} differences: {report[:10]}"
+    finally:
+        page.close()

@@ -29,6 +29,10 @@ window.GCBoard = function (ctx) {
     pan: { enabled: true, needShift: true }, zoom: { wheel: true, needShift: true },
     renderer: "svg", resize: { enabled: true, throttle: 100 },
   });
+  // colours at once: JSXGraph's SVG renderer sets a changed colour 1 ms after the redraw
+  // (window.setTimeout, for its CSS transitions, off here), so the inset copied the board
+  // before it had the current step's highlight and kept the last step's
+  board.renderer._setAttribute = (set) => set();
   // the zoomed inset of the crowded region, beside the board (inset.js)
   const insets = Array.from(document.querySelectorAll(".gc-inset"))
     .map((holder) => window.GCInset.create(board, holder, COL.axis));
