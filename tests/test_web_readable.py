@@ -138,6 +138,76 @@ def test_buttons_use_svg_icons_not_rare_glyphs(fresh: Any) -> None:
     assert fresh.inner_text("#gc-play").strip() == "play"
 
 
+#: Windows Glyph List 4 (Microsoft): the characters that the core fonts of Windows (Arial,
+#: Times New Roman, Segoe UI), of macOS (Helvetica, Times) and of Linux (DejaVu, Liberation)
+#: all carry, so that no browser falls back to a missing-glyph box.  Subscripts and
+#: superscripts are set as <sub>/<sup> of ordinary digits, marks as SVG.
+WGL4 = frozenset(
+    chr(c)
+    for part in (
+        "0020-007E 00A0-00FF 0100-017F 0192 01FA-01FF 02C6-02C7 02C9 02D8-02DD 0384-038A "
+        "038C 038E-03A1 03A3-03CE 0401-040C 040E-044F 0451-045C 045E-045F 0490-0491 "
+        "1E80-1E85 1EF2-1EF3 2013-2015 2017-201E 2020-2022 2026 2030 2032-2033 2039-203A "
+        "203C 203E 2044 207F 20A3-20A4 20A7 20AC 2105 2113 2116 2122 2126 212E 215B-215E "
+        "2190-2195 21A8 2202 2206 220F 2211-2212 2215 2219-221A 221E-221F 2229 222B 2248 "
+        "2260-2261 2264-2265 2302 2310 2320-2321 2500 2502 250C 2510 2514 2518 251C 2524 "
+        "252C 2534 253C 2550-256C 2580 2584 2588 258C 2590-2593 25A0-25A1 25AA-25AC 25B2 "
+        "25BA 25BC 25C4 25CA-25CB 25CF 25D8-25D9 25E6 263A-263C 2640 2642 2660 2663 "
+        "2665-2666 266A-266B F001-F002 FB01-FB02"
+    ).split()
+    for a, _, b in [part.partition("-")]
+    for c in range(int(a, 16), int(b or a, 16) + 1)
+)
+
+#: Every text the page shows (rendered text, SVG texts drawn, the menu's options) and says
+#: to a screen reader or in a tooltip (title, aria-label).
+SHOWN_TEXT = """() => {
+  const drawn = (n) => { for (let e = n; e && e.nodeType === 1; e = e.parentElement) {
+    const cs = getComputedStyle(e);
+    if (cs.display === 'none' || cs.visibility === 'hidden') return false; } return true; };
+  const parts = [document.title, document.body.innerText];
+  for (const t of document.querySelectorAll('svg text')) if (drawn(t)) parts.push(t.textContent);
+  for (const o of document.querySelectorAll('option')) parts.push(o.textContent);
+  for (const e of document.querySelectorAll('[title], [aria-label]')) {
+    parts.push(e.getAttribute('title') || '', e.getAttribute('aria-label') || '');
+  }
+  return parts.join(' ');
+}"""
+
+
+def test_every_glyph_is_one_every_browser_has(fresh: Any) -> None:
+    """The page's texts, in the states a user meets (the start, steps, a grasp of one's
+    own with its heading, each kind of refusal, playing), use only WGL4 characters."""
+    found: dict[str, str] = {}
+
+    def take(where: str) -> None:
+        for ch in fresh.evaluate(SHOWN_TEXT):
+            if ch not in WGL4 and not ch.isspace():
+                found.setdefault(f"U+{ord(ch):04X} {ch}", where)
+
+    for step in (0, 11, 17, 35, 46):
+        fresh.evaluate("s => graspcompass.step(s)", step)
+        take(f"fig6 step {step}")
+    fresh.evaluate("() => graspcompass.set({x1: 1.2, y: 0.3})")
+    take("a grasp of one's own")
+    for bad in (
+        {"y": -0.3},
+        {"x1": -2.0},
+        {"mu1": 0.0},
+        {"phi1": 4.0},
+        {"phi1": 0.2, "mu1": 0.5},
+        {"phi1": math.pi / 2 - math.atan(0.9) + 1e-14, "mu1": 0.9},
+    ):
+        fresh.select_option("#gc-preset", "fig6")
+        assert fresh.evaluate("p => graspcompass.set(p)", bad), bad
+        take(f"refused {bad}")
+    fresh.select_option("#gc-preset", "table1c")
+    fresh.click("#gc-play")
+    take("playing")
+    fresh.click("#gc-play")
+    assert not found, found
+
+
 def test_captions_set_subscripts(fresh: Any) -> None:
     """The last step's caption, "... the polar graph of k_grasp(θ)", shows k with the
     subscript "grasp", not an underscore."""
@@ -208,7 +278,7 @@ def test_heading_outline_and_view_follow_a_drag(fresh: Any) -> None:
     p = {k: fresh.evaluate(f"graspcompass.get('{k}')") for k in ("x1", "x2", "y")}
     assert p["x1"] > 1.2 and p["y"] > 0.8  # the drag moved P1 up and right
     heading = fresh.inner_text(".gc-header h1")
-    assert heading.startswith("Your grasp:") and f"x₁ = {p['x1']:.3g}" in heading
+    assert heading.startswith("Your grasp:") and f"x1 = {p['x1']:.3g}" in heading  # x<sub>1</sub>
     assert fresh.input_value("#gc-preset") == ""
     # the unit circle became the circle through both contacts (centred on the x-axis)
     kind, cx, r = fresh.evaluate("graspcompass.outline()")

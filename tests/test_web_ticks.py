@@ -31,9 +31,9 @@ VIEWPORTS = [(1280, 800), (390, 844)]
 #: this read as one ("−1P2x"); the page's labels keep the same space between themselves.
 SPACE = 3.0
 
-#: At each step in ``steps``, once the picture has settled: every tick number JSXGraph draws on the board (its rectangle,
-#: whether the browser shows it), and every point shown on the board in view (its marker's
-#: rectangle, its label's when one is shown).
+#: At each step in ``steps``, once the picture has settled: every tick number JSXGraph draws
+#: on the board (its rectangle, whether the browser shows it), and every point shown on the
+#: board in view (its marker's rectangle, its label's when one is shown).
 MEASURE = """(steps) => steps.map((s) => {
   if (s !== null) graspcompass.step(s);
   // the picture as it stays: any CSS transition (a marker's highlight) run to its end

@@ -329,7 +329,7 @@ window.GCBoard = function (ctx) {
     unlabelled.push({ name: which, el });
   };
   // the worst and best orientation: a red square and a green diamond, named in the panel
-  // (■ worst, ◆ best) in the same colours, not on the crowded board
+  // beside the same marks in the same colours, not on the crowded board
   specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: COL.worst,
     fillColor: COL.worst, withLabel: false });
   specialPoint("best", { name: "best", face: "<>", size: 6, strokeColor: COL.best,

@@ -18,24 +18,26 @@ window.GCControls = function (ctx) {
   const DEG = PI / 180;
   const rangeMax = (v) => Math.max(4, Math.ceil(2 * v));
   const SLIDERS = [
-    { name: "x1", label: "x₁", unit: 1, min: 0.05, max: rangeMax(state.p.x1), step: 0.001 },
-    { name: "x2", label: "x₂", unit: 1, min: 0.05, max: rangeMax(state.p.x2), step: 0.001 },
+    { name: "x1", label: "x_1", unit: 1, min: 0.05, max: rangeMax(state.p.x1), step: 0.001 },
+    { name: "x2", label: "x_2", unit: 1, min: 0.05, max: rangeMax(state.p.x2), step: 0.001 },
     { name: "y", label: "y", unit: 1, min: 0, max: rangeMax(state.p.y), step: 0.001 },
-    { name: "phi1", label: "φ₁ (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
-    { name: "phi2", label: "φ₂ (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
-    { name: "mu1", label: "μ₁", unit: 1, min: 0.02, max: rangeMax(state.p.mu1), step: 0.001 },
-    { name: "mu2", label: "μ₂", unit: 1, min: 0.02, max: rangeMax(state.p.mu2), step: 0.001 },
+    { name: "phi1", label: "φ_1 (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
+    { name: "phi2", label: "φ_2 (°)", unit: DEG, min: 1, max: 180, step: 0.1 },
+    { name: "mu1", label: "μ_1", unit: 1, min: 0.02, max: rangeMax(state.p.mu1), step: 0.001 },
+    { name: "mu2", label: "μ_2", unit: 1, min: 0.02, max: rangeMax(state.p.mu2), step: 0.001 },
     { name: "theta", label: "θ (°)", unit: DEG, min: 0, max: 360, step: 0.5 },
   ];
   const sliderBox = $("gc-sliders");
+  // subscripts as <sub> of ordinary digits (x_1 -> x<sub>1</sub>): glyphs every font has
   for (const s of SLIDERS) {
     const row = document.createElement("div");
     row.className = "gc-slider";
-    row.innerHTML = `<label for="gc-slider-${s.name}">${s.label}</label>` +
+    row.innerHTML = `<label for="gc-slider-${s.name}"></label>` +
       `<input type="range" id="gc-slider-${s.name}" data-param="${s.name}" min="${s.min}" ` +
       `max="${s.max}" step="${s.step}">` +
       `<input type="number" id="gc-num-${s.name}" data-param="${s.name}" step="any" ` +
-      `aria-label="${s.label}">`;
+      `aria-label="${s.label.replace("_", "")}">`;
+    setSubscripted(row.querySelector("label"), s.label);
     sliderBox.appendChild(row);
     const range = row.querySelector("input[type=range]");
     const box = row.querySelector("input[type=number]");
@@ -96,34 +98,42 @@ window.GCControls = function (ctx) {
     return /^-0(\.0*)?$/.test(t) ? t.slice(1) : t.replace(/^-/, "−");
   }
   const deg = (t) => fixed(t / DEG, 1, 360) + "°";
-  // the readouts: built once, then only their texts change
-  const SUB = "₀₁₂₃₄";
+  // the readouts: built once, then only their texts change; the worst and best marks are
+  // SVG (the red square and green diamond of the board), subscripts and superscripts
+  // <sub>/<sup>: no glyph a font may lack
+  const MARK = (d) => `<svg class="gc-mark" viewBox="0 0 10 10" aria-hidden="true">` +
+    `<path d="${d}"/></svg>`;
   $("gc-info").innerHTML =
     "<p id=\"gc-invalid-note\" hidden>The parameters violate the conditions of §2.2 (see " +
     "the message): the diagram shows the last valid grasp.</p><div id=\"gc-readout\">" +
     "<p>θ = <span data-r=\"theta\"></span>: k<sub>grasp</sub> = <span data-r=\"kgrasp\"></span>, " +
     "F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"Fint\"></span> " +
     "<small>(eqs. (25), (17))</small></p>" +
-    `<p class="gc-worst" style="color:${COL.worst}">■ worst: θ = ` +
+    `<p class="gc-worst" style="color:${COL.worst}">${MARK("M1 1h8v8H1z")} worst: θ = ` +
     "<span data-r=\"wtheta\"></span>, k = " +
     "<span data-r=\"wk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"wF\"></span>" +
     "<span data-r=\"wn\"></span></p>" +
-    `<p class="gc-best" style="color:${COL.best}">◆ best: θ = ` +
+    `<p class="gc-best" style="color:${COL.best}">${MARK("M5 0 10 5 5 10 0 5z")} best: θ = ` +
     "<span data-r=\"btheta\"></span>, k = " +
     "<span data-r=\"bk\"></span>, F<sub>int</sub>/F<sub>e</sub> = <span data-r=\"bF\"></span></p>" +
     "<table class=\"gc-v\"><tr><th></th><th>S<sub>n</sub></th><th>C<sub>n</sub></th>" +
     "<th>k<sub>n</sub>(θ)</th></tr>" +
-    [1, 2, 3, 4].map((n) => `<tr style="color:${COL["circle" + n]}"><td>V${SUB[n]}</td>` +
+    [1, 2, 3, 4].map((n) => `<tr style="color:${COL["circle" + n]}"><td>V<sub>${n}</sub></td>` +
       `<td data-r="S${n}"></td><td data-r="C${n}"></td><td data-r="k${n}"></td></tr>`).join("") +
-    "</table><p class=\"gc-small\" data-r=\"prec\"></p></div>";
+    "</table><p class=\"gc-small\" data-r=\"prec\">Lengths to <span data-r=\"dl\"></span>, " +
+    "forces to <span data-r=\"df\"></span>, angles to 0.1°; a value within 10<sup>−12</sup> " +
+    "of the drawing's scale (the largest |V| or |P|) is zero to double precision and prints " +
+    "0.</p></div>";
   const readout = {};
   for (const el of $("gc-info").querySelectorAll("[data-r]")) {
     readout[el.getAttribute("data-r")] = { el, text: null };
   }
-  function put(key, text) {
+  /** Show ``text`` in the readout ``key`` (with subscripts, "V_1", when ``sub``). */
+  function put(key, text, sub) {
     const r = readout[key];
     if (r.text !== text) {
-      r.el.textContent = text;
+      if (sub) setSubscripted(r.el, text);
+      else r.el.textContent = text;
       r.text = text;
     }
   }
@@ -152,16 +162,15 @@ window.GCControls = function (ctx) {
     const D = state.p.x1 + state.p.x2;
     const dl = decimalsFor(scale), df = decimalsFor(scale / D);
     const len = (x) => fixed(x, dl, scale), force = (x) => fixed(x, df, scale / D);
-    put("prec", `Lengths to ${dl} decimal${dl === 1 ? "" : "s"}, forces to ${df}, angles ` +
-      "to 0.1°; a value within 10⁻¹² of the drawing's scale (the largest |V| or |P|) " +
-      "is zero to double precision and prints 0.");
+    put("dl", `${dl} decimal${dl === 1 ? "" : "s"}`);
+    put("df", String(df));
     put("theta", deg(state.p.theta));
     put("kgrasp", len(q.kgrasp));
     put("Fint", force(q.Fint));
     put("wtheta", deg(q.worst.theta));
     put("wk", len(q.worst.k));
     put("wF", force(q.worst.Fint));
-    put("wn", q.worst.n ? ` (V${SUB[q.worst.n]}, k = |V${SUB[q.worst.n]}|)` : "");
+    put("wn", q.worst.n ? ` (V_${q.worst.n}, k = |V_${q.worst.n}|)` : "", true);
     put("btheta", deg(q.best.theta));
     put("bk", len(q.best.k));
     put("bF", force(q.best.Fint));
@@ -180,22 +189,28 @@ window.GCControls = function (ctx) {
     if (box) box.value = "";
   }
   const g3 = (x) => fmtG(x, 3).replace(/^-/, "−");
-  /** The heading: the given title until a parameter is changed, then the grasp's values. */
+  /** The heading: the given title until a parameter is changed, then the grasp's values
+   * (their subscripts set as <sub>). */
+  let shownHeading = null;
   function renderHeading() {
     const p = state.p;
-    const text = !state.follow && !(DATA.untitled && state.title === DATA.title) ? state.title
-      : `Your grasp: x₁ = ${g3(p.x1)}, x₂ = ${g3(p.x2)}, y = ${g3(p.y)}, ` +
-        `φ₁ = ${g3(p.phi1 / DEG)}°, φ₂ = ${g3(p.phi2 / DEG)}°, μ₁ = ${g3(p.mu1)}, ` +
-        `μ₂ = ${g3(p.mu2)}`;
+    const own = !(!state.follow && !(DATA.untitled && state.title === DATA.title));
+    const text = !own ? state.title
+      : `Your grasp: x_1 = ${g3(p.x1)}, x_2 = ${g3(p.x2)}, y = ${g3(p.y)}, ` +
+        `φ_1 = ${g3(p.phi1 / DEG)}°, φ_2 = ${g3(p.phi2 / DEG)}°, μ_1 = ${g3(p.mu1)}, ` +
+        `μ_2 = ${g3(p.mu2)}`;
     const h = document.querySelector(".gc-header h1");
-    if (h && h.textContent !== text) h.textContent = text;
+    if (!h || text === shownHeading) return;
+    if (own) setSubscripted(h, text);
+    else h.textContent = text;
+    shownHeading = text;
   }
 
   /** Put ``text`` into ``el`` with "k_grasp", "O_M", "X_{1}" as subscripts (DOM nodes,
    * never HTML parsing): captions read as the paper prints them, not with underscores. */
   function setSubscripted(el, text) {
     el.textContent = "";
-    const re = /([A-Za-z])_(\{[^}]*\}|[A-Za-z0-9]+)/g;
+    const re = /([A-Za-zα-ωΑ-Ω])_(\{[^}]*\}|[A-Za-z0-9]+)/g;
     let at = 0, m;
     while ((m = re.exec(text)) !== null) {
       el.appendChild(document.createTextNode(text.slice(at, m.index + 1)));
