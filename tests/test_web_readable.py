@@ -312,3 +312,42 @@ def test_invalid_drag_keeps_the_last_grasp_and_rounds(fresh: Any) -> None:
     fresh.fill("#gc-num-y", "0.5")
     fresh.press("#gc-num-y", "Enter")
     assert fresh.is_hidden("#gc-error") and fresh.evaluate("graspcompass.get('V1')")
+
+
+@pytest.mark.parametrize("viewport", [(1280, 800), (390, 844)], ids=lambda v: f"{v[0]}x{v[1]}")
+def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path, viewport) -> None:
+    """The message of an invalid drag lay over the board: on a phone over 29-46 % of it,
+    hiding up to 24 markers of the last valid grasp, P1 and P2 among them (the points to
+    drag back).  Now, for drags below the x-axis and past the other contact, on three
+    presets: the message is whole on the screen and no marker or label of the board lies
+    under it (the browser's layout)."""
+    from _label_rules import overlap
+    from test_web_inset import MEASURE_BOARD
+
+    w, h = viewport
+    page = _open(browser, page_path, w, h)
+    try:
+        report = []
+        side = page.evaluate("graspcompass.boardRect()[2] - graspcompass.boardRect()[0]")
+        for preset in ("fig6", "table1a", "table1c"):
+            for name, dx, dy in (("P1", 0, 0.5), ("P1", -0.8, 0), ("P2", 0.8, 0)):
+                page.select_option("#gc-preset", preset)
+                page.click("#gc-fit")
+                _drag(page, name, dx * side, dy * side)
+                where = f"{preset}: {name} by ({dx}, {dy}) of the board"
+                assert page.evaluate("graspcompass.error()"), where
+                box = page.evaluate(
+                    "(() => { const r = document.getElementById('gc-error')"
+                    ".getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()"
+                )
+                if not (0 <= box[0] and box[2] <= w and 0 <= box[1] and box[3] <= h):
+                    report.append(f"{where}: the message {box} is not whole on the screen")
+                for p in page.evaluate(MEASURE_BOARD)["pts"]:
+                    if overlap(p["m"], box) > 0:
+                        report.append(f"{where}: the marker of {p['name']} under the message")
+                    if p["t"] is not None and overlap(p["t"], box) > 0:
+                        report.append(f"{where}: the label {p['text']} under the message")
+        assert not report, report
+        assert not page.errors, page.errors
+    finally:
+        page.close()

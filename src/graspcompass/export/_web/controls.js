@@ -144,6 +144,13 @@ window.GCControls = function (ctx) {
       .replace(/-?\d+\.\d{5,}(?:e[+-]?\d+)?/gi, (m) => fmtG(parseFloat(m), 4))
       .replace(/>=/g, "≥").replace(/<=/g, "≤");
   }
+  /** The message above the board, or, where the page is scrolled so that it would start
+   * above the window, inside the board's top (it lets the pointer through there). */
+  function placeError() {
+    const box = $("gc-error");
+    box.classList.remove("gc-error-in");
+    if (box.getBoundingClientRect().top < 0) box.classList.add("gc-error-in");
+  }
   let shownError;
   function renderInfo() {
     const q = state.num;
@@ -153,6 +160,7 @@ window.GCControls = function (ctx) {
       $("gc-invalid-note").hidden = !state.error;
       $("gc-readout").hidden = !!state.error;
       shownError = state.error;
+      if (state.error) placeError();
     }
     if (state.error) return;
     // lengths to 4 significant digits of the diagram's scale (the largest |V_n|, |P_i|),
