@@ -351,3 +351,36 @@ def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path,
         assert not page.errors, page.errors
     finally:
         page.close()
+
+
+def test_phone_board_controls_cover_no_point_or_label(browser: Any, page_path: Path) -> None:
+    """At 390×844 JSXGraph's zoom and pan bar (– o + ← ↓ ↑ →, 24 px tall glyph buttons,
+    too small to tap) lay over the bottom right of the drawing: over a point's marker or
+    label in 37 of 256 stepped states of 16 grasps.  On a phone the board is zoomed and
+    panned by touch (pinch), and "fit view" is a button: no bar there, and no marker or
+    label of the board under any control of the board (measured)."""
+    from _label_rules import overlap
+    from test_web_inset import MEASURE_BOARD, random_grasps
+
+    page = _open(browser, page_path, 390, 844)
+    try:
+        bad = []
+        for i, g in enumerate(random_grasps(12, seed=9)):
+            assert page.evaluate("p => graspcompass.set(p)", g) is None
+            page.click("#gc-fit")
+            for s in (30, 36, 42, 46):
+                page.evaluate("s => graspcompass.step(s)", s)
+                bars = page.evaluate(
+                    "[...document.querySelectorAll('#gc-board .JXG_navigation')]"
+                    ".filter(n => getComputedStyle(n).display !== 'none')"
+                    ".map(n => { const r = n.getBoundingClientRect(); "
+                    "return [r.left, r.top, r.right, r.bottom]; })"
+                )
+                for q in page.evaluate(MEASURE_BOARD)["pts"]:
+                    for bar in bars:
+                        if overlap(q["m"], bar) > 0 or (q["t"] and overlap(q["t"], bar) > 0):
+                            bad.append(f"random {i} step {s}: {q['name']} under {bar}")
+        assert not bad, bad
+        assert not page.errors, page.errors
+    finally:
+        page.close()
