@@ -23,6 +23,8 @@ from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import write_html
 
+PRESETS = ["fig6", "table1a", "table1b", "table1c"]
+
 
 @pytest.fixture(scope="module")
 def page_path(tmp_path_factory: pytest.TempPathFactory) -> Path:
@@ -384,3 +386,21 @@ def test_phone_board_controls_cover_no_point_or_label(browser: Any, page_path: P
         assert not page.errors, page.errors
     finally:
         page.close()
+
+
+def test_grasp_menu_names_the_preset_the_page_shows(
+    browser: Any, tmp_path_factory: pytest.TempPathFactory
+) -> None:
+    """The page of a preset opened with its title as heading and "(parameters)" in the
+    grasp menu, as if the grasp were one's own; the menu now names the preset (the same
+    parameters and object), and stays at "(parameters)" for a grasp of one's own."""
+    folder = tmp_path_factory.mktemp("menus")
+    own = Grasp(1.1, 0.7, 0.4, "pi/2", "5*pi/12", mu1=0.8, mu2=1.1)
+    for name, grasp in [*((p, Grasp.preset(p)) for p in PRESETS), ("", own)]:
+        path = write_html(internal_force_diagram(grasp), folder / f"{name or 'own'}.html")
+        page = _open(browser, path, 1280, 800)
+        try:
+            assert page.input_value("#gc-preset") == name, name
+            assert not page.errors, page.errors
+        finally:
+            page.close()

@@ -437,6 +437,15 @@ window.GCControls = function (ctx) {
     refresh(t0, null);
     fit();
   });
+  // the page of a preset names it in the menu: the same parameters (to rounding) and object
+  const same = (a, b) => Math.abs(a - b) <= 1e-12 * Math.max(1, Math.abs(a), Math.abs(b));
+  for (const [key, pr] of Object.entries(DATA.presets)) {
+    const params = Object.keys(pr.params).every((k) => same(pr.params[k], DATA.params[k]));
+    if (params && JSON.stringify(pr.shape) === JSON.stringify(DATA.shape)) {
+      presetBox.value = key;
+      break;
+    }
+  }
 
   Object.assign(ctx, {
     refresh, setStep, stopPlay, play, fit, viewBox, userChanged, roundedMessage,
