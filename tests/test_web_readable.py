@@ -23,8 +23,6 @@ from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import write_html
 
-PRESETS = ["fig6", "table1a", "table1b", "table1c"]
-
 
 @pytest.fixture(scope="module")
 def page_path(tmp_path_factory: pytest.TempPathFactory) -> Path:
@@ -320,9 +318,9 @@ def test_invalid_drag_keeps_the_last_grasp_and_rounds(fresh: Any) -> None:
 def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path, viewport) -> None:
     """The message of an invalid drag lay over the board: on a phone over 29-46 % of it,
     hiding up to 24 markers of the last valid grasp, P1 and P2 among them (the points to
-    drag back).  Now, for drags below the x-axis and past the other contact, on three
-    presets: the message is whole on the screen and no marker or label of the board lies
-    under it (the browser's layout)."""
+    drag back).  Now, for drags below the x-axis and past the other contact, on
+    Fig. 6 and Table I(c): the message is whole on the screen and no marker or label of
+    the board lies under it (the browser's layout)."""
     from _label_rules import overlap
     from test_web_inset import MEASURE_BOARD
 
@@ -331,28 +329,48 @@ def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path,
     try:
         report = []
         side = page.evaluate("graspcompass.boardRect()[2] - graspcompass.boardRect()[0]")
-        for preset in ("fig6", "table1a", "table1c"):
-            for name, dx, dy in (("P1", 0, 0.5), ("P1", -0.8, 0), ("P2", 0.8, 0)):
-                page.select_option("#gc-preset", preset)
-                page.click("#gc-fit")
-                _drag(page, name, dx * side, dy * side)
-                where = f"{preset}: {name} by ({dx}, {dy}) of the board"
-                assert page.evaluate("graspcompass.error()"), where
-                box = page.evaluate(
-                    "(() => { const r = document.getElementById('gc-error')"
-                    ".getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()"
-                )
-                if not (0 <= box[0] and box[2] <= w and 0 <= box[1] and box[3] <= h):
-                    report.append(f"{where}: the message {box} is not whole on the screen")
-                for p in page.evaluate(MEASURE_BOARD)["pts"]:
-                    if overlap(p["m"], box) > 0:
-                        report.append(f"{where}: the marker of {p['name']} under the message")
-                    if p["t"] is not None and overlap(p["t"], box) > 0:
-                        report.append(f"{where}: the label {p['text']} under the message")
+        drags = (("fig6", "P1", 0, 0.5), ("fig6", "P2", 0.8, 0), ("table1c", "P1", -0.8, 0))
+        for preset, name, dx, dy in drags:
+            page.select_option("#gc-preset", preset)
+            page.click("#gc-fit")
+            _drag(page, name, dx * side, dy * side)
+            where = f"{preset}: {name} by ({dx}, {dy}) of the board"
+            assert page.evaluate("graspcompass.error()"), where
+            box = page.evaluate(
+                "(() => { const r = document.getElementById('gc-error')"
+                ".getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; })()"
+            )
+            if not (0 <= box[0] and box[2] <= w and 0 <= box[1] and box[3] <= h):
+                report.append(f"{where}: the message {box} is not whole on the screen")
+            for p in page.evaluate(MEASURE_BOARD)["pts"]:
+                if overlap(p["m"], box) > 0:
+                    report.append(f"{where}: the marker of {p['name']} under the message")
+                if p["t"] is not None and overlap(p["t"], box) > 0:
+                    report.append(f"{where}: the label {p['text']} under the message")
         assert not report, report
         assert not page.errors, page.errors
     finally:
         page.close()
+
+
+#: For each grasp (set, then "fit view") at each step: the rectangles of the board's own
+#: controls shown (JSXGraph's navigation bar) and the board's points (MEASURE_BOARD).
+BOARD_CONTROLS = """([grasps, steps, board]) => {
+  const measure = eval(board), out = [];
+  for (const g of grasps) {
+    if (graspcompass.set(g) !== null) throw new Error('not a grasp: ' + JSON.stringify(g));
+    graspcompass.fit();
+    for (const s of steps) {
+      graspcompass.step(s);
+      const bars = [...document.querySelectorAll('#gc-board .JXG_navigation')]
+        .filter((n) => getComputedStyle(n).display !== 'none')
+        .map((n) => { const r = n.getBoundingClientRect();
+          return [r.left, r.top, r.right, r.bottom]; });
+      out.push({s, bars, pts: measure().pts});
+    }
+  }
+  return out;
+}"""
 
 
 def test_phone_board_controls_cover_no_point_or_label(browser: Any, page_path: Path) -> None:
@@ -367,21 +385,14 @@ def test_phone_board_controls_cover_no_point_or_label(browser: Any, page_path: P
     page = _open(browser, page_path, 390, 844)
     try:
         bad = []
-        for i, g in enumerate(random_grasps(12, seed=9)):
-            assert page.evaluate("p => graspcompass.set(p)", g) is None
-            page.click("#gc-fit")
-            for s in (30, 36, 42, 46):
-                page.evaluate("s => graspcompass.step(s)", s)
-                bars = page.evaluate(
-                    "[...document.querySelectorAll('#gc-board .JXG_navigation')]"
-                    ".filter(n => getComputedStyle(n).display !== 'none')"
-                    ".map(n => { const r = n.getBoundingClientRect(); "
-                    "return [r.left, r.top, r.right, r.bottom]; })"
-                )
-                for q in page.evaluate(MEASURE_BOARD)["pts"]:
-                    for bar in bars:
-                        if overlap(q["m"], bar) > 0 or (q["t"] and overlap(q["t"], bar) > 0):
-                            bad.append(f"random {i} step {s}: {q['name']} under {bar}")
+        grasps = random_grasps(6, seed=9)
+        states = page.evaluate(BOARD_CONTROLS, [grasps, [36, 46], MEASURE_BOARD])
+        assert len(states) == 2 * len(grasps)
+        for k, st in enumerate(states):
+            for q in st["pts"]:
+                for bar in st["bars"]:
+                    if overlap(q["m"], bar) > 0 or (q["t"] and overlap(q["t"], bar) > 0):
+                        bad.append(f"random {k // 2} step {st['s']}: {q['name']} under {bar}")
         assert not bad, bad
         assert not page.errors, page.errors
     finally:
@@ -396,7 +407,11 @@ def test_grasp_menu_names_the_preset_the_page_shows(
     parameters and object), and stays at "(parameters)" for a grasp of one's own."""
     folder = tmp_path_factory.mktemp("menus")
     own = Grasp(1.1, 0.7, 0.4, "pi/2", "5*pi/12", mu1=0.8, mu2=1.1)
-    for name, grasp in [*((p, Grasp.preset(p)) for p in PRESETS), ("", own)]:
+    for name, grasp in [
+        ("fig6", Grasp.preset("fig6")),
+        ("table1c", Grasp.preset("table1c")),
+        ("", own),
+    ]:
         path = write_html(internal_force_diagram(grasp), folder / f"{name or 'own'}.html")
         page = _open(browser, path, 1280, 800)
         try:
