@@ -30,6 +30,7 @@ import pytest
 
 from _browser import chromium
 from _label_rules import cover_faults, overlap
+from _ticks import MEASURE_TICKS, tick_faults
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import to_html
 
@@ -222,3 +223,136 @@ def test_fig6_centre_is_named_at_1280x800_and_on_a_phone(browser: Any, page_path
             assert {"P2x", "X4", "P1x", "V4", "V3", "X3", "Y3"} <= _names(texts), texts
         finally:
             page.close()
+
+
+#: Per inset shown, every drawn element of its copy whose presentation (stroke, fill, their
+#: width and dashes, display) differs from the board's element it copies.
+STALE_COPY = """() => {
+  const bad = [];
+  for (const copy of document.querySelectorAll('figure.gc-inset:not([hidden]) .gc-inset-copy')) {
+    for (const n of copy.querySelectorAll('[id^="gc-inset-gc-board"]')) {
+      const src = document.getElementById(n.id.slice('gc-inset-'.length));
+      if (!src) continue;
+      for (const a of ['stroke', 'fill', 'stroke-width', 'stroke-dasharray', 'display']) {
+        if (src.getAttribute(a) !== n.getAttribute(a)) {
+          bad.push(`${n.id} ${a}: board ${src.getAttribute(a)}, inset ${n.getAttribute(a)}`);
+        }
+      }
+    }
+  }
+  return bad;
+}"""
+
+
+def test_inset_copies_the_board_as_it_stays(browser: Any, page_path: Path) -> None:
+    """Stepping on, the current step's objects are highlighted (red, wider) and the last
+    step's drawn plain again: the inset, a copy of the board, shows the same colours and
+    widths once the page is idle (JSXGraph set colours 1 ms after a redraw, and the inset
+    copied the board in between: it kept the last step's highlight, about every other
+    step)."""
+    page = browser.new_page(viewport={"width": 1280, "height": 800})
+    try:
+        page.goto(page_path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        report = []
+        shown = 0
+        cases: list[tuple[str, dict[str, float] | None]] = [("fig6", None)]
+        cases += [(f"random {i}", g) for i, g in enumerate(random_grasps(1, seed=77))]
+        for name, params in cases:
+            if params is None:
+                page.select_option("#gc-preset", name)
+            else:
+                assert page.evaluate("p => graspcompass.set(p)", params) is None
+            page.click("#gc-fit")
+            for s in range(12, 47, 6):
+                page.evaluate("s => graspcompass.step(s)", s)
+                # idle: the frames that redraw the inset, and any timer of the board's
+                page.evaluate(
+                    "() => new Promise(r => requestAnimationFrame(() => "
+                    "requestAnimationFrame(() => setTimeout(r, 10))))"
+                )
+                shown += page.evaluate("document.querySelectorAll('.gc-inset-copy').length")
+                report += [f"{name}@{s}: {d}" for d in page.evaluate(STALE_COPY)]
+        assert shown >= 8, shown  # the insets were there to compare
+        assert not report, f"{len(report)} differences: {report[:10]}"
+    finally:
+        page.close()
+
+
+#: Step by step in one call: per step, the board's points and the insets' (MEASURE_BOARD,
+#: MEASURE_INSET, run as drawn right after the step, with no frame in between), the tick
+#: numbers (MEASURE_TICKS) and the protocol's steps whose objects the page draws.
+STEPPED = """([steps, board, inset, ticks]) => {
+  const measureBoard = eval(board), measureInset = eval(inset), measureTicks = eval(ticks);
+  return steps.map((s) => {
+    graspcompass.step(s);
+    const drawn = graspcompass.steps.map((x) => x.name).filter((n) => graspcompass.drawn(n));
+    return {s, board: measureBoard(), insets: measureInset(), ticks: measureTicks(), drawn};
+  });
+}"""
+
+
+@pytest.mark.parametrize("viewport", VIEWPORTS, ids=lambda v: f"{v[0]}x{v[1]}")
+def test_stepping_keeps_the_rules_and_shows_nothing_before_it_is_made(
+    browser: Any, page_path: Path, viewport
+) -> None:
+    """Every step, as a user steps through the protocol (the buttons call the same
+    ``step``), on the board and in the insets: no label over a label or a marker, each
+    nearer its own point; nothing drawn and no label naming a point before its step (a
+    label of coinciding points only once all of them are made); the axes' numbers give
+    way to the labels and markers (tests/_ticks.py; before, 1310 tick numbers over a
+    label or marker at 1280x800 over the presets and 6 random grasps), after a zoom too.
+    Measured at once after each step: the picture a step draws is the one that stays (a
+    marker left at its highlight size by a CSS transition put 709 labels over their own
+    markers at 1280x800 and 3323 on a phone, over 4 presets and 12 random grasps)."""
+    names = [s.name for s in internal_force_diagram(Grasp.preset("fig6")).steps]
+    page = browser.new_page(viewport={"width": viewport[0], "height": viewport[1]})
+    try:
+        page.goto(page_path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        report: list[str] = []
+        labelled = 0
+        cases: list[tuple[str, dict[str, float] | None]] = [(p, None) for p in PRESETS]
+        cases += [(f"random {i}", g) for i, g in enumerate(random_grasps(2, seed=515))]
+        for k, (name, params) in enumerate(cases):
+            if params is None:
+                page.select_option("#gc-preset", name)
+            else:
+                assert page.evaluate("p => graspcompass.set(p)", params) is None
+            page.click("#gc-fit")
+            steps = list(range(k % 6, len(names), 6))  # every sixth step, each from its own
+            measures = [steps, MEASURE_BOARD, MEASURE_INSET, MEASURE_TICKS]
+            for st in page.evaluate(STEPPED, measures):
+                where = f"{name} step {st['s']}"
+                report += tick_faults([st["ticks"]], name)
+                made = set(names[: st["s"] + 1])
+                report += faults(st["board"], f"{where} board")
+                for inset in st["insets"]:
+                    report += faults(inset, f"{where} {inset['id']}")
+                early = set(st["drawn"]) - made
+                if early:
+                    report.append(f"{where}: drawn before they are made: {sorted(early)}")
+                texts = [p["text"] for p in st["board"]["pts"] if p["t"] is not None]
+                texts += [p["text"] for i in st["insets"] for p in i["pts"] if p["t"] is not None]
+                labelled += len(texts)
+                for text in texts:
+                    named = {n.replace("OM", "O_M") for n in _names([text])} - {"H"}
+                    if not named <= made:
+                        report.append(f"{where}: label {text} names {sorted(named - made)}")
+        # zoomed in on the crowded centre of Fig. 6: the labels are placed again, and the
+        # tick numbers give way again, after the frame that redraws the board
+        page.select_option("#gc-preset", "fig6")
+        page.click("#gc-fit")
+        page.evaluate("() => graspcompass.step(-1)")
+        final = page.evaluate(MEASURE_TICKS)
+        assert sum(t["shown"] for t in final["ticks"]) >= 4, final["ticks"]  # numbers left
+        page.evaluate("() => graspcompass.board.zoomIn(0, 0)")
+        page.evaluate(
+            "() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))"
+        )
+        report += tick_faults([page.evaluate(MEASURE_TICKS)], "fig6 zoomed")
+        report += faults(page.evaluate(MEASURE_BOARD), "fig6 zoomed board")
+        assert labelled > 150, labelled
+        assert not report, f"{len(report)} faults: {report[:12]}"
+    finally:
+        page.close()

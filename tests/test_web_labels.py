@@ -32,7 +32,7 @@ from hypothesis import strategies as st
 
 from _browser import chromium
 from graspcompass import Grasp, internal_force_diagram, labelling
-from graspcompass.export.html import page_data, to_html, web_file
+from graspcompass.export.html import EXPLORER_SCRIPTS, page_data, to_html, web_file
 from graspcompass.palette import PALETTE
 from graspcompass.scene.layout import label_tex
 
@@ -41,7 +41,7 @@ PRESETS = ["fig6", "table1a", "table1b", "table1c"]
 
 # -- without a browser --------------------------------------------------------------------------
 def test_page_script_has_no_colour_of_its_own() -> None:
-    js = web_file("explorer.js")
+    js = "\n".join(web_file(name) for name in EXPLORER_SCRIPTS)
     assert not re.findall(r"#[0-9a-fA-F]{3}(?:[0-9a-fA-F]{3})?\b", js)
     used = set(re.findall(r"COL\.(\w+)", js)) | set(re.findall(r'COL\["(\w+)"\]', js))
     used |= {f"circle{n}" for n in range(1, 5)} if 'COL["circle" + n]' in js else set()
@@ -353,7 +353,10 @@ def test_page_places_as_python_after_drags_and_zooms(explorer: Any) -> None:
 def test_page_near_a_bound_of_condition_1(explorer: Any) -> None:
     """φ1 + ξ1 → π/2: |V_1| grows like 1/cos(φ1 + ξ1) and its circle becomes a huge
     polygon on the board.  The labels still come (as labelling.place places them), and
-    within rounding of the bound the page shows the refusal instead."""
+    within rounding of the bound the page shows the refusal instead.  From Table I(a), not
+    from whatever grasp an earlier test left (alone, from Fig. 6, the crowd about O goes
+    to the insets and the board keeps five labels)."""
+    explorer.select_option("#gc-preset", "table1a")
     explorer.evaluate("() => { graspcompass.step(-1); graspcompass.fit(); }")
     errors = []
     for eps in (1e-3, 1e-6, 1e-9, 1e-11, 1e-13, 0.0):
@@ -462,7 +465,7 @@ def test_page_labels_name_their_points_in_chromium(explorer: Any) -> None:
                 report[f"{preset}@{i}"] = found
     explorer.evaluate("() => { graspcompass.step(-1); }")
     shown = 0
-    for g in random_grasps(12, seed=2323):
+    for g in random_grasps(6, seed=2323):
         p = {k: float(v) for k, v in g.params.items()}
         err = explorer.evaluate(
             "p => { const e = graspcompass.set(p); graspcompass.fit(); return e; }",
@@ -483,7 +486,7 @@ def test_page_labels_name_their_points_in_chromium(explorer: Any) -> None:
         found = faults([{"panel": str(p), "pts": pts}])
         if found:
             report[str(p)] = found
-    assert shown >= 12 * 6
+    assert shown >= 6 * 6
     assert not report, report
 
 
@@ -500,28 +503,3 @@ def test_page_leaves_out_few_labels(explorer: Any) -> None:
         paper = [lab for lab in labels if lab["names"][0] not in ("H", "worst", "best")]
         assert len(paper) >= 8
         assert sum(not lab["shown"] for lab in paper) <= 2, (preset, paper)
-
-
-def test_phone_layout_centre_labels_do_not_pile_up(browser: Any, tmp_path: Any) -> None:
-    """At 390×844 (a phone) the final picture of each preset keeps the rules too, measured
-    in the browser: the centre's labels neither cover each other nor the markers."""
-    from test_svg_labels_browser import faults
-
-    path = tmp_path / "explorer.html"
-    path.write_text(to_html(internal_force_diagram(Grasp.preset("fig6"))), encoding="utf-8")
-    page = browser.new_page(viewport={"width": 390, "height": 844})
-    try:
-        page.goto(path.as_uri())
-        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
-        for preset in PRESETS:
-            page.evaluate(
-                "p => { const box = document.getElementById('gc-preset'); "
-                "box.value = p; box.dispatchEvent(new Event('change')); "
-                "graspcompass.step(-1); graspcompass.fit(); }",
-                preset,
-            )
-            pts = page.evaluate("graspcompass.labelRects()")
-            assert sum(q["t"] is not None for q in pts) >= 8, preset
-            assert not faults([{"panel": preset, "pts": pts}])
-    finally:
-        page.close()

@@ -65,7 +65,7 @@ from ..scene.palette import PALETTE
 if TYPE_CHECKING:
     from ..construction import Construction
 
-__all__ = ["WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
+__all__ = ["EXPLORER_SCRIPTS", "WEB_FILES", "page_data", "to_html", "web_file", "write_html"]
 
 #: The files of ``graspcompass/export/_web`` that the page is made of (and the licences).
 WEB_FILES = (
@@ -76,10 +76,19 @@ WEB_FILES = (
     "jsxgraph.min.js.LICENSE.txt",
     "labelling.js",
     "inset.js",
+    "model.js",
+    "board.js",
+    "placement.js",
+    "controls.js",
     "explorer.js",
     "explorer.css",
     "explorer.html",
 )
+
+#: The modules of the page's script, in the order the page runs them (one ``<script>``):
+#: the model (closed form, condition (1)), the board, what each step shows and the label
+#: places, the controls, and ``explorer.js``, the state and the API that wire them.
+EXPLORER_SCRIPTS = ("model.js", "board.js", "placement.js", "controls.js", "explorer.js")
 
 #: Version of the vendored JSXGraph (npm package ``jsxgraph``).
 JSXGRAPH_VERSION = "1.13.3"
@@ -201,7 +210,7 @@ def to_html(construction: Construction, title: str | None = None) -> str:
     data = page_data(construction, title)
     scripts = {
         "LABELLING_JS": web_file("labelling.js") + "\n" + web_file("inset.js"),
-        "EXPLORER_JS": web_file("explorer.js"),
+        "EXPLORER_JS": "\n".join(web_file(name) for name in EXPLORER_SCRIPTS),
     }
     return _fill_page(web_file("explorer.html"), data, scripts)
 

@@ -9,7 +9,7 @@
  *
  * The copy is the board's own SVG (cloned after each update, its text dropped): what the
  * inset shows is what the board shows, step by step.  GCInset.create(board, holder) gives
- * {show(region, points, labels), hide(), rects(), zoom}; see explorer.js (placeLabels).
+ * {show(region, points, labels), hide(), rects(), zoom}; see placement.js (placeLabels).
  */
 (function (root) {
   "use strict";
