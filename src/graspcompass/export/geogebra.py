@@ -14,10 +14,13 @@ added once both sides exist), V_n by compass transfer (O_M X_n carried to O and
 reversed, ``Mirror[Translate[X_n, Vector[O_M, O]], O]``, and ``Mirror[Y_n, O]``, each
 on its ``Circle`` about O; V_n where the perpendiculars to the axes there meet), the
 four circles and the envelope
-``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25)).  Each object carries its
+``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25), with k_grasp in short hidden
+functions, one line each: ``k_n(t) = x(V_n) sin(t) - y(V_n) cos(t)`` (32), the larger
+of two, ``kg(t)`` the largest and 0).  Each object carries its
 step's caption (``<caption>``), shown in GeoGebra's construction protocol, whose
 navigation bar (play, protocol button) is switched on; the key steps (V_n, the
-circles, the envelope) are breakpoints of the protocol's navigation.  Labels are
+circles, the envelope) are breakpoints of the protocol's navigation, which opens on the
+last step (the whole construction).  Labels are
 the step names, except ``x-axis`` -> ``axisX``,
 ``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.  The view is the one view box
 of every picture (:func:`graspcompass.layout.view_box`), the colours the one palette
