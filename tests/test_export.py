@@ -445,6 +445,8 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
         "break point",
         "envelope",
         "friction cone",
+        "compass arcs",
+        "right angle",
     ):
         assert entry in text
     if shutil.which("pdftoppm"):  # the page as a picture: something is drawn on it
@@ -452,6 +454,39 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
             ["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path, check=True, timeout=60
         )
         assert list(tmp_path.glob("page*.png"))
+
+
+def _page_size(pdf: Path) -> tuple[float, float]:
+    """The page's size in points, as pdfinfo reads it."""
+    info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, timeout=60)
+    m = re.search(r"Page size:\s+([\d.]+) x ([\d.]+) pts", info.stdout)
+    assert m, info.stdout
+    return float(m[1]), float(m[2])
+
+
+@NEEDS_TEX
+@pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="pdfinfo (poppler-utils) not found")
+def test_tikz_uses_the_standalone_class_where_installed(fig6, tmp_path):
+    """The standalone page is made by the ``standalone`` class where TeX has it, and by
+    ``article`` with the page cut to the same box where not (Debian's texlive-latex-base):
+    the same page either way, 4 pt round the box, no overfull box, nothing added to the
+    left of the box by the class's horizontal mode (line ends)."""
+    text = to_tikz(fig6)
+    assert text.count("\\documentclass") == 2  # one of two, by \IfFileExists
+    sizes = {}
+    for name, which in (("with", "standalone.cls"), ("without", "no-such-class-here.cls")):
+        tex = tmp_path / f"{name}.tex"
+        tex.write_text(text.replace("{standalone.cls}", "{" + which + "}", 1), encoding="utf-8")
+        _pdflatex(tex)
+        log = tex.with_suffix(".log").read_text("latin-1")
+        assert "Overfull" not in log and "Underfull" not in log
+        has_class = subprocess.run(["kpsewhich", "standalone.cls"], capture_output=True).stdout
+        if name == "with" and has_class.strip():
+            assert "Document Class: standalone" in log
+        if name == "without":
+            assert "Document Class: standalone" not in log
+        sizes[name] = _page_size(tex.with_suffix(".pdf"))
+    assert sizes["with"] == pytest.approx(sizes["without"], abs=0.5)
 
 
 @NEEDS_TEX
