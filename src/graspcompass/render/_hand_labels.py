@@ -110,14 +110,15 @@ def mend_labels(
         {id(t): t for t in labels if t.get_visible() and t.axes is ax and t.get_text()}.values()
     )
     removed: list[Annotation] = []
+    boxes = {id(t): t.get_window_extent(renderer) for t in live}  # as placed, kept up to date
 
     def faults(t: Annotation) -> int:
-        bb = t.get_window_extent(renderer)
+        bb = boxes[id(t)] = t.get_window_extent(renderer)
         own = ax.transData.transform(t.xy)
         d_own = _near_box(own, bb)
         wide = bb.expanded(1.05, 1.1)
         n = int(_hits(wide, cloud)) + sum(wide.overlaps(o) for o in fixed)
-        n += sum(bb.overlaps(u.get_window_extent(renderer)) for u in live if u is not t)
+        n += sum(bb.overlaps(boxes[id(u)]) for u in live if u is not t)
         for p, r in marks:
             if math.hypot(*(p - own)) > 0.5:  # another point's marker
                 d = _near_box(p, bb)
@@ -150,6 +151,7 @@ def mend_labels(
                 moved = True
                 continue
             put(t, best[1])
+            boxes[id(t)] = t.get_window_extent(renderer)
             moved |= best[1] != start
         near = False  # the first pass seats them; later ones only mend
         if not moved:
