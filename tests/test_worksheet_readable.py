@@ -259,3 +259,15 @@ def test_solution_legend_shows_every_line_as_drawn(fig6: Worksheet) -> None:
     assert side in shown and "#000000" in shown
     for want in ("the object", "right angle", "compass arcs", "extended", "given"):
         assert any(want in e for e in entries), (want, list(entries))
+
+
+def test_page1_names_every_given_point() -> None:
+    """With the feet given (--given feet), page 1 draws P1x, P2x and O_M and names them
+    (it drew their markers unnamed: the cut of the givens was made by position while the
+    picture cuts by protocol index); Fig. 6 has O_M = O (x1 = x2), one label for both."""
+    ws = worksheet_pages(Grasp.preset("fig6"), steps="V3", given="feet")
+    labels, marks = _drawn_labels(ws.axes[0])
+    texts = sorted(t for t, _, _ in labels)
+    assert texts == ["$O = O_M$", "$P_1$", "$P_2$", "$P_{1x}$", "$P_{2x}$"], texts
+    assert len({tuple(np.round(p, 3)) for p, _ in marks}) == 5  # O = O_M, P1, P2, P1x, P2x
+    assert _rule_faults(ws.axes[0]) == []

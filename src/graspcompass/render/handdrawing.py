@@ -58,7 +58,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Annotation, Text
 
-from ..scene.layout import numeric_objects, view_box
+from ..scene.layout import numeric_objects, share_numeric, view_box
 from . import _hand_extra as extra
 from ._hand_page import (
     _cones,
@@ -317,8 +317,17 @@ def worksheet_pages(
         bars.append(_header(fig, head, [title, *_params_lines(c.grasp)], scale))
         ax = _place_axes(fig, box, scale, plan.area)
         theme = PAPER_THEME if page == 0 else DEFAULT_THEME
+        # page 1: the given steps alone, labelled in this box (a cut of ``sub`` at their
+        # number left the feet unnamed: the scene cuts by protocol index, ``sub`` keeps
+        # the protocol's indices with the givens first)
+        givens = Construction(sub.steps[: len(gnames)], sub.grasp, ())
+        share_numeric(givens, num)  # computed once per worksheet
         out = draw_construction(
-            sub, step=len(gnames) - 1 if page == 0 else None, ax=ax, theme=theme, num=num
+            sub if page == 1 else givens,
+            ax=ax,
+            theme=theme,
+            num=num,
+            box=box if page == 0 else None,
         )
         for key in ("cone1", "cone2"):
             for a in out.pop(key, []):
