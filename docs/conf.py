@@ -316,7 +316,10 @@ def _generate(app: object) -> None:
 # ``graspcompass.Point``): the "[docs]" link of the source page then points at an id that
 # page does not have (33 broken anchors).  The module name of a source's links is the one
 # under which most of its objects are documented, each backlink goes to a page documenting
-# the object under it, and is dropped when there is none.
+# the object under it.  An object documented only under another module name keeps its
+# block on the source page (the "[source]" link of its page points there: dropping it broke
+# 9 of those links) and its backlink goes to a page documenting it, whose signature gets
+# the id the backlink asks for as a second id.
 def _documented(app: Any, doctree: Any) -> None:
     from sphinx import addnodes
     from sphinx.ext.viewcode import _get_full_modname
@@ -344,11 +347,14 @@ def _merge_documented(app: Any, env: Any, docnames: Any, other: Any) -> None:
             mine.setdefault(key, {}).setdefault(mod, doc)
 
 
-def _fix_backlinks(app: Any) -> list[Any]:
+def _fix_backlinks(app: Any, env: Any) -> list[str]:
+    """After every page is read: each source's module name and each object's backlink
+    page; the pages that must carry a second id (``env._gc_alias``) are written again."""
     from collections import Counter
 
-    seen = getattr(app.env, "_gc_documented", {})
-    modules = getattr(app.env, "_viewcode_modules", {})
+    seen = getattr(env, "_gc_documented", {})
+    modules = getattr(env, "_viewcode_modules", {})
+    alias: dict[str, set[tuple[str, str]]] = {}
     for src, entry in list(modules.items()):
         if not entry:
             continue
@@ -359,12 +365,29 @@ def _fix_backlinks(app: Any) -> list[Any]:
             refname = max(votes, key=lambda m: (votes[m], m == src))
             modules[src] = (code, tags, used, refname)
         for name in list(used):
-            page = seen.get((src, name), {}).get(refname)
-            if page is None:
-                del used[name]
-            else:
+            where = seen.get((src, name), {})
+            page = where.get(refname)
+            if page is None and where:  # documented under other names only
+                mod = min(where)
+                page = where[mod]
+                alias.setdefault(page, set()).add((f"{mod}.{name}", f"{refname}.{name}"))
+            if page is not None:
                 used[name] = page
-    return []
+            # else: no page has an id for it; viewcode's own page stays
+    env._gc_alias = alias
+    return sorted(alias)
+
+
+def _alias_ids(app: Any, doctree: Any, docname: str) -> None:
+    from sphinx import addnodes
+
+    wanted = dict(getattr(app.env, "_gc_alias", {}).get(docname, ()))
+    if not wanted:
+        return
+    for sig in doctree.findall(addnodes.desc_signature):
+        for have in list(sig.get("ids", [])):
+            if have in wanted and wanted[have] not in sig["ids"]:
+                sig["ids"].append(wanted[have])
 
 
 def setup(app: object) -> dict[str, object]:
@@ -374,6 +397,8 @@ def setup(app: object) -> dict[str, object]:
     app.connect("doctree-read", _documented)  # type: ignore[attr-defined]
     app.connect("env-purge-doc", _purge_documented)  # type: ignore[attr-defined]
     app.connect("env-merge-info", _merge_documented)  # type: ignore[attr-defined]
-    # before viewcode's own html-collect-pages (priority 500) writes the source pages
-    app.connect("html-collect-pages", _fix_backlinks, priority=400)  # type: ignore[attr-defined]
+    # after every page is read, before any is written (and before viewcode's own
+    # html-collect-pages writes the source pages)
+    app.connect("env-updated", _fix_backlinks)  # type: ignore[attr-defined]
+    app.connect("doctree-resolved", _alias_ids)  # type: ignore[attr-defined]
     return {"parallel_read_safe": True, "parallel_write_safe": True}

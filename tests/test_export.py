@@ -22,7 +22,7 @@ import pytest
 import sympy as sp
 from hypothesis import HealthCheck, given, settings
 
-from conftest import PRESET_NAMES, closed_form_SC, exact_params, float_params
+from conftest import PRESET_NAMES, closed_form_SC, exact_params, float_params, k_paper
 from graspcompass import Grasp, internal_force_diagram, parse_exact
 from graspcompass.cli import _add_grasp_options
 from graspcompass.cli._export import register, run_explore, run_export
@@ -63,6 +63,10 @@ EXTRAS = {
     "cone1",
     "cone2",
     *(f"{k}V{n}{a}" for n in (1, 2, 3, 4) for k in ("", "arc") for a in "xy"),
+    # k_grasp (25) in short named functions: k_n (32), the larger of two, the largest and 0
+    *(f"k_{n}" for n in (1, 2, 3, 4)),
+    *(f"m_{i}" for i in (1, 2, 3)),
+    "kg",
 }
 ROOT_TAGS = {"gui", "euclidianView", "kernel", "construction", "algebraView", "scripting"}
 
@@ -148,6 +152,7 @@ def test_ggb_every_object_is_defined_by_a_command_in_protocol_order(fig6):
     }
     for label, how, what, args, _ in proto[7:]:
         text = " ".join(args) if how == "command" else what
+        text = text.removeprefix(f"{label}(t) = ")  # a function's definition names it
         assert not re.fullmatch(r"\(\s*-?[\d.]+\s*,\s*-?[\d.]+\s*\)", text)
         assert set(words.findall(text)) - builtins <= known, (label, text)
         known.add(label)
@@ -183,7 +188,73 @@ def test_ggb_commands_follow_the_paper_recipe(fig6):
         assert cmd == "Polygon" and arg.startswith(f"{{P{i}, P{i} + 0.6 Distance[P1, P2]")
         order = list(d)
         assert order.index(f"cone{i}") > max(order.index(f"side{n}") for n in sides)
-    assert d["kGrasp"][2] == "CurveCartesian"
+    assert d["kGrasp"][2:4] == (
+        "CurveCartesian",
+        ("kg(t) sin(t)", "-kg(t) cos(t)", "t", "0", "2 pi"),
+    )
+
+
+def _ggb_functions(root: ET.Element) -> dict[str, str]:
+    """label -> the right-hand side of each function the .ggb defines (``f(t) = ...``)."""
+    out = {}
+    for e in root.find("construction").findall("expression"):
+        m = re.fullmatch(r"(\w+)\(t\) = (.+)", e.attrib["exp"])
+        if m:
+            assert m[1] == e.attrib["label"]
+            out[m[1]] = m[2]
+    return out
+
+
+@pytest.mark.parametrize("params", [None, (1.1, 0.7, 0.4, 1.2, 1.4, 0.9, 1.1)])
+def test_ggb_envelope_is_short_named_functions_of_k_grasp(fig6, params):
+    """k_grasp (25) in GeoGebra: one short line per function (the envelope was one
+    formula of 3 kB), k_n(t) = x(V_n) sin t - y(V_n) cos t (32), the larger of two, and
+    kg = max(..., 0); evaluated here with the V_n of the closed form (28)-(39), kg equals
+    max(k1, ..., k4, 0) of eqs. (18)-(21) at every θ."""
+    c = (
+        fig6
+        if params is None
+        else internal_force_diagram(Grasp(*params[:5], mu1=params[5], mu2=params[6]))
+    )
+    root = _ggb_root(to_ggb(c))
+    funcs = _ggb_functions(root)
+    assert set(funcs) == {"k_1", "k_2", "k_3", "k_4", "m_1", "m_2", "m_3", "kg"}
+    assert all(len(body) < 60 for body in funcs.values()), funcs
+    for el in root.find("construction"):  # no definition is a giant formula
+        for inp in el.findall("input"):
+            assert all(len(v) < 250 for v in inp.attrib.values()), inp.attrib
+    g = c.grasp
+    x1, x2, y = (float(g.params[k]) for k in ("x1", "x2", "y"))
+    phi = [float(g.params[k]) for k in ("phi1", "phi2")]
+    xi = [float(g.params[k]) for k in ("xi1", "xi2")]
+    S, C = closed_form_SC(x1, x2, y, *phi, math.tan(xi[0]), math.tan(xi[1]), lib=np)
+    V = {f"V{n}": (float(S[n - 1]), float(C[n - 1])) for n in (1, 2, 3, 4)}
+    mu = [math.tan(v) for v in xi]
+    for theta in np.linspace(0, 2 * math.pi, 37):
+        env: dict = {}  # each function's value at this θ, in protocol order
+        for label, body in funcs.items():
+            expr = re.sub(r"\b(x|y)\((V\d)\)", lambda m: repr(V[m[2]][m[1] == "y"]), body)
+            expr = re.sub(r"\b(k_\d|m_\d|kg)\(t\)", lambda m: f"env[{m[1]!r}]", expr)
+            expr = re.sub(r"(\d)\s+(sin|cos)\b", r"\1 * \2", expr)  # GeoGebra's "a sin(t)"
+            env[label] = eval(  # the .ggb text with the test's own numbers and names only
+                expr,
+                {"__builtins__": {}},
+                {"sin": math.sin, "cos": math.cos, "abs": abs, "t": theta, "env": env},
+            )
+        k = k_paper(theta, x1, x2, y, *phi, *mu, lib=math)  # eqs. (18)-(21), μ form
+        assert env["kg"] == pytest.approx(max(*k, 0.0), abs=1e-9)
+
+
+def test_ggb_protocol_navigation_opens_on_the_whole_construction(fig6):
+    """GeoGebra 4 shows the navigation bar only with show="true" and, at consStep -1,
+    none of the construction: the bar is shown on the last step; angle sliders move by 1°."""
+    root = _ggb_root(to_ggb(fig6))
+    bar = root.find("gui/consProtNavigationBar")
+    steps = len(root.find("construction").findall("element"))
+    assert bar.attrib["show"] == "true" and bar.attrib["consStep"] == str(steps - 1)
+    for el in root.find("construction").findall("element"):
+        if el.attrib["type"] == "angle":
+            assert float(el.find("animation").attrib["step"]) == pytest.approx(math.pi / 180)
 
 
 def _split_pair(text: str) -> tuple[str, str]:
@@ -377,6 +448,8 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
         "break point",
         "envelope",
         "friction cone",
+        "compass arcs",
+        "right angle",
     ):
         assert entry in text
     if shutil.which("pdftoppm"):  # the page as a picture: something is drawn on it
@@ -384,6 +457,39 @@ def test_tikz_standalone_page_has_title_and_legend_and_no_overfull_box(title, tm
             ["pdftoppm", "-r", "30", "-png", pdf.name, "page"], cwd=tmp_path, check=True, timeout=60
         )
         assert list(tmp_path.glob("page*.png"))
+
+
+def _page_size(pdf: Path) -> tuple[float, float]:
+    """The page's size in points, as pdfinfo reads it."""
+    info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, timeout=60)
+    m = re.search(r"Page size:\s+([\d.]+) x ([\d.]+) pts", info.stdout)
+    assert m, info.stdout
+    return float(m[1]), float(m[2])
+
+
+@NEEDS_TEX
+@pytest.mark.skipif(shutil.which("pdfinfo") is None, reason="pdfinfo (poppler-utils) not found")
+def test_tikz_uses_the_standalone_class_where_installed(fig6, tmp_path):
+    """The standalone page is made by the ``standalone`` class where TeX has it, and by
+    ``article`` with the page cut to the same box where not (Debian's texlive-latex-base):
+    the same page either way, 4 pt round the box, no overfull box, nothing added to the
+    left of the box by the class's horizontal mode (line ends)."""
+    text = to_tikz(fig6)
+    assert text.count("\\documentclass") == 2  # one of two, by \IfFileExists
+    sizes = {}
+    for name, which in (("with", "standalone.cls"), ("without", "no-such-class-here.cls")):
+        tex = tmp_path / f"{name}.tex"
+        tex.write_text(text.replace("{standalone.cls}", "{" + which + "}", 1), encoding="utf-8")
+        _pdflatex(tex)
+        log = tex.with_suffix(".log").read_text("latin-1")
+        assert "Overfull" not in log and "Underfull" not in log
+        has_class = subprocess.run(["kpsewhich", "standalone.cls"], capture_output=True).stdout
+        if name == "with" and has_class.strip():
+            assert "Document Class: standalone" in log
+        if name == "without":
+            assert "Document Class: standalone" not in log
+        sizes[name] = _page_size(tex.with_suffix(".pdf"))
+    assert sizes["with"] == pytest.approx(sizes["without"], abs=0.5)
 
 
 @NEEDS_TEX

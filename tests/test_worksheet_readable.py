@@ -157,3 +157,117 @@ def test_numeric_objects_once_per_worksheet(monkeypatch: pytest.MonkeyPatch) -> 
     monkeypatch.setattr(layout, "_numeric", counted)
     worksheet_pages(Grasp.preset("table1c"))
     assert len(calls) == 1
+
+
+# --- the labels as drawn: each names its point (issue 23) -------------------------------------
+def _drawn_labels(ax) -> tuple[list, list]:
+    """The point labels of ``ax`` as drawn (text, box, own point, pixels) and the round
+    markers (centre, radius, pixels), measured by matplotlib's renderer: what the PDF shows."""
+    from matplotlib.text import Annotation
+
+    r = ax.figure.canvas.get_renderer()
+    labels = [
+        (t.get_text(), t.get_window_extent(r), ax.transData.transform(t.xy))
+        for t in ax.texts
+        if isinstance(t, Annotation)
+        and t.get_visible()
+        and t.get_text().startswith("$")
+        and "°" not in t.get_text()  # not a cone side's angle
+    ]
+    marks = []
+    for ln in ax.lines:
+        if ln.get_visible() and ln.get_marker() == "o" and ln.get_linestyle() in ("None", "none"):
+            xy = np.column_stack([ln.get_xdata(), ln.get_ydata()]).astype(float)
+            rad = ln.get_markersize() * ax.figure.dpi / 72 / 2
+            marks += [(p, rad) for p in ax.transData.transform(xy)]
+    return labels, marks
+
+
+def _to_box(p, bb) -> float:
+    return math.hypot(max(bb.x0 - p[0], 0, p[0] - bb.x1), max(bb.y0 - p[1], 0, p[1] - bb.y1))
+
+
+def _rule_faults(ax) -> list[str]:
+    """Labels over labels, over another point's marker, nearer another point than their own."""
+    labels, marks = _drawn_labels(ax)
+    bad = []
+    for i, (ta, a, pa) in enumerate(labels):
+        for tb, b, _ in labels[i + 1 :]:
+            if min(a.x1, b.x1) > max(a.x0, b.x0) and min(a.y1, b.y1) > max(a.y0, b.y0):
+                bad.append(f"{ta} over {tb}")
+        own = _to_box(pa, a)
+        for p, rad in marks:
+            if math.dist(p, pa) < 0.5:  # its own marker
+                continue
+            if _to_box(p, a) < rad:
+                bad.append(f"{ta} over the marker at {np.round(p)}")
+            elif _to_box(p, a) <= own:
+                bad.append(f"{ta} nearer the point at {np.round(p)}")
+    return bad
+
+
+@pytest.mark.parametrize("which", ["fig6", "own"])
+def test_page1_labels_beside_their_points(which: str, request: pytest.FixtureRequest) -> None:
+    """Page 1 shows only the givens: O, P1, P2 are each named within 2.5 mm of their
+    point, clear of every rule (the name of O sat 9 mm away, on a cone side, where the
+    finished drawing puts the label O = O_M = Y4)."""
+    ws = request.getfixturevalue(which)
+    ax = ws.axes[0]
+    labels, _ = _drawn_labels(ax)
+    names = sorted(t for t, _, _ in labels)
+    assert names == ["$O$", "$P_1$", "$P_2$"], names
+    mm = 25.4 / ws.figures[0].dpi
+    for text, bb, p in labels:
+        assert _to_box(p, bb) * mm <= 2.5, (text, _to_box(p, bb) * mm)
+    assert _rule_faults(ax) == []
+
+
+@pytest.mark.parametrize("which", ["fig6", "own"])
+def test_solution_labels_name_their_points(which: str, request: pytest.FixtureRequest) -> None:
+    """Page 2, the drawing and the enlarged centre: no label over a label or over another
+    point's marker, each nearer its own point than any other (the crowded centre of the
+    drawing had labels nearer other points, P_1x = V_4 over the marker of X_3: the inset
+    names those points)."""
+    ws = request.getfixturevalue(which)
+    inset = ws.artists[1]["inset"][0]
+    for ax in (ws.axes[1], inset):
+        assert _rule_faults(ax) == [], which
+    # every point of the drawing is named in the drawing or in the inset
+    named = {t for ax in (ws.axes[1], inset) for t, _, _ in _drawn_labels(ax)[0]}
+    for s in ws.construction.steps:
+        if s.kind == "point" and s.role != "break_point":
+            plain = {re.sub(r"[_{}$]", "", t) for t in named}
+            assert any(s.name.replace("_", "") in re.split(" = |, ", t) for t in plain), s.name
+
+
+def test_solution_legend_shows_every_line_as_drawn(fig6: Worksheet) -> None:
+    """The extended cone sides are drawn in the side colour and the given ones in black:
+    the legend shows both (it showed one black line for both), the object, the compass
+    arcs and the right-angle marks drawn."""
+    from matplotlib.colors import to_hex
+
+    (leg,) = fig6.figures[1].legends
+    entries = dict(zip([t.get_text() for t in leg.get_texts()], leg.legend_handles))
+    drawn = {
+        to_hex(ln.get_color())
+        for ln in fig6.axes[1].lines
+        if ln.get_linestyle() == "-" and ln.get_marker() in ("None", "none", "")
+    }
+    side = to_hex(fig6.artists[1]["side1"][0].get_color())
+    assert side in drawn
+    shown = {to_hex(h.get_color()) for h in entries.values() if isinstance(h, Line2D)}
+    assert side in shown and "#000000" in shown
+    for want in ("the object", "right angle", "compass arcs", "extended", "given"):
+        assert any(want in e for e in entries), (want, list(entries))
+
+
+def test_page1_names_every_given_point() -> None:
+    """With the feet given (--given feet), page 1 draws P1x, P2x and O_M and names them
+    (it drew their markers unnamed: the cut of the givens was made by position while the
+    picture cuts by protocol index); Fig. 6 has O_M = O (x1 = x2), one label for both."""
+    ws = worksheet_pages(Grasp.preset("fig6"), steps="V3", given="feet")
+    labels, marks = _drawn_labels(ws.axes[0])
+    texts = sorted(t for t, _, _ in labels)
+    assert texts == ["$O = O_M$", "$P_1$", "$P_2$", "$P_{1x}$", "$P_{2x}$"], texts
+    assert len({tuple(np.round(p, 3)) for p, _ in marks}) == 5  # O = O_M, P1, P2, P1x, P2x
+    assert _rule_faults(ws.axes[0]) == []

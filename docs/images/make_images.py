@@ -89,12 +89,25 @@ def web(tmp: Path) -> None:
         browser.close()
 
 
+def matplotlib_explorer(tmp: Path) -> None:
+    """The matplotlib explorer of Fig. 6 (docs/explore.md), as ``graspcompass explore``
+    opens it (11 x 7.5 in), at 80 dpi."""
+    from matplotlib.figure import Figure
+
+    import graspcompass as gc
+    from graspcompass.render.explorer import Explorer
+
+    ex = Explorer(gc.Grasp.preset("fig6"), fig=Figure(figsize=(11, 7.5), dpi=80))
+    ex.fig.savefig(HERE / "matplotlib-explorer.png", dpi=80)
+
+
 MAKERS: dict[str, Callable[[Path], None]] = {
     "fig6-diagram": fig6_diagram,
     "inset-own-grasp": inset_own_grasp,
     "worksheet": worksheet,
     "lecture": lecture_frame,
     "web": web,
+    "matplotlib-explorer": matplotlib_explorer,
 }
 
 

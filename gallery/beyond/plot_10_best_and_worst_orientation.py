@@ -29,6 +29,7 @@ import sympy as sp
 import graspcompass as gc
 from graspcompass.geometry import ORIGIN, angle_of, distance
 from graspcompass.render import animate_orientation, draw_construction, theta_of_orientation
+from graspcompass.scene.palette import PALETTE
 
 
 def extremes(construction):
@@ -85,8 +86,8 @@ print(
 fig, ax = plt.subplots(figsize=(6.5, 6.5), layout="constrained")
 draw_construction(construction, ax=ax, labels=False)
 for t, kk, color, word, off in (
-    (theta_w, k_w, "#e63946", "worst", (10, -12)),
-    (theta_b, k_b, "#2a9d8f", "best", (40, 50)),
+    (theta_w, k_w, PALETTE["worst"], "worst", (10, -12)),
+    (theta_b, k_b, PALETTE["best"], "best", (40, 50)),
 ):
     t, kk = float(t), float(kk)
     e = np.array([np.sin(t), -np.cos(t)])
@@ -110,7 +111,7 @@ for t, kk, color, word, off in (
         bbox=dict(fc="white", ec="none", alpha=0.8),
     )
 ax.set_title(
-    "Fig. 6 grasp: the worst (red) and the best (green) direction of the weight", fontsize=10
+    "Fig. 6 grasp: the worst (magenta) and the best (cyan) direction of the weight", fontsize=10
 )
 plt.show()
 

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy as sp
 
-__all__ = ["SLIDERS", "Definition", "definition", "ggb_label", "ggb_number"]
+__all__ = ["SLIDERS", "Definition", "definition", "envelope_functions", "ggb_label", "ggb_number"]
 
 #: Slider label in GeoGebra, parameter of :class:`graspcompass.Grasp`, caption.
 SLIDERS = (
@@ -93,15 +93,46 @@ def _signed_length(inputs: tuple[str, ...], steps: dict[str, Any]) -> str:
     return f"Vector[{a}, {b}] * UnitVector[{axis}]"
 
 
-def _envelope() -> str:
-    """k_grasp(t) = max(k1, ..., k4, 0), max written with abs (every version has abs)."""
-    k = [f"(x(V{n}) sin(t) - y(V{n}) cos(t))" for n in (1, 2, 3, 4)]
-
-    def mx(a: str, b: str) -> str:
-        return f"(({a}) + ({b}) + abs(({a}) - ({b}))) / 2"
-
-    m = mx(mx(k[0], k[1]), mx(k[2], k[3]))
-    return f"(({m}) + abs({m})) / 2"
+def envelope_functions(step: Step, steps: dict[str, Any]) -> list[tuple[str, str, str]]:
+    """The envelope's k_grasp(θ) (eq. (25)) as short named functions of ``t``, one line
+    each: ``k_n(t) = x(V_n) sin(t) - y(V_n) cos(t)`` for the circle on each diameter O V_n
+    (eq. (32)), the larger of two (``m_i``, max written with abs: every version has it),
+    and ``kg(t)``, the largest and 0.  ``(label, definition, caption)`` in order."""
+    vs = [
+        ggb_label(steps[c].inputs[1])
+        for c in step.inputs
+        if c in steps and steps[c].op == "circle_on_diameter"
+    ] or [f"V{n}" for n in (1, 2, 3, 4)]
+    out = []
+    level = []
+    for i, v in enumerate(vs, start=1):
+        out.append(
+            (
+                f"k_{i}",
+                f"x({v}) sin(t) - y({v}) cos(t)",
+                f"k{i}(θ) = V{i} · e(θ): the polar graph is the circle on O{v}, eq. (32)",
+            )
+        )
+        level.append(f"k_{i}")
+    m = 1
+    while len(level) > 1:
+        nxt = []
+        for a, b in zip(level[::2], level[1::2]):
+            out.append(
+                (
+                    f"m_{m}",
+                    f"({a}(t) + {b}(t) + abs({a}(t) - {b}(t))) / 2",
+                    f"the larger of {a} and {b}",
+                )
+            )
+            nxt.append(f"m_{m}")
+            m += 1
+        level = nxt + level[len(level) - len(level) % 2 :]
+    top = level[0]
+    out.append(
+        ("kg", f"({top}(t) + abs({top}(t))) / 2", "k_grasp(θ) = max(k1, ..., k4, 0), eq. (25)")
+    )
+    return out
 
 
 def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definition:
@@ -151,12 +182,11 @@ def definition(step: Step, steps: dict[str, Any], with_grasp: bool) -> Definitio
         return Definition("line", "Line", (ins[2], f"Vector[{ins[0]}, {ins[1]}]"))
     if op == "quarter_turn":
         return Definition("point", "Rotate", (ins[0], "-90°", ins[1]))
-    if op == "envelope":
-        k = _envelope()
+    if op == "envelope":  # the polar graph of kg(t), envelope_functions
         return Definition(
             "curvecartesian",
             "CurveCartesian",
-            (f"({k}) sin(t)", f"-({k}) cos(t)", "t", "0", "2 pi"),
+            ("kg(t) sin(t)", "-kg(t) cos(t)", "t", "0", "2 pi"),
             var="t",
         )
     made = _class_definition(step, steps, ins)

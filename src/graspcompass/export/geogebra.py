@@ -14,10 +14,13 @@ added once both sides exist), V_n by compass transfer (O_M X_n carried to O and
 reversed, ``Mirror[Translate[X_n, Vector[O_M, O]], O]``, and ``Mirror[Y_n, O]``, each
 on its ``Circle`` about O; V_n where the perpendiculars to the axes there meet), the
 four circles and the envelope
-``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25)).  Each object carries its
+``kGrasp`` (the curve of k_grasp(θ) e(θ), eq. (25), with k_grasp in short hidden
+functions, one line each: ``k_n(t) = x(V_n) sin(t) - y(V_n) cos(t)`` (32), the larger
+of two, ``kg(t)`` the largest and 0).  Each object carries its
 step's caption (``<caption>``), shown in GeoGebra's construction protocol, whose
 navigation bar (play, protocol button) is switched on; the key steps (V_n, the
-circles, the envelope) are breakpoints of the protocol's navigation.  Labels are
+circles, the envelope) are breakpoints of the protocol's navigation, which opens on the
+last step (the whole construction).  Labels are
 the step names, except ``x-axis`` -> ``axisX``,
 ``y-axis`` -> ``axisY`` and ``envelope`` -> ``kGrasp``.  The view is the one view box
 of every picture (:func:`graspcompass.layout.view_box`), the colours the one palette
@@ -49,7 +52,7 @@ from ..scene import labelling
 from ..scene.palette import rgb
 from ..scene.picture import build_scene, label_tex
 from . import _ggb_program as _prog
-from ._ggb_defs import _SIDE, SLIDERS, definition, ggb_label
+from ._ggb_defs import _SIDE, SLIDERS, definition, envelope_functions, ggb_label
 
 if TYPE_CHECKING:
     from ..construction import Construction
@@ -113,7 +116,9 @@ def _sliders(grasp: Grasp) -> list[str]:
             *extra,
             f"\t<show {_a(object='false', label='true')}/>",
             f"\t<labelMode {_a(val=1)}/>",
-            f"\t<animation {_a(step='0.01', speed=1, type=0, playing='false')}/>",
+            # a step of 1° for the angles (kept in radians), 0.01 for the others
+            f"\t<animation {_a(step=repr(math.pi / 180) if angle else '0.01')} "
+            f"{_a(speed=1, type=0, playing='false')}/>",
             "</element>",
         ]
     return out
@@ -216,8 +221,9 @@ def _view(construction: Construction, scene: Scene) -> list[str]:
         f"{_a(col4='true', col5='true', col6='true')}/>",
         f"\t<consProtocol {_a(useColors='true', addIcons='false')} "
         f"{_a(showOnlyBreakpoints='false')}/>",
-        f"\t<consProtNavigationBar {_a(id=1, playButton='true', playDelay='2.0')} "
-        f"{_a(protButton='true', consStep='-1')}/>",
+        # (show: GeoGebra 4 reads it; id: the view GeoGebra 5 puts the bar under)
+        f"\t<consProtNavigationBar {_a(show='true', id=1, playButton='true')} "
+        f"{_a(playDelay='2.0', protButton='true', consStep='-1')}/>",
         "</gui>",
         "<euclidianView>",
         f"\t<size {_a(width=_W, height=_H)}/>",
@@ -225,6 +231,13 @@ def _view(construction: Construction, scene: Scene) -> list[str]:
         f" {_a(scale=repr(scale), yscale=repr(scale))}/>",
         f"\t<evSettings {_a(axes='false', grid='false', gridIsBold='false')} "
         f"{_a(pointCapturing=3, rightAngleStyle=1, checkboxSize=13, gridType=0)}/>",
+        # the construction draws its own axes (steps 1, 2): GeoGebra's stay hidden, in
+        # GeoGebra 4 (axis tags) as in 5 (evSettings)
+        *(
+            f"\t<axis {_a(id=i, show='false', label='', unitLabel='', tickStyle=1)} "
+            f"{_a(showNumbers='true')}/>"
+            for i in (0, 1)
+        ),
         "</euclidianView>",
     ]
 
@@ -283,6 +296,15 @@ def ggb_xml(
             d = _prog.live(d, s, live[s.name])
         label = ggb_label(s.name)
         transfer = _transfer(s, steps) if grasp is not None else None
+        if s.op == "envelope" and d.command is not None:  # k_n, their maxima: one line each
+            for flabel, body, caption in envelope_functions(s, steps):
+                out += [
+                    f"<expression {_a(label=flabel, exp=f'{flabel}(t) = {body}')}/>",
+                    f"<element {_a(type='function', label=flabel)}>",
+                    f"\t<show {_a(object='false', label='false')}/>",
+                    f"\t<caption {_a(val=caption)}/>",
+                    "</element>",
+                ]
         if transfer is not None:  # V_n by compass (Mirror, Circle), not by coordinates
             out += transfer
             d = type(d)("point", "Intersect")
@@ -318,7 +340,11 @@ def ggb_xml(
     if program is not None and grasp is None:
         out += _prog.claim_statements(program)
     out += ["</construction>", "</geogebra>"]
-    return "\n".join(out) + "\n"
+    # the navigation bar opens on the last step, the whole construction (GeoGebra 4 shows
+    # none at -1); its steps are the construction's elements, counted from 0
+    steps_made = sum(line.startswith("<element ") for line in out)
+    text = "\n".join(out).replace('consStep="-1"', f'consStep="{max(steps_made - 1, 0)}"', 1)
+    return text + "\n"
 
 
 def _element(

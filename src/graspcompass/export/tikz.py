@@ -1,10 +1,11 @@
 """Plain TikZ/pgf of a construction: a standalone document or a ``tikzpicture``.
 
-Only ``tikz`` (with the ``xcolor`` it loads) is needed: no TikZ library, and the
-document is standalone without the ``standalone`` class (which Debian ships in
-``texlive-latex-extra``): the title, the picture and its legend are set in one box
-and shipped out on a page cut to that box with a 4 pt border, as the class does, so
-the document compiles with Debian's ``texlive-latex-base`` and ``texlive-pictures``,
+Only ``tikz`` (with the ``xcolor`` it loads) is needed: no TikZ library.  The
+document uses the ``standalone`` class (``border=4pt``) where it is installed (Debian
+ships it in ``texlive-latex-extra``) and ``article`` where not: the title, the picture
+and its legend are set in one box, which the class crops to, and which the ``article``
+fallback ships out on a page cut to that box with a 4 pt border, as the class does; so
+the document also compiles with Debian's ``texlive-latex-base`` and ``texlive-pictures``,
 with no overfull box and no Letter or A4 page round it.  The labels have a white
 background, so that the envelope and the lines do not run through them.  Every
 step of the protocol is one commented block: its index, name, kernel operation, instrument, the
@@ -157,10 +158,42 @@ def _title(scene: Scene, construction: Construction) -> str:
     return scene.title or "The internal force diagram"
 
 
-def _legend() -> str:
+#: Legend entries of what only some pictures draw: (drawn when, sample, text).
+_LEGEND_IF = (
+    (
+        "object",
+        r"\filldraw[object] (0,-0.1) rectangle (0.6,0.1);",
+        "the object",
+    ),
+    (
+        "arcs",
+        r"\draw[instrument] (0.1,-0.12) arc[start angle=-40, end angle=40, radius=0.19];",
+        "compass arcs: bisection, lengths taken and carried to $O$",
+    ),
+    (
+        "right_angle",
+        r"\draw[instrument] (0.2,0.15) -- (0.2,0) -- (0.35,0);",
+        "right angle",
+    ),
+    (
+        "coordinate",
+        r"\draw[instrument, dotted, draw=gccircle1] (0,0) -- (0.6,0);",
+        r"$V_n$ from its coordinates $-\overline{O_MX_n}$, $-\overline{OY_n}$",
+    ),
+)
+
+
+def _legend(scene: Scene) -> str:
+    """The legend below the picture: every style drawn, with what it draws."""
+    roles = {i.role for i in scene.instruments}
+    if roles & {"bisection_arc", "measure_arc", "transfer_arc"}:
+        roles.add("arcs")
+    if scene.outline is not None:
+        roles.add("object")
+    entries = [*_LEGEND, *((code, text) for when, code, text in _LEGEND_IF if when in roles)]
     items = [
         f"\\mbox{{\\tikz[baseline=-0.6ex, x=1cm, y=1cm]{{{code}}}~{text}}}"
-        for code, text in _LEGEND
+        for code, text in entries
     ]
     return "{\\small " + "\\hskip 1em plus 0.5em\n".join(items) + "\\par}"
 
@@ -318,7 +351,8 @@ def to_tikz(
     construction : Construction
     standalone : bool
         A complete document if true: the title, the picture and a legend of its styles
-        on one page cut to their size (no ``standalone`` class needed); else only the
+        on one page cut to their size, by the ``standalone`` class where it is installed
+        and by ``article`` with the page set to the box where not; else only the
         ``tikzpicture`` (for ``\\input`` in a document that loads tikz).
     title : str, optional
         Comment line at the top; defaults to the grasp's title.
@@ -351,17 +385,22 @@ def to_tikz(
         width += 0.5 + _WIDTH_CM * INSET_PT / FRAME_PT
     if standalone:
         out += [
-            "\\documentclass{article}",
-            "\\usepackage{tikz}",
             _comment(
-                "a standalone page: title, picture and legend in one box, shipped out "
-                "on a page of its size with a 4 pt border (as the standalone class)"
+                "the standalone class (TeX Live's latex-extra) when installed, else article "
+                "with the page cut to the picture as the class cuts it: title, picture and "
+                "legend in one box, on a page of its size with a 4 pt border"
             ),
-            "\\newsavebox{\\gcpage}",
-            "\\begin{document}",
+            "\\IfFileExists{standalone.cls}{\\documentclass[border=4pt]{standalone}}"
+            "{\\documentclass{article}}",
+            "\\usepackage{tikz}",
         ]
         styles = _style_defs(scene)
-        out += styles[:-1]  # the colours and styles before the box: the legend uses them
+        out += styles[:-1]  # the colours and styles in the preamble: the legend uses them
+        out += [
+            "\\newsavebox{\\gcpage}",
+            # the class sets the page in a box from here on: no line end may add a space
+            "\\begin{document}%",
+        ]
         out += [
             f"\\savebox{{\\gcpage}}{{\\vbox{{\\hsize={_num(width)}cm \\parindent=0pt "
             "\\parskip=0pt \\raggedright",
@@ -430,13 +469,16 @@ def to_tikz(
     if standalone:
         out += [
             "\\hss}\\medskip",
-            _legend(),
-            "}}",
+            _legend(scene),
+            "}}%",
+            "\\makeatletter%",
+            "\\@ifclassloaded{standalone}{\\usebox{\\gcpage}}{%",
             "\\pdfpagewidth=\\wd\\gcpage \\advance\\pdfpagewidth by 8pt",
             "\\pdfpageheight=\\ht\\gcpage \\advance\\pdfpageheight by \\dp\\gcpage",
             "\\advance\\pdfpageheight by 8pt",
             "\\hoffset=-1in \\voffset=-1in",
-            "\\shipout\\vbox{\\vskip 4pt\\moveright 4pt\\box\\gcpage\\vskip 4pt}",
+            "\\shipout\\vbox{\\vskip 4pt\\moveright 4pt\\box\\gcpage\\vskip 4pt}}",
+            "\\makeatother",
             "\\end{document}",
         ]
     return "\n".join(out) + "\n"

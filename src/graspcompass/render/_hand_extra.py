@@ -17,9 +17,8 @@ Private to :mod:`graspcompass.render.handdrawing`.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
@@ -27,6 +26,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Rectangle
 from matplotlib.text import Annotation
 
+from ._figure_parts import _CORNER
+from ._hand_labels import _renderer, mend_labels
 from ._hand_text import A4_MM
 from .figure import draw_construction
 from .theme import Theme
@@ -37,8 +38,6 @@ if TYPE_CHECKING:
 
 #: Cone sides on the page: at least and at most this long, mm.
 SIDE_MM = (25.0, 40.0)
-#: Points closer than this fraction of the drawing's width crowd: page 2 shows them zoomed.
-CROWD = 0.06
 
 
 def side_length(grasp: Grasp, box: tuple[float, float, float, float], scale: float) -> float:
@@ -110,71 +109,6 @@ def _spread(ax: Axes, labels: list[tuple[Annotation, tuple[float, float, float, 
         placed.append(t.get_window_extent(renderer))
 
 
-def _hits(bb: Any, pts: np.ndarray) -> bool:
-    return bool(
-        np.any(
-            (pts[:, 0] > bb.x0) & (pts[:, 0] < bb.x1) & (pts[:, 1] > bb.y0) & (pts[:, 1] < bb.y1)
-        )
-    )
-
-
-def _renderer(ax: Axes) -> Any:
-    """The renderer of the axes' (Agg) canvas; the stubs' FigureCanvasBase has none."""
-    return ax.figure.canvas.get_renderer()  # type: ignore[attr-defined]
-
-
-def clear_labels(
-    ax: Axes, labels: list[Annotation], lines: list[Line2D], others: list[Artist]
-) -> None:
-    """Move each label (an annotation in offset points) off ``lines`` (the cone sides)
-    and ``others``: the first of eight places round its point that is clear, else it stays."""
-    renderer = _renderer(ax)
-
-    def dense(ln: Line2D) -> np.ndarray:  # 60 points along the line's first segment
-        (x0, x1), (y0, y1) = (
-            np.asarray(v, dtype=float)[:2] for v in (ln.get_xdata(), ln.get_ydata())
-        )
-        return np.column_stack([np.linspace(x0, x1, 60), np.linspace(y0, y1, 60)])
-
-    pts = [ax.transData.transform(dense(ln)) for ln in lines]
-    cloud = np.vstack(pts) if pts else np.zeros((0, 2))
-    boxes = [a.get_window_extent(renderer) for a in others]
-    places: list[
-        tuple[
-            tuple[int, int], Literal["left", "center", "right"], Literal["bottom", "center", "top"]
-        ]
-    ] = [
-        ((5, 4), "left", "bottom"),
-        ((-5, 4), "right", "bottom"),
-        ((0, 6), "center", "bottom"),
-        ((5, -4), "left", "top"),
-        ((-5, -4), "right", "top"),
-        ((0, -6), "center", "top"),
-        ((7, 0), "left", "center"),
-        ((-7, 0), "right", "center"),
-    ]
-    for t in labels:
-
-        def clear(t: Annotation = t) -> bool:
-            bb = t.get_window_extent(renderer).expanded(1.05, 1.1)
-            return not _hits(bb, cloud) and not any(bb.overlaps(o) for o in boxes)
-
-        if clear():
-            continue
-        start = (t.xyann, t.get_horizontalalignment(), t.get_verticalalignment())
-        for off, ha, va in places:
-            t.set_horizontalalignment(ha)
-            t.xyann = off
-            t.set_verticalalignment(va)
-            if clear():
-                break
-        else:
-            t.set_horizontalalignment(start[1])
-            t.xyann = start[0]
-            t.set_verticalalignment(start[2])
-        boxes.append(t.get_window_extent(renderer))
-
-
 def exercise(construction: Construction, num: dict[str, Any]) -> dict[str, Any] | None:
     """The read-off exercise: θ (a multiple of 15° near the worst orientation, where k > 0),
     what to read (k_grasp, or k_n of the one circle drawn), its value and F_int / F_e."""
@@ -241,12 +175,76 @@ def draw_ray(ax: Axes, ex: dict[str, Any], theme: Theme, reach: float) -> list[A
     return arts
 
 
-def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme, font: float) -> Any:
-    """A legend of what page 2 draws, in ``where`` (x0, y0, w, h as figure fractions)."""
+def _legend_roles(sub: Any, main: dict[str, list[Artist]]) -> set[str]:
+    """What the solution draws, for its legend: ``object`` (the outline), the roles of the
+    instruments (compass arcs, right angles) and ``read off`` (the exercise's ray)."""
+    from ..scene.picture import scene_of
+
+    roles = {i.role for i in scene_of(sub).instruments}
+    roles |= {k for k in ("object", "read off") if main.get(k)}
+    return roles
+
+
+def legend(
+    fig: Figure,
+    where: tuple[float, float, float, float],
+    theme: Theme,
+    font: float,
+    roles: set[str] | None = None,
+) -> Any:
+    """A legend of what page 2 draws, in ``where`` (x0, y0, w, h as figure fractions):
+    each kind of line and mark with the colour and style it is drawn in (``roles``: the
+    optional ones drawn, :func:`_legend_roles`; all when None)."""
     c = [theme.circle_color(n) for n in (1, 2, 3, 4)]
-    handles = [
-        Line2D([], [], color="black", lw=1.0, label="cone side (given), extended"),
+
+    def on(role: str) -> bool:
+        return roles is None or role in roles
+
+    handles: list[Artist] = []
+    if on("object"):
+        handles.append(
+            Patch(facecolor=theme.object_face, edgecolor=theme.object_edge, label="the object")
+        )
+    handles += [
+        Patch(facecolor=theme.cone_face, alpha=theme.cone_alpha, label="friction cone"),
+        Line2D([], [], color="black", lw=1.0, label="cone side, as given on page 1"),
+        Line2D([], [], color=theme.side_color, lw=1.0, label="cone side, extended (§3.3)"),
         Line2D([], [], color="#888888", lw=0.8, ls="--", label="perpendicular to a side"),
+    ]
+    if on("right_angle"):
+        handles.append(
+            Line2D(
+                [],
+                [],
+                ls="none",
+                marker=_CORNER,
+                ms=6,
+                mfc="none",
+                mew=0.9,
+                color=theme.construction_color,
+                label="right angle",
+            )
+        )
+    arcs = [
+        w
+        for r, w in (
+            ("bisection_arc", "bisection"),
+            ("measure_arc", "length taken"),
+            ("transfer_arc", "carried to $O$"),
+        )
+        if on(r)
+    ]
+    if arcs:
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color=theme.construction_color,
+                lw=theme.thin_width,
+                label="compass arcs: " + ", ".join(arcs),
+            )
+        )
+    handles += [
         Line2D(
             [],
             [],
@@ -257,7 +255,14 @@ def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme, 
             label=r"signed length $\overline{O_MX_n}$, $\overline{OY_n}$",
         ),
         Line2D([], [], color=c[0], lw=0.6, ls=":", label=r"transfer to $O$: $V_n$"),
-        Line2D([], [], color=c[0], lw=1.0, ls="--", label=r"circle on $OV_n$: $k_n(\theta)$"),
+        Line2D(
+            [],
+            [],
+            color=c[0],
+            lw=1.0,
+            ls="--",
+            label=r"circle on $OV_n$: $k_n(\theta)$ (colour of $n$)",
+        ),
         Line2D([], [], color=theme.envelope_color, lw=2.0, label=r"envelope $k_{grasp}(\theta)$"),
         Line2D(
             [],
@@ -269,19 +274,21 @@ def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme, 
             mec="black",
             label=r"break point $B_{nm}$",
         ),
-        Line2D(
-            [],
-            [],
-            color="black",
-            lw=0.8,
-            ls="--",
-            marker="s",
-            ms=4,
-            mfc="white",
-            label=r"ray $e(\theta)$, the value read off",
-        ),
-        Patch(facecolor=theme.cone_face, alpha=theme.cone_alpha, label="friction cone"),
     ]
+    if on("read off"):
+        handles.append(
+            Line2D(
+                [],
+                [],
+                color="black",
+                lw=0.8,
+                ls="--",
+                marker="s",
+                ms=4,
+                mfc="white",
+                label=r"ray $e(\theta)$, the value read off",
+            )
+        )
     return fig.legend(
         handles=handles,
         loc="upper left",
@@ -295,36 +302,6 @@ def legend(fig: Figure, where: tuple[float, float, float, float], theme: Theme, 
     )
 
 
-def crowded_box(
-    num: dict[str, Any], names: list[str], box: tuple[float, float, float, float]
-) -> tuple[float, float, float, float] | None:
-    """The square around the points that lie within :data:`CROWD` of the view's width of
-    another (not coinciding) point, padded, or None when nothing crowds."""
-    span = box[1] - box[0]
-    pts = [tuple(num[n]) for n in names if n in num]
-    crowd = []
-    for a in pts:
-        for b in pts:
-            d = math.dist(a, b)
-            if 1e-9 * span < d < CROWD * span:
-                crowd.append(a)
-                break
-    if len(crowd) < 3:
-        return None
-    # the densest part: the crowded points within 0.12 of the view of the crowded point
-    # with the most such neighbours
-    near = [[b for b in crowd if math.dist(a, b) <= 0.12 * span] for a in crowd]
-    crowd = max(near, key=len)
-    if len(crowd) < 3:
-        return None
-    xs, ys = [p[0] for p in crowd], [p[1] for p in crowd]
-    half = max(max(xs) - min(xs), max(ys) - min(ys), 0.05 * span) / 2 * 1.6
-    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
-    if half > 0.3 * span:
-        return None
-    return (cx - half, cx + half, cy - half, cy + half)
-
-
 def page2_extras(
     fig: Figure,
     ax: Axes,
@@ -334,16 +311,26 @@ def page2_extras(
     theme: Any,
     font: float,
     room: tuple[float, float, float],
+    main: dict[str, list[Artist]] | None = None,
 ) -> list[Any]:
     """Below the solution rows (``room``: x0, top, width in mm): the crowded centre at a
-    larger scale (marked on the drawing by a thin frame) and the legend."""
+    larger scale (marked on the drawing by a thin frame) and the legend.
+
+    The labels of ``main`` (the drawing's artists by name) and of the inset keep the
+    rules of every picture (:func:`mend_labels`); with the inset drawn, those of the
+    points in the frame that crowd there, or that have no place keeping the rules, are
+    left to the inset, which names those points."""
     W, H = A4_MM
     x0, top, width = room
     height = top - 12.0
     if height < 30:
         return []
-    names = [s.name for s in sub.steps if s.kind == "point" and s.role != "break_point"]
-    zoom = crowded_box(num, names, box)
+    inset_of = _inset_at_size(ax, sub, theme)
+    kept = {lab.names[0] for lab in inset_of.main} if inset_of is not None else set()
+    taken = [lab.point for lab in inset_of.labels if lab.names[0] not in kept] if inset_of else []
+    mine = [a for arts in (main or {}).values() for a in arts if isinstance(a, Annotation)]
+    _, broken = mend_labels(ax, mine)  # what the drawing cannot name by the rules
+    zoom = _frame_of([*taken, *(t.xy for t in broken)], box, inset_of)
     legend_w = 72.0
     arts: list[Any] = []
     if zoom is not None and width - legend_w >= 50:
@@ -378,6 +365,94 @@ def page2_extras(
                 )
             ),
         ]
+        mend_labels(
+            inset,
+            [a for arts in drawn.values() for a in arts if isinstance(a, Annotation)],
+        )
+        if main is not None:
+            _leave_to_inset(ax, main, kept if inset_of is not None else None, zoom)
         x0 += side + 6
-    arts.append(legend(fig, (x0 / W, (top - height) / H, legend_w / W, height / H), theme, font))
+    arts.append(
+        legend(
+            fig,
+            (x0 / W, (top - height) / H, legend_w / W, height / H),
+            theme,
+            font,
+            _legend_roles(sub, main or {}),
+        )
+    )
     return arts
+
+
+def _inset_at_size(ax: Axes, sub: Any, theme: Any) -> Any:
+    """The zoomed inset of the one picture model (:attr:`Scene.inset
+    <graspcompass.scene.picture.Scene.inset>`: the region where labels crowd, chosen from
+    the geometry) for labels of ``theme.font_size`` on the drawing ``ax`` as drawn, or
+    None when nothing crowds.  The page's drawing is smaller than the placement's frame,
+    so its labels are relatively larger: the scene :func:`draw_construction` placed them
+    in, at the size drawn."""
+    from ..scene import labelling
+    from ..scene.picture import scene_of
+
+    frame_pt = ax.bbox.width * 72.0 / ax.figure.dpi  # type: ignore[union-attr]
+    if frame_pt <= 0:
+        return None
+    return scene_of(sub, font_pt=theme.font_size * labelling.FRAME_PT / frame_pt).inset
+
+
+def _frame_of(
+    pts: list[Any], box: tuple[float, float, float, float], inset_of: Any
+) -> tuple[float, float, float, float] | None:
+    """The square region the inset enlarges: round the points ``pts`` (those the scene's
+    inset names and those whose labels the drawing cannot place by the rules), padded;
+    the scene's own inset region when they spread over more than 0.6 of the view, None
+    when there are none."""
+    if not pts:
+        return None
+    span = box[1] - box[0]
+    xs, ys = [float(p[0]) for p in pts], [float(p[1]) for p in pts]
+    half = max(max(xs) - min(xs), max(ys) - min(ys)) / 2 * 1.25 + 0.04 * span
+    if half > 0.3 * span:
+        return inset_of.box if inset_of is not None else None
+    cx, cy = (max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2
+    return (cx - half, cx + half, cy - half, cy + half)
+
+
+def _leave_to_inset(
+    ax: Axes,
+    main: dict[str, list[Artist]],
+    kept: set[str] | None,
+    zoom: tuple[float, float, float, float],
+) -> None:
+    """On the drawing ``ax``: the labels (and their leader lines) of the points in the
+    frame ``zoom`` that the inset takes (those of no group in ``kept``, the first names
+    of the scene's labels left on the main view) removed: the inset names them; the
+    others kept to the rules (:func:`mend_labels`), and removed too when in the frame
+    with no place that keeps them."""
+
+    def inside(t: Annotation) -> bool:
+        x, y = t.xy
+        return bool(zoom[0] <= x <= zoom[1] and zoom[2] <= y <= zoom[3])
+
+    owners: dict[int, list[str]] = {}
+    labels: dict[int, Annotation] = {}
+    for name, arts in main.items():
+        for a in arts:
+            if isinstance(a, Annotation) and a.axes is ax and str(a.get_text()).startswith("$"):
+                labels[id(a)] = a
+                owners.setdefault(id(a), []).append(name)
+
+    def forget(t: Annotation) -> None:  # its leader lines go with it
+        for name in owners[id(t)]:
+            for a in list(main.get(name, [])):
+                if a is t or (isinstance(a, Line2D) and a.get_gid() == "leader"):
+                    main[name].remove(a)
+                    if a.axes is not None:
+                        a.remove()
+
+    for key, t in list(labels.items()):
+        if inside(t) and kept is not None and not kept & set(owners[key]):
+            forget(t)
+            del labels[key]
+    for t in mend_labels(ax, list(labels.values()), drop=inside)[0]:
+        forget(t)

@@ -21,8 +21,12 @@ by eqs. (28)-(30), (33)-(39) and the Appendix, eqs. (A7)-(A8).  The length
 
 The worksheet is made here; its parts are private modules, every name still
 importable from here: the steps and the instructions in words (``_hand_steps``),
-the page geometry and the text set word by word (``_hand_text``), and the parts
-of the pages (``_hand_page``).
+the page geometry and the text set word by word (``_hand_text``), the parts
+of the pages (``_hand_page``), the cone angles, the read-off exercise, the legend and
+the enlarged centre (``_hand_extra``), and the labels kept to the rules of every
+picture as drawn (``_hand_labels``): on page 1 each name beside its point, on page 2
+no label over a label or another point's marker and each nearer its own point, those
+of the crowded points left to the enlarged centre, which names them.
 
 Examples
 --------
@@ -54,7 +58,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.text import Annotation, Text
 
-from ..scene.layout import numeric_objects, view_box
+from ..scene.layout import numeric_objects, share_numeric, view_box
 from . import _hand_extra as extra
 from ._hand_page import (
     _cones,
@@ -313,8 +317,17 @@ def worksheet_pages(
         bars.append(_header(fig, head, [title, *_params_lines(c.grasp)], scale))
         ax = _place_axes(fig, box, scale, plan.area)
         theme = PAPER_THEME if page == 0 else DEFAULT_THEME
+        # page 1: the given steps alone, labelled in this box (a cut of ``sub`` at their
+        # number left the feet unnamed: the scene cuts by protocol index, ``sub`` keeps
+        # the protocol's indices with the givens first)
+        givens = Construction(sub.steps[: len(gnames)], sub.grasp, ())
+        share_numeric(givens, num)  # computed once per worksheet
         out = draw_construction(
-            sub, step=len(gnames) - 1 if page == 0 else None, ax=ax, theme=theme, num=num
+            sub if page == 1 else givens,
+            ax=ax,
+            theme=theme,
+            num=num,
+            box=box if page == 0 else None,
         )
         for key in ("cone1", "cone2"):
             for a in out.pop(key, []):
@@ -326,12 +339,29 @@ def worksheet_pages(
         out["cones"] = _cones(ax, c.grasp, theme, cone_len)
         out["cone angles"] = extra.cone_angles(ax, c.grasp, cone_len) if page == 0 else []
         _finish_axes(ax, box)
-        extra.clear_labels(
-            ax,
-            [a for k in ("P1", "P2") for a in out.get(k, []) if isinstance(a, Annotation)],
-            [a for a in out["cones"] if isinstance(a, Line2D)],
-            out["cone angles"],
+        if page == 0:  # the givens alone: each name beside its point, no leader line
+            for drawn in out.values():
+                for a in [a for a in drawn if isinstance(a, Line2D) and a.get_gid() == "leader"]:
+                    drawn.remove(a)
+                    if a.axes is not None:
+                        a.remove()
+        point_labels = list(
+            {
+                id(a): a
+                for k, drawn in out.items()
+                if k in num
+                for a in drawn
+                if isinstance(a, Annotation) and a.axes is ax
+            }.values()
         )
+        if page == 0:  # P1, P2, O beside their points, clear of the sides and angles
+            extra.mend_labels(
+                ax,
+                point_labels,
+                [a for a in out["cones"] if isinstance(a, Line2D)],
+                out["cone angles"],
+                near=True,
+            )
         unit_bar = _unit_bar(ax, box, scale)
         if page == 0:
             bars.append(unit_bar)
@@ -357,6 +387,7 @@ def worksheet_pages(
                 theme,
                 plan.font,
                 (x0, top - _height(sol, plan.font) - 3, colw),
+                main=out,
             )
         figs.append(fig)
         axes.append(ax)

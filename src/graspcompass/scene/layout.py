@@ -33,6 +33,7 @@ __all__ = [
     "numeric_objects",
     "roles_of",
     "shape_extent",
+    "share_numeric",
     "tex",
     "view_box",
     "wedge",
@@ -106,6 +107,19 @@ def numeric_objects(construction: Construction) -> dict[str, Any]:
         return out
     _NUMERIC[key] = (ref, out)
     return dict(out)
+
+
+def share_numeric(part: Construction, values: dict[str, Any]) -> None:
+    """Remember ``values`` (:func:`numeric_objects` of a construction ``part`` takes its
+    steps from, by name) as the float values of ``part``, so that they are not computed
+    again (a worksheet's page 1 draws the given steps of its construction alone)."""
+    out = {s.name: values[s.name] for s in part.steps}
+    key = id(part)
+    try:
+        ref = weakref.ref(part, lambda _r: _NUMERIC.pop(key, None))
+    except TypeError:  # an object without weak references is not remembered
+        return
+    _NUMERIC[key] = (ref, out)
 
 
 def _numeric(construction: Construction) -> dict[str, Any]:

@@ -37,15 +37,16 @@ PALETTE: dict[str, str] = {
     "computer": "#ffd60a",
     "highlight": "#e63946",
     # the explorers (the web page and the matplotlib one): break points, the direction of
-    # the external force and its point H on the envelope, the worst and best orientation,
+    # the external force and its point H on the envelope, the worst and best orientation
+    # (magenta and cyan: red and green are circles 4 and 2, drawn beside them),
     # the draggable contacts, the axes' ticks, the message of an invalid grasp
     "breakpoint": "#555555",
     "breakpointfill": "#ffffff",
     "force": "#333333",
     "marker": "#111111",
     "markerfill": "#ffd166",
-    "worst": "#d62728",
-    "best": "#2ca02c",
+    "worst": "#c51b7d",
+    "best": "#17becf",
     "contact": "#0b1f4b",
     "contactfill": "#ffb703",
     "contacthover": "#fb8500",
