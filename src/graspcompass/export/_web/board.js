@@ -328,7 +328,7 @@ window.GCBoard = function (ctx) {
     }, withFont(attrs))), "envelope", { exists: () => !!state.num });
     unlabelled.push({ name: which, el });
   };
-  // the worst and best orientation: a red square and a green diamond, named in the panel
+  // the worst and best orientation: a magenta square and a cyan diamond, named in the panel
   // beside the same marks in the same colours, not on the crowded board
   specialPoint("worst", { name: "worst", face: "[]", size: 6, strokeColor: COL.worst,
     fillColor: COL.worst, withLabel: false });
