@@ -56,6 +56,8 @@ _CROWD = 0.2
 _CLOSER = (0.7, 0.5, 0.35, 0.25, 0.18, 0.12, 0.08)
 #: At most this many final zooms (a crowd, a closer one in it, another crowd, ...).
 _ZOOMS = 4
+#: At most this many rounds of bringing the camera closer.
+_ROUNDS = 3
 
 
 @dataclass
@@ -141,13 +143,19 @@ class ViewLabels:
             break points named as ``named`` says (``"all"``: each at its step)."""
             if (last, box, named) not in placed:
                 cut = construction.upto(last)
-                scene = build_scene(cut, box=box, font_pt=font_pt, num=num, break_points=named)
+                scene = build_scene(
+                    cut, box=box, font_pt=font_pt, num=num, break_points=named, with_insets=False
+                )
                 placed[last, box, named] = scene.labels
             return placed[last, box, named]
 
         runs = self._runs(boxes, place)
-        if zoom:  # the camera closer where a new point's label has no place
-            boxes = self._closer(construction, boxes, runs, place, num)
+        for _ in range(_ROUNDS if zoom else 0):  # the camera closer where a new point's
+            # label has no place; a run cut in two is placed again, and may need it too
+            closer = self._closer(construction, boxes, runs, place, num)
+            if closer == boxes:
+                break
+            boxes = closer
             runs = self._runs(boxes, place)
         #: the camera's box of every step, closer than asked where a label needs it
         self.boxes = boxes

@@ -45,6 +45,8 @@ def labels_of(
     envelope: tuple[Arc, ...],
     obstacles: list[XY],
     font_pt: float = labelling.FONT_PT,
+    with_insets: bool = True,
+    small: frozenset[str] = frozenset(),
 ) -> tuple[tuple[Label, ...], tuple[Inset, ...]]:
     """The labels of ``groups`` in the main frame and, where points crowd, in insets.
 
@@ -57,6 +59,8 @@ def labels_of(
     if any; each other crowd of points whose labels have no place keeping every rule
     in the main frame gets an inset of its own (at most :data:`MAX_INSETS`).  A point
     whose label breaks a rule in the main frame is named in its inset only.
+    ``with_insets`` false: the main frame's labels only (for a painter that zooms on its
+    own, an animation).  ``small``: the names of the points drawn small (break points).
     """
     side = labelling.FRAME_PT
     s = side / (box[1] - box[0])
@@ -70,6 +74,11 @@ def labels_of(
         curves.append(np.vstack([_arc_points(a) for a in envelope]))
     order = sorted(groups, key=lambda g: labelling.label_order(g[0]))
     anchors = [xy for _, xy in order]
+    # each point's marker as drawn: a break point's small
+    size = [
+        labelling.MARKER_PT * (labelling.SMALL_MARKER if set(names) <= small else 1.0)
+        for names, _ in order
+    ]
 
     def to_pt(xy: Any, frame: Box, scale: float) -> np.ndarray:
         a = np.asarray(xy, dtype=float).reshape(-1, 2)
@@ -109,12 +118,13 @@ def labels_of(
         }
         # the other points of a label's group, and the points in the frame left to
         # another placement: markers no label covers
-        members = [anchors[j] for i in idx for j in joined[i] if j != i]
-        members += [
-            xy
-            for j, xy in enumerate(anchors)
-            if not keep[j] and frame[0] <= xy[0] <= frame[1] and frame[2] <= xy[1] <= frame[3]
+        others = [j for i in idx for j in joined[i] if j != i]
+        others += [
+            j
+            for j, (x, y) in enumerate(anchors)
+            if not keep[j] and frame[0] <= x <= frame[1] and frame[2] <= y <= frame[3]
         ]
+        members = [anchors[j] for j in others]
         fits = fitting.fit(
             to_pt([anchors[i] for i in idx], frame, scale),
             [text_of[i] for i in idx],
@@ -124,9 +134,9 @@ def labels_of(
             optional=[optional[i] for i in idx],
             font_size=font_pt,
             # the break points and cusps are drawn small
-            marker_sizes=[labelling.MARKER_PT] * len(idx)
+            marker_sizes=[size[i] for i in idx]
             + [labelling.MARKER_PT * labelling.SMALL_MARKER] * len(obstacles)
-            + [labelling.MARKER_PT] * len(members),
+            + [size[j] for j in others],
             avoid=[
                 (
                     (b[0] - frame[0]) * scale,
@@ -177,6 +187,8 @@ def labels_of(
     rest = [order[i][0][0] not in dropped for i in range(len(order))]
     more = placed(box, s, rest, [False] * len(order), height, avoid=beside) if any(rest) else ()
     main = tuple(sorted(beside + more, key=lambda lab: labelling.label_order(lab.names)))
+    if not with_insets:
+        return main, ()
     # the insets: the crowded region (the geometry's), and a square about each crowd of
     # the other points whose labels have no place keeping the rules in the whole view
     pts = to_pt(anchors, box, s)

@@ -237,6 +237,7 @@ def build_scene(
     break_points: bool | str = False,
     font_pt: float = labelling.FONT_PT,
     num: Mapping[str, Any] | None = None,
+    with_insets: bool = True,
 ) -> Scene:
     """The numeric picture of ``construction`` (any prefix ``c.upto(i)`` too).
 
@@ -249,7 +250,9 @@ def build_scene(
     the envelope, stay small unlabelled markers; ``"all"`` labels every break point
     (an animation names each at its step).  ``num``: the numbers of the objects
     (:func:`graspcompass.scene.layout.numeric_objects` of this construction or of one it
-    is a prefix of), when the caller has them.
+    is a prefix of), when the caller has them.  ``with_insets`` false leaves the insets out
+    (:attr:`Scene.insets` empty; :attr:`Scene.labels` the same): for a painter that
+    zooms on its own, an animation's camera.
 
     Raises
     ------
@@ -335,6 +338,8 @@ def build_scene(
         envelope,
         [xy for names, xy in grouped if names[0] in small - on] + free,
         font_pt,
+        with_insets,
+        frozenset(small),
     )
     return Scene(
         box,
