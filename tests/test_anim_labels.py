@@ -31,6 +31,11 @@ from graspcompass.scene.layout import label_tex
 OWN = Grasp("1.2", "0.3", "0.4", "61deg", "118deg", xi1="67deg", xi2="49deg")
 #: a label joins points apart but closer than a marker (``O, X_4``)
 NEAR = Grasp(13 / 10, 3 / 5, 7 / 10, "70*pi/180", "75*pi/180", xi1="40*pi/180", xi2="35*pi/180")
+#: contacts 0.1 from the y-axis: nine points within 0.03 of O in a view 35 wide (found by
+#: hypothesis), the camera must come 100 times closer to name B12 at its step
+TINY = Grasp("0.1", "0.1", "0.53", "114deg", "20deg", xi1="73deg", xi2="72deg")
+#: two crowds far apart, round O and round V1, V2: a zoom on each after the hold
+TWO_CROWDS = Grasp("0.1", "0.1", "0", "20deg", "20deg", xi1="72deg", xi2="72deg")
 #: half a pixel: what the renderer rounds
 EPS = 0.5
 
@@ -136,7 +141,9 @@ def test_presets(preset: str) -> None:
     _check(Grasp.preset(preset))
 
 
-@pytest.mark.parametrize("grasp", [OWN, NEAR], ids=["own", "near"])
+@pytest.mark.parametrize(
+    "grasp", [OWN, NEAR, TINY, TWO_CROWDS], ids=["own", "near", "tiny", "two-crowds"]
+)
 def test_grasps_of_ones_own(grasp: Grasp) -> None:
     _check(grasp)
 

@@ -45,7 +45,8 @@ def worksheet(tmp: Path) -> None:
 
 
 def lecture_frame(tmp: Path) -> None:
-    """A frame of the lecture video (1280x720) at the end of the circle on O V4, and the last."""
+    """Frames of the lecture video (1280x720): the end of the circle on O V4, the zoom on the
+    crowded centre after the hold, and the last."""
     import matplotlib.pyplot as plt
 
     import graspcompass as gc
@@ -53,8 +54,14 @@ def lecture_frame(tmp: Path) -> None:
 
     c = gc.internal_force_diagram(gc.Grasp.preset("fig6"))
     anim = animate_construction(c, quality="lecture")
-    for step, name in ((c.step("circle4").index, "lecture-frame.png"), (None, "lecture-final.png")):
-        frame = anim.frame_count - 1 if step is None else anim.timeline.last_frame_of_step(step)
+    tl = anim.timeline
+    zoom = next(tl.segment_range(i) for i, s in enumerate(tl.segments) if s.kind == "inset")
+    frames = {
+        "lecture-frame.png": tl.last_frame_of_step(c.step("circle4").index),
+        "lecture-zoom.png": zoom[len(zoom) // 2],  # resting on the crowded centre
+        "lecture-final.png": anim.frame_count - 1,
+    }
+    for name, frame in frames.items():
         plt.imsave(HERE / name, anim.render(frame))
 
 

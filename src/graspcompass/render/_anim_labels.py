@@ -53,7 +53,7 @@ _LEAST = 0.2
 _CROWD = 0.2
 #: The sides tried, as fractions of a step's box, about a new point whose label has no
 #: place keeping the rules in that box.
-_CLOSER = (0.7, 0.5, 0.35, 0.25, 0.18, 0.12, 0.08)
+_CLOSER = (0.7, 0.5, 0.35, 0.25, 0.18, 0.12, 0.08, 0.05, 0.03, 0.02, 0.012, 0.008)
 #: At most this many final zooms (a crowd, a closer one in it, another crowd, ...).
 _ZOOMS = 4
 #: At most this many rounds of bringing the camera closer.

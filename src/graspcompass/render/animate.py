@@ -348,9 +348,9 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         """The caption of ``frame`` as shown: the step's number in the protocol (as
         ``graspcompass steps`` prints it), the instrument, the paper's reference, the text."""
         st = self.timeline.at(frame)
-        if st.kind == "inset":
+        if st.kind == "inset" and zoomed(st.raw):  # the zoom's while it shows a crowd
             return self._inset_wrapped
-        return self._hold_wrapped if st.kind == "hold" else self._wrapped[st.step]
+        return self._hold_wrapped if st.kind in ("hold", "inset") else self._wrapped[st.step]
 
     def caption_seconds_of_step(self, step: int) -> float:
         """How long the caption of ``step`` is on screen, in seconds at :attr:`fps`."""
