@@ -131,3 +131,36 @@ def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
     assert frames == anim.frame_count
     assert os.path.getsize(path) > 1000
+
+
+def test_the_zoom_after_the_hold_is_drawn_as_a_full_render(fig6):
+    """The frames of the zoom on the crowded centre (the camera gliding in, resting, gliding
+    back), as the player writes them (stills repeated, moving views drawn in full), are the
+    frames rendered one by one; the camera rests inside the dashed square, several times
+    closer, and ends on the whole view."""
+    import numpy as np
+
+    anim = animate_construction(
+        fig6,
+        frames_per_step=1,
+        pause_frames=0,
+        hold_frames=1,
+        caption_seconds=0,
+        figsize=(4, 4.4),
+        dpi=30,
+        min_text_px=0,
+        inset_seconds=2.0,
+    )
+    tl = anim.timeline
+    segments = [tl.segment_range(i) for i, s in enumerate(tl.segments) if s.kind == "inset"]
+    assert len(segments) == len(anim._zooms) >= 1  # one zoom per crowd
+    assert all(len(r) == round(2.0 * anim.fps) for r in segments)
+    frames = list(anim.iter_frames())
+    for r in segments:
+        for f in r:
+            assert np.array_equal(frames[f], anim.render(f)), f
+    for r, z in zip(segments, anim._zooms):
+        whole, rest = _view(anim, r[-1]), _view(anim, r[len(r) // 2])
+        assert rest == pytest.approx(z)
+        assert (whole[1] - whole[0]) / (rest[1] - rest[0]) > 2.0
+        assert whole == pytest.approx(anim._whole)

@@ -270,6 +270,7 @@ def test_still_frames_repeat_the_frame_before(fig6):
         hold_frames=1,
         caption_seconds=1.0,
         reading_rate=0,
+        inset_seconds=0,  # the steps' stills are the matter here, not the zoom after them
     )
     tl = anim.timeline
     rest = [i for i, seg in enumerate(tl.segments) if seg.kind == "rest"]

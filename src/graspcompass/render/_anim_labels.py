@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING, Any
 from matplotlib.lines import Line2D
 from matplotlib.text import Annotation
 
+from ..scene import labelling
 from ..scene.layout import label_tex
 from ..scene.picture import build_scene, scene_of
 from ._anim_ink import _fade, _inks, _restore, _snap, dim_alpha
@@ -58,6 +59,10 @@ _CLOSER = (0.7, 0.5, 0.35, 0.25, 0.18, 0.12, 0.08, 0.05, 0.03, 0.02, 0.012, 0.00
 _ZOOMS = 4
 #: At most this many rounds of bringing the camera closer.
 _ROUNDS = 3
+#: The largest font, as a fraction of the placement's frame, for which the camera comes
+#: closer or zooms on a crowd (labels larger than that have no room at any zoom: a frame
+#: drawn at a few dozen dpi with text at least 14 pixels high).
+_LARGEST = 0.08
 
 
 @dataclass
@@ -150,6 +155,8 @@ class ViewLabels:
             return placed[last, box, named]
 
         runs = self._runs(boxes, place)
+        # labels so large against the frame that no zoom gives them room: no closer camera
+        zoom = zoom and font_pt <= _LARGEST * labelling.FRAME_PT
         for _ in range(_ROUNDS if zoom else 0):  # the camera closer where a new point's
             # label has no place; a run cut in two is placed again, and may need it too
             closer = self._closer(construction, boxes, runs, place, num)
