@@ -133,16 +133,17 @@ def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
     assert os.path.getsize(path) > 1000
 
 
-def test_the_zoom_after_the_hold_is_drawn_as_a_full_render(fig6):
-    """The frames of the zoom on the crowded centre (the camera gliding in, resting, gliding
-    back), as the player writes them (stills repeated, moving views drawn in full), are the
-    frames rendered one by one; the camera rests inside the dashed square, several times
-    closer, and ends on the whole view."""
+def test_the_frames_written_are_full_renders(fig6):
+    """Every frame as the player writes it (stills repeated, a view that moves drawn in
+    full, the rest of a step blitted on a base of the view the camera rests on) is the frame
+    rendered alone (but for a few pixels where blitted strokes overlap), the zooms on the
+    crowds after the hold too; there the camera rests on each crowd, several times closer,
+    and ends on the whole view."""
     import numpy as np
 
     anim = animate_construction(
         fig6,
-        frames_per_step=1,
+        frames_per_step=3,
         pause_frames=0,
         hold_frames=1,
         caption_seconds=0,
@@ -156,9 +157,10 @@ def test_the_zoom_after_the_hold_is_drawn_as_a_full_render(fig6):
     assert len(segments) == len(anim._zooms) >= 1  # one zoom per crowd
     assert all(len(r) == round(2.0 * anim.fps) for r in segments)
     frames = list(anim.iter_frames())
-    for r in segments:
-        for f in r:
-            assert np.array_equal(frames[f], anim.render(f)), f
+    assert len(frames) == anim.frame_count
+    for f, rgb in enumerate(frames):  # blitting draws a few pixels of overlap in another order
+        far = np.abs(rgb.astype(int) - anim.render(f).astype(int)).max(axis=2) > 40
+        assert far.mean() < 0.005, (f, tl.at(f))
     for r, z in zip(segments, anim._zooms):
         whole, rest = _view(anim, r[-1]), _view(anim, r[len(r) // 2])
         assert rest == pytest.approx(z)

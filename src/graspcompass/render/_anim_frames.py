@@ -83,20 +83,34 @@ class _CameraFrames:
                     last, view = end, None
                     continue
                 before = self._boxes[seg.step - 1] if seg.step > 0 else self._whole
-                if seg.kind in ("title", "inset") or (
+                glide = frames  # the frames whose view moves: drawn in full
+                under = any(r in ("fill", "cone") for _, r, _ in self._items[seg.step])
+                if seg.kind == "draw" and before != self._boxes[seg.step] and not under:
+                    # the camera glides over the first part of the stroke, then rests: the
+                    # rest of the segment is blitted on a base of the view it rests on (not
+                    # a step filling an area under what is drawn: blitted, it would cover it)
+                    end = self._boxes[seg.step]
+                    moved = [
+                        f
+                        for f in frames
+                        if camera_box(self._boxes, self._whole, seg.step, "draw", tl.at(f).raw)
+                        != end
+                    ]
+                    glide = range(frames.start, frames.start + len(moved))
+                elif seg.kind not in ("title", "inset") and not (
                     seg.kind == "draw" and before != self._boxes[seg.step]
                 ):
-                    for f in frames:
-                        if (
-                            last is not None
-                            and self._still(f)
-                            and (f > frames.start or seg.kind == "rest")
-                        ):
-                            yield last
-                            continue
-                        last = full(f)
+                    glide = range(frames.start, frames.start)
+                for f in glide:
+                    if last is not None and self._still(f) and f > frames.start:
                         yield last
+                        continue
+                    last = full(f)
+                    yield last
+                if glide:
                     view = None
+                frames = range(glide.stop, frames.stop)
+                if not frames:
                     continue
                 box = camera_box(self._boxes, self._whole, seg.step, seg.kind, 1.0)
                 if box != view:  # a new base: the static artists in this view
