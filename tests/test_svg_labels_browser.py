@@ -133,7 +133,7 @@ TWO_CROWDS = Grasp("0.1", "0.1", "0", "20deg", "20deg", xi1="72deg", xi2="72deg"
 def test_svg_labels_of_wide_random_grasps_in_chromium() -> None:
     """Grasps over the hypothesis tests' range (tiny contacts, near-flat cones, crowds far
     apart): the same rules, in each panel, with an inset for each crowd."""
-    grasps = [TWO_CROWDS, *wide_grasps(24)]
+    grasps = [TWO_CROWDS, *wide_grasps(16)]
     with chromium("the SVG labels") as browser:
         page = browser.new_page(viewport={"width": 1400, "height": 900})
         report = {}
