@@ -200,14 +200,41 @@ def _wrap(text: str, width: float, measure: Any) -> str:
     return "\n".join(lines)
 
 
+#: Widths of caption words as drawn, by (word, mathtext, font, dpi): every animation of a
+#: process lays out the same words (matplotlib keeps only the last 50 formulas parsed).
+_WIDTHS: dict[tuple[str, bool, int, float], float] = {}
+#: Widths of text artists as drawn, by (text, font, dpi).
+_DRAWN: dict[tuple[str, int, float], float] = {}
+#: Heights of wrapped captions as drawn, by (text, font, line spacing, dpi).
+_HEIGHTS: dict[tuple[str, int, Any, float], float] = {}
+_MOST = 20000  # entries of each, then it starts again
+
+
+def drawn_width(t: Any, renderer: Any) -> float:
+    """The width in pixels of the text artist ``t`` as drawn (once per text, font and dpi
+    in a process: the side panel tries its list at several sizes)."""
+    key = (t.get_text(), hash(t.get_fontproperties()), float(renderer.dpi))
+    if key not in _DRAWN:
+        if len(_DRAWN) > _MOST:
+            _DRAWN.clear()
+        _DRAWN[key] = t.get_window_extent(renderer).width
+    return _DRAWN[key]
+
+
 def _text_width(renderer: Any, prop: Any) -> Any:
     """A fast measure of text widths in pixels, mathtext as rendered: the sum of the
     words' widths (each measured once, a word with a formula by the mathtext parser)
     and of the spaces, 3 % wider for kerning and hinting."""
     cache: dict[str, float] = {}
+    font, dpi = hash(prop), float(renderer.dpi)
 
     def width(w: str, math: bool) -> float:
-        return renderer.get_text_width_height_descent(w, prop, math)[0]
+        key = (w, math, font, dpi)
+        if key not in _WIDTHS:
+            if len(_WIDTHS) > _MOST:
+                _WIDTHS.clear()
+            _WIDTHS[key] = renderer.get_text_width_height_descent(w, prop, math)[0]
+        return _WIDTHS[key]
 
     bar = width("||", False)
     space = width("| |", False) - bar
@@ -272,9 +299,15 @@ def _layout(anim: ConstructionAnimation, layout: str, caption_pt: float) -> None
     anim._hold_wrapped = _wrap(anim._hold_text, width, measure)
     anim._inset_wrapped = _wrap(anim._inset_text, width, measure)
     heights: dict[str, float] = {}
+    font = (hash(anim._caption.get_fontproperties()), anim._caption.get_linespacing())
     for t in {*anim._wrapped, anim._hold_wrapped, anim._inset_wrapped}:
-        anim._caption.set_text(t)
-        heights[t] = anim._caption.get_window_extent(renderer).height
+        key = (t, font[0], font[1], float(fig.dpi))
+        if key not in _HEIGHTS:  # measured as drawn, once per process
+            if len(_HEIGHTS) > _MOST:
+                _HEIGHTS.clear()
+            anim._caption.set_text(t)
+            _HEIGHTS[key] = anim._caption.get_window_extent(renderer).height
+        heights[t] = _HEIGHTS[key]
     tallest = max(heights.values())
     # the side panel's list is under the steps' captions but the last's; the plot of the
     # last step (the envelope) under its caption and the final hold's

@@ -23,6 +23,7 @@ from matplotlib.axes import Axes
 from matplotlib.text import Text
 
 from ..scene.layout import tex
+from ._anim_layout import drawn_width
 
 __all__: list[str] = []
 
@@ -131,7 +132,7 @@ class SidePanel:
             places: list[tuple[float, int]] = []
             for k, (t, _) in enumerate(self.cells):
                 t.set_fontsize(size)
-                w = t.get_window_extent(renderer).width
+                w = drawn_width(t, renderer)
                 first = k == 0 or k in ends
                 if first or x + w > right:
                     broken |= not first
