@@ -214,3 +214,42 @@ def test_a_fault_is_seen() -> None:
     b.xy, b.xyann = a.xy, a.xyann
     b.set(ha=a.get_ha(), va=a.get_va())
     assert any(" over " in x for x in faults(anim, f))
+
+
+def test_zoom_and_break_points_from_the_command_line(monkeypatch, tmp_path) -> None:
+    """``--zoom S`` and ``--break-points`` reach the animation; ``--zoom 0`` leaves the zoom
+    out, ``--zoom S`` makes each zoom S seconds long; with ``break_points`` the finished
+    diagram names the break points on Fig. 6's envelope (its arcs run on circles 2, 4, 3,
+    1: B24, B34, B13, B12; B14 and B23 lie off it), and each of the six is named at its own
+    step in any case."""
+    import graspcompass.render.animate as animate_module
+    from graspcompass.cli import main
+
+    asked = []
+
+    def spy(c, **kw):  # what the command asks for, then a one-line refusal to stop it
+        asked.append(kw)
+        raise ValueError("stopped by the test")
+
+    monkeypatch.setattr(animate_module, "animate_construction", spy)
+    for argv in (["--zoom", "0"], ["--zoom", "2.5", "--break-points"]):
+        assert main(["animate", *argv, "-o", str(tmp_path / "x.gif"), "-q"]) == 2
+        assert asked[-1]["inset_seconds"] == float(argv[1])
+        assert asked[-1]["break_points"] == ("--break-points" in argv)
+    monkeypatch.undo()
+    c = internal_force_diagram(Grasp.preset("fig6"))
+    kw = dict(frames_per_step=1, pause_frames=0, hold_frames=1, caption_seconds=0)
+    none = animate_construction(c, inset_seconds=0, **kw)
+    assert not [s for s in none.timeline.segments if s.kind == "inset"]
+    lit = animate_construction(c, inset_seconds=2.5, break_points=True, **kw)
+    tl = lit.timeline
+    zooms = [tl.segment_range(i) for i, s in enumerate(tl.segments) if s.kind == "inset"]
+    assert zooms and all(len(r) == round(2.5 * lit.fps) for r in zooms)
+    hold = tl.segment_range([i for i, s in enumerate(tl.segments) if s.kind == "hold"][-1])
+    names = set()
+    for f in [hold[-1], *(r[len(r) // 2] for r in zooms)]:
+        names |= {n for t in _named(lit, f) for n in re.findall(r"B_\{(\d\d)\}", t)}
+    assert names == {"24", "34", "13", "12"}
+    for b in ("12", "13", "14", "23", "24", "34"):  # each named at its own step
+        f = tl.last_frame_of_step(c.step(f"B{b}").index)
+        assert any(f"B_{{{b}}}" in t for t in _named(lit, f)), b

@@ -400,6 +400,10 @@ def parser():
         ["--circle", "5"],
         ["--fps", "0"],
         ["--dpi", "inf"],
+        ["--zoom", "-1"],
+        ["--zoom", "61"],
+        ["--zoom", "nan"],
+        ["--break-points", "yes"],
     ],
 )
 def test_option_errors_are_one_line_usage_errors(bad, capsys):
