@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
 from matplotlib.lines import Line2D
 from matplotlib.text import Annotation
 
@@ -27,6 +28,7 @@ from ..scene import labelling
 from ..scene.layout import label_tex
 from ..scene.picture import build_scene, scene_of
 from ._anim_ink import _fade, _inks, _restore, _snap, dim_alpha
+from .figure import label_artists
 from .theme import MIN_CONTRAST
 
 if TYPE_CHECKING:
@@ -41,8 +43,6 @@ __all__: list[str] = []
 Box = tuple[float, float, float, float]
 XY = tuple[float, float]
 
-_HA = {1: "left", -1: "right", 0: "center"}
-_VA = {1: "bottom", -1: "top", 0: "center"}
 #: The sides of a final zoom tried, as fractions of the first, until every label in it
 #: keeps the rules; the first holds its points padded by :data:`_PAD` of their extent
 #: on each side, and is at least :data:`_LEAST` of the whole view.
@@ -273,39 +273,15 @@ class ViewLabels:
         return best
 
     def _draw(self, v: int, view: View, lab: Label, bg: Any) -> ViewLabel:
-        ax, theme, k = self.ax, self.theme, self.k
-        text = ax.annotate(
-            f"${lab.tex()}$",
-            lab.point,
-            xytext=(lab.offset[0] * k, lab.offset[1] * k),
-            textcoords="offset points",
-            ha=_HA[lab.direction[0]],
-            va=_VA[lab.direction[1]],
-            fontsize=theme.font_size,
-            annotation_clip=True,
-            color=theme.label_color,
-            zorder=6,
-            bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65),
-            visible=False,
-        )
-        text.set_clip_on(True)
-        leader = None
+        ax = self.ax
+        text, leader = label_artists(ax, lab, self.theme, self.k, clip=True)
+        text.set_visible(False)
         end = (0.0, 0.0)
-        if lab.leader:
-            x0, y0, x1, y1 = lab.box
-            px, py = lab.point
-            near = (min(max(px, x0), x1), min(max(py, y0), y1))
+        if leader is not None:  # its far end in points: the same length at any zoom
+            leader.set_visible(False)
+            xy = np.asarray(leader.get_xydata(), dtype=float)  # the point, the near end
             per = ax.bbox.width * 72.0 / ax.figure.dpi / (view.box[1] - view.box[0])  # type: ignore[union-attr]
-            end = ((near[0] - px) * per, (near[1] - py) * per)
-            (leader,) = ax.plot(
-                [px, near[0]],
-                [py, near[1]],
-                color=theme.label_color,
-                lw=0.5,
-                zorder=5.5,
-                gid="leader",
-                visible=False,
-            )
+            end = (float(xy[1, 0] - xy[0, 0]) * per, float(xy[1, 1] - xy[0, 1]) * per)
         # each name with the separator before it, as Label.join writes them
         pieces = lab.join(lambda n: label_tex(n) + "\0").split("\0")[:-1]
         parts = [(self._index[n], p) for n, p in zip(lab.names, pieces)]

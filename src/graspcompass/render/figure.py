@@ -16,8 +16,10 @@ from typing import TYPE_CHECKING, Any
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import Polygon, Rectangle
+from matplotlib.text import Annotation
 
 from ..scene import labelling
 from ..scene.layout import numeric_objects, shape_extent
@@ -45,6 +47,7 @@ __all__ = [
     "figure_diagram",
     "figure_k_plot",
     "grasp_title",
+    "label_artists",
     "save_figure",
 ]
 
@@ -239,6 +242,42 @@ _HA = {1: "left", -1: "right", 0: "center"}
 _VA = {1: "bottom", -1: "top", 0: "center"}
 
 
+def label_artists(
+    ax: Axes, lab: Any, theme: Theme, k: float = 1.0, clip: bool = False
+) -> tuple[Annotation, Line2D | None]:
+    """The text of one of the scene's labels (:class:`graspcompass.scene.picture.Label`)
+    at its offset in points from its point (``k`` times it: axes ``k`` times the
+    placement's frame), and its leader line from the point to the label's box (a label set
+    far away), or None.  ``clip``: drawn only inside the axes (a zoomed view)."""
+    leader = None
+    if lab.leader:  # a thin line from the point to its label set far away
+        x0, y0, x1, y1 = lab.box
+        near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
+        (leader,) = ax.plot(
+            [lab.point[0], near[0]],
+            [lab.point[1], near[1]],
+            color=theme.label_color,
+            lw=0.5,
+            zorder=5.5,
+            gid="leader",
+        )
+    text = ax.annotate(
+        f"${lab.tex()}$",
+        lab.point,
+        xytext=(lab.offset[0] * k, lab.offset[1] * k),
+        textcoords="offset points",
+        ha=_HA[lab.direction[0]],
+        va=_VA[lab.direction[1]],
+        fontsize=theme.font_size,
+        annotation_clip=clip,
+        color=theme.label_color,
+        zorder=6,
+        bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65),
+    )
+    text.set_clip_on(clip)
+    return text, leader
+
+
 def _label_points(
     ax: Axes, labels: Any, theme: Theme, out: dict[str, list[Artist]], k: float = 1.0
 ) -> None:
@@ -249,34 +288,9 @@ def _label_points(
     placement's frame); a group shows the names made so far.
     """
     for lab in labels:
-        if lab.leader:  # a thin line from the point to its label set far away
-            x0, y0, x1, y1 = lab.box
-            near = (min(max(lab.point[0], x0), x1), min(max(lab.point[1], y0), y1))
-            (leader,) = ax.plot(
-                [lab.point[0], near[0]],
-                [lab.point[1], near[1]],
-                color=theme.label_color,
-                lw=0.5,
-                zorder=5.5,
-                gid="leader",
-            )
-            for n in lab.names:  # made with its label, not before
-                out.setdefault(n, []).append(leader)
-        text = ax.annotate(
-            f"${lab.tex()}$",
-            lab.point,
-            xytext=(lab.offset[0] * k, lab.offset[1] * k),
-            textcoords="offset points",
-            ha=_HA[lab.direction[0]],
-            va=_VA[lab.direction[1]],
-            fontsize=theme.font_size,
-            annotation_clip=False,
-            color=theme.label_color,
-            zorder=6,
-            bbox=dict(boxstyle="round,pad=0.08", fc="white", ec="none", alpha=0.65),
-        )
-        for n in lab.names:
-            out.setdefault(n, []).append(text)
+        text, leader = label_artists(ax, lab, theme, k)
+        for n in lab.names:  # the leader made with its label, not before
+            out.setdefault(n, []).extend([text] if leader is None else [leader, text])
 
 
 def figure_diagram(
