@@ -14,6 +14,11 @@ TikZ code with the value as a decimal with 12 significant digits.  The points
 are ``\\coordinate``\\ s named after the steps (``O_M`` -> ``OM``); points
 outside the picture are kept as comments.  The envelope k_grasp (eq. (25)) is
 one path of exact circular arcs (``arc[start angle, delta angle, radius]``).
+
+Every length stays far inside TeX's 16383.99 pt (:mod:`._tikz_frame`): the lines are cut
+a little beyond the picture's clip, and a zoomed inset far from O is written about its
+square's centre (a comment gives the shift) with, where a circle or an arc is still
+too large at its scale, the polyline of its visible part.
 """
 
 from __future__ import annotations
@@ -23,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..scene.labelling import FRAME_PT, SMALL_MARKER
 from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, scene_of
+from ._tikz_frame import Frame, arc_points
 
 #: A point's dot (``dot`` style), and a break point's: the scene's one ratio.
 _DOT_PT = 3.0
@@ -54,10 +60,6 @@ def _num(v: float) -> str:
     if "e" in text or "E" in text:
         text = f"{v:.12f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
-
-
-def _xy(p: tuple[float, float]) -> str:
-    return f"({_num(p[0])}, {_num(p[1])})"
 
 
 def _cname(name: str) -> str:
@@ -236,43 +238,71 @@ def _style_defs(scene: Scene) -> list[str]:
     ]
 
 
-def _envelope_path(scene: Scene) -> str:
-    parts = [_xy(scene.envelope[0].start)]
-    for a in scene.envelope:
+def _envelope_path(scene: Scene, frame: Frame) -> list[str]:
+    """The envelope as one path of exact arcs; where an arc is too large for TeX in this
+    picture (a zoomed inset), the polygon of its visible part."""
+    arcs = scene.envelope
+    if all(a.n == 0 or frame.fits(a.center, a.radius) for a in arcs) and all(
+        frame.fits(a.start, 0.0) and frame.fits(a.end, 0.0) for a in arcs
+    ):
+        parts = [frame.xy(arcs[0].start)]
+        for a in arcs:
+            if a.n == 0:
+                parts.append(f"-- {frame.xy(a.end)}")
+            else:
+                parts.append(
+                    f"arc[start angle={_num(a.start_angle)}, delta angle={_num(a.delta)}, "
+                    f"radius={_num(a.radius)}]"
+                )
+        return ["\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"]
+    outline: list[tuple[float, float]] = []
+    for a in arcs:
         if a.n == 0:
-            parts.append(f"-- {_xy(a.end)}")
+            outline += [a.start, a.end]
         else:
-            parts.append(
-                f"arc[start angle={_num(a.start_angle)}, delta angle={_num(a.delta)}, "
-                f"radius={_num(a.radius)}]"
-            )
-    return "\\filldraw[envelope] " + " ".join(parts) + " -- cycle;"
+            outline += arc_points(a.center, a.radius, a.start_angle, a.delta)
+    return [f"\\filldraw[envelope] {frame.path(q, closed=True)};" for q in frame.polygons(outline)]
+
+
+def _circle(frame: Frame, style: str, center: tuple[float, float], radius: float) -> list[str]:
+    """A circle, or the polyline of its visible part where TeX cannot hold it."""
+    if frame.fits(center, radius):
+        return [f"\\draw[{style}] {frame.xy(center)} circle[radius={_num(radius)}];"]
+    ring = arc_points(center, radius, 0.0, 360.0)
+    return [f"\\draw[{style}] {frame.path(q)};" for q in frame.polylines(ring)]
 
 
 def _body(
     scene: Scene,
     construction: Construction,
-    box: tuple[float, ...],
+    frame: Frame,
     pad: float,
     zoom: float | None = None,
 ) -> list[str]:
-    """The drawing of every object, clipped to ``box`` (the diagram, or the inset drawn
-    at ``zoom`` points per unit)."""
+    """The drawing of every object, clipped to the frame's box (the diagram, or the inset
+    drawn at ``zoom`` points per unit), in the frame's coordinates."""
     out: list[str] = []
-    corners = f"{_xy((box[0], box[2]))} rectangle {_xy((box[1], box[3]))}"
+    box = frame.box
+    corners = f"{frame.xy((box[0], box[2]))} rectangle {frame.xy((box[1], box[3]))}"
     out += [f"\\path[use as bounding box] {corners};", f"\\clip {corners};"]
     if scene.outline is not None:
         kind, dims = scene.outline
         out.append(_comment("the grasped object (given)"))
-        out.append(
-            f"\\filldraw[object] (0, 0) circle[radius={_num(dims[0])}];"
-            if kind == "circle"
-            else f"\\filldraw[object] {_xy((-dims[0] / 2, -dims[1] / 2))} rectangle "
-            f"{_xy((dims[0] / 2, dims[1] / 2))};"
-        )
+        if kind == "circle" and frame.fits((0.0, 0.0), dims[0]):
+            out.append(f"\\filldraw[object] {frame.xy((0.0, 0.0))} circle[radius={_num(dims[0])}];")
+        else:
+            w, h = dims[0] / 2, dims[1] / 2
+            shape = (
+                arc_points((0.0, 0.0), dims[0], 0.0, 360.0)
+                if kind == "circle"
+                else [(-w, -h), (w, -h), (w, h), (-w, h)]
+            )
+            out += [
+                f"\\filldraw[object] {frame.path(q, closed=True)};" for q in frame.polygons(shape)
+            ]
     for i, cone in enumerate(scene.cones, start=1):
         out.append(_comment(f"friction cone at P{i} (given, Fig. 2)"))
-        out.append("\\fill[cone] " + " -- ".join(_xy(p) for p in cone) + " -- cycle;")
+        out += [f"\\fill[cone] {frame.path(q, closed=True)};" for q in frame.polygons(cone)]
     lines = {n: (a, b) for n, _, a, b in scene.lines}
     roles = {n: r for n, r, _, _ in scene.lines}
     lengths = {n: (a, b) for n, a, b in scene.lengths}
@@ -285,26 +315,24 @@ def _body(
             "coordinate": f", dotted, draw=gccircle{ins.n}",
             "drop": ", dashed",
         }.get(ins.role, "")
-        tools.setdefault(ins.step, []).append(
-            f"\\draw[instrument{dash}] "
-            + " -- ".join(_xy(p) for p in ins.points)
-            + f"; % {ins.role}"
+        tools.setdefault(ins.step, []).extend(
+            f"\\draw[instrument{dash}] {frame.path(q)}; % {ins.role}"
+            for q in frame.polylines(ins.points)
         )
     for s in construction.steps:
         out.append(_comment(f"[{s.index}] {s.name} ({s.op}, {s.instrument}; {s.ref}): {s.caption}"))
         if s.kind != "envelope":
             out.append(_comment(f"exact: {exact_text(s.obj)}"))
         if s.name in lines:
-            a, b = lines[s.name]
-            out.append(f"\\draw[{roles[s.name]}] {_xy(a)} -- {_xy(b)};")
+            style = roles[s.name]
+            out += [f"\\draw[{style}] {frame.path(q)};" for q in frame.polylines(lines[s.name])]
         elif s.name in lengths:
-            a, b = lengths[s.name]
-            out.append(f"\\draw[length] {_xy(a)} -- {_xy(b)};")
+            out += [f"\\draw[length] {frame.path(q)};" for q in frame.polylines(lengths[s.name])]
         elif s.name in circles:
             k, c, r = circles[s.name]
-            out.append(f"\\draw[thales, draw=gccircle{k}] {_xy(c)} circle[radius={_num(r)}];")
-        elif s.name in points:
-            out.append(f"\\coordinate ({_cname(s.name)}) at {_xy(points[s.name])};")
+            out += _circle(frame, f"thales, draw=gccircle{k}", c, r)
+        elif s.name in points and frame.fits(points[s.name], 0.0):
+            out.append(f"\\coordinate ({_cname(s.name)}) at {frame.xy(points[s.name])};")
         elif s.kind == "point":
             out.append(
                 _comment(
@@ -314,13 +342,21 @@ def _body(
             )
         elif s.kind == "envelope" and scene.envelope:
             out.append(_comment("exact arcs: " + exact_text(s.obj)))
-            out.append(_envelope_path(scene))
+            out += _envelope_path(scene, frame)
         out += tools.get(s.name, [])
     return out
 
 
-def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> list[str]:
-    """The markers of the points in ``box`` and the ``labels`` (white behind the glyphs)."""
+def _top_aligned(out: list[str]) -> None:
+    """The last ``tikzpicture`` begun in ``out`` set on the baseline of its top edge."""
+    k = max(i for i, line in enumerate(out) if line.startswith("\\begin{tikzpicture}["))
+    out[k] = out[k].replace("[", "[baseline=(current bounding box.north), ", 1)
+
+
+def _points(scene: Scene, labels: tuple[Label, ...], frame: Frame) -> list[str]:
+    """The markers of the points in the frame's box and the ``labels`` (white behind the
+    glyphs)."""
+    box = frame.box
     by_name = {lab.names[0]: lab for lab in labels}
     out = [_comment("points and their labels (coincident points share one label)")]
     for names, xy in scene.points:
@@ -332,7 +368,7 @@ def _points(scene: Scene, labels: tuple[Label, ...], box: tuple[float, ...]) -> 
         lab = by_name.get(names[0])
         if lab is not None:  # a break point too, when labelled on request
             out.append(
-                f"\\node[label, anchor={ANCHORS[lab.direction]}] at {_xy(lab.at)} "
+                f"\\node[label, anchor={ANCHORS[lab.direction]}] at {frame.xy(lab.at)} "
                 f"{{${lab.tex()}$}};"
             )
     return out
@@ -412,23 +448,26 @@ def to_tikz(
         ]
     else:
         out += _styles(scene)
-    out += _body(scene, construction, box, pad)
+    main = Frame(box, _WIDTH_CM / (box[1] - box[0]))
     insets = scene.insets
-    out += _points(scene, scene.labels if not insets else insets[0].main, box)
+    if insets:  # the diagram and the column of insets beside it aligned at their tops
+        _top_aligned(out)
+    out += _body(scene, construction, main, pad)
+    out += _points(scene, scene.labels if not insets else insets[0].main, main)
     for k, inset in enumerate(insets):  # the regions of the insets, dashed
         z = inset.box
         out.append(
             f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
-            f"{_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
+            f"{main.xy((z[0], z[2]))} rectangle {main.xy((z[1], z[3]))};"
         )
         if len(insets) > 1:  # numbered as their insets
-            corner = _xy((z[0], z[3]))
+            corner = main.xy((z[0], z[3]))
             number = f"{{{k + 1}}};"
             out.append(f"\\node[above left, inner sep=1pt, font=\\scriptsize] at {corner} {number}")
     out.append("\\end{tikzpicture}")
     main_unit = _WIDTH_CM / (box[1] - box[0])
     if insets:  # the zoomed insets, one above the other right of the diagram
-        out.append("\\hskip 0.5cm\\vbox{")
+        out.append("\\hskip 0.5cm\\vtop{")
     for k, inset in enumerate(insets):
         z = inset.box
         # its labels were placed in a frame INSET_PT / FRAME_PT times the diagram's
@@ -453,10 +492,22 @@ def to_tikz(
                 )
                 .split("\n")
             )
-        out += _body(scene, construction, z, pad, inset.zoom)
-        out += _points(scene, inset.labels, z)
+        if not k:
+            _top_aligned(out)
+        frame = Frame(z, unit)
+        if frame.origin != (0.0, 0.0):
+            cx, cy = (_num(v) for v in frame.origin)
+            out.append(
+                _comment(
+                    f"coordinates about ({cx}, {cy}), the square's centre, for TeX's lengths: "
+                    f"the point (x, y) of the paper is written (x - {cx}, y - {cy})"
+                )
+            )
+        out += _body(scene, construction, frame, pad, inset.zoom)
+        out += _points(scene, inset.labels, frame)
         out.append(
-            f"\\draw[axis, line width=0.4pt] {_xy((z[0], z[2]))} rectangle {_xy((z[1], z[3]))};"
+            f"\\draw[axis, line width=0.4pt] {frame.xy((z[0], z[2]))} rectangle "
+            f"{frame.xy((z[1], z[3]))};"
         )
         which = "the dashed square" if len(insets) == 1 else f"dashed square {k + 1}"
         out.append("\\end{tikzpicture}}")  # the caption under it, outside its clip
