@@ -170,3 +170,58 @@ def test_svg_break_point_labels_name_their_points_in_chromium() -> None:
             if found:
                 report[str(g.params if hasattr(g, "params") else g)] = found
     assert not report, report
+
+
+#: Per SVG: the dashed squares' numbers, and each point's marker and label (client pixels).
+NUMBERS = """() => {
+  const R = e => {
+    const r = e.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; };
+  const main = document.querySelector('g.panel#main');
+  return {
+    nums: [...document.querySelectorAll('text.region-number')].map(t => R(t)),
+    pts: [...main.querySelectorAll('g.point')].map(g => ({
+      m: R(g.querySelector('circle')),
+      t: g.querySelector('text') ? R(g.querySelector('text')) : null})),
+  };
+}"""
+
+#: grasps of a hostile run whose squares' numbers covered labels, markers or each other
+#: (set above the upper left corner, always): two to four insets each
+NUMBERED = [
+    Grasp("2.139", "1.398", "0.078", "181*pi/360", "90deg", xi1="0.6deg", xi2="0.5deg"),
+    Grasp("0.931", "1.626", "0", "91*pi/180", "49*pi/180", xi1="1.5deg", xi2="45deg"),
+    Grasp("1.235", "2.83", "0.021", "pi/18", "43deg", xi1="81deg", xi2="21*pi/80"),
+    Grasp("3.79", "0.093", "2.1", "89*pi/180", "89deg", xi1="pi/6", xi2="1.1deg"),
+    Grasp("0.1948", "0.45", "2.737", "361*pi/720", "15deg", xi1="pi/400", xi2="79deg"),
+    TWO_CROWDS,
+]
+
+
+def test_svg_square_numbers_cover_nothing_in_chromium() -> None:
+    """The numbers of the dashed squares (two insets or more) cover no label, no point
+    marker and no other number, in the browser's layout."""
+    with chromium("the SVG square numbers") as browser:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        report, numbered = {}, 0
+        for g in NUMBERED:
+            svg = to_svg(internal_force_diagram(g))
+            page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
+            m = page.evaluate(NUMBERS)
+            numbered += len(m["nums"]) >= 2
+            bad = [
+                f"number {i + 1} over number {j + 1}"
+                for i, a in enumerate(m["nums"])
+                for j, b in enumerate(m["nums"][i + 1 :], start=i + 1)
+                if overlap(a, b) > 0
+            ]
+            for i, a in enumerate(m["nums"]):
+                bad += [
+                    f"number {i + 1} over a label"
+                    for q in m["pts"]
+                    if q["t"] and overlap(a, q["t"]) > 0
+                ]
+                bad += [f"number {i + 1} over a marker" for q in m["pts"] if overlap(a, q["m"]) > 0]
+            if bad:
+                report[str(g.params)] = bad
+    assert numbered >= 5
+    assert not report, report

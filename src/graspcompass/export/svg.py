@@ -17,7 +17,16 @@ from xml.sax.saxutils import escape, quoteattr
 
 from ..scene import metrics
 from ..scene.labelling import FONT_PT, FRAME_PT, MARKER_PT, SMALL_MARKER
-from ..scene.picture import COLORS, INSET_PT, Label, Scene, exact_text, label_tex, scene_of
+from ..scene.picture import (
+    COLORS,
+    INSET_PT,
+    NUMBER_SCALE,
+    Label,
+    Scene,
+    exact_text,
+    label_tex,
+    scene_of,
+)
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -302,10 +311,13 @@ def to_svg(
             f'height="{d - b:.3f}" fill="none" stroke="{COLORS["axis"]}" '
             'stroke-width="0.8" stroke-dasharray="3,2"/>'
         )
-        if len(insets) > 1:  # the squares numbered as their insets
+        if inset.number is not None:  # the squares numbered as their insets
+            nx, ny = m.xy(inset.number)
             out.append(
-                f'<text class="region-number" x="{a - 2:.3f}" y="{b - 2:.3f}" '
-                f'text-anchor="end" font-size="13" fill="{COLORS["axis"]}">{k + 1}</text>'
+                f'<text class="region-number" x="{nx:.3f}" y="{ny:.3f}" '
+                f'text-anchor="middle" dominant-baseline="central" '
+                f'font-size="{NUMBER_SCALE * _FONT:.2f}" font-family="{metrics.FAMILY}" '
+                f'fill="{COLORS["axis"]}">{k + 1}</text>'
             )
     out += _points(scene, m, scene.labels if not insets else insets[0].main, tip, "", scene.box)
     out.append("</g>")

@@ -460,10 +460,10 @@ def to_tikz(
             f"\\draw[axis, line width=0.4pt, dash pattern=on 2pt off 1pt] "
             f"{main.xy((z[0], z[2]))} rectangle {main.xy((z[1], z[3]))};"
         )
-        if len(insets) > 1:  # numbered as their insets
-            corner = main.xy((z[0], z[3]))
+        if inset.number is not None:  # numbered as their insets, where it covers nothing
             number = f"{{{k + 1}}};"
-            out.append(f"\\node[above left, inner sep=1pt, font=\\scriptsize] at {corner} {number}")
+            at = main.xy(inset.number)
+            out.append(f"\\node[anchor=center, inner sep=0pt, font=\\scriptsize] at {at} {number}")
     out.append("\\end{tikzpicture}")
     main_unit = _WIDTH_CM / (box[1] - box[0])
     if insets:  # the zoomed insets, one above the other right of the diagram

@@ -23,7 +23,7 @@ from matplotlib.text import Annotation
 
 from ..scene import labelling
 from ..scene.layout import numeric_objects, shape_extent
-from ..scene.picture import INSET_PT, build_scene, grasp_title, scene_of
+from ..scene.picture import INSET_PT, NUMBER_SCALE, build_scene, grasp_title, scene_of
 from ._figure_parts import (
     _CORNER,
     _draw_givens,
@@ -398,15 +398,13 @@ def figure_diagram(
                 zorder=6,
             )
         )
-        if len(zooms) > 1:  # the squares numbered as their insets
+        if zoom.number is not None:  # the squares numbered as their insets
             ax.annotate(
                 str(k + 1),
-                (b[0], b[3]),
-                xytext=(-2, 2),
-                textcoords="offset points",
-                ha="right",
-                va="bottom",
-                fontsize=theme.font_size * 0.8,
+                zoom.number,
+                ha="center",
+                va="center",
+                fontsize=theme.font_size * NUMBER_SCALE,
                 color=theme.axis_color,
                 zorder=6,
             )

@@ -16,6 +16,7 @@ import numpy as np
 
 from . import fit as fitting
 from . import labelling, layout
+from ._numbers import numbered
 from ._values import INSET_PT, INSET_SHRINK, LEAST_INSET, MAX_INSETS, Arc, Inset, Label
 from .layout import label_tex
 
@@ -219,10 +220,13 @@ def labels_of(
     # the whole view beside the insets, and each inset: a label breaking a rule is left
     # to a later inset that names its points
     keep = tuple(lab for lab in beside if lab.ok or not later(-1, lab))
-    return main, tuple(
+    shown = tuple(
         replace(ins, main=keep, labels=tuple(x for x in ins.labels if x.ok or not later(k, x)))
         for k, ins in enumerate(insets)
     )
+    markers = [(xy, size[i]) for i, xy in enumerate(anchors)]
+    markers += [(xy, labelling.MARKER_PT * labelling.SMALL_MARKER) for xy in obstacles]
+    return main, numbered(shown, box, s, keep, markers, font_pt)
 
 
 def _crowds(

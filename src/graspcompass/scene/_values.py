@@ -102,6 +102,9 @@ class Inset:
     #: the labels of the whole view when the inset is shown beside it: those of the
     #: crowded points that break a rule there are left to the inset
     main: tuple[Label, ...] = ()
+    #: with two insets or more, the centre of its square's number in the whole view (the
+    #: frame of the paper), just outside the square where it covers nothing
+    number: XY | None = None
 
     @property
     def zoom(self) -> float:

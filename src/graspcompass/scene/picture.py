@@ -28,6 +28,7 @@ from ..construction.describe import describe
 from ..geometry.numeric import to_float
 from . import labelling, layout
 from ._labels import labels_of
+from ._numbers import NUMBER_SCALE
 from ._values import INSET_PT, INSET_SHRINK, Arc, Inset, Label
 from .instruments import Instrument, in_view, instruments_of
 from .layout import group_points, label_tex, wedge
@@ -41,6 +42,7 @@ __all__ = [
     "COLORS",
     "INSET_PT",
     "INSET_SHRINK",
+    "NUMBER_SCALE",
     "Arc",
     "Inset",
     "Instrument",
