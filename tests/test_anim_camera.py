@@ -169,3 +169,75 @@ def test_the_frames_written_are_full_renders(fig6):
         assert rest == pytest.approx(z)
         assert (whole[1] - whole[0]) / (rest[1] - rest[0]) > 2.0
         assert whole == pytest.approx(anim._whole)
+
+
+#: a grasp of a hostile run whose blitted frames drew the envelope over "P_2x, X_4"
+COVERED = Grasp("0.3", "2.4", "0.9", "100deg", "40deg", xi1="20deg", xi2="55deg")
+
+
+@pytest.mark.parametrize("grasp", [COVERED, Grasp.preset("fig6")], ids=["hostile", "fig6"])
+def test_blitted_frames_keep_labels_on_top(grasp):
+    """In the frames as written (blitted), a label is as in the frame rendered alone: a
+    stroke drawn later (the envelope, a circle, a line) does not cover a label above it
+    in z-order.  Compared inside each visible label's box at the end of every step."""
+    import numpy as np
+
+    anim = animate_construction(
+        internal_force_diagram(grasp),
+        frames_per_step=3,
+        pause_frames=0,
+        hold_frames=1,
+        caption_seconds=0,
+        figsize=(6, 6.6),
+        dpi=60,
+        min_text_px=0,
+        inset_seconds=0,
+    )
+    frames = list(anim.iter_frames())
+    tl = anim.timeline
+    h = frames[0].shape[0]
+    checked, bad = 0, []
+    for step in range(len(anim.construction.steps)):
+        f = tl.last_frame_of_step(step)
+        if tl.at(f).kind == "hold":
+            continue
+        full = anim.render(f)
+        renderer = anim.figure.canvas.get_renderer()
+        for t in anim.axes.texts:
+            if not (t.get_visible() and t.get_text().startswith("$")):
+                continue
+            b = t.get_window_extent(renderer)
+            x0, x1 = max(int(b.x0) + 1, 0), min(int(b.x1) - 1, frames[f].shape[1])
+            y0, y1 = max(int(h - b.y1) + 1, 0), min(int(h - b.y0) - 1, h)
+            if x1 - x0 < 3 or y1 - y0 < 3:
+                continue
+            a, c = frames[f][y0:y1, x0:x1].astype(int), full[y0:y1, x0:x1].astype(int)
+            checked += 1
+            differ = (np.abs(a - c).max(axis=2) > 40).mean()
+            if differ > 0.02:
+                bad.append((step, t.get_text(), round(float(differ), 3)))
+    assert checked > 100
+    assert not bad, bad
+
+
+def test_the_hold_comes_to_rest(fig6):
+    """The final hold cross-fades for a fifth of its length, then shows the finished
+    diagram still (it faded for the whole hold, two label layouts on screen at once)."""
+    import numpy as np
+
+    anim = animate_construction(
+        fig6,
+        frames_per_step=2,
+        pause_frames=0,
+        hold_frames=30,
+        caption_seconds=0,
+        figsize=(4, 4.4),
+        dpi=30,
+        min_text_px=0,
+        inset_seconds=0,
+    )
+    frames = list(anim.iter_frames())
+    hold = [f for f in range(len(frames)) if anim.timeline.at(f).kind == "hold"]
+    assert len(hold) == 30
+    moving = [f for f in hold if not np.array_equal(frames[f], frames[hold[-1]])]
+    assert 1 <= len(moving) <= 7, len(moving)

@@ -14,9 +14,12 @@ from matplotlib.artist import Artist
 
 from ._anim_camera import camera_box
 from ._anim_ink import _fade, _restore
-from .timeline import blend
+from .timeline import blend, smoothstep
 
 __all__: list[str] = []
+
+#: The final hold's cross-fade, a fraction of the hold (then the finished diagram at rest).
+FADE = 0.2
 
 
 class _CameraFrames:
@@ -77,8 +80,13 @@ class _CameraFrames:
                 frames = tl.segment_range(i)
                 rows = self._crossfade(i)
                 if rows is not None and last is not None:
+                    # a short cross-fade, then the finished diagram at rest: the labels of
+                    # the drawing and those of the whole view are on screen together only
+                    # while it fades (:data:`FADE`)
                     end = full(frames[-1])
-                    yield from (blend(last, end, tl.at(f).progress, rows) for f in frames[:-1])
+                    n = max(1, round(FADE * len(frames)))
+                    for k in range(len(frames) - 1):
+                        yield blend(last, end, smoothstep(min(1.0, (k + 1) / n)), rows)
                     yield end
                     last, view = end, None
                     continue
@@ -119,7 +127,10 @@ class _CameraFrames:
                     base, view, self._layer = canvas.copy_from_bbox(self.figure.bbox), box, None
                 moving = {id(a) for a in self._movers(i)}
                 resting = [a for a in dynamic if id(a) not in moving]
-                movers = [a for a in dynamic if id(a) in moving]
+                # the step's inputs and the labels are drawn on each frame with what moves,
+                # in z-order: a stroke drawn later must not cover a label or a marker above it
+                on_top = self._on_top(i)
+                movers = [a for a in dynamic if id(a) in moving] + on_top
                 background = self._background(i, frames, resting, base)
                 for f in frames:
                     if (
@@ -162,21 +173,19 @@ class _CameraFrames:
             self._layer = (base, step, layer)
         self._apply(frames.start)
         canvas.restore_region(layer)
+        moving = {id(a) for a in self._movers(segment)}
+        self._draw([self._caption] + [a for a in self._panel_artists() if id(a) not in moving])
+        return canvas.copy_from_bbox(bbox)
+
+    def _on_top(self, segment: int) -> list[Artist]:
+        """What a blitted frame draws with the step's strokes, in z-order: the inputs of the
+        step (bright over their dimmed selves) and the labels at rest."""
+        step = self.timeline.segments[segment].step
         inputs = set(self.construction.steps[step].inputs)
         moving = {id(a) for a in self._movers(segment)}
-        self._draw(
-            [
-                a
-                for s in self.construction.steps[:step]
-                if s.name in inputs
-                for a, _, _ in self._items[s.index]
-            ]
-            + [
-                a
-                for a in ([] if self._views is None else self._views.artists)
-                if id(a) not in moving
-            ]
-            + [self._caption]
-            + [a for a in self._panel_artists() if id(a) not in moving]
-        )
-        return canvas.copy_from_bbox(bbox)
+        return [
+            a
+            for s in self.construction.steps[:step]
+            if s.name in inputs
+            for a, _, _ in self._items[s.index]
+        ] + [a for a in ([] if self._views is None else self._views.artists) if id(a) not in moving]

@@ -348,7 +348,7 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         """The caption of ``frame`` as shown: the step's number in the protocol (as
         ``graspcompass steps`` prints it), the instrument, the paper's reference, the text."""
         st = self.timeline.at(frame)
-        if st.kind == "inset" and zoomed(st.raw):  # the zoom's while it shows a crowd
+        if st.kind == "inset":  # the zoom's, for the whole zoom: each caption shown long
             return self._inset_wrapped
         return self._hold_wrapped if st.kind in ("hold", "inset") else self._wrapped[st.step]
 
