@@ -359,7 +359,8 @@ def figure_diagram(
     text = title if title is not None else grasp_title(grasp)
     if not full and step is not None:
         text += f"\nafter step {step % len(construction.steps)} of 0–{last}"
-    ax.set_title(text, fontsize=theme.font_size * 1.05)
+    room = (side + 2 * 0.08 * w) * 72.0  # the axes and the margin each side, in points
+    ax.set_title(_title_lines(text, theme.font_size * 1.05, room), fontsize=theme.font_size * 1.05)
     for k, zoom in enumerate(zooms):
         left = (0.08 * w + side + 0.5) / (w + extra)
         top = bottom + (side + taller) / h - k * (zs + gap) / h
@@ -423,6 +424,17 @@ def figure_diagram(
             fontsize=theme.font_size * 0.85,
         )
     return fig
+
+
+def _title_lines(text: str, size: float, room: float) -> str:
+    """``text`` with its first line broken at the comma nearest its middle when wider than
+    ``room`` points at ``size`` (DejaVu Sans: at most 0.62 em a character here)."""
+    first, _, rest = text.partition("\n")
+    if len(first) * 0.62 * size <= room or ", " not in first:
+        return text
+    cuts = [i for i in range(len(first)) if first.startswith(", ", i)]
+    i = min(cuts, key=lambda i: abs(2 * i - len(first)))
+    return first[: i + 1] + "\n" + first[i + 2 :] + ("\n" + rest if rest else "")
 
 
 def _legend_extra(

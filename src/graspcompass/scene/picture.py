@@ -182,14 +182,32 @@ def grasp_title(grasp: Grasp | None) -> str:
         return str(own)
     try:
         p = grasp.params
-        deg = {k: math.degrees(float(p[k])) for k in ("phi1", "phi2", "xi1", "xi2")}
+        deg = {k: _decimal(sp.sympify(p[k]) / sp.pi * 180) for k in ("phi1", "phi2", "xi1", "xi2")}
         return (
-            f"x1 = {float(p['x1']):g}, x2 = {float(p['x2']):g}, y = {float(p['y']):g}, "
-            f"φ1 = {deg['phi1']:.4g}°, φ2 = {deg['phi2']:.4g}°, "
-            f"ξ1 = {deg['xi1']:.4g}°, ξ2 = {deg['xi2']:.4g}°"
+            f"x1 = {_decimal(p['x1'])}, x2 = {_decimal(p['x2'])}, y = {_decimal(p['y'])}, "
+            f"φ1 = {deg['phi1']}°, φ2 = {deg['phi2']}°, "
+            f"ξ1 = {deg['xi1']}°, ξ2 = {deg['xi2']}°"
         )
     except (AttributeError, KeyError, TypeError, ValueError):
         return ""
+
+
+def _decimal(v: Any) -> str:
+    """``v`` as typed where it is a decimal of at most 8 places (179.75, 0.0756), else to
+    6 significant digits.
+
+    >>> _decimal(sp.Rational(719, 4)), _decimal(sp.Rational(1, 3)), _decimal(0.5)
+    ('179.75', '0.333333', '0.5')
+    """
+    if isinstance(v, sp.Rational) or (isinstance(v, sp.Expr) and v.is_Rational):
+        q = sp.Rational(v)
+        for places in range(9):
+            if (q * 10**places).is_integer:
+                whole = abs(q.p) * 10**places // q.q
+                digits = str(whole).rjust(places + 1, "0")
+                text = digits[: len(digits) - places] + ("." + digits[-places:] if places else "")
+                return ("-" if q < 0 else "") + text
+    return f"{float(v):.6g}"
 
 
 def _f(v: sp.Expr) -> float:
