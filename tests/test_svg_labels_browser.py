@@ -225,3 +225,82 @@ def test_svg_square_numbers_cover_nothing_in_chromium() -> None:
                 report[str(g.params)] = bad
     assert numbered >= 5
     assert not report, report
+
+
+#: Per panel: the client points along the envelope's path near its corners (the joints of
+#: its pieces where its direction turns by more than 25°), and the label boxes (client
+#: pixels).  Each piece of the path (M, then one A or L command) is measured alone.
+CUSPS = """(reach) => {
+  const out = [];
+  for (const panel of document.querySelectorAll('g.panel')) {
+    const path = panel.querySelector('g.envelope path');
+    const labels = [...panel.querySelectorAll('g.point text')].map(t => {
+      const r = t.getBoundingClientRect(); return [r.left, r.top, r.right, r.bottom]; });
+    if (!path || !labels.length) continue;
+    const heights = labels.map(r => r[3] - r[1]).sort((x, y) => x - y);
+    const m = path.getScreenCTM();
+    const px = reach * heights[heights.length >> 1], user = px / Math.hypot(m.a, m.b);
+    const client = p => [m.a * p.x + m.c * p.y + m.e, m.b * p.x + m.d * p.y + m.f];
+    const cmds = path.getAttribute('d').match(/[MALZ][^MALZ]*/g);
+    let at = cmds[0].slice(1).trim(), pieces = [];
+    for (const c of cmds.slice(1)) {
+      if (c[0] === 'Z') break;
+      const piece = document.createElementNS('http://www.w3.org/2000/svg', 'path');
+      piece.setAttribute('d', 'M' + at + ' ' + c);
+      path.parentNode.appendChild(piece);
+      const L = piece.getTotalLength(), head = [], tail = [];
+      const at_ = s => client(piece.getPointAtLength(s));
+      for (let s = 0; s <= Math.min(L, user); s += 0.1) head.push(at_(s));
+      for (let s = Math.max(0, L - user); s <= L; s += 0.1) tail.push(at_(s));
+      const eps = Math.min(0.05, L / 4);
+      const dir = s => { const a = piece.getPointAtLength(s), b = piece.getPointAtLength(s + eps);
+        return [b.x - a.x, b.y - a.y]; };
+      pieces.push({head, tail, d0: dir(0), d1: dir(Math.max(0, L - eps))});
+      piece.remove();
+      const nums = c.slice(1).trim().split(/[ ,]+/);
+      at = nums[nums.length - 2] + ',' + nums[nums.length - 1];
+    }
+    const near = []; let corners = 0;
+    for (let i = 0; i < pieces.length; i++) {
+      const a = pieces[(i + pieces.length - 1) % pieces.length].d1, b = pieces[i].d0;
+      const cos = (a[0] * b[0] + a[1] * b[1]) / (Math.hypot(...a) * Math.hypot(...b) || 1);
+      if (cos < Math.cos(25 * Math.PI / 180)) {
+        corners += 1;
+        near.push(...pieces[i].head, ...pieces[(i + pieces.length - 1) % pieces.length].tail);
+      }
+    }
+    out.push({panel: panel.id, corners: corners, near: near, labels: labels});
+  }
+  return out;
+}"""
+
+#: grasps whose label hid the envelope's cusp (a hostile run: "O, O_M" over the cusp at O)
+CUSPED = [
+    Grasp("0.83", "1.198", "3.122", "11*pi/12", "108deg", xi1="151*pi/360", xi2="18.5deg"),
+    Grasp("0.11", "0.097", "0.2677", "179.5deg", "179.5deg", xi1="89.75deg", xi2="89.75deg"),
+    Grasp("4.02", "0.1362", "1.76", "172.5deg", "89*pi/90", xi1="59*pi/120", xi2="88.1deg"),
+]
+
+
+def test_svg_labels_keep_clear_of_the_envelopes_cusps_in_chromium() -> None:
+    """No label covers the envelope's strokes next to a cusp (within 0.9 of a label's
+    height of a corner of the path), measured along the path in the browser."""
+    grasps = [*(Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")), *CUSPED]
+    grasps += random_grasps(6, seed=7)
+    with chromium("the SVG labels at the cusps") as browser:
+        page = browser.new_page(viewport={"width": 1400, "height": 900})
+        report, corners = {}, 0
+        for g in grasps:
+            svg = to_svg(internal_force_diagram(g))
+            page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
+            for pl in page.evaluate(CUSPS, 0.9):
+                corners += pl["corners"]
+                bad = [
+                    [round(v) for v in lab]
+                    for lab in pl["labels"]
+                    if any(lab[0] < x < lab[2] and lab[1] < y < lab[3] for x, y in pl["near"])
+                ]
+                if bad:
+                    report[f"{g.params} {pl['panel']}"] = bad
+    assert corners > 20
+    assert not report, report

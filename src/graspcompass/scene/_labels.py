@@ -37,6 +37,49 @@ def _arc_points(a: Arc) -> np.ndarray:
     return np.column_stack([a.center[0] + a.radius * np.cos(t), a.center[1] + a.radius * np.sin(t)])
 
 
+#: The envelope's strokes this far from a cusp (a joint of two arcs), in points (about a
+#: label's height), are kept clear of labels: a label's box hid the cusp at O (issue 23).
+CUSP_CLEAR_PT = 14.0
+
+
+def _cusp_strokes(envelope: tuple[Arc, ...], frame: Box, scale: float) -> np.ndarray:
+    """Points a point apart along the envelope's strokes within :data:`CUSP_CLEAR_PT` of
+    each joint of its arcs, in points of ``frame`` at ``scale`` points per unit.
+
+    >>> a = Arc(1, (1.0, 0.0), (0.0, 1.0), (0.0, 0.0), 1.0, 0.0, 90.0)
+    >>> pts = _cusp_strokes((a,), (-1.0, 1.0, -1.0, 1.0), 100.0)
+    >>> ends = np.array([[200.0, 100.0], [100.0, 200.0]])  # the arc's ends, in points
+    >>> near = np.hypot(*(pts[:, None, :] - ends[None]).transpose(2, 0, 1)).min(axis=1)
+    >>> len(pts), bool(near.max() <= CUSP_CLEAR_PT + 1e-9)
+    (30, True)
+    """
+    out = []
+    n = int(CUSP_CLEAR_PT) + 1
+    for a in envelope:
+        if a.n == 0 or a.radius <= 0.0:
+            (x0, y0), (x1, y1) = a.start, a.end
+            length = math.hypot(x1 - x0, y1 - y0) * scale
+            if length == 0.0:
+                continue
+            for t in np.linspace(0.0, min(1.0, CUSP_CLEAR_PT / length), n):
+                out += [(x0 + (x1 - x0) * t, y0 + (y1 - y0) * t)]
+                out += [(x1 + (x0 - x1) * t, y1 + (y0 - y1) * t)]
+            continue
+        span = math.radians(abs(a.delta))
+        reach = min(span, CUSP_CLEAR_PT / (a.radius * scale))
+        sign = 1.0 if a.delta >= 0 else -1.0
+        t0 = math.radians(a.start_angle)
+        for u in np.linspace(0.0, reach, n):
+            for t in (t0 + sign * u, t0 + sign * (span - u)):
+                out.append(
+                    (a.center[0] + a.radius * math.cos(t), a.center[1] + a.radius * math.sin(t))
+                )
+    if not out:
+        return np.zeros((0, 2))
+    xy = np.asarray(out, dtype=float)
+    return np.column_stack([(xy[:, 0] - frame[0]) * scale, (xy[:, 1] - frame[2]) * scale])
+
+
 def labels_of(
     box: Box,
     groups: list[tuple[tuple[str, ...], XY]],
@@ -138,6 +181,7 @@ def labels_of(
             marker_sizes=[size[i] for i in idx]
             + [labelling.MARKER_PT * labelling.SMALL_MARKER] * len(obstacles)
             + [size[j] for j in others],
+            clear=_cusp_strokes(envelope, frame, scale),
             avoid=[
                 (
                     (b[0] - frame[0]) * scale,

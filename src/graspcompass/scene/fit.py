@@ -129,6 +129,7 @@ def fit(
     optional: Sequence[bool] = (),
     avoid: Sequence[tuple[float, float, float, float]] = (),
     marker_sizes: Sequence[float] = (),
+    clear: Sequence[tuple[float, float]] | np.ndarray = (),
 ) -> list[Fit | None]:
     """One :class:`Fit` per label ``texts[i]`` of the point ``anchors[i]`` (or None).
 
@@ -150,6 +151,9 @@ def fit(
     marker_sizes
         Per point of ``anchors`` then ``obstacles``, its marker's size where it is not
         ``marker_size``: two points are one place when their markers touch.
+    clear
+        Points (in points) that no label may cover, as a marker: the strokes of the
+        envelope next to its cusps (:func:`graspcompass.scene.picture.build_scene`).
     """
     pts = np.asarray(anchors, dtype=float).reshape(-1, 2)
     every = np.vstack([pts, np.asarray(obstacles, dtype=float).reshape(-1, 2)])
@@ -178,11 +182,14 @@ def fit(
     )
     curves = [c for c in curves if len(c)]
     curve = resample(curves, RESAMPLE_PT, window=window) if curves and window else np.zeros((0, 2))
+    keep = np.asarray(clear, dtype=float).reshape(-1, 2)
     crowd = [int(np.sum(np.hypot(*(every - p).T) < 40.0)) for p in pts]
     order = sorted(range(len(texts)), key=lambda i: -crowd[i])
     best_out: list[Fit | None] | None = None
     for _ in range(REORDER + 1):  # the labels that found no place first, again
-        out = _greedy(order, pts, every, markers, sizes, curve, frame, msize, gap, optional, avoid)
+        out = _greedy(
+            order, pts, every, markers, sizes, curve, frame, msize, gap, optional, avoid, keep
+        )
         fails = [i for i in order if out[i] is None or not out[i].ok]  # type: ignore[union-attr]
         if best_out is None or len(fails) < sum(f is None or not f.ok for f in best_out):
             best_out = out
@@ -205,6 +212,7 @@ def _greedy(
     gap: float,
     optional: Sequence[bool],
     avoid: Sequence[tuple[float, float, float, float]],
+    clear: np.ndarray | None = None,
 ) -> list[Fit | None]:
     """The labels placed one by one in ``order``, each where it breaks the fewest rules."""
     placed: list[np.ndarray] = [np.asarray(b, dtype=float) for b in avoid]
@@ -227,6 +235,13 @@ def _greedy(
         big = box + np.array([-g, -g, g, g])
         bad = 100.0 * _hits_many(big, np.array(placed).reshape(-1, 4))
         bad = bad + 100.0 * _hits_many(big, markers)
+        if clear is not None and len(clear):  # the envelope's strokes at its cusps
+            bad = bad + 100.0 * (
+                (clear[None, :, 0] > big[:, 0, None])
+                & (clear[None, :, 0] < big[:, 2, None])
+                & (clear[None, :, 1] > big[:, 1, None])
+                & (clear[None, :, 1] < big[:, 3, None])
+            ).any(axis=1)
         if len(others):
             own = _dist_from_boxes(np.array([[px, py]]), big)[:, 0]
             near = _dist_from_boxes(others, big).min(axis=1)
