@@ -60,15 +60,21 @@ MEASURE_BOARD = """() => {
   return {board: box, pts};
 }"""
 
-#: The inset (null while hidden): its panel's rectangle, per marker drawn in it (centre
-#: inside the panel) its rectangle and its label's, read from the inset's SVG.
+#: The insets shown, each as a user sees it once its tab is chosen (one is in sight at a
+#: time): its panel's rectangle, per marker drawn in it (centre inside the panel) its
+#: rectangle and its label's, read from the inset's SVG.
 MEASURE_INSET = """() => {
   graspcompass.insetRects();  // draws the insets now (they follow the board's updates)
   const rect = (n) => { const r = n.getBoundingClientRect(); return [r.left, r.top, r.right,
     r.bottom]; };
   const out = [];
-  for (const fig of document.querySelectorAll('figure.gc-inset')) {
-    if (fig.hidden) continue;
+  const shown = [...document.querySelectorAll('figure.gc-inset')].filter((f) => !f.hidden);
+  const was = graspcompass.insetTab();
+  for (let k = 0; k < shown.length; k++) {
+    graspcompass.insetTab(k);
+    const seen = shown.filter((f) => f.checkVisibility({visibilityProperty: true}));
+    if (seen.length !== 1) throw new Error(`${seen.length} insets in sight, tab ${k}`);
+    const fig = seen[0];
     const view = fig.querySelector('.gc-inset-view');
     const box = rect(view);
     const texts = new Map();
@@ -84,6 +90,7 @@ MEASURE_INSET = """() => {
     }
     out.push({id: fig.id, board: box, pts, labels: texts.size});
   }
+  graspcompass.insetTab(was);
   return out;
 }"""
 

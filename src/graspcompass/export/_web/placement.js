@@ -9,7 +9,7 @@ window.GCPlacement = function (ctx) {
 
   const { DATA, state, stepIndex, lastStep, drawValue } = ctx;
   const { board, COL, LSPEC, GL, LFONT, insets, scheduleInsetRedraw, setFitText, entries,
-    labelled, markers, extras, unlabelled, ticks } = ctx;
+    labelled, markers, extras, unlabelled, ticks, arrangeInsets } = ctx;
   const { PI } = window.GCModel;
 
   // ------------------------------------------------------------------------------------
@@ -301,6 +301,7 @@ window.GCPlacement = function (ctx) {
       rest = rest.filter((g) => !plan.named.has(g));
       showInset(ins, plan);
     });
+    arrangeInsets();
     scheduleInsetRedraw();
   }
 
