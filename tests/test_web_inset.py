@@ -363,3 +363,43 @@ def test_stepping_keeps_the_rules_and_shows_nothing_before_it_is_made(
         assert not report, f"{len(report)} faults: {report[:12]}"
     finally:
         page.close()
+
+
+#: Grasps typed into the number boxes by a hostile tester (degrees), with the viewports and
+#: steps where a rule broke: a label of O nearer P1x = X1 than O (P1's large marker touched
+#: O's, P1x's small one does not), "O_M" nearer P2x = X2 = X4, "O = Y4" nearer them in the
+#: inset, and O = O_M named nowhere (2 px from P1x and P2x at the largest zoom, ×64).
+HOSTILE = [
+    ((1280, 800), [11, 15, 20, 27, -1], (1.653, 0.797, 0, 85.9, 75.4, 0.0892, 12.9364)),
+    ((390, 844), [-1], (0.461, 0.799, 0, 172, 101.8, 14.856, 1.0892)),
+    ((1280, 800), [-1], (0.05, 0.05, 4, 2, 178, 57, 40)),
+    ((1280, 800), [44, -1], (5, 0.05, 0, 90, 60, 0.01, math.sqrt(3))),
+]
+
+
+@pytest.mark.parametrize("case", range(len(HOSTILE)))
+def test_typed_grasps_keep_the_rules(browser: Any, page_path: Path, case: int) -> None:
+    (w, h), steps, values = HOSTILE[case]
+    keys = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")
+    page = browser.new_page(viewport={"width": w, "height": h})
+    try:
+        page.goto(page_path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        for k, v in zip(keys, values, strict=True):  # typed, as a user types them
+            page.fill(f"#gc-num-{k}", repr(v))
+            page.press(f"#gc-num-{k}", "Enter")
+        assert page.evaluate("graspcompass.error()") is None
+        page.click("#gc-fit")
+        bad = []
+        for s in steps:
+            page.evaluate("s => graspcompass.step(s)", s)
+            found, seen, _insets = _check(page, f"{values} step {s}")
+            bad += found
+            named = _names(seen["texts"])
+            ids = page.evaluate("() => graspcompass.labelRects().map(q => q.id)")
+            for pid in [i for i in ids if not re.fullmatch(r"B\d+", i)]:
+                if pid.replace("_", "") not in named:
+                    bad.append(f"step {s}: {pid} is named neither on the board nor in an inset")
+        assert not bad, bad
+    finally:
+        page.close()
