@@ -60,15 +60,21 @@ MEASURE_BOARD = """() => {
   return {board: box, pts};
 }"""
 
-#: The inset (null while hidden): its panel's rectangle, per marker drawn in it (centre
-#: inside the panel) its rectangle and its label's, read from the inset's SVG.
+#: The insets shown, each as a user sees it once its tab is chosen (one is in sight at a
+#: time): its panel's rectangle, per marker drawn in it (centre inside the panel) its
+#: rectangle and its label's, read from the inset's SVG.
 MEASURE_INSET = """() => {
   graspcompass.insetRects();  // draws the insets now (they follow the board's updates)
   const rect = (n) => { const r = n.getBoundingClientRect(); return [r.left, r.top, r.right,
     r.bottom]; };
   const out = [];
-  for (const fig of document.querySelectorAll('figure.gc-inset')) {
-    if (fig.hidden) continue;
+  const shown = [...document.querySelectorAll('figure.gc-inset')].filter((f) => !f.hidden);
+  const was = graspcompass.insetTab();
+  for (let k = 0; k < shown.length; k++) {
+    graspcompass.insetTab(k);
+    const seen = shown.filter((f) => f.checkVisibility({visibilityProperty: true}));
+    if (seen.length !== 1) throw new Error(`${seen.length} insets in sight, tab ${k}`);
+    const fig = seen[0];
     const view = fig.querySelector('.gc-inset-view');
     const box = rect(view);
     const texts = new Map();
@@ -84,6 +90,7 @@ MEASURE_INSET = """() => {
     }
     out.push({id: fig.id, board: box, pts, labels: texts.size});
   }
+  graspcompass.insetTab(was);
   return out;
 }"""
 
@@ -354,5 +361,45 @@ def test_stepping_keeps_the_rules_and_shows_nothing_before_it_is_made(
         report += faults(page.evaluate(MEASURE_BOARD), "fig6 zoomed board")
         assert labelled > 150, labelled
         assert not report, f"{len(report)} faults: {report[:12]}"
+    finally:
+        page.close()
+
+
+#: Grasps typed into the number boxes by a hostile tester (degrees), with the viewports and
+#: steps where a rule broke: a label of O nearer P1x = X1 than O (P1's large marker touched
+#: O's, P1x's small one does not), "O_M" nearer P2x = X2 = X4, "O = Y4" nearer them in the
+#: inset, and O = O_M named nowhere (2 px from P1x and P2x at the largest zoom, ×64).
+HOSTILE = [
+    ((1280, 800), [11, 15, 20, 27, -1], (1.653, 0.797, 0, 85.9, 75.4, 0.0892, 12.9364)),
+    ((390, 844), [-1], (0.461, 0.799, 0, 172, 101.8, 14.856, 1.0892)),
+    ((1280, 800), [-1], (0.05, 0.05, 4, 2, 178, 57, 40)),
+    ((1280, 800), [44, -1], (5, 0.05, 0, 90, 60, 0.01, math.sqrt(3))),
+]
+
+
+@pytest.mark.parametrize("case", range(len(HOSTILE)))
+def test_typed_grasps_keep_the_rules(browser: Any, page_path: Path, case: int) -> None:
+    (w, h), steps, values = HOSTILE[case]
+    keys = ("x1", "x2", "y", "phi1", "phi2", "mu1", "mu2")
+    page = browser.new_page(viewport={"width": w, "height": h})
+    try:
+        page.goto(page_path.as_uri())
+        page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+        for k, v in zip(keys, values, strict=True):  # typed, as a user types them
+            page.fill(f"#gc-num-{k}", repr(v))
+            page.press(f"#gc-num-{k}", "Enter")
+        assert page.evaluate("graspcompass.error()") is None
+        page.click("#gc-fit")
+        bad = []
+        for s in steps:
+            page.evaluate("s => graspcompass.step(s)", s)
+            found, seen, _insets = _check(page, f"{values} step {s}")
+            bad += found
+            named = _names(seen["texts"])
+            ids = page.evaluate("() => graspcompass.labelRects().map(q => q.id)")
+            for pid in [i for i in ids if not re.fullmatch(r"B\d+", i)]:
+                if pid.replace("_", "") not in named:
+                    bad.append(f"step {s}: {pid} is named neither on the board nor in an inset")
+        assert not bad, bad
     finally:
         page.close()

@@ -36,6 +36,32 @@ window.GCBoard = function (ctx) {
   // the zoomed inset of the crowded region, beside the board (inset.js)
   const insets = Array.from(document.querySelectorAll(".gc-inset"))
     .map((holder) => window.GCInset.create(board, holder, COL.axis));
+  // one inset in sight at a time, the tabs above them choosing which (when two or more)
+  const insetTabs = document.querySelector(".gc-inset-tabs");
+  const tabButtons = insetTabs ? Array.from(insetTabs.querySelectorAll("button")) : [];
+  let activeInset = 0; // the index among the insets shown
+  /** Show the chosen inset of those shown, the others laid out under it unseen, and a tab
+   * per inset shown (none for one); its dashed square on the board drawn bolder. */
+  function arrangeInsets(choose) {
+    const shown = insets.filter((i) => i.shown);
+    if (Number.isInteger(choose)) activeInset = choose;
+    if (!(activeInset >= 0 && activeInset < shown.length)) activeInset = 0;
+    insets.forEach((ins) => {
+      const k = shown.indexOf(ins);
+      ins.holder.classList.toggle("gc-inset-away", k >= 0 && k !== activeInset);
+      ins.setActive(k === activeInset);
+    });
+    if (insetTabs) {
+      insetTabs.hidden = shown.length < 2;
+      tabButtons.forEach((b, k) => {
+        b.hidden = k >= shown.length;
+        if (k < shown.length) b.textContent = String(insets.indexOf(shown[k]) + 1);
+        b.setAttribute("aria-selected", String(k === activeInset));
+      });
+    }
+    return activeInset;
+  }
+  tabButtons.forEach((b, k) => b.addEventListener("click", () => arrangeInsets(k)));
   let insetFrame = null;
   function redrawInset() {
     if (insetFrame !== null) cancelAnimationFrame(insetFrame);
@@ -351,6 +377,7 @@ window.GCBoard = function (ctx) {
 
   Object.assign(ctx, {
     board, COL, LSPEC, GL, LFONT, insets, redrawInset, scheduleInsetRedraw, setFitText,
+    arrangeInsets,
     setVisualPass, entries, labelled, markers, extras, unlabelled, P1, P2,
     ticks: [xAxis.defaultTicks, yAxis.defaultTicks],
   });

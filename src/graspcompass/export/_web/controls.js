@@ -34,7 +34,7 @@ window.GCControls = function (ctx) {
     row.className = "gc-slider";
     row.innerHTML = `<label for="gc-slider-${s.name}"></label>` +
       `<input type="range" id="gc-slider-${s.name}" data-param="${s.name}" min="${s.min}" ` +
-      `max="${s.max}" step="${s.step}">` +
+      `max="${s.max}" step="any">` +
       `<input type="number" id="gc-num-${s.name}" data-param="${s.name}" step="any" ` +
       `aria-label="${s.label.replace("_", "")}">`;
     setSubscripted(row.querySelector("label"), s.label);
@@ -66,7 +66,9 @@ window.GCControls = function (ctx) {
     for (const s of SLIDERS) {
       const v = state.p[s.name] / s.unit;
       // the slider shows what the box shows: its range grows to take a value beyond it
-      // (y < 0 from a drag below the x-axis, a large x1), it is never clamped
+      // (y < 0 from a drag below the x-axis, a large x1), it is never clamped, and it has
+      // no step grid (step="any"): a grid from a widened minimum snapped y = −306.443580
+      // to −306.443857, and a dragged x1 = 0.904011 to 0.904
       if (Number.isFinite(v) && (v < s.min || v > s.max)) {
         if (v < s.min) s.range.min = String((s.min = v));
         if (v > s.max) s.range.max = String((s.max = v));
@@ -84,13 +86,23 @@ window.GCControls = function (ctx) {
     }
   }
 
-  /** Decimals that give 4 significant digits at ``scale`` (0 to 10). */
-  function decimalsFor(scale) {
-    if (!(scale > 0) || !Number.isFinite(scale)) return 3;
-    return Math.min(10, Math.max(0, 3 - Math.floor(Math.log10(scale))));
+  /** ``x`` to 4 significant digits, in plain decimals (1005, 0.4340, 0.0001234, never
+   * e-notation), so that no nonzero value prints 0; a value within 1e-12·scale of 0 (zero
+   * to double precision, as C_4 = x_1 tan(φ_2 − ξ_2) of Fig. 6, where φ_2 = ξ_2) prints 0.
+   * (To the decimals of the drawing's scale, S_4 = 0.434 printed 0 where the largest value
+   * was 1005, and k_grasp = 4.593 printed 5.) */
+  const SIG = 4;
+  function sig(x, scale) {
+    if (!Number.isFinite(x)) return "–";
+    if (x === 0 || Math.abs(x) <= 1e-12 * scale) return "0";
+    let d = SIG - 1 - Math.floor(Math.log10(Math.abs(x)));
+    // log10 a hair off at a power of ten, or rounding up to one (9.9996 -> 10.00)
+    if (Math.abs(+x.toFixed(Math.max(0, Math.min(100, d)))) >= 10 ** (SIG - d)) d -= 1;
+    const t = d >= 0 ? x.toFixed(Math.min(100, d))
+      : (Math.round(x / 10 ** -d) * 10 ** -d).toFixed(0);
+    return t.replace(/^-/, "−");
   }
-  /** ``x`` to ``d`` decimals; a value within 1e-12·scale of 0 (zero to double precision,
-   * as C_4 = x_1 tan(φ_2 − ξ_2) of Fig. 6, where φ_2 = ξ_2) prints 0, and −0.000 prints 0.000. */
+  /** An angle in degrees to 0.1° (−0.0 prints 0.0; within 1e-12 of a turn of 0 prints 0). */
   function fixed(x, d, scale) {
     if (!Number.isFinite(x)) return "–";
     if (Math.abs(x) <= 1e-12 * scale) return "0";
@@ -120,10 +132,9 @@ window.GCControls = function (ctx) {
     "<th>k<sub>n</sub>(θ)</th></tr>" +
     [1, 2, 3, 4].map((n) => `<tr style="color:${COL["circle" + n]}"><td>V<sub>${n}</sub></td>` +
       `<td data-r="S${n}"></td><td data-r="C${n}"></td><td data-r="k${n}"></td></tr>`).join("") +
-    "</table><p class=\"gc-small\" data-r=\"prec\">Lengths to <span data-r=\"dl\"></span>, " +
-    "forces to <span data-r=\"df\"></span>, angles to 0.1°; a value within 10<sup>−12</sup> " +
-    "of the drawing's scale (the largest |V| or |P|) is zero to double precision and prints " +
-    "0.</p></div>";
+    "</table><p class=\"gc-small\" data-r=\"prec\">Lengths and forces to 4 significant " +
+    "digits, angles to 0.1°; a value within 10<sup>−12</sup> of the drawing's scale (the " +
+    "largest |V| or |P|) is zero to double precision and prints 0.</p></div>";
   const readout = {};
   for (const el of $("gc-info").querySelectorAll("[data-r]")) {
     readout[el.getAttribute("data-r")] = { el, text: null };
@@ -144,34 +155,29 @@ window.GCControls = function (ctx) {
       .replace(/-?\d+\.\d{5,}(?:e[+-]?\d+)?/gi, (m) => fmtG(parseFloat(m), 4))
       .replace(/>=/g, "≥").replace(/<=/g, "≤");
   }
-  /** The message above the board, or, where the page is scrolled so that it would start
-   * above the window, inside the board's top (it lets the pointer through there). */
-  function placeError() {
-    const box = $("gc-error");
-    box.classList.remove("gc-error-in");
-    if (box.getBoundingClientRect().top < 0) box.classList.add("gc-error-in");
-  }
+  /** The message takes the caption's place in the flow, at least as tall as the caption
+   * was (the board below moves as little as can be while the pointer drags). */
   let shownError;
   function renderInfo() {
     const q = state.num;
     if (state.error !== shownError) {
-      $("gc-error").hidden = !state.error;
+      const box = $("gc-error"), caption = $("gc-caption");
+      if (state.error && !shownError) box.style.minHeight = `${caption.offsetHeight}px`;
+      box.hidden = !state.error;
+      caption.hidden = !!state.error;
       $("gc-error-text").textContent = state.error ? roundedMessage(state.error) : "";
       $("gc-invalid-note").hidden = !state.error;
       $("gc-readout").hidden = !!state.error;
       shownError = state.error;
-      if (state.error) placeError();
     }
     if (state.error) return;
-    // lengths to 4 significant digits of the diagram's scale (the largest |V_n|, |P_i|),
-    // forces per unit F_e to 4 digits of scale / (x1 + x2): the precision the note states
+    // every length and force to 4 significant digits (the note says so), zero to double
+    // precision of the diagram's scale (the largest |V_n|, |P_i|; for forces per unit F_e,
+    // scale / (x1 + x2)) as 0
     const scale = Math.max(...q.V.map((v) => Math.hypot(v[0], v[1])), Math.hypot(...q.P1),
       Math.hypot(...q.P2));
-    const D = state.p.x1 + state.p.x2;
-    const dl = decimalsFor(scale), df = decimalsFor(scale / D);
-    const len = (x) => fixed(x, dl, scale), force = (x) => fixed(x, df, scale / D);
-    put("dl", `${dl} decimal${dl === 1 ? "" : "s"}`);
-    put("df", String(df));
+    const D = q.P1[0] - q.P2[0]; // x1 + x2 of the grasp shown
+    const len = (x) => sig(x, scale), force = (x) => sig(x, scale / D);
     put("theta", deg(state.p.theta));
     put("kgrasp", len(q.kgrasp));
     put("Fint", force(q.Fint));
@@ -197,11 +203,15 @@ window.GCControls = function (ctx) {
     if (box) box.value = "";
   }
   const g3 = (x) => fmtG(x, 3).replace(/^-/, "−");
-  /** The heading: the given title until a parameter is changed, then the grasp's values
-   * (their subscripts set as <sub>). */
+  /** The parameters of the grasp drawn: the last valid one while the parameters are not
+   * a grasp (a drag below the x-axis), else the parameters. */
+  const drawnParams = () => (state.error && state.validP ? state.validP : state.p);
+  /** The heading: the given title until a parameter is changed, then the values of the
+   * grasp drawn (their subscripts set as <sub>): never those of an invalid grasp, which
+   * the board does not draw (the message gives its failing value). */
   let shownHeading = null;
   function renderHeading() {
-    const p = state.p;
+    const p = drawnParams();
     const own = !(!state.follow && !(DATA.untitled && state.title === DATA.title));
     const text = !own ? state.title
       : `Your grasp: x_1 = ${g3(p.x1)}, x_2 = ${g3(p.x2)}, y = ${g3(p.y)}, ` +
@@ -256,12 +266,18 @@ window.GCControls = function (ctx) {
     if (state.timings.length > 5000) state.timings.shift();
   }
 
+  /** P1 and P2 where the grasp drawn has them (the last valid one's, while invalid). */
+  function placeContacts() {
+    const p = drawnParams();
+    P1.setPositionDirectly(JXG.COORDS_BY_USER, [p.x1, p.y]);
+    P2.setPositionDirectly(JXG.COORDS_BY_USER, [-p.x2, p.y]);
+  }
+
   /** Recompute after a parameter change and redraw; ``t0`` from performance.now(). */
   function refresh(t0, fromSlider) {
     recompute();
     renderHeading();
-    P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
-    P2.setPositionDirectly(JXG.COORDS_BY_USER, [-state.p.x2, state.p.y]);
+    placeContacts();
     applyVisibility();
     setVisualPass();
     board.update();
@@ -285,6 +301,10 @@ window.GCControls = function (ctx) {
       P1.setPositionDirectly(JXG.COORDS_BY_USER, [state.p.x1, state.p.y]);
     }
     recompute();
+    // an invalid drag (below the x-axis, past the other contact) leaves P1 and P2 where
+    // the last valid grasp, the one drawn, has them; the pointer drags on, and the point
+    // follows it again once the grasp is valid
+    if (state.error) placeContacts();
     renderHeading();
     applyVisibility();
     setVisualPass();

@@ -102,8 +102,11 @@
     if (key === "xi1" || key === "xi2") return Math.atan(state.p["mu" + key[2]]);
     if (key === "step") return state.step;
     if (key === "error") return state.error;
-    if (key === "P1") return [state.p.x1, state.p.y];
-    if (key === "P2") return [-state.p.x2, state.p.y];
+    // the contacts drawn stay those of the last valid grasp while the parameters are not
+    // a grasp; get() gives the parameters' own
+    const p = drawing && state.error && state.validP ? state.validP : state.p;
+    if (key === "P1") return [p.x1, p.y];
+    if (key === "P2") return [-p.x2, p.y];
     if (key === "O") return [0, 0];
     const q = state.error && !drawing ? null : state.num;
     const known = /^(P[12]x|O_M|[XYVB]\d+|circle[1-4]|[SCk][1-4]|OMX[1-4]|OY[1-4]|H|worst|best|kgrasp|Fint)$/;
@@ -142,9 +145,10 @@
       stopPlay();
       return setStep(i);
     },
-    /** Viewport coordinates [px, py] of a named point (as page.mouse expects). */
+    /** Viewport coordinates [px, py] of a named point where it is drawn (as page.mouse
+     * expects; the last valid grasp's while the parameters are not a grasp). */
     toScreen(name) {
-      const xy = getValue(name);
+      const xy = drawValue(name);
       if (!Array.isArray(xy)) throw new Error(`${name} is not a point here`);
       const c = new JXG.Coords(JXG.COORDS_BY_USER, xy, board).scrCoords;
       const r = board.containerObj.getBoundingClientRect();
@@ -180,6 +184,9 @@
       return insets.filter((i) => i.shown).map((ins, k) => Object.assign(ins.rects(),
         { zoom: ins.zoom, region: insetStates[k] && insetStates[k].region }));
     },
+    /** The inset in sight, among those shown (0 for the first); ``k`` chooses it, as its
+     * tab does. */
+    insetTab: (k) => ctx.arrangeInsets(k),
     /** The board's rectangle (client pixels). */
     boardRect: () => { const r = board.containerObj.getBoundingClientRect();
       return [r.left, r.top, r.right, r.bottom]; },

@@ -30,6 +30,12 @@
     const px = (x, y) => [board.origin.scrCoords[1] + x * board.unitX,
       board.origin.scrCoords[2] - y * board.unitY];
 
+    let active = true;
+    function styleFrame() {
+      if (!frame) return;
+      frame.setAttribute("stroke-width", active ? "1.6" : "1");
+      frame.setAttribute("stroke-opacity", active ? "1" : "0.6");
+    }
     function drawFrame(region) {
       const svg = board.renderer.svgRoot;
       if (!frame) {
@@ -40,6 +46,7 @@
         frame.setAttribute("stroke-width", "1");
         frame.setAttribute("stroke-dasharray", "4 3");
         frame.setAttribute("pointer-events", "none");
+        styleFrame();
       }
       if (frame.parentNode !== svg) svg.appendChild(frame);
       const [a, b] = [px(region[0], region[3]), px(region[1], region[2])];
@@ -160,6 +167,11 @@
       },
       /** Copy the board again (after it was redrawn). */
       redraw,
+      /** Whether this inset is the one in sight (its dashed square drawn bolder). */
+      setActive(on) {
+        active = !!on;
+        styleFrame();
+      },
       get shown() {
         return current !== null;
       },

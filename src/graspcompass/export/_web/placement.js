@@ -9,7 +9,7 @@ window.GCPlacement = function (ctx) {
 
   const { DATA, state, stepIndex, lastStep, drawValue } = ctx;
   const { board, COL, LSPEC, GL, LFONT, insets, scheduleInsetRedraw, setFitText, entries,
-    labelled, markers, extras, unlabelled, ticks } = ctx;
+    labelled, markers, extras, unlabelled, ticks, arrangeInsets } = ctx;
   const { PI } = window.GCModel;
 
   // ------------------------------------------------------------------------------------
@@ -175,9 +175,10 @@ window.GCPlacement = function (ctx) {
       const every = lastInputs.anchors.concat(lastInputs.opts.obstacles);
       const idx = groups.map((_, i) => i).filter((i) => keep[i]);
       const spaced = crowdedLabels(fitted.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const touch = inFit.map(groupTouch).concat(shownMarkers.map((m) => across(m.el)),
+        out.map(groupTouch));
       const bad = idx.filter((i, k) => !fitted[k] || spaced[k] ||
-        nearerOther(fitted[k].box, k, every, lastInputs.markerSizes,
-          across(groups[i].e.el)));
+        nearerOther(fitted[k].box, k, every, touch, across(groups[i].e.el)));
       if (!bad.length) break;
       for (const i of bad) keep[i] = false;
     }
@@ -195,7 +196,9 @@ window.GCPlacement = function (ctx) {
     const more = GL.fit(hAnchors, special.map((g) => `$${g.text}$`), { fitSpec: DATA.fit,
       fontSize, markerSizes: hSizes, curves, frame, obstacles: hObst,
       optional: special.map(() => true), avoid: placed.filter((p) => p.box).map((p) => p.box) })
-      .map((f, k) => (f && !nearerOther(f.box, k, hAnchors.concat(hObst), hSizes) ? f
+      .map((f, k) => (f && !nearerOther(f.box, k, hAnchors.concat(hObst),
+        special.map((g) => across(g.e.el)).concat(notH.map((m) => across(m.el)),
+          groups.map(groupTouch))) ? f
         : { offset: [0, 0], direction: [1, 1], box: null }));
     const all = mainGroups.concat(special);
     placed.push(...more);
@@ -236,6 +239,17 @@ window.GCPlacement = function (ctx) {
       .map((e) => across(e.el)));
   }
 
+  /** A group of coinciding points' smallest marker in points: a label is nearer its own
+   * point than every point whose marker does not touch its own, and a group's small
+   * member (P1x under P1's large marker) may not touch a marker that P1's does (a label
+   * of O was nearer P1x = X1, 10 px from O, than O: P1's marker touched O's). */
+  function groupTouch(g) {
+    const pxPerPt = board.canvasWidth / LSPEC.frame;
+    const across = (el) => (2 * el.visProp.size + (el.visProp.face === "x" ? 0 : 2)) / pxPerPt;
+    return Math.min(across(g.e.el), ...labelled.filter((e) => g.names.includes(e.name))
+      .map((e) => across(e.el)));
+  }
+
   function hideLabel(label) {
     if (!label) return;
     if (label.visProp.visible !== false) label.setAttribute({ visible: false });
@@ -253,8 +267,9 @@ window.GCPlacement = function (ctx) {
 
   /** Whether the centre of label k's box (points, y up), or the box itself, is not nearer
    * its own point pts[k] than every other point whose marker does not touch its own
-   * (sizes: the markers' sizes; own0: the size of the label's own point's marker, where
-   * it names a group), by NEAR_MARGIN: the rule a reader checks by eye. */
+   * (sizes: the markers' sizes, a group's its smallest member's, groupTouch; own0: the
+   * size of the label's own point's marker, where it names a group), by NEAR_MARGIN: the
+   * rule a reader checks by eye. */
   const NEAR_MARGIN = 1.5;
   function nearerOther(box, k, pts, sizes, own0) {
     const mine = own0 ?? sizes[k]; // the label's own point's marker (not its group's)
@@ -280,7 +295,11 @@ window.GCPlacement = function (ctx) {
    * square magnified about them, at the smallest zoom at which each finds a place keeping
    * the rules (scene.picture's inset, in the page); the labels no zoom of the first inset
    * names (a tighter crowd within the crowd) go to the next, zoomed further. */
-  const INSET_ZOOMS = [1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64];
+  // up to 4096: points 0.05 apart in a view 900 units wide (x1 = x2 = 0.05, y = 4, φ1 = 2°,
+  // φ2 = 178°: V_n out at 400) are 2 px apart at ×64, and O = O_M between P1x and P2x was
+  // named nowhere
+  const INSET_ZOOMS = [1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 48, 64, 96, 128,
+    192, 256, 384, 512, 768, 1024, 1536, 2048, 3072, 4096];
   const INSET_ROOM = 30; // px of the inset kept around the points left out, for labels
   let insetStates = [];
   function placeInset(leftOut, groups, shownMarkers) {
@@ -293,14 +312,18 @@ window.GCPlacement = function (ctx) {
       }
       ins.holder.hidden = false;
       const plan = planInset(ins.side(), rest, groups, shownMarkers);
-      if (!plan) {
+      // an inset that names none of the labels left (the same region at the largest zoom
+      // again: insets 2, 3 and 4 showed one square) is not shown
+      if (!plan || !plan.named.size) {
         ins.hide();
+        rest = [];
         return;
       }
       insetStates.push(plan);
       rest = rest.filter((g) => !plan.named.has(g));
       showInset(ins, plan);
     });
+    arrangeInsets();
     scheduleInsetRedraw();
   }
 
@@ -367,8 +390,9 @@ window.GCPlacement = function (ctx) {
           optional: gs.map(() => true) });
       const every = anchors.concat(obst);
       const spaced = crowdedLabels(fits.map((f) => f && f.box), LABEL_SPACE / pxPerPt);
+      const touch = gs.map(groupTouch).concat(os.map((o) => across(o.el)));
       const ok = fits.map((f, k) => !!f && !spaced[k] &&
-        !nearerOther(f.box, k, every, sizes, across(gs[k].e.el)));
+        !nearerOther(f.box, k, every, touch, across(gs[k].e.el)));
       const named = new Set(gs.filter((g, k) => ok[k] && rest.includes(g)));
       const key = (rest.length - named.size) * 1000 + ok.filter((v) => !v).length;
       if (best === null || key < best.key) {
