@@ -16,8 +16,9 @@ import pytest
 
 
 @contextlib.contextmanager
-def chromium(what: str) -> Iterator[Any]:
-    """A launched headless Chromium; ``what`` says what goes untested without one."""
+def chromium(what: str, env: dict[str, str] | None = None) -> Iterator[Any]:
+    """A launched headless Chromium; ``what`` says what goes untested without one; ``env``:
+    its environment (a ``FONTCONFIG_FILE`` giving it other fonts)."""
     sync_api = pytest.importorskip(
         "playwright.sync_api",
         reason=f"Playwright for Python is not installed (pip install playwright, in the test "
@@ -30,7 +31,7 @@ def chromium(what: str) -> Iterator[Any]:
             "is not tested in a browser"
         )
     with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"])
+        browser = p.chromium.launch(executable_path=exe, args=["--no-sandbox"], env=env)
         try:
             yield browser
         finally:

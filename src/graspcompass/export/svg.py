@@ -27,6 +27,7 @@ from ..scene.picture import (
     label_tex,
     scene_of,
 )
+from ._svg_font import FONT_STACK, font_face
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -102,7 +103,7 @@ def _label_text(lab: Label, m: _Map, label: str) -> str:
     left, top = m.xy((lab.box[0], lab.box[3]))
     return (
         f'<text x="{left:.3f}" y="{top + metrics.ASCENT * _FONT:.3f}" '
-        f'font-size="{_FONT:.2f}" font-family="{metrics.FAMILY}" '
+        f'font-size="{_FONT:.2f}" font-family="{FONT_STACK}" '
         f'font-style="italic" {_HALO}>{label}</text>'
     )
 
@@ -243,7 +244,7 @@ def _points(
         x, y = m.xy(xy)
         small = names[0] in scene.small
         marker = (
-            f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{_SMALL_R if small else _MARKER_R:.2f}" '
+            f'<circle cx="{x:.3f}" cy="{y:.3f}" r="{_SMALL_R if small else _MARKER_R:.4f}" '
             f'fill="{"white" if small else COLORS["point"]}" stroke="{COLORS["point"]}"/>'
         )
         lab = by_name.get(names[0])
@@ -316,7 +317,7 @@ def to_svg(
             out.append(
                 f'<text class="region-number" x="{nx:.3f}" y="{ny:.3f}" '
                 f'text-anchor="middle" dominant-baseline="central" '
-                f'font-size="{NUMBER_SCALE * _FONT:.2f}" font-family="{metrics.FAMILY}" '
+                f'font-size="{NUMBER_SCALE * _FONT:.2f}" font-family="{FONT_STACK}" '
                 f'fill="{COLORS["axis"]}">{k + 1}</text>'
             )
     out += _points(scene, m, scene.labels if not insets else insets[0].main, tip, "", scene.box)
@@ -352,7 +353,8 @@ def to_svg(
         )
     out.insert(
         2,
-        '<defs><marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
+        f"<defs><style>{font_face()}</style>"
+        '<marker id="head" viewBox="0 0 10 10" refX="10" refY="5" '
         'markerWidth="6" markerHeight="6" orient="auto-start-reverse">'
         f'<path d="M0,0 L10,5 L0,10 z" fill="{COLORS["length"]}"/></marker></defs>',
     )
