@@ -10,6 +10,8 @@ import random
 import re
 from pathlib import Path
 
+import pytest
+
 from _browser import chromium
 from _label_rules import cover_faults, overlap
 from graspcompass import Grasp, internal_force_diagram
@@ -81,6 +83,13 @@ def random_grasps(count: int, seed: int = 23) -> list[Grasp]:
     return out
 
 
+@pytest.fixture(scope="module")
+def browser():
+    """One Chromium for the tests of this module in the system's fonts."""
+    with chromium("the SVG labels") as b:
+        yield b
+
+
 def measure(page, svg: str):
     page.set_content(
         f"<!doctype html><html><body style='margin:0'>{svg.split('?>', 1)[1]}</body></html>"
@@ -88,19 +97,18 @@ def measure(page, svg: str):
     return page.evaluate(MEASURE)
 
 
-def test_svg_labels_name_their_points_in_chromium() -> None:
+def test_svg_labels_name_their_points_in_chromium(browser) -> None:
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
     grasps += random_grasps(20)
-    with chromium("the SVG labels") as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        report = {}
-        for g in grasps:
-            c = internal_force_diagram(g)
-            panels = measure(page, to_svg(c))
-            assert sum(p["t"] is not None for pl in panels for p in pl["pts"]) >= 4
-            found = faults(panels)
-            if found:
-                report[str(g.params if hasattr(g, "params") else g)] = found
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    report = {}
+    for g in grasps:
+        c = internal_force_diagram(g)
+        panels = measure(page, to_svg(c))
+        assert sum(p["t"] is not None for pl in panels for p in pl["pts"]) >= 4
+        found = faults(panels)
+        if found:
+            report[str(g.params if hasattr(g, "params") else g)] = found
     assert not report, report
 
 
@@ -131,45 +139,41 @@ def wide_grasps(count: int, seed: int = 2312) -> list[Grasp]:
 TWO_CROWDS = Grasp("0.1", "0.1", "0", "20deg", "20deg", xi1="72deg", xi2="72deg")
 
 
-def test_svg_labels_of_wide_random_grasps_in_chromium() -> None:
+def test_svg_labels_of_wide_random_grasps_in_chromium(browser) -> None:
     """Grasps over the hypothesis tests' range (tiny contacts, near-flat cones, crowds far
     apart): the same rules, in each panel, with an inset for each crowd."""
     grasps = [TWO_CROWDS, *wide_grasps(16)]
-    with chromium("the SVG labels") as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        report = {}
-        for g in grasps:
-            panels = measure(page, to_svg(internal_force_diagram(g)))
-            found = faults(panels)
-            if found:
-                report[str(g.params)] = found
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    report = {}
+    for g in grasps:
+        panels = measure(page, to_svg(internal_force_diagram(g)))
+        found = faults(panels)
+        if found:
+            report[str(g.params)] = found
     assert not report, report
 
 
-def test_svg_break_point_labels_name_their_points_in_chromium() -> None:
+def test_svg_break_point_labels_name_their_points_in_chromium(browser) -> None:
     """With ``break_points`` the labels of the break points on the envelope keep the
     same rules, in the browser's layout; and every such break point is labelled."""
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
     grasps += random_grasps(20)
-    with chromium("the SVG labels") as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        report = {}
-        for g in grasps:
-            c = internal_force_diagram(g)
-            panels = measure(page, to_svg(c, break_points=True))
-            scene = scene_of(c, break_points=True)  # the painted labels' names: a break
-            # point closer than a marker to another point is named in that one's label
-            views = [scene.labels] if scene.inset is None else [scene.inset.main]
-            views += [ins.labels for ins in scene.insets]
-            named = {n for labs in views for lab in labs for n in lab.names if n[0] == "B"}
-            shown = {
-                re.sub(r"^inset\d*-", "", p["id"]) for pl in panels for p in pl["pts"] if p["t"]
-            }
-            assert {lab.names[0] for labs in views for lab in labs} == shown, g
-            assert named == _on_envelope(c), g  # found from k_n(θ) = V_n · e(θ)
-            found = faults(panels)
-            if found:
-                report[str(g.params if hasattr(g, "params") else g)] = found
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    report = {}
+    for g in grasps:
+        c = internal_force_diagram(g)
+        panels = measure(page, to_svg(c, break_points=True))
+        scene = scene_of(c, break_points=True)  # the painted labels' names: a break
+        # point closer than a marker to another point is named in that one's label
+        views = [scene.labels] if scene.inset is None else [scene.inset.main]
+        views += [ins.labels for ins in scene.insets]
+        named = {n for labs in views for lab in labs for n in lab.names if n[0] == "B"}
+        shown = {re.sub(r"^inset\d*-", "", p["id"]) for pl in panels for p in pl["pts"] if p["t"]}
+        assert {lab.names[0] for labs in views for lab in labs} == shown, g
+        assert named == _on_envelope(c), g  # found from k_n(θ) = V_n · e(θ)
+        found = faults(panels)
+        if found:
+            report[str(g.params if hasattr(g, "params") else g)] = found
     assert not report, report
 
 
@@ -198,32 +202,31 @@ NUMBERED = [
 ]
 
 
-def test_svg_square_numbers_cover_nothing_in_chromium() -> None:
+def test_svg_square_numbers_cover_nothing_in_chromium(browser) -> None:
     """The numbers of the dashed squares (two insets or more) cover no label, no point
     marker and no other number, in the browser's layout."""
-    with chromium("the SVG square numbers") as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        report, numbered = {}, 0
-        for g in NUMBERED:
-            svg = to_svg(internal_force_diagram(g))
-            page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
-            m = page.evaluate(NUMBERS)
-            numbered += len(m["nums"]) >= 2
-            bad = [
-                f"number {i + 1} over number {j + 1}"
-                for i, a in enumerate(m["nums"])
-                for j, b in enumerate(m["nums"][i + 1 :], start=i + 1)
-                if overlap(a, b) > 0
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    report, numbered = {}, 0
+    for g in NUMBERED:
+        svg = to_svg(internal_force_diagram(g))
+        page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
+        m = page.evaluate(NUMBERS)
+        numbered += len(m["nums"]) >= 2
+        bad = [
+            f"number {i + 1} over number {j + 1}"
+            for i, a in enumerate(m["nums"])
+            for j, b in enumerate(m["nums"][i + 1 :], start=i + 1)
+            if overlap(a, b) > 0
+        ]
+        for i, a in enumerate(m["nums"]):
+            bad += [
+                f"number {i + 1} over a label"
+                for q in m["pts"]
+                if q["t"] and overlap(a, q["t"]) > 0
             ]
-            for i, a in enumerate(m["nums"]):
-                bad += [
-                    f"number {i + 1} over a label"
-                    for q in m["pts"]
-                    if q["t"] and overlap(a, q["t"]) > 0
-                ]
-                bad += [f"number {i + 1} over a marker" for q in m["pts"] if overlap(a, q["m"]) > 0]
-            if bad:
-                report[str(g.params)] = bad
+            bad += [f"number {i + 1} over a marker" for q in m["pts"] if overlap(a, q["m"]) > 0]
+        if bad:
+            report[str(g.params)] = bad
     assert numbered >= 5
     assert not report, report
 
@@ -251,8 +254,8 @@ CUSPS = """(reach) => {
       path.parentNode.appendChild(piece);
       const L = piece.getTotalLength(), head = [], tail = [];
       const at_ = s => client(piece.getPointAtLength(s));
-      for (let s = 0; s <= Math.min(L, user); s += 0.1) head.push(at_(s));
-      for (let s = Math.max(0, L - user); s <= L; s += 0.1) tail.push(at_(s));
+      for (let s = 0; s <= Math.min(L, user); s += 0.25) head.push(at_(s));
+      for (let s = Math.max(0, L - user); s <= L; s += 0.25) tail.push(at_(s));
       const eps = Math.min(0.05, L / 4);
       const dir = s => { const a = piece.getPointAtLength(s), b = piece.getPointAtLength(s + eps);
         return [b.x - a.x, b.y - a.y]; };
@@ -283,26 +286,24 @@ CUSPED = [
 ]
 
 
-def test_svg_labels_keep_clear_of_the_envelopes_cusps_in_chromium() -> None:
+def test_svg_labels_keep_clear_of_the_envelopes_cusps_in_chromium(browser) -> None:
     """No label covers the envelope's strokes next to a cusp (within 0.9 of a label's
     height of a corner of the path), measured along the path in the browser."""
-    grasps = [*(Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")), *CUSPED]
-    grasps += random_grasps(6, seed=7)
-    with chromium("the SVG labels at the cusps") as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
-        report, corners = {}, 0
-        for g in grasps:
-            svg = to_svg(internal_force_diagram(g))
-            page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
-            for pl in page.evaluate(CUSPS, 0.9):
-                corners += pl["corners"]
-                bad = [
-                    [round(v) for v in lab]
-                    for lab in pl["labels"]
-                    if any(lab[0] < x < lab[2] and lab[1] < y < lab[3] for x, y in pl["near"])
-                ]
-                if bad:
-                    report[f"{g.params} {pl['panel']}"] = bad
+    grasps = [Grasp.preset("fig6"), *CUSPED, *random_grasps(2, seed=7)]
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    report, corners = {}, 0
+    for g in grasps:
+        svg = to_svg(internal_force_diagram(g))
+        page.set_content(f"<!doctype html><html><body>{svg.split('?>', 1)[1]}</body></html>")
+        for pl in page.evaluate(CUSPS, 0.9):
+            corners += pl["corners"]
+            bad = [
+                [round(v) for v in lab]
+                for lab in pl["labels"]
+                if any(lab[0] < x < lab[2] and lab[1] < y < lab[3] for x, y in pl["near"])
+            ]
+            if bad:
+                report[f"{g.params} {pl['panel']}"] = bad
     assert corners > 20
     assert not report, report
 
@@ -329,14 +330,20 @@ def _stix_only(tmp: Path) -> dict[str, str]:
     return {**os.environ, "FONTCONFIG_FILE": str(conf)}
 
 
-def test_svg_labels_keep_the_rules_without_dejavu_sans(tmp_path: Path) -> None:
+def test_svg_labels_keep_the_rules_without_dejavu_sans(browser, tmp_path: Path) -> None:
     """In a browser that has no DejaVu Sans (only a Times-like serif), the labels keep the
     rules: the SVG carries the subset of the font they were placed with (a hostile run
     found 184 of 244 SVGs breaking them in a Times-like font)."""
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
     grasps += random_grasps(8, seed=11)
-    with chromium("the SVG labels without DejaVu Sans", env=_stix_only(tmp_path)) as browser:
-        page = browser.new_page(viewport={"width": 1400, "height": 900})
+    import shutil
+
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    other = browser.browser_type.launch(
+        executable_path=exe, args=["--no-sandbox"], env=_stix_only(tmp_path)
+    )
+    try:
+        page = other.new_page(viewport={"width": 1400, "height": 900})
         # the browser has no DejaVu Sans: text asked in it is set in the serif
         widths = page.evaluate(
             """() => { const c = document.createElement('canvas').getContext('2d');
@@ -348,5 +355,7 @@ def test_svg_labels_keep_the_rules_without_dejavu_sans(tmp_path: Path) -> None:
             found = faults(measure(page, to_svg(internal_force_diagram(g))))
             if found:
                 report[str(g.params)] = found
+    finally:
+        other.close()
     assert widths[0] == widths[1], widths
     assert not report, report

@@ -75,7 +75,7 @@ def test_the_measure_sees_a_picture_too_large() -> None:
     assert largest_pt(ok + arc + "\\end{tikzpicture}") > TEX_LIMIT_PT
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=list(HealthCheck))
+@settings(max_examples=6, deadline=None, suppress_health_check=list(HealthCheck))
 @given(
     st.integers(5, 400),
     st.integers(5, 400),
