@@ -236,12 +236,19 @@ def _greedy(
         bad = 100.0 * _hits_many(big, np.array(placed).reshape(-1, 4))
         bad = bad + 100.0 * _hits_many(big, markers)
         if clear is not None and len(clear):  # the envelope's strokes at its cusps
-            bad = bad + 100.0 * (
-                (clear[None, :, 0] > big[:, 0, None])
-                & (clear[None, :, 0] < big[:, 2, None])
-                & (clear[None, :, 1] > big[:, 1, None])
-                & (clear[None, :, 1] < big[:, 3, None])
-            ).any(axis=1)
+            near = clear[
+                (clear[:, 0] > big[:, 0].min())
+                & (clear[:, 0] < big[:, 2].max())
+                & (clear[:, 1] > big[:, 1].min())
+                & (clear[:, 1] < big[:, 3].max())
+            ]
+            if len(near):
+                bad = bad + 100.0 * (
+                    (near[None, :, 0] > big[:, 0, None])
+                    & (near[None, :, 0] < big[:, 2, None])
+                    & (near[None, :, 1] > big[:, 1, None])
+                    & (near[None, :, 1] < big[:, 3, None])
+                ).any(axis=1)
         if len(others):
             own = _dist_from_boxes(np.array([[px, py]]), big)[:, 0]
             near = _dist_from_boxes(others, big).min(axis=1)
