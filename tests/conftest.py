@@ -21,9 +21,15 @@ from typing import Any
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import settings
 from hypothesis import strategies as st
 
 from graspcompass import Grasp, internal_force_diagram
+
+# no timed assertions: hypothesis's 200 ms deadline per example failed a test of exact
+# decimal text on a loaded 2-core machine; speed lives in bench/
+settings.register_profile("graspcompass", deadline=None)
+settings.load_profile("graspcompass")
 
 #: Distance (rad) kept from the boundary of condition (1).
 MARGIN = 0.05
