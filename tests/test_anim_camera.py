@@ -126,6 +126,7 @@ def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
         figsize=(4, 4.4),
         dpi=40,
         min_text_px=0,
+        inset_seconds=0,
     )
     path = anim.save(tmp_path / "c.mp4", quiet=True)
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
@@ -158,10 +159,10 @@ def test_the_frames_written_are_full_renders(fig6):
     assert all(len(r) == round(2.0 * anim.fps) for r in segments)
     frames = list(anim.iter_frames())
     assert len(frames) == anim.frame_count
-    # every fifth frame, and each zoom's (blitting draws a few pixels of overlap in another
+    # every eighth frame, and each zoom's (blitting draws a few pixels of overlap in another
     # order)
     zooms = {f for r in segments for f in r}
-    for f in sorted(set(range(0, len(frames), 5)) | zooms):
+    for f in sorted(set(range(0, len(frames), 8)) | zooms):
         far = np.abs(frames[f].astype(int) - anim.render(f).astype(int)).max(axis=2) > 40
         assert far.mean() < 0.005, (f, tl.at(f))
     for r, z in zip(segments, anim._zooms):

@@ -34,7 +34,7 @@ def _values(c):
 angles = st.integers(5, 175)
 
 
-@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(
     st.integers(2, 30),
     st.integers(2, 30),

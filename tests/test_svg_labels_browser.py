@@ -142,7 +142,7 @@ TWO_CROWDS = Grasp("0.1", "0.1", "0", "20deg", "20deg", xi1="72deg", xi2="72deg"
 def test_svg_labels_of_wide_random_grasps_in_chromium(browser) -> None:
     """Grasps over the hypothesis tests' range (tiny contacts, near-flat cones, crowds far
     apart): the same rules, in each panel, with an inset for each crowd."""
-    grasps = [TWO_CROWDS, *wide_grasps(16)]
+    grasps = [TWO_CROWDS, *wide_grasps(10)]
     page = browser.new_page(viewport={"width": 1400, "height": 900})
     report = {}
     for g in grasps:
@@ -157,7 +157,7 @@ def test_svg_break_point_labels_name_their_points_in_chromium(browser) -> None:
     """With ``break_points`` the labels of the break points on the envelope keep the
     same rules, in the browser's layout; and every such break point is labelled."""
     grasps = [Grasp.preset(p) for p in ("fig6", "table1a", "table1b", "table1c")]
-    grasps += random_grasps(20)
+    grasps += random_grasps(10)
     page = browser.new_page(viewport={"width": 1400, "height": 900})
     report = {}
     for g in grasps:
@@ -289,7 +289,7 @@ CUSPED = [
 def test_svg_labels_keep_clear_of_the_envelopes_cusps_in_chromium(browser) -> None:
     """No label covers the envelope's strokes next to a cusp (within 0.9 of a label's
     height of a corner of the path), measured along the path in the browser."""
-    grasps = [Grasp.preset("fig6"), *CUSPED, *random_grasps(2, seed=7)]
+    grasps = [Grasp.preset("fig6"), *CUSPED, *random_grasps(1, seed=7)]
     page = browser.new_page(viewport={"width": 1400, "height": 900})
     report, corners = {}, 0
     for g in grasps:
