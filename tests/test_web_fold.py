@@ -158,7 +158,7 @@ DRAWN = """() => { const b = graspcompass.board;
   return {P1: pt('P₁'), P2: pt('P₂')}; }"""
 
 
-@pytest.mark.parametrize("viewport", [(390, 844)], ids=lambda v: f"{v[0]}x{v[1]}")
+@pytest.mark.parametrize("viewport", [(1280, 800), (390, 844)], ids=lambda v: f"{v[0]}x{v[1]}")
 def test_invalid_drag_message_covers_no_control(browser: Any, page_path: Path, viewport) -> None:
     """P1 dragged below the x-axis, on Fig. 6 and on a typed grasp: every step button
     is reached by a tap at its centre, and "previous" steps back; the heading names the
