@@ -91,7 +91,7 @@ def numbered(
     if len(insets) < 2:
         return insets
     gap = labelling.GAP_PT / 2 / scale
-    taken = [lab.box for lab in labels]
+    taken: list[Box] = [lab.box for lab in labels]
     taken += [
         (x - r / 2 / scale, y - r / 2 / scale, x + r / 2 / scale, y + r / 2 / scale)
         for (x, y), r in markers
@@ -101,7 +101,7 @@ def numbered(
         w, h = labelling.text_size(str(k + 1), font_pt * NUMBER_SCALE)
         w, h = w / scale, h / scale
         sq = inset.box
-        best: tuple[float, XY, Sequence[float]] | None = None
+        best: tuple[float, XY, Box] | None = None
         for ring in _RINGS:
             d = gap + ring * max(w, h)
             for (fx, fy), (dx, dy) in _PLACES:
