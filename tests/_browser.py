@@ -36,3 +36,24 @@ def chromium(what: str, env: dict[str, str] | None = None) -> Iterator[Any]:
             yield browser
         finally:
             browser.close()
+
+
+def fig6_explorer(tmp_path_factory: Any) -> Any:
+    """The web explorer of Fig. 6 written to a fresh folder (a module's ``page_path``)."""
+    from graspcompass import Grasp, internal_force_diagram
+    from graspcompass.export.html import write_html
+
+    path = tmp_path_factory.mktemp("web") / "explorer.html"
+    return write_html(internal_force_diagram(Grasp.preset("fig6")), path)
+
+
+def open_explorer(browser: Any, path: Any, width: int, height: int) -> Any:
+    """A page of ``browser`` at ``width`` × ``height`` with the explorer at ``path`` loaded
+    and ready; ``page.errors`` collects the page's uncaught errors."""
+    page = browser.new_page(viewport={"width": width, "height": height})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto(path.as_uri())
+    page.wait_for_selector("body[data-ready='1']", timeout=20_000)
+    page.errors = errors
+    return page

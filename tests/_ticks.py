@@ -22,15 +22,37 @@ SPACE = 3.0
 #: Every tick number JSXGraph draws on the board now (its rectangle, whether the browser
 #: shows it), and every point shown on the board in view (its marker's rectangle, its
 #: label's when one is shown).
-MEASURE_TICKS = """() => {
-  const b = graspcompass.board;
+#: JavaScript: ``b`` the board, ``rect`` an element's client rectangle, ``seen`` whether the
+#: browser shows it, ``box`` the board's rectangle (the measures of this module and of
+#: tests/test_web_inset.py).
+BOARD_JS = """  const b = graspcompass.board;
   const rect = (n) => { const r = n.getBoundingClientRect(); return [r.left, r.top, r.right,
     r.bottom]; };
   const drawn = (n) => n && n.isConnected && n.getAttribute('display') !== 'none' &&
     getComputedStyle(n).display !== 'none';
   const seen = (n) => drawn(n) && getComputedStyle(n).visibility !== 'hidden';
   const box = rect(b.containerObj);
-  const ticks = [];
+"""
+
+#: JavaScript: ``pts``, every point shown on the board in view: its id and name, its
+#: marker's rectangle, its label's (null: none shown) and the label's text.
+POINTS_JS = """  const pts = [];
+  for (const el of b.objectsList) {
+    if (el.elType !== 'point' || !el.visPropCalc.visible || !seen(el.rendNode)) continue;
+    const m = rect(el.rendNode);
+    const cx = (m[0] + m[2]) / 2, cy = (m[1] + m[3]) / 2;
+    if (cx < box[0] || cx > box[2] || cy < box[1] || cy > box[3]) continue;
+    const l = el.label;
+    const on = l && l.visPropCalc.visible && seen(l.rendNode) && l.rendNode.textContent.trim();
+    pts.push({id: el.id, name: el.name, m, t: on ? rect(l.rendNode) : null,
+      text: on ? l.rendNode.textContent : null});
+  }
+"""
+
+MEASURE_TICKS = (
+    "() => {\n"
+    + BOARD_JS
+    + """  const ticks = [];
   for (const el of b.objectsList) {
     if (el.elType !== 'ticks') continue;
     for (const l of el.labels || []) {
@@ -42,18 +64,11 @@ MEASURE_TICKS = """() => {
         axis: el.line.name || el.line.id});
     }
   }
-  const pts = [];
-  for (const el of b.objectsList) {
-    if (el.elType !== 'point' || !el.visPropCalc.visible || !seen(el.rendNode)) continue;
-    const m = rect(el.rendNode);
-    const cx = (m[0] + m[2]) / 2, cy = (m[1] + m[3]) / 2;
-    if (cx < box[0] || cx > box[2] || cy < box[1] || cy > box[3]) continue;
-    const l = el.label;
-    const on = l && l.visPropCalc.visible && seen(l.rendNode) && l.rendNode.textContent.trim();
-    pts.push({name: el.name, m, t: on ? rect(l.rendNode) : null});
-  }
-  return {step: graspcompass.get('step'), ticks, pts};
+"""
+    + POINTS_JS
+    + """  return {step: graspcompass.get('step'), ticks, pts};
 }"""
+)
 
 
 def _grow(r: list[float], d: float) -> list[float]:

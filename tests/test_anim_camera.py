@@ -18,6 +18,7 @@ import pytest
 from matplotlib.text import Text
 
 from _shown import shown
+from _small_anim import small_animation
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.render.animate import animate_construction
 
@@ -117,17 +118,7 @@ def test_mp4_without_a_system_ffmpeg(fig6, tmp_path, monkeypatch):
     empty = tmp_path / "bin"
     empty.mkdir()
     monkeypatch.setenv("PATH", str(empty))  # no ffmpeg on the PATH
-    anim = animate_construction(
-        fig6,
-        frames_per_step=1,
-        pause_frames=0,
-        hold_frames=1,
-        caption_seconds=0,
-        figsize=(4, 4.4),
-        dpi=40,
-        min_text_px=0,
-        inset_seconds=0,
-    )
+    anim = small_animation(fig6, dpi=40)
     path = anim.save(tmp_path / "c.mp4", quiet=True)
     frames, _ = imageio_ffmpeg.count_frames_and_secs(str(path))
     assert frames == anim.frame_count
@@ -142,17 +133,7 @@ def test_the_frames_written_are_full_renders(fig6):
     and ends on the whole view."""
     import numpy as np
 
-    anim = animate_construction(
-        fig6,
-        frames_per_step=3,
-        pause_frames=0,
-        hold_frames=1,
-        caption_seconds=0,
-        figsize=(4, 4.4),
-        dpi=30,
-        min_text_px=0,
-        inset_seconds=2.0,
-    )
+    anim = small_animation(fig6, frames_per_step=3, inset_seconds=2.0)
     tl = anim.timeline
     segments = [tl.segment_range(i) for i, s in enumerate(tl.segments) if s.kind == "inset"]
     assert len(segments) == len(anim._zooms) >= 1  # one zoom per crowd
@@ -182,16 +163,8 @@ def test_blitted_frames_keep_labels_on_top():
     in z-order.  Compared inside each visible label's box at the end of every step."""
     import numpy as np
 
-    anim = animate_construction(
-        internal_force_diagram(COVERED),
-        frames_per_step=2,
-        pause_frames=0,
-        hold_frames=1,
-        caption_seconds=0,
-        figsize=(6, 6.6),
-        dpi=50,
-        min_text_px=0,
-        inset_seconds=0,
+    anim = small_animation(
+        internal_force_diagram(COVERED), frames_per_step=2, figsize=(6, 6.6), dpi=50
     )
     frames = list(anim.iter_frames())
     tl = anim.timeline
@@ -225,17 +198,7 @@ def test_the_hold_comes_to_rest(fig6):
     diagram still (it faded for the whole hold, two label layouts on screen at once)."""
     import numpy as np
 
-    anim = animate_construction(
-        fig6,
-        frames_per_step=1,
-        pause_frames=0,
-        hold_frames=30,
-        caption_seconds=0,
-        figsize=(4, 4.4),
-        dpi=30,
-        min_text_px=0,
-        inset_seconds=0,
-    )
+    anim = small_animation(fig6, hold_frames=30)
     frames = list(anim.iter_frames())
     hold = [f for f in range(len(frames)) if anim.timeline.at(f).kind == "hold"]
     assert len(hold) == 30

@@ -24,6 +24,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from PIL import Image
 
+from _small_anim import small_animation
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.cli import _add_grasp_options, _Parser, grasp_from_args
 from graspcompass.cli._animate import (
@@ -250,15 +251,9 @@ def test_png_frames_per_step(c1a, anim, tmp_path):
 
 
 def test_html_is_self_contained(tmp_path, c1a):
-    small = animate_construction(  # each caption 0.3 s: a few stills per step; no zoom
-        c1a,
-        frames_per_step=1,
-        pause_frames=1,
-        hold_frames=1,
-        figsize=(2, 2),
-        dpi=30,
-        caption_seconds=0.3,
-        camera=False,
+    # each caption 0.3 s: a few stills per step; no zoom
+    small = small_animation(
+        c1a, pause_frames=1, figsize=(2, 2), caption_seconds=0.3, camera=False, min_text_px=None
     )
     html = small._repr_html_()
     assert "<script" in html and "<img" in html

@@ -29,9 +29,7 @@ from typing import Any
 
 import pytest
 
-from _browser import chromium
-from graspcompass import Grasp, internal_force_diagram
-from graspcompass.export.html import write_html
+from _browser import chromium, fig6_explorer, open_explorer
 
 DEG = math.pi / 180
 
@@ -60,24 +58,13 @@ SLIDERS = [
 
 @pytest.fixture(scope="module")
 def page_path(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    path = tmp_path_factory.mktemp("web") / "explorer.html"
-    return write_html(internal_force_diagram(Grasp.preset("fig6")), path)
+    return fig6_explorer(tmp_path_factory)
 
 
 @pytest.fixture(scope="module")
 def browser() -> Iterator[Any]:
     with chromium("the web explorer's controls") as b:
         yield b
-
-
-def _open(browser: Any, path: Path, width: int, height: int) -> Any:
-    page = browser.new_page(viewport={"width": width, "height": height})
-    errors: list[str] = []
-    page.on("pageerror", lambda e: errors.append(str(e)))
-    page.goto(path.as_uri())
-    page.wait_for_selector("body[data-ready='1']", timeout=20_000)
-    page.errors = errors
-    return page
 
 
 def _rects(page: Any, selectors: list[str]) -> list[dict[str, Any]]:
@@ -101,7 +88,7 @@ def test_sliders_above_the_fold_whatever_the_insets(browser: Any, page_path: Pat
     """At 1280×800, at the last step of grasps with one to four insets: every step
     button, the caption and every slider and box are above the fold; the insets are
     shown one at a time, a switcher naming each, and a tap on k shows inset k."""
-    page = _open(browser, page_path, 1280, 800)
+    page = open_explorer(browser, page_path, 1280, 800)
     try:
         most = 0
         for g in WIDE:
@@ -164,7 +151,7 @@ def test_invalid_drag_message_covers_no_control(browser: Any, page_path: Path, v
     is reached by a tap at its centre, and "previous" steps back; the heading names the
     last valid grasp, drawn (y ≥ 0), and P1, P2 stand where that grasp has them."""
     w, h = viewport
-    page = _open(browser, page_path, w, h)
+    page = open_explorer(browser, page_path, w, h)
     try:
         for g in (None, _grasp(1.653, 0.797, 0.3, 85.9, 75.4, 0.0892, 12.9364)):
             page.select_option("#gc-preset", "fig6")
@@ -202,7 +189,7 @@ def test_invalid_drag_message_covers_no_control(browser: Any, page_path: Path, v
 def test_slider_shows_the_box_after_large_drags(browser: Any, page_path: Path) -> None:
     """Two drags far below the x-axis (the second ending within the range the first
     widened): the slider shows y to 1e-9, as the box does (to its 6 digits)."""
-    page = _open(browser, page_path, 1280, 800)
+    page = open_explorer(browser, page_path, 1280, 800)
     try:
         page.select_option("#gc-preset", "fig6")
         page.click("#gc-fit")
@@ -232,7 +219,7 @@ def _sig4(x: float) -> str:
 def test_table_gives_4_significant_digits(browser: Any, page_path: Path) -> None:
     """Every length and force of the table to 4 significant digits, as the note says: no
     nonzero value prints 0, the largest (~1005) and the smallest (S4 = 0.434) alike."""
-    page = _open(browser, page_path, 1280, 800)
+    page = open_explorer(browser, page_path, 1280, 800)
     try:
         for g in WIDE:
             assert page.evaluate("p => graspcompass.set(p)", g) is None, g

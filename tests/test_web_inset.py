@@ -30,7 +30,7 @@ import pytest
 
 from _browser import chromium
 from _label_rules import cover_faults, overlap
-from _ticks import MEASURE_TICKS, tick_faults
+from _ticks import BOARD_JS, MEASURE_TICKS, POINTS_JS, tick_faults
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import to_html
 
@@ -39,26 +39,7 @@ VIEWPORTS = [(1280, 800), (390, 844)]
 
 #: Per point element of the board in view: its name, marker rectangle, label rectangle
 #: (null: no label shown) and label text; the board's rectangle.  JSXGraph's own objects.
-MEASURE_BOARD = """() => {
-  const b = graspcompass.board;
-  const rect = (n) => { const r = n.getBoundingClientRect(); return [r.left, r.top, r.right,
-    r.bottom]; };
-  const box = rect(b.containerObj);
-  const shown = (n) => n && n.isConnected && getComputedStyle(n).display !== 'none' &&
-    getComputedStyle(n).visibility !== 'hidden' && n.getAttribute('display') !== 'none';
-  const pts = [];
-  for (const el of b.objectsList) {
-    if (el.elType !== 'point' || !el.visPropCalc.visible || !shown(el.rendNode)) continue;
-    const m = rect(el.rendNode);
-    const cx = (m[0] + m[2]) / 2, cy = (m[1] + m[3]) / 2;
-    if (cx < box[0] || cx > box[2] || cy < box[1] || cy > box[3]) continue;
-    const l = el.label;
-    const on = l && l.visPropCalc.visible && shown(l.rendNode) && l.rendNode.textContent.trim();
-    pts.push({id: el.id, name: el.name, m, t: on ? rect(l.rendNode) : null,
-      text: on ? l.rendNode.textContent : null});
-  }
-  return {board: box, pts};
-}"""
+MEASURE_BOARD = "() => {\n" + BOARD_JS + POINTS_JS + "  return {board: box, pts};\n}"
 
 #: The insets shown, each as a user sees it once its tab is chosen (one is in sight at a
 #: time): its panel's rectangle, per marker drawn in it (centre inside the panel) its

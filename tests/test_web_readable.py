@@ -19,15 +19,14 @@ from typing import Any
 
 import pytest
 
-from _browser import chromium
+from _browser import chromium, fig6_explorer, open_explorer
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import write_html
 
 
 @pytest.fixture(scope="module")
 def page_path(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    path = tmp_path_factory.mktemp("web") / "explorer.html"
-    return write_html(internal_force_diagram(Grasp.preset("fig6")), path)
+    return fig6_explorer(tmp_path_factory)
 
 
 @pytest.fixture(scope="module")
@@ -36,19 +35,9 @@ def browser() -> Iterator[Any]:
         yield b
 
 
-def _open(browser: Any, path: Path, width: int, height: int) -> Any:
-    page = browser.new_page(viewport={"width": width, "height": height})
-    errors: list[str] = []
-    page.on("pageerror", lambda e: errors.append(str(e)))
-    page.goto(path.as_uri())
-    page.wait_for_selector("body[data-ready='1']", timeout=20_000)
-    page.errors = errors
-    return page
-
-
 @pytest.fixture(scope="module")
 def desk(browser: Any, page_path: Path) -> Iterator[Any]:
-    page = _open(browser, page_path, 1280, 800)
+    page = open_explorer(browser, page_path, 1280, 800)
     yield page
     assert not page.errors, page.errors
     page.close()
@@ -240,7 +229,7 @@ def test_controls_above_the_fold_at_1280x800(fresh: Any) -> None:
 
 
 def test_phone_layout_390x844(browser: Any, page_path: Path) -> None:
-    phone = _open(browser, page_path, 390, 844)
+    phone = open_explorer(browser, page_path, 390, 844)
     try:
         assert phone.evaluate("document.documentElement.scrollWidth") <= 390  # no side scroll
         for r in _rects(phone, CONTROLS[:-1]):
@@ -327,7 +316,7 @@ def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path,
     from test_web_inset import MEASURE_BOARD
 
     w, h = viewport
-    page = _open(browser, page_path, w, h)
+    page = open_explorer(browser, page_path, w, h)
     try:
         report = []
         side = page.evaluate("graspcompass.boardRect()[2] - graspcompass.boardRect()[0]")
@@ -384,7 +373,7 @@ def test_phone_board_controls_cover_no_point_or_label(browser: Any, page_path: P
     from _label_rules import overlap
     from test_web_inset import MEASURE_BOARD, random_grasps
 
-    page = _open(browser, page_path, 390, 844)
+    page = open_explorer(browser, page_path, 390, 844)
     try:
         bad = []
         grasps = random_grasps(6, seed=9)
@@ -411,7 +400,7 @@ def test_grasp_menu_names_the_preset_the_page_shows(
     own = Grasp(1.1, 0.7, 0.4, "pi/2", "5*pi/12", mu1=0.8, mu2=1.1)
     for name, grasp in [("table1c", Grasp.preset("table1c")), ("", own)]:
         path = write_html(internal_force_diagram(grasp), folder / f"{name or 'own'}.html")
-        page = _open(browser, path, 1280, 800)
+        page = open_explorer(browser, path, 1280, 800)
         try:
             assert page.input_value("#gc-preset") == name, name
             assert not page.errors, page.errors

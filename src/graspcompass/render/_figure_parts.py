@@ -23,6 +23,12 @@ if TYPE_CHECKING:
 __all__: list[str] = []
 
 
+def box_patch(box: Any, **style: Any) -> Rectangle:
+    """The rectangle of ``box`` ``(xmin, xmax, ymin, ymax)`` (the frame of the paper), styled:
+    an object's outline, the dashed square of an inset or a zoom."""
+    return Rectangle((box[0], box[2]), box[1] - box[0], box[3] - box[2], **style)
+
+
 def _n(step: Step) -> int:
     """The index that goes with a step's role (``role circle 3`` -> 3); 1 without one."""
     n = getattr(step, "n", ())
@@ -53,7 +59,7 @@ def _draw_givens(
         patch = (
             CirclePatch((0.0, 0.0), ext[1], **style)
             if kind == "circle"
-            else Rectangle((ext[0], ext[2]), ext[1] - ext[0], ext[3] - ext[2], **style)
+            else box_patch(ext, **style)
         )
         out["object"] = [ax.add_patch(patch)]
     for i, cone in enumerate(scene.cones, start=1):

@@ -23,10 +23,10 @@ from matplotlib.artist import Artist
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
-from matplotlib.patches import Patch, Rectangle
+from matplotlib.patches import Patch
 from matplotlib.text import Annotation
 
-from ._figure_parts import _CORNER
+from ._figure_parts import _CORNER, box_patch
 from ._hand_labels import _renderer, mend_labels
 from ._hand_text import A4_MM
 from .figure import draw_construction
@@ -353,17 +353,7 @@ def page2_extras(
         inset.set_title(f"The framed centre, enlarged {k:.1f}×", fontsize=font, loc="left", pad=3)
         arts += [
             inset,
-            ax.add_patch(
-                Rectangle(
-                    (zoom[0], zoom[2]),
-                    zoom[1] - zoom[0],
-                    zoom[3] - zoom[2],
-                    fill=False,
-                    lw=0.6,
-                    ec="#555555",
-                    zorder=7,
-                )
-            ),
+            ax.add_patch(box_patch(zoom, fill=False, lw=0.6, ec="#555555", zorder=7)),
         ]
         mend_labels(
             inset,

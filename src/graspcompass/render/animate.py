@@ -62,6 +62,7 @@ from ._anim_labels import ViewLabels
 from ._anim_layout import _layout, _mathtext, _shown, _text_width, _wrap  # noqa: F401
 from ._anim_panel import SidePanel
 from ._anim_player import FrameAnimation
+from ._figure_parts import box_patch
 from .figure import draw_construction
 from .theme import DEFAULT_THEME, MIN_CONTRAST, Quality, Theme
 from .timeline import Timeline, check_fps, reading_frames, save_frames
@@ -244,16 +245,8 @@ class ConstructionAnimation(_ApplyFrames, _CameraFrames, FrameAnimation):
         self._zooms = [] if self._views is None else self._views.zoom_boxes
         self._zoom_frames = [
             ax.add_patch(
-                Rectangle(
-                    (z[0], z[2]),
-                    z[1] - z[0],
-                    z[3] - z[2],
-                    fill=False,
-                    ls=(0, (4, 3)),
-                    lw=0.8,
-                    ec="0.35",
-                    zorder=5.8,
-                    visible=False,
+                box_patch(
+                    z, fill=False, ls=(0, (4, 3)), lw=0.8, ec="0.35", zorder=5.8, visible=False
                 )
             )
             for z in self._zooms

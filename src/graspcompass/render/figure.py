@@ -18,7 +18,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Circle as CirclePatch
-from matplotlib.patches import Polygon, Rectangle
+from matplotlib.patches import Polygon
 from matplotlib.text import Annotation
 
 from ..scene import labelling
@@ -31,6 +31,7 @@ from ._figure_parts import (
     _draw_length,
     _draw_line,
     _n,
+    box_patch,
 )
 from .output import FORMATS, save_figure
 from .polar import draw_k_polar, figure_k_plot
@@ -388,16 +389,7 @@ def figure_diagram(
         zax.set_title(f"{which}, {times:.1f}× larger", fontsize=theme.font_size * 0.9)
         b = zoom.box
         ax.add_patch(
-            Rectangle(
-                (b[0], b[2]),
-                b[1] - b[0],
-                b[3] - b[2],
-                fill=False,
-                lw=0.8,
-                ls=(0, (3, 2)),
-                edgecolor=theme.axis_color,
-                zorder=6,
-            )
+            box_patch(b, fill=False, lw=0.8, ls=(0, (3, 2)), edgecolor=theme.axis_color, zorder=6)
         )
         if zoom.number is not None:  # the squares numbered as their insets
             ax.annotate(
