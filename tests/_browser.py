@@ -57,3 +57,24 @@ def open_explorer(browser: Any, path: Any, width: int, height: int) -> Any:
     page.wait_for_selector("body[data-ready='1']", timeout=20_000)
     page.errors = errors
     return page
+
+
+def client_rects(page: Any, selectors: list[str]) -> list[dict[str, Any]]:
+    """Per CSS selector, its element's client rectangle (``s``, left, right, top, bottom,
+    height), the browser's own layout."""
+    return page.evaluate(
+        "ss => ss.map(s => { const r = document.querySelector(s)"
+        ".getBoundingClientRect(); return {s, left: r.left, right: r.right, "
+        "top: r.top, bottom: r.bottom, height: r.height}; })",
+        selectors,
+    )
+
+
+def drag_point(page: Any, name: str, dx: float, dy: float) -> None:
+    """Drag the explorer's point ``name`` by (dx, dy) pixels with the mouse, in 8 moves."""
+    x0, y0 = page.evaluate(f"graspcompass.toScreen('{name}')")
+    page.mouse.move(x0, y0)
+    page.mouse.down()
+    page.mouse.move(x0 + dx, y0 + dy, steps=8)
+    page.mouse.up()
+    page.wait_for_timeout(150)

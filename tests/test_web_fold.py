@@ -29,7 +29,7 @@ from typing import Any
 
 import pytest
 
-from _browser import chromium, fig6_explorer, open_explorer
+from _browser import chromium, client_rects, drag_point, fig6_explorer, open_explorer
 
 DEG = math.pi / 180
 
@@ -67,15 +67,6 @@ def browser() -> Iterator[Any]:
         yield b
 
 
-def _rects(page: Any, selectors: list[str]) -> list[dict[str, Any]]:
-    return page.evaluate(
-        "ss => ss.map(s => { const e = document.querySelector(s); const r = "
-        "e.getBoundingClientRect(); return {s, top: r.top, bottom: r.bottom, left: r.left, "
-        "right: r.right, height: r.height}; })",
-        selectors,
-    )
-
-
 #: Per selector: whether a tap at its centre reaches it (document.elementFromPoint).
 REACHED = """(ids) => ids.map(s => { const e = document.querySelector(s);
   const r = e.getBoundingClientRect(); const x = (r.left + r.right) / 2,
@@ -98,7 +89,7 @@ def test_sliders_above_the_fold_whatever_the_insets(browser: Any, page_path: Pat
             page.evaluate("graspcompass.insetTab(0)")
             shown = page.evaluate("graspcompass.insetRects().length")
             most = max(most, shown)
-            for r in _rects(page, [*BUTTONS, "#gc-caption", "#gc-preset", *SLIDERS]):
+            for r in client_rects(page, [*BUTTONS, "#gc-caption", "#gc-preset", *SLIDERS]):
                 assert r["bottom"] <= 800 and r["right"] <= 1280, (g, shown, r)
             # one inset in sight at a time; the switcher when there are more
             seen = page.evaluate(
@@ -129,15 +120,6 @@ def test_sliders_above_the_fold_whatever_the_insets(browser: Any, page_path: Pat
         page.close()
 
 
-def _drag(page: Any, name: str, dx: float, dy: float) -> None:
-    x0, y0 = page.evaluate(f"graspcompass.toScreen('{name}')")
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    page.mouse.move(x0 + dx, y0 + dy, steps=8)
-    page.mouse.up()
-    page.wait_for_timeout(150)
-
-
 #: Where the board draws P1 and P2 (user units), and the x-axis's screen row.
 DRAWN = """() => { const b = graspcompass.board;
   const pt = (n) => { const e = b.objectsList.find(o => o.elType === 'point' && o.name === n);
@@ -160,7 +142,7 @@ def test_invalid_drag_message_covers_no_control(browser: Any, page_path: Path, v
             page.click("#gc-fit")
             _x0, y0 = page.evaluate("graspcompass.toScreen('P1')")
             bottom = page.evaluate("graspcompass.boardRect()[3]")
-            _drag(page, "P1", 0, (bottom - 5) - y0)
+            drag_point(page, "P1", 0, (bottom - 5) - y0)
             assert page.evaluate("graspcompass.get('y')") < 0
             assert page.is_visible("#gc-error")
             for sel, reached, top in page.evaluate(REACHED, BUTTONS):
@@ -194,7 +176,7 @@ def test_slider_shows_the_box_after_large_drags(browser: Any, page_path: Path) -
         page.select_option("#gc-preset", "fig6")
         page.click("#gc-fit")
         for dy in (380, 250, 330.7, -40):
-            _drag(page, "P1", 3, dy)
+            drag_point(page, "P1", 3, dy)
             y = page.evaluate("graspcompass.get('y')")
             box = float(page.input_value("#gc-num-y"))
             rng = float(page.input_value("#gc-slider-y"))

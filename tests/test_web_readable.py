@@ -19,7 +19,7 @@ from typing import Any
 
 import pytest
 
-from _browser import chromium, fig6_explorer, open_explorer
+from _browser import chromium, client_rects, drag_point, fig6_explorer, open_explorer
 from graspcompass import Grasp, internal_force_diagram
 from graspcompass.export.html import write_html
 
@@ -210,20 +210,11 @@ def test_no_debug_line(fresh: Any) -> None:
     assert not re.search(r"\d ms\b", fresh.inner_text("body"))
 
 
-def _rects(page: Any, selectors: list[str]) -> list[dict[str, float]]:
-    return page.evaluate(
-        "ss => ss.map(s => { const r = document.querySelector(s)"
-        ".getBoundingClientRect(); return {s, left: r.left, right: r.right, "
-        "top: r.top, bottom: r.bottom, height: r.height}; })",
-        selectors,
-    )
-
-
 CONTROLS = ["#gc-first", "#gc-prev", "#gc-next", "#gc-last", "#gc-play", "#gc-fit", "#gc-caption"]
 
 
 def test_controls_above_the_fold_at_1280x800(fresh: Any) -> None:
-    for r in _rects(fresh, [*CONTROLS, "#gc-board"]):
+    for r in client_rects(fresh, [*CONTROLS, "#gc-board"]):
         assert r["bottom"] <= 800 and r["right"] <= 1280, r  # the board too
     assert fresh.evaluate("window.scrollY") == 0
 
@@ -232,9 +223,9 @@ def test_phone_layout_390x844(browser: Any, page_path: Path) -> None:
     phone = open_explorer(browser, page_path, 390, 844)
     try:
         assert phone.evaluate("document.documentElement.scrollWidth") <= 390  # no side scroll
-        for r in _rects(phone, CONTROLS[:-1]):
+        for r in client_rects(phone, CONTROLS[:-1]):
             assert r["right"] <= 390 and r["bottom"] <= 844 and r["height"] >= 44, r
-        board = _rects(phone, ["#gc-board"])[0]
+        board = client_rects(phone, ["#gc-board"])[0]
         assert board["right"] <= 390 and board["top"] < 400 and board["bottom"] <= 844
         phone.click("#gc-prev")  # tappable: the step goes back
         assert (
@@ -246,26 +237,17 @@ def test_phone_layout_390x844(browser: Any, page_path: Path) -> None:
         phone.close()
 
 
-def _drag(page: Any, name: str, dx: float, dy: float) -> None:
-    x0, y0 = page.evaluate(f"graspcompass.toScreen('{name}')")
-    page.mouse.move(x0, y0)
-    page.mouse.down()
-    page.mouse.move(x0 + dx, y0 + dy, steps=8)
-    page.mouse.up()
-    page.wait_for_timeout(150)
-
-
 def _in_view(page: Any, name: str) -> bool:
     x, y = page.evaluate(f"graspcompass.get('{name}')")
     x0, y1, x1, y0 = page.evaluate("graspcompass.board.getBoundingBox()")
     return x0 <= x <= x1 and y0 <= y <= y1
 
 
-def test_heading_outline_and_view_follow_a_drag(fresh: Any) -> None:
+def test_heading_outline_and_view_follow_adrag_point(fresh: Any) -> None:
     title = fresh.inner_text(".gc-header h1")
     assert title.startswith("Fig. 6")
     assert fresh.evaluate("graspcompass.outline()") == ["circle", 0, 1]
-    _drag(fresh, "P1", 90, -70)
+    drag_point(fresh, "P1", 90, -70)
     p = {k: fresh.evaluate(f"graspcompass.get('{k}')") for k in ("x1", "x2", "y")}
     assert p["x1"] > 1.2 and p["y"] > 0.8  # the drag moved P1 up and right
     heading = fresh.inner_text(".gc-header h1")
@@ -285,7 +267,7 @@ def test_heading_outline_and_view_follow_a_drag(fresh: Any) -> None:
 
 
 def test_invalid_drag_keeps_the_last_grasp_and_rounds(fresh: Any) -> None:
-    _drag(fresh, "P1", 0, 400)  # far below the x-axis: y < 0
+    drag_point(fresh, "P1", 0, 400)  # far below the x-axis: y < 0
     y = fresh.evaluate("graspcompass.get('y')")
     assert y < 0
     text = fresh.inner_text("#gc-error-text")
@@ -324,7 +306,7 @@ def test_invalid_drag_leaves_the_drawing_in_sight(browser: Any, page_path: Path,
         for preset, name, dx, dy in drags:
             page.select_option("#gc-preset", preset)
             page.click("#gc-fit")
-            _drag(page, name, dx * side, dy * side)
+            drag_point(page, name, dx * side, dy * side)
             where = f"{preset}: {name} by ({dx}, {dy}) of the board"
             assert page.evaluate("graspcompass.error()"), where
             box = page.evaluate(
